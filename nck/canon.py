@@ -1,0 +1,172 @@
+"""Canonical commands: what the interpreter emits and the channel/planner consume.
+
+The interpreter never moves anything; it turns each block into a list of these
+immutable records. Positions are dictionaries keyed by axis name. ``*_wcs``
+values are in program units in the workpiece coordinate system of the
+programmed tool tip; ``*_mcs`` values are machine coordinates in millimetres
+(tool length compensation applied).
+
+Sinks receive commands one by one through :meth:`Sink.emit`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Mapping, Protocol
+
+
+@dataclass(frozen=True, slots=True)
+class Source:
+    """Where a command came from: program file, 1-based line, block number."""
+
+    file: str
+    line: int
+    n: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Motion:
+    """One path segment (G0, G1, G2, G3, G33, …).
+
+    Attributes:
+        kind: the motion G code as displayed: ``G0``, ``G1``, ``G2``, ``G3``, ``G33``.
+        source: the block that caused it (NC-inserted segments carry their cause).
+        plane: active plane ``G17`` / ``G18`` / ``G19``.
+        end_wcs: end point in the WCS, program units.
+        end_mcs: end point in the MCS, mm.
+        start_mcs: start point in the MCS, mm (lets the planner work per segment).
+        center_wcs: arc centre in the WCS (arcs only).
+        center_mcs: arc centre in the MCS, mm (arcs only).
+        turns: extra full turns of a helix (``TURN=``).
+        feed: the programmed F value in force, in its own units (for display/segments).
+        feed_mm_min: path feed converted to mm/min (``None`` for rapid traverse).
+        exact_stop: True if this block ends with exact stop (G60 modal or G9).
+        exact_stop_window: ``G601`` fine or ``G602`` coarse.
+        lead_mm: thread lead for G33 (mm per spindle revolution).
+        gcodes: the active member of every G group (group number -> G code) at this block.
+        inserted: True for segments inserted by the NC (chamfers, roundings, cycle moves).
+    """
+
+    kind: str
+    source: Source
+    plane: str
+    end_wcs: Mapping[str, float]
+    end_mcs: Mapping[str, float]
+    start_mcs: Mapping[str, float] = field(default_factory=dict)
+    center_wcs: Mapping[str, float] | None = None
+    center_mcs: Mapping[str, float] | None = None
+    turns: int = 0
+    feed: float | None = None
+    feed_mm_min: float | None = None
+    exact_stop: bool = False
+    exact_stop_window: str = "G601"
+    lead_mm: float | None = None
+    gcodes: Mapping[int, str] = field(default_factory=dict)
+    inserted: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Dwell:
+    """G4: wait ``seconds`` of time or ``revolutions`` of the spindle."""
+
+    source: Source
+    seconds: float | None = None
+    revolutions: float | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class AuxFunction:
+    """An auxiliary function output to the PLC: M, S, T, D, H or F with extension."""
+
+    source: Source
+    address: str
+    value: float
+    extension: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ToolSelect:
+    """T (select) and, if the tool change happens in this block, the change itself."""
+
+    source: Source
+    tool: int
+    change: bool
+
+
+@dataclass(frozen=True, slots=True)
+class EdgeSelect:
+    """D: the active cutting edge (0 deselects tool offsets)."""
+
+    source: Source
+    edge: int
+
+
+@dataclass(frozen=True, slots=True)
+class SpindleCommand:
+    """Spindle speed / direction / positioning for spindle number ``spindle``.
+
+    ``state`` is ``M3``, ``M4``, ``M5`` or ``M19``/``SPOS`` for positioning.
+    """
+
+    source: Source
+    spindle: int
+    state: str | None = None
+    speed_rpm: float | None = None
+    position_deg: float | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Message:
+    """``MSG("…")``: show a message; empty text clears it."""
+
+    source: Source
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class StopPoint:
+    """A point where the channel must act: ``M0``, ``M1``, ``STOPRE``."""
+
+    source: Source
+    kind: str
+
+
+@dataclass(frozen=True, slots=True)
+class ProgramEnd:
+    """End of the main program: ``M2``, ``M30`` (or ``M17`` at main level)."""
+
+    source: Source
+    kind: str
+
+
+@dataclass(frozen=True, slots=True)
+class UserAlarm:
+    """``SETAL(n)``: a cycle/user alarm raised by the program."""
+
+    source: Source
+    number: int
+    params: tuple[str, ...] = ()
+
+
+CanonCommand = (
+    Motion | Dwell | AuxFunction | ToolSelect | EdgeSelect | SpindleCommand | Message
+    | StopPoint | ProgramEnd | UserAlarm
+)
+
+
+class Sink(Protocol):
+    """Anything that receives canonical commands."""
+
+    def emit(self, command: CanonCommand) -> None:
+        """Receive one command."""
+
+
+class ListSink:
+    """A sink that keeps every command in a list (tests, headless runs)."""
+
+    def __init__(self) -> None:
+        self.commands: list[CanonCommand] = []
+
+    def emit(self, command: CanonCommand) -> None:
+        """Append the command."""
+        self.commands.append(command)

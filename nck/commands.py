@@ -1,0 +1,163 @@
+"""Operator commands: the only way the HMI and the headless CLI act on the kernel.
+
+Each command is an immutable record named as an imperative. ``Nck.submit``
+answers :class:`Accepted` or :class:`Rejected` (with a reason an operator can
+read) at once.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True, slots=True)
+class Accepted:
+    """The command was taken."""
+
+
+@dataclass(frozen=True, slots=True)
+class Rejected:
+    """The command was refused; nothing changed. ``alarm`` is set when an alarm was raised."""
+
+    reason: str
+    alarm: int | None = None
+
+
+SubmitResult = Accepted | Rejected
+
+
+@dataclass(frozen=True, slots=True)
+class SelectMode:
+    """Select the mode ``JOG``, ``MDA`` or ``AUTO``."""
+
+    mode: str
+
+
+@dataclass(frozen=True, slots=True)
+class SelectMachineFunction:
+    """Select a machine function in JOG: ``REF``, ``REPOS``, ``INC`` or ``None`` (off)."""
+
+    function: str | None
+
+
+@dataclass(frozen=True, slots=True)
+class SelectIncrement:
+    """Set the JOG increment in 0.001 mm units (1 … 10000), or ``None`` for VAR."""
+
+    increment: int | None
+
+
+@dataclass(frozen=True, slots=True)
+class CycleStart:
+    """NC START."""
+
+
+@dataclass(frozen=True, slots=True)
+class CycleStop:
+    """NC STOP."""
+
+
+@dataclass(frozen=True, slots=True)
+class Reset:
+    """RESET of the channel / mode group."""
+
+
+@dataclass(frozen=True, slots=True)
+class EmergencyStop:
+    """Press (``pressed=True``) or release the emergency stop button."""
+
+    pressed: bool
+
+
+@dataclass(frozen=True, slots=True)
+class SelectProgram:
+    """Select a part program for AUTOMATIC (only in channel reset)."""
+
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class SetMdaProgram:
+    """Replace the MDA buffer with ``text``."""
+
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class SetProgramControl:
+    """Set one program-control switch.
+
+    ``name`` is one of ``single_block`` (value ``None``/``"SBL1"``/``"SBL2"``),
+    ``dry_run``, ``m01``, ``program_test``, ``rapid_override`` (bool values) or
+    ``skip_levels`` (a frozenset of levels 0…9).
+    """
+
+    name: str
+    value: object
+
+
+@dataclass(frozen=True, slots=True)
+class SetOverride:
+    """Set an override switch: ``feed`` (0…120 %), ``rapid`` or ``spindle`` (50…120 %)."""
+
+    which: str
+    percent: float
+
+
+@dataclass(frozen=True, slots=True)
+class CancelAlarms:
+    """ALARM CANCEL: clear every alarm whose criterion is CANCEL."""
+
+
+@dataclass(frozen=True, slots=True)
+class Jog:
+    """Traverse ``axis`` in JOG: ``direction`` +1/−1 while pressed, 0 = key released.
+
+    ``rapid`` is the rapid traverse overlay.
+    """
+
+    axis: str
+    direction: int
+    rapid: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class StartBlockSearch:
+    """Block search with calculation to block number ``n`` or to a block containing ``text``."""
+
+    target: str
+
+
+@dataclass(frozen=True, slots=True)
+class WriteData:
+    """Write one NC datum by name (``R10``, ``$TC_DP6[1,1]``, ``MD32000[X]``, ``SD42100`` …)."""
+
+    name: str
+    value: object
+
+
+@dataclass(frozen=True, slots=True)
+class EnterPassword:
+    """Enter a password (raises the access level while it is set)."""
+
+    password: str
+
+
+@dataclass(frozen=True, slots=True)
+class DeletePassword:
+    """Delete the active password (back to the keyswitch level)."""
+
+
+@dataclass(frozen=True, slots=True)
+class SetKeyswitch:
+    """Turn the keyswitch to position 0…3."""
+
+    position: int
+
+
+Command = (
+    SelectMode | SelectMachineFunction | SelectIncrement | CycleStart | CycleStop | Reset
+    | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
+    | CancelAlarms | Jog | StartBlockSearch | WriteData | EnterPassword | DeletePassword
+    | SetKeyswitch
+)

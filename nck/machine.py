@@ -1,0 +1,110 @@
+"""Machine configurations: which axes a machine has and its machine-data values.
+
+A machine is a TOML file in ``data/machines/`` (or any path given by the
+user). The embedded default is ``mill3`` (3-axis vertical mill).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from nck.resources import data_path
+
+DEFAULT_MACHINE = "mill3"
+
+
+@dataclass(frozen=True, slots=True)
+class AxisConfig:
+    """One axis or spindle of the machine.
+
+    Attributes:
+        name: the channel axis name used in programs (``X``, ``Z``, ``SP``…).
+        kind: ``linear``, ``rotary`` or ``spindle``.
+        index: 0-based machine axis index (for MD arrays).
+        diameter: True for a transverse axis programmed in diameter (lathe X).
+    """
+
+    name: str
+    kind: str
+    index: int
+    diameter: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class MachineConfig:
+    """A machine: name, kind (``mill``/``lathe``), axes, and machine-data values.
+
+    ``md`` maps an MD identifier (``"MD32000"``) to a value, or for axis data to
+    a dictionary axis name -> value.
+    """
+
+    name: str
+    title: str
+    kind: str
+    axes: tuple[AxisConfig, ...]
+    md: dict[str, Any] = field(default_factory=dict)
+    source: str = ""
+
+    @property
+    def path_axes(self) -> tuple[str, ...]:
+        """Names of the linear and rotary axes (not spindles), in channel order."""
+        return tuple(a.name for a in self.axes if a.kind != "spindle")
+
+    @property
+    def spindles(self) -> tuple[str, ...]:
+        """Names of the spindles."""
+        return tuple(a.name for a in self.axes if a.kind == "spindle")
+
+    def axis(self, name: str) -> AxisConfig:
+        """Return the axis called ``name`` (KeyError if there is none)."""
+        for axis in self.axes:
+            if axis.name == name:
+                return axis
+        raise KeyError(name)
+
+    def md_value(self, ident: str, axis: str | None = None, default: Any = None) -> Any:
+        """Return a machine-data value from the machine file, per axis where given."""
+        value = self.md.get(ident, default)
+        if isinstance(value, dict):
+            return value.get(axis, default) if axis is not None else value
+        return value
+
+
+class MachineFileError(Exception):
+    """The machine file could not be read (a command-line/file problem, not an alarm)."""
+
+
+def load_machine(name_or_path: str | None = None) -> MachineConfig:
+    """Load a machine by name (``data/machines/<name>.toml``) or by file path."""
+    name = name_or_path or DEFAULT_MACHINE
+    path = Path(name)
+    if not (path.suffix == ".toml" and path.is_file()):
+        path = data_path("machines", f"{name}.toml")
+    if not path.is_file():
+        raise MachineFileError(f"machine '{name}' not found")
+    try:
+        with path.open("rb") as handle:
+            table = tomllib.load(handle)
+        head = table["machine"]
+        axes = tuple(
+            AxisConfig(
+                name=entry["name"],
+                kind=entry.get("kind", "linear"),
+                index=index,
+                diameter=bool(entry.get("diameter", False)),
+            )
+            for index, entry in enumerate(table["axis"])
+        )
+        return MachineConfig(
+            name=head["name"],
+            title=head.get("title", head["name"]),
+            kind=head.get("kind", "mill"),
+            axes=axes,
+            md=dict(table.get("md", {})),
+            source=str(path),
+        )
+    except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError) as exc:
+        raise MachineFileError(f"machine file {path}: {exc}") from exc

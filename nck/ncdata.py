@@ -1,0 +1,75 @@
+"""Retained NC data shared by interpreter, channel and HMI.
+
+R parameters, tool cutting edges, work offsets (settable frames and base
+frame), setting data and global user data. Persistence and protection levels
+are applied around this store, not inside it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+R_PARAMETER_COUNT = 100  # MD28050 MM_NUM_R_PARAM default
+
+
+@dataclass
+class ToolEdge:
+    """One cutting edge ``D`` of tool ``T``: the ``$TC_DP1`` … ``$TC_DP25`` values.
+
+    Index 1 is the tool type, 2 the cutting edge position, 3–5 the lengths 1–3,
+    6 the radius, 12–14 length wear, 15 radius wear (numbering of the manual).
+    """
+
+    params: dict[int, float] = field(default_factory=dict)
+
+    def get(self, index: int) -> float:
+        """Return ``$TC_DP<index>`` (0 when never written)."""
+        return self.params.get(index, 0.0)
+
+    @property
+    def tool_type(self) -> int:
+        """Tool type ``$TC_DP1`` (e.g. 120 end mill, 200 twist drill, 500 roughing tool)."""
+        return int(self.get(1))
+
+
+@dataclass
+class WorkOffset:
+    """A settable frame / base frame as stored in the NC data.
+
+    Translations in mm, rotations in degrees about X/Y/Z, scale factors and
+    mirror flags per axis (missing axis = 0 / 0° / 1.0 / not mirrored).
+    """
+
+    trans: dict[str, float] = field(default_factory=dict)
+    fine: dict[str, float] = field(default_factory=dict)
+    rot: dict[str, float] = field(default_factory=dict)
+    scale: dict[str, float] = field(default_factory=dict)
+    mirror: dict[str, bool] = field(default_factory=dict)
+
+
+SETTABLE_FRAME_NAMES = ("G54", "G55", "G56", "G57") + tuple(f"G{n}" for n in range(505, 600))
+
+
+@dataclass
+class NcData:
+    """All retained data of one channel of the control."""
+
+    r: list[float] = field(default_factory=lambda: [0.0] * R_PARAMETER_COUNT)
+    tools: dict[tuple[int, int], ToolEdge] = field(default_factory=dict)
+    settable_frames: dict[str, WorkOffset] = field(
+        default_factory=lambda: {name: WorkOffset() for name in SETTABLE_FRAME_NAMES[:8]}
+    )
+    base_frame: WorkOffset = field(default_factory=WorkOffset)
+    setting_data: dict[str, Any] = field(default_factory=dict)
+    gud: dict[str, Any] = field(default_factory=dict)
+
+    def edge(self, tool: int, edge: int) -> ToolEdge | None:
+        """Return the cutting edge ``D<edge>`` of tool ``T<tool>``, if it exists."""
+        return self.tools.get((tool, edge))
+
+    def settable_frame(self, name: str) -> WorkOffset:
+        """Return the settable frame ``G54`` … ``G599`` (created empty when first used)."""
+        if name not in self.settable_frames:
+            self.settable_frames[name] = WorkOffset()
+        return self.settable_frames[name]

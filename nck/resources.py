@@ -1,0 +1,97 @@
+"""The one place that finds and reads the ``data/`` tables.
+
+In a source checkout (editable install) the tables are read from ``data/`` at
+the repository root; in a wheel they are packaged as ``nck/_data``.
+"""
+
+from __future__ import annotations
+
+import functools
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+
+@functools.cache
+def data_root() -> Path:
+    """Return the directory that holds the ``data/`` tables."""
+    here = Path(__file__).resolve().parent
+    for candidate in (here.parent / "data", here / "_data"):
+        if candidate.is_dir():
+            return candidate
+    raise FileNotFoundError("the data/ tables of the product are missing")
+
+
+def data_path(*parts: str) -> Path:
+    """Return the path of a file or folder below ``data/``."""
+    return data_root().joinpath(*parts)
+
+
+@functools.cache
+def load_toml(*parts: str) -> dict[str, Any]:
+    """Read one TOML table below ``data/`` (cached; treat the result as read-only)."""
+    with data_path(*parts).open("rb") as handle:
+        return tomllib.load(handle)
+
+
+@dataclass(frozen=True, slots=True)
+class AlarmDefinition:
+    """One entry of the alarm catalogue (``data/alarms/*.toml``).
+
+    Attributes:
+        number: the SINUMERIK alarm number.
+        text: the alarm text with ``%1`` … placeholders.
+        category: source of the alarm, e.g. ``program``, ``channel``, ``axis``, ``nck``.
+        clear: clear criterion: ``power_on``, ``reset``, ``cancel``, ``nc_start`` or ``self``.
+        reactions: reactions of the NCK, e.g. ``nc_start_disable``, ``interpreter_stop``,
+            ``feed_stop``, ``braking``, ``emergency_stop``.
+    """
+
+    number: int
+    text: str
+    category: str
+    clear: str
+    reactions: tuple[str, ...]
+
+    def format(self, params: tuple[str, ...] | list[str]) -> str:
+        """Return the text with ``%1`` … replaced by ``params`` (missing ones left empty)."""
+        out = self.text
+        # Replace from the highest index down so that %1 does not eat %10.
+        for index in range(9, 0, -1):
+            value = params[index - 1] if index <= len(params) else ""
+            out = out.replace(f"%{index}", str(value))
+        return " ".join(out.split())
+
+
+@functools.cache
+def alarm_catalog() -> dict[int, AlarmDefinition]:
+    """Return every alarm of ``data/alarms/*.toml`` by number.
+
+    Each file holds ``[[alarm]]`` tables; a number defined twice is an error in
+    the data and raises ``ValueError``.
+    """
+    catalog: dict[int, AlarmDefinition] = {}
+    for path in sorted(data_path("alarms").glob("*.toml")):
+        with path.open("rb") as handle:
+            table = tomllib.load(handle)
+        for entry in table.get("alarm", []):
+            number = int(entry["number"])
+            if number in catalog:
+                raise ValueError(f"alarm {number} defined twice (second time in {path.name})")
+            catalog[number] = AlarmDefinition(
+                number=number,
+                text=entry["text"],
+                category=entry.get("category", "program"),
+                clear=entry.get("clear", "reset"),
+                reactions=tuple(entry.get("reactions", ())),
+            )
+    return catalog
+
+
+def alarm_text(number: int, params: tuple[str, ...] | list[str] = ()) -> str:
+    """Return the formatted text of an alarm, or a generic text for an unknown number."""
+    definition = alarm_catalog().get(number)
+    if definition is None:
+        return f"Alarm {number} " + " ".join(str(p) for p in params)
+    return definition.format(params)

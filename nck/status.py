@@ -1,0 +1,103 @@
+"""Immutable status snapshots: what the kernel shows the outside world.
+
+``Nck.status()`` builds one :class:`NckStatus` per tick; ``seq`` increases
+whenever anything in it changed, so a display can skip unchanged frames.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Mapping
+
+
+@dataclass(frozen=True, slots=True)
+class AxisStatus:
+    """One machine axis or spindle as the position and service screens show it."""
+
+    name: str
+    kind: str  # "linear", "rotary" or "spindle"
+    position_mcs: float
+    position_wcs: float
+    distance_to_go: float = 0.0
+    referenced: bool = False
+    setpoint_mcs: float = 0.0
+    velocity: float = 0.0  # mm/min (linear), deg/min (rotary), rpm (spindle)
+    following_error: float = 0.0
+    speed_rpm: float = 0.0
+    extra: Mapping[str, float] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class AlarmEntry:
+    """An active alarm or an entry of the alarm log.
+
+    ``seq`` orders the log; ``came_s``/``went_s`` are simulated-control times.
+    """
+
+    seq: int
+    number: int
+    text: str
+    category: str
+    clear: str
+    came_s: float
+    went_s: float | None = None
+    params: tuple[str, ...] = ()
+    file: str | None = None
+    line: int | None = None
+    n: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ModalView:
+    """The modal state a display needs: G groups, tool, feed, spindle."""
+
+    gcodes: Mapping[int, str] = field(default_factory=dict)
+    tool: int = 0
+    edge: int = 0
+    feed: float = 0.0
+    spindle_speed_rpm: float = 0.0
+    spindle_state: str = "M5"
+    aux: Mapping[str, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class BlockView:
+    """A displayed program block."""
+
+    file: str
+    line: int
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class ChannelStatus:
+    """Channel 1: states, program, program control, block display."""
+
+    mode: str = "JOG"
+    machine_function: str | None = None
+    increment: int | None = 1
+    channel_state: str = "reset"  # reset / active / interrupted
+    program_state: str = "aborted"  # aborted / running / stopped / interrupted / waiting
+    selected_program: str | None = None
+    current_block: BlockView | None = None
+    blocks: tuple[BlockView, ...] = ()
+    modal: ModalView = field(default_factory=ModalView)
+    program_control: Mapping[str, object] = field(default_factory=dict)
+    overrides: Mapping[str, float] = field(default_factory=dict)
+    path_feed_mm_min: float = 0.0
+    program_runtime_s: float = 0.0
+    part_count: int = 0
+    message: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class NckStatus:
+    """The whole kernel as seen from outside at one instant of simulated time."""
+
+    seq: int
+    time_s: float
+    channel: ChannelStatus
+    axes: tuple[AxisStatus, ...]
+    alarms: tuple[AlarmEntry, ...] = ()
+    access_level: int = 7
+    machine_name: str = ""
