@@ -1,0 +1,1 @@
+"""Geometry of the part program: frames, planes, circles, polar coordinates, tool offsets."""

@@ -1,0 +1,1 @@
+"""The interpreter: programs, variables, control flow, canonical command output."""

@@ -1,0 +1,1 @@
+"""The NC language front end: lexer, parser, expressions, G-group tables."""

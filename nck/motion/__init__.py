@@ -1,0 +1,1 @@
+"""Motion: planner, interpolator (IPO cycle), axis and drive model, monitoring, JOG, referencing."""

@@ -1,0 +1,40 @@
+"""The contract between the channel (kernel) and the motion system.
+
+The channel pushes canonical motion into a bounded queue; the motion system
+plans and interpolates it when the kernel advances time. All quantities are
+in the MCS, millimetres (degrees for rotary axes), seconds.
+"""
+
+from __future__ import annotations
+
+from typing import Mapping, Protocol
+
+from nck.canon import Dwell, Motion
+
+
+class MotionSystem(Protocol):
+    """Planner + interpolator + axes, as the channel sees them."""
+
+    def can_accept(self) -> bool:
+        """True while the block buffer has room for another segment."""
+
+    def push(self, item: Motion | Dwell) -> None:
+        """Append a segment or dwell to the buffer (planned with look-ahead)."""
+
+    def advance(self, dt_s: float) -> None:
+        """Advance simulated time by ``dt_s`` (a whole number of IPO cycles)."""
+
+    def is_idle(self) -> bool:
+        """True when the buffer is empty and every axis stands still."""
+
+    def hold(self) -> None:
+        """NC STOP: brake along the path on the ramp and stay interrupted."""
+
+    def resume(self) -> None:
+        """NC START after hold: continue the interrupted segment."""
+
+    def abort(self) -> None:
+        """RESET: brake, then discard everything buffered."""
+
+    def positions_mcs(self) -> Mapping[str, float]:
+        """Actual positions of every axis (MCS)."""
