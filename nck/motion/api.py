@@ -38,3 +38,19 @@ class MotionSystem(Protocol):
 
     def positions_mcs(self) -> Mapping[str, float]:
         """Actual positions of every axis (MCS)."""
+
+
+class JogControl(Protocol):
+    """JOG and referencing, as the channel sees them (same object as the MotionSystem)."""
+
+    def jog_continuous(self, axis: str, direction: int, velocity_mm_min: float) -> None:
+        """Start (direction ±1) or stop (0) continuous JOG of one axis."""
+
+    def jog_increment(self, axis: str, distance_mm: float, velocity_mm_min: float) -> None:
+        """Traverse one axis by a signed increment."""
+
+    def start_reference(self, axis: str) -> None:
+        """Start the reference point approach of one axis (JOG-REF)."""
+
+    def is_referenced(self, axis: str) -> bool:
+        """True once the axis has been referenced."""
