@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from typing import Mapping, Protocol
 
-from nck.canon import Dwell, Motion
+from nck.canon import Dwell, Motion, Source
+from nck.errors import NcAlarmError
 
 
 class MotionSystem(Protocol):
@@ -39,6 +40,33 @@ class MotionSystem(Protocol):
     def positions_mcs(self) -> Mapping[str, float]:
         """Actual positions of every axis (MCS)."""
 
+    def set_overrides(self, feed_percent: float, rapid_percent: float) -> None:
+        """Set the effective path feed override and rapid traverse override (0 … 120 %).
+
+        Applies on the fly to buffered and running segments; the feed override
+        also scales JOG velocities. The kernel has already folded ROV into
+        ``rapid_percent``.
+        """
+
+    def reposition(self, feed_mm_min: float | None) -> None:
+        """REPOS: after ``hold()``, when the axes may have been moved in JOG since.
+
+        On the next ``resume()`` the axes first travel linearly from their actual
+        positions back to the point where they were held (RMI), at ``feed_mm_min``
+        (``None`` = rapid traverse), then the interrupted remainder continues.
+        A zero-length approach must be harmless.
+        """
+
+    def current_source(self) -> Source | None:
+        """The block whose segment or dwell is executing now (None when idle).
+
+        The channel shows it as the current block, so the display lags the
+        interpreter's look-ahead as on the real control.
+        """
+
+    def drain_alarms(self) -> list[NcAlarmError]:
+        """Return and forget the alarms raised by monitoring since the last call."""
+
 
 class JogControl(Protocol):
     """JOG and referencing, as the channel sees them (same object as the MotionSystem)."""
@@ -54,3 +82,11 @@ class JogControl(Protocol):
 
     def is_referenced(self, axis: str) -> bool:
         """True once the axis has been referenced."""
+
+    def set_referenced(self, axis: str, referenced: bool) -> None:
+        """Mark an axis referenced (or not) without motion: absolute encoders, headless runs.
+
+        Notes for implementers (kernel use): ``is_idle()`` is False while a JOG
+        motion or reference point approach is under way; ``hold()``/``resume()``
+        also stop and continue a JOG increment; JOG must work while a path is held.
+        """
