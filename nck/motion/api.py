@@ -87,6 +87,8 @@ class JogControl(Protocol):
         """Mark an axis referenced (or not) without motion: absolute encoders, headless runs.
 
         Notes for implementers (kernel use): ``is_idle()`` is False while a JOG
-        motion or reference point approach is under way; ``hold()``/``resume()``
-        also stop and continue a JOG increment; JOG must work while a path is held.
+        motion or reference point approach is under way; ``jog_continuous(axis, 0)``
+        stops any JOG motion of that axis, an increment too (the kernel continues
+        an interrupted increment with a new ``jog_increment``); ``hold()`` and
+        ``resume()`` act on the path only, and JOG must work while a path is held.
         """
