@@ -83,6 +83,9 @@ class JogControl(Protocol):
     def is_referenced(self, axis: str) -> bool:
         """True once the axis has been referenced."""
 
+    def jog_active(self) -> bool:
+        """True while any axis moves in JOG (braking included) or a reference approach runs."""
+
     def set_referenced(self, axis: str, referenced: bool) -> None:
         """Mark an axis referenced (or not) without motion: absolute encoders, headless runs.
 
