@@ -88,6 +88,15 @@ class ChannelStatus:
     program_runtime_s: float = 0.0
     part_count: int = 0
     message: str = ""
+    stop_reason: str = ""  # why the channel stands: "NC STOP", "M0", "M1", "single block", "alarm", "search target found", "10208"
+    interrupted_program: str | None = None  # "AUTO" or "MDA" while that program is interrupted/stopped
+    mda_text: str = ""  # the MDA buffer
+    program_runtime_last_s: float = 0.0  # $AC_OLD_PROG_NET_TIME
+    program_runtime_count: int = 0  # $AC_OLD_PROG_NET_TIME_COUNT
+    parts_total: int = 0  # $AC_TOTAL_PARTS (part_count is $AC_ACTUAL_PARTS)
+    parts_required: int = 0  # $AC_REQUIRED_PARTS
+    parts_special: int = 0  # $AC_SPECIAL_PARTS
+    repos_offsets: Mapping[str, float] = field(default_factory=dict)  # axis -> way back to the interruption point
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,3 +110,23 @@ class NckStatus:
     alarms: tuple[AlarmEntry, ...] = ()
     access_level: int = 7
     machine_name: str = ""
+    emergency_stop: bool = False  # E-stop active (pressed, or released but not yet reset)
+    mode_group_ready: bool = True
+    alarm_log_seq: int = 0  # newest entry of the alarm/message log (Nck.alarm_log_since)
+    internal_errors: int = 0  # count of internal errors (alarm 1) since power on
+
+
+@dataclass(frozen=True, slots=True)
+class AlarmEvent:
+    """One entry of the kernel's append-only alarm/message log (``Nck.alarm_log_since``).
+
+    ``kind`` is ``"came"`` or ``"went"`` for alarms, ``"message"`` for an NC
+    message (MSG) being shown or cleared (empty text). ``entry`` is the alarm
+    as it was at that moment (for ``went``, with ``went_s`` set); ``entry.seq``
+    identifies the alarm occurrence, ``seq`` orders the log.
+    """
+
+    seq: int
+    kind: str
+    time_s: float
+    entry: AlarmEntry
