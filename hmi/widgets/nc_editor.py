@@ -1,0 +1,331 @@
+"""The NC program editor widget: a Textual ``TextArea`` that knows the Siemens NC language.
+
+What it adds to ``TextArea``:
+
+* syntax highlighting of NC blocks (block numbers, G and M words, addresses,
+  keywords, labels, variables, strings, comments, skip levels), computed lazily
+  per displayed line by a small regular-expression lexer, so a 200,000-line
+  program costs nothing until a line is shown;
+* error markers: each faulty line gets a red gutter mark and a red underline; the
+  screen shows the alarm number and text of the line under the cursor;
+* pure helpers the screen uses for the editor softkeys: renumber blocks,
+  search, next error.
+
+The lexer here only colours text; whether a block is valid is decided by the
+kernel's check (``nck.check``), never by this module.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Iterable, Mapping
+
+from rich.segment import Segment
+from rich.style import Style
+from rich.text import Text
+from textual.strip import Strip
+from textual.widgets import TextArea
+
+# ---------------------------------------------------------------------------------------------
+# Lexing for colours
+# ---------------------------------------------------------------------------------------------
+
+NC_KEYWORDS: frozenset[str] = frozenset(
+    """
+    IF ELSE ENDIF WHILE ENDWHILE FOR TO ENDFOR LOOP ENDLOOP REPEAT UNTIL CASE OF DEFAULT
+    GOTO GOTOF GOTOB GOTOC DEF INT REAL BOOL CHAR STRING AXIS FRAME PROC RET EXTERN
+    VAR SAVE DISPLOF NOT AND OR XOR B_AND B_OR B_NOT B_XOR DIV MOD MSG SETAL STOPRE
+    TRANS ATRANS ROT AROT SCALE ASCALE MIRROR AMIRROR SUPA CFC CFTCP CFIN DIAMON DIAMOF
+    TRUE FALSE SIN COS TAN ASIN ACOS ATAN2 SQRT ABS POT TRUNC ROUND LN EXP MINVAL MAXVAL
+    SPOS SPOSA WAITS WAITM M17 LUD GUD NCK CHAN ENDPROC G500 G53 G153 REPEATB
+    """.split()
+)
+"""Words of the NC language coloured as keywords (control flow, definitions, functions)."""
+
+NC_ADDRESSES: frozenset[str] = frozenset(
+    "A B C D E F H I J K L P Q R S T U V W X Y Z CR AR RP AP TURN SF IP".split()
+)
+"""Address letters (and multi-letter addresses) whose words are coloured as addresses."""
+
+_TOKEN = re.compile(
+    r"""
+    (?P<comment>;.*$)
+    |(?P<string>"[^"]*"?)
+    |(?P<variable>\$[A-Za-z_][A-Za-z0-9_]*)
+    |(?P<word>[A-Za-z_][A-Za-z0-9_]*)
+    |(?P<number>\d+\.?\d*|\.\d+)
+    |(?P<space>\s+)
+    |(?P<other>.)
+    """,
+    re.VERBOSE,
+)
+_SKIP = re.compile(r"\s*/\d?")
+_MAIN_BLOCK = re.compile(r"\s*:\d+")
+_ADDRESS_WORD = re.compile(r"([A-Za-z]+?)(\d*)$")
+
+TOKEN_STYLES: dict[str, Style] = {
+    "comment": Style(color="#7f8c9a", italic=True),
+    "string": Style(color="#e6c07b"),
+    "variable": Style(color="#c678dd"),
+    "keyword": Style(color="#ff9e3d", bold=True),
+    "gword": Style(color="#61afef", bold=True),
+    "mword": Style(color="#e5a0ff", bold=True),
+    "address": Style(color="#98c379"),
+    "number": Style(color="#d7dde8"),
+    "block_number": Style(color="#8a93a3"),
+    "label": Style(color="#56b6c2", bold=True),
+    "skip": Style(color="#ff6b6b"),
+}
+"""Rich style of each token kind (dark panel background assumed)."""
+
+ERROR_LINE_STYLE = Style(underline=True, color="#ff8080")
+ERROR_GUTTER_STYLE = Style(color="#ffffff", bgcolor="#b3261e", bold=True)
+
+
+def tokenize_line(line: str) -> list[tuple[int, int, str]]:
+    """Split one program line into coloured spans ``(start, end, kind)``.
+
+    Kinds are the keys of :data:`TOKEN_STYLES`. Plain identifiers, operators and
+    spaces are not returned. Never raises, whatever the text.
+    """
+    spans: list[tuple[int, int, str]] = []
+    position = 0
+    skip = _SKIP.match(line)
+    if skip:
+        spans.append((skip.start() + len(skip.group()) - len(skip.group().lstrip()), skip.end(), "skip"))
+        position = skip.end()
+    main_block = _MAIN_BLOCK.match(line, position)
+    if main_block:
+        spans.append((main_block.end() - len(main_block.group().lstrip()), main_block.end(), "block_number"))
+        position = main_block.end()
+    at_block_start = True  # only block number / label may come first
+    for match in _TOKEN.finditer(line, position):
+        kind = match.lastgroup
+        start, end = match.span()
+        if kind == "space":
+            continue
+        if kind == "word":
+            word = match.group().upper()
+            rest = line[end:]
+            if at_block_start and re.fullmatch(r"N\d+", word):
+                spans.append((start, end, "block_number"))
+                continue  # a label may still follow the block number
+            if at_block_start and rest.startswith(":") and not rest.startswith(":="):
+                spans.append((start, end + 1, "label"))
+                at_block_start = False
+                continue
+            at_block_start = False
+            if word in NC_KEYWORDS:
+                spans.append((start, end, "keyword"))
+            elif re.fullmatch(r"G\d+", word):
+                spans.append((start, end, "gword"))
+            elif re.fullmatch(r"M\d+", word):
+                spans.append((start, end, "mword"))
+            elif re.fullmatch(r"N\d+", word):
+                spans.append((start, end, "block_number"))
+            else:
+                address = _ADDRESS_WORD.match(word)
+                if address and address.group(1) in NC_ADDRESSES:
+                    letters_end = start + len(address.group(1))
+                    spans.append((start, letters_end, "address"))
+                    if letters_end < end:
+                        spans.append((letters_end, end, "number"))
+            continue
+        at_block_start = False
+        if kind in ("comment", "string", "variable", "number"):
+            spans.append((start, end, kind))
+    return spans
+
+
+def highlight_line(line: str) -> Text:
+    """Return ``line`` as a Rich ``Text`` with the NC colours applied."""
+    text = Text(line, end="", no_wrap=True)
+    for start, end, kind in tokenize_line(line):
+        text.stylize(TOKEN_STYLES[kind], start, end)
+    return text
+
+
+# ---------------------------------------------------------------------------------------------
+# Editing helpers (pure)
+# ---------------------------------------------------------------------------------------------
+
+_BLOCK_NUMBER = re.compile(r"^(?P<lead>\s*(?:/\d?\s*)?)(?P<n>[Nn]\d+\s*)?")
+_LEADING_LABEL = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*):(?!=)")
+_JUMP_TO_N = re.compile(r"\b(GOTO[FBC]?\s+)[Nn](\d+)", re.IGNORECASE)
+
+
+def _is_block_line(line: str) -> bool:
+    """True if a line holds a block that gets a block number when renumbering."""
+    stripped = line.strip()
+    if not stripped or stripped.startswith((";", "%")):
+        return False
+    if _MAIN_BLOCK.match(line):
+        return False  # main blocks keep their ":nn" number
+    if stripped.split()[0].upper() == "PROC":
+        return False
+    label = _LEADING_LABEL.match(line)
+    return not (label and not re.fullmatch(r"[Nn]\d+", label.group(1)))
+
+
+def renumber_blocks(text: str, start: int = 10, step: int = 10) -> str:
+    """Give every block line a block number ``N<start>``, ``N<start+step>`` … in order.
+
+    Existing block numbers are replaced, blocks without one get one (after a skip
+    slash). Empty lines, comment-only lines, ``%`` header lines, ``PROC`` lines,
+    main blocks (``:10``) and lines that begin with a label are left alone.
+    Jumps to block numbers (``GOTOF N120``) are rewritten to the new numbers.
+    """
+    lines = text.split("\n")
+    mapping: dict[str, str] = {}
+    out: list[str] = []
+    number = start
+    for line in lines:
+        if not _is_block_line(line):
+            out.append(line)
+            continue
+        match = _BLOCK_NUMBER.match(line)
+        assert match is not None  # the pattern can match the empty string
+        lead = match.group("lead")
+        old = match.group("n")
+        body = line[match.end():]
+        if old:
+            mapping.setdefault(old.strip().upper()[1:], str(number))
+        out.append(f"{lead}N{number} {body}".rstrip() if body.strip() else f"{lead}N{number}")
+        number += step
+
+    def rewrite(jump: re.Match[str]) -> str:
+        return f"{jump.group(1)}N{mapping.get(jump.group(2), jump.group(2))}"
+
+    return "\n".join(_JUMP_TO_N.sub(rewrite, line) for line in out)
+
+
+def find_text(
+    lines: Iterable[str], query: str, after: tuple[int, int] = (0, -1), wrap: bool = True
+) -> tuple[int, int] | None:
+    """Find ``query`` (case-insensitive) after position ``after`` = (row, column).
+
+    Returns the (row, column) of the next occurrence, wrapping round to the top
+    when ``wrap`` is set, or None.
+    """
+    if not query:
+        return None
+    needle = query.upper()
+    all_lines = list(lines) if not isinstance(lines, list) else lines
+    row0, column0 = after
+    for row in range(row0, len(all_lines)):
+        first = column0 + 1 if row == row0 else 0
+        column = all_lines[row].upper().find(needle, max(first, 0))
+        if column >= 0:
+            return row, column
+    if wrap:
+        for row in range(0, min(row0 + 1, len(all_lines))):
+            column = all_lines[row].upper().find(needle)
+            if column >= 0 and (row, column) != (row0, column0) and (row < row0 or column <= column0):
+                return row, column
+    return None
+
+
+# ---------------------------------------------------------------------------------------------
+# The widget
+# ---------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class ErrorMark:
+    """An alarm found by the check on one line.
+
+    Attributes:
+        line: 0-based line index in the editor.
+        number: SINUMERIK alarm number.
+        text: formatted alarm text.
+    """
+
+    line: int
+    number: int
+    text: str
+
+    @property
+    def label(self) -> str:
+        """``12080 Syntax error …`` as shown in the message line."""
+        return f"{self.number} {self.text}"
+
+
+class NcEditor(TextArea):
+    """A ``TextArea`` for NC programs: line numbers, NC colours, error marks in the gutter."""
+
+    DEFAULT_CSS = """
+    NcEditor { border: none; padding: 0; }
+    """
+
+    def __init__(self, text: str = "", *, read_only: bool = False, **kwargs: object) -> None:
+        super().__init__(
+            text,
+            read_only=read_only,
+            show_line_numbers=True,
+            soft_wrap=False,
+            tab_behavior="focus",
+            theme="css",
+            **kwargs,  # type: ignore[arg-type]
+        )
+        self.cursor_blink = False
+        self._error_marks: dict[int, ErrorMark] = {}
+
+    # -- errors --------------------------------------------------------------------------------
+
+    @property
+    def error_marks(self) -> Mapping[int, ErrorMark]:
+        """The current error marks by 0-based line index."""
+        return self._error_marks
+
+    def set_error_marks(self, marks: Iterable[ErrorMark], replace: bool = True) -> None:
+        """Show ``marks`` (replacing the old ones unless ``replace`` is False) and repaint."""
+        if replace:
+            self._error_marks = {}
+        for mark in marks:
+            self._error_marks.setdefault(mark.line, mark)
+        self._line_cache.clear()
+        self.refresh()
+
+    def error_at_cursor(self) -> ErrorMark | None:
+        """The error mark of the cursor line, if any."""
+        return self._error_marks.get(self.cursor_location[0])
+
+    def next_error_line(self) -> int | None:
+        """The first faulty line after the cursor line (wrapping round), or None."""
+        if not self._error_marks:
+            return None
+        row = self.cursor_location[0]
+        later = sorted(line for line in self._error_marks if line > row)
+        return later[0] if later else min(self._error_marks)
+
+    # -- rendering -----------------------------------------------------------------------------
+
+    def _build_highlight_map(self) -> None:
+        """Colours are computed per line in :meth:`get_line`; only drop the render cache."""
+        self._line_cache.clear()
+        self._highlights.clear()
+
+    def get_line(self, line_index: int) -> Text:
+        """Return the line with NC colours (and the error underline) applied."""
+        text = highlight_line(self.document.get_line(line_index))
+        if line_index in self._error_marks:
+            text.stylize(ERROR_LINE_STYLE)
+        return text
+
+    def _render_line(self, y: int) -> Strip:
+        """Render as ``TextArea`` does, then put the error mark into the gutter."""
+        strip = super()._render_line(y)
+        if not self._error_marks or not self.show_line_numbers:
+            return strip
+        scroll_y = self.scroll_offset[1]
+        try:
+            line_index, section = self.wrapped_document._offset_to_line_info[y + scroll_y]
+        except IndexError:
+            return strip
+        if section != 0 or line_index not in self._error_marks:
+            return strip
+        width = self.gutter_width
+        number = str(line_index + self.line_number_start)
+        gutter = Strip([Segment(f"{number:>{width - 2}}! ", ERROR_GUTTER_STYLE)], width)
+        return Strip.join([gutter, strip.crop(width, strip.cell_length)])

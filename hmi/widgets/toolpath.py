@@ -1,0 +1,396 @@
+"""Toolpath simulation drawn in the terminal with braille dots.
+
+Three layers, each testable on its own:
+
+* :func:`path_from_motions` turns the interpreter's ``canon.Motion`` records into
+  straight 3-D pieces in the workpiece coordinate system (arcs and helices are
+  split into short chords);
+* :class:`BrailleCanvas` rasterises 2-D lines into a grid of braille cells
+  (2 × 4 dots per character) and remembers, per cell, the most important kind
+  of line drawn there (current block > feed move > rapid move);
+* :class:`ToolpathView` is the widget: a projection (top view XY, side views
+  XZ / YZ), zoom and pan by keys, fit-to-part, rapid moves dotted and dimmed,
+  the current block's moves marked.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Iterable, Sequence
+
+from rich.style import Style
+from rich.text import Text
+from textual.binding import Binding
+from textual.reactive import reactive
+from textual.widget import Widget
+
+from nck.canon import Motion
+
+Point3 = tuple[float, float, float]
+
+VIEWS: dict[str, tuple[int, int, str]] = {
+    "XY": (0, 1, "Top view XY"),
+    "XZ": (0, 2, "Side view XZ"),
+    "YZ": (1, 2, "Side view YZ"),
+}
+"""Projection of each view: index of the horizontal and the vertical coordinate, and its title."""
+
+KIND_PRIORITY = {"rapid": 1, "feed": 2, "origin": 3, "current": 4}
+KIND_STYLES = {
+    "rapid": Style(color="#6c7a89", dim=True),
+    "feed": Style(color="#7fd1ff"),
+    "origin": Style(color="#ff9e3d"),
+    "current": Style(color="#ffd700", bold=True),
+}
+
+
+@dataclass(frozen=True, slots=True)
+class PathPiece:
+    """One straight piece of the toolpath in the WCS.
+
+    Attributes:
+        start: (X, Y, Z) start point.
+        end: (X, Y, Z) end point.
+        rapid: True for G0 moves.
+        line: 1-based source line of the block that produced it.
+    """
+
+    start: Point3
+    end: Point3
+    rapid: bool
+    line: int
+
+
+def _point(values: dict[str, float] | object, default: Point3) -> Point3:
+    mapping = dict(values) if values else {}  # type: ignore[call-overload]
+    return (
+        float(mapping.get("X", default[0])),
+        float(mapping.get("Y", default[1])),
+        float(mapping.get("Z", default[2])),
+    )
+
+
+_PLANE_AXES = {"G17": (0, 1, 2), "G18": (2, 0, 1), "G19": (1, 2, 0)}
+
+
+def _arc_points(
+    start: Point3, end: Point3, center: Point3, clockwise: bool, plane: str, turns: int
+) -> list[Point3]:
+    """Chord points of an arc/helix from ``start`` to ``end`` (start excluded)."""
+    a, b, c = _PLANE_AXES.get(plane, (0, 1, 2))
+    start_angle = math.atan2(start[b] - center[b], start[a] - center[a])
+    end_angle = math.atan2(end[b] - center[b], end[a] - center[a])
+    radius = math.hypot(start[a] - center[a], start[b] - center[b])
+    sweep = end_angle - start_angle
+    if clockwise:
+        while sweep >= -1e-9:
+            sweep -= 2 * math.pi
+    else:
+        while sweep <= 1e-9:
+            sweep += 2 * math.pi
+    sweep += (-1 if clockwise else 1) * 2 * math.pi * max(turns, 0)
+    steps = max(4, min(720, int(abs(sweep) / (math.pi / 36)) + 1))
+    points: list[Point3] = []
+    for step in range(1, steps + 1):
+        fraction = step / steps
+        angle = start_angle + sweep * fraction
+        point = [0.0, 0.0, 0.0]
+        point[a] = center[a] + radius * math.cos(angle)
+        point[b] = center[b] + radius * math.sin(angle)
+        point[c] = start[c] + (end[c] - start[c]) * fraction
+        points.append((point[0], point[1], point[2]))
+    points[-1] = end
+    return points
+
+
+def path_from_motions(motions: Iterable[Motion]) -> list[PathPiece]:
+    """Turn canonical motions into straight WCS pieces (arcs split into chords).
+
+    The first motion starts at its MCS start point shifted into the WCS; every
+    later one starts where the previous one ended.
+    """
+    pieces: list[PathPiece] = []
+    current: Point3 | None = None
+    for motion in motions:
+        end_fallback = current or (0.0, 0.0, 0.0)
+        end = _point(motion.end_wcs, end_fallback)
+        if current is None:
+            end_mcs = _point(motion.end_mcs, end)
+            start_mcs = _point(motion.start_mcs, end_mcs)
+            current = tuple(s + (e - m) for s, e, m in zip(start_mcs, end, end_mcs))  # type: ignore[assignment]
+        assert current is not None
+        rapid = motion.kind == "G0"
+        line = motion.source.line
+        if motion.kind in ("G2", "G3") and motion.center_wcs:
+            center = _point(motion.center_wcs, current)
+            previous = current
+            for point in _arc_points(current, end, center, motion.kind == "G2", motion.plane, motion.turns):
+                pieces.append(PathPiece(previous, point, False, line))
+                previous = point
+        elif end != current:
+            pieces.append(PathPiece(current, end, rapid, line))
+        current = end
+    return pieces
+
+
+# ---------------------------------------------------------------------------------------------
+# Braille canvas
+# ---------------------------------------------------------------------------------------------
+
+_DOT_BITS = ((0x01, 0x08), (0x02, 0x10), (0x04, 0x20), (0x40, 0x80))  # [row][column] in a cell
+
+
+class BrailleCanvas:
+    """A grid of ``width × height`` characters, each 2 dots wide and 4 dots high."""
+
+    def __init__(self, width: int, height: int) -> None:
+        self.width = max(1, width)
+        self.height = max(1, height)
+        self._bits = [[0] * self.width for _ in range(self.height)]
+        self._kinds = [[""] * self.width for _ in range(self.height)]
+
+    @property
+    def dot_width(self) -> int:
+        """Width in dots."""
+        return self.width * 2
+
+    @property
+    def dot_height(self) -> int:
+        """Height in dots."""
+        return self.height * 4
+
+    def set_dot(self, x: int, y: int, kind: str) -> None:
+        """Set the dot at (x, y) (origin top left); dots outside are ignored."""
+        if 0 <= x < self.dot_width and 0 <= y < self.dot_height:
+            row, column = y // 4, x // 2
+            self._bits[row][column] |= _DOT_BITS[y % 4][x % 2]
+            if KIND_PRIORITY.get(kind, 0) >= KIND_PRIORITY.get(self._kinds[row][column], 0):
+                self._kinds[row][column] = kind
+
+    def line(self, x0: float, y0: float, x1: float, y1: float, kind: str, dashed: bool = False) -> None:
+        """Draw a line between dot coordinates; ``dashed`` leaves gaps (2 on, 2 off)."""
+        if not all(math.isfinite(v) for v in (x0, y0, x1, y1)):
+            return
+        limit = 4 * (self.dot_width + self.dot_height)
+        if max(abs(x0), abs(x1)) > limit * 50 or max(abs(y0), abs(y1)) > limit * 50:
+            clipped = _clip(x0, y0, x1, y1, -2, -2, self.dot_width + 2, self.dot_height + 2)
+            if clipped is None:
+                return
+            x0, y0, x1, y1 = clipped
+        steps = int(max(abs(x1 - x0), abs(y1 - y0))) + 1
+        for step in range(steps + 1):
+            if dashed and (step // 2) % 2 == 1:
+                continue
+            fraction = step / steps
+            self.set_dot(round(x0 + (x1 - x0) * fraction), round(y0 + (y1 - y0) * fraction), kind)
+
+    def rows(self) -> list[list[tuple[str, str]]]:
+        """Each row as a list of (character, kind); empty cells are spaces with kind ''."""
+        return [
+            [(chr(0x2800 + bits) if bits else " ", kind) for bits, kind in zip(bit_row, kind_row)]
+            for bit_row, kind_row in zip(self._bits, self._kinds)
+        ]
+
+    def to_text(self) -> Text:
+        """The canvas as Rich text with one style per kind."""
+        text = Text(no_wrap=True, end="")
+        for index, row in enumerate(self.rows()):
+            if index:
+                text.append("\n")
+            for char, kind in row:
+                text.append(char, KIND_STYLES.get(kind))
+        return text
+
+
+def _clip(
+    x0: float, y0: float, x1: float, y1: float, xmin: float, ymin: float, xmax: float, ymax: float
+) -> tuple[float, float, float, float] | None:
+    """Liang–Barsky clipping of a line to a rectangle."""
+    dx, dy = x1 - x0, y1 - y0
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, x0 - xmin), (dx, xmax - x0), (-dy, y0 - ymin), (dy, ymax - y0)):
+        if p == 0:
+            if q < 0:
+                return None
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return None
+    return x0 + t0 * dx, y0 + t0 * dy, x0 + t1 * dx, y0 + t1 * dy
+
+
+# ---------------------------------------------------------------------------------------------
+# Projection
+# ---------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Viewport:
+    """What part of the plane is shown: centre (h, v) in mm and mm per dot."""
+
+    center_h: float
+    center_v: float
+    mm_per_dot: float
+
+
+def fit_viewport(pieces: Sequence[PathPiece], view: str, canvas: BrailleCanvas) -> Viewport:
+    """The viewport that shows every piece of the path with a small margin."""
+    h_index, v_index, _ = VIEWS[view]
+    hs = [p[h_index] for piece in pieces for p in (piece.start, piece.end)] or [0.0]
+    vs = [p[v_index] for piece in pieces for p in (piece.start, piece.end)] or [0.0]
+    span_h = max(hs) - min(hs)
+    span_v = max(vs) - min(vs)
+    # a terminal cell is about twice as high as wide: 2 dots across ≈ 4 dots down, so dots are square
+    mm_per_dot = max(span_h / max(canvas.dot_width - 4, 1), span_v / max(canvas.dot_height - 4, 1), 1e-3)
+    return Viewport((max(hs) + min(hs)) / 2, (max(vs) + min(vs)) / 2, mm_per_dot * 1.05)
+
+
+def draw_path(
+    pieces: Sequence[PathPiece], view: str, viewport: Viewport, canvas: BrailleCanvas,
+    current_line: int | None = None,
+) -> None:
+    """Project ``pieces`` into ``canvas`` (rapid dashed, current block marked, origin cross)."""
+    h_index, v_index, _ = VIEWS[view]
+
+    def to_dots(point: Point3) -> tuple[float, float]:
+        x = (point[h_index] - viewport.center_h) / viewport.mm_per_dot + canvas.dot_width / 2
+        y = canvas.dot_height / 2 - (point[v_index] - viewport.center_v) / viewport.mm_per_dot
+        return x, y
+
+    ox, oy = to_dots((0.0, 0.0, 0.0))
+    canvas.line(ox - 3, oy, ox + 3, oy, "origin")
+    canvas.line(ox, oy - 3, ox, oy + 3, "origin")
+    for piece in pieces:
+        x0, y0 = to_dots(piece.start)
+        x1, y1 = to_dots(piece.end)
+        if current_line is not None and piece.line == current_line:
+            kind = "current"
+        else:
+            kind = "rapid" if piece.rapid else "feed"
+        canvas.line(x0, y0, x1, y1, kind, dashed=piece.rapid)
+
+
+# ---------------------------------------------------------------------------------------------
+# Widget
+# ---------------------------------------------------------------------------------------------
+
+ZOOM_STEP = 1.5
+PAN_FRACTION = 0.1
+
+
+class ToolpathView(Widget, can_focus=True):
+    """The simulation window: a projection of the toolpath with zoom and pan by keys.
+
+    Keys (while focused): ``+``/``-`` zoom, arrows pan, ``f`` fit, ``1``/``2``/``3``
+    views XY / XZ / YZ. The screen's softkeys call the same actions.
+    """
+
+    DEFAULT_CSS = """
+    ToolpathView { height: 1fr; width: 1fr; }
+    """
+
+    BINDINGS = [
+        Binding("plus,equals_sign", "zoom(1)", "Zoom +", show=False),
+        Binding("minus", "zoom(-1)", "Zoom -", show=False),
+        Binding("left", "pan(-1, 0)", "Pan left", show=False),
+        Binding("right", "pan(1, 0)", "Pan right", show=False),
+        Binding("up", "pan(0, 1)", "Pan up", show=False),
+        Binding("down", "pan(0, -1)", "Pan down", show=False),
+        Binding("f", "fit", "Fit", show=False),
+        Binding("1", "view('XY')", "XY", show=False),
+        Binding("2", "view('XZ')", "XZ", show=False),
+        Binding("3", "view('YZ')", "YZ", show=False),
+    ]
+
+    view: reactive[str] = reactive("XY")
+    """The projection shown: ``XY``, ``XZ`` or ``YZ``."""
+    current_line: reactive[int | None] = reactive(None)
+    """1-based source line of the block being executed (marked), or None."""
+
+    def __init__(self, pieces: Sequence[PathPiece] = (), **kwargs: object) -> None:
+        super().__init__(**kwargs)  # type: ignore[arg-type]
+        self._pieces: list[PathPiece] = list(pieces)
+        self._zoom = 1.0
+        self._pan_h = 0.0
+        self._pan_v = 0.0
+        self.status_text = ""
+
+    @property
+    def pieces(self) -> list[PathPiece]:
+        """The toolpath shown."""
+        return self._pieces
+
+    def set_pieces(self, pieces: Sequence[PathPiece], status_text: str = "") -> None:
+        """Show a new toolpath (fitted to the window)."""
+        self._pieces = list(pieces)
+        self.status_text = status_text
+        self.action_fit()
+
+    @property
+    def zoom(self) -> float:
+        """Zoom factor relative to the fitted view."""
+        return self._zoom
+
+    def action_zoom(self, direction: int) -> None:
+        """Zoom in (+1) or out (−1) by one step."""
+        self._zoom = max(0.05, min(1000.0, self._zoom * (ZOOM_STEP if direction > 0 else 1 / ZOOM_STEP)))
+        self.refresh()
+
+    def action_pan(self, dh: int, dv: int) -> None:
+        """Move the view a tenth of its size right (dh=+1)/left or up (dv=+1)/down."""
+        self._pan_h += dh * PAN_FRACTION / self._zoom
+        self._pan_v += dv * PAN_FRACTION / self._zoom
+        self.refresh()
+
+    def action_fit(self) -> None:
+        """Show the whole toolpath again."""
+        self._zoom = 1.0
+        self._pan_h = self._pan_v = 0.0
+        self.refresh()
+
+    def action_view(self, view: str) -> None:
+        """Switch the projection."""
+        if view in VIEWS:
+            self.view = view
+            self.action_fit()
+
+    def render_canvas(self, width: int, height: int) -> tuple[BrailleCanvas, Viewport]:
+        """Draw the toolpath into a canvas of ``width × height`` cells."""
+        canvas = BrailleCanvas(width, height)
+        fitted = fit_viewport(self._pieces, self.view, canvas)
+        span_h = fitted.mm_per_dot * canvas.dot_width
+        span_v = fitted.mm_per_dot * canvas.dot_height
+        viewport = Viewport(
+            fitted.center_h + self._pan_h * span_h,
+            fitted.center_v + self._pan_v * span_v,
+            fitted.mm_per_dot / self._zoom,
+        )
+        draw_path(self._pieces, self.view, viewport, canvas, self.current_line)
+        return canvas, viewport
+
+    def render(self) -> Text:
+        """Title line plus the canvas."""
+        width, height = self.size.width, max(self.size.height - 1, 1)
+        canvas, viewport = self.render_canvas(width, height)
+        title = VIEWS[self.view][2]
+        scale_mm = viewport.mm_per_dot * 2 * 10  # ten characters
+        head = Text(no_wrap=True, end="")
+        head.append(f" {title} ", Style(bold=True, reverse=True))
+        head.append(f"  zoom {self._zoom:g}x   10 chars = {scale_mm:.3f} mm   ")
+        head.append("── feed  ", KIND_STYLES["feed"])
+        head.append("┄┄ rapid  ", KIND_STYLES["rapid"])
+        head.append("── current block  ", KIND_STYLES["current"])
+        if self.status_text:
+            head.append(self.status_text)
+        head.append("\n")
+        head.append_text(canvas.to_text())
+        return head
+
+    def watch_current_line(self) -> None:
+        """Repaint when the executing block changes."""
+        self.refresh()
