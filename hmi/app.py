@@ -1,27 +1,479 @@
-"""The HMI application (placeholder until the HMI shell lands)."""
+"""The HMI application: SINUMERIK Operate on a PC keyboard.
+
+Operating areas and the screen convention
+-----------------------------------------
+Each operating area is a Textual *mode* (its own screen stack, so dialogs of one
+area stay open while the operator looks at another). :data:`AREAS` lists them
+in panel order. The screen of area ``<id>`` comes from the module
+``screens/<id>.py``, which exposes a module attribute ``AreaScreen``: a
+subclass of :class:`hmi.area.AreaBase` (see that module for what a subclass
+provides). When the module does not exist yet, the app shows
+:class:`screens.placeholder.PlaceholderScreen` for the area.
+
+Keys
+----
+Every key is global and comes from ``data/keymap.toml`` (:mod:`hmi.keymap`):
+the area keys, F1–F8 / Shift+F1–F8 (routed to the softkeys of the current
+area), F9 area menu, F10 back, F11 help, F12 alarm cancel and the machine
+control panel. MCP keys act on the kernel through the bridge
+(:mod:`hmi.bridge`), the only code that calls the kernel.
+"""
 
 from __future__ import annotations
 
-from textual.app import App, ComposeResult
-from textual.widgets import Static
+import argparse
+import importlib
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+from textual.app import App
+from textual.screen import Screen
+from textual.timer import Timer
+
+from nck import commands as cmd
+from nck.commands import Accepted, Rejected, SubmitResult
+from nck.status import NckStatus
+
+from hmi.area import AreaBase
+from hmi.bridge import NckBridge
+from hmi.keymap import Keymap, default_keymap
+from hmi.messages import CommandRejected, NckStatusChanged
+from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.theme import SINUMERIK_THEME
+
+
+@dataclass(frozen=True, slots=True)
+class Area:
+    """An operating area: mode id (= module name in ``screens/``) and header title."""
+
+    id: str
+    title: str
+    menu_label: str
+
+
+AREAS: tuple[Area, ...] = (
+    Area("machine", "MACHINE", "Machine"),
+    Area("parameter", "PARAMETER", "Parameter"),
+    Area("program", "PROGRAM", "Program"),
+    Area("program_manager", "PROGRAM MANAGER", "Program\nmanager"),
+    Area("diagnostics", "DIAGNOSTICS", "Diagnostics"),
+    Area("setup", "SETUP", "Setup"),
+)
+"""The operating areas in the order of the area menu (F9)."""
+
+
+def area_screen_factory(area: Area) -> Callable[[], Screen]:
+    """Return a factory for the screen of ``area``: ``screens.<id>.AreaScreen`` or a placeholder."""
+    module_name = f"screens.{area.id}"
+    try:
+        module = importlib.import_module(module_name)
+    except ModuleNotFoundError as exc:
+        if exc.name != module_name:
+            raise
+        module = None
+    screen_class = getattr(module, "AreaScreen", None) if module is not None else None
+    if screen_class is None:
+        from screens.placeholder import PlaceholderScreen
+
+        return lambda: PlaceholderScreen(area.id, area.title)
+    return screen_class
+
+
+def _next_position(table: tuple[float, ...], current: float, step: int) -> float:
+    """Return the switch position ``step`` positions from the one nearest ``current``."""
+    nearest = min(range(len(table)), key=lambda i: abs(table[i] - current))
+    return table[max(0, min(len(table) - 1, nearest + step))]
 
 
 class HmiApp(App):
-    """SINUMERIK Operate trainer."""
+    """The SINUMERIK Operate trainer.
 
-    BINDINGS = [("ctrl+q", "quit", "Quit")]
+    Args:
+        nck: the kernel facade (``nck.kernel.Nck`` or a compatible object).
+        realtime: advance the kernel from a wall-clock timer (False in tests).
+        keymap: the key table (default: ``data/keymap.toml``).
+        on_quit: called before the app exits (saves NC data).
+    """
 
-    def compose(self) -> ComposeResult:
-        """Show the start screen."""
-        yield Static("SINUMERIK Operate trainer — starting")
+    CSS_PATH = "hmi.tcss"
+    TITLE = "SINUMERIK Operate trainer"
+    ENABLE_COMMAND_PALETTE = False
+    BINDINGS = [binding.to_binding() for binding in default_keymap().bindings]
+    """Every key of ``data/keymap.toml``, as priority bindings (they work over editors)."""
+
+    def __init__(self, nck: Any, *, realtime: bool = True, keymap: Keymap | None = None,
+                 on_quit: Callable[[], None] | None = None) -> None:
+        self.keymap = keymap or default_keymap()
+        super().__init__()
+        self.register_theme(SINUMERIK_THEME)
+        self.theme = SINUMERIK_THEME.name
+        self.bridge = NckBridge(nck, realtime=realtime)
+        self.latest_status: NckStatus | None = None
+        self.hint = ""
+        self.selected_axis_index = 0
+        self.spindle_selected = False
+        self.rapid_overlay = False
+        self.single_block_type = "SBL1"
+        self._jog_release_timer: Timer | None = None
+        self._jogging: str | None = None
+        self._on_quit = on_quit
+        for area in AREAS:
+            self.add_mode(area.id, area_screen_factory(area))
+
+    def get_theme_variable_defaults(self) -> dict[str, str]:
+        """The HMI's own colour variables (``$softkey-background`` …), from the theme."""
+        return dict(SINUMERIK_THEME.variables)
+
+    # -- start ---------------------------------------------------------------------------
+    def on_mount(self) -> None:
+        """Connect the kernel and open the Machine area."""
+        self.latest_status = self.bridge.status
+        self.bridge.attach(self)
+        self.switch_mode("machine")
+
+    # -- kernel ---------------------------------------------------------------------------
+    def submit(self, command: Any) -> SubmitResult:
+        """Send a command to the kernel; an accepted command clears the dialog line."""
+        result = self.bridge.submit(command)
+        if isinstance(result, Accepted) and self.hint:
+            self.set_hint("")
+        return result
+
+    def on_nck_status_changed(self, message: NckStatusChanged) -> None:
+        """Hand a new snapshot to the area screens of the current stack."""
+        self.latest_status = message.status
+        for screen in self.screen_stack:
+            if isinstance(screen, AreaBase):
+                screen.show_status(message.status)
+
+    def on_command_rejected(self, message: CommandRejected) -> None:
+        """Show why the kernel refused a command."""
+        prefix = f"{message.alarm}: " if message.alarm else ""
+        self.set_hint(f"{prefix}{message.reason}")
+
+    def set_hint(self, text: str) -> None:
+        """Write the dialog line of the current area (and remember it for other areas)."""
+        self.hint = text
+        for screen in self.screen_stack:
+            if isinstance(screen, AreaBase):
+                screen.show_hint(text)
+
+    @property
+    def area_screen(self) -> AreaBase | None:
+        """The area screen at the bottom of the current mode's stack."""
+        for screen in reversed(self.screen_stack):
+            if isinstance(screen, AreaBase):
+                return screen
+        return None
+
+    def _status(self) -> NckStatus:
+        return self.bridge.status
+
+    # -- operator panel ---------------------------------------------------------------------
+    def action_switch_area(self, area_id: str) -> None:
+        """Area key: show the operating area ``area_id``."""
+        area = self.area_screen
+        if area is not None:
+            area.clear_softkey_levels()
+        self.switch_mode(area_id)
+
+    def action_softkey(self, slot_id: str) -> None:
+        """F1–F8 / Shift+F1–F8: press a softkey of the top screen (area or dialog)."""
+        top = self.screen
+        handler = getattr(top, "press_softkey", None)
+        if callable(handler):
+            handler(slot_id)
+
+    def area_menu(self) -> SoftkeyMenu:
+        """The area menu shown by MENU SELECT (F9)."""
+        keys = [
+            Softkey(f"area.{area.id}", area.menu_label, f"app.switch_area('{area.id}')")
+            for area in AREAS
+        ]
+        return SoftkeyMenu.of(keys)
+
+    def action_menu_select(self) -> None:
+        """F9: show the operating areas on the horizontal softkeys."""
+        area = self.area_screen
+        if area is not None and area is self.screen:
+            area.push_softkeys(self.area_menu())
+
+    def action_menu_recall(self) -> None:
+        """F10: close the top dialog, else go back one softkey level / view."""
+        if not isinstance(self.screen, AreaBase) and len(self.screen_stack) > 1:
+            self.screen.dismiss(None)
+            return
+        area = self.area_screen
+        if area is not None:
+            area.menu_recall()
+
+    def action_help(self) -> None:
+        """F11: show or hide the overlay of the keys in force."""
+        from screens.dialogs import HelpScreen
+
+        if isinstance(self.screen, HelpScreen):
+            self.screen.dismiss(None)
+            return
+        area = self.area_screen
+        menu = area.current_menu() if area is not None else SoftkeyMenu.of()
+        self.push_screen(HelpScreen(self.keymap, menu))
+
+    def action_alarm_cancel(self) -> None:
+        """F12: acknowledge the alarms whose clear criterion is CANCEL."""
+        self.submit(cmd.CancelAlarms())
+
+    def action_quit_hmi(self) -> None:
+        """Ctrl+Q: save NC data, then leave."""
+        if self._on_quit is not None:
+            try:
+                self._on_quit()
+            except Exception as exc:  # a failed save is reported, the app still quits
+                print(f"hmi: saving NC data failed: {exc}", file=sys.stderr)
+        self.exit()
+
+    # -- machine control panel -------------------------------------------------------------
+    def action_mode(self, mode: str) -> None:
+        """Mode keys JOG / MDA / AUTO (JOG again leaves REF/REPOS/INC)."""
+        status = self._status()
+        if mode == status.channel.mode == "JOG" and status.channel.machine_function:
+            self.submit(cmd.SelectMachineFunction(None))
+            return
+        self.submit(cmd.SelectMode(mode))
+
+    def action_machine_function(self, function: str) -> None:
+        """REF POINT / REPOS keys: toggle the machine function in JOG."""
+        current = self._status().channel.machine_function
+        self.submit(cmd.SelectMachineFunction(None if current == function else function))
+
+    def action_cycle_increment(self) -> None:
+        """INC key: continuous → 1 → 10 → 100 → 1000 → 10000 → VAR → 1 …"""
+        channel = self._status().channel
+        steps: list[int | None] = [*self.keymap.switches.increments, None]
+        if channel.machine_function != "INC":
+            nxt = steps[0]
+        else:
+            try:
+                nxt = steps[(steps.index(channel.increment) + 1) % len(steps)]
+            except ValueError:
+                nxt = steps[0]
+        if isinstance(self.submit(cmd.SelectIncrement(nxt)), Rejected):
+            return
+        if channel.machine_function != "INC":
+            self.submit(cmd.SelectMachineFunction("INC"))
+
+    def action_single_block(self) -> None:
+        """SINGLE BLOCK: toggle single block (of the type chosen in program control)."""
+        current = self._status().channel.program_control.get("single_block")
+        self.submit(cmd.SetProgramControl("single_block", None if current else self.single_block_type))
+
+    def action_cycle_start(self) -> None:
+        """CYCLE START (NC START); in MDA the editor's text is the program."""
+        area = self.area_screen
+        before = getattr(area, "before_cycle_start", None)
+        if callable(before):
+            before()
+        self.submit(cmd.CycleStart())
+
+    def action_cycle_stop(self) -> None:
+        """CYCLE STOP (NC STOP)."""
+        self.submit(cmd.CycleStop())
+
+    def action_reset(self) -> None:
+        """RESET of the channel / mode group."""
+        self._release_jog()
+        self.submit(cmd.Reset())
+
+    def axis_names(self) -> tuple[str, ...]:
+        """Names of the path axes (not spindles), as the status shows them."""
+        return tuple(a.name for a in self._status().axes if a.kind != "spindle")
+
+    def spindle_names(self) -> tuple[str, ...]:
+        """Names of the spindles."""
+        return tuple(a.name for a in self._status().axes if a.kind == "spindle")
+
+    @property
+    def selected_axis(self) -> str | None:
+        """The axis the + / − keys traverse."""
+        if self.spindle_selected:
+            spindles = self.spindle_names()
+            return spindles[0] if spindles else None
+        axes = self.axis_names()
+        return axes[self.selected_axis_index] if self.selected_axis_index < len(axes) else None
+
+    def action_select_axis(self, index: int) -> None:
+        """Axis keys X, Y, Z, 4th axis."""
+        axes = self.axis_names()
+        if index >= len(axes):
+            self.set_hint(f"This machine has no axis {index + 1}")
+            return
+        self.selected_axis_index = index
+        self.spindle_selected = False
+        self._refresh_area()
+
+    def action_select_spindle(self) -> None:
+        """Spindle key."""
+        if not self.spindle_names():
+            self.set_hint("This machine has no spindle")
+            return
+        self.spindle_selected = True
+        self._refresh_area()
+
+    def action_rapid_overlay(self) -> None:
+        """RAPID: toggle the rapid traverse overlay for JOG."""
+        self.rapid_overlay = not self.rapid_overlay
+        self._refresh_area()
+
+    def action_jog(self, direction: int) -> None:
+        """+ / − keys: traverse the selected axis.
+
+        In INC each press is one increment; in continuous JOG the axis moves while
+        the key repeats and stops ``jog_release_ms`` after the last repeat.
+        """
+        axis = self.selected_axis
+        if axis is None:
+            self.set_hint("No axis selected")
+            return
+        channel = self._status().channel
+        continuous = channel.machine_function != "INC"
+        if continuous and self._jogging == f"{axis}{direction}" and self._jog_release_timer:
+            self._jog_release_timer.reset()
+            return
+        if self._jogging is not None:
+            self._release_jog()
+        result = self.submit(cmd.Jog(axis, direction, rapid=self.rapid_overlay))
+        if continuous and isinstance(result, Accepted):
+            self._jogging = f"{axis}{direction}"
+            if self.bridge.realtime:
+                delay = self.keymap.switches.jog_release_ms / 1000
+                self._jog_release_timer = self.set_timer(delay, self._release_jog)
+
+    def _release_jog(self) -> None:
+        """The + / − key was let go: stop continuous JOG."""
+        if self._jog_release_timer is not None:
+            self._jog_release_timer.stop()
+            self._jog_release_timer = None
+        if self._jogging is not None:
+            axis = self._jogging[:-2] if self._jogging.endswith("-1") else self._jogging[:-1]
+            self._jogging = None
+            self.submit(cmd.Jog(axis, 0))
+
+    def release_jog(self) -> None:
+        """Tests: let go of the + / − key (the realtime app does this by timer)."""
+        self._release_jog()
+
+    def action_feed_override(self, step: int) -> None:
+        """Feed override switch one position up / down."""
+        current = float(self._status().channel.overrides.get("feed", 100.0))
+        table = self.keymap.switches.feed_override_percent
+        self.submit(cmd.SetOverride("feed", _next_position(table, current, step)))
+
+    def action_spindle_override(self, step: int) -> None:
+        """Spindle override switch one position up / down."""
+        current = float(self._status().channel.overrides.get("spindle", 100.0))
+        table = self.keymap.switches.spindle_override_percent
+        self.submit(cmd.SetOverride("spindle", _next_position(table, current, step)))
+
+    def keyswitch_position(self) -> int:
+        """The keyswitch position: from the snapshot if it has one, else from the level."""
+        status = self._status()
+        position = getattr(status, "keyswitch_position", None)
+        if isinstance(position, int):
+            return position
+        level = status.access_level
+        return 7 - level if 4 <= level <= 7 else 3
+
+    def action_keyswitch(self) -> None:
+        """Keyswitch: 0 → 1 → 2 → 3 → 0 (levels 7 → 6 → 5 → 4)."""
+        self.submit(cmd.SetKeyswitch((self.keyswitch_position() + 1) % 4))
+
+    def _refresh_area(self) -> None:
+        area = self.area_screen
+        if area is not None:
+            area.show_status(self.bridge.status)
 
 
-def make_app() -> HmiApp:
-    """Build the application (shared by the console script and the tests)."""
-    return HmiApp()
+def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
+              program: str | None = None) -> tuple[Any, Callable[[], None] | None]:
+    """Build the kernel for the app; return it and the function that saves NC data on quit.
+
+    The NC data directory and persistence belong to ``nck.storage`` / ``nck.persistence``;
+    this only passes the options through where the kernel accepts them.
+    """
+    from nck.kernel import Nck
+    from nck.machine import load_machine
+
+    config = load_machine(machine)
+    kwargs: dict[str, Any] = {"machine": config}
+    opener = getattr(Nck, "open", None)
+    if callable(opener):
+        nck = opener(config, data_dir=data_dir, ephemeral=ephemeral)
+    else:
+        programs = _program_source(data_dir, program)
+        if programs is not None:
+            kwargs["programs"] = programs
+        nck = Nck(**kwargs)
+    if program:
+        nck.submit(cmd.SelectMode("AUTO"))
+        nck.submit(cmd.SelectProgram(Path(program).name))
+    saver = getattr(nck, "save", None)
+    return nck, saver if callable(saver) else None
 
 
-def main() -> int:
+def _program_source(data_dir: str | None, program: str | None) -> Any:
+    """A program source for the kernel: the NC file system if present, else a directory."""
+    try:
+        from nck.storage import open_storage  # type: ignore[attr-defined]
+
+        return open_storage(data_dir)
+    except (ImportError, AttributeError, TypeError):
+        pass
+    from hmi.programs import DirectoryPrograms
+
+    folders = [Path(program).parent] if program else []
+    if data_dir:
+        folders.append(Path(data_dir))
+    from nck.resources import data_path
+
+    folders.append(data_path("programs"))
+    return DirectoryPrograms(folders)
+
+
+def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
+             *, nck: Any = None, program: str | None = None, realtime: bool = True) -> HmiApp:
+    """Build the application (shared by the console script and the tests).
+
+    Args:
+        machine: machine name or TOML path (default mill).
+        data_dir: NC data directory (passed through to the kernel's storage).
+        ephemeral: work on a temporary copy of the NC data.
+        nck: an existing kernel (tests); built from the other options when None.
+        program: a part program to select in AUTO at start.
+        realtime: advance the kernel from the wall clock (False: tests advance it).
+    """
+    on_quit = None
+    if nck is None:
+        nck, on_quit = build_nck(machine, data_dir, ephemeral, program)
+    return HmiApp(nck, realtime=realtime, on_quit=on_quit)
+
+
+def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``hmi`` console script."""
-    make_app().run()
+    parser = argparse.ArgumentParser(prog="hmi", description="SINUMERIK Operate trainer")
+    parser.add_argument("--machine", help="machine name (data/machines) or TOML file")
+    parser.add_argument("--data-dir", help="NC data directory")
+    parser.add_argument("--ephemeral", action="store_true",
+                        help="work on a temporary copy of the NC data (nothing is saved)")
+    parser.add_argument("--program", help="part program to select in AUTO at start")
+    args = parser.parse_args(argv)
+    started = time.perf_counter()
+    try:
+        app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program)
+    except Exception as exc:  # a CLI/file problem: a clear message, no traceback
+        print(f"hmi: {exc}", file=sys.stderr)
+        return 2
+    app.started_at = started  # type: ignore[attr-defined]
+    app.run()
     return 0

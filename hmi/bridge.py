@@ -1,0 +1,150 @@
+"""The bridge: the only code of the HMI that calls the kernel.
+
+It advances the simulated NCK from a Textual interval timer (no threads),
+posts :class:`~hmi.messages.NckStatusChanged` only when the snapshot's ``seq``
+changed, forwards operator commands and reports rejections.
+
+For tests the timer is not started (``realtime=False``): the test advances the
+kernel explicitly with :meth:`NckBridge.advance` or :meth:`NckBridge.step` and
+then lets the app process the posted messages (``await pilot.pause()``).
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any, Callable, Protocol
+
+from textual.message_pump import MessagePump
+
+from nck.commands import Accepted, Rejected, SubmitResult
+from nck.status import NckStatus
+
+from hmi.messages import AlarmLogged, CommandRejected, NckStatusChanged
+
+REFRESH_PERIOD_S = 0.05
+"""Timer period: the kernel is advanced and the screen refreshed at most 20 times a second."""
+
+MAX_CATCH_UP_S = 0.25
+"""After a stall (debugger, suspended terminal) the kernel catches up at most this much time."""
+
+
+class NckLike(Protocol):
+    """What the bridge needs from the kernel facade (``nck.kernel.Nck``)."""
+
+    def submit(self, command: Any) -> SubmitResult:
+        """Take or refuse an operator command."""
+
+    def tick(self, dt_s: float) -> None:
+        """Advance simulated time."""
+
+    def status(self) -> NckStatus:
+        """Return the current snapshot."""
+
+
+class NckBridge:
+    """Drives one kernel for one app.
+
+    Args:
+        nck: the kernel facade.
+        realtime: start a timer that advances the kernel with the wall clock.
+        ipo_cycle_s: the kernel's IPO cycle; :meth:`step` advances whole cycles.
+        clock: monotonic clock in seconds (replaceable for tests).
+    """
+
+    def __init__(
+        self,
+        nck: NckLike,
+        *,
+        realtime: bool = True,
+        ipo_cycle_s: float | None = None,
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
+        self.nck = nck
+        self.realtime = realtime
+        self.ipo_cycle_s = ipo_cycle_s or float(getattr(nck, "ipo_cycle_s", 0.002) or 0.002)
+        self._clock = clock
+        self._target: MessagePump | None = None
+        self._last_wall: float | None = None
+        self._last_seq: int | None = None
+        self._last_log_seq = 0
+        self._status: NckStatus = nck.status()
+        self.refresh_count = 0
+
+    # -- wiring -----------------------------------------------------------------------
+    def attach(self, target: MessagePump) -> None:
+        """Post messages to ``target`` (the app) and, if realtime, start the timer."""
+        self._target = target
+        self._last_wall = self._clock()
+        if self.realtime:
+            target.set_interval(REFRESH_PERIOD_S, self._on_timer, name="nck-bridge")
+        self.poll(force=True)
+
+    def _on_timer(self) -> None:
+        now = self._clock()
+        last = self._last_wall if self._last_wall is not None else now
+        self._last_wall = now
+        dt = min(max(now - last, 0.0), MAX_CATCH_UP_S)
+        if dt > 0:
+            self.advance(dt)
+
+    # -- kernel access ------------------------------------------------------------------
+    @property
+    def status(self) -> NckStatus:
+        """The latest snapshot read from the kernel."""
+        return self._status
+
+    def advance(self, dt_s: float) -> NckStatus:
+        """Advance the kernel by ``dt_s`` seconds of simulated time, then poll."""
+        self.nck.tick(dt_s)
+        return self.poll()
+
+    def step(self, n_ipo_cycles: int = 1) -> NckStatus:
+        """Advance the kernel by whole IPO cycles (tests), then poll."""
+        stepper = getattr(self.nck, "step", None)
+        if callable(stepper):
+            stepper(n_ipo_cycles)
+        else:
+            self.nck.tick(n_ipo_cycles * self.ipo_cycle_s)
+        return self.poll()
+
+    def run_until(self, predicate: Callable[[NckStatus], bool], *, max_s: float = 60.0,
+                  dt_s: float = 0.01) -> NckStatus:
+        """Advance in steps of ``dt_s`` until ``predicate(status)`` holds or ``max_s`` passed."""
+        elapsed = 0.0
+        status = self.poll()
+        while not predicate(status) and elapsed < max_s:
+            self.nck.tick(dt_s)
+            elapsed += dt_s
+            status = self.nck.status()
+        return self.poll()
+
+    def poll(self, force: bool = False) -> NckStatus:
+        """Read the snapshot; post it when ``seq`` changed, and post new log entries."""
+        status = self.nck.status()
+        self._status = status
+        if force or status.seq != self._last_seq:
+            self._last_seq = status.seq
+            self.refresh_count += 1
+            self._post(NckStatusChanged(status))
+        self._post_new_log_entries()
+        return status
+
+    def _post_new_log_entries(self) -> None:
+        reader = getattr(self.nck, "alarm_log_since", None)
+        if not callable(reader):
+            return
+        for entry in reader(self._last_log_seq):
+            self._last_log_seq = max(self._last_log_seq, entry.seq)
+            self._post(AlarmLogged(entry))
+
+    def submit(self, command: Any) -> SubmitResult:
+        """Forward an operator command; a refusal is posted as :class:`CommandRejected`."""
+        result = self.nck.submit(command)
+        if isinstance(result, Rejected):
+            self._post(CommandRejected(command, result.reason, result.alarm))
+        self.poll()
+        return result if isinstance(result, (Accepted, Rejected)) else Accepted()
+
+    def _post(self, message: Any) -> None:
+        if self._target is not None:
+            self._target.post_message(message)

@@ -1,0 +1,41 @@
+"""App-wide messages of the HMI, named as past-tense events.
+
+The bridge posts them to the app; the app hands the snapshot to the area
+screens (attributes down, messages up).
+"""
+
+from __future__ import annotations
+
+from textual.message import Message
+
+from nck.status import AlarmEntry, NckStatus
+
+
+class NckStatusChanged(Message):
+    """A new kernel snapshot with a different ``seq`` is available."""
+
+    def __init__(self, status: NckStatus) -> None:
+        super().__init__()
+        self.status = status
+
+    def can_replace(self, message: Message) -> bool:
+        """A newer snapshot makes an unprocessed older one pointless."""
+        return isinstance(message, NckStatusChanged)
+
+
+class CommandRejected(Message):
+    """The kernel refused an operator command; ``reason`` is shown on the dialog line."""
+
+    def __init__(self, command: object, reason: str, alarm: int | None = None) -> None:
+        super().__init__()
+        self.command = command
+        self.reason = reason
+        self.alarm = alarm
+
+
+class AlarmLogged(Message):
+    """A new entry appeared in the kernel's alarm/message log."""
+
+    def __init__(self, entry: AlarmEntry) -> None:
+        super().__init__()
+        self.entry = entry

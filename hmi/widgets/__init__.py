@@ -1,0 +1,1 @@
+"""Widgets shared by the operating areas (one widget per module)."""

@@ -1,0 +1,133 @@
+"""The header of every area screen: states, the alarm/message line, program and overrides."""
+
+from __future__ import annotations
+
+from textual.app import ComposeResult
+from textual.containers import Vertical
+from textual.widgets import Static
+
+from nck.status import NckStatus
+
+CHANNEL_STATE_TEXT = {
+    "reset": "Channel reset",
+    "active": "Channel active",
+    "interrupted": "Channel interrupted",
+}
+PROGRAM_STATE_TEXT = {
+    "aborted": "Program aborted",
+    "running": "Program running",
+    "stopped": "Program stopped",
+    "interrupted": "Program interrupted",
+    "waiting": "Program waiting",
+}
+MODE_TEXT = {"JOG": "JOG", "MDA": "MDA", "AUTO": "AUTO"}
+LEVEL_NAMES = {
+    0: "Siemens", 1: "Manufacturer", 2: "Service", 3: "User",
+    4: "Keyswitch 3", 5: "Keyswitch 2", 6: "Keyswitch 1", 7: "Keyswitch 0",
+}
+ALARM_CLASSES = ("-alarm-red", "-alarm-orange", "-alarm-user", "-message", "-hint")
+
+
+def increment_text(increment: int | None) -> str:
+    """Return the JOG increment as the mode line shows it (``INC 100``, ``INC VAR``)."""
+    return "INC VAR" if increment is None else f"INC {increment}"
+
+
+def mode_line(status: NckStatus) -> str:
+    """Return mode plus machine function, e.g. ``JOG REF`` or ``JOG INC 100``."""
+    channel = status.channel
+    text = MODE_TEXT.get(channel.mode, channel.mode)
+    function = channel.machine_function
+    if function == "INC":
+        text += " " + increment_text(channel.increment)
+    elif function:
+        text += f" {function}"
+    return text
+
+
+def alarm_class(category: str) -> str:
+    """Return the header style class for an alarm category."""
+    if category in ("user",):
+        return "-alarm-user"
+    if category in ("program", "channel", "cycle"):
+        return "-alarm-orange"
+    return "-alarm-red"
+
+
+def format_override(value: object) -> str:
+    """Return an override percentage without a needless decimal point."""
+    try:
+        number = float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return "100"
+    return f"{number:.0f}" if number == int(number) else f"{number:g}"
+
+
+class AreaHeader(Vertical):
+    """Three lines: states, alarm/message line, selected program with overrides."""
+
+    def compose(self) -> ComposeResult:
+        """The three lines."""
+        yield Static("", id="hdr-state", markup=False)
+        yield Static("", id="hdr-alarm", markup=False)
+        yield Static("", id="hdr-program", markup=False)
+
+    def show(self, area_title: str, status: NckStatus | None, hint: str = "") -> None:
+        """Show the header for ``status`` (updates only lines that changed)."""
+        state = self.query_one("#hdr-state", Static)
+        alarm = self.query_one("#hdr-alarm", Static)
+        program = self.query_one("#hdr-program", Static)
+        if status is None:
+            self._set(state, f" {area_title}  │ NCK not connected")
+            self._set(alarm, "")
+            self._set(program, "")
+            return
+        channel = status.channel
+        level = status.access_level
+        parts = [
+            f" {area_title}",
+            mode_line(status),
+            "CHAN1",
+            CHANNEL_STATE_TEXT.get(channel.channel_state, channel.channel_state),
+            PROGRAM_STATE_TEXT.get(channel.program_state, channel.program_state),
+            f"Level {level} {LEVEL_NAMES.get(level, '')}".rstrip(),
+        ]
+        self._set(state, "  │ ".join(parts))
+        text, css = self.alarm_line(status, hint)
+        self._set(alarm, text)
+        for name in ALARM_CLASSES:
+            alarm.set_class(name == css, name)
+        overrides = channel.overrides
+        selected = channel.selected_program or "no program selected"
+        right = (
+            f"Feed {format_override(overrides.get('feed', 100))} %   "
+            f"Rapid {format_override(overrides.get('rapid', 100))} %   "
+            f"Spindle {format_override(overrides.get('spindle', 100))} % "
+        )
+        width = max(self.size.width, 80)
+        left = f" {selected}"
+        self._set(program, left + " " * max(1, width - len(left) - len(right)) + right)
+
+    @staticmethod
+    def alarm_line(status: NckStatus, hint: str = "") -> tuple[str, str]:
+        """Return the alarm/message line text and its style class.
+
+        The newest pending alarm wins; else the NC message (MSG); else the HMI hint
+        (e.g. why a command was refused).
+        """
+        if status.alarms:
+            top = max(status.alarms, key=lambda entry: entry.seq)
+            count = len(status.alarms)
+            more = f"   (+{count - 1} more)" if count > 1 else ""
+            return f" {top.number:>6}  {top.text}{more}", alarm_class(top.category)
+        if status.channel.message:
+            return f" {status.channel.message}", "-message"
+        if hint:
+            return f" {hint}", "-hint"
+        return "", ""
+
+    @staticmethod
+    def _set(widget: Static, text: str) -> None:
+        if getattr(widget, "_last_text", None) != text:
+            widget._last_text = text  # type: ignore[attr-defined]
+            widget.update(text)
