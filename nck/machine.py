@@ -47,6 +47,7 @@ class MachineConfig:
     axes: tuple[AxisConfig, ...]
     md: dict[str, Any] = field(default_factory=dict)
     source: str = ""
+    sim: dict[str, Any] = field(default_factory=dict)
 
     @property
     def path_axes(self) -> tuple[str, ...]:
@@ -71,6 +72,26 @@ class MachineConfig:
         if isinstance(value, dict):
             return value.get(axis, default) if axis is not None else value
         return value
+
+    def md_float(self, ident: str, axis: str | None = None, default: float = 0.0) -> float:
+        """Return a numeric machine-data value (per axis where given) as a float."""
+        value = self.md_value(ident, axis, default)
+        if isinstance(value, (list, tuple)):
+            value = value[0] if value else default
+        try:
+            return float(value)
+        except (TypeError, ValueError):
+            return float(default)
+
+    def sim_float(self, key: str, axis: str, default: float = 0.0) -> float:
+        """Return a value of the simulated mechanics (``[sim]`` table), per axis."""
+        value = self.sim.get(key, {})
+        if isinstance(value, dict):
+            value = value.get(axis, default)
+        try:
+            return float(value)
+        except (TypeError, ValueError):
+            return float(default)
 
 
 class MachineFileError(Exception):
@@ -105,6 +126,7 @@ def load_machine(name_or_path: str | None = None) -> MachineConfig:
             axes=axes,
             md=dict(table.get("md", {})),
             source=str(path),
+            sim=dict(table.get("sim", {})),
         )
     except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError) as exc:
         raise MachineFileError(f"machine file {path}: {exc}") from exc

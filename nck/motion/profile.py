@@ -1,0 +1,284 @@
+"""One-dimensional velocity profiles along a path coordinate.
+
+A :class:`Profile` is a sequence of phases with constant jerk; it maps time
+since its start to path distance, velocity and acceleration and is sampled
+with numpy for a whole block at once. The builders make
+
+* BRISK profiles (acceleration-limited, trapezoidal velocity: ``jerk=None``),
+* SOFT profiles (jerk-limited S-curves: every velocity change starts and ends
+  at zero acceleration, so a chain of such blocks is jerk-limited too).
+
+Units are consistent but arbitrary (the planner uses mm, s).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+TINY = 1e-12
+
+
+@dataclass(frozen=True, slots=True)
+class Profile:
+    """Phases of constant jerk: start times, and distance/velocity/acceleration at each start.
+
+    ``duration_s`` is the end of the last phase; ``length`` the distance covered.
+    """
+
+    t0: np.ndarray
+    s0: np.ndarray
+    v0: np.ndarray
+    a0: np.ndarray
+    j: np.ndarray
+    duration_s: float
+    length: float
+    v_end: float
+
+    def sample(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Return distance, velocity and acceleration at times ``t`` (clipped to the profile)."""
+        t = np.clip(t, 0.0, self.duration_s)
+        idx = np.searchsorted(self.t0, t, side="right") - 1
+        idx = np.clip(idx, 0, len(self.t0) - 1)
+        dt = t - self.t0[idx]
+        j = self.j[idx]
+        a = self.a0[idx]
+        v = self.v0[idx]
+        s = self.s0[idx] + v * dt + a * dt * dt / 2.0 + j * dt**3 / 6.0
+        vel = v + a * dt + j * dt * dt / 2.0
+        acc = a + j * dt
+        return np.minimum(s, self.length), vel, acc
+
+    def state_at(self, t: float) -> tuple[float, float, float]:
+        """Distance, velocity and acceleration at one instant."""
+        s, v, a = self.sample(np.array([t]))
+        return float(s[0]), float(v[0]), float(a[0])
+
+
+class _Builder:
+    """Accumulates constant-jerk phases."""
+
+    def __init__(self, v: float, a: float = 0.0) -> None:
+        self.t = 0.0
+        self.s = 0.0
+        self.v = v
+        self.a = a
+        self.rows: list[tuple[float, float, float, float, float]] = []
+
+    def phase(self, duration: float, jerk: float) -> None:
+        if duration <= TINY:
+            return
+        self.rows.append((self.t, self.s, self.v, self.a, jerk))
+        d = duration
+        self.s += self.v * d + self.a * d * d / 2.0 + jerk * d**3 / 6.0
+        self.v += self.a * d + jerk * d * d / 2.0
+        self.a += jerk * d
+        self.t += d
+
+    def accel_phase(self, duration: float, accel: float) -> None:
+        """Constant acceleration (BRISK): the acceleration jumps to ``accel``."""
+        if duration <= TINY:
+            return
+        self.a = accel
+        self.phase(duration, 0.0)
+        self.a = 0.0
+
+    def ramp(self, v_target: float, accel: float, jerk: float | None) -> None:
+        """Change velocity from the current value (at zero acceleration) to ``v_target``."""
+        dv = v_target - self.v
+        if abs(dv) <= TINY:
+            self.v = v_target
+            return
+        sign = 1.0 if dv > 0 else -1.0
+        dv = abs(dv)
+        if jerk is None:
+            self.accel_phase(dv / accel, sign * accel)
+        else:
+            if dv >= accel * accel / jerk:
+                tj = accel / jerk
+                ta = dv / accel - tj
+            else:
+                tj = math.sqrt(dv / jerk)
+                ta = 0.0
+            self.phase(tj, sign * jerk)
+            self.phase(ta, 0.0)
+            self.phase(tj, -sign * jerk)
+            self.a = 0.0
+        self.v = v_target
+
+    def cruise(self, distance: float) -> None:
+        if distance > TINY and self.v > TINY:
+            self.a = 0.0
+            self.phase(distance / self.v, 0.0)
+
+    def build(self, length: float) -> Profile:
+        if not self.rows:
+            self.rows.append((0.0, 0.0, self.v, 0.0, 0.0))
+        arr = np.array(self.rows, dtype=float)
+        return Profile(
+            t0=arr[:, 0], s0=arr[:, 1], v0=arr[:, 2], a0=arr[:, 3], j=arr[:, 4],
+            duration_s=self.t, length=length, v_end=max(self.v, 0.0),
+        )
+
+
+def ramp_distance(v_a: float, v_b: float, accel: float, jerk: float | None) -> float:
+    """Distance needed to change velocity from ``v_a`` to ``v_b`` (zero acceleration at both ends)."""
+    dv = abs(v_b - v_a)
+    if jerk is None:
+        return abs(v_b * v_b - v_a * v_a) / (2.0 * accel)
+    if dv >= accel * accel / jerk:
+        duration = dv / accel + accel / jerk
+    else:
+        duration = 2.0 * math.sqrt(dv / jerk)
+    return (v_a + v_b) / 2.0 * duration
+
+
+def reach_up(v_start: float, length: float, accel: float, jerk: float | None) -> float:
+    """Highest velocity reachable from ``v_start`` within ``length`` (also: highest entry
+    velocity from which ``v_start`` can still be reached by braking, by symmetry)."""
+    if length <= 0.0:
+        return v_start
+    if jerk is None:
+        return math.sqrt(v_start * v_start + 2.0 * accel * length)
+    # Short ramp (no constant-acceleration phase): u = sqrt(dv), u^3 + 2 v u - L sqrt(j) = 0.
+    sj = math.sqrt(jerk)
+    p = 2.0 * v_start
+    q = -length * sj
+    disc = (q / 2.0) ** 2 + (p / 3.0) ** 3
+    root = math.sqrt(disc)
+    u = np.cbrt(-q / 2.0 + root) + np.cbrt(-q / 2.0 - root)
+    dv = float(u) ** 2
+    if dv <= accel * accel / jerk:
+        return v_start + dv
+    # Long ramp: (2v + dv)(dv/a + a/j) = 2L  ->  dv^2/a + dv (a/j + 2v/a) + 2 v a / j - 2L = 0
+    qa = 1.0 / accel
+    qb = accel / jerk + 2.0 * v_start / accel
+    qc = 2.0 * v_start * accel / jerk - 2.0 * length
+    dv = (-qb + math.sqrt(max(qb * qb - 4.0 * qa * qc, 0.0))) / (2.0 * qa)
+    return v_start + max(dv, 0.0)
+
+
+def reach_down(v_start: float, length: float, accel: float, jerk: float | None) -> float:
+    """Lowest velocity reachable from ``v_start`` by braking within ``length``."""
+    if ramp_distance(v_start, 0.0, accel, jerk) <= length:
+        return 0.0
+    lo, hi = 0.0, v_start
+    for _ in range(60):
+        mid = (lo + hi) / 2.0
+        if ramp_distance(v_start, mid, accel, jerk) > length:
+            lo = mid
+        else:
+            hi = mid
+    return hi
+
+
+def settle_acceleration(builder: _Builder, jerk: float | None) -> None:
+    """Bring a non-zero starting acceleration to zero with the jerk limit (SOFT)."""
+    if jerk is None or abs(builder.a) <= TINY:
+        builder.a = 0.0
+        return
+    a = builder.a
+    builder.phase(abs(a) / jerk, -math.copysign(jerk, a))
+    builder.a = 0.0
+
+
+def build_profile(
+    length: float,
+    v_start: float,
+    v_end: float,
+    v_max: float,
+    accel: float,
+    jerk: float | None,
+    a_start: float = 0.0,
+) -> Profile:
+    """Fastest profile over ``length`` from ``v_start`` to ``v_end`` not above ``v_max``.
+
+    If ``v_end`` cannot be reached within ``length`` the profile ends at the
+    nearest reachable velocity (see ``Profile.v_end``).
+    """
+    builder = _Builder(max(v_start, 0.0), a_start)
+    settle_acceleration(builder, jerk)
+    rest = length - builder.s
+    v0 = builder.v
+    v_max = max(v_max, 0.0)
+    if rest <= TINY:
+        return builder.build(max(builder.s, length))
+    v_end = min(max(v_end, 0.0), v_max)
+    # Feasibility of the end velocity.
+    if v_end > v0:
+        v_end = min(v_end, reach_up(v0, rest, accel, jerk))
+    elif v_end < v0:
+        v_end = max(v_end, reach_down(v0, rest, accel, jerk))
+    if v0 > v_max:
+        peak = max(v_max, v_end)
+    else:
+        peak = _peak(v0, v_end, v_max, rest, accel, jerk)
+    if peak <= TINY and v0 <= TINY:
+        # Nothing can move (feed 0): an empty profile that never ends the block.
+        return builder.build(length)
+    d1 = ramp_distance(v0, peak, accel, jerk)
+    d3 = ramp_distance(peak, v_end, accel, jerk)
+    builder.ramp(peak, accel, jerk)
+    builder.cruise(rest - d1 - d3)
+    builder.ramp(v_end, accel, jerk)
+    return builder.build(length)
+
+
+def _peak(v0: float, v1: float, v_max: float, length: float, accel: float, jerk: float | None) -> float:
+    """Highest cruise velocity so that both ramps fit into ``length``."""
+    low = max(v0, v1)
+    if v_max <= low:
+        return max(v_max, v1) if v_max >= v1 else v1
+
+    def need(vp: float) -> float:
+        return ramp_distance(v0, vp, accel, jerk) + ramp_distance(vp, v1, accel, jerk)
+
+    if need(v_max) <= length:
+        return v_max
+    if jerk is None:
+        vp = math.sqrt((2.0 * accel * length + v0 * v0 + v1 * v1) / 2.0)
+        return min(max(vp, low), v_max)
+    lo, hi = low, v_max
+    for _ in range(40):
+        mid = (lo + hi) / 2.0
+        if need(mid) <= length:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+def braking_profile(v_start: float, a_start: float, accel: float, jerk: float | None) -> Profile:
+    """Stop as fast as the limits allow from (``v_start``, ``a_start``)."""
+    builder = _Builder(max(v_start, 0.0), a_start)
+    if jerk is None:
+        builder.a = 0.0
+        builder.ramp(0.0, accel, None)
+        return builder.build(builder.s)
+    if a_start >= 0.0:
+        settle_acceleration(builder, jerk)
+        builder.ramp(0.0, accel, jerk)
+        return builder.build(builder.s)
+    a1 = min(-a_start, accel)
+    builder.a = -a1
+    v = builder.v
+    if v <= a1 * a1 / (2.0 * jerk):
+        builder.phase(a1 / jerk, jerk)
+        builder.a = 0.0
+        builder.v = 0.0
+        return builder.build(builder.s)
+    drop_up = (accel * accel - a1 * a1) / (2.0 * jerk)
+    drop_down = accel * accel / (2.0 * jerk)
+    if v >= drop_up + drop_down:
+        builder.phase((accel - a1) / jerk, -jerk)
+        builder.phase((v - drop_up - drop_down) / accel, 0.0)
+        builder.phase(accel / jerk, jerk)
+    else:
+        peak = math.sqrt((2.0 * jerk * v + a1 * a1) / 2.0)
+        builder.phase((peak - a1) / jerk, -jerk)
+        builder.phase(peak / jerk, jerk)
+    builder.a = 0.0
+    builder.v = 0.0
+    return builder.build(builder.s)
