@@ -58,6 +58,9 @@ class ModalView:
     spindle_speed_rpm: float = 0.0
     spindle_state: str = "M5"
     aux: Mapping[str, str] = field(default_factory=dict)
+    tool_name: str = ""  # name of the active tool when it has one (T="CUTTER_10")
+    tool_length_mm: float = 0.0  # length 1 of the active edge (geometry + wear), for the T,F,S window
+    tool_radius_mm: float = 0.0  # radius of the active edge (geometry + wear)
 
 
 @dataclass(frozen=True, slots=True)
