@@ -1,0 +1,222 @@
+"""Check and dry-run a program text without a channel: what the editor and its simulation use.
+
+Two passes, both pure and deterministic (no clock, no threads; the HMI runs them
+in a worker thread and shows the results as they come):
+
+1. **Block syntax**, line by line with the language's block parser: every
+   faulty line is reported, so a trainee sees all syntax errors at once.
+2. **Interpretation**: the interpreter runs the whole program headless (no axis
+   moves; the canonical commands are only collected). This finds what one line
+   cannot show (undefined labels, nesting, unknown subprograms, values out of
+   range …). The run stops at the first alarm, as the control would; that alarm
+   is reported unless its line already has a syntax alarm.
+
+:func:`run_text` is the second pass on its own and also returns the canonical
+motions, for the toolpath simulation.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, field
+from typing import Any, Callable, Iterator
+
+from nck.canon import CanonCommand, Motion
+from nck.errors import NcAlarmError
+from nck.resources import alarm_text
+
+MAX_RUN_BLOCKS = 200_000
+"""A headless run stops after this many interpreted blocks (endless loops end)."""
+
+MAX_RUN_MOTIONS = 100_000
+"""At most this many motions are collected for the simulation."""
+
+
+@dataclass(frozen=True, slots=True)
+class CheckAlarm:
+    """One problem found in a program text.
+
+    Attributes:
+        number: SINUMERIK alarm number.
+        line: 1-based source line (None when the alarm has no line).
+        n: block number of the block, if known.
+        text: the formatted alarm text.
+        params: the alarm parameters.
+    """
+
+    number: int
+    line: int | None
+    n: int | None
+    text: str
+    params: tuple[str, ...] = ()
+
+
+@dataclass(slots=True)
+class RunResult:
+    """What a headless run of a program text produced."""
+
+    motions: list[Motion] = field(default_factory=list)
+    alarms: list[CheckAlarm] = field(default_factory=list)
+    blocks: int = 0
+    finished: bool = False
+    truncated: bool = False
+
+
+def _alarm(error: NcAlarmError, fallback_line: int | None = None) -> CheckAlarm:
+    line = error.line if error.line is not None else fallback_line
+    params = ("1", str(error.n if error.n is not None else (line if line is not None else "")))
+    return CheckAlarm(
+        number=error.number,
+        line=line,
+        n=error.n,
+        text=alarm_text(error.number, params + error.params),
+        params=error.params,
+    )
+
+
+@functools.lru_cache(maxsize=300_000)
+def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
+    """Parse one line; return (alarm number, params, block number) or None (cached by text).
+
+    The cache makes re-checking an edited program cost only the changed lines.
+    """
+    from nck.lang.parser import parse_block
+
+    try:
+        parse_block(line, 1)
+    except NcAlarmError as error:
+        return error.number, error.params, error.n
+    except RecursionError:
+        return 12540, (), None
+    return None
+
+
+def iter_syntax_alarms(text: str) -> Iterator[CheckAlarm]:
+    """Yield a syntax alarm for every line the block parser refuses (pass 1)."""
+    try:
+        import nck.lang.parser  # noqa: F401
+    except ImportError:  # the language is not there: nothing to check line by line
+        return
+    for index, line in enumerate(text.split("\n"), start=1):
+        if not line.strip():
+            continue
+        problem = _line_problem(line)
+        if problem is not None:
+            number, params, n = problem
+            yield _alarm(NcAlarmError(number, *params, line=index, n=n), index)
+
+
+class _OverlaySource:
+    """Serves the edited text under its own name, everything else from ``fallback``."""
+
+    def __init__(self, name: str, text: str, fallback: Any | None) -> None:
+        self._name = name
+        self._text = text
+        self._fallback = fallback
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        """The edited program by its name (with or without extension), else the fallback."""
+        wanted = name.upper().rsplit("/", 1)[-1]
+        own = self._name.upper().rsplit("/", 1)[-1]
+        if wanted in (own, own.rsplit(".", 1)[0]):
+            return self._name, self._text
+        if self._fallback is None:
+            return None
+        return self._fallback.read_program(name)
+
+
+def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: Any) -> Any:
+    from nck.interp.interpreter import Interpreter  # type: ignore[import-not-found]
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+
+    source = _OverlaySource(name, text, programs)
+    return Interpreter(machine or load_machine(), source, data if data is not None else NcData())
+
+
+def run_text(
+    name: str,
+    text: str,
+    *,
+    machine: Any = None,
+    programs: Any = None,
+    data: Any = None,
+    max_blocks: int = MAX_RUN_BLOCKS,
+    should_stop: Callable[[], bool] | None = None,
+) -> RunResult:
+    """Interpret ``text`` headless as main program ``name`` and collect its motions.
+
+    Args:
+        name: the program name (``PART1.MPF``); subprograms are looked up in ``programs``.
+        text: the program text.
+        machine: the MachineConfig (default machine when None).
+        programs: a ProgramSource for subprograms (none when None).
+        data: NcData (fresh defaults when None); the run may change it, pass a copy.
+        max_blocks: stop after this many blocks (``truncated`` is then set).
+        should_stop: polled between blocks; True ends the run early (``truncated``).
+
+    Returns:
+        the motions, the alarm that stopped the run (if any), and counters.
+    """
+    result = RunResult()
+    try:
+        interpreter = _make_interpreter(name, text, machine, programs, data)
+    except ImportError:
+        return result
+    try:
+        interpreter.start_text(name, text)
+        while not interpreter.finished:
+            if result.blocks >= max_blocks or (should_stop is not None and should_stop()):
+                result.truncated = True
+                break
+            block = interpreter.step()
+            result.blocks += 1
+            for command in block.commands:
+                if isinstance(command, Motion) and len(result.motions) < MAX_RUN_MOTIONS:
+                    result.motions.append(command)
+            if block.finished:
+                break
+        result.finished = not result.truncated
+    except NcAlarmError as error:
+        result.alarms.append(_alarm(error))
+    except RecursionError:
+        result.alarms.append(_alarm(NcAlarmError(12540)))
+    return result
+
+
+def iter_check(
+    name: str,
+    text: str,
+    *,
+    machine: Any = None,
+    programs: Any = None,
+    data: Any = None,
+    should_stop: Callable[[], bool] | None = None,
+) -> Iterator[CheckAlarm]:
+    """Yield every problem of a program text, syntax errors first (streamed).
+
+    The interpretation pass runs only when no syntax error was found (the run
+    would stop at the first one anyway).
+    """
+    syntax_lines: set[int | None] = set()
+    for count, alarm in enumerate(iter_syntax_alarms(text)):
+        syntax_lines.add(alarm.line)
+        yield alarm
+        if should_stop is not None and count % 64 == 0 and should_stop():
+            return
+    if syntax_lines:
+        return
+    run = run_text(name, text, machine=machine, programs=programs, data=data, should_stop=should_stop)
+    for alarm in run.alarms:
+        if alarm.line not in syntax_lines:
+            yield alarm
+
+
+def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:
+    """Every problem of a program text as a list (see :func:`iter_check`)."""
+    return list(iter_check(name, text, **options))
+
+
+def commands_of(result: RunResult) -> list[CanonCommand]:
+    """The collected motions as canonical commands (for sinks and golden files)."""
+    return list(result.motions)
