@@ -169,6 +169,18 @@ class HmiApp(App):
                 return screen
         return None
 
+    def program_names(self) -> list[str]:
+        """Names of the part programs the kernel can select (for the selection dialog)."""
+        nck = self.bridge.nck
+        for holder in (nck, getattr(nck, "programs", None)):
+            lister = getattr(holder, "list_programs", None)
+            if callable(lister):
+                try:
+                    return [str(name) for name in lister()]
+                except Exception:  # a broken listing shows as an empty list
+                    return []
+        return []
+
     def _status(self) -> NckStatus:
         return self.bridge.status
 

@@ -110,6 +110,10 @@ class FakeNck:
         """Advance ``n`` IPO cycles."""
         self.tick(n * self.ipo_cycle_s)
 
+    def list_programs(self) -> list[str]:
+        """Names of the part programs."""
+        return sorted(self.programs)
+
     def raise_alarm(self, number: int, text: str, category: str = "channel",
                     clear: str = "reset") -> None:
         """Test helper: put an alarm on the list."""

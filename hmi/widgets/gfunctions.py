@@ -1,0 +1,84 @@
+"""G-function displays: the main groups in a line, and every group in a table."""
+
+from __future__ import annotations
+
+import functools
+from typing import Mapping
+
+from rich.table import Table
+from rich.text import Text
+from textual.widgets import Static
+
+from nck.resources import load_toml
+
+MAIN_GROUPS = (1, 6, 7, 8, 10, 13, 14, 15)
+"""Groups of the G-functions window: motion, plane, TRC, WO, exact stop, unit, dimension, feed."""
+
+
+@functools.cache
+def group_meanings() -> dict[int, str]:
+    """Group number → meaning, from ``data/gcode/siemens.toml``."""
+    try:
+        table = load_toml("gcode", "siemens.toml")
+    except (OSError, ValueError):
+        return {}
+    return {int(g["number"]): str(g.get("meaning", "")) for g in table.get("group", [])}
+
+
+def main_groups_line(gcodes: Mapping[int, str]) -> Text:
+    """The main groups' active codes in one line."""
+    text = Text(" G functions  ", style="bold")
+    for group in MAIN_GROUPS:
+        text.append(f"{gcodes.get(group, '—'):<8}")
+    return text
+
+
+def all_groups_table(gcodes: Mapping[int, str]) -> Table:
+    """Every group with its number, active code and meaning, in two columns."""
+    meanings = group_meanings()
+    numbers = sorted(set(meanings) | set(gcodes))
+    half = (len(numbers) + 1) // 2
+    table = Table(expand=True, box=None, padding=(0, 1), show_edge=False)
+    for _ in range(2):
+        table.add_column("Grp", justify="right", style="bold", width=4)
+        table.add_column("Active", style="bold #f39200", width=10)
+        table.add_column("Meaning", ratio=1, no_wrap=True, overflow="ellipsis")
+    for row in range(half):
+        cells: list[str] = []
+        for number in (numbers[row], numbers[row + half] if row + half < len(numbers) else None):
+            if number is None:
+                cells += ["", "", ""]
+            else:
+                cells += [str(number), gcodes.get(number, ""), meanings.get(number, "")]
+        table.add_row(*cells)
+    return table
+
+
+class GFunctionsLine(Static):
+    """The G-functions window of the main view."""
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
+        self._key: object = None
+
+    def show(self, gcodes: Mapping[int, str]) -> None:
+        """Redraw when the active codes changed."""
+        key = tuple(sorted(gcodes.items()))
+        if key != self._key:
+            self._key = key
+            self.update(main_groups_line(gcodes))
+
+
+class GFunctionsTable(Static):
+    """All G groups (softkey ``G functions``)."""
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
+        self._key: object = None
+
+    def show(self, gcodes: Mapping[int, str]) -> None:
+        """Redraw when the active codes changed."""
+        key = tuple(sorted(gcodes.items()))
+        if key != self._key:
+            self._key = key
+            self.update(all_groups_table(gcodes))

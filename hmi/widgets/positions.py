@@ -1,0 +1,65 @@
+"""The position window of the Machine area: axes, distance to go, spindle."""
+
+from __future__ import annotations
+
+from rich.text import Text
+from textual.widgets import Static
+
+from nck.status import AxisStatus, NckStatus
+
+UNREFERENCED_MARK = "○"
+"""Shown beside an axis that is not referenced (it disappears after REF)."""
+
+
+def format_mm(value: float, width: int = 12) -> str:
+    """A position with 3 decimals, right aligned, never ``-0.000``."""
+    text = f"{value:.3f}"
+    if text in ("-0.000",):
+        text = "0.000"
+    return text.rjust(width)
+
+
+def position_lines(status: NckStatus, mcs: bool, selected_axis: str | None) -> Text:
+    """Render the position window for one snapshot."""
+    text = Text()
+    system = "MCS" if mcs else "WCS"
+    text.append(f" {system:<8}{'Position [mm]':>20}{'Dist-to-go':>18}\n", style="bold")
+    for axis in status.axes:
+        if axis.kind == "spindle":
+            continue
+        _axis_line(text, axis, mcs, axis.name == selected_axis)
+    for axis in status.axes:
+        if axis.kind != "spindle":
+            continue
+        marker = "▸" if axis.name == selected_axis else " "
+        text.append(f"{marker}{axis.name:<4}", style="bold")
+        text.append("   ")
+        text.append(format_mm(axis.position_mcs if mcs else axis.position_wcs, 17) + "°")
+        text.append(f"{axis.speed_rpm:>13.0f} rpm\n")
+    return text
+
+
+def _axis_line(text: Text, axis: AxisStatus, mcs: bool, selected: bool) -> None:
+    marker = "▸" if selected else " "
+    text.append(f"{marker}{axis.name:<4}", style="bold reverse" if selected else "bold")
+    text.append(f" {UNREFERENCED_MARK if not axis.referenced else ' '} ", style="bold")
+    value = axis.position_mcs if mcs else axis.position_wcs
+    unit = "°" if axis.kind == "rotary" else " "
+    text.append(format_mm(value, 17) + unit, style="bold")
+    text.append(format_mm(axis.distance_to_go, 17) + "\n")
+
+
+class PositionWindow(Static):
+    """Actual positions (MCS or WCS), distance to go, reference marks and the spindle."""
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
+        self._key: object = None
+
+    def show(self, status: NckStatus, mcs: bool, selected_axis: str | None) -> None:
+        """Redraw only when the axes, the coordinate system or the selection changed."""
+        key = (status.axes, mcs, selected_axis)
+        if key == self._key:
+            return
+        self._key = key
+        self.update(position_lines(status, mcs, selected_axis))

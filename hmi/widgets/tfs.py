@@ -1,0 +1,51 @@
+"""The T, F, S window of the Machine area: active tool, path feed, spindle."""
+
+from __future__ import annotations
+
+from rich.text import Text
+from textual.widgets import Static
+
+from nck.status import NckStatus
+
+from hmi.widgets.header import format_override
+
+
+def tfs_lines(status: NckStatus) -> Text:
+    """Render tool, feed and spindle for one snapshot."""
+    modal = status.channel.modal
+    overrides = status.channel.overrides
+    text = Text()
+    tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
+    text.append(" T ", style="bold")
+    text.append(f"{tool:<16}", style="bold")
+    text.append(f"D{modal.edge}\n" if modal.edge else "D0\n")
+    text.append(f"   L {modal.tool_length_mm:10.3f}   R {modal.tool_radius_mm:8.3f}\n")
+    text.append(" F ", style="bold")
+    unit = "mm/rev" if modal.gcodes.get(15) == "G95" else "mm/min"
+    text.append(f"{status.channel.path_feed_mm_min:10.3f} / {modal.feed:10.3f} {unit}")
+    text.append(f"  {format_override(overrides.get('feed', 100)):>3} %\n")
+    spindle = next((a for a in status.axes if a.kind == "spindle"), None)
+    if spindle is not None:
+        text.append(f" S{spindle.name[-1] if spindle.name[-1].isdigit() else '1'} ", style="bold")
+        text.append(f"{spindle.speed_rpm:10.0f} / {modal.spindle_speed_rpm:10.0f} rpm   ")
+        text.append(f"{modal.spindle_state:<3}")
+        text.append(f"  {format_override(overrides.get('spindle', 100)):>3} %\n")
+    return text
+
+
+class TfsWindow(Static):
+    """Tool T/D with length and radius, feed actual/set with override, spindle actual/set."""
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
+        self._key: object = None
+
+    def show(self, status: NckStatus) -> None:
+        """Redraw only when the shown values changed."""
+        spindle = tuple(a.speed_rpm for a in status.axes if a.kind == "spindle")
+        key = (status.channel.modal, status.channel.path_feed_mm_min,
+               tuple(status.channel.overrides.items()), spindle)
+        if key == self._key:
+            return
+        self._key = key
+        self.update(tfs_lines(status))

@@ -1,0 +1,403 @@
+"""The Machine area: positions, T/F/S, and the JOG, MDA and AUTO views.
+
+Top: the position window (MCS/WCS by softkey, distance to go, ○ on unreferenced
+axes, spindle) and the T, F, S window; a line with the main G groups; below it
+the view of the current mode (JOG info, MDA editor, AUTO block window) or a view
+chosen by softkey (all G groups, auxiliary functions, program control, block
+search, times/counter). MENU RECALL (F10) returns from a softkey view.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical
+from textual.widgets import ContentSwitcher, Input, Static, TextArea
+
+from nck import commands as cmd
+from nck.status import NckStatus
+
+from hmi.area import AreaBase
+from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.widgets.blocks import BlockWindow
+from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
+from hmi.widgets.header import increment_text
+from hmi.widgets.positions import PositionWindow
+
+from hmi.widgets.tfs import TfsWindow
+
+MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
+SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times")
+PROGRAM_SELECTION_LEVEL = 6
+"""Program selection needs keyswitch position 1 (access level 6) or better."""
+
+
+def format_duration(seconds: float) -> str:
+    """``hh:mm:ss`` of a simulated duration."""
+    whole = int(round(seconds))
+    return f"{whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d}"
+
+
+def _check(flag: object) -> str:
+    return "[x]" if flag else "[ ]"
+
+
+class MachineScreen(AreaBase):
+    """The Machine operating area."""
+
+    AREA_ID: ClassVar[str] = "machine"
+    AREA_TITLE: ClassVar[str] = "MACHINE"
+    CSS_PATH = "machine.tcss"
+
+    def __init__(self) -> None:
+        super().__init__(id="area-machine")
+        self.show_mcs = False
+        self.view: str | None = None
+        self._shown_mode: str | None = None
+        self._mda_loaded = False
+
+    # -- layout --------------------------------------------------------------------------
+    def compose_content(self) -> ComposeResult:
+        """Position and T/F/S windows, G functions line, and the switchable views."""
+        with Horizontal(id="mach-top"):
+            yield PositionWindow(id="positions", classes="window")
+            yield TfsWindow(id="tfs", classes="window")
+        yield GFunctionsLine(id="gline")
+        with ContentSwitcher(id="mach-views", initial="view-jog"):
+            with Vertical(id="view-jog", classes="view"):
+                yield Static("", id="jog-info", markup=False)
+            with Vertical(id="view-mda", classes="view"):
+                yield Static(" MDA", id="mda-title", classes="view-title", markup=False)
+                yield TextArea("", id="mda-editor", soft_wrap=False, show_line_numbers=False)
+            with Vertical(id="view-auto", classes="view"):
+                yield Static("", id="auto-title", classes="view-title", markup=False)
+                yield BlockWindow(height_lines=20, id="auto-blocks")
+            with Vertical(id="view-gfunc", classes="view"):
+                yield Static(" G functions — all groups", classes="view-title", markup=False)
+                yield GFunctionsTable(id="gfunc-table")
+            with Vertical(id="view-aux", classes="view"):
+                yield Static(" Auxiliary functions", classes="view-title", markup=False)
+                yield Static("", id="aux-table", markup=False)
+            with Vertical(id="view-progctl", classes="view"):
+                yield Static(" Program control", classes="view-title", markup=False)
+                yield Static("", id="progctl-table", markup=False)
+            with Vertical(id="view-search", classes="view"):
+                yield Static(" Block search with calculation", classes="view-title", markup=False)
+                yield Static(" Search target: a block number (N70) or text in the block; "
+                             "Enter or ⇧F1 starts the search.", markup=False)
+                yield Input(placeholder="N…", id="search-input")
+                yield Static("", id="search-info", markup=False)
+            with Vertical(id="view-times", classes="view"):
+                yield Static(" Times / Counter", classes="view-title", markup=False)
+                yield Static("", id="times-table", markup=False)
+
+    def on_mount(self) -> None:
+        """Cursor blink off (calm display, stable snapshots), then the base class."""
+        self.query_one("#mda-editor", TextArea).cursor_blink = False
+        self.query_one("#search-input", Input).cursor_blink = False
+        super().on_mount()
+
+    # -- softkeys ----------------------------------------------------------------------------
+    def _mode(self) -> str:
+        return self.status.channel.mode if self.status is not None else "JOG"
+
+    def _reset_state(self) -> bool:
+        return self.status is not None and self.status.channel.channel_state == "reset"
+
+    def softkey_menu(self) -> SoftkeyMenu:
+        """Horizontal softkeys of the Machine area; vertical ones depend on the view."""
+        horizontal = [
+            Softkey("machine.mcs", "Act. val.\nMCS", "toggle_mcs", active=lambda s: s.show_mcs),
+            Softkey("machine.gfunc", "G\nfunctions", "show_view('gfunc')",
+                    active=lambda s: s.view == "gfunc"),
+            Softkey("machine.aux", "Auxiliary\nfunctions", "show_view('aux')",
+                    active=lambda s: s.view == "aux"),
+            Softkey("machine.progctl", "Program\ncontrol", "show_view('progctl')",
+                    enabled=lambda s: s._mode() in ("AUTO", "MDA"),
+                    active=lambda s: s.view == "progctl"),
+            Softkey("machine.search", "Block\nsearch", "show_view('search')",
+                    enabled=lambda s: s._mode() == "AUTO" and s._reset_state()
+                    and bool(s.status.channel.selected_program),
+                    active=lambda s: s.view == "search"),
+            Softkey("machine.times", "Times/\nCounter", "show_view('times')",
+                    active=lambda s: s.view == "times"),
+            Softkey("machine.select", "Select\nprogram", "select_program",
+                    level=PROGRAM_SELECTION_LEVEL,
+                    enabled=lambda s: s._mode() == "AUTO" and s._reset_state()),
+            None,
+        ]
+        return SoftkeyMenu.of(horizontal, self._vertical_softkeys())
+
+    def _vertical_softkeys(self) -> list[Softkey | None]:
+        view = self.view or MAIN_VIEWS.get(self._mode(), "view-jog")
+        if view == "progctl":
+            pc = (lambda s: s.status.channel.program_control)
+            return [
+                Softkey("progctl.sbl_type", f"Single block\n{self.hmi.single_block_type}",
+                        "toggle_sbl_type"),
+                Softkey("progctl.dry_run", "Dry run\nfeed", "toggle_control('dry_run')",
+                        active=lambda s: bool(pc(s).get("dry_run"))),
+                Softkey("progctl.m01", "Programmed\nstop M01", "toggle_control('m01')",
+                        active=lambda s: bool(pc(s).get("m01"))),
+                Softkey("progctl.program_test", "Program\ntest", "toggle_control('program_test')",
+                        active=lambda s: bool(pc(s).get("program_test"))),
+                Softkey("progctl.rov", "Rapid\noverride", "toggle_control('rapid_override')",
+                        active=lambda s: bool(pc(s).get("rapid_override"))),
+                Softkey("progctl.skip", "Skip\nlevels …", "choose_skip_level"),
+            ]
+        if view == "search":
+            return [Softkey("search.start", "Start\nsearch", "start_search",
+                            enabled=lambda s: s._reset_state())]
+        if view == "view-mda":
+            return [Softkey("mda.delete", "Delete\nblocks", "clear_mda",
+                            enabled=lambda s: s._reset_state())]
+        if view == "view-auto":
+            return [Softkey("auto.select", "Select\nprogram", "select_program",
+                            level=PROGRAM_SELECTION_LEVEL,
+                            enabled=lambda s: s._reset_state())]
+        return []
+
+    # -- softkey actions ------------------------------------------------------------------
+    def action_toggle_mcs(self) -> None:
+        """Actual values in the machine (MCS) or workpiece (WCS) coordinate system."""
+        self.show_mcs = not self.show_mcs
+        self._redraw()
+
+    def action_show_view(self, view: str) -> None:
+        """Show a softkey view; the same softkey again returns to the mode's view."""
+        self.view = None if self.view == view else view
+        self._redraw()
+
+    def menu_recall(self) -> bool:
+        """F10: leave a softkey view first, then softkey levels."""
+        if self.view is not None:
+            self.view = None
+            self._redraw()
+            return True
+        return super().menu_recall()
+
+    def action_toggle_control(self, name: str) -> None:
+        """A program-control switch on/off."""
+        current = bool(self.status.channel.program_control.get(name)) if self.status else False
+        self.submit(cmd.SetProgramControl(name, not current))
+
+    def action_toggle_sbl_type(self) -> None:
+        """Single block type SBL1 (action blocks) ⇄ SBL2 (every block)."""
+        app = self.hmi
+        app.single_block_type = "SBL2" if app.single_block_type == "SBL1" else "SBL1"
+        if self.status is not None and self.status.channel.program_control.get("single_block"):
+            self.submit(cmd.SetProgramControl("single_block", app.single_block_type))
+        self._redraw()
+
+    def action_choose_skip_level(self) -> None:
+        """Choose a skip level /0 … /9 to switch on or off."""
+        from screens.dialogs import ChoiceDialog
+
+        active = self._skip_levels()
+        choices = [f"/{n}  {'on' if n in active else 'off'}" for n in range(10)]
+
+        def toggle(choice: str | None) -> None:
+            if choice is None:
+                return
+            level = int(choice[1])
+            levels = set(self._skip_levels())
+            levels.symmetric_difference_update({level})
+            self.submit(cmd.SetProgramControl("skip_levels", frozenset(levels)))
+
+        self.app.push_screen(ChoiceDialog("Skip levels (Enter switches on/off)", choices), toggle)
+
+    def _skip_levels(self) -> frozenset[int]:
+        if self.status is None:
+            return frozenset()
+        value = self.status.channel.program_control.get("skip_levels") or ()
+        return frozenset(int(v) for v in value)  # type: ignore[union-attr]
+
+    def action_select_program(self) -> None:
+        """Choose the part program for AUTOMATIC from the programs the kernel knows."""
+        from screens.dialogs import ChoiceDialog
+
+        names = self.hmi.program_names()
+        selected = self.status.channel.selected_program if self.status else None
+
+        def select(choice: str | None) -> None:
+            if choice:
+                self.submit(cmd.SelectProgram(choice))
+
+        self.app.push_screen(
+            ChoiceDialog("Select program", names, selected, empty_text="no part programs"), select
+        )
+
+    def action_start_search(self) -> None:
+        """Start the block search to the target typed in the search field."""
+        target = self.query_one("#search-input", Input).value.strip()
+        if not target:
+            self.show_hint("Enter a block number or text to search for")
+            return
+        self.submit(cmd.StartBlockSearch(target))
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Enter in the search field starts the search."""
+        if event.input.id == "search-input":
+            self.action_start_search()
+
+    def action_clear_mda(self) -> None:
+        """Delete the MDA blocks."""
+        self.query_one("#mda-editor", TextArea).text = ""
+        self.submit(cmd.SetMdaProgram(""))
+
+    # -- MDA ---------------------------------------------------------------------------------
+    def on_text_area_changed(self, event: TextArea.Changed) -> None:
+        """Typing enters the MDA blocks at once."""
+        if event.text_area.id == "mda-editor" and self._mda_loaded:
+            text = event.text_area.text
+            if self.status is None or text != self.status.channel.mda_text:
+                self.submit(cmd.SetMdaProgram(text))
+
+    def before_cycle_start(self) -> None:
+        """CYCLE START in MDA runs what the editor holds: make sure the kernel has it."""
+        if self._mode() == "MDA" and self._reset_state():
+            text = self.query_one("#mda-editor", TextArea).text
+            if self.status is not None and text != self.status.channel.mda_text:
+                self.submit(cmd.SetMdaProgram(text))
+
+    # -- status ------------------------------------------------------------------------------
+    def update_status(self, status: NckStatus) -> None:
+        """Show a snapshot in every window of the current view."""
+        if not self._mda_loaded:
+            editor = self.query_one("#mda-editor", TextArea)
+            editor.load_text(status.channel.mda_text)
+            self._mda_loaded = True
+        if status.channel.mode != self._shown_mode:
+            self._shown_mode = status.channel.mode
+            self.view = None
+        self._redraw()
+
+    def _redraw(self) -> None:
+        status = self.status
+        if status is None or not self.is_mounted:
+            return
+        channel = status.channel
+        selected_axis = self.hmi.selected_axis
+        self.query_one(PositionWindow).show(status, self.show_mcs, selected_axis)
+        self.query_one(TfsWindow).show(status)
+        self.query_one(GFunctionsLine).show(channel.modal.gcodes)
+        view_id = f"view-{self.view}" if self.view else MAIN_VIEWS.get(channel.mode, "view-jog")
+        switcher = self.query_one(ContentSwitcher)
+        if switcher.current != view_id:
+            switcher.current = view_id
+        self._focus_for(view_id)
+        if view_id == "view-jog":
+            self.query_one("#jog-info", Static).update(self._jog_text(status))
+        elif view_id == "view-mda":
+            self.query_one("#mda-title", Static).update(
+                f" MDA — type blocks, CYCLE START (Alt+G) runs them   {channel.program_state}")
+        elif view_id == "view-auto":
+            self.query_one("#auto-title", Static).update(self._auto_title(status))
+            self.query_one("#auto-blocks", BlockWindow).show(channel)
+        elif view_id == "view-gfunc":
+            self.query_one(GFunctionsTable).show(channel.modal.gcodes)
+        elif view_id == "view-aux":
+            self.query_one("#aux-table", Static).update(self._aux_text(status))
+        elif view_id == "view-progctl":
+            self.query_one("#progctl-table", Static).update(self._progctl_text(status))
+        elif view_id == "view-times":
+            self.query_one("#times-table", Static).update(self._times_text(status))
+        elif view_id == "view-search":
+            self.query_one("#search-info", Static).update(
+                f" Program: {channel.selected_program or '—'}   {channel.stop_reason}")
+        self.refresh_softkeys()
+
+    def _focus_for(self, view_id: str) -> None:
+        focused = self.focused
+        if view_id == "view-mda":
+            editor = self.query_one("#mda-editor", TextArea)
+            if focused is not editor:
+                editor.focus()
+        elif view_id == "view-search":
+            field = self.query_one("#search-input", Input)
+            if focused is not field:
+                field.focus()
+        elif focused is not None:
+            self.set_focus(None)
+
+    # -- view texts ----------------------------------------------------------------------------
+    def _jog_text(self, status: NckStatus) -> Text:
+        channel = status.channel
+        app = self.hmi
+        function = channel.machine_function
+        text = Text()
+        text.append(" JOG", style="bold")
+        if function == "REF":
+            text.append("  REF POINT — reference point approach\n", style="bold")
+            text.append(" Select an axis (Alt+X/Y/Z/C) and press + (Ctrl+Right).\n")
+            missing = [a.name for a in status.axes if a.kind != "spindle" and not a.referenced]
+            text.append(" Not referenced: " + (" ".join(missing) if missing else "none — all axes referenced") + "\n")
+        elif function == "REPOS":
+            text.append("  REPOS — repositioning to the interruption point\n", style="bold")
+            for axis, way in channel.repos_offsets.items():
+                text.append(f"   {axis:<4}{way:12.3f}\n")
+        elif function == "INC":
+            text.append(f"  {increment_text(channel.increment)} (x 0.001 mm)\n", style="bold")
+        else:
+            text.append("  continuous\n", style="bold")
+        text.append(f"\n Selected axis: {app.selected_axis or '—'}      "
+                    f"Rapid overlay: {'ON' if app.rapid_overlay else 'off'}\n")
+        text.append(" Keys: Alt+X/Y/Z/C/V axis   Ctrl+Right / Ctrl+Left traverse   Alt+W rapid   "
+                    "Alt+I increment   Alt+R REF   Alt+E REPOS\n", style="dim")
+        return text
+
+    def _auto_title(self, status: NckStatus) -> Text:
+        channel = status.channel
+        sbl = channel.program_control.get("single_block")
+        text = Text()
+        text.append(f" {channel.selected_program or 'no program selected'}", style="bold")
+        if sbl:
+            text.append(f"   SBL ({sbl})", style="bold #f39200")
+        if channel.stop_reason:
+            text.append(f"   stopped: {channel.stop_reason}")
+        text.append(f"   runtime {format_duration(channel.program_runtime_s)}"
+                    f"   parts {channel.part_count}")
+        return text
+
+    def _aux_text(self, status: NckStatus) -> Text:
+        modal = status.channel.modal
+        text = Text()
+        text.append(f" {'Function':<10}{'Active':<12}\n", style="bold")
+        text.append(f" {'T':<10}{modal.tool_name or modal.tool}\n")
+        text.append(f" {'D':<10}{modal.edge}\n")
+        text.append(f" {'S':<10}{modal.spindle_speed_rpm:g}  {modal.spindle_state}\n")
+        text.append(f" {'F':<10}{modal.feed:g}\n")
+        for key, value in sorted(modal.aux.items()):
+            text.append(f" {key:<10}{value}\n")
+        return text
+
+    def _progctl_text(self, status: NckStatus) -> Text:
+        pc = status.channel.program_control
+        levels = sorted(self._skip_levels())
+        text = Text()
+        sbl = pc.get("single_block")
+        text.append(f" {_check(sbl)} Single block          type {self.hmi.single_block_type}"
+                    "   (Alt+K on/off, ⇧F1 type)\n")
+        text.append(f" {_check(pc.get('dry_run'))} Dry run feed (DRY)\n")
+        text.append(f" {_check(pc.get('m01'))} Programmed stop (M01)\n")
+        text.append(f" {_check(pc.get('program_test'))} Program test (PRT)\n")
+        text.append(f" {_check(pc.get('rapid_override'))} Rapid traverse override (ROV)\n")
+        shown = " ".join(f"/{n}" for n in levels) if levels else "none"
+        text.append(f"     Skip levels active: {shown}\n")
+        return text
+
+    def _times_text(self, status: NckStatus) -> Text:
+        channel = status.channel
+        text = Text()
+        text.append(f" Program runtime          {format_duration(channel.program_runtime_s)}\n")
+        text.append(f" Last program runtime     {format_duration(channel.program_runtime_last_s)}\n")
+        text.append(f" Part count               {channel.part_count}\n")
+        text.append(f" Required parts           {channel.parts_required}\n")
+        text.append(f" Total parts              {channel.parts_total}\n")
+        return text
+
+
+AreaScreen = MachineScreen
+"""The area convention: ``screens.<area>.AreaScreen`` is the area's screen class."""
