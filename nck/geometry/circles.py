@@ -1,0 +1,399 @@
+"""Circles and helices: every way a Siemens-mode program can define an arc.
+
+All coordinates are geometry-axis vectors (axis 1, 2, 3) in millimetres of the
+WCS; in-plane quantities use the (abscissa, ordinate) of the active
+:class:`~nck.geometry.planes.Plane`.
+
+Definitions (Programming Manual Fundamentals, "circular interpolation"):
+
+* centre ``I J K`` (incremental from the start point, or ``=AC(…)`` absolute)
+  with an end point — :func:`arc_from_center`;
+* radius ``CR=`` with an end point; ``CR>0`` sweeps at most 180°, ``CR<0``
+  more than 180° — :func:`arc_from_radius`;
+* opening angle ``AR=`` with an end point — :func:`arc_from_end_and_angle`,
+  or with a centre — :func:`arc_from_center_and_angle`;
+* ``CIP`` through an intermediate point — :func:`arc_through_point`;
+* ``CT`` tangential to the previous path — :func:`arc_tangential`;
+* a helix: an end point that differs along the applicate, plus ``TURN=``
+  extra full turns.
+
+End-point monitoring (alarm 14040): the start and end radius may differ by at
+most ``max(MD21000 CIRCLE_ERROR_CONST, MD21010 CIRCLE_ERROR_FACTOR · radius)``
+(defaults 0.01 mm and 0.001). A smaller difference is absorbed: the end point
+is trusted and the centre is moved onto the perpendicular bisector of the chord.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from nck.errors import NcAlarmError
+from nck.geometry.planes import Plane
+
+Vec3 = tuple[float, float, float]
+Vec2 = tuple[float, float]
+
+ALARM_CIRCLE_END_POINT = 14040  # error in end point of circle
+ALARM_TANGENTIAL_CIRCLE = 14045  # error in programming of tangential circle
+ALARM_CIRCLE_TURNS = 14048  # wrong number of revolutions in circle programming
+ALARM_RADIUS_TOO_SMALL = 14095  # radius for circle programming too small
+ALARM_CIP_POINT = 14920  # intermediate point of circle incorrect
+
+CIRCLE_ERROR_CONST_MM = 0.01  # MD21000 default
+CIRCLE_ERROR_FACTOR = 0.001  # MD21010 default
+MAX_TURNS = 999
+POINT_EPS = 1e-9
+TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True, slots=True)
+class CircleTolerance:
+    """The circle end-point tolerance from machine data (MD21000, MD21010)."""
+
+    const_mm: float = CIRCLE_ERROR_CONST_MM
+    factor: float = CIRCLE_ERROR_FACTOR
+
+    def allowed(self, radius_mm: float) -> float:
+        """Largest allowed difference between start and end radius."""
+        return max(self.const_mm, self.factor * abs(radius_mm))
+
+
+DEFAULT_TOLERANCE = CircleTolerance()
+
+
+@dataclass(frozen=True, slots=True)
+class Arc:
+    """A circular arc or helix in space.
+
+    Attributes:
+        start: start point (geometry axes, mm).
+        end: end point.
+        center: centre of the circle, in the plane of the start point.
+        axis: unit vector the arc turns about counter-clockwise (right-hand rule);
+            for G3 in G17 it is +Z, for G2 -Z.
+        radius: circle radius.
+        sweep_rad: angle swept, > 0, including full turns.
+        turns: the programmed ``TURN=`` value.
+    """
+
+    start: Vec3
+    end: Vec3
+    center: Vec3
+    axis: Vec3
+    radius: float
+    sweep_rad: float
+    turns: int = 0
+
+    @property
+    def lead(self) -> float:
+        """Travel along ``axis`` from start to end (0 for a plane circle)."""
+        return float(np.dot(np.subtract(self.end, self.start), self.axis))
+
+    @property
+    def sweep_deg(self) -> float:
+        """Swept angle in degrees."""
+        return math.degrees(self.sweep_rad)
+
+    def clockwise_in(self, plane: Plane) -> bool:
+        """True when the arc runs clockwise seen from the positive applicate of ``plane`` (G2)."""
+        return float(np.dot(self.axis, plane.normal())) < 0.0
+
+    def point_at(self, fraction: float) -> Vec3:
+        """The point reached after ``fraction`` (0…1) of the sweep."""
+        angle = self.sweep_rad * fraction
+        radial = np.subtract(self.start, self.center)
+        radial = radial - np.dot(radial, self.axis) * np.asarray(self.axis)
+        turned = _rotate(radial, self.axis, angle)
+        point = np.asarray(self.center) + turned + np.asarray(self.axis) * self.lead * fraction
+        return (float(point[0]), float(point[1]), float(point[2]))
+
+    def tangent_at(self, fraction: float) -> Vec3:
+        """Unit direction of travel after ``fraction`` of the sweep (including the helix lead)."""
+        angle = self.sweep_rad * fraction
+        radial = np.subtract(self.start, self.center)
+        radial = radial - np.dot(radial, self.axis) * np.asarray(self.axis)
+        turned = _rotate(radial, self.axis, angle)
+        direction = np.cross(self.axis, turned) * self.sweep_rad + np.asarray(self.axis) * self.lead
+        norm = float(np.linalg.norm(direction))
+        if norm < POINT_EPS:
+            return (0.0, 0.0, 0.0)
+        d = direction / norm
+        return (float(d[0]), float(d[1]), float(d[2]))
+
+    def length(self) -> float:
+        """Path length of the arc or helix."""
+        return math.hypot(self.radius * self.sweep_rad, self.lead)
+
+
+def _rotate(vector: np.ndarray, axis: Vec3, angle: float) -> np.ndarray:
+    """Rodrigues rotation of ``vector`` about unit ``axis``."""
+    k = np.asarray(axis, dtype=float)
+    v = np.asarray(vector, dtype=float)
+    return v * math.cos(angle) + np.cross(k, v) * math.sin(angle) + k * np.dot(k, v) * (1 - math.cos(angle))
+
+
+def _check_turns(turns: int) -> int:
+    if turns < 0 or turns > MAX_TURNS or int(turns) != turns:
+        raise NcAlarmError(ALARM_CIRCLE_TURNS)
+    return int(turns)
+
+
+def _ccw_angle(from_vec: Vec2, to_vec: Vec2) -> float:
+    """Counter-clockwise angle from one plane vector to another, in [0, 2π)."""
+    a = math.atan2(from_vec[1], from_vec[0])
+    b = math.atan2(to_vec[1], to_vec[0])
+    delta = (b - a) % TWO_PI
+    return 0.0 if abs(delta - TWO_PI) < 1e-12 else delta
+
+
+def _plane_arc(
+    plane: Plane, start: Vec3, end: Vec3, center_ao: Vec2, clockwise: bool, turns: int
+) -> Arc:
+    """Assemble an arc in ``plane`` from a centre that is already consistent with the end."""
+    s = plane.to_plane(start)
+    e = plane.to_plane(end)
+    rs = (s[0] - center_ao[0], s[1] - center_ao[1])
+    re = (e[0] - center_ao[0], e[1] - center_ao[1])
+    radius = math.hypot(*rs)
+    chord = math.hypot(e[0] - s[0], e[1] - s[1])
+    if chord < POINT_EPS:
+        sweep = TWO_PI
+    else:
+        ccw = _ccw_angle(rs, re)
+        sweep = (TWO_PI - ccw) % TWO_PI if clockwise else ccw
+        if sweep < 1e-12:
+            sweep = TWO_PI
+    sweep += TWO_PI * turns
+    center = plane.from_plane((center_ao[0], center_ao[1], s[2]))
+    normal = plane.normal()
+    axis = tuple(-c for c in normal) if clockwise else normal
+    return Arc(start=tuple(map(float, start)), end=tuple(map(float, end)), center=center,  # type: ignore[arg-type]
+               axis=axis, radius=radius, sweep_rad=sweep, turns=turns)  # type: ignore[arg-type]
+
+
+def arc_from_center(
+    plane: Plane,
+    start: Vec3,
+    end: Vec3,
+    center_ao: Vec2,
+    clockwise: bool,
+    turns: int = 0,
+    tolerance: CircleTolerance = DEFAULT_TOLERANCE,
+) -> Arc:
+    """G2/G3 with a centre (from ``I J K`` or ``=AC``) and an end point.
+
+    Raises:
+        NcAlarmError: 14040 when the centre is the start point (zero radius) or the
+            start and end radius differ by more than the tolerance; 14048 for a bad TURN.
+    """
+    turns = _check_turns(turns)
+    s = plane.to_plane(start)
+    e = plane.to_plane(end)
+    r_start = math.hypot(s[0] - center_ao[0], s[1] - center_ao[1])
+    r_end = math.hypot(e[0] - center_ao[0], e[1] - center_ao[1])
+    if r_start < POINT_EPS:
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    if abs(r_start - r_end) > tolerance.allowed(r_start):
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    center = center_ao
+    chord = math.hypot(e[0] - s[0], e[1] - s[1])
+    if chord >= POINT_EPS and abs(r_start - r_end) > 1e-12:
+        center = _center_on_bisector(s, e, r_start, near=center_ao)
+    return _plane_arc(plane, start, end, center, clockwise, turns)
+
+
+def _center_on_bisector(s: Vec3 | Vec2, e: Vec3 | Vec2, radius: float, near: Vec2) -> Vec2:
+    """The centre of radius ``radius`` through s and e that lies closest to ``near``."""
+    mx, my = (s[0] + e[0]) / 2.0, (s[1] + e[1]) / 2.0
+    dx, dy = e[0] - s[0], e[1] - s[1]
+    half = math.hypot(dx, dy) / 2.0
+    dist = math.sqrt(max(radius * radius - half * half, 0.0))
+    nx, ny = -dy / (2.0 * half), dx / (2.0 * half)
+    c1 = (mx + nx * dist, my + ny * dist)
+    c2 = (mx - nx * dist, my - ny * dist)
+    d1 = math.hypot(c1[0] - near[0], c1[1] - near[1])
+    d2 = math.hypot(c2[0] - near[0], c2[1] - near[1])
+    return c1 if d1 <= d2 else c2
+
+
+def arc_from_radius(
+    plane: Plane,
+    start: Vec3,
+    end: Vec3,
+    radius: float,
+    clockwise: bool,
+    turns: int = 0,
+    tolerance: CircleTolerance = DEFAULT_TOLERANCE,
+) -> Arc:
+    """G2/G3 with ``CR=`` and an end point (``CR<0``: more than a semicircle).
+
+    Raises:
+        NcAlarmError: 14040 when start and end coincide (the circle is not
+            determined, so a full circle cannot be written with CR); 14095 when
+            ``|CR|`` is zero or smaller than half the chord (beyond the tolerance).
+    """
+    turns = _check_turns(turns)
+    s = plane.to_plane(start)
+    e = plane.to_plane(end)
+    dx, dy = e[0] - s[0], e[1] - s[1]
+    chord = math.hypot(dx, dy)
+    if chord < POINT_EPS:
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    r = abs(float(radius))
+    half = chord / 2.0
+    if r < POINT_EPS or r < half - tolerance.allowed(r):
+        raise NcAlarmError(ALARM_RADIUS_TOO_SMALL)
+    r = max(r, half)
+    dist = math.sqrt(max(r * r - half * half, 0.0))
+    large = radius < 0
+    # The centre of a counter-clockwise arc of at most 180° lies left of the chord.
+    left = (not clockwise) != large
+    nx, ny = -dy / chord, dx / chord
+    sign = 1.0 if left else -1.0
+    center = (s[0] + dx / 2.0 + sign * nx * dist, s[1] + dy / 2.0 + sign * ny * dist)
+    return _plane_arc(plane, start, end, center, clockwise, turns)
+
+
+def arc_from_end_and_angle(
+    plane: Plane,
+    start: Vec3,
+    end: Vec3,
+    angle_deg: float,
+    clockwise: bool,
+    turns: int = 0,
+) -> Arc:
+    """G2/G3 with ``AR=`` (opening angle, 0 < AR < 360) and an end point.
+
+    Raises:
+        NcAlarmError: 14040 for an angle outside (0, 360) or start = end.
+    """
+    turns = _check_turns(turns)
+    if not 0.0 < angle_deg < 360.0:
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    s = plane.to_plane(start)
+    e = plane.to_plane(end)
+    dx, dy = e[0] - s[0], e[1] - s[1]
+    chord = math.hypot(dx, dy)
+    if chord < POINT_EPS:
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    half_angle = math.radians(angle_deg) / 2.0
+    # Signed distance from the chord midpoint to the centre: negative beyond 180°.
+    dist = (chord / 2.0) / math.tan(half_angle)
+    sign = -1.0 if clockwise else 1.0
+    nx, ny = -dy / chord, dx / chord
+    center = (s[0] + dx / 2.0 + sign * nx * dist, s[1] + dy / 2.0 + sign * ny * dist)
+    return _plane_arc(plane, start, end, center, clockwise, turns)
+
+
+def arc_from_center_and_angle(
+    plane: Plane,
+    start: Vec3,
+    center_ao: Vec2,
+    angle_deg: float,
+    clockwise: bool,
+    end_applicate: float | None = None,
+    turns: int = 0,
+) -> Arc:
+    """G2/G3 with ``AR=`` and a centre: the end point follows from the angle.
+
+    Raises:
+        NcAlarmError: 14040 for an angle outside (0, 360] or a zero radius.
+    """
+    turns = _check_turns(turns)
+    if not 0.0 < angle_deg <= 360.0:
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    s = plane.to_plane(start)
+    rx, ry = s[0] - center_ao[0], s[1] - center_ao[1]
+    if math.hypot(rx, ry) < POINT_EPS:
+        raise NcAlarmError(ALARM_CIRCLE_END_POINT)
+    angle = math.radians(angle_deg) * (-1.0 if clockwise else 1.0)
+    c, si = math.cos(angle), math.sin(angle)
+    ea = center_ao[0] + rx * c - ry * si
+    eo = center_ao[1] + rx * si + ry * c
+    ep = s[2] if end_applicate is None else float(end_applicate)
+    end = plane.from_plane((ea, eo, ep))
+    arc = _plane_arc(plane, start, end, center_ao, clockwise, turns)
+    if angle_deg >= 360.0 - 1e-9:
+        arc = Arc(arc.start, arc.end, arc.center, arc.axis, arc.radius, TWO_PI * (1 + turns), turns)
+    return arc
+
+
+def arc_through_point(start: Vec3, intermediate: Vec3, end: Vec3, turns: int = 0) -> Arc | None:
+    """``CIP``: the circle through start, intermediate and end point (in space).
+
+    The direction follows from the order of the points. Returns ``None`` when
+    the three points lie on a line with the intermediate point between start and
+    end (the control then runs a straight line).
+
+    Raises:
+        NcAlarmError: 14920 when the points are collinear otherwise, or coincide.
+    """
+    turns = _check_turns(turns)
+    s, m, e = (np.asarray(p, dtype=float) for p in (start, intermediate, end))
+    u, v = m - s, e - s
+    normal = np.cross(u, v)
+    norm = float(np.linalg.norm(normal))
+    if norm < 1e-9 * max(1.0, float(np.dot(u, u)), float(np.dot(v, v))):
+        vv = float(np.dot(v, v))
+        t = float(np.dot(u, v)) / vv if vv > 0 else -1.0
+        if turns == 0 and 0.0 < t < 1.0:
+            return None
+        raise NcAlarmError(ALARM_CIP_POINT)
+    axis = normal / norm
+    # Circumcentre of the triangle s, m, e.
+    uu, vvv, uv = float(np.dot(u, u)), float(np.dot(v, v)), float(np.dot(u, v))
+    denom = 2.0 * (uu * vvv - uv * uv)
+    alpha = vvv * (uu - uv) / denom
+    beta = uu * (vvv - uv) / denom
+    center = s + alpha * u + beta * v
+    radius = float(np.linalg.norm(s - center))
+    rs, re = s - center, e - center
+    sweep = math.atan2(float(np.dot(np.cross(rs, re), axis)), float(np.dot(rs, re))) % TWO_PI
+    if sweep < 1e-12:
+        sweep = TWO_PI
+    sweep += TWO_PI * turns
+    return Arc(
+        start=tuple(map(float, s)), end=tuple(map(float, e)),  # type: ignore[arg-type]
+        center=tuple(map(float, center)), axis=tuple(map(float, axis)),  # type: ignore[arg-type]
+        radius=radius, sweep_rad=sweep, turns=turns,
+    )
+
+
+def arc_tangential(plane: Plane, start: Vec3, end: Vec3, tangent: Vec3, turns: int = 0) -> Arc:
+    """``CT``: the arc from ``start`` to ``end`` that leaves ``start`` along ``tangent``.
+
+    ``tangent`` is the direction of travel at the end of the previous path
+    segment (geometry axes); only its in-plane part counts.
+
+    Raises:
+        NcAlarmError: 14045 when there is no in-plane tangent or the end point lies
+            on the tangent line (no circle fits).
+    """
+    turns = _check_turns(turns)
+    s = plane.to_plane(start)
+    e = plane.to_plane(end)
+    t = plane.to_plane(tangent)
+    tn = math.hypot(t[0], t[1])
+    if tn < POINT_EPS:
+        raise NcAlarmError(ALARM_TANGENTIAL_CIRCLE)
+    ta, to = t[0] / tn, t[1] / tn
+    na, no = -to, ta  # left normal of the tangent
+    da, do = e[0] - s[0], e[1] - s[1]
+    across = na * da + no * do
+    if abs(across) < POINT_EPS:
+        raise NcAlarmError(ALARM_TANGENTIAL_CIRCLE)
+    k = (da * da + do * do) / (2.0 * across)  # signed distance of the centre along the normal
+    center = (s[0] + k * na, s[1] + k * no)
+    return _plane_arc(plane, start, end, center, clockwise=k < 0, turns=turns)
+
+
+def end_tangent_of_line(start: Vec3, end: Vec3) -> Vec3:
+    """Unit direction of a straight segment (zero vector for a zero-length move)."""
+    d = np.subtract(end, start)
+    n = float(np.linalg.norm(d))
+    if n < POINT_EPS:
+        return (0.0, 0.0, 0.0)
+    return (float(d[0] / n), float(d[1] / n), float(d[2] / n))
