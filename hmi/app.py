@@ -68,17 +68,23 @@ AREAS: tuple[Area, ...] = (
 def area_screen_factory(area: Area) -> Callable[[], Screen]:
     """Return a factory for the screen of ``area``: ``screens.<id>.AreaScreen`` or a placeholder."""
     module_name = f"screens.{area.id}"
+    problem = ""
     try:
         module = importlib.import_module(module_name)
     except ModuleNotFoundError as exc:
-        if exc.name != module_name:
-            raise
         module = None
+        if exc.name != module_name:
+            problem = f"{module_name} could not be loaded: {exc}"
+    except Exception as exc:  # a broken area must not take the other areas down
+        module = None
+        problem = f"{module_name} could not be loaded: {type(exc).__name__}: {exc}"
     screen_class = getattr(module, "AreaScreen", None) if module is not None else None
     if screen_class is None:
         from screens.placeholder import PlaceholderScreen
 
-        return lambda: PlaceholderScreen(area.id, area.title)
+        if problem:
+            print(f"hmi: {problem}", file=sys.stderr)
+        return lambda: PlaceholderScreen(area.id, area.title, problem)
     return screen_class
 
 

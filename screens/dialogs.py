@@ -36,7 +36,7 @@ def help_table(keymap: Keymap, menu: SoftkeyMenu) -> Table:
                               softkey.label.replace("\n", " "))
     for scope in ("op", "mcp"):
         table.add_row("", "", "")
-        table.add_row(Text(SCOPE_TITLES[scope], style="bold underline"), "", "")
+        table.add_row("", "", Text(SCOPE_TITLES[scope], style="bold underline"))
         for binding in keymap.bindings:
             if binding.scope == scope:
                 table.add_row(binding.key_display, binding.panel, binding.label)
@@ -58,6 +58,10 @@ class HelpScreen(ModalScreen[None]):
         with VerticalScroll(id="help-box"):
             yield Static("HELP — keys in force   (F11 or F10 closes)", id="help-title")
             yield Static(help_table(self._keymap, self._menu), id="help-table")
+
+    def on_mount(self) -> None:
+        """Focus the list so the arrow keys and PgUp/PgDn scroll it."""
+        self.query_one("#help-box").focus()
 
     def action_dismiss_help(self) -> None:
         """Close the overlay."""

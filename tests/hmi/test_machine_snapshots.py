@@ -1,0 +1,139 @@
+"""SVG snapshots of every view of the Machine area (fake kernel, 160×48, no clock, no blink).
+
+The fake kernel keeps the pictures independent of how the real kernel evolves;
+the workflow tests (test_workflows.py) run on the real kernel.
+"""
+
+from __future__ import annotations
+
+from hmi.app import HmiApp
+from tests.hmi.conftest import SIZE
+from tests.hmi.fake_nck import FakeNck
+
+
+def app_on(fake: FakeNck) -> HmiApp:
+    """The HMI on ``fake`` without the wall-clock timer."""
+    return HmiApp(fake, realtime=False)
+
+
+def referenced_fake() -> FakeNck:
+    """A fake kernel with all axes referenced and a few positions."""
+    fake = FakeNck(referenced=True)
+    fake.pos.update({"X": -125.35, "Y": 42.0, "Z": 100.0})
+    return fake
+
+
+def auto_fake() -> FakeNck:
+    """AUTO with PART1.MPF selected, stopped in single block after N40."""
+    fake = referenced_fake()
+    fake.keyswitch = 1
+    fake.submit_all = None
+    for command in ():
+        fake.submit(command)
+    from nck import commands as c
+
+    fake.submit(c.SelectProgram("PART1.MPF"))
+    fake.submit(c.SelectMode("AUTO"))
+    fake.submit(c.SetProgramControl("single_block", "SBL1"))
+    for _ in range(4):
+        fake.submit(c.CycleStart())
+    return fake
+
+
+def test_jog_power_on(snap_compare) -> None:
+    """JOG after power on: every axis marked ○ (not referenced), X selected."""
+    assert snap_compare(app_on(FakeNck()), terminal_size=SIZE)
+
+
+def test_jog_ref_partly_referenced(snap_compare) -> None:
+    """JOG REF: X and Y referenced (mark gone), Z still ○; the view lists what is missing."""
+    assert snap_compare(app_on(FakeNck()), terminal_size=SIZE,
+                        press=["alt+r", "ctrl+right", "alt+y", "ctrl+right"])
+
+
+def test_jog_inc_100_mcs(snap_compare) -> None:
+    """JOG INC 100 with Y selected and the positions in MCS (softkey pressed)."""
+    assert snap_compare(app_on(referenced_fake()), terminal_size=SIZE,
+                        press=["alt+i", "alt+i", "alt+i", "alt+y", "f1"])
+
+
+def test_mda_editor_with_block(snap_compare) -> None:
+    """MDA: the editor has the focus and shows the typed block."""
+    assert snap_compare(app_on(referenced_fake()), terminal_size=SIZE,
+                        press=["alt+d", *"G0 X12.5 Y-7 Z-3"])
+
+
+def test_mda_after_cycle_start(snap_compare) -> None:
+    """MDA block executed: the positions show the programmed end point."""
+
+    async def run(pilot) -> None:
+        await pilot.press("alt+d", *"G0 X12.5 Y-7 Z-3", "alt+g")
+        pilot.app.bridge.advance(0.5)
+        await pilot.pause()
+
+    assert snap_compare(app_on(referenced_fake()), terminal_size=SIZE, run_before=run)
+
+
+def test_auto_single_block_stopped(snap_compare) -> None:
+    """AUTO, PART1.MPF, single block: stopped after N40, the current block highlighted."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE)
+
+
+def test_auto_with_alarm(snap_compare) -> None:
+    """An alarm on the alarm line (coloured by category) over the AUTO view."""
+
+    async def run(pilot) -> None:
+        pilot.app.bridge.nck.raise_alarm(
+            10720, "Channel 1 block N60 axis X software limit switch +", category="axis")
+        pilot.app.bridge.poll()
+        await pilot.pause()
+
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE, run_before=run)
+
+
+def test_all_g_groups(snap_compare) -> None:
+    """Softkey G functions: every group with number, active code and meaning."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE, press=["f2"])
+
+
+def test_auxiliary_functions(snap_compare) -> None:
+    """Softkey Auxiliary functions: T, D, S, F and the M functions."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE, press=["f3"])
+
+
+def test_program_control(snap_compare) -> None:
+    """Program control with dry run and M01 on (vertical softkeys pressed), SBL type SBL2."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE,
+                        press=["f4", "shift+f2", "shift+f3", "shift+f1"])
+
+
+def test_block_search(snap_compare) -> None:
+    """Block search view with a target typed in the search field."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE,
+                        press=["alt+q", "f5", "N", "7", "0"])
+
+
+def test_times_counter(snap_compare) -> None:
+    """Times/Counter: program runtime and part count."""
+    fake = auto_fake()
+    fake.runtime_s = 3725.0
+    fake.parts = 12
+    assert snap_compare(app_on(fake), terminal_size=SIZE, press=["f6"])
+
+
+def test_program_selection_dialog(snap_compare) -> None:
+    """Select program (keyswitch 1): the list of part programs."""
+    fake = referenced_fake()
+    fake.keyswitch = 1
+    fake.programs["DRILL.MPF"] = ["N10 G0 X0 Y0", "N20 M30"]
+    assert snap_compare(app_on(fake), terminal_size=SIZE, press=["alt+u", "f7"])
+
+
+def test_help_overlay(snap_compare) -> None:
+    """F11: the keys in force over the Machine area."""
+    assert snap_compare(app_on(FakeNck()), terminal_size=SIZE, press=["f11"])
+
+
+def test_area_menu(snap_compare) -> None:
+    """F9: the operating areas on the horizontal softkeys."""
+    assert snap_compare(app_on(FakeNck()), terminal_size=SIZE, press=["f9"])
