@@ -1,0 +1,948 @@
+"""The NC kernel: ``Nck``, the one mutable root of the simulated control.
+
+Three meeting points with the outside world (HMI, headless CLI, tests):
+
+* ``submit(command)`` — an operator command from :mod:`nck.commands`,
+  answered at once with :class:`Accepted` or :class:`Rejected`;
+* ``tick(dt_s)`` / ``step(n_ipo_cycles)`` — simulated time advances only here;
+* ``status()`` — an immutable :class:`nck.status.NckStatus` whose ``seq``
+  increases whenever anything in it changed; ``alarm_log_since(seq)`` — the
+  append-only, sequenced alarm/message log.
+
+One mode group with one channel. The channel's states follow the transition
+table of :mod:`nck.channel`; a running program is a
+:class:`nck.program_control.ProgramRun`; alarms live in
+:class:`nck.alarms.AlarmServer`. Motion is reached only through the
+protocols of :mod:`nck.motion.api`; ``motion_factory`` defaults to the
+stand-in :mod:`nck.motion.instant`.
+
+Any exception other than :class:`NcAlarmError` inside ``submit``/``tick``
+becomes alarm 1 "internal error"; its traceback is kept in
+``Nck.internal_errors`` (tests fail on it) and never propagates.
+"""
+
+from __future__ import annotations
+
+import traceback
+from dataclasses import replace
+from typing import Any, Callable
+
+from nck import commands as cmd
+from nck.alarms import AlarmServer
+from nck.canon import AuxFunction, EdgeSelect, Motion, SpindleCommand, ToolSelect, UserAlarm
+from nck.channel import (
+    ABORTED, ACTIVE, INTERRUPTED, MACHINE_FUNCTIONS, PROG_INTERRUPTED, RESET, RUNNING, STOPPED,
+    ChannelSituation, mode_change_allowed, next_state, situation_after_mode_change,
+)
+from nck.commands import Accepted, Rejected, SubmitResult
+from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
+from nck.errors import NcAlarmError
+from nck.interp.api import Interpreter, ProgramSource
+from nck.machine import MachineConfig, load_machine
+from nck.motion.instant import InstantMotion, instant_motion_factory
+from nck.ncdata import NcData
+from nck.program_control import (
+    SEARCH_ACTIONS_DONE, SEARCH_FOUND, STOPPED as RUN_STOPPED, ProgramRun, RunEvent, RunOptions,
+)
+from nck.status import AlarmEntry, AlarmEvent, AxisStatus, ChannelStatus, ModalView, NckStatus
+
+DEFAULT_IPO_S = 0.004
+DEFAULT_JOG_MM_MIN = 2000.0  # MD32020 JOG_VELO
+DEFAULT_JOG_RAPID_MM_MIN = 10000.0  # MD32010 JOG_VELO_RAPID
+DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
+ALARM_INTERNAL = 1
+ALARM_EMERGENCY_STOP = 3000
+ALARM_START_WITH_ALARM = 10200
+ALARM_START_UNREFERENCED = 10203
+ALARM_CONTINUE_WITH_START = 10208
+MDA_NAME = "MDA"
+THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
+
+
+class _NoPrograms:
+    """Program source used when none is given: no programs at all."""
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        return None
+
+
+def _default_interpreter_factory(
+    machine: MachineConfig, programs: ProgramSource, data: NcData
+) -> Interpreter:
+    from nck.interp.interpreter import Interpreter as RealInterpreter  # noqa: PLC0415
+
+    return RealInterpreter(machine, programs, data)
+
+
+class Nck:
+    """The simulated NCK; see the module docstring."""
+
+    def __init__(
+        self,
+        machine: MachineConfig | None = None,
+        data: NcData | None = None,
+        programs: ProgramSource | None = None,
+        motion_factory: Callable[[MachineConfig], Any] | None = None,
+        referenced: bool = False,
+        interpreter_factory: Callable[[MachineConfig, ProgramSource, NcData], Interpreter] | None = None,
+    ) -> None:
+        self.machine = machine or load_machine()
+        self.data = data if data is not None else NcData()
+        self.programs: ProgramSource = programs if programs is not None else _NoPrograms()
+        self._interpreter_factory = interpreter_factory or _default_interpreter_factory
+        self.motion = (motion_factory or instant_motion_factory)(self.machine)
+        for axis in self.machine.path_axes:
+            self.motion.set_referenced(axis, referenced)
+        self._test_motion: InstantMotion | None = None
+        self.alarms = AlarmServer()
+        self.internal_errors: list[str] = []
+        self._time_s = 0.0
+        self._tick_rest_s = 0.0
+        self._ipo_s = self._ipo_cycle_s()
+        self._sit = ChannelSituation()
+        self._machine_function: str | None = None
+        self._increment: int | None = 1
+        self._owner: str | None = None  # mode whose program is stopped/interrupted
+        self._run: ProgramRun | None = None
+        self._overlay: ProgramRun | None = None  # MDA blocks over an interrupted AUTO program
+        self._interpreters: dict[str, Interpreter] = {}
+        self._selected: str | None = None
+        self._mda_text = ""
+        self._pc: dict[str, object] = {
+            "single_block": None, "dry_run": False, "m01": False, "program_test": False,
+            "rapid_override": False, "skip_levels": frozenset(),
+        }
+        self._overrides = {"feed": 100.0, "rapid": 100.0, "spindle": 100.0}
+        self._estop_pressed = False
+        self._estop_active = False
+        self._jogging = False
+        self._jog_targets: dict[str, float] = {}
+        self._jog_rest: dict[str, float] = {}
+        self._moved_since_stop = False
+        self._repos_point: dict[str, float] | None = None
+        self._wcs_offset: dict[str, float] = {}
+        self._aux: dict[str, str] = {}
+        self._tool = 0
+        self._edge = 0
+        self._spindle_state = "M5"
+        self._spindle_rpm = 0.0
+        md27880 = self.machine.md_value("MD27880", None, DEFAULT_PART_COUNTER)
+        md27882 = self.machine.md_value("MD27882", None, None)
+        self.counters = PartCounters(mode_bits=int(md27880 if isinstance(md27880, int) else DEFAULT_PART_COUNTER))
+        if isinstance(md27882, list) and len(md27882) == 3:
+            self.counters.m_codes = tuple(int(v) for v in md27882)  # type: ignore[assignment]
+        self.runtime = RuntimeTimer()
+        self._keyswitch = 0
+        self._password_level: int | None = None
+        self._seq = 0
+        self._last_body: NckStatus | None = None
+        self._apply_overrides()
+
+    # ------------------------------------------------------------------ API
+    def submit(self, command: object) -> SubmitResult:
+        """Carry out one operator command; never raises."""
+        handler = self._HANDLERS.get(type(command))
+        if handler is None:
+            return Rejected(f"unknown command {type(command).__name__}")
+        try:
+            return handler(self, command)
+        except NcAlarmError as error:
+            self._raise(error)
+            return Rejected(self.alarms.definition(error.number).format(error.params), alarm=error.number)
+        except Exception as exc:  # noqa: BLE001 - every bug becomes alarm 1
+            self._internal_error(exc)
+            return Rejected("internal error", alarm=ALARM_INTERNAL)
+
+    def tick(self, dt_s: float) -> None:
+        """Advance simulated time by ``dt_s`` seconds (whole IPO cycles; the rest is kept)."""
+        self._tick_rest_s += max(0.0, float(dt_s))
+        cycles = int((self._tick_rest_s + 1e-9) // self._ipo_s)
+        self._tick_rest_s = max(0.0, self._tick_rest_s - cycles * self._ipo_s)
+        self.step(cycles)
+
+    def step(self, n_ipo_cycles: int = 1) -> None:
+        """Advance simulated time by ``n_ipo_cycles`` IPO cycles."""
+        for _ in range(max(0, int(n_ipo_cycles))):
+            try:
+                self._cycle()
+            except NcAlarmError as error:
+                self._raise(error)
+            except Exception as exc:  # noqa: BLE001
+                self._internal_error(exc)
+                self._internal_reset()
+
+    def run_until(self, predicate: Callable[["Nck"], bool], max_s: float) -> bool:
+        """Advance cycle by cycle until ``predicate(self)`` holds; False on timeout."""
+        cycles = int(max_s / self._ipo_s + 0.5)
+        for _ in range(cycles):
+            if predicate(self):
+                return True
+            self.step(1)
+        return predicate(self)
+
+    @property
+    def ipo_cycle_s(self) -> float:
+        """The interpolation cycle in seconds."""
+        return self._ipo_s
+
+    @property
+    def time_s(self) -> float:
+        """Simulated control time since power on."""
+        return self._time_s
+
+    @property
+    def situation(self) -> ChannelSituation:
+        """Mode, channel status and program status (cheap; no snapshot)."""
+        return self._sit
+
+    def alarm_log_since(self, seq: int) -> tuple[AlarmEvent, ...]:
+        """Alarm/message log events newer than ``seq`` (bounded log)."""
+        return self.alarms.log_since(seq)
+
+    def alarm_history(self) -> tuple[AlarmEntry, ...]:
+        """The alarm log with come/go times, oldest first (bounded)."""
+        return self.alarms.history()
+
+    def positions_mcs(self) -> dict[str, float]:
+        """Displayed machine positions (program test: the simulated ones)."""
+        return dict(self._display_motion().positions_mcs())
+
+    def status(self) -> NckStatus:
+        """Build the immutable snapshot; ``seq`` grows when anything changed."""
+        body = self._build_status()
+        if body != self._last_body:
+            self._seq += 1
+            self._last_body = body
+        return replace(body, seq=self._seq, time_s=self._time_s)
+
+    # ------------------------------------------------------------ commands
+    def _select_mode(self, command: cmd.SelectMode) -> SubmitResult:
+        mode = command.mode.upper()
+        mode = {"AUTOMATIC": "AUTO", "MDI": "MDA"}.get(mode, mode)
+        if mode == self._sit.mode:
+            return Accepted()
+        reason = mode_change_allowed(self._sit, mode, self._owner)
+        if reason is not None:
+            return Rejected(reason)
+        new = situation_after_mode_change(self._sit, mode, self._owner)
+        if self._sit.channel == INTERRUPTED and self._sit.program == ABORTED:
+            self._jog_rest.clear()
+        self._sit = new
+        if mode == "AUTO":
+            self._machine_function = None
+        elif mode == "MDA" and self._machine_function == "INC":
+            self._machine_function = None
+        return Accepted()
+
+    def _select_machine_function(self, command: cmd.SelectMachineFunction) -> SubmitResult:
+        function = command.function.upper() if command.function else None
+        if function is not None and function not in MACHINE_FUNCTIONS:
+            return Rejected(f"unknown machine function {command.function!r}")
+        if self._sit.mode == "AUTO" and function is not None:
+            return Rejected("Machine functions are available in JOG and MDA only")
+        if function == "INC" and self._sit.mode != "JOG":
+            return Rejected("INC is available in JOG only")
+        if self._sit.channel == ACTIVE:
+            return Rejected("Channel active: stop the motion first")
+        self._machine_function = function
+        return Accepted()
+
+    def _select_increment(self, command: cmd.SelectIncrement) -> SubmitResult:
+        value = command.increment
+        if value is not None and value not in (1, 10, 100, 1000, 10000):
+            return Rejected("Increment must be 1, 10, 100, 1000, 10000 or VAR")
+        if self._sit.mode != "JOG":
+            return Rejected("INC is available in JOG only")
+        self._increment = value
+        if self._machine_function not in ("REF", "REPOS"):
+            self._machine_function = "INC"
+        return Accepted()
+
+    def _cycle_start(self, command: cmd.CycleStart) -> SubmitResult:
+        mode = self._sit.mode
+        if self._estop_active:
+            return Rejected("Emergency stop active")
+        if mode == "JOG":
+            return self._continue_jog()
+        if self._sit.channel == ACTIVE:
+            return Rejected("Channel already active")
+        self.alarms.clear("nc_start", self._time_s)
+        if self.alarms.has_reaction("nc_start_disable"):
+            self._raise_number(ALARM_START_WITH_ALARM)
+            return Rejected("No NC START with an alarm active", alarm=ALARM_START_WITH_ALARM)
+        unreferenced = self._unreferenced_axes()
+        if unreferenced:
+            self._raise_number(ALARM_START_UNREFERENCED, unreferenced[0])
+            return Rejected("Axes not referenced: " + " ".join(unreferenced), alarm=ALARM_START_UNREFERENCED)
+        if mode == "AUTO":
+            return self._start_auto()
+        return self._start_mda()
+
+    def _start_auto(self) -> SubmitResult:
+        run = self._run
+        if self._sit.program == ABORTED:
+            if self._selected is None:
+                return Rejected("No program selected")
+            interp = self._interpreter("AUTO")
+            interp.reset()
+            interp.start(self._selected)
+            self._begin_run(ProgramRun("AUTO", self._selected, interp, self._adjust_motion))
+            self.runtime.start_from_reset()
+            self._transition("program_start")
+            return Accepted()
+        if run is None or self._owner != "AUTO":
+            return Rejected("No interrupted program to continue: RESET")
+        if run.phase == SEARCH_FOUND:
+            self._handle_events(run, run.output_search_actions())
+            self._transition("program_start")
+            self._transition("block_stop")
+            self._raise_number(ALARM_CONTINUE_WITH_START)
+            return Accepted()
+        if run.phase == SEARCH_ACTIONS_DONE:
+            approach = run.search_approach()
+            self._resume_motion()
+            if approach is not None:
+                approach = replace(approach, start_mcs=dict(self._path_motion().positions_mcs()))
+                self._path_motion().push(approach)
+            self._transition("program_start")
+            return Accepted()
+        self._resume_motion()
+        run.continue_after_stop()
+        self._transition("program_start")
+        return Accepted()
+
+    def _start_mda(self) -> SubmitResult:
+        if self._owner == "AUTO":
+            overlay = self._overlay
+            if overlay is not None and overlay.phase != "ended":
+                self._resume_motion(repos=False)
+                overlay.continue_after_stop()
+            else:
+                if not self._mda_text.strip():
+                    return Rejected("MDA buffer is empty")
+                interp = self._interpreter("MDA")
+                interp.reset()
+                interp.start_text(MDA_NAME, self._mda_text)
+                self._overlay = ProgramRun("MDA", MDA_NAME, interp, self._adjust_motion)
+            self._transition("overlay_start")
+            return Accepted()
+        if self._owner == "MDA" and self._run is not None:
+            self._resume_motion()
+            self._run.continue_after_stop()
+            self._transition("program_start")
+            return Accepted()
+        if not self._mda_text.strip():
+            return Rejected("MDA buffer is empty")
+        interp = self._interpreter("MDA")
+        interp.reset()
+        interp.start_text(MDA_NAME, self._mda_text)
+        self._begin_run(ProgramRun("MDA", MDA_NAME, interp, self._adjust_motion))
+        self._transition("program_start")
+        return Accepted()
+
+    def _begin_run(self, run: ProgramRun) -> None:
+        self._run = run
+        self._owner = None
+        self._moved_since_stop = False
+        self._repos_point = None
+        self.motion.resume()
+        if self._pc["program_test"]:
+            self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
+
+    def _cycle_stop(self, command: cmd.CycleStop) -> SubmitResult:
+        if self._sit.channel != ACTIVE:
+            return Rejected("NC STOP acts only while the channel is active")
+        if self._jogging:
+            self._stop_jog(keep_rest=True)
+            self._transition("nc_stop")
+            return Accepted()
+        self._path_motion().hold()
+        run = self._overlay or self._run
+        if run is not None:
+            run.stop_reason = "NC STOP"
+        self._mark_interrupted(run)
+        self._transition("nc_stop")
+        return Accepted()
+
+    def _reset(self, command: cmd.Reset) -> SubmitResult:
+        self.motion.abort()
+        if self._test_motion is not None:
+            self._test_motion.abort()
+        for interp in self._interpreters.values():
+            try:
+                interp.reset()
+            except NcAlarmError as error:
+                self._raise(error)
+        self._run = None
+        self._overlay = None
+        self._owner = None
+        self._jogging = False
+        self._jog_targets.clear()
+        self._jog_rest.clear()
+        self._moved_since_stop = False
+        self._repos_point = None
+        keep = frozenset({ALARM_EMERGENCY_STOP}) if self._estop_pressed else frozenset()
+        self.alarms.clear("reset", self._time_s, keep=keep)
+        if self._estop_active and not self._estop_pressed:
+            self._estop_active = False
+        self.alarms.set_message("", self._time_s)
+        self._sit = next_state(self._sit, "reset") or self._sit
+        if not self._pc["program_test"]:
+            self._test_motion = None
+        return Accepted()
+
+    def _emergency_stop(self, command: cmd.EmergencyStop) -> SubmitResult:
+        if not command.pressed:
+            self._estop_pressed = False
+            return Accepted()
+        self._estop_pressed = True
+        if not self._estop_active:
+            self._estop_active = True
+            self.motion.abort()
+            if self._test_motion is not None:
+                self._test_motion.abort()
+            self._jogging = False
+            self._jog_targets.clear()
+            self._jog_rest.clear()
+            run = self._overlay or self._run
+            self._mark_interrupted(run)
+            self._transition("emergency_stop")
+            if self._sit.program == ABORTED:
+                self._run = None
+                self._owner = None
+            self._raise_number(ALARM_EMERGENCY_STOP)
+        return Accepted()
+
+    def _select_program(self, command: cmd.SelectProgram) -> SubmitResult:
+        if self._sit.channel != RESET:
+            return Rejected("Program selection is possible only in channel reset")
+        if self.programs.read_program(command.name) is None:
+            return Rejected(f"Program {command.name} not found")
+        self._selected = command.name
+        return Accepted()
+
+    def _set_mda(self, command: cmd.SetMdaProgram) -> SubmitResult:
+        mda_busy = (self._run is not None and self._run.kind == "MDA") or self._overlay is not None
+        if mda_busy and self._sit.channel != RESET:
+            return Rejected("MDA program in progress: RESET first")
+        self._mda_text = command.text
+        return Accepted()
+
+    def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
+        name, value = command.name, command.value
+        if name == "single_block":
+            text = None if value in (None, False, "") else str(value).upper()
+            if text == "SBL3":
+                text = "SBL2"
+            if text not in (None, "SBL1", "SBL2"):
+                return Rejected("single block is None, SBL1 or SBL2")
+            self._pc[name] = text
+        elif name in ("dry_run", "m01", "rapid_override"):
+            self._pc[name] = bool(value)
+            self._apply_overrides()
+        elif name == "program_test":
+            if self._sit.channel != RESET:
+                return Rejected("Program test can be switched only in channel reset")
+            self._pc[name] = bool(value)
+            self._test_motion = (
+                InstantMotion(self.machine, self.motion.positions_mcs()) if value else None
+            )
+        elif name == "skip_levels":
+            try:
+                levels = frozenset(int(v) for v in (value or ()))  # type: ignore[union-attr]
+            except (TypeError, ValueError):
+                return Rejected("skip levels are numbers 0 … 9")
+            if any(level < 0 or level > 9 for level in levels):
+                return Rejected("skip levels are numbers 0 … 9")
+            if self._sit.channel == ACTIVE:
+                return Rejected("Skip levels can be changed only in STOP or RESET")
+            self._pc[name] = levels
+            for interp in self._interpreters.values():
+                self._apply_skip_levels(interp)
+        else:
+            return Rejected(f"unknown program control {name!r}")
+        return Accepted()
+
+    def _set_override(self, command: cmd.SetOverride) -> SubmitResult:
+        limits = {"feed": (0.0, 120.0), "rapid": (0.0, 100.0), "spindle": (50.0, 120.0)}
+        if command.which not in limits:
+            return Rejected(f"unknown override {command.which!r}")
+        low, high = limits[command.which]
+        percent = float(command.percent)
+        if not low <= percent <= high:
+            return Rejected(f"{command.which} override must be {low:g} … {high:g} %")
+        self._overrides[command.which] = percent
+        self._apply_overrides()
+        return Accepted()
+
+    def _cancel_alarms(self, command: cmd.CancelAlarms) -> SubmitResult:
+        self.alarms.clear("cancel", self._time_s)
+        return Accepted()
+
+    def _jog(self, command: cmd.Jog) -> SubmitResult:
+        axis = command.axis.upper()
+        if axis not in self.machine.path_axes:
+            return Rejected(f"no axis {command.axis}")
+        function = self._machine_function
+        if command.direction == 0:
+            if self._jogging and function is None:
+                self.motion.jog_continuous(axis, 0, 0.0)
+            return Accepted()
+        if self._estop_active:
+            return Rejected("Emergency stop active")
+        if self._sit.mode == "AUTO" or (self._sit.mode == "MDA" and function not in ("REF", "REPOS")):
+            return Rejected("Axes can be traversed by hand only in JOG")
+        if self._sit.channel == ACTIVE and not self._jogging:
+            return Rejected("Channel active")
+        direction = 1 if command.direction > 0 else -1
+        position = self.motion.positions_mcs()[axis]
+        if function == "REF":
+            plus = int(self.machine.md_value("MD34010", axis, 0) or 0) == 0
+            if (direction > 0) != plus:
+                return Accepted()  # wrong direction key: nothing happens
+            self.motion.start_reference(axis)
+        elif function == "REPOS":
+            if self._repos_point is None or axis not in self._repos_point:
+                return Rejected("No REPOS point")
+            distance = self._repos_point[axis] - position
+            if abs(distance) < 1e-9 or (distance > 0) != (direction > 0):
+                return Accepted()
+            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
+        elif function == "INC":
+            distance = direction * self._increment_mm()
+            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
+            self._jog_targets[axis] = self._jog_targets.get(axis, position) + distance
+        else:
+            self.motion.jog_continuous(axis, direction, self._jog_velocity(axis, command.rapid))
+        self._jog_rest.clear()
+        if not self._jogging:
+            self._jogging = True
+            self._transition("jog_start")
+        if self._owner is not None:
+            self._moved_since_stop = True
+        return Accepted()
+
+    def _start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
+        if self._sit.mode != "AUTO":
+            return Rejected("Block search is possible in AUTOMATIC only")
+        if self._selected is None:
+            return Rejected("No program selected")
+        cascaded = self._run is not None and self._run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
+        if self._sit.channel != RESET and not cascaded:
+            return Rejected("Block search is possible only in channel reset")
+        interp = self._interpreter("AUTO")
+        interp.reset()
+        interp.start(self._selected)
+        run = ProgramRun("AUTO", self._selected, interp, self._adjust_motion)
+        try:
+            result = run.search(command.target, self.motion.positions_mcs())
+        except NcAlarmError:
+            interp.reset()
+            raise
+        if not result.found:
+            interp.reset()
+            return Rejected(f"Search target {command.target} not found")
+        self._run = run
+        self._overlay = None
+        self._owner = "AUTO"
+        self._moved_since_stop = False
+        self._repos_point = None
+        self.runtime.start_from_reset()
+        self._transition("search_found")
+        return Accepted()
+
+    def _write_data(self, command: cmd.WriteData) -> SubmitResult:
+        name = command.name.strip().upper()
+        try:
+            if name.startswith("R") and name[1:].isdigit():
+                index = int(name[1:])
+                if index >= len(self.data.r):
+                    return Rejected(f"R parameter {index} does not exist")
+                self.data.r[index] = float(command.value)  # type: ignore[arg-type]
+                return Accepted()
+            if name.startswith("SD") and name[2:].isdigit():
+                self.data.setting_data[name] = command.value
+                return Accepted()
+            parts = {"$AC_TOTAL_PARTS": "total", "$AC_ACTUAL_PARTS": "actual",
+                     "$AC_SPECIAL_PARTS": "special", "$AC_REQUIRED_PARTS": "required"}
+            if name in parts:
+                value = int(command.value)  # type: ignore[call-overload]
+                if not 0 <= value <= 999_999_999:
+                    return Rejected("part counters range over 0 … 999999999")
+                setattr(self.counters, parts[name], value)
+                return Accepted()
+        except (TypeError, ValueError):
+            return Rejected(f"bad value for {command.name}")
+        return Rejected(f"{command.name} cannot be written here")
+
+    def _set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
+        if command.position not in (0, 1, 2, 3):
+            return Rejected("keyswitch positions are 0 … 3")
+        self._keyswitch = command.position
+        return Accepted()
+
+    def _enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
+        levels = {"SUNRISE": 1, "EVENING": 2, "CUSTOMER": 3}
+        level = levels.get(command.password.strip().upper())
+        if level is None:
+            return Rejected("Password not accepted")
+        self._password_level = level
+        return Accepted()
+
+    def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:
+        self._password_level = None
+        return Accepted()
+
+    _HANDLERS: dict[type, Callable[["Nck", Any], SubmitResult]] = {
+        cmd.SelectMode: _select_mode,
+        cmd.SelectMachineFunction: _select_machine_function,
+        cmd.SelectIncrement: _select_increment,
+        cmd.CycleStart: _cycle_start,
+        cmd.CycleStop: _cycle_stop,
+        cmd.Reset: _reset,
+        cmd.EmergencyStop: _emergency_stop,
+        cmd.SelectProgram: _select_program,
+        cmd.SetMdaProgram: _set_mda,
+        cmd.SetProgramControl: _set_program_control,
+        cmd.SetOverride: _set_override,
+        cmd.CancelAlarms: _cancel_alarms,
+        cmd.Jog: _jog,
+        cmd.StartBlockSearch: _start_block_search,
+        cmd.WriteData: _write_data,
+        cmd.SetKeyswitch: _set_keyswitch,
+        cmd.EnterPassword: _enter_password,
+        cmd.DeletePassword: _delete_password,
+    }
+
+    # ------------------------------------------------------------- cycle
+    def _cycle(self) -> None:
+        self._time_s += self._ipo_s
+        run = self._overlay or self._run
+        if run is not None and self._sit.channel == ACTIVE and not self._jogging:
+            events = run.feed(self._path_motion(), self._run_options(), self._ipo_s)
+            self._handle_events(run, events)
+        self.motion.advance(self._ipo_s)
+        if self._test_motion is not None:
+            self._test_motion.advance(self._ipo_s)
+        for error in self.motion.drain_alarms():
+            self._motion_alarm(error)
+        if self._jogging and not self.motion.jog_active():
+            self._jogging = False
+            self._jog_targets.clear()
+            if self._sit.channel == ACTIVE:
+                self._transition("jog_end")
+        if (
+            self._sit.mode == "AUTO" and self._sit.channel == ACTIVE
+            and self._sit.program == RUNNING and self._run is not None and self._run.kind == "AUTO"
+        ):
+            self.runtime.run(self._ipo_s)
+
+    def _handle_events(self, run: ProgramRun, events: list[RunEvent]) -> None:
+        for event in events:
+            if event.kind == "alarm" and event.alarm is not None:
+                self._raise(event.alarm)
+            elif event.kind == "user_alarm":
+                alarm = event.command
+                assert isinstance(alarm, UserAlarm)
+                self._raise(NcAlarmError(alarm.number, *alarm.params, file=alarm.source.file,
+                                         line=alarm.source.line, n=alarm.source.n))
+            elif event.kind == "message":
+                self.alarms.set_message(event.text, self._time_s)
+            elif event.kind == "output":
+                self._output(event.command)
+            elif event.kind == "stop":
+                self._path_motion().hold()
+                self._mark_interrupted(run)
+                self._transition("block_stop")
+            elif event.kind == "end":
+                self._program_end(run, event.text)
+
+    def _program_end(self, run: ProgramRun, kind: str) -> None:
+        if run is self._overlay:
+            self._overlay = None
+            self._transition("program_end")
+            return
+        try:
+            run.interp.reset()
+        except NcAlarmError as error:
+            self._raise(error)
+        if run.kind == "AUTO":
+            self.counters.on_program_end(bool(self._pc["program_test"]))
+            self.runtime.program_end()
+        self.alarms.set_message("", self._time_s)
+        self._run = None
+        self._owner = None
+        self._transition("program_end")
+
+    def _output(self, command: object) -> None:
+        if isinstance(command, AuxFunction):
+            address = command.address.upper()
+            key = address if command.extension is None else f"{address}{command.extension}"
+            value = command.value
+            self._aux[key] = f"{value:g}"
+            if address == "M":
+                self.counters.on_m_function(int(value), bool(self._pc["program_test"]))
+        elif isinstance(command, ToolSelect):
+            self._tool = command.tool
+        elif isinstance(command, EdgeSelect):
+            self._edge = command.edge
+        elif isinstance(command, SpindleCommand):
+            if command.state:
+                self._spindle_state = command.state
+            if command.speed_rpm is not None:
+                self._spindle_rpm = float(command.speed_rpm)
+
+    def _motion_alarm(self, error: NcAlarmError) -> None:
+        self._raise(error)
+        reactions = self.alarms.reactions_of(error.number)
+        run = self._overlay or self._run
+        if "emergency_stop" in reactions:
+            self._emergency_stop(cmd.EmergencyStop(True))
+            self._estop_pressed = False
+            return
+        if run is not None and self._sit.channel == ACTIVE and not self._jogging:
+            if "braking" in reactions or "feed_stop" in reactions:
+                self._path_motion().hold()
+                run.stop_reason = "alarm"
+                self._mark_interrupted(run)
+                self._transition("nc_stop")
+            elif "interpreter_stop" in reactions:
+                run.interpreter_stop("alarm")
+
+    # ------------------------------------------------------------- helpers
+    def _transition(self, event: str) -> None:
+        new = next_state(self._sit, event)
+        if new is not None:
+            self._sit = new
+
+    def _mark_interrupted(self, run: ProgramRun | None) -> None:
+        """Remember which program is stopped and where, for REPOS."""
+        if run is None:
+            return
+        if run is not self._overlay:
+            self._owner = run.kind
+        if self._repos_point is None or run is not self._overlay:
+            self._repos_point = dict(self.motion.positions_mcs())
+        self._moved_since_stop = False
+
+    def _resume_motion(self, repos: bool = True) -> None:
+        motion = self._path_motion()
+        if repos and self._moved_since_stop:
+            run = self._run
+            feed = run.last_motion.feed_mm_min if run and run.last_motion and run.last_motion.kind != "G0" else None
+            motion.reposition(feed)
+        motion.resume()
+        self._moved_since_stop = False
+
+    def _stop_jog(self, keep_rest: bool) -> None:
+        positions = self.motion.positions_mcs()
+        rest = {axis: target - positions[axis] for axis, target in self._jog_targets.items()}
+        for axis in self.machine.path_axes:
+            self.motion.jog_continuous(axis, 0, 0.0)
+        self._jogging = False
+        self._jog_targets.clear()
+        self._jog_rest = {a: d for a, d in rest.items() if abs(d) > 1e-9} if keep_rest else {}
+
+    def _continue_jog(self) -> SubmitResult:
+        if self._sit.channel != INTERRUPTED or self._sit.program != ABORTED or not self._jog_rest:
+            return Rejected("NC START in JOG only continues a stopped increment")
+        positions = self.motion.positions_mcs()
+        for axis, distance in self._jog_rest.items():
+            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, False))
+            self._jog_targets[axis] = positions[axis] + distance
+        self._jog_rest.clear()
+        self._jogging = True
+        self._transition("jog_start")
+        return Accepted()
+
+    def _interpreter(self, kind: str) -> Interpreter:
+        interp = self._interpreters.get(kind)
+        if interp is None:
+            interp = self._interpreter_factory(self.machine, self.programs, self.data)
+            self._apply_skip_levels(interp)
+            self._interpreters[kind] = interp
+        return interp
+
+    def _apply_skip_levels(self, interp: Interpreter) -> None:
+        setter = getattr(interp, "set_skip_levels", None)
+        if setter is not None:
+            setter(frozenset(self._pc["skip_levels"]))  # type: ignore[arg-type]
+
+    def _path_motion(self) -> Any:
+        """The motion system programs run on: the simulated one under program test."""
+        return self._test_motion if self._pc["program_test"] and self._test_motion else self.motion
+
+    def _display_motion(self) -> Any:
+        return self._test_motion if self._test_motion is not None else self.motion
+
+    def _run_options(self) -> RunOptions:
+        return RunOptions(single_block=self._pc["single_block"], m01=bool(self._pc["m01"]))  # type: ignore[arg-type]
+
+    def _adjust_motion(self, motion: Motion) -> Motion:
+        """Dry run feed (SD42100/SD42101) and the WCS offset bookkeeping."""
+        for axis, mcs in motion.end_mcs.items():
+            if axis in motion.end_wcs:
+                self._wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
+        if not self._pc["dry_run"] or motion.kind == "G0" or motion.feed_mm_min is None:
+            return motion
+        dry = float(self._setting("SD42100", DEFAULT_DRY_RUN_MM_MIN))
+        mode = int(self._setting("SD42101", 0))
+        if mode >= 10 and motion.kind in THREAD_KINDS:
+            return motion
+        base = mode % 10
+        programmed = motion.feed_mm_min
+        feed = {0: max(programmed, dry), 1: min(programmed, dry)}.get(base, dry)
+        return replace(motion, feed_mm_min=feed)
+
+    def _setting(self, name: str, default: object) -> Any:
+        value = self.data.setting_data.get(name)
+        if value is None:
+            return default
+        return value
+
+    def _apply_overrides(self) -> None:
+        feed = self._overrides["feed"]
+        rapid = feed if self._pc["rapid_override"] else self._overrides["rapid"]
+        for motion in (self.motion, self._test_motion):
+            if motion is not None:
+                motion.set_overrides(feed, rapid)
+
+    def _jog_velocity(self, axis: str, rapid: bool) -> float:
+        if rapid:
+            return float(self.machine.md_value("MD32010", axis, DEFAULT_JOG_RAPID_MM_MIN) or DEFAULT_JOG_RAPID_MM_MIN)
+        return float(self.machine.md_value("MD32020", axis, DEFAULT_JOG_MM_MIN) or DEFAULT_JOG_MM_MIN)
+
+    def _increment_mm(self) -> float:
+        if self._increment is None:
+            return float(self._setting("SD41010", 0.001))
+        return self._increment * 0.001
+
+    def _unreferenced_axes(self) -> list[str]:
+        if int(self.machine.md_value("MD20700", None, 1) or 0) == 0:
+            return []
+        missing = []
+        for axis in self.machine.path_axes:
+            if int(self.machine.md_value("MD34110", axis, 1) or 0) == -1:
+                continue
+            if not self.motion.is_referenced(axis):
+                missing.append(axis)
+        return missing
+
+    def _ipo_cycle_s(self) -> float:
+        sysclock = self.machine.md_value("MD10050", None, None)
+        ratio = self.machine.md_value("MD10070", None, None)
+        if isinstance(sysclock, (int, float)) and isinstance(ratio, (int, float)) and sysclock * ratio > 0:
+            return float(sysclock) * float(ratio)
+        return DEFAULT_IPO_S
+
+    def _raise(self, error: NcAlarmError) -> None:
+        block = f"N{error.n}" if error.n is not None else (str(error.line) if error.line else "")
+        self.alarms.raise_alarm(error.number, error.params, now_s=self._time_s, block=block,
+                                file=error.file, line=error.line, n=error.n)
+
+    def _raise_number(self, number: int, *params: object) -> None:
+        self.alarms.raise_alarm(number, tuple(str(p) for p in params), now_s=self._time_s)
+
+    def _internal_error(self, exc: BaseException) -> None:
+        self.internal_errors.append(traceback.format_exc())
+        text = f"{type(exc).__name__}: {exc}"[:120]
+        try:
+            self.alarms.raise_alarm(ALARM_INTERNAL, (text,), now_s=self._time_s)
+        except Exception:  # noqa: BLE001 - the alarm server itself failed
+            pass
+
+    def _internal_reset(self) -> None:
+        """After an internal error in a cycle: stop everything, keep the alarms."""
+        try:
+            self.motion.abort()
+        except Exception:  # noqa: BLE001
+            pass
+        self._run = None
+        self._overlay = None
+        self._owner = None
+        self._jogging = False
+        self._test_motion = None if not self._pc["program_test"] else self._test_motion
+        self._sit = ChannelSituation(self._sit.mode, RESET, ABORTED)
+
+    # ------------------------------------------------------------- status
+    def _access_level(self) -> int:
+        level = 7 - self._keyswitch
+        if self._password_level is not None:
+            level = min(level, self._password_level)
+        return level
+
+    def _build_status(self) -> NckStatus:
+        shown = self._display_motion()
+        positions = shown.positions_mcs()
+        run = self._overlay or self._run
+        current_source = self._path_motion().current_source() if run is not None else None
+        current = None
+        blocks: tuple = ()
+        dtg: dict[str, float] = {}
+        if run is not None:
+            blocks = run.display_blocks()
+            if current_source is not None:
+                for view in reversed(blocks):
+                    if view.file == current_source.file and view.line == current_source.line:
+                        current = view
+                        break
+                end = run.segment_ends.get((current_source.file, current_source.line))
+                if end:
+                    dtg = {a: float(v) - positions.get(a, 0.0) for a, v in end.items()}
+            if current is None and blocks:
+                current = blocks[-1]
+        axes = []
+        for axis in self.machine.axes:
+            if axis.kind == "spindle":
+                axes.append(AxisStatus(name=axis.name, kind="spindle", position_mcs=0.0,
+                                       position_wcs=0.0, referenced=True,
+                                       speed_rpm=self._spindle_rpm if self._spindle_state in ("M3", "M4") else 0.0))
+                continue
+            mcs = float(positions.get(axis.name, 0.0))
+            axes.append(AxisStatus(
+                name=axis.name, kind=axis.kind, position_mcs=mcs,
+                position_wcs=mcs - self._wcs_offset.get(axis.name, 0.0),
+                distance_to_go=dtg.get(axis.name, 0.0),
+                referenced=bool(self.motion.is_referenced(axis.name)), setpoint_mcs=mcs,
+            ))
+        modal = self._modal_view(run)
+        repos = {}
+        if self._repos_point is not None and self._owner is not None:
+            now = self.motion.positions_mcs()
+            repos = {a: p - now[a] for a, p in self._repos_point.items() if a in now}
+        channel = ChannelStatus(
+            mode=self._sit.mode, machine_function=self._machine_function,
+            increment=self._increment, channel_state=self._sit.channel,
+            program_state=self._sit.program, selected_program=self._selected,
+            current_block=current, blocks=blocks, modal=modal,
+            program_control=dict(self._pc), overrides=dict(self._overrides),
+            path_feed_mm_min=0.0, program_runtime_s=self.runtime.act_s,
+            part_count=self.counters.actual, message=self.alarms.message,
+            stop_reason=run.stop_reason if run is not None and self._sit.channel == INTERRUPTED else "",
+            interrupted_program=self._owner, mda_text=self._mda_text,
+            program_runtime_last_s=self.runtime.old_s, program_runtime_count=self.runtime.old_count,
+            parts_total=self.counters.total, parts_required=self.counters.required,
+            parts_special=self.counters.special, repos_offsets=repos,
+        )
+        return NckStatus(
+            seq=0, time_s=0.0, channel=channel, axes=tuple(axes), alarms=self.alarms.active,
+            access_level=self._access_level(), machine_name=self.machine.name,
+            emergency_stop=self._estop_active, mode_group_ready=not self._estop_active,
+            alarm_log_seq=self.alarms.last_seq, internal_errors=len(self.internal_errors),
+        )
+
+    def _modal_view(self, run: ProgramRun | None) -> ModalView:
+        base = ModalView()
+        interp = run.interp if run is not None else self._interpreters.get("AUTO")
+        getter = getattr(interp, "modal_view", None) if interp is not None else None
+        if getter is not None:
+            try:
+                base = getter()
+            except Exception:  # noqa: BLE001 - display only
+                base = ModalView()
+        return replace(
+            base, tool=base.tool or self._tool, edge=base.edge or self._edge,
+            spindle_speed_rpm=base.spindle_speed_rpm or self._spindle_rpm,
+            spindle_state=self._spindle_state if base.spindle_state == "M5" else base.spindle_state,
+            aux={**dict(base.aux), **self._aux},
+        )

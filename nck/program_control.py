@@ -1,0 +1,351 @@
+"""One program run in the channel: interpreter → motion buffer, stops, block search.
+
+A :class:`ProgramRun` is created when NC START begins a program (AUTO) or the
+MDA buffer, and lives until the program ends or RESET. Every IPO cycle the
+kernel calls :meth:`ProgramRun.feed`: it asks the interpreter for blocks
+while the motion buffer accepts, pushes their motion, and reports what the
+kernel must act on as :class:`RunEvent` records (alarms, messages, auxiliary
+functions, stop reached, program end). It applies single block (SBL1 after
+each action block, SBL2 after every block), M0, M1 (only with "programmed
+stop" on), STOPRE and M2/M30.
+
+Block search with calculation (:meth:`ProgramRun.search`) interprets up to the
+target block without moving anything, collecting the last position and the
+auxiliary functions (the action blocks), and keeps the target block pending;
+NC START outputs the actions, alarm 10208 follows, the next NC START
+approaches the start of the target block and continues.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import deque
+from dataclasses import dataclass, field
+from typing import Callable, Mapping
+
+from nck.canon import (
+    AuxFunction, Dwell, EdgeSelect, Message, Motion, ProgramEnd, SpindleCommand, StopPoint,
+    ToolSelect, UserAlarm,
+)
+from nck.errors import NcAlarmError
+from nck.interp.api import BlockResult, Interpreter
+from nck.motion.api import MotionSystem
+from nck.status import BlockView
+
+MAX_BLOCKS_PER_CYCLE = 50  # interpretation blocks per IPO cycle when blocks cost no time
+SEARCH_BLOCK_LIMIT = 200_000
+DISPLAY_HISTORY = 8
+NOT_OUTPUT_IN_SEARCH_M = {0, 1, 2, 17, 30}
+
+# Run phases.
+FEEDING = "feeding"  # interpreting and pushing blocks
+WAIT_IDLE = "wait_idle"  # STOPRE: wait until the motion is done, then go on
+WAIT_STOP = "wait_stop"  # stop at block end: wait until the motion is done
+WAIT_END = "wait_end"  # program end: wait until the motion is done
+STOPPED = "stopped"  # stopped at a block boundary; NC START continues
+ENDED = "ended"
+SEARCH_FOUND = "search_found"  # target found; NC START outputs the action blocks
+SEARCH_ACTIONS_DONE = "search_actions_done"  # 10208 pending; NC START approaches and continues
+
+
+@dataclass(frozen=True, slots=True)
+class RunEvent:
+    """Something the kernel must act on.
+
+    ``kind``: ``alarm`` (``alarm`` set), ``user_alarm`` (``command``), ``message``
+    (``text``), ``output`` (an auxiliary/tool/spindle command in ``command``),
+    ``stop`` (stopped at a block boundary, reason in ``text``), ``end`` (program
+    end; ``text`` is ``M2``/``M30``/``M17`` or ``""`` when the text simply ran out).
+    """
+
+    kind: str
+    text: str = ""
+    alarm: NcAlarmError | None = None
+    command: object = None
+
+
+@dataclass
+class RunOptions:
+    """Program-control settings the run reads while it feeds."""
+
+    single_block: str | None = None  # None, "SBL1", "SBL2"
+    m01: bool = False
+
+
+@dataclass
+class SearchResult:
+    """What a block search with calculation collected."""
+
+    found: bool
+    position_mcs: dict[str, float] = field(default_factory=dict)
+    position_wcs: dict[str, float] = field(default_factory=dict)
+    actions: list[object] = field(default_factory=list)
+    blocks_searched: int = 0
+
+
+def block_view(result: BlockResult) -> BlockView:
+    """The display form of an interpreted block."""
+    return BlockView(file=result.source.file, line=result.source.line, text=result.text)
+
+
+def parse_search_target(target: str) -> tuple[int | None, str]:
+    """``"N260"``/``"260"`` → block number 260; anything else is searched as text."""
+    text = target.strip()
+    match = re.fullmatch(r"[Nn]?\s*(\d+)", text)
+    if match:
+        return int(match.group(1)), text
+    return None, text
+
+
+class ProgramRun:
+    """Drives one interpreter into one motion system; see the module docstring."""
+
+    def __init__(
+        self,
+        kind: str,
+        name: str,
+        interpreter: Interpreter,
+        transform: Callable[[Motion], Motion] | None = None,
+    ) -> None:
+        self.kind = kind  # "AUTO" or "MDA"
+        self.name = name
+        self.interp = interpreter
+        self.phase = FEEDING
+        self.stop_reason = ""
+        self.current: BlockResult | None = None
+        self.history: deque[BlockView] = deque(maxlen=DISPLAY_HISTORY)
+        self.blocks_executed = 0
+        self.last_motion: Motion | None = None
+        self.segment_ends: dict[tuple[str, int], Mapping[str, float]] = {}
+        self._transform = transform or (lambda motion: motion)
+        self._pending: BlockResult | None = None
+        self._index = 0
+        self._stop_after: str | None = None
+        self._end_kind: str | None = None
+        self._search: SearchResult | None = None
+
+    # -- feeding ------------------------------------------------------------
+    def feed(self, motion: MotionSystem, options: RunOptions, budget_s: float) -> list[RunEvent]:
+        """Advance the run by one IPO cycle's worth of interpretation."""
+        events: list[RunEvent] = []
+        if self.phase in (WAIT_IDLE, WAIT_STOP, WAIT_END):
+            if not motion.is_idle():
+                return events
+            if self.phase == WAIT_STOP:
+                self.phase = STOPPED
+                events.append(RunEvent("stop", self.stop_reason))
+                return events
+            if self.phase == WAIT_END:
+                self.phase = ENDED
+                events.append(RunEvent("end", self._end_kind or ""))
+                return events
+            self.phase = FEEDING
+        if self.phase != FEEDING:
+            return events
+        blocks = 0
+        while self.phase == FEEDING:
+            if self._pending is None:
+                if self.interp.finished:
+                    self._finish_at_idle("")
+                    break
+                if budget_s <= 0.0 or blocks >= MAX_BLOCKS_PER_CYCLE:
+                    break
+                try:
+                    result = self.interp.step()
+                except NcAlarmError as error:
+                    events.append(RunEvent("alarm", alarm=error))
+                    self._stop_at_idle("alarm")
+                    break
+                budget_s -= max(0.0, result.cost_s)
+                blocks += 1
+                self._take(result)
+            if not self._emit(motion, options, events):
+                break  # motion buffer full: continue next cycle
+            self._block_done(options)
+        return events
+
+    def _take(self, result: BlockResult) -> None:
+        self._pending = result
+        self._index = 0
+        self.current = result
+        self.history.append(block_view(result))
+        self.blocks_executed += 1
+
+    def _emit(self, motion: MotionSystem, options: RunOptions, events: list[RunEvent]) -> bool:
+        """Output the pending block's commands; False if the buffer filled up."""
+        assert self._pending is not None
+        commands = self._pending.commands
+        while self._index < len(commands):
+            command = commands[self._index]
+            if isinstance(command, (Motion, Dwell)):
+                if not motion.can_accept():
+                    return False
+                if isinstance(command, Motion):
+                    command = self._transform(command)
+                    self.last_motion = command
+                    src = command.source
+                    self.segment_ends[(src.file, src.line)] = command.end_mcs
+                    if len(self.segment_ends) > 64:
+                        self.segment_ends.pop(next(iter(self.segment_ends)))
+                motion.push(command)
+            elif isinstance(command, StopPoint):
+                kind = command.kind.upper()
+                if kind in ("M0", "M00"):
+                    self._stop_after = "M0"
+                elif kind in ("M1", "M01"):
+                    if options.m01:
+                        self._stop_after = "M1"
+                elif kind == "STOPRE":
+                    if self._stop_after is None:
+                        self._stop_after = "STOPRE"
+                else:
+                    self._stop_after = kind
+            elif isinstance(command, ProgramEnd):
+                self._end_kind = command.kind
+            elif isinstance(command, Message):
+                events.append(RunEvent("message", text=command.text, command=command))
+            elif isinstance(command, UserAlarm):
+                events.append(RunEvent("user_alarm", command=command))
+                if self._stop_after is None:
+                    self._stop_after = "alarm"
+            else:
+                events.append(RunEvent("output", command=command))
+            self._index += 1
+        return True
+
+    def _block_done(self, options: RunOptions) -> None:
+        assert self._pending is not None
+        block = self._pending
+        self._pending = None
+        if block.finished or self._end_kind is not None:
+            self._finish_at_idle(self._end_kind or "M30")
+            return
+        reason = self._stop_after
+        self._stop_after = None
+        if reason == "STOPRE":
+            self.phase = WAIT_IDLE
+            reason = None
+        if reason is None:
+            if options.single_block == "SBL2" or (
+                options.single_block == "SBL1" and block.action_block
+            ):
+                reason = "single block"
+        if reason is not None:
+            self._stop_at_idle(reason)
+
+    def _stop_at_idle(self, reason: str) -> None:
+        self.stop_reason = reason
+        self.phase = WAIT_STOP
+
+    def _finish_at_idle(self, kind: str) -> None:
+        self._end_kind = kind
+        self.phase = WAIT_END
+
+    # -- operator actions ----------------------------------------------------
+    def continue_after_stop(self) -> None:
+        """NC START after a block-boundary stop (single block, M0/M1, alarm)."""
+        if self.phase == STOPPED:
+            self.phase = FEEDING
+            self.stop_reason = ""
+
+    def interpreter_stop(self, reason: str = "alarm") -> None:
+        """Stop interpreting; the channel stops once the buffered motion is done."""
+        if self.phase in (FEEDING, WAIT_IDLE):
+            self._pending = None
+            self._stop_at_idle(reason)
+
+    @property
+    def at_stop(self) -> bool:
+        """True while stopped at a block boundary."""
+        return self.phase == STOPPED
+
+    def display_blocks(self) -> tuple[BlockView, ...]:
+        """The recently interpreted blocks, oldest first."""
+        return tuple(self.history)
+
+    # -- block search --------------------------------------------------------
+    def search(self, target: str, start_positions: Mapping[str, float]) -> SearchResult:
+        """Block search with calculation to block number or text ``target``.
+
+        The interpreter must be positioned at the program start. Raises
+        :class:`NcAlarmError` when a block before the target fails.
+        """
+        number, text = parse_search_target(target)
+        result = SearchResult(found=False, position_mcs=dict(start_positions))
+        spindles: dict[int, SpindleCommand] = {}
+        aux: dict[tuple[str, int | None], AuxFunction] = {}
+        tool: ToolSelect | None = None
+        edge: EdgeSelect | None = None
+        for _ in range(SEARCH_BLOCK_LIMIT):
+            if self.interp.finished:
+                break
+            block = self.interp.step()
+            result.blocks_searched += 1
+            if self._is_target(block, number, text):
+                result.found = True
+                self._take(block)
+                self.blocks_executed -= 1
+                break
+            ended = False
+            for command in block.commands:
+                if isinstance(command, Motion):
+                    result.position_mcs.update(command.end_mcs)
+                    result.position_wcs.update(command.end_wcs)
+                    self.last_motion = command
+                elif isinstance(command, SpindleCommand):
+                    spindles[command.spindle] = command
+                elif isinstance(command, ToolSelect):
+                    tool = command
+                elif isinstance(command, EdgeSelect):
+                    edge = command
+                elif isinstance(command, AuxFunction):
+                    if command.address.upper() == "M" and int(command.value) in NOT_OUTPUT_IN_SEARCH_M:
+                        continue
+                    aux[(command.address.upper(), command.extension)] = command
+                elif isinstance(command, ProgramEnd):
+                    ended = True
+            if ended or block.finished:
+                break
+        if result.found:
+            actions: list[object] = list(aux.values())
+            actions += [c for c in (tool, edge) if c is not None]
+            actions += list(spindles.values())
+            result.actions = actions
+            self._search = result
+            self.phase = SEARCH_FOUND
+            self.stop_reason = "search target found"
+        return result
+
+    @staticmethod
+    def _is_target(block: BlockResult, number: int | None, text: str) -> bool:
+        if number is not None:
+            if block.source.n == number:
+                return True
+            stripped = block.text.lstrip().upper()
+            return bool(re.match(rf"N{number}(?!\d)", stripped))
+        return text.upper() in block.text.upper()
+
+    def output_search_actions(self) -> list[RunEvent]:
+        """First NC START after the search: the action blocks; then 10208 is due."""
+        assert self._search is not None
+        events = [RunEvent("output", command=c) for c in self._search.actions]
+        self.phase = SEARCH_ACTIONS_DONE
+        self.stop_reason = "10208"
+        return events
+
+    def search_approach(self) -> Motion | None:
+        """Second NC START: the approach to the start of the target block (None if none)."""
+        search = self._search
+        self._search = None
+        self.phase = FEEDING
+        self.stop_reason = ""
+        if search is None or not search.position_mcs:
+            return None
+        source = self._pending.source if self._pending is not None else None
+        if source is None:
+            return None
+        return Motion(
+            kind="G0", source=source, plane="G17",
+            end_wcs=dict(search.position_wcs), end_mcs=dict(search.position_mcs),
+            inserted=True,
+        )
