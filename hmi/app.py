@@ -79,6 +79,11 @@ def area_screen_factory(area: Area) -> Callable[[], Screen]:
         module = None
         problem = f"{module_name} could not be loaded: {type(exc).__name__}: {exc}"
     screen_class = getattr(module, "AreaScreen", None) if module is not None else None
+    if screen_class is not None and module is not None:
+        missing = _missing_css(screen_class, module)
+        if missing:
+            problem = f"{module_name}: stylesheet {missing} is missing"
+            screen_class = None
     if screen_class is None:
         from screens.placeholder import PlaceholderScreen
 
@@ -86,6 +91,21 @@ def area_screen_factory(area: Area) -> Callable[[], Screen]:
             print(f"hmi: {problem}", file=sys.stderr)
         return lambda: PlaceholderScreen(area.id, area.title, problem)
     return screen_class
+
+
+def _missing_css(screen_class: type, module: Any) -> str:
+    """Return the first ``CSS_PATH`` file of an area screen that does not exist, else ``""``."""
+    paths = getattr(screen_class, "CSS_PATH", None)
+    if not paths:
+        return ""
+    folder = Path(getattr(module, "__file__", "") or ".").parent
+    for entry in [paths] if isinstance(paths, (str, Path)) else list(paths):
+        path = Path(entry)
+        if not path.is_absolute():
+            path = folder / path
+        if not path.is_file():
+            return path.name
+    return ""
 
 
 def _next_position(table: tuple[float, ...], current: float, step: int) -> float:
