@@ -1,0 +1,364 @@
+"""Protection levels 0–7, passwords and the keyswitch.
+
+Level 0 has the most rights and level 7 the fewest. A datum or function with
+protection level ``n`` may be used when the current level is ``<= n``.
+
+* Passwords give levels 1–3 (defaults ``SUNRISE``, ``EVENING``, ``CUSTOMER``).
+  A password has at most 8 characters (shorter ones count as blank-padded) and
+  is stored only as a salted PBKDF2 hash.
+* The keyswitch gives levels 4–7: position 3 → level 4 … position 0 → level 7.
+  If several positions are reported at once, position 3 wins.
+* An entered password overrides the keyswitch until it is deleted; it is part
+  of the retained state and survives power off/on.
+
+The level that each protected function needs comes from the HMI machine data
+``USER_CLASS_*`` (display MD 92xx, see ``data/md/display.toml``) or, for
+functions without such a datum, from ``data/access.toml``.
+"""
+
+from __future__ import annotations
+
+import enum
+import hashlib
+import hmac
+import secrets
+from dataclasses import dataclass, field
+from typing import Callable, Mapping
+
+from nck.resources import load_toml
+
+LEVEL_MOST_RIGHTS = 0
+LEVEL_FEWEST_RIGHTS = 7
+PASSWORD_LEVELS = (1, 2, 3)
+PASSWORD_MAX_CHARS = 8
+DEFAULT_PASSWORDS = {1: "SUNRISE", 2: "EVENING", 3: "CUSTOMER"}
+KEYSWITCH_POSITIONS = (0, 1, 2, 3)
+KDF_ITERATIONS = 60_000
+KDF_NAME = "pbkdf2_sha256"
+
+
+class Action(enum.Enum):
+    """A protected function; the value is its key in ``data/access.toml``."""
+
+    READ_TOOL = "read_tool"
+    WRITE_TOOL_GEOMETRY = "write_tool_geometry"
+    WRITE_TOOL_WEAR = "write_tool_wear"
+    WRITE_TOOL_NAME = "write_tool_name"
+    WRITE_TOOL_TYPE = "write_tool_type"
+    WRITE_WORK_OFFSET = "write_work_offset"
+    WRITE_FINE_OFFSET = "write_fine_offset"
+    WRITE_R_PARAMETER = "write_r_parameter"
+    CLEAR_R_PARAMETERS = "clear_r_parameters"
+    READ_USER_DATA = "read_user_data"
+    WRITE_USER_DATA = "write_user_data"
+    WRITE_SETTING_DATA = "write_setting_data"
+    WRITE_PROGRAM_CONTROL = "write_program_control"
+    SELECT_PROGRAM = "select_program"
+    READ_PROGRAM = "read_program"
+    EDIT_PROGRAM = "edit_program"
+    PRESET = "preset"
+    OVERSTORE = "overstore"
+    TEACH_IN = "teach_in"
+
+
+@dataclass(frozen=True, slots=True)
+class ActionRule:
+    """Where the level of one action comes from: a USER_CLASS MD, else a fixed level."""
+
+    action: Action
+    title: str
+    md_number: int | None
+    level: int
+
+
+def _load_rules() -> dict[Action, ActionRule]:
+    table = load_toml("access.toml")
+    rules: dict[Action, ActionRule] = {}
+    for key, entry in table["action"].items():
+        action = Action(key)
+        rules[action] = ActionRule(
+            action=action,
+            title=entry["title"],
+            md_number=entry.get("md"),
+            level=int(entry.get("level", LEVEL_FEWEST_RIGHTS)),
+        )
+    missing = set(Action) - set(rules)
+    if missing:
+        raise ValueError(f"data/access.toml lacks {sorted(a.value for a in missing)}")
+    return rules
+
+
+_RULES: dict[Action, ActionRule] | None = None
+
+
+def action_rules() -> dict[Action, ActionRule]:
+    """Return the rule of every protected action (read once from ``data/access.toml``)."""
+    global _RULES
+    if _RULES is None:
+        _RULES = _load_rules()
+    return _RULES
+
+
+UserClassLookup = Callable[[int], "int | None"]
+
+
+def required_level(action: Action, user_class: UserClassLookup | None = None) -> int:
+    """Return the protection level ``action`` needs.
+
+    ``user_class(md_number)`` returns the current value of a USER_CLASS machine
+    datum (or None to use the catalogue default); without it the defaults apply.
+    """
+    rule = action_rules()[action]
+    if rule.md_number is not None:
+        value = user_class(rule.md_number) if user_class is not None else None
+        if value is None:
+            from nck.machine_data import catalog  # local import: machine_data imports us
+
+            value = catalog().get_md(rule.md_number).default
+        return int(value)
+    return rule.level
+
+
+def may(level: int, action: Action | int, user_class: UserClassLookup | None = None) -> bool:
+    """True when a user at ``level`` may perform ``action`` (or use a datum of that level)."""
+    needed = action if isinstance(action, int) else required_level(action, user_class)
+    return level <= needed
+
+
+def level_name(level: int) -> str:
+    """Return how a level is reached, for messages (``"password EVENING level"`` style)."""
+    if level == 0:
+        return "level 0 (system)"
+    if level in PASSWORD_LEVELS:
+        return f"level {level} (password)"
+    return f"level {level} (keyswitch position {LEVEL_FEWEST_RIGHTS - level})"
+
+
+class AccessError(Exception):
+    """A refused protected operation; ``str()`` is a message for the operator."""
+
+
+class AccessDenied(AccessError):
+    """The current level does not allow the operation; nothing was changed."""
+
+    def __init__(self, what: str, needed_level: int, current_level: int) -> None:
+        self.what = what
+        self.needed_level = needed_level
+        self.current_level = current_level
+        super().__init__(
+            f"{what} needs protection level {needed_level} or lower "
+            f"(current level {current_level})"
+        )
+
+
+class PasswordError(AccessError):
+    """A password was wrong, too long, empty or already used for another level."""
+
+
+def normalize_password(password: str) -> str:
+    """Return the password as the control compares it: blank-padded to 8 characters.
+
+    Raises PasswordError when it is empty or longer than 8 characters.
+    """
+    stripped = password.rstrip(" ")
+    if not stripped:
+        raise PasswordError("a password needs at least one character")
+    if len(stripped) > PASSWORD_MAX_CHARS:
+        raise PasswordError(f"a password has at most {PASSWORD_MAX_CHARS} characters")
+    return stripped.ljust(PASSWORD_MAX_CHARS)
+
+
+@dataclass(frozen=True, slots=True)
+class PasswordHash:
+    """A salted hash of one password (never the password itself)."""
+
+    salt_hex: str
+    hash_hex: str
+    iterations: int = KDF_ITERATIONS
+    kdf: str = KDF_NAME
+
+    @classmethod
+    def create(cls, password: str, iterations: int = KDF_ITERATIONS) -> "PasswordHash":
+        """Hash ``password`` with a fresh random salt."""
+        salt = secrets.token_bytes(16)
+        digest = hashlib.pbkdf2_hmac(
+            "sha256", normalize_password(password).encode("utf-8"), salt, iterations
+        )
+        return cls(salt.hex(), digest.hex(), iterations)
+
+    def matches(self, password: str) -> bool:
+        """True when ``password`` hashes to this record."""
+        try:
+            candidate = normalize_password(password)
+        except PasswordError:
+            return False
+        digest = hashlib.pbkdf2_hmac(
+            "sha256", candidate.encode("utf-8"), bytes.fromhex(self.salt_hex), self.iterations
+        )
+        return hmac.compare_digest(digest.hex(), self.hash_hex)
+
+    def to_json(self) -> dict[str, object]:
+        """Return the record as JSON-ready data."""
+        return {"kdf": self.kdf, "iterations": self.iterations, "salt": self.salt_hex,
+                "hash": self.hash_hex}
+
+    @classmethod
+    def from_json(cls, data: Mapping[str, object]) -> "PasswordHash":
+        """Read a record written by :meth:`to_json` (ValueError when malformed)."""
+        if data.get("kdf") != KDF_NAME:
+            raise ValueError(f"unknown password hash {data.get('kdf')!r}")
+        salt, digest, iterations = data["salt"], data["hash"], data["iterations"]
+        if not (isinstance(salt, str) and isinstance(digest, str) and isinstance(iterations, int)):
+            raise ValueError("malformed password hash")
+        bytes.fromhex(salt)
+        bytes.fromhex(digest)
+        return cls(salt, digest, iterations)
+
+
+def default_password_hashes() -> dict[int, PasswordHash]:
+    """Hashes of the factory passwords of levels 1–3."""
+    return {level: PasswordHash.create(pw) for level, pw in DEFAULT_PASSWORDS.items()}
+
+
+@dataclass
+class AccessState:
+    """The retained part of access control: keyswitch, password hashes, active password."""
+
+    keyswitch_position: int = 0
+    password_level: int | None = None
+    password_hashes: dict[int, PasswordHash] = field(default_factory=default_password_hashes)
+
+    def to_json(self) -> dict[str, object]:
+        """Return JSON-ready data (hashes only)."""
+        return {
+            "keyswitch_position": self.keyswitch_position,
+            "password_level": self.password_level,
+            "passwords": {str(k): v.to_json() for k, v in sorted(self.password_hashes.items())},
+        }
+
+    @classmethod
+    def from_json(cls, data: Mapping[str, object]) -> "AccessState":
+        """Read data written by :meth:`to_json` (ValueError when malformed)."""
+        position = data["keyswitch_position"]
+        level = data["password_level"]
+        passwords = data["passwords"]
+        if not isinstance(position, int) or position not in KEYSWITCH_POSITIONS:
+            raise ValueError("bad keyswitch position")
+        if level is not None and (not isinstance(level, int) or level not in PASSWORD_LEVELS):
+            raise ValueError("bad password level")
+        if not isinstance(passwords, dict):
+            raise ValueError("bad password table")
+        hashes = {}
+        for key, record in passwords.items():
+            if int(key) not in PASSWORD_LEVELS or not isinstance(record, dict):
+                raise ValueError("bad password entry")
+            hashes[int(key)] = PasswordHash.from_json(record)
+        return cls(position, level, hashes)
+
+
+def keyswitch_from_bits(bits: tuple[bool, bool, bool, bool]) -> int:
+    """Return the keyswitch position from the four position signals (0..3).
+
+    Several signals at once (or none) count as position 3, the position with the
+    most rights, as the control does.
+    """
+    active = [index for index, on in enumerate(bits) if on]
+    if len(active) == 1:
+        return active[0]
+    return 3
+
+
+class AccessControl:
+    """The current access level and the operations that change it.
+
+    Args:
+        state: the retained state (mutated in place; persist it after changes).
+        user_class: lookup of the current USER_CLASS machine data by number.
+    """
+
+    def __init__(self, state: AccessState | None = None,
+                 user_class: UserClassLookup | None = None) -> None:
+        self.state = state if state is not None else AccessState()
+        self.user_class = user_class
+        self.log: list[str] = []  # level changes, for the logbook
+
+    @property
+    def keyswitch_level(self) -> int:
+        """Level given by the keyswitch alone (position 0 → 7 … position 3 → 4)."""
+        return LEVEL_FEWEST_RIGHTS - self.state.keyswitch_position
+
+    @property
+    def level(self) -> int:
+        """The current level: the password level while one is set, else the keyswitch level."""
+        if self.state.password_level is not None:
+            return self.state.password_level
+        return self.keyswitch_level
+
+    def _note(self, before: int, reason: str) -> None:
+        if self.level != before:
+            self.log.append(f"access level {before} -> {self.level} ({reason})")
+
+    def set_keyswitch(self, position: int) -> None:
+        """Turn the keyswitch to ``position`` 0..3 (ValueError otherwise)."""
+        if position not in KEYSWITCH_POSITIONS:
+            raise ValueError(f"keyswitch position {position} does not exist (0..3)")
+        before = self.level
+        self.state.keyswitch_position = position
+        self._note(before, f"keyswitch {position}")
+
+    def check_password(self, password: str) -> int | None:
+        """Return the level that ``password`` opens, or None (nothing changes)."""
+        for level in PASSWORD_LEVELS:
+            record = self.state.password_hashes.get(level)
+            if record is not None and record.matches(password):
+                return level
+        return None
+
+    def enter_password(self, password: str) -> int:
+        """Set a password: return the new level, or raise PasswordError (level unchanged)."""
+        normalize_password(password)
+        level = self.check_password(password)
+        if level is None:
+            raise PasswordError("password not accepted")
+        before = self.level
+        self.state.password_level = level
+        self._note(before, "password set")
+        return level
+
+    def delete_password(self) -> None:
+        """Delete the active password: back to the keyswitch level."""
+        before = self.level
+        self.state.password_level = None
+        self._note(before, "password deleted")
+
+    def change_password(self, level: int, new_password: str) -> None:
+        """Give level ``level`` (1..3) a new password.
+
+        Allowed only from that level or one with more rights; the password must
+        not already open another level.
+        """
+        if level not in PASSWORD_LEVELS:
+            raise PasswordError(f"only levels 1..3 have passwords, not {level}")
+        if self.level > level:
+            raise AccessDenied(f"changing the password of level {level}", level, self.level)
+        normalize_password(new_password)
+        for other, record in self.state.password_hashes.items():
+            if other != level and record.matches(new_password):
+                raise PasswordError(f"that password already belongs to level {other}")
+        self.state.password_hashes[level] = PasswordHash.create(new_password)
+
+    def required(self, action: Action) -> int:
+        """Return the level ``action`` needs with the current USER_CLASS data."""
+        return required_level(action, self.user_class)
+
+    def may(self, action: Action | int) -> bool:
+        """True when the current level allows ``action`` (or a datum of that level)."""
+        return may(self.level, action, self.user_class)
+
+    def require(self, action: Action | int, what: str | None = None) -> None:
+        """Raise AccessDenied unless the current level allows ``action``."""
+        needed = action if isinstance(action, int) else self.required(action)
+        if self.level > needed:
+            label = what or (action_rules()[action].title if isinstance(action, Action)
+                             else "this operation")
+            raise AccessDenied(label, needed, self.level)

@@ -1,0 +1,582 @@
+"""The machine-data and setting-data catalogue and the store of their values.
+
+The catalogue (``data/md/*.toml``, described in ``data/md/README.md``) gives
+each datum its number, identifier, scope, type, unit, default, limits,
+protection levels and activation. :class:`MachineDataStore` holds the values
+of one machine in three layers — catalogue default, machine file, retained
+changes — and keeps apart what is *stored* (shown on the MD screen) from what
+is *active* (used by the kernel), following the activation of each datum:
+
+* ``so`` immediately, ``re`` at RESET, ``cf`` at NEW CONFIG (the "Set MD
+  active" softkey; RESET also activates it), ``po`` only at POWER ON (a
+  restart builds a new store from the retained data, where everything is
+  active).
+
+Setting data (``SD…``) take effect at once and live in
+``NcData.setting_data`` under their key (``"SD42100"``; axis data as
+``{"X": value}``), so the kernel reads them there.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import functools
+import re
+from dataclasses import dataclass
+from typing import Any, Iterable, Mapping
+
+from nck.access import AccessDenied, Action, LEVEL_FEWEST_RIGHTS, required_level
+from nck.machine import MachineConfig
+from nck.resources import data_path, load_toml
+
+ACTIVATIONS = ("so", "re", "cf", "po")
+ACTIVATION_TEXT = {
+    "so": "immediately",
+    "re": "at RESET",
+    "cf": "at NEW CONFIG (Set MD active, or RESET)",
+    "po": "at POWER ON (Reset (po))",
+}
+#: Which activation classes each event brings into effect.
+EVENT_ACTIVATES = {
+    "reset": frozenset({"so", "re", "cf"}),
+    "new_config": frozenset({"so", "re", "cf"}),
+    "power_on": frozenset(ACTIVATIONS),
+}
+PREFIX = {
+    ("md", "general"): "$MN_",
+    ("md", "channel"): "$MC_",
+    ("md", "axis"): "$MA_",
+    ("md", "display"): "$MM_",
+    ("sd", "general"): "$SN_",
+    ("sd", "channel"): "$SC_",
+    ("sd", "axis"): "$SA_",
+}
+TYPES = ("real", "int", "bool", "string")
+USER_CLASS_FIRST, USER_CLASS_LAST = 9200, 9299
+
+
+class DataError(Exception):
+    """A machine/setting datum could not be read or written; ``str()`` says why."""
+
+
+class UnknownDataError(DataError):
+    """The name does not denote a datum of the catalogue (or an axis of the machine)."""
+
+
+class DataValueError(DataError):
+    """The value has the wrong type or lies outside the datum's limits."""
+
+
+@dataclass(frozen=True, slots=True)
+class DataDefinition:
+    """One machine or setting datum of the catalogue."""
+
+    number: int
+    name: str
+    kind: str  # "md" or "sd"
+    scope: str  # "general", "channel", "axis", "display"
+    type: str
+    unit: str
+    default: Any
+    min: float | None
+    max: float | None
+    array: int  # element count, 0 for a scalar
+    activation: str
+    write_level: int
+    read_level: int
+    title: str
+
+    @property
+    def key(self) -> str:
+        """``"MD32000"`` / ``"SD42100"``: the key used in machine files and NcData."""
+        return f"{self.kind.upper()}{self.number}"
+
+    @property
+    def identifier(self) -> str:
+        """``"$MA_MAX_AX_VELO"``."""
+        return PREFIX[(self.kind, self.scope)] + self.name
+
+    @property
+    def per_axis(self) -> bool:
+        """True for axis data (one value per axis)."""
+        return self.scope == "axis"
+
+    @property
+    def is_user_class(self) -> bool:
+        """True for the ``USER_CLASS_*`` data that hold protection levels."""
+        return self.kind == "md" and USER_CLASS_FIRST <= self.number <= USER_CLASS_LAST
+
+    def coerce(self, value: Any) -> Any:
+        """Return ``value`` converted to the datum's type and checked against its limits."""
+        converted = _convert(self.type, value, self.key)
+        if self.type in ("real", "int"):
+            if self.min is not None and converted < self.min:
+                raise DataValueError(
+                    f"{self.key} {format_value(self, converted)} is below the lower limit "
+                    f"{format_value(self, self.min)}"
+                )
+            if self.max is not None and converted > self.max:
+                raise DataValueError(
+                    f"{self.key} {format_value(self, converted)} is above the upper limit "
+                    f"{format_value(self, self.max)}"
+                )
+        return converted
+
+
+def _convert(kind: str, value: Any, key: str) -> Any:
+    """Convert a value (possibly text from a command line) to the catalogue type."""
+    text = value.strip() if isinstance(value, str) else None
+    try:
+        if kind == "bool":
+            if isinstance(value, bool):
+                return value
+            if isinstance(value, (int, float)) and value in (0, 1):
+                return bool(value)
+            if text is not None and text.upper() in ("TRUE", "1", "FALSE", "0"):
+                return text.upper() in ("TRUE", "1")
+        elif kind == "int":
+            if isinstance(value, bool):
+                return int(value)
+            if isinstance(value, int):
+                return value
+            if isinstance(value, float) and value.is_integer():
+                return int(value)
+            if text is not None:
+                upper = text.upper()
+                if re.fullmatch(r"'?H[0-9A-F]+'?", upper):
+                    return int(upper.strip("'")[1:], 16)
+                if re.fullmatch(r"'?B[01]+'?", upper):
+                    return int(upper.strip("'")[1:], 2)
+                number = float(text)
+                if number.is_integer():
+                    return int(number)
+        elif kind == "real":
+            if isinstance(value, bool):
+                return float(value)
+            if isinstance(value, (int, float)):
+                result = float(value)
+            elif text is not None:
+                result = float(text.upper().replace("EX", "E"))
+            else:
+                result = None
+            if result is not None and result == result and abs(result) != float("inf"):
+                return result
+        elif kind == "string":
+            if isinstance(value, str):
+                return value
+    except (ValueError, OverflowError):
+        pass
+    raise DataValueError(f"{key}: {value!r} is not a valid {kind} value")
+
+
+def format_value(definition: DataDefinition, value: Any) -> str:
+    """Return a value as the MD screens show it."""
+    if isinstance(value, list):
+        return "[" + ", ".join(format_value(definition, v) for v in value) + "]"
+    if isinstance(value, dict):
+        return ", ".join(f"{axis}: {format_value(definition, v)}" for axis, v in value.items())
+    if definition.type == "bool" or isinstance(value, bool):
+        return "TRUE" if value else "FALSE"
+    if definition.type == "real" and isinstance(value, (int, float)):
+        number = float(value)
+        if abs(number) >= 1e7 or 0 < abs(number) < 1e-6:
+            return f"{number:g}"
+        text = f"{number:.6f}".rstrip("0").rstrip(".")
+        return "0" if text == "-0" else text
+    return str(value)
+
+
+class Catalog:
+    """All data definitions, found by key, number or identifier."""
+
+    def __init__(self, definitions: Iterable[DataDefinition]) -> None:
+        self.definitions: tuple[DataDefinition, ...] = tuple(
+            sorted(definitions, key=lambda d: (d.kind != "md", d.number))
+        )
+        self._by_key: dict[str, DataDefinition] = {}
+        self._by_identifier: dict[str, DataDefinition] = {}
+        for definition in self.definitions:
+            if definition.key in self._by_key:
+                raise ValueError(f"{definition.key} defined twice in data/md")
+            self._by_key[definition.key] = definition
+            self._by_identifier[definition.identifier] = definition
+
+    def __iter__(self):
+        return iter(self.definitions)
+
+    def __len__(self) -> int:
+        return len(self.definitions)
+
+    def get(self, key: str) -> DataDefinition | None:
+        """Return the datum for ``"MD32000"``, ``"SD42100"`` or ``"$MA_MAX_AX_VELO"``."""
+        upper = key.strip().upper()
+        return self._by_key.get(upper) or self._by_identifier.get(upper)
+
+    def get_md(self, number: int) -> DataDefinition:
+        """Return machine datum ``number`` (KeyError when it is not in the catalogue)."""
+        return self._by_key[f"MD{number}"]
+
+    def find(self, text: str) -> list[DataDefinition]:
+        """Search by number or by part of the identifier or title (case-insensitive)."""
+        needle = text.strip().upper()
+        return [
+            d for d in self.definitions
+            if needle in d.key or needle in d.identifier or needle in d.title.upper()
+        ]
+
+
+def _definition(entry: Mapping[str, Any], kind: str, scope: str | None, source: str) -> DataDefinition:
+    number = int(entry["number"])
+    if scope is None:  # setting data: 41xxx general, 42xxx channel, 43xxx axis
+        scope = entry.get("scope") or {41: "general", 42: "channel", 43: "axis"}[number // 1000]
+    protect = entry.get("protect", [2, 7] if kind == "md" else [7, 7])
+    definition = DataDefinition(
+        number=number,
+        name=str(entry["name"]),
+        kind=kind,
+        scope=scope,
+        type=str(entry["type"]),
+        unit=str(entry.get("unit", "")),
+        default=entry["default"],
+        min=entry.get("min"),
+        max=entry.get("max"),
+        array=int(entry.get("array", 0)),
+        activation=str(entry["activation"]),
+        write_level=int(protect[0]),
+        read_level=int(protect[1]),
+        title=str(entry.get("title", "")),
+    )
+    if definition.type not in TYPES or definition.activation not in ACTIVATIONS:
+        raise ValueError(f"{source}: {definition.key} has a bad type or activation")
+    if (kind, scope) not in PREFIX:
+        raise ValueError(f"{source}: {definition.key} has a bad scope {scope!r}")
+    return definition
+
+
+@functools.cache
+def catalog() -> Catalog:
+    """Return the catalogue of ``data/md/*.toml`` (cached)."""
+    definitions = []
+    for path in sorted(data_path("md").glob("*.toml")):
+        table = load_toml("md", path.name)
+        kind = table["kind"]
+        for entry in table["data"]:
+            definitions.append(_definition(entry, kind, table.get("scope"), path.name))
+    return Catalog(definitions)
+
+
+@dataclass(frozen=True, slots=True)
+class DataRef:
+    """A datum with its axis and array index as a name addresses it.
+
+    ``axis`` is None for non-axis data (or "every axis" when reading axis data);
+    ``index`` is None for scalars (or "the whole array").
+    """
+
+    definition: DataDefinition
+    axis: str | None = None
+    index: int | None = None
+
+    @property
+    def text(self) -> str:
+        """Canonical name by number: ``MD32000[X]``, ``MD32200[1,X]``, ``MD20150[5]``."""
+        return self.definition.key + self._brackets()
+
+    @property
+    def identifier_text(self) -> str:
+        """Canonical name by identifier: ``$MA_MAX_AX_VELO[X]``."""
+        return self.definition.identifier + self._brackets()
+
+    def _brackets(self) -> str:
+        parts = [str(self.index)] if self.index is not None else []
+        if self.axis is not None:
+            parts.append(self.axis)
+        return f"[{','.join(parts)}]" if parts else ""
+
+
+_NAME = re.compile(r"^\s*(?P<base>\$?[A-Za-z0-9_]+)\s*(?:\[(?P<args>[^\]]*)\])?\s*$")
+
+
+def parse_ref(text: str, axes: Iterable[str], cat: Catalog | None = None) -> DataRef:
+    """Resolve a name such as ``MD32000[X]``, ``$MA_MAX_AX_VELO[X]``, ``SD42100``,
+    ``$SC_DRY_RUN_FEED``, ``MD32200[1,X]`` or ``$MC_GCODE_RESET_VALUES[5]``.
+
+    ``axes`` are the machine's axis names; ``S1``, ``S2`` … also address the
+    first, second … spindle when no axis has that name. Raises UnknownDataError.
+    """
+    cat = cat or catalog()
+    axis_names = list(axes)
+    match = _NAME.match(text)
+    if not match:
+        raise UnknownDataError(f"{text!r} is not a machine or setting data name")
+    definition = cat.get(match["base"])
+    if definition is None and match["base"].isdigit():
+        definition = cat.get("MD" + match["base"])
+    if definition is None:
+        raise UnknownDataError(f"{match['base']} is not in the machine/setting data catalogue")
+    args = [a.strip() for a in match["args"].split(",")] if match["args"] is not None else []
+    axis: str | None = None
+    index: int | None = None
+    if definition.per_axis and args and not args[-1].lstrip("-").isdigit():
+        axis = _axis_name(args.pop(), axis_names, definition)
+    if args:
+        if len(args) > 1 or not args[0].lstrip("-").isdigit():
+            raise UnknownDataError(f"{text}: bad index {match['args']!r}")
+        index = int(args[0])
+        if not definition.array:
+            raise UnknownDataError(f"{definition.key} is not an array")
+        if not 0 <= index < definition.array:
+            raise UnknownDataError(
+                f"{definition.key}: index {index} outside 0..{definition.array - 1}"
+            )
+    return DataRef(definition, axis, index)
+
+
+def _axis_name(name: str, axes: list[str], definition: DataDefinition) -> str:
+    upper = name.upper()
+    for axis in axes:
+        if axis.upper() == upper:
+            return axis
+    raise UnknownDataError(f"{definition.key}: the machine has no axis {name}")
+
+
+@dataclass(frozen=True, slots=True)
+class WriteResult:
+    """What a successful write did."""
+
+    ref: DataRef
+    old: Any
+    new: Any
+    activation: str
+    active_now: bool
+
+    @property
+    def takes_effect(self) -> str:
+        """``"immediately"``, ``"at RESET"``, … (the activation of the datum)."""
+        return ACTIVATION_TEXT[self.activation]
+
+
+class MachineDataStore:
+    """Machine and setting data values of one machine, with stored vs active values.
+
+    Args:
+        machine: the machine as loaded from its file (its ``md`` is the commissioning layer).
+        changes: retained MD values that override the machine file, in the machine
+            file's shape (``{"MD32000": {"X": 5000.0}}``); all of them are active.
+        setting_data: the ``NcData.setting_data`` dict (shared, mutated in place).
+    """
+
+    def __init__(self, machine: MachineConfig, changes: Mapping[str, Any] | None = None,
+                 setting_data: dict[str, Any] | None = None, cat: Catalog | None = None) -> None:
+        self.machine = machine
+        self.catalog = cat or catalog()
+        self.changes: dict[str, Any] = copy.deepcopy(dict(changes or {}))
+        self._active: dict[str, Any] = copy.deepcopy(self.changes)
+        self.setting_data: dict[str, Any] = setting_data if setting_data is not None else {}
+
+    # ----------------------------------------------------------------- names
+    @property
+    def axes(self) -> tuple[str, ...]:
+        """Every axis and spindle name of the machine."""
+        return tuple(a.name for a in self.machine.axes)
+
+    def resolve(self, text: str) -> DataRef:
+        """Resolve a name for this machine (see :func:`parse_ref`); spindles as S1, S2 …"""
+        try:
+            return parse_ref(text, self.axes, self.catalog)
+        except UnknownDataError:
+            spindle = re.fullmatch(r"(.*\[(?:-?\d+\s*,\s*)?)S(\d+)\]\s*", text, re.IGNORECASE)
+            spindles = self.machine.spindles
+            if spindle and 1 <= int(spindle[2]) <= len(spindles):
+                return parse_ref(f"{spindle[1]}{spindles[int(spindle[2]) - 1]}]", self.axes,
+                                 self.catalog)
+            raise
+
+    # ---------------------------------------------------------------- values
+    def _full(self, layer: Mapping[str, Any], d: DataDefinition, axis: str | None) -> Any:
+        """The whole value (list for arrays) of a datum for one axis from a layer stack."""
+        if d.kind == "sd":
+            sources: tuple[Mapping[str, Any], ...] = (self.setting_data,)
+        else:
+            sources = (layer, self.machine.md)
+        for source in sources:
+            if d.key in source:
+                value = source[d.key]
+                if d.per_axis and isinstance(value, dict):
+                    if axis in value:
+                        return value[axis]
+                    continue
+                return value
+        return d.default
+
+    @staticmethod
+    def _element(value: Any, index: int | None) -> Any:
+        if index is None or not isinstance(value, list):
+            return value
+        return value[index] if index < len(value) else value[-1]
+
+    def _read(self, layer: Mapping[str, Any], ref: DataRef) -> Any:
+        d = ref.definition
+        if d.per_axis and ref.axis is None:
+            return {axis: self._element(self._full(layer, d, axis), ref.index) for axis in self.axes}
+        return self._element(self._full(layer, d, ref.axis), ref.index)
+
+    def value(self, ref: DataRef | str) -> Any:
+        """The stored value (what the MD screen shows, maybe not active yet).
+
+        For axis data without an axis: a dict axis -> value.
+        """
+        return self._read(self.changes, self._ref(ref))
+
+    def active_value(self, ref: DataRef | str) -> Any:
+        """The value in effect in the kernel."""
+        return self._read(self._active, self._ref(ref))
+
+    def is_pending(self, ref: DataRef | str) -> bool:
+        """True when a stored value waits for its activation."""
+        ref = self._ref(ref)
+        return self.value(ref) != self.active_value(ref)
+
+    def pending(self) -> list[str]:
+        """Keys of the machine data whose stored value is not active yet."""
+        return sorted(k for k in self.changes if self.changes.get(k) != self._active.get(k))
+
+    def _ref(self, ref: DataRef | str) -> DataRef:
+        return self.resolve(ref) if isinstance(ref, str) else ref
+
+    def user_class(self, number: int) -> int | None:
+        """Active value of a USER_CLASS display datum (for :mod:`nck.access`)."""
+        definition = self.catalog.get(f"MD{number}")
+        if definition is None:
+            return None
+        return int(self._read(self._active, DataRef(definition)))
+
+    # ---------------------------------------------------------------- writes
+    def required_write_level(self, ref: DataRef | str) -> int:
+        """The protection level a write of this datum needs."""
+        d = self._ref(ref).definition
+        if d.kind == "sd":
+            return min(d.write_level, required_level(Action.WRITE_SETTING_DATA, self.user_class))
+        return d.write_level
+
+    def check_read(self, ref: DataRef | str, level: int) -> None:
+        """Raise AccessDenied when ``level`` may not read the datum."""
+        ref = self._ref(ref)
+        if level > ref.definition.read_level:
+            raise AccessDenied(f"reading {ref.text}", ref.definition.read_level, level)
+
+    def check_write(self, ref: DataRef | str, value: Any, level: int) -> Any:
+        """Validate a write without doing it; return the converted value.
+
+        Raises AccessDenied (level) or DataValueError / UnknownDataError.
+        """
+        ref = self._ref(ref)
+        d = ref.definition
+        needed = self.required_write_level(ref)
+        if level > needed:
+            raise AccessDenied(f"writing {ref.text} ({d.identifier})", needed, level)
+        if d.per_axis and ref.axis is None:
+            raise UnknownDataError(f"{d.key} is axis data: name the axis, e.g. {d.key}[{self.axes[0]}]")
+        if d.array and ref.index is None:
+            raise UnknownDataError(f"{d.key} is an array: name the element, e.g. {d.key}[0]")
+        new = d.coerce(value)
+        if d.is_user_class and new < level:
+            raise AccessDenied(
+                f"setting {ref.text} to level {new} (a level with more rights than your own)",
+                new, level,
+            )
+        return new
+
+    def write(self, ref: DataRef | str, value: Any, *, level: int) -> WriteResult:
+        """Write a datum after the level and limit checks; nothing changes when they fail."""
+        ref = self._ref(ref)
+        new = self.check_write(ref, value, level)
+        d = ref.definition
+        old = self.value(ref)
+        if d.kind == "sd":
+            self._assign(self.setting_data, ref, new)
+            return WriteResult(ref, old, new, d.activation, True)
+        self._assign(self.changes, ref, new)
+        active_now = d.activation == "so"
+        if active_now:
+            self._assign(self._active, ref, new)
+        return WriteResult(ref, old, new, d.activation, active_now)
+
+    def _assign(self, layer: dict[str, Any], ref: DataRef, new: Any) -> None:
+        """Store ``new`` for ``ref`` in ``layer`` (MD) or in the setting data (SD)."""
+        d = ref.definition
+        target = layer if d.kind == "md" else self.setting_data
+        if d.array:
+            current = self._full(layer, d, ref.axis)
+            elements = list(current) if isinstance(current, list) else [current] * d.array
+            elements += [elements[-1]] * (d.array - len(elements))
+            elements[ref.index] = new
+            new = elements
+        if d.per_axis:
+            slot = target.get(d.key)
+            slot = dict(slot) if isinstance(slot, dict) else {}
+            slot[ref.axis] = new
+            target[d.key] = slot
+        else:
+            target[d.key] = new
+
+    # ------------------------------------------------------------ activation
+    def activate(self, event: str) -> list[str]:
+        """Bring stored values into effect for ``event`` (``reset``, ``new_config``,
+        ``power_on``); return the keys that became active."""
+        classes = EVENT_ACTIVATES[event]
+        changed = []
+        for key, value in self.changes.items():
+            definition = self.catalog.get(key)
+            if definition is None or definition.activation in classes:
+                if self._active.get(key) != value:
+                    self._active[key] = copy.deepcopy(value)
+                    changed.append(key)
+        return sorted(changed)
+
+    def active_machine(self) -> MachineConfig:
+        """The machine with every active MD value merged into ``md`` (for building a kernel)."""
+        merged = copy.deepcopy(dict(self.machine.md))
+        for key, value in self._active.items():
+            if isinstance(value, dict) and isinstance(merged.get(key), dict):
+                merged[key] = {**merged[key], **value}
+            else:
+                merged[key] = copy.deepcopy(value)
+        return dataclasses.replace(self.machine, md=merged)
+
+    def retained_changes(self) -> dict[str, Any]:
+        """The stored MD values to persist (same shape as a machine file's ``[md]``)."""
+        return copy.deepcopy(self.changes)
+
+
+def fill_setting_defaults(setting_data: dict[str, Any], machine: MachineConfig,
+                          cat: Catalog | None = None) -> None:
+    """Put the catalogue default of every setting datum not yet present into ``setting_data``.
+
+    Axis setting data get a dict axis -> value; values already there are kept.
+    """
+    for definition in cat or catalog():
+        if definition.kind != "sd":
+            continue
+        if definition.per_axis:
+            slot = setting_data.get(definition.key)
+            slot = dict(slot) if isinstance(slot, dict) else {}
+            for axis in machine.axes:
+                slot.setdefault(axis.name, copy.deepcopy(definition.default))
+            setting_data[definition.key] = slot
+        else:
+            setting_data.setdefault(definition.key, copy.deepcopy(definition.default))
+
+
+def unknown_machine_keys(machine: MachineConfig, cat: Catalog | None = None) -> list[str]:
+    """Keys of a machine file's ``[md]`` table that the catalogue does not know."""
+    cat = cat or catalog()
+    return sorted(key for key in machine.md if cat.get(key) is None)
+
+
+__all__ = [
+    "ACTIVATION_TEXT", "Catalog", "DataDefinition", "DataError", "DataRef", "DataValueError",
+    "LEVEL_FEWEST_RIGHTS", "MachineDataStore", "UnknownDataError", "WriteResult", "catalog",
+    "fill_setting_defaults", "format_value", "parse_ref", "unknown_machine_keys",
+]
