@@ -1,0 +1,843 @@
+"""The Program area: the NC program editor with live checks and the toolpath simulation.
+
+The editor shows one program of the NC file system (opened from the Program
+manager, or the last one again with the PROGRAM key Alt+P):
+
+* NC colours, line numbers, the cursor line highlighted;
+* a check of the whole text runs shortly after each change, in a worker
+  thread, and streams its alarms: each faulty line gets a gutter mark and an
+  underline, the alarm number and text of the cursor line stand in the
+  message line under the editor, and ``Next error`` (Shift+F3) jumps there;
+* softkeys for Edit (mark, copy, cut, paste, delete, undo, redo), Search /
+  Replace, Renumber (step 10), Save, Simulation, Execute and Close;
+* unsaved text goes into a journal every few seconds (``hmi.journal``); after a
+  crash the editor offers to restore it;
+* the program being executed, and files that are not UTF-8 text, open
+  read-only with a message.
+
+Files are read and written only through the NC file system (``nck.storage``);
+see :mod:`screens.program_files` for the small adapter.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, ClassVar
+
+from textual import work
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical
+from textual.timer import Timer
+from textual.widgets import Input, Static, TextArea
+from textual.widgets.text_area import Selection
+from textual.worker import get_current_worker
+
+from nck import commands as cmd
+from nck.commands import Rejected
+from nck.status import NckStatus
+
+from hmi.area import AreaBase
+from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
+from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.widgets.nc_editor import ErrorMark, NcEditor, find_text, renumber_blocks
+from hmi.widgets.toolpath import ToolpathView, path_from_motions
+from screens.program_files import ProgramFiles, decode_program
+
+CHECK_DEBOUNCE_S = 0.4
+"""Quiet time after the last keystroke before the check starts."""
+
+STREAM_BATCH = 50
+"""Check results are handed to the screen in batches of this many alarms."""
+
+
+def _is_executing(status: NckStatus | None, program: str | None) -> bool:
+    """True when ``program`` is the selected program and the channel is not in reset."""
+    if status is None or program is None:
+        return False
+    channel = status.channel
+    selected = channel.selected_program
+    if not selected:
+        return False
+    same = Path(selected).name.upper() == Path(program).name.upper()
+    return same and (channel.channel_state != "reset" or channel.program_state != "aborted")
+
+
+class ProgramScreen(AreaBase):
+    """The program editor (area PROGRAM)."""
+
+    AREA_ID: ClassVar[str] = "program"
+    AREA_TITLE: ClassVar[str] = "PROGRAM"
+    CSS_PATH = "program.tcss"
+
+    def __init__(self, name: str | None = None, id: str | None = None,  # noqa: A002
+                 classes: str | None = None) -> None:
+        super().__init__(name=name, id=id or "area-program", classes=classes)
+        self.program: str | None = None
+        """NC name of the open program (``/MPF/PART1.MPF``), None when nothing is open."""
+        self.saved_text = ""
+        self.read_only_reason = ""
+        self.binary = False
+        self.simulating = False
+        self.search_open = False
+        self._dirty = False
+        self._generation = 0
+        self._marks_generation = -1
+        self._check_running = False
+        self._check_timer: Timer | None = None
+        self._journaled_hash = ""
+        self._mark_anchor: tuple[int, int] | None = None
+        self._restore_offered = False
+        self._leave_asked = False
+
+    # -- layout ------------------------------------------------------------------------------
+    def compose_content(self) -> ComposeResult:
+        """Title line, editor (or simulation), search bar, message line."""
+        with Vertical(id="prog-body"):
+            yield Static("", id="prog-title", markup=False)
+            yield NcEditor("", id="prog-editor", read_only=True)
+            yield ToolpathView(id="prog-toolpath")
+            with Horizontal(id="prog-search"):
+                yield Input(placeholder="search", id="prog-find")
+                yield Input(placeholder="replace with", id="prog-replace")
+            yield Static("", id="prog-message", markup=False)
+
+    @property
+    def editor(self) -> NcEditor:
+        """The editor widget."""
+        return self.query_one("#prog-editor", NcEditor)
+
+    @property
+    def toolpath(self) -> ToolpathView:
+        """The simulation widget."""
+        return self.query_one("#prog-toolpath", ToolpathView)
+
+    @property
+    def files(self) -> ProgramFiles:
+        """The NC file system as the editor uses it."""
+        return ProgramFiles.of_app(self.app)
+
+    @property
+    def journal(self) -> EditorJournal:
+        """The editor journal in the NC data directory."""
+        return EditorJournal(self.files.journal_dir)
+
+    def on_mount(self) -> None:
+        """Start the autosave timer; offer a journal restore; show the empty state."""
+        super().on_mount()
+        self.set_interval(AUTOSAVE_PERIOD_S, self.autosave)
+        self._show_view()
+        self._update_title()
+        if not self._open_requested() and self.program is None:
+            self.call_after_refresh(self.offer_restore)
+
+    def on_screen_resume(self) -> None:
+        """Back in the area: open what the Program manager asked for, else the last program."""
+        super().on_screen_resume()
+        if self.is_mounted:
+            self._open_requested()
+            self._update_read_only()
+
+    def _open_requested(self) -> bool:
+        requested = self.files.take_open_request()
+        if requested is None and self.program is None and self.files.last_program:
+            requested = self.files.last_program
+        if requested is None or requested == self.program:
+            return False
+        self.open_program(requested)
+        return True
+
+    # -- softkeys ------------------------------------------------------------------------------
+    def softkey_menu(self) -> SoftkeyMenu:
+        """Top level: Edit, Search, Renumber, Save, Simulation, Execute, Close."""
+        if self.simulating:
+            return self._simulation_menu()
+        has_program = lambda s: s.program is not None  # noqa: E731
+        writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
+        return SoftkeyMenu.of(
+            [
+                Softkey("program.edit", "Edit", "edit_menu", enabled=has_program),
+                Softkey("program.search", "Search", "search", enabled=has_program,
+                        active=lambda s: s.search_open),
+                Softkey("program.renumber", "Renumber", "renumber", enabled=writable),
+                Softkey("program.save", "Save", "save", enabled=writable),
+                Softkey("program.simulate", "Simula-\ntion", "simulate", enabled=has_program),
+                Softkey("program.execute", "Execute", "execute", enabled=has_program),
+                Softkey("program.manager", "Program\nmanager", "app.switch_area('program_manager')"),
+                Softkey("program.close", "Close", "close", enabled=has_program),
+            ],
+            [
+                Softkey("program.start", "Start of\nprogram", "cursor_start", enabled=has_program),
+                Softkey("program.end", "End of\nprogram", "cursor_end", enabled=has_program),
+                Softkey("program.next_error", "Next\nerror", "next_error", enabled=has_program),
+                Softkey("program.undo", "Undo", "undo", enabled=writable),
+                Softkey("program.redo", "Redo", "redo", enabled=writable),
+                None,
+                Softkey("program.check", "Check\nnow", "check_now", enabled=has_program),
+                Softkey("program.restore", "Restore\nunsaved", "offer_restore_any"),
+            ],
+        )
+
+    def _edit_menu(self) -> SoftkeyMenu:
+        writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
+        return SoftkeyMenu.of(
+            [
+                Softkey("program.mark", "Mark", "mark", active=lambda s: s._mark_anchor is not None),
+                Softkey("program.copy", "Copy", "copy"),
+                Softkey("program.cut", "Cut", "cut", enabled=writable),
+                Softkey("program.paste", "Paste", "paste", enabled=writable),
+                Softkey("program.delete", "Delete", "delete_selection", enabled=writable),
+                Softkey("program.undo_e", "Undo", "undo", enabled=writable),
+                Softkey("program.redo_e", "Redo", "redo", enabled=writable),
+                Softkey("program.edit_back", "Back", "pop_menu"),
+            ]
+        )
+
+    def _search_menu(self) -> SoftkeyMenu:
+        writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
+        return SoftkeyMenu.of(
+            [
+                Softkey("program.find_next", "Find\nnext", "find_next"),
+                Softkey("program.replace", "Replace", "replace_one", enabled=writable),
+                Softkey("program.replace_all", "Replace\nall", "replace_all", enabled=writable),
+                None, None, None, None,
+                Softkey("program.search_back", "Back", "close_search"),
+            ]
+        )
+
+    def _simulation_menu(self) -> SoftkeyMenu:
+        view = lambda v: (lambda s: s.toolpath.view == v)  # noqa: E731
+        return SoftkeyMenu.of(
+            [
+                Softkey("sim.xy", "Top view\nXY", "sim_view('XY')", active=view("XY")),
+                Softkey("sim.xz", "Side view\nXZ", "sim_view('XZ')", active=view("XZ")),
+                Softkey("sim.yz", "Side view\nYZ", "sim_view('YZ')", active=view("YZ")),
+                Softkey("sim.zoom_in", "Zoom +", "sim_zoom(1)"),
+                Softkey("sim.zoom_out", "Zoom -", "sim_zoom(-1)"),
+                Softkey("sim.fit", "Fit", "sim_fit"),
+                Softkey("sim.rerun", "Recal-\nculate", "simulate_run"),
+                Softkey("sim.back", "Editor", "simulate"),
+            ],
+            [
+                Softkey("sim.pan_up", "Pan ↑", "sim_pan(0, 1)"),
+                Softkey("sim.pan_down", "Pan ↓", "sim_pan(0, -1)"),
+                Softkey("sim.pan_left", "Pan ←", "sim_pan(-1, 0)"),
+                Softkey("sim.pan_right", "Pan →", "sim_pan(1, 0)"),
+            ],
+        )
+
+    def action_edit_menu(self) -> None:
+        """Edit softkey: show the edit sub-level."""
+        self.push_softkeys(self._edit_menu())
+
+    def action_pop_menu(self) -> None:
+        """Back one softkey level."""
+        self.pop_softkeys()
+
+    def menu_recall(self) -> bool:
+        """F10: leave the search bar / simulation / sub-level."""
+        if self.search_open:
+            self.action_close_search()
+            return True
+        if self.pop_softkeys():
+            return True
+        if self.simulating:
+            self.action_simulate()
+            return True
+        return False
+
+    # -- opening and closing -----------------------------------------------------------------
+    def open_program(self, program: str, *, text: str | None = None) -> bool:
+        """Show ``program`` in the editor (read from the NC file system unless ``text`` is given).
+
+        Returns False (with a message) when it cannot be read.
+        """
+        if self.program is not None and self.program != program and self.is_modified():
+            self.journal_now()
+        try:
+            raw = self.files.read_bytes(program) if text is None else text.encode("utf-8")
+        except Exception as exc:  # a file problem is a notification, never a traceback
+            self.show_hint(f"{program}: cannot be read ({exc})")
+            return False
+        decoded, binary = decode_program(raw)
+        self.program = self.files.display_name(program)
+        self.binary = binary
+        self.saved_text = decoded
+        self._dirty = False
+        self._mark_anchor = None
+        self._journaled_hash = ""
+        self.files.remember_last(self.program)
+        editor = self.editor
+        editor.load_text(decoded)
+        editor.set_error_marks([])
+        self._update_read_only()
+        if binary:
+            self.show_hint(f"{self.program} is not a UTF-8 text file: opened read-only")
+        self._update_title()
+        self.refresh_softkeys()
+        editor.focus()
+        if not binary:
+            self.check_now()
+            entry = self.journal.entry(self.program)
+            if entry is not None and entry.text != decoded:
+                self._ask_restore(entry)
+        return True
+
+    def is_modified(self) -> bool:
+        """True when the editor text differs from the saved file."""
+        return self.program is not None and self._dirty and self.editor.text != self.saved_text
+
+    def close_program(self) -> None:
+        """Close the editor (no question asked: callers ask first)."""
+        if self.program is not None:
+            self.journal.discard(self.program)
+        self.program = None
+        self.saved_text = ""
+        self._dirty = False
+        self.binary = False
+        self.simulating = False
+        self.editor.load_text("")
+        self.editor.set_error_marks([])
+        self._update_read_only()
+        self._show_view()
+        self._update_title()
+        self.clear_softkey_levels()
+
+    def action_close(self) -> None:
+        """Close softkey: ask about unsaved changes, then back to the Program manager."""
+        if not self.is_modified():
+            self.close_program()
+            self.perform("app.switch_area('program_manager')")
+            return
+        self._ask_unsaved(after="manager")
+
+    def _ask_unsaved(self, after: str) -> None:
+        from screens.dialogs import ChoiceDialog
+
+        program = self.program
+
+        def decided(choice: str | None) -> None:
+            if choice is None or choice.startswith("Back") or program != self.program:
+                if self.app.current_mode != self.AREA_ID:
+                    self.perform("app.switch_area('program')")
+                return
+            if choice.startswith("Save") and not self.action_save():
+                return
+            if choice.startswith("Keep"):
+                self.journal_now()
+                return
+            self.close_program()
+            if after == "manager":
+                self.perform("app.switch_area('program_manager')")
+
+        self.app.push_screen(
+            ChoiceDialog(
+                f"{program} has unsaved changes",
+                ["Save changes", "Discard changes", "Keep unsaved for now", "Back to the editor"],
+            ),
+            decided,
+        )
+
+    def on_screen_suspend(self) -> None:
+        """Leaving the area: keep unsaved text in the journal and ask about it."""
+        if self.is_modified():
+            self.journal_now()
+            self.app.call_later(self._ask_after_leave)
+
+    def _ask_after_leave(self) -> None:
+        if self.app.current_mode == self.AREA_ID or not self.is_modified():
+            return
+        self._ask_unsaved(after="stay")
+
+    # -- journal -------------------------------------------------------------------------------
+    def autosave(self) -> None:
+        """Timer: write unsaved text into the journal if it changed since the last time."""
+        if self.program is None or self.binary or not self._dirty:
+            return
+        text = self.editor.text
+        digest = text_hash(text)
+        if text == self.saved_text:
+            if self._journaled_hash:
+                self.journal.discard(self.program)
+                self._journaled_hash = ""
+            return
+        if digest != self._journaled_hash:
+            try:
+                self.journal.write(self.program, text, text_hash(self.saved_text))
+                self._journaled_hash = digest
+            except OSError as exc:
+                self.show_hint(f"Journal could not be written: {exc}")
+
+    def journal_now(self) -> None:
+        """Write the journal at once (before leaving, closing, crashing risks)."""
+        self._journaled_hash = ""
+        self.autosave()
+
+    def offer_restore(self) -> None:
+        """If the journal holds unsaved text from an earlier session, offer to restore it."""
+        if self._restore_offered:
+            return
+        self._restore_offered = True
+        self.action_offer_restore_any()
+
+    def action_offer_restore_any(self) -> None:
+        """Restore softkey: list the journal entries and restore the chosen one."""
+        from screens.dialogs import ChoiceDialog
+
+        try:
+            entries = self.journal.entries()
+        except OSError:
+            entries = []
+        if not entries:
+            if self.program is not None:
+                self.show_hint("No unsaved programs in the journal")
+            return
+        by_label = {f"Restore {e.program}": e for e in entries}
+
+        def chosen(choice: str | None) -> None:
+            if choice in by_label:
+                entry = by_label[choice]
+                self._restore(entry)
+            elif choice == "Discard all unsaved texts":
+                for entry in entries:
+                    self.journal.discard(entry.program)
+                self.show_hint("Unsaved texts discarded")
+
+        self.app.push_screen(
+            ChoiceDialog(
+                "Unsaved program text from an earlier session was found",
+                [*by_label, "Discard all unsaved texts"],
+            ),
+            chosen,
+        )
+
+    def _ask_restore(self, entry: Any) -> None:
+        from screens.dialogs import ChoiceDialog
+
+        def chosen(choice: str | None) -> None:
+            if choice == "Restore unsaved text":
+                self._restore(entry)
+            elif choice == "Discard unsaved text":
+                self.journal.discard(entry.program)
+
+        self.app.push_screen(
+            ChoiceDialog(f"{entry.program}: unsaved text from an earlier session",
+                         ["Restore unsaved text", "Discard unsaved text", "Decide later"]),
+            chosen,
+        )
+
+    def _restore(self, entry: Any) -> None:
+        if self.program != entry.program:
+            if not self.open_program(entry.program):
+                # the file is gone: restore into a fresh editor under the old name
+                self.open_program(entry.program, text="")
+            if self.program is None:
+                return
+        editor = self.editor
+        editor.replace(entry.text, (0, 0), editor.document.end)
+        self._dirty = True
+        self._update_title()
+        self.show_hint(f"{entry.program}: unsaved text restored (not saved yet)")
+        self.schedule_check()
+
+    # -- read-only rules -----------------------------------------------------------------------
+    def _update_read_only(self) -> None:
+        reason = ""
+        if self.program is None:
+            reason = "no program"
+        elif self.binary:
+            reason = "not a text file"
+        elif _is_executing(self.status, self.program):
+            reason = "program is being executed"
+        changed = reason != self.read_only_reason
+        self.read_only_reason = reason
+        if self.is_mounted:
+            self.editor.read_only = bool(reason)
+            if changed and reason == "program is being executed":
+                self.show_hint(f"{self.program} is being executed: editing is not possible")
+        if changed:
+            self._update_title()
+            self.refresh_softkeys()
+
+    def update_status(self, status: NckStatus) -> None:
+        """A new snapshot: read-only while executing; current block in the simulation."""
+        self._update_read_only()
+        if self.simulating:
+            block = status.channel.current_block
+            line = None
+            if block is not None and self.program and Path(block.file).name.upper() == Path(self.program).name.upper():
+                line = block.line
+            self.toolpath.current_line = line
+
+    # -- editing events ----------------------------------------------------------------------
+    def on_text_area_changed(self, event: TextArea.Changed) -> None:
+        """Text changed: mark modified, schedule a check."""
+        if self.program is None:
+            return
+        self._dirty = True
+        self._update_title()
+        self.schedule_check()
+
+    def on_text_area_selection_changed(self, event: TextArea.SelectionChanged) -> None:
+        """Cursor moved: extend a marked block, show the alarm of the cursor line."""
+        if self._mark_anchor is not None:
+            selection = event.selection
+            if selection.start == selection.end and selection.end != self._mark_anchor:
+                self.editor.selection = Selection(self._mark_anchor, selection.end)
+        self._show_cursor_message()
+
+    def _show_cursor_message(self) -> None:
+        if not self.is_mounted:
+            return
+        mark = self.editor.error_at_cursor()
+        message = self.query_one("#prog-message", Static)
+        count = len(self.editor.error_marks)
+        if mark is not None:
+            message.update(f"⚠ {mark.label}")
+            message.set_class(True, "-error")
+        else:
+            state = "checking …" if self._check_running else (
+                f"{count} faulty line(s) — Shift+F3: next error" if count else "no errors found")
+            message.update(state if self.program else "")
+            message.set_class(False, "-error")
+
+    def _update_title(self) -> None:
+        if not self.is_mounted:
+            return
+        title = self.query_one("#prog-title", Static)
+        if self.program is None:
+            title.update("No program open — Program manager (Alt+N): select a program and press Open")
+            return
+        flags = []
+        if self.is_modified() or self._dirty and self.editor.text != self.saved_text:
+            flags.append("modified")
+        if self.read_only_reason:
+            flags.append(f"read-only: {self.read_only_reason}")
+        lines = self.editor.document.line_count
+        row, column = self.editor.cursor_location
+        suffix = f"  [{', '.join(flags)}]" if flags else ""
+        title.update(f" {self.program}{suffix}   line {row + 1}/{lines}  col {column + 1}")
+
+    # -- checks ---------------------------------------------------------------------------------
+    def schedule_check(self) -> None:
+        """Run the check after a short quiet time (debounce)."""
+        if self._check_timer is not None:
+            self._check_timer.stop()
+        self._check_timer = self.set_timer(CHECK_DEBOUNCE_S, self.check_now)
+
+    def action_check_now(self) -> None:
+        """Check now softkey."""
+        self.check_now()
+
+    def check_now(self) -> None:
+        """Start a check of the current text in a worker thread (older checks are abandoned)."""
+        if self._check_timer is not None:
+            self._check_timer.stop()
+            self._check_timer = None
+        if self.program is None or self.binary:
+            return
+        self._generation += 1
+        self._check_running = True
+        self._show_cursor_message()
+        self._check_worker(self._generation, self.program, self.editor.text, self.files.program_source())
+
+    @work(thread=True, exclusive=True, group="program-check", exit_on_error=False)
+    def _check_worker(self, generation: int, program: str, text: str, programs: Any) -> None:
+        from nck.check import iter_check
+
+        worker = get_current_worker()
+        stale = lambda: worker.is_cancelled or generation != self._generation  # noqa: E731
+        batch: list[ErrorMark] = []
+        name = Path(program).name
+        try:
+            for alarm in iter_check(name, text, programs=programs, should_stop=stale):
+                if stale():
+                    return
+                line = (alarm.line or 1) - 1
+                batch.append(ErrorMark(line, alarm.number, alarm.text))
+                if len(batch) >= STREAM_BATCH:
+                    self.app.call_from_thread(self._apply_marks, generation, batch, False)
+                    batch = []
+        except Exception as exc:  # a bug in the check must not take the editor down
+            self.app.call_from_thread(self.show_hint, f"Check failed: {exc!r}")
+        if not stale():
+            self.app.call_from_thread(self._apply_marks, generation, batch, True)
+
+    def _apply_marks(self, generation: int, marks: list[ErrorMark], done: bool) -> None:
+        if generation != self._generation or not self.is_mounted:
+            return
+        first = self._marks_generation != generation
+        self._marks_generation = generation
+        self.editor.set_error_marks(marks, replace=first)
+        if done:
+            self._check_running = False
+        self._show_cursor_message()
+
+    def action_next_error(self) -> None:
+        """Next error softkey: put the cursor on the next faulty line."""
+        line = self.editor.next_error_line()
+        if line is None:
+            self.show_hint("No errors found")
+            return
+        self.editor.move_cursor((line, 0), center=True)
+        self.editor.focus()
+        self._show_cursor_message()
+
+    # -- edit softkeys --------------------------------------------------------------------------
+    def action_cursor_start(self) -> None:
+        """Cursor to the start of the program."""
+        self.editor.move_cursor((0, 0), center=True)
+        self.editor.focus()
+
+    def action_cursor_end(self) -> None:
+        """Cursor to the end of the program."""
+        self.editor.move_cursor(self.editor.document.end, center=True)
+        self.editor.focus()
+
+    def action_mark(self) -> None:
+        """Mark: start (or end) marking a block from the cursor."""
+        if self._mark_anchor is None:
+            self._mark_anchor = self.editor.cursor_location
+            self.show_hint("Marking: move the cursor, then Copy / Cut / Delete")
+        else:
+            self._mark_anchor = None
+            self.editor.selection = Selection.cursor(self.editor.cursor_location)
+            self.show_hint("")
+        self.editor.focus()
+
+    def _selected_text(self) -> str:
+        return self.editor.selected_text
+
+    def action_copy(self) -> None:
+        """Copy the marked text to the clipboard."""
+        text = self._selected_text()
+        if text:
+            self.app.copy_to_clipboard(text)
+            self.show_hint(f"{len(text.splitlines()) or 1} line(s) copied")
+        self._end_mark()
+
+    def action_cut(self) -> None:
+        """Cut the marked text into the clipboard."""
+        text = self._selected_text()
+        if text and not self.editor.read_only:
+            self.app.copy_to_clipboard(text)
+            self.editor.delete(*self.editor.selection)
+        self._end_mark()
+
+    def action_paste(self) -> None:
+        """Paste the clipboard at the cursor (replacing a marked block)."""
+        if self.editor.read_only or not self.app.clipboard:
+            return
+        start, end = self.editor.selection
+        self.editor.replace(self.app.clipboard, start, end)
+        self._end_mark()
+
+    def action_delete_selection(self) -> None:
+        """Delete the marked text."""
+        if not self.editor.read_only and self._selected_text():
+            self.editor.delete(*self.editor.selection)
+        self._end_mark()
+
+    def _end_mark(self) -> None:
+        self._mark_anchor = None
+        self.editor.focus()
+        self.refresh_softkeys()
+
+    def action_undo(self) -> None:
+        """Undo the last edit."""
+        if not self.editor.read_only:
+            self.editor.undo()
+
+    def action_redo(self) -> None:
+        """Redo the last undone edit."""
+        if not self.editor.read_only:
+            self.editor.redo()
+
+    def action_renumber(self) -> None:
+        """Renumber softkey: block numbers N10, N20 … (one undo step)."""
+        if self.editor.read_only:
+            return
+        text = self.editor.text
+        new = renumber_blocks(text, start=10, step=10)
+        if new != text:
+            cursor = self.editor.cursor_location
+            self.editor.replace(new, (0, 0), self.editor.document.end)
+            row = min(cursor[0], self.editor.document.line_count - 1)
+            self.editor.move_cursor((row, 0))
+            self.show_hint("Blocks renumbered (step 10)")
+
+    # -- search --------------------------------------------------------------------------------
+    def action_search(self) -> None:
+        """Search softkey: open the search bar."""
+        self.search_open = True
+        self._show_view()
+        self.push_softkeys(self._search_menu())
+        self.query_one("#prog-find", Input).focus()
+
+    def action_close_search(self) -> None:
+        """Close the search bar."""
+        self.search_open = False
+        self._show_view()
+        self.pop_softkeys()
+        self.editor.focus()
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Enter in the search field finds the next occurrence."""
+        if event.input.id == "prog-find":
+            self.action_find_next()
+        elif event.input.id == "prog-replace":
+            self.action_replace_one()
+
+    def action_find_next(self) -> bool:
+        """Find the search text after the cursor (wrapping round)."""
+        query = self.query_one("#prog-find", Input).value
+        if not query:
+            return False
+        lines = self.editor.document.lines
+        start = self.editor.selection.end if self.editor.selected_text.upper() == query.upper() else None
+        row, column = self.editor.cursor_location
+        after = (start[0], start[1] - 1) if start else (row, column - 1)
+        found = find_text(lines, query, after)
+        if found is None:
+            self.show_hint(f"'{query}' not found")
+            return False
+        row, column = found
+        self.editor.selection = Selection((row, column), (row, column + len(query)))
+        self.editor.scroll_cursor_visible(center=True)
+        self.show_hint("")
+        return True
+
+    def action_replace_one(self) -> None:
+        """Replace the found text, then find the next one."""
+        query = self.query_one("#prog-find", Input).value
+        replacement = self.query_one("#prog-replace", Input).value
+        if self.editor.read_only or not query:
+            return
+        if self.editor.selected_text.upper() != query.upper():
+            if not self.action_find_next():
+                return
+        start, end = sorted(self.editor.selection)
+        self.editor.replace(replacement, start, end)
+        self.action_find_next()
+
+    def action_replace_all(self) -> None:
+        """Replace every occurrence (one undo step)."""
+        query = self.query_one("#prog-find", Input).value
+        replacement = self.query_one("#prog-replace", Input).value
+        if self.editor.read_only or not query:
+            return
+        import re
+
+        text = self.editor.text
+        new, count = re.subn(re.escape(query), lambda _m: replacement, text, flags=re.IGNORECASE)
+        if count:
+            self.editor.replace(new, (0, 0), self.editor.document.end)
+        self.show_hint(f"{count} replaced")
+
+    # -- save, execute -------------------------------------------------------------------------
+    def action_save(self) -> bool:
+        """Save softkey: write the text atomically through the NC file system."""
+        if self.program is None or self.editor.read_only:
+            if self.read_only_reason:
+                self.show_hint(f"Not saved: {self.read_only_reason}")
+            return False
+        text = self.editor.text
+        try:
+            self.files.write_text(self.program, text)
+        except Exception as exc:  # storage refusals are notifications
+            self.show_hint(f"{self.program} not saved: {exc}")
+            return False
+        self.saved_text = text
+        self._dirty = False
+        self.journal.discard(self.program)
+        self._journaled_hash = ""
+        self._update_title()
+        self.show_hint(f"{self.program} saved")
+        return True
+
+    def action_execute(self) -> None:
+        """Execute softkey: save, select the program in AUTO and go to the Machine area."""
+        if self.program is None:
+            return
+        if self.is_modified() and not self.action_save():
+            return
+        if self.status is not None and self.status.channel.mode != "AUTO":
+            result = self.submit(cmd.SelectMode("AUTO"))
+            if isinstance(result, Rejected):
+                self.show_hint(f"Execute: {result.reason}")
+                return
+        result = self.submit(cmd.SelectProgram(self.files.select_name(self.program)))
+        if isinstance(result, Rejected):
+            self.show_hint(f"Execute: {result.reason}")
+            return
+        self.perform("app.switch_area('machine')")
+
+    # -- simulation ----------------------------------------------------------------------------
+    def action_simulate(self) -> None:
+        """Simulation softkey: show the toolpath (again: back to the editor)."""
+        self.simulating = not self.simulating
+        self._menu_stack.clear()
+        self._show_view()
+        self.refresh_softkeys()
+        if self.simulating:
+            self.action_simulate_run()
+            self.toolpath.focus()
+        else:
+            self.editor.focus()
+
+    def action_simulate_run(self) -> None:
+        """Interpret the text headless and draw its toolpath."""
+        if self.program is None:
+            return
+        self.toolpath.set_pieces([], "calculating …")
+        self._simulate_worker(self.program, self.editor.text, self.files.program_source())
+
+    @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
+    def _simulate_worker(self, program: str, text: str, programs: Any) -> None:
+        from nck.check import run_text
+
+        worker = get_current_worker()
+        try:
+            result = run_text(Path(program).name, text, programs=programs,
+                              should_stop=lambda: worker.is_cancelled)
+            pieces = path_from_motions(result.motions)
+        except Exception as exc:  # never crash the screen
+            self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
+            return
+        if result.alarms:
+            alarm = result.alarms[0]
+            note = f"stopped at line {alarm.line}: {alarm.number} {alarm.text}"
+        elif result.truncated:
+            note = f"stopped after {result.blocks} blocks"
+        else:
+            note = f"{result.blocks} blocks, {len(result.motions)} moves"
+        if not worker.is_cancelled:
+            self.app.call_from_thread(self.toolpath.set_pieces, pieces, note)
+
+    def action_sim_view(self, view: str) -> None:
+        """Choose the projection."""
+        self.toolpath.action_view(view)
+        self.refresh_softkeys()
+
+    def action_sim_zoom(self, direction: int) -> None:
+        """Zoom in/out."""
+        self.toolpath.action_zoom(direction)
+
+    def action_sim_pan(self, dh: int, dv: int) -> None:
+        """Pan the view."""
+        self.toolpath.action_pan(dh, dv)
+
+    def action_sim_fit(self) -> None:
+        """Fit the whole path."""
+        self.toolpath.action_fit()
+
+    # -- view switching --------------------------------------------------------------------------
+    def _show_view(self) -> None:
+        if not self.is_mounted:
+            return
+        self.editor.display = not self.simulating
+        self.toolpath.display = self.simulating
+        self.query_one("#prog-search").display = self.search_open and not self.simulating
+
+
+AreaScreen = ProgramScreen
+"""The area screen the app puts into its MODES (convention of ``hmi/app.py``)."""

@@ -1,0 +1,485 @@
+"""The Program manager area: the NC directories, and what an operator does with programs.
+
+Left: the directory tree (``NC`` → Part programs, Subprograms, Workpieces and
+their folders). Right: ``Name | Type | Length | Date`` of the chosen directory;
+the program selected for execution is marked ``▶``.
+
+Horizontal softkeys: Execute (select for AUTO), New, Open, Copy, Paste, Rename,
+Delete (with confirmation), Search. Vertical: Import, Export, the three NC
+directories, Refresh. The rules of the NC file system apply: valid names only,
+no overwriting, and the program being executed can be neither renamed nor
+deleted.
+
+Keys in the windows: ↑/↓ move, Enter opens (a program in the editor, a folder in
+the list), ← / → move between the tree and the list.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import ClassVar
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical
+from textual.screen import ModalScreen
+from textual.widgets import DataTable, Input, Static, Tree
+
+from nck import commands as cmd
+from nck.commands import Rejected
+from nck.status import NckStatus
+
+from hmi.area import AreaBase
+from hmi.softkeys import Softkey, SoftkeyMenu
+from screens.program_files import DIRECTORIES, ProgramEntry, ProgramFileError, ProgramFiles
+
+PROGRAM_SELECTION_LEVEL = 6
+"""Selecting a program for execution needs keyswitch position 1 (level 6) or better."""
+
+
+class PromptDialog(ModalScreen[str | None]):
+    """Ask for one line of text (a name, a path, a search text); Enter confirms, F10/Esc cancels."""
+
+    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
+    DEFAULT_CSS = """
+    PromptDialog { align: center middle; }
+    PromptDialog #prompt-box { width: 80; height: auto; background: $panel; border: tall $primary; padding: 1 2; }
+    PromptDialog #prompt-title { text-style: bold; margin-bottom: 1; }
+    PromptDialog #prompt-keys { color: $secondary; margin-top: 1; }
+    """
+
+    def __init__(self, title: str, value: str = "", hint: str = "") -> None:
+        super().__init__(classes="prompt-dialog")
+        self._title = title
+        self._value = value
+        self._hint = hint
+
+    def compose(self) -> ComposeResult:
+        """Title, input field, key hint."""
+        with Vertical(id="prompt-box"):
+            yield Static(self._title, id="prompt-title", markup=False)
+            yield Input(self._value, id="prompt-input")
+            yield Static(self._hint or "Enter confirm   F10 cancel", id="prompt-keys", markup=False)
+
+    def on_mount(self) -> None:
+        """Focus the field."""
+        self.query_one(Input).focus()
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Enter: return the text."""
+        self.dismiss(event.value)
+
+    def action_cancel(self) -> None:
+        """Close without a value."""
+        self.dismiss(None)
+
+
+def _executing_program(status: NckStatus | None) -> str | None:
+    """The selected program while the channel is executing it (not in reset), else None."""
+    if status is None:
+        return None
+    channel = status.channel
+    if channel.selected_program and (channel.channel_state != "reset" or channel.program_state != "aborted"):
+        return channel.selected_program
+    return None
+
+
+class ProgramList(DataTable):
+    """The file list: Name, Type, Length, Date."""
+
+    BINDINGS = [Binding("left", "app.focus_previous", "Tree", show=False)]
+
+
+class ProgramManagerScreen(AreaBase):
+    """The Program manager (area PROGRAM MANAGER)."""
+
+    AREA_ID: ClassVar[str] = "program_manager"
+    AREA_TITLE: ClassVar[str] = "PROGRAM MANAGER"
+    CSS_PATH = "program_manager.tcss"
+
+    def __init__(self) -> None:
+        super().__init__(id="area-program-manager")
+        self.directory = "/MPF"
+        self.entries: list[ProgramEntry] = []
+        self._clipboard: str | None = None
+        self._search_text = ""
+
+    # -- layout ------------------------------------------------------------------------------
+    def compose_content(self) -> ComposeResult:
+        """Directory tree and file list."""
+        with Horizontal(id="pm-body"):
+            tree: Tree[str] = Tree("NC", id="pm-tree", data="/")
+            tree.show_root = True
+            tree.guide_depth = 2
+            yield tree
+            with Vertical(id="pm-right"):
+                yield Static("", id="pm-path", markup=False)
+                yield ProgramList(id="pm-list", cursor_type="row", zebra_stripes=False)
+                yield Static("", id="pm-info", markup=False)
+
+    @property
+    def files(self) -> ProgramFiles:
+        """The NC file system as the screens use it."""
+        return ProgramFiles.of_app(self.app)
+
+    @property
+    def table(self) -> ProgramList:
+        """The file list."""
+        return self.query_one("#pm-list", ProgramList)
+
+    def on_mount(self) -> None:
+        """Columns, tree, first listing."""
+        super().on_mount()
+        table = self.table
+        table.add_column("Name", key="name", width=34)
+        table.add_column("Type", key="type", width=6)
+        table.add_column("Length", key="size", width=10)
+        table.add_column("Date", key="date", width=18)
+        self.rebuild_tree()
+        self.show_directory("/MPF")
+        table.focus()
+
+    def on_screen_resume(self) -> None:
+        """Back in the area: list again (files may have changed in the editor)."""
+        super().on_screen_resume()
+        if self.is_mounted:
+            self.refresh_listing()
+
+    # -- softkeys ------------------------------------------------------------------------------
+    def softkey_menu(self) -> SoftkeyMenu:
+        """Execute, New, Open, Copy, Paste, Rename, Delete, Search / Import, Export, directories."""
+        on_program = lambda s: s.current_entry() is not None and s.current_entry().kind != "WPD"  # noqa: E731
+        on_entry = lambda s: s.current_entry() is not None  # noqa: E731
+        return SoftkeyMenu.of(
+            [
+                Softkey("pm.execute", "Execute", "execute", level=PROGRAM_SELECTION_LEVEL,
+                        enabled=lambda s: s.current_entry() is not None and s.current_entry().kind == "MPF"),
+                Softkey("pm.new", "New", "new"),
+                Softkey("pm.open", "Open", "open", enabled=on_entry),
+                Softkey("pm.copy", "Copy", "copy", enabled=on_program),
+                Softkey("pm.paste", "Paste", "paste", enabled=lambda s: s._clipboard is not None),
+                Softkey("pm.rename", "Rename", "rename", enabled=on_program),
+                Softkey("pm.delete", "Delete", "delete", enabled=on_entry),
+                Softkey("pm.search", "Search", "search"),
+            ],
+            [
+                Softkey("pm.import", "Import", "import_file"),
+                Softkey("pm.export", "Export", "export_file", enabled=on_program),
+                None,
+                Softkey("pm.dir_mpf", "Part\nprograms", "show_directory('/MPF')",
+                        active=lambda s: s.directory == "/MPF"),
+                Softkey("pm.dir_spf", "Sub-\nprograms", "show_directory('/SPF')",
+                        active=lambda s: s.directory == "/SPF"),
+                Softkey("pm.dir_wks", "Work-\npieces", "show_directory('/WKS')",
+                        active=lambda s: s.directory.startswith("/WKS")),
+                None,
+                Softkey("pm.refresh", "Refresh", "refresh_listing"),
+            ],
+        )
+
+    # -- tree and list ---------------------------------------------------------------------------
+    def rebuild_tree(self) -> None:
+        """NC → the three directories, workpiece folders below Workpieces."""
+        tree = self.query_one("#pm-tree", Tree)
+        tree.clear()
+        root = tree.root
+        root.expand()
+        for directory, title in DIRECTORIES:
+            if directory != "WKS":
+                root.add_leaf(title, data=f"/{directory}")
+                continue
+            node = root.add(title, data=f"/{directory}", expand=True)
+            if directory == "WKS":
+                try:
+                    folders = [e for e in self.files.list("/WKS") if e.kind == "WPD"]
+                except (OSError, ProgramFileError):
+                    folders = []
+                for folder in folders:
+                    node.add_leaf(folder.name, data=folder.path)
+
+    def on_tree_node_selected(self, event: Tree.NodeSelected) -> None:
+        """Enter on a directory: list it and move to the list."""
+        path = event.node.data
+        if path and path != "/":
+            self.show_directory(path)
+            self.table.focus()
+
+    def show_directory(self, directory: str) -> None:
+        """List ``directory`` in the right window."""
+        self.directory = directory
+        self.refresh_listing()
+
+    def action_show_directory(self, directory: str) -> None:
+        """Directory softkeys."""
+        self.show_directory(directory)
+        self.table.focus()
+
+    def action_refresh_listing(self) -> None:
+        """Refresh softkey."""
+        self.rebuild_tree()
+        self.refresh_listing()
+
+    def refresh_listing(self, select: str | None = None) -> None:
+        """Read the directory again and redraw the list (cursor on ``select`` if given)."""
+        if not self.is_mounted:
+            return
+        table = self.table
+        previous = select or (self.current_entry().path if self.current_entry() else None)
+        try:
+            self.entries = self.files.list(self.directory)
+        except (OSError, ProgramFileError) as exc:
+            self.entries = []
+            self.show_hint(f"{self.directory}: {exc}")
+        selected = (self.status.channel.selected_program if self.status else None) or ""
+        selected_name = Path(selected).name.upper()
+        table.clear()
+        for entry in self.entries:
+            marked = entry.kind != "WPD" and entry.name.upper() == selected_name
+            name = Text(("▶ " if marked else "  ") + entry.name + ("/" if entry.kind == "WPD" else ""))
+            if marked:
+                name.stylize("bold #f39200")
+            size = Text("" if entry.kind == "WPD" else f"{entry.size}", justify="right")
+            table.add_row(name, entry.kind, size, entry.modified, key=entry.path)
+        if previous:
+            for index, entry in enumerate(self.entries):
+                if entry.path == previous:
+                    table.move_cursor(row=index)
+                    break
+        title = dict((f"/{d}", t) for d, t in DIRECTORIES).get(self.directory, self.directory)
+        self.query_one("#pm-path", Static).update(f" {title}   {self.directory}   ({len(self.entries)} entries)")
+        self._update_info()
+        self.refresh_softkeys()
+
+    def _update_info(self) -> None:
+        selected = self.status.channel.selected_program if self.status else None
+        text = f" Selected for execution: {selected}" if selected else " No program selected"
+        executing = _executing_program(self.status)
+        if executing:
+            text += "  (being executed)"
+        self.query_one("#pm-info", Static).update(text)
+
+    def current_entry(self) -> ProgramEntry | None:
+        """The entry under the list cursor."""
+        if not self.is_mounted or not self.entries:
+            return None
+        row = self.table.cursor_row
+        return self.entries[row] if 0 <= row < len(self.entries) else None
+
+    def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
+        """Enter on a row: open it."""
+        self.action_open()
+
+    def on_data_table_row_highlighted(self, event: DataTable.RowHighlighted) -> None:
+        """Cursor moved: softkeys depend on the entry."""
+        self.refresh_softkeys()
+
+    def update_status(self, status: NckStatus) -> None:
+        """A new snapshot: the selection mark may have moved."""
+        if not self.is_mounted:
+            return
+        selected = status.channel.selected_program
+        if selected != getattr(self, "_shown_selection", None) or _executing_program(status) != getattr(
+            self, "_shown_executing", None
+        ):
+            self._shown_selection = selected
+            self._shown_executing = _executing_program(status)
+            self.refresh_listing()
+
+    # -- actions ---------------------------------------------------------------------------------
+    def _in_use(self) -> set[str]:
+        executing = _executing_program(self.status)
+        return {executing} if executing else set()
+
+    def action_open(self) -> None:
+        """Open: a folder is listed, a program goes into the editor."""
+        entry = self.current_entry()
+        if entry is None:
+            return
+        if entry.kind == "WPD":
+            self.show_directory(entry.path)
+            return
+        self.files.request_open(entry.path)
+        self.perform("app.switch_area('program')")
+
+    def action_execute(self) -> None:
+        """Execute: select the program for AUTO and go to the Machine area."""
+        entry = self.current_entry()
+        if entry is None or entry.kind != "MPF":
+            self.show_hint("Only a part program (MPF) can be selected")
+            return
+        if self.status is not None and self.status.channel.mode != "AUTO":
+            result = self.submit(cmd.SelectMode("AUTO"))
+            if isinstance(result, Rejected):
+                self.show_hint(f"Execute: {result.reason}")
+                return
+        result = self.submit(cmd.SelectProgram(self.files.select_name(entry.path)))
+        if isinstance(result, Rejected):
+            self.show_hint(f"Execute: {result.reason}")
+            return
+        self.refresh_listing()
+        self.perform("app.switch_area('machine')")
+
+    def action_new(self) -> None:
+        """New: ask for a name and create an empty program (a folder in Workpieces)."""
+        directory = self.directory
+        kind = "workpiece" if directory == "/WKS" else ("subprogram" if directory == "/SPF" else "part program")
+
+        def create(name: str | None) -> None:
+            if not name:
+                return
+            try:
+                path = self.files.create(directory, name)
+            except (ProgramFileError, OSError) as exc:
+                self.show_hint(f"New: {exc}")
+                return
+            self.rebuild_tree()
+            self.refresh_listing(select=path)
+            self.show_hint(f"{path} created")
+            if not path.startswith("/WKS/") or path.count("/") > 2:
+                self.files.request_open(path)
+                self.perform("app.switch_area('program')")
+
+        self.app.push_screen(PromptDialog(f"New {kind} in {directory}: name", ""), create)
+
+    def action_copy(self) -> None:
+        """Copy: remember the program for Paste."""
+        entry = self.current_entry()
+        if entry is not None and entry.kind != "WPD":
+            self._clipboard = entry.path
+            self.show_hint(f"{entry.path} copied — Paste puts a copy into the directory shown")
+            self.refresh_softkeys()
+
+    def action_paste(self) -> None:
+        """Paste: a copy of the copied program into the directory shown."""
+        if self._clipboard is None:
+            return
+        try:
+            path = self.files.copy(self._clipboard, self.directory)
+        except (ProgramFileError, OSError) as exc:
+            self.show_hint(f"Paste: {exc}")
+            return
+        self.refresh_listing(select=path)
+        self.show_hint(f"{path} created as a copy of {self._clipboard}")
+
+    def action_rename(self) -> None:
+        """Rename: ask for the new name (refused for the program being executed)."""
+        entry = self.current_entry()
+        if entry is None or entry.kind == "WPD":
+            return
+        if entry.path in self._in_use() or entry.name.upper() in {Path(p).name.upper() for p in self._in_use()}:
+            self.show_hint(f"{entry.path} is being executed and cannot be renamed")
+            return
+
+        def rename(name: str | None) -> None:
+            if not name:
+                return
+            try:
+                path = self.files.rename(entry.path, name, self._in_use())
+            except (ProgramFileError, OSError) as exc:
+                self.show_hint(f"Rename: {exc}")
+                return
+            self.refresh_listing(select=path)
+            self.show_hint(f"{entry.path} renamed to {path}")
+
+        self.app.push_screen(PromptDialog(f"Rename {entry.path} to:", entry.name), rename)
+
+    def action_delete(self) -> None:
+        """Delete: ask, then delete (refused for the program being executed)."""
+        from screens.dialogs import ChoiceDialog
+
+        entry = self.current_entry()
+        if entry is None:
+            return
+        if entry.name.upper() in {Path(p).name.upper() for p in self._in_use()}:
+            self.show_hint(f"{entry.path} is being executed and cannot be deleted")
+            return
+
+        def confirmed(choice: str | None) -> None:
+            if choice != "Delete":
+                return
+            try:
+                self.files.delete(entry.path, self._in_use())
+            except (ProgramFileError, OSError) as exc:
+                self.show_hint(f"Delete: {exc}")
+                return
+            if entry.kind == "WPD":
+                self.rebuild_tree()
+            self.refresh_listing()
+            self.show_hint(f"{entry.path} deleted")
+
+        what = "the workpiece folder and everything in it" if entry.kind == "WPD" else "the program"
+        self.app.push_screen(ChoiceDialog(f"Delete {what} {entry.path}?", ["Cancel", "Delete"]), confirmed)
+
+    def action_search(self) -> None:
+        """Search: find a program by (part of) its name in all NC directories."""
+
+        def search(text: str | None) -> None:
+            if not text:
+                return
+            self._search_text = text
+            self.find_next(text)
+
+        self.app.push_screen(PromptDialog("Search program name:", self._search_text), search)
+
+    def find_next(self, text: str) -> bool:
+        """Move the cursor to the next program whose name contains ``text`` (all directories)."""
+        needle = text.upper()
+        folders = ["/MPF", "/SPF"] + [e.path for e in self.files.list("/WKS") if e.kind == "WPD"]
+        start = folders.index(self.directory) if self.directory in folders else 0
+        current_row = self.table.cursor_row if self.entries else -1
+        for step in range(len(folders) + 1):
+            folder = folders[(start + step) % len(folders)]
+            entries = self.files.list(folder)
+            for index, entry in enumerate(entries):
+                if step == 0 and index <= current_row:
+                    continue
+                if needle in entry.name.upper() and entry.kind != "WPD":
+                    self.directory = folder
+                    self.refresh_listing(select=entry.path)
+                    self.table.focus()
+                    self.show_hint(f"Found {entry.path}")
+                    return True
+        self.show_hint(f"No program name contains '{text}'")
+        return False
+
+    def action_import_file(self) -> None:
+        """Import: copy a file of the PC into the directory shown."""
+        directory = self.directory if self.directory != "/WKS" else "/MPF"
+
+        def do_import(path: str | None) -> None:
+            if not path:
+                return
+            try:
+                target = self.files.import_file(path, directory)
+            except (ProgramFileError, OSError) as exc:
+                self.show_hint(f"Import: {exc}")
+                return
+            self.directory = directory
+            self.refresh_listing(select=target)
+            self.show_hint(f"{path} imported as {target}")
+
+        self.app.push_screen(PromptDialog(f"Import into {directory}: path of the file on this PC", ""), do_import)
+
+    def action_export_file(self) -> None:
+        """Export: write a copy of the program to a path of the PC."""
+        entry = self.current_entry()
+        if entry is None or entry.kind == "WPD":
+            return
+
+        def do_export(path: str | None) -> None:
+            if not path:
+                return
+            try:
+                target = self.files.export_file(entry.path, path)
+            except (ProgramFileError, OSError) as exc:
+                self.show_hint(f"Export: {exc}")
+                return
+            self.show_hint(f"{entry.path} exported to {target}")
+
+        self.app.push_screen(PromptDialog(f"Export {entry.path} to (file or folder on this PC):", str(Path.cwd())),
+                             do_export)
+
+
+AreaScreen = ProgramManagerScreen
+"""The area screen the app puts into its MODES (convention of ``hmi/app.py``)."""
