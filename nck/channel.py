@@ -55,6 +55,8 @@ VALID_SITUATIONS: frozenset[tuple[str, str, str]] = frozenset({
     # MDA block over the interrupted AUTO program (situation 16).
     ("MDA", RESET, ABORTED), ("MDA", ACTIVE, RUNNING), ("MDA", INTERRUPTED, STOPPED),
     ("MDA", INTERRUPTED, PROG_INTERRUPTED), ("MDA", ACTIVE, PROG_INTERRUPTED),
+    # MDA with the machine functions REF/REPOS: traversing by hand (situations 7, 14).
+    ("MDA", ACTIVE, ABORTED), ("MDA", INTERRUPTED, ABORTED),
     # JOG: reset; jogging; a JOG increment stopped with NC STOP (situation 8);
     # a program interrupted; jogging while a program is interrupted.
     ("JOG", RESET, ABORTED), ("JOG", ACTIVE, ABORTED), ("JOG", INTERRUPTED, ABORTED),

@@ -262,7 +262,7 @@ class Nck:
         mode = self._sit.mode
         if self._estop_active:
             return Rejected("Emergency stop active")
-        if mode == "JOG":
+        if mode == "JOG" or (self._sit.channel == INTERRUPTED and self._sit.program == ABORTED):
             return self._continue_jog()
         if self._sit.channel == ACTIVE:
             return Rejected("Channel already active")
@@ -280,6 +280,8 @@ class Nck:
 
     def _start_auto(self) -> SubmitResult:
         run = self._run
+        if next_state(self._sit, "program_start") is None:
+            return Rejected("NC START not possible in this state")
         if self._sit.program == ABORTED:
             if self._selected is None:
                 return Rejected("No program selected")
@@ -312,6 +314,8 @@ class Nck:
         return Accepted()
 
     def _start_mda(self) -> SubmitResult:
+        if next_state(self._sit, "program_start") is None:
+            return Rejected("NC START not possible in this state")
         if self._owner == "AUTO":
             overlay = self._overlay
             if overlay is not None and overlay.phase != "ended":
