@@ -146,6 +146,7 @@ class HmiApp(App):
         self._jog_release_timer: Timer | None = None
         self._jogging: str | None = None
         self._on_quit = on_quit
+        self._program_cache: dict[str, tuple[str, tuple[str, ...]]] = {}
         for area in AREAS:
             self.add_mode(area.id, area_screen_factory(area))
 
@@ -206,6 +207,25 @@ class HmiApp(App):
                 except Exception:  # a broken listing shows as an empty list
                     return []
         return []
+
+    def program_text(self, name: str) -> tuple[str, tuple[str, ...]] | None:
+        """``(display name, lines)`` of a part program from the kernel's program source, or None."""
+        cached = self._program_cache.get(name)
+        if cached is not None:
+            return cached
+        source = getattr(self.bridge.nck, "programs", None)
+        reader = getattr(source, "read_program", None)
+        found = None
+        if callable(reader):
+            try:
+                found = reader(name)
+            except Exception:  # an unreadable program is shown as not available
+                found = None
+        if found is None:
+            return None
+        result = (str(found[0]), tuple(str(found[1]).splitlines()))
+        self._program_cache = {name: result}
+        return result
 
     def _status(self) -> NckStatus:
         return self.bridge.status

@@ -295,7 +295,9 @@ class MachineScreen(AreaBase):
                 f" MDA — type blocks, CYCLE START (Alt+G) runs them   {channel.program_state}")
         elif view_id == "view-auto":
             self.query_one("#auto-title", Static).update(self._auto_title(status))
-            self.query_one("#auto-blocks", BlockWindow).show(channel)
+            program = (self.hmi.program_text(channel.selected_program)
+                       if channel.selected_program else None)
+            self.query_one("#auto-blocks", BlockWindow).show(channel, program)
         elif view_id == "view-gfunc":
             self.query_one(GFunctionsTable).show(channel.modal.gcodes)
         elif view_id == "view-aux":

@@ -20,7 +20,7 @@ def block_lines(blocks: tuple[BlockView, ...], current: BlockView | None, height
     index = 0
     if current is not None:
         for i, block in enumerate(blocks):
-            if block.line == current.line and block.file == current.file:
+            if block.line == current.line and _same_file(block.file, current.file):
                 index = i
                 break
     start = max(0, min(index - BEFORE, len(blocks) - height))
@@ -33,18 +33,37 @@ def block_lines(blocks: tuple[BlockView, ...], current: BlockView | None, height
     return text
 
 
+def _same_file(a: str, b: str) -> bool:
+    return a.replace("\\", "/").rsplit("/", 1)[-1].upper() == b.replace("\\", "/").rsplit("/", 1)[-1].upper()
+
+
+def program_views(name: str, lines: tuple[str, ...]) -> tuple[BlockView, ...]:
+    """The lines of a program text as block views (blank lines left out)."""
+    return tuple(BlockView(name, number, text.rstrip())
+                 for number, text in enumerate(lines, start=1) if text.strip())
+
+
 class BlockWindow(Static):
-    """The blocks of the selected (or MDA) program; the current block highlighted."""
+    """The blocks of the selected (or MDA) program; the current block highlighted.
+
+    With the program text at hand the window shows the program around the
+    current block (blocks before and after); otherwise the blocks the kernel
+    reports (those already interpreted).
+    """
 
     def __init__(self, height_lines: int = 9, **kwargs: object) -> None:
         super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
         self.height_lines = height_lines
         self._key: object = None
 
-    def show(self, channel: ChannelStatus) -> None:
+    def show(self, channel: ChannelStatus, program: tuple[str, tuple[str, ...]] | None = None) -> None:
         """Redraw when the program or the current block changed."""
-        key = (channel.blocks, channel.current_block, self.height_lines)
+        current = channel.current_block
+        blocks = channel.blocks
+        if program is not None and (current is None or _same_file(current.file, program[0])):
+            blocks = program_views(*program)
+        key = (blocks, current, self.height_lines)
         if key == self._key:
             return
         self._key = key
-        self.update(block_lines(channel.blocks, channel.current_block, self.height_lines))
+        self.update(block_lines(blocks, current, self.height_lines))
