@@ -1,17 +1,275 @@
-"""The headless command line ``nck`` (contract: check, run, md, version)."""
+"""The headless command line ``nck`` (contract: ``/work/shared/spec/cli.md``).
+
+``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck version``; ``nck md``
+is dispatched to its own module when present. Exit codes: 0 ok, 1 alarm or
+problems found, 2 command line / file problem, 3 timeout.
+"""
 
 from __future__ import annotations
 
+import argparse
+import json
 import sys
+from pathlib import Path
+from typing import Any, TextIO
 
-from nck import __version__
+from nck import __version__, canon
+from nck.errors import NcAlarmError
+from nck.headless import alarm_message, format_alarm, run_program
+from nck.interp.program import load_program
+from nck.interp.sources import DirectorySource, read_text_file
+from nck.machine import MachineConfig, MachineFileError, load_machine
+from nck.ncdata import NcData
+
+CHECK_BLOCK_BUDGET = 200_000  # blocks a check may interpret before giving up quietly
+
+
+class CliError(Exception):
+    """A command-line or file problem (exit code 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # type: ignore[override]
+        raise CliError(message)
+
+
+def _build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="nck", description="Headless SINUMERIK NCK simulator")
+    sub = parser.add_subparsers(dest="command")
+    check = sub.add_parser("check", help="check programs without moving anything")
+    check.add_argument("programs", nargs="+")
+    _common_options(check)
+    run = sub.add_parser("run", help="run a program headless")
+    run.add_argument("program")
+    _common_options(run)
+    run.add_argument("--json", action="store_true", help="print the final state as JSON")
+    run.add_argument("--segments", help="write motion segments as JSON lines (- = stdout)")
+    run.add_argument("--trace", help="(not yet implemented: accepted and ignored)")
+    run.add_argument("--timeout", type=float, help="stop after S seconds of simulated time")
+    run.add_argument("--realtime", action="store_true", help="(accepted; runs as fast as possible)")
+    sub.add_parser("version", help="print the version")
+    return parser
+
+
+def _common_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--machine", help="machine name or TOML file")
+    parser.add_argument("--dialect", default="siemens", choices=["siemens", "iso-m", "iso-t"])
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    parser.add_argument("--tools", help="(accepted; tool table loading not yet implemented)")
+    parser.add_argument("--data-dir", help="NC data directory (subprograms are searched there too)")
+    parser.add_argument("--ephemeral", action="store_true", help="(accepted; nothing is written back)")
 
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``nck`` console script; returns the exit code."""
-    args = sys.argv[1:] if argv is None else argv
-    if args[:1] == ["version"]:
-        print(f"nck {__version__}")
-        return 0
-    print("usage: nck {check,run,md,version} ...", file=sys.stderr)
-    return 2
+    args = sys.argv[1:] if argv is None else list(argv)
+    if args[:1] == ["md"]:
+        try:
+            from nck import cli_md  # type: ignore[attr-defined]
+        except ImportError:
+            print("nck md: not available in this build", file=sys.stderr)
+            return 2
+        return int(cli_md.main(args[1:]))
+    try:
+        options = _build_parser().parse_args(args)
+    except CliError as exc:
+        print(f"nck: {exc}", file=sys.stderr)
+        return 2
+    except SystemExit as exc:  # --help
+        return int(exc.code or 0)
+    try:
+        if options.command == "version":
+            print(f"nck {__version__}")
+            return 0
+        if options.command == "check":
+            return _check(options)
+        if options.command == "run":
+            return _run(options)
+        print("usage: nck {check,run,md,version} ...", file=sys.stderr)
+        return 2
+    except CliError as exc:
+        print(f"nck: {exc}", file=sys.stderr)
+        return 2
+    except MachineFileError as exc:
+        print(f"nck: {exc}", file=sys.stderr)
+        return 2
+
+
+# ----------------------------------------------------------------------------- helpers
+def _machine(options: argparse.Namespace) -> MachineConfig:
+    return load_machine(options.machine)
+
+
+def _read_program(path_text: str) -> tuple[Path, str]:
+    path = Path(path_text)
+    if not path.is_file():
+        raise CliError(f"program file '{path_text}' not found")
+    try:
+        return path, read_text_file(path)
+    except OSError as exc:
+        raise CliError(f"cannot read '{path_text}': {exc.strerror}") from None
+
+
+def _source(path: Path, options: argparse.Namespace) -> DirectorySource:
+    dirs: list[Path] = [path.parent if str(path.parent) else Path(".")]
+    if options.data_dir:
+        base = Path(options.data_dir)
+        dirs += [base, base / "SPF", base / "MPF", base / "spf", base / "mpf"]
+    return DirectorySource(*dirs)
+
+
+def _apply_settings(settings: list[str], machine: MachineConfig, data: NcData) -> None:
+    """``--set NAME=VALUE``: R parameters, tool edges ($TC_DP), machine data."""
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.interp.sysvars import md_number
+
+    for setting in settings:
+        if "=" not in setting:
+            raise CliError(f"--set needs NAME=VALUE, got '{setting}'")
+        name, value = (part.strip() for part in setting.split("=", 1))
+        upper = name.upper()
+        if upper.startswith(("$M", "$S", "MD", "SD")):
+            _set_machine_data(machine, upper, value, md_number)
+            continue
+        interp = Interpreter(machine, MemorySource(), data)
+        interp.start_text("--set", f"{name}={value}")
+        try:
+            interp.step()
+        except NcAlarmError as alarm:
+            raise CliError(f"--set {setting}: {alarm_message(alarm)}") from None
+
+
+def _set_machine_data(machine: MachineConfig, name: str, value_text: str, md_number: Any) -> None:
+    axis = None
+    if name.endswith("]") and "[" in name:
+        name, axis = name[:-1].split("[", 1)
+    if name.startswith("$"):
+        ident = name.lstrip("$").split("_", 1)[1] if "_" in name else name
+        number = md_number(ident)
+        if number is None:
+            raise CliError(f"--set: unknown machine data '{name}'")
+        key = ("SD" if name.lstrip("$").startswith("S") else "MD") + str(number)
+    else:
+        key = name
+    try:
+        value: Any = float(value_text)
+        if value.is_integer() and "." not in value_text:
+            value = int(value)
+    except ValueError:
+        value = value_text
+    if axis is not None:
+        current = machine.md.get(key)
+        table = dict(current) if isinstance(current, dict) else {}
+        table[axis] = value
+        machine.md[key] = table
+    else:
+        machine.md[key] = value
+
+
+# ----------------------------------------------------------------------------- check
+def _check(options: argparse.Namespace) -> int:
+    machine = _machine(options)
+    files = [_read_program(p) for p in options.programs]
+    problems = 0
+    for path, text in files:
+        program = load_program(path.name, text)
+        found = program.problems()
+        if not found:
+            data = NcData()
+            _apply_settings(options.set, machine, data)
+            outcome = run_program(machine, _source(path, options), data, path.name, text=text,
+                                  max_blocks=CHECK_BLOCK_BUDGET, dialect=options.dialect)
+            found = list(outcome.alarms)
+        for alarm in found:
+            print(format_alarm(alarm), file=sys.stderr)
+        problems += len(found)
+        print(f"{path.name}: {'ok' if not found else f'{len(found)} problem(s)'}")
+    return 1 if problems else 0
+
+
+# ----------------------------------------------------------------------------- run
+def _run(options: argparse.Namespace) -> int:
+    machine = _machine(options)
+    path, text = _read_program(options.program)
+    data = NcData()
+    _apply_settings(options.set, machine, data)
+    segment_out: TextIO | None = None
+    close = False
+    if options.segments:
+        if options.segments == "-":
+            segment_out = sys.stdout
+        else:
+            try:
+                segment_out = open(options.segments, "w", encoding="utf-8")  # noqa: SIM115
+                close = True
+            except OSError as exc:
+                raise CliError(f"cannot write '{options.segments}': {exc.strerror}") from None
+
+    def on_command(command: canon.CanonCommand) -> None:
+        if segment_out is not None and isinstance(command, canon.Motion):
+            segment_out.write(json.dumps(segment_json(command)) + "\n")
+
+    try:
+        result = run_program(machine, _source(path, options), data, path.name, text=text,
+                             timeout_s=options.timeout, on_command=on_command,
+                             dialect=options.dialect)
+    finally:
+        if close and segment_out is not None:
+            segment_out.close()
+    for alarm in result.alarms:
+        print(format_alarm(alarm), file=sys.stderr)
+    if result.status == "timeout":
+        print(f"nck: timeout after {options.timeout} s of simulated time", file=sys.stderr)
+    if options.json:
+        print(json.dumps(final_state_json(result, machine, data)))
+    return result.exit_code
+
+
+def segment_json(motion: canon.Motion) -> dict[str, Any]:
+    """One ``--segments`` line."""
+    return {
+        "file": motion.source.file,
+        "line": motion.source.line,
+        "n": motion.source.n,
+        "motion": motion.kind,
+        "plane": motion.plane,
+        "end": {k: _num(v) for k, v in motion.end_wcs.items()},
+        "end_mcs": {k: _num(v) for k, v in motion.end_mcs.items()},
+        "center": {k: _num(v) for k, v in motion.center_wcs.items()} if motion.center_wcs else None,
+        "feed": motion.feed,
+    }
+
+
+def _num(value: float) -> float:
+    return round(float(value), 6) + 0.0
+
+
+def final_state_json(result: Any, machine: MachineConfig, data: NcData) -> dict[str, Any]:
+    """The ``--json`` final state."""
+    interp = result.interpreter
+    modal = interp.modal
+    if result.status == "ended":
+        channel, program = "reset", "aborted"
+    elif result.status == "alarm":
+        channel, program = "interrupted", "interrupted"
+    else:
+        channel, program = "active", "running"
+    return {
+        "alarms": [
+            {"number": a.number, "line": a.line, "n": a.n, "file": a.file, "text": alarm_message(a)}
+            for a in result.alarms
+        ],
+        "position": {
+            "wcs": {k: _num(v) for k, v in modal.position_wcs.items()},
+            "mcs": {k: _num(v) for k, v in modal.position_mcs.items()},
+        },
+        "gcodes": {str(k): v for k, v in sorted(modal.gcodes.items())},
+        "tool": {"T": modal.tool, "D": modal.edge},
+        "spindle": {"S": _num(modal.spindle_speed_rpm), "state": modal.spindle_state},
+        "r": {str(i): v for i, v in enumerate(data.r) if v != 0},
+        "blocks": result.blocks,
+        "machine_time_s": round(result.machine_time_s, 6),
+        "channel": channel,
+        "program": program,
+    }

@@ -1,0 +1,338 @@
+"""Expression evaluation: operators and predefined functions (angles in degrees).
+
+:func:`evaluate` walks an expression tree and asks a :class:`Scope` for
+variables. Arithmetic failures (division by zero, SQRT of a negative number,
+overflow) raise alarm 14051; type mismatches 12150/14096.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Protocol
+
+from nck.errors import NcAlarmError
+from nck.interp.values import (
+    Axis, INT_MAX, INT_MIN, round_half_away, to_bool, to_number, to_string,
+)
+from nck.lang import ast
+
+EQ_REL_TOL = 1e-12  # REAL comparison tolerance (relative), like the NC's "==" on REALs
+
+
+class Scope(Protocol):
+    """What expressions need from the interpreter."""
+
+    def read_r(self, index: Any) -> float:
+        """R parameter ``index``."""
+
+    def read_name(self, name: str) -> Any:
+        """A bare name: variable, axis name or system variable without index."""
+
+    def read_index(self, name: str, indices: tuple[Any, ...]) -> Any:
+        """``NAME[…]``: R[], array element, system variable with index."""
+
+    def is_axis(self, name: str) -> bool:
+        """True if ``name`` is an axis or spindle of the channel."""
+
+    def has_name(self, name: str) -> bool:
+        """True if a variable ``name`` is defined (ISVAR)."""
+
+
+def evaluate(expr: ast.Expr, scope: Scope) -> Any:
+    """Evaluate ``expr`` in ``scope``."""
+    kind = type(expr)
+    if kind is ast.Num:
+        return expr.value  # type: ignore[union-attr]
+    if kind is ast.RParam:
+        return scope.read_r(expr.number)  # type: ignore[union-attr]
+    if kind is ast.Binary:
+        return _binary(expr, scope)  # type: ignore[arg-type]
+    if kind is ast.Str:
+        return expr.value  # type: ignore[union-attr]
+    if kind is ast.Name:
+        return scope.read_name(expr.name)  # type: ignore[union-attr]
+    if kind is ast.Index:
+        values = tuple(_index_value(i, scope) for i in expr.indices)  # type: ignore[union-attr]
+        return scope.read_index(expr.name, values)  # type: ignore[union-attr]
+    if kind is ast.Unary:
+        return _unary(expr, scope)  # type: ignore[arg-type]
+    if kind is ast.Func:
+        return call_function(expr, scope)  # type: ignore[arg-type]
+    raise NcAlarmError(12080, type(expr).__name__)
+
+
+def _index_value(expr: ast.Expr, scope: Scope) -> Any:
+    """An index may be an axis name (``$AA_IM[X]``) — those evaluate to Axis."""
+    if isinstance(expr, ast.Name) and scope.is_axis(expr.name) and not scope.has_name(expr.name):
+        return Axis(expr.name)
+    return evaluate(expr, scope)
+
+
+def _number(value: Any) -> int | float:
+    return to_number(value)
+
+
+def _checked(value: float | int) -> float | int:
+    if isinstance(value, float) and not math.isfinite(value):
+        raise NcAlarmError(14051)
+    if isinstance(value, int) and not INT_MIN <= value <= INT_MAX:
+        return float(value)
+    return value
+
+
+def _unary(expr: ast.Unary, scope: Scope) -> Any:
+    value = evaluate(expr.operand, scope)
+    if expr.op == "-":
+        return _checked(-_number(value))
+    if expr.op == "NOT":
+        return not to_bool(value)
+    if expr.op == "B_NOT":
+        return ~_int(value)
+    return value
+
+
+def _int(value: Any) -> int:
+    number = _number(value)
+    if isinstance(number, float):
+        if not math.isfinite(number) or abs(number) > 2**53:
+            raise NcAlarmError(14051)
+        return round_half_away(number)
+    return number
+
+
+def _equal(a: Any, b: Any) -> bool:
+    if isinstance(a, str) or isinstance(b, str):
+        if isinstance(a, str) and isinstance(b, str):
+            return a == b
+        if isinstance(a, str) and len(a) == 1 and isinstance(b, int):
+            return ord(a) == b
+        if isinstance(b, str) and len(b) == 1 and isinstance(a, int):
+            return ord(b) == a
+        raise NcAlarmError(12150, "==")
+    x, y = _number(a), _number(b)
+    if isinstance(x, float) or isinstance(y, float):
+        return math.isclose(x, y, rel_tol=EQ_REL_TOL, abs_tol=1e-12)
+    return x == y
+
+
+def _compare(op: str, a: Any, b: Any) -> bool:
+    if op == "==":
+        return _equal(a, b)
+    if op == "<>":
+        return not _equal(a, b)
+    if isinstance(a, str) and isinstance(b, str):
+        x: Any = a
+        y: Any = b
+    else:
+        x, y = _number(a), _number(b)
+    if op == "<":
+        return x < y
+    if op == ">":
+        return x > y
+    if op == "<=":
+        return x <= y or _equal(a, b)
+    return x >= y or _equal(a, b)
+
+
+def _binary(expr: ast.Binary, scope: Scope) -> Any:
+    op = expr.op
+    left = evaluate(expr.left, scope)
+    right = evaluate(expr.right, scope)
+    if op == "+":
+        return _checked(_number(left) + _number(right))
+    if op == "-":
+        return _checked(_number(left) - _number(right))
+    if op == "*":
+        return _checked(_number(left) * _number(right))
+    if op == "/":
+        divisor = _number(right)
+        if divisor == 0:
+            raise NcAlarmError(14051)
+        return _checked(float(_number(left)) / divisor)
+    if op == "DIV":
+        a, b = _int(left), _int(right)
+        if b == 0:
+            raise NcAlarmError(14051)
+        quotient = abs(a) // abs(b)
+        return quotient if (a >= 0) == (b >= 0) else -quotient
+    if op == "MOD":
+        a_num, b_num = _number(left), _number(right)
+        if b_num == 0:
+            raise NcAlarmError(14051)
+        result = math.fmod(a_num, b_num)
+        if isinstance(a_num, int) and isinstance(b_num, int):
+            return int(result)
+        return result
+    if op in ("==", "<>", "<", ">", "<=", ">="):
+        return _compare(op, left, right)
+    if op == "AND":
+        return to_bool(left) and to_bool(right)
+    if op == "OR":
+        return to_bool(left) or to_bool(right)
+    if op == "XOR":
+        return to_bool(left) != to_bool(right)
+    if op == "B_AND":
+        return _int(left) & _int(right)
+    if op == "B_OR":
+        return _int(left) | _int(right)
+    if op == "B_XOR":
+        return _int(left) ^ _int(right)
+    if op == "<<":
+        return to_string(left) + to_string(right)
+    raise NcAlarmError(12080, op)
+
+
+# ----------------------------------------------------------------------------- functions
+def _deg(f: Callable[[float], float]) -> Callable[[float], float]:
+    return lambda x: f(math.radians(x))
+
+
+def _arc(f: Callable[[float], float]) -> Callable[[float], float]:
+    def wrapped(x: float) -> float:
+        if not -1.0 - 1e-12 <= x <= 1.0 + 1e-12:
+            raise NcAlarmError(14051)
+        return math.degrees(f(max(-1.0, min(1.0, x))))
+    return wrapped
+
+
+def _sqrt(x: float) -> float:
+    if x < 0:
+        raise NcAlarmError(14051)
+    return math.sqrt(x)
+
+
+def _ln(x: float) -> float:
+    if x <= 0:
+        raise NcAlarmError(14051)
+    return math.log(x)
+
+
+def _tan(x: float) -> float:
+    if abs(math.cos(math.radians(x))) < 1e-15:
+        raise NcAlarmError(14051)
+    return math.tan(math.radians(x))
+
+
+def _exp(x: float) -> float:
+    if x > 709:
+        raise NcAlarmError(14051)
+    return math.exp(x)
+
+
+def _trunc(x: float) -> float:
+    return float(math.trunc(x))
+
+
+def _round(x: float) -> float:
+    return float(round_half_away(x))
+
+
+def _roundup(x: float) -> float:
+    return float(math.ceil(x)) if x >= 0 else float(math.floor(x))
+
+
+ONE_ARG: dict[str, Callable[[float], float]] = {
+    "SIN": _deg(math.sin),
+    "COS": _deg(math.cos),
+    "TAN": _tan,
+    "ASIN": _arc(math.asin),
+    "ACOS": _arc(math.acos),
+    "ATAN": lambda x: math.degrees(math.atan(x)),
+    "SQRT": _sqrt,
+    "ABS": abs,
+    "POT": lambda x: x * x,
+    "TRUNC": _trunc,
+    "ROUND": _round,
+    "ROUNDUP": _roundup,
+    "LN": _ln,
+    "EXP": _exp,
+}
+
+
+def _atan2(y: float, x: float) -> float:
+    return math.degrees(math.atan2(y, x))
+
+
+TWO_ARG: dict[str, Callable[[float, float], float]] = {
+    "ATAN2": _atan2,
+    "MINVAL": min,
+    "MAXVAL": max,
+}
+
+
+def call_function(expr: ast.Func, scope: Scope) -> Any:
+    """Evaluate a predefined function (alarm 12550 for unknown names)."""
+    name = expr.name
+    args = expr.args
+    if any(a is None for a in args):
+        raise NcAlarmError(12080, name)
+    if name in ("AC", "IC"):
+        # Only meaningful as an address value; the interpreter handles that case.
+        raise NcAlarmError(12080, name)
+    if name in ONE_ARG:
+        _arity(name, args, 1)
+        return _checked(ONE_ARG[name](float(_number(evaluate(args[0], scope)))))  # type: ignore[arg-type]
+    if name in TWO_ARG:
+        _arity(name, args, 2)
+        a = float(_number(evaluate(args[0], scope)))  # type: ignore[arg-type]
+        b = float(_number(evaluate(args[1], scope)))  # type: ignore[arg-type]
+        return _checked(TWO_ARG[name](a, b))
+    if name == "BOUND":
+        _arity(name, args, 3)
+        low, high, value = (float(_number(evaluate(a, scope))) for a in args)  # type: ignore[arg-type]
+        if low > high:
+            raise NcAlarmError(14051)
+        return min(max(value, low), high)
+    if name == "STRLEN":
+        _arity(name, args, 1)
+        return len(to_string(evaluate(args[0], scope)))  # type: ignore[arg-type]
+    if name in ("TOUPPER", "TOLOWER"):
+        _arity(name, args, 1)
+        text = to_string(evaluate(args[0], scope))  # type: ignore[arg-type]
+        return text.upper() if name == "TOUPPER" else text.lower()
+    if name == "NUMBER":
+        _arity(name, args, 1)
+        text = to_string(evaluate(args[0], scope)).strip()  # type: ignore[arg-type]
+        try:
+            value = float(text)
+        except ValueError:
+            raise NcAlarmError(14098, text[:20]) from None
+        return _checked(value)
+    if name == "ISNUMBER":
+        _arity(name, args, 1)
+        try:
+            return math.isfinite(float(to_string(evaluate(args[0], scope)).strip()))  # type: ignore[arg-type]
+        except ValueError:
+            return False
+    if name == "SUBSTR":
+        if len(args) not in (2, 3):
+            raise NcAlarmError(14020, name)
+        text = to_string(evaluate(args[0], scope))  # type: ignore[arg-type]
+        start = _int(evaluate(args[1], scope))  # type: ignore[arg-type]
+        length = _int(evaluate(args[2], scope)) if len(args) == 3 else len(text)  # type: ignore[arg-type]
+        if start < 0 or length < 0:
+            raise NcAlarmError(14020, name)
+        return text[start:start + length]
+    if name == "INDEX":
+        _arity(name, args, 2)
+        text = to_string(evaluate(args[0], scope))  # type: ignore[arg-type]
+        char = to_string(evaluate(args[1], scope))  # type: ignore[arg-type]
+        return text.find(char[:1]) if char else -1
+    if name == "AXNAME":
+        _arity(name, args, 1)
+        text = to_string(evaluate(args[0], scope)).upper()  # type: ignore[arg-type]
+        if not scope.is_axis(text):
+            raise NcAlarmError(14097, text[:20])
+        return Axis(text)
+    if name == "AXSTRING":
+        _arity(name, args, 1)
+        return str(evaluate(args[0], scope))  # type: ignore[arg-type]
+    if name == "ISVAR":
+        _arity(name, args, 1)
+        return scope.has_name(to_string(evaluate(args[0], scope)).upper())  # type: ignore[arg-type]
+    raise NcAlarmError(12550, name)
+
+
+def _arity(name: str, args: tuple, count: int) -> None:
+    if len(args) != count:
+        raise NcAlarmError(14020, name)

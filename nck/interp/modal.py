@@ -1,0 +1,82 @@
+"""Modal state of the channel as the interpreter sees it.
+
+Everything here survives from block to block: the active member of every modal
+G group, the programmed positions, feed, spindle, tool and edge. The motion
+builder reads and updates it; :meth:`ModalState.reset` restores the reset
+state (power on, RESET, M2/M30). Add fields freely (frames, units, planes …):
+the interpreter snapshots the whole object before each block.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nck.lang.gcodes import GTable
+from nck.machine import MachineConfig
+
+
+@dataclass
+class ModalState:
+    """Modal values of one channel.
+
+    Attributes:
+        gcodes: modal G group number → active G code.
+        position_wcs: last programmed end point of every path axis (program units, WCS).
+        position_mcs: the same point in machine coordinates (mm).
+        feed: programmed path feed F (0 = none programmed since reset).
+        spindle_speed_rpm: programmed S of the master spindle.
+        spindle_state: ``M3``, ``M4``, ``M5`` or ``M19``.
+        tool_selected: T programmed (preselected) but not yet changed in.
+        tool: active tool (after the change, M6 or T with change mode 0).
+        edge: active cutting edge D (0 = no offset).
+        aux: last output value per aux address (``M``, ``H``), for display.
+    """
+
+    gcodes: dict[int, str] = field(default_factory=dict)
+    position_wcs: dict[str, float] = field(default_factory=dict)
+    position_mcs: dict[str, float] = field(default_factory=dict)
+    feed: float = 0.0
+    spindle_speed_rpm: float = 0.0
+    spindle_state: str = "M5"
+    tool_selected: int = 0
+    tool: int = 0
+    edge: int = 0
+    aux: dict[str, str] = field(default_factory=dict)
+
+    @classmethod
+    def initial(cls, machine: MachineConfig, table: GTable) -> "ModalState":
+        """The power-on state: reset G codes, every path axis at 0."""
+        state = cls()
+        state.gcodes = table.reset_state(reset_overrides(machine, table))
+        for axis in machine.path_axes:
+            state.position_wcs[axis] = 0.0
+            state.position_mcs[axis] = 0.0
+        return state
+
+    def reset(self, machine: MachineConfig, table: GTable) -> None:
+        """RESET / program end: G groups to their reset members, F deleted.
+
+        Positions, the active tool/edge and the spindle are kept (they are
+        physical states or are reset by the channel according to machine data).
+        """
+        self.gcodes = table.reset_state(reset_overrides(machine, table))
+        self.feed = 0.0
+        self.tool_selected = self.tool
+
+
+def reset_overrides(machine: MachineConfig, table: GTable) -> dict[int, str]:
+    """Reset members from MD20150 GCODE_RESET_VALUES of the machine file, if given.
+
+    The MD holds, per group (index = group − 1), the 1-based position of the
+    reset member inside the group; 0 or a missing entry keeps the table default.
+    """
+    values = machine.md.get("MD20150")
+    overrides: dict[int, str] = {}
+    if isinstance(values, list):
+        for index, position in enumerate(values):
+            group = table.groups.get(index + 1)
+            if group is None or not isinstance(position, int) or position <= 0:
+                continue
+            if position <= len(group.members) and group.members[position - 1]:
+                overrides[group.number] = group.members[position - 1]
+    return overrides

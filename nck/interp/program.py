@@ -1,0 +1,205 @@
+"""A loaded program: parsed lines, labels, block numbers, control-structure matching.
+
+Each source line is parsed once at load time. A line that fails to parse keeps
+its alarm, raised only when execution reaches the line (and reported by
+``nck check``). Control structures (IF/ELSE/ENDIF, WHILE, FOR, LOOP, REPEAT)
+are matched statically; a mismatch is an alarm attached to the offending line.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nck.errors import NcAlarmError
+from nck.lang import ast
+from nck.lang.parser import parse_block
+
+MAX_STRUCTURE_DEPTH = 16  # nesting depth of control structures per program level
+
+_OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "LOOP": "ENDLOOP", "REPEAT": "UNTIL"}
+_CLOSERS = {closer: opener for opener, closer in _OPENERS.items()}
+
+
+@dataclass
+class Line:
+    """One source line: its parsed block or the alarm its parsing raised."""
+
+    number: int  # 1-based line
+    text: str
+    block: ast.Block | None
+    error: NcAlarmError | None = None
+
+
+@dataclass
+class Program:
+    """A program ready for execution.
+
+    Attributes:
+        name: display name (``PART1.MPF``).
+        lines: every source line in order.
+        labels: label → line index (first definition).
+        numbers: block number → line indices.
+        partner: for control-structure lines: the index of the matching line
+            (IF → ENDIF, ELSE → ENDIF, WHILE ↔ ENDWHILE, FOR ↔ ENDFOR,
+            LOOP ↔ ENDLOOP, REPEAT ↔ UNTIL, ENDIF → IF).
+        else_of: IF line index → its ELSE line index.
+        structure_errors: line index → alarm (mismatched or too deep structures,
+            duplicate labels).
+        proc: the PROC statement of the first block, if any.
+    """
+
+    name: str
+    lines: list[Line]
+    labels: dict[str, int] = field(default_factory=dict)
+    numbers: dict[int, list[int]] = field(default_factory=dict)
+    partner: dict[int, int] = field(default_factory=dict)
+    else_of: dict[int, int] = field(default_factory=dict)
+    structure_errors: dict[int, NcAlarmError] = field(default_factory=dict)
+    proc: ast.Proc | None = None
+
+    def __deepcopy__(self, memo: dict) -> "Program":
+        """Programs are immutable once loaded: snapshots share them."""
+        return self
+
+    def problems(self) -> list[NcAlarmError]:
+        """Every static problem (parse errors and structure errors), in line order."""
+        found: list[tuple[int, NcAlarmError]] = []
+        for index, line in enumerate(self.lines):
+            if line.error is not None:
+                found.append((index, line.error))
+            elif index in self.structure_errors:
+                found.append((index, self.structure_errors[index]))
+        return [alarm for _, alarm in found]
+
+    def find_label(self, label: str, start: int, direction: str) -> int | None:
+        """Index of the line carrying ``label`` searched from ``start``.
+
+        ``direction``: ``F`` forward (after start), ``B`` backward (start and
+        before), ``FB`` forward first, then backward.
+        """
+        target = self.labels_all.get(label, ())
+        return _search(target, start, direction)
+
+    def find_number(self, number: int, start: int, direction: str) -> int | None:
+        """Index of the line with block number ``number`` searched like find_label."""
+        return _search(self.numbers.get(number, ()), start, direction)
+
+    @property
+    def labels_all(self) -> dict[str, list[int]]:
+        """Label → every line index defining it."""
+        cache = getattr(self, "_labels_all", None)
+        if cache is None:
+            cache = {}
+            for index, line in enumerate(self.lines):
+                if line.block is not None and line.block.label:
+                    cache.setdefault(line.block.label, []).append(index)
+            object.__setattr__(self, "_labels_all", cache)
+        return cache
+
+
+def _search(indices: list[int] | tuple[int, ...], start: int, direction: str) -> int | None:
+    if direction in ("F", "FB"):
+        for index in indices:
+            if index > start:
+                return index
+    if direction in ("B", "FB"):
+        for index in reversed(indices):
+            if index <= start:
+                return index
+    return None
+
+
+def _located(alarm: NcAlarmError, name: str, line: int, n: int | None) -> NcAlarmError:
+    return alarm.located(name, line, n)
+
+
+def load_program(name: str, text: str) -> Program:
+    """Parse ``text`` into a :class:`Program` called ``name`` (never raises)."""
+    lines: list[Line] = []
+    raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    if raw_lines and raw_lines[-1] == "":
+        raw_lines.pop()
+    for number, raw in enumerate(raw_lines, start=1):
+        try:
+            block = parse_block(raw, number)
+            lines.append(Line(number, raw, block))
+        except NcAlarmError as alarm:
+            lines.append(Line(number, raw, None, _located(alarm, name, number, _guess_n(raw))))
+    program = Program(name=name, lines=lines)
+    _index(program)
+    return program
+
+
+def _guess_n(raw: str) -> int | None:
+    """Block number of a line that failed to parse (for the alarm location)."""
+    text = raw.strip().lstrip("/").lstrip("0123456789").strip().upper()
+    if text.startswith("N"):
+        digits = ""
+        for ch in text[1:]:
+            if ch.isdigit() and ch.isascii():
+                digits += ch
+            else:
+                break
+        if digits and len(digits) < 10:
+            return int(digits)
+    return None
+
+
+def _index(program: Program) -> None:
+    stack: list[tuple[str, int]] = []
+    for index, line in enumerate(program.lines):
+        block = line.block
+        if block is None:
+            continue
+        if block.label:
+            if block.label in program.labels:
+                program.structure_errors[index] = NcAlarmError(12450, block.label).located(
+                    program.name, line.number, block.number)
+            else:
+                program.labels[block.label] = index
+        if block.number is not None:
+            program.numbers.setdefault(block.number, []).append(index)
+        for stmt in block.statements:
+            if isinstance(stmt, ast.Proc):
+                if index == _first_code_line(program, index):
+                    program.proc = stmt
+                else:
+                    program.structure_errors[index] = NcAlarmError(14500).located(
+                        program.name, line.number, block.number)
+            if not isinstance(stmt, ast.Control):
+                continue
+            kind = stmt.kind
+            if kind in _OPENERS:
+                stack.append((kind, index))
+                if len(stack) > MAX_STRUCTURE_DEPTH:
+                    program.structure_errors[index] = NcAlarmError(12641).located(
+                        program.name, line.number, block.number)
+            elif kind == "ELSE":
+                if not stack or stack[-1][0] != "IF" or stack[-1][1] in program.else_of:
+                    program.structure_errors[index] = NcAlarmError(12640).located(
+                        program.name, line.number, block.number)
+                else:
+                    program.else_of[stack[-1][1]] = index
+            elif kind in _CLOSERS:
+                if not stack or stack[-1][0] != _CLOSERS[kind]:
+                    program.structure_errors[index] = NcAlarmError(12640).located(
+                        program.name, line.number, block.number)
+                    continue
+                _, opener = stack.pop()
+                program.partner[opener] = index
+                program.partner[index] = opener
+                if opener in program.else_of:
+                    program.partner[program.else_of[opener]] = index
+    for kind, index in stack:
+        line = program.lines[index]
+        program.structure_errors.setdefault(index, NcAlarmError(12640).located(
+            program.name, line.number, line.block.number if line.block else None))
+
+
+def _first_code_line(program: Program, upto: int) -> int:
+    """Index of the first line up to ``upto`` that has statements."""
+    for index in range(upto + 1):
+        block = program.lines[index].block
+        if block is None or block.statements:
+            return index
+    return upto

@@ -1,0 +1,74 @@
+"""Program sources for the interpreter: a directory on disk and an in-memory table.
+
+Both implement :class:`nck.interp.api.ProgramSource`. Names are matched without
+regard to case; a name without extension is looked up as ``.SPF`` then ``.MPF``
+(then as written).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+EXTENSIONS = (".SPF", ".MPF")
+
+
+def read_text_file(path: Path) -> str:
+    """Read a program file as text; undecodable bytes never fail (latin-1 fallback)."""
+    raw = path.read_bytes()
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return raw.decode("latin-1")
+
+
+class DirectorySource:
+    """Programs in one or more directories (searched in order)."""
+
+    def __init__(self, *directories: Path | str) -> None:
+        self.directories = [Path(d) for d in directories]
+
+    def _candidates(self, name: str) -> list[str]:
+        upper = name.upper()
+        if Path(upper).suffix in EXTENSIONS:
+            return [upper]
+        return [upper + ext for ext in EXTENSIONS] + [upper]
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        """Return ``(display_name, text)`` or None."""
+        wanted = self._candidates(name)
+        for directory in self.directories:
+            if not directory.is_dir():
+                continue
+            try:
+                entries = {p.name.upper(): p for p in directory.iterdir() if p.is_file()}
+            except OSError:
+                continue
+            for candidate in wanted:
+                path = entries.get(candidate)
+                if path is not None:
+                    try:
+                        return path.name, read_text_file(path)
+                    except OSError:
+                        return None
+        return None
+
+
+class MemorySource:
+    """Programs held in a dictionary name → text (tests, MDA)."""
+
+    def __init__(self, programs: dict[str, str] | None = None) -> None:
+        self.programs = {k.upper(): (k, v) for k, v in (programs or {}).items()}
+
+    def add(self, name: str, text: str) -> None:
+        """Add or replace a program."""
+        self.programs[name.upper()] = (name, text)
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        """Return ``(display_name, text)`` or None."""
+        upper = name.upper()
+        if Path(upper).suffix in EXTENSIONS:
+            return self.programs.get(upper)
+        for ext in EXTENSIONS:
+            if upper + ext in self.programs:
+                return self.programs[upper + ext]
+        return self.programs.get(upper)

@@ -1,0 +1,232 @@
+"""System variables (``$…``) that part programs can read and write.
+
+Supported now:
+
+* ``$AA_IM[ax]``, ``$AA_IW[ax]`` — actual machine / workpiece position of an axis
+  (from the position source the channel installs; the programmed position otherwise);
+* ``$P_EP[ax]`` programmed end point, ``$P_F`` feed, ``$P_S`` spindle speed,
+  ``$P_TOOLNO`` active tool, ``$P_TOOL`` active edge, ``$P_GG[g]`` position of the
+  active G code in group g, ``$P_AXN1..3`` geometry axes, ``$P_SEARCH``,
+  ``$P_ISTEST``, ``$P_DRYRUN``, ``$P_STACK`` program level, ``$P_PROG`` program name;
+* ``$TC_DP<n>[t,d]`` tool edge parameters (read/write ``NcData.tools``; writing creates
+  the edge);
+* ``$MN_…``, ``$MC_…``, ``$MA_…[ax]``, ``$SN_``/``$SC_``/``$SA_`` — machine and setting
+  data read from the machine configuration (``MD<number>`` keys), by identifier via the
+  machine-data catalogue when it exists, else via :data:`FALLBACK_MD_NUMBERS`.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any, Protocol
+
+from nck.errors import NcAlarmError
+from nck.interp.modal import ModalState
+from nck.interp.values import Axis, to_number
+from nck.machine import MachineConfig
+from nck.ncdata import NcData
+
+TOOL_PARAM_COUNT = 25
+
+# Identifier → MD/SD number for the data programs read most often, used only when the
+# machine-data catalogue (nck.machine_data) is not available.
+FALLBACK_MD_NUMBERS = {
+    "MM_NUM_R_PARAM": 28050,
+    "LUD_EXTENDED_SCOPE": 11120,
+    "MAX_AX_VELO": 32000,
+    "JOG_VELO": 32020,
+    "JOG_VELO_RAPID": 32010,
+    "MAX_AX_ACCEL": 32300,
+    "CTRLOUT_SEGMENT_NR": 30100,
+    "IS_ROT_AX": 30300,
+    "POS_LIMIT_PLUS": 36100,
+    "POS_LIMIT_MINUS": 36110,
+    "GCODE_RESET_VALUES": 20150,
+    "TOOL_CHANGE_MODE": 22550,
+    "AXCONF_MACHAX_NAME_TAB": 10000,
+    "IPO_SYSCLOCK_TIME_RATIO": 10050,
+    "IPO_CYCLE_TIME": 10071,
+    "DRY_RUN_FEED": 42100,
+    "JOG_CONT_MODE_LEVELTRIGGRD": 41050,
+}
+
+
+class SysContext(Protocol):
+    """What the system variables need from the interpreter."""
+
+    machine: MachineConfig
+    data: NcData
+
+    @property
+    def modal(self) -> ModalState:
+        """The modal state."""
+
+    def actual_position(self, axis: str) -> float:
+        """Actual machine position of ``axis`` (mm or degrees)."""
+
+    def program_level(self) -> int:
+        """Current program level (main program = 1)."""
+
+    def program_name(self) -> str:
+        """Name of the program of the current level."""
+
+    def flag(self, name: str) -> bool:
+        """Program-control flags: ``search``, ``test``, ``dry_run``."""
+
+    def write_tool(self, tool: int, edge: int, param: int, value: float) -> None:
+        """Write one tool edge parameter (journaled)."""
+
+
+_TC_DP = re.compile(r"^\$TC_DP(\d+)$")
+_MD = re.compile(r"^\$\$?(M|S)(N|C|A)_(\w+)$")
+_AXN = re.compile(r"^\$P_AXN([1-3])$")
+
+
+def _axis_arg(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> str:
+    if len(indices) != 1:
+        raise NcAlarmError(17020, name)
+    axis = indices[0]
+    if not isinstance(axis, str) or axis not in ctx.machine.path_axes:
+        raise NcAlarmError(17040 if not isinstance(axis, str) else 12550, name)
+    return str(axis)
+
+
+def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
+    """Read system variable ``name`` with evaluated ``indices``."""
+    modal = ctx.modal
+    if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
+        axis = _axis_arg(ctx, name, indices)
+        return float(ctx.actual_position(axis))
+    if name == "$P_EP":
+        axis = _axis_arg(ctx, name, indices)
+        return float(modal.position_wcs.get(axis, 0.0))
+    if indices and name not in ("$P_GG", "$P_S") and not _TC_DP.match(name) and not _MD.match(name):
+        raise NcAlarmError(12550, name)
+    if name == "$P_F":
+        return float(modal.feed)
+    if name == "$P_S":
+        return float(modal.spindle_speed_rpm)
+    if name == "$P_TOOLNO":
+        return int(modal.tool)
+    if name == "$P_TOOL":
+        return int(modal.edge)
+    if name == "$P_GG":
+        return _gg(ctx, indices)
+    match = _AXN.match(name)
+    if match:
+        axes = ctx.machine.path_axes
+        index = int(match.group(1)) - 1
+        if index >= len(axes):
+            raise NcAlarmError(12550, name)
+        return Axis(axes[index])
+    if name == "$P_SEARCH":
+        return ctx.flag("search")
+    if name == "$P_ISTEST":
+        return ctx.flag("test")
+    if name == "$P_DRYRUN":
+        return ctx.flag("dry_run")
+    if name == "$P_STACK":
+        return ctx.program_level()
+    if name == "$P_PROG":
+        return ctx.program_name()
+    match = _TC_DP.match(name)
+    if match:
+        param, tool, edge = _tool_address(name, match, indices)
+        found = ctx.data.edge(tool, edge)
+        return float(found.get(param)) if found is not None else 0.0
+    match = _MD.match(name)
+    if match:
+        return _machine_data(ctx, name, match, indices)
+    raise NcAlarmError(12550, name)
+
+
+def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> None:
+    """Write system variable ``name`` (only tool data is writable for now)."""
+    match = _TC_DP.match(name)
+    if match:
+        param, tool, edge = _tool_address(name, match, indices)
+        number = float(to_number(value, name))
+        ctx.write_tool(tool, edge, param, number)
+        return
+    if _MD.match(name) or name.startswith("$P_") or name.startswith("$AA_"):
+        raise NcAlarmError(17070, name)
+    raise NcAlarmError(12550, name)
+
+
+def _tool_address(name: str, match: re.Match, indices: tuple[Any, ...]) -> tuple[int, int, int]:
+    param = int(match.group(1))
+    if not 1 <= param <= TOOL_PARAM_COUNT:
+        raise NcAlarmError(12550, name)
+    if len(indices) != 2:
+        raise NcAlarmError(17020, name)
+    tool_raw, edge_raw = (to_number(i, name) for i in indices)
+    tool, edge = int(tool_raw), int(edge_raw)
+    if tool != tool_raw or tool < 1 or tool > 99_999_999:
+        raise NcAlarmError(17020, name)
+    if edge != edge_raw or edge < 1 or edge > 12:
+        raise NcAlarmError(17030, name)
+    return param, tool, edge
+
+
+def _gg(ctx: SysContext, indices: tuple[Any, ...]) -> int:
+    from nck.lang.gcodes import gtable
+
+    if len(indices) != 1:
+        raise NcAlarmError(17020, "$P_GG")
+    group_no = int(to_number(indices[0], "$P_GG"))
+    table = gtable()
+    group = table.groups.get(group_no)
+    if group is None:
+        raise NcAlarmError(17020, "$P_GG")
+    code = ctx.modal.gcodes.get(group_no)
+    return group.position(code) if code in group.members else 0
+
+
+def md_number(identifier: str) -> int | None:
+    """Number of an MD/SD identifier (``MAX_AX_VELO`` → 32000), or None."""
+    try:  # the machine-data catalogue, once it exists, is the authority
+        from nck import machine_data  # type: ignore[attr-defined]
+
+        lookup = getattr(machine_data, "number_of", None)
+        if lookup is not None:
+            found = lookup(identifier)
+            if found is not None:
+                return int(found)
+    except Exception:  # noqa: BLE001 - catalogue missing or still under construction
+        pass
+    return FALLBACK_MD_NUMBERS.get(identifier)
+
+
+def _machine_data(ctx: SysContext, name: str, match: re.Match, indices: tuple[Any, ...]) -> Any:
+    kind, scope, ident = match.groups()
+    number = md_number(ident)
+    prefix = "MD" if kind == "M" else "SD"
+    keys = [ident, name.lstrip("$")]
+    if number is not None:
+        keys.insert(0, f"{prefix}{number}")
+    axis = None
+    index = None
+    if scope == "A":
+        if len(indices) != 1 or not isinstance(indices[0], str):
+            raise NcAlarmError(17040, name)
+        axis = str(indices[0])
+        if axis not in [a.name for a in ctx.machine.axes]:
+            raise NcAlarmError(17040, name)
+    elif indices:
+        if len(indices) != 1:
+            raise NcAlarmError(17020, name)
+        index = int(to_number(indices[0], name))
+    for key in keys:
+        if key in ctx.machine.md:
+            value = ctx.machine.md_value(key, axis)
+            if isinstance(value, list):
+                if index is None or not 0 <= index < len(value):
+                    raise NcAlarmError(17020, name)
+                return value[index]
+            if value is None:
+                raise NcAlarmError(17040, name)
+            return value
+    defaults = {28050: 100, 11120: 0, 22550: 1 if ctx.machine.kind != "lathe" else 0}
+    if number in defaults and index is None:
+        return defaults[number]
+    raise NcAlarmError(12550, name)

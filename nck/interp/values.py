@@ -1,0 +1,205 @@
+"""Values and variables of the NC language: data types, conversions, cells.
+
+Runtime values are plain Python objects: ``int`` (INT, CHAR), ``float``
+(REAL), ``bool`` (BOOL), ``str`` (STRING), :class:`Axis` (AXIS) and
+:class:`FrameValue` (FRAME). A user variable lives in a :class:`Cell` that
+knows its type, array dimensions and limits; every write goes through
+:meth:`Cell.set`, which converts and checks.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from nck.errors import NcAlarmError
+
+INT_MIN = -(2**31)
+INT_MAX = 2**31 - 1
+STRING_MAX = 200
+REAL_MAX = 1.8e308
+
+
+class Axis(str):
+    """An AXIS value: the name of a channel axis or spindle."""
+
+
+@dataclass
+class FrameValue:
+    """A FRAME value (translations per axis, rotations in degrees); opaque for now."""
+
+    trans: dict[str, float] = field(default_factory=dict)
+    rot: dict[str, float] = field(default_factory=dict)
+
+
+def default_value(dtype: str) -> Any:
+    """The initial value of a variable of type ``dtype``."""
+    return {
+        "INT": 0,
+        "REAL": 0.0,
+        "BOOL": False,
+        "CHAR": 0,
+        "STRING": "",
+        "AXIS": Axis(""),
+        "FRAME": None,
+    }[dtype]
+
+
+def round_half_away(value: float) -> int:
+    """Round like the NC: .5 away from zero."""
+    return int(math.floor(abs(value) + 0.5)) * (1 if value >= 0 else -1)
+
+
+def to_number(value: Any, what: str = "") -> int | float:
+    """Return a numeric value (bool → 0/1); strings/axes/frames → alarm 14096."""
+    if isinstance(value, bool):
+        return int(value)
+    if isinstance(value, (int, float)):
+        return value
+    raise NcAlarmError(14096, what or _show(value))
+
+
+def to_bool(value: Any) -> bool:
+    """Truth value: numbers ≠ 0, non-empty strings."""
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, (int, float)):
+        return value != 0
+    if isinstance(value, str):
+        return value != ""
+    raise NcAlarmError(14096, _show(value))
+
+
+def to_string(value: Any) -> str:
+    """Text form used by ``<<`` and STRING conversion (REAL without trailing zeros)."""
+    if isinstance(value, bool):
+        return "TRUE" if value else "FALSE"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if value == int(value) and abs(value) < 1e15:
+            return str(int(value))
+        text = f"{value:.10f}".rstrip("0").rstrip(".")
+        return text if text not in ("-0", "") else "0"
+    if isinstance(value, str):
+        return value
+    raise NcAlarmError(14096, _show(value))
+
+
+def _show(value: Any) -> str:
+    text = value if isinstance(value, str) else type(value).__name__
+    return str(text)[:20]
+
+
+def convert(value: Any, dtype: str, name: str = "", string_len: int | None = None) -> Any:
+    """Convert ``value`` for storage in a variable of type ``dtype`` (alarms on failure)."""
+    if dtype == "REAL":
+        number = float(to_number(value, name))
+        if not math.isfinite(number):
+            raise NcAlarmError(12160, name)
+        return number
+    if dtype == "INT":
+        number = to_number(value, name)
+        if isinstance(number, float):
+            if not math.isfinite(number):
+                raise NcAlarmError(12160, name)
+            number = round_half_away(number)
+        if not INT_MIN <= number <= INT_MAX:
+            raise NcAlarmError(12160, name)
+        return int(number)
+    if dtype == "BOOL":
+        return to_bool(value)
+    if dtype == "CHAR":
+        if isinstance(value, str) and not isinstance(value, Axis):
+            if len(value) != 1:
+                raise NcAlarmError(14096, name)
+            value = ord(value)
+        number = to_number(value, name)
+        number = round_half_away(number) if isinstance(number, float) else number
+        if not 0 <= number <= 255:
+            raise NcAlarmError(12160, name)
+        return int(number)
+    if dtype == "STRING":
+        text = to_string(value)
+        limit = string_len or STRING_MAX
+        if len(text) > limit:
+            raise NcAlarmError(12210, name)
+        return text
+    if dtype == "AXIS":
+        if isinstance(value, str):
+            return Axis(value)
+        raise NcAlarmError(14096, name)
+    if dtype == "FRAME":
+        if value is None or isinstance(value, FrameValue):
+            return value
+        raise NcAlarmError(14096, name)
+    raise NcAlarmError(12550, dtype)
+
+
+@dataclass
+class Cell:
+    """A user variable (LUD/PUD, or a GUD defined at run time): scalar or array.
+
+    ``dims`` is empty for a scalar; arrays keep their elements in a flat list in
+    row-major order. ``lower``/``upper`` are the LLI/ULI limits (numbers) or None.
+    """
+
+    name: str
+    dtype: str
+    value: Any
+    dims: tuple[int, ...] = ()
+    lower: float | None = None
+    upper: float | None = None
+    string_len: int | None = None
+
+    @classmethod
+    def create(cls, name: str, dtype: str, dims: tuple[int, ...] = (), lower: float | None = None,
+               upper: float | None = None, string_len: int | None = None) -> "Cell":
+        """A new variable holding the type default (moved inside its limits)."""
+        initial = default_value(dtype)
+        if isinstance(initial, (int, float)) and not isinstance(initial, bool):
+            if lower is not None and initial < lower:
+                initial = convert(lower, dtype, name)
+            if upper is not None and initial > upper:
+                initial = convert(upper, dtype, name)
+        size = 1
+        for d in dims:
+            size *= d
+        value = [initial] * size if dims else initial
+        return cls(name, dtype, value, dims, lower, upper, string_len)
+
+    def offset(self, indices: tuple[Any, ...]) -> int:
+        """Flat position of an element; alarms 17020/17030 for bad indices."""
+        if len(indices) != len(self.dims):
+            raise NcAlarmError(17020 if not self.dims else 17030, self.name)
+        flat = 0
+        for position, (raw, size) in enumerate(zip(indices, self.dims)):
+            index = convert(raw, "INT", self.name)
+            if not 0 <= index < size:
+                raise NcAlarmError(17020 if position == 0 else 17030, self.name)
+            flat = flat * size + index
+        return flat
+
+    def get(self, indices: tuple[Any, ...] = ()) -> Any:
+        """Read the scalar or one element."""
+        if not self.dims:
+            if indices:
+                raise NcAlarmError(17020, self.name)
+            return self.value
+        return self.value[self.offset(indices)]
+
+    def set(self, value: Any, indices: tuple[Any, ...] = ()) -> None:
+        """Write the scalar or one element (converted; limits checked)."""
+        converted = convert(value, self.dtype, self.name, self.string_len)
+        if isinstance(converted, (int, float)) and not isinstance(converted, bool):
+            if self.lower is not None and converted < self.lower:
+                raise NcAlarmError(17080, self.name)
+            if self.upper is not None and converted > self.upper:
+                raise NcAlarmError(17090, self.name)
+        if not self.dims:
+            if indices:
+                raise NcAlarmError(17020, self.name)
+            self.value = converted
+        else:
+            self.value[self.offset(indices)] = converted

@@ -1,0 +1,24 @@
+"""Shared helpers for the language tests: run program text through the interpreter."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck.headless import RunResult, run_program
+from nck.interp.sources import MemorySource
+from nck.machine import load_machine
+from nck.ncdata import NcData
+
+
+def run_text(text: str, subprograms: dict[str, str] | None = None, data: NcData | None = None,
+             timeout_s: float | None = 60.0, machine: str | None = None) -> RunResult:
+    """Run ``text`` as TEST.MPF with optional subprograms; returns the RunResult."""
+    source = MemorySource(subprograms or {})
+    return run_program(load_machine(machine), source, data or NcData(), "TEST.MPF", text=text,
+                       timeout_s=timeout_s)
+
+
+@pytest.fixture
+def run():
+    """The run_text helper as a fixture."""
+    return run_text
