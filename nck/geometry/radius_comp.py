@@ -538,13 +538,17 @@ class RadiusCompensator:
         self._pieces.extend(extra)
         self._pieces.append(_Piece(new_curve, element, "contour", inside_before=inside))
 
-    def _contour_count(self, pieces: list[_Piece]) -> int:
-        return sum(1 for piece in pieces if piece.role == "contour")
+    def _blocks_ahead(self) -> int:
+        """Number of buffered blocks after the block of the head piece."""
+        head_owner = self._pieces[0].owner
+        return sum(
+            1 for piece in self._pieces[1:] if piece.role == "contour" and piece.owner is not head_owner
+        )
 
     def _drain(self, keep: int) -> list[CompensatedElement]:
-        """Resolve head pieces while at least ``keep`` contour blocks follow them."""
+        """Resolve head pieces while at least ``keep`` further blocks are buffered."""
         out: list[CompensatedElement] = []
-        while len(self._pieces) > 1 and self._contour_count(self._pieces[1:]) >= max(keep, 1):
+        while len(self._pieces) > 1 and self._blocks_ahead() >= max(keep, 1):
             out += self._resolve_head()
         if keep == 0:
             while len(self._pieces) > 1:
@@ -575,7 +579,7 @@ class RadiusCompensator:
         chosen: tuple[int, Vec] | None = None
         window = 0
         for index, piece in enumerate(rest):
-            if piece.role == "contour":
+            if piece.role == "contour" and piece.owner is not head.owner:
                 window += 1
             if window > self.settings.max_check_blocks:
                 break
