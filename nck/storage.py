@@ -1,0 +1,492 @@
+"""The NC file system: part programs, subprograms and workpieces in the NC data directory.
+
+Layout below the file-system root (``<data dir>/nc``)::
+
+    MPF/PART1.MPF              part (main) programs
+    SPF/L10.SPF                subprograms
+    WKS/SHAFT.WPD/SHAFT.MPF    workpieces: a folder holding its own MPF/SPF
+
+Programs are addressed by a path such as ``"MPF/PART1.MPF"``,
+``"WKS/SHAFT.WPD/SHAFT.MPF"`` or simply ``"PART1.MPF"`` (the directory follows
+from the extension). Names are not case-sensitive and are stored in capitals.
+Every write is atomic (:mod:`nck.atomic`). A program in use (selected for or
+being executed) cannot be saved, renamed or deleted: the owner of the channel
+reports which programs are in use through :attr:`NcFileSystem.in_use_check`.
+
+:class:`NcFileSystem` implements the interpreter's ``ProgramSource``.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Iterable
+
+from nck.atomic import atomic_write_bytes, remove_stale_temp_files
+
+DIRECTORIES = ("MPF", "SPF", "WKS")
+PROGRAM_TYPES = ("MPF", "SPF")
+WORKPIECE_SUFFIX = "WPD"
+NAME_MAX_CHARS = 24
+MAX_IMPORT_BYTES = 50 * 1024 * 1024
+SAMPLES_MARK = ".samples-installed"
+
+# Two letters/underscores first, then letters, digits, underscores; or L followed by digits.
+_NAME = re.compile(r"^(?:[A-Z_][A-Z_][A-Z0-9_]*|L[0-9]{1,7})$")
+
+
+class StorageError(Exception):
+    """A file operation was refused or failed; ``str()`` is a message for the operator.
+
+    ``code`` is one of ``invalid_name``, ``bad_path``, ``exists``, ``not_found``,
+    ``in_use``, ``not_text``, ``io``.
+    """
+
+    def __init__(self, code: str, message: str) -> None:
+        self.code = code
+        super().__init__(message)
+
+
+def validate_name(name: str) -> str:
+    """Return a program or workpiece name (without extension) in capitals, or raise.
+
+    Rules: 1..24 characters; letters, digits and underscores; the first two
+    characters letters or underscores — except subprogram names ``L<digits>``.
+    """
+    upper = name.strip().upper()
+    if not upper:
+        raise StorageError("invalid_name", "a name is needed")
+    if len(upper) > NAME_MAX_CHARS:
+        raise StorageError("invalid_name", f"{upper}: at most {NAME_MAX_CHARS} characters")
+    if len(upper) == 1 and re.fullmatch(r"[A-Z_]", upper):
+        raise StorageError("invalid_name", f"{upper}: the name needs at least two letters")
+    if not _NAME.match(upper):
+        raise StorageError(
+            "invalid_name",
+            f"{upper}: use letters, digits and _ only, starting with two letters "
+            "(or L and a number)",
+        )
+    return upper
+
+
+def split_file_name(file_name: str) -> tuple[str, str]:
+    """Split ``PART1.MPF`` into (``PART1``, ``MPF``), validating both parts."""
+    stem, dot, ext = file_name.strip().upper().rpartition(".")
+    if not dot or ext not in PROGRAM_TYPES + (WORKPIECE_SUFFIX,):
+        raise StorageError("invalid_name", f"{file_name}: the name needs .MPF or .SPF")
+    return validate_name(stem), ext
+
+
+@dataclass(frozen=True, slots=True)
+class ProgramEntry:
+    """One program or workpiece as the program manager lists it."""
+
+    path: str  # canonical path, e.g. "WKS/SHAFT.WPD/SHAFT.MPF"
+    name: str  # file name, e.g. "SHAFT.MPF"
+    kind: str  # "MPF", "SPF" or "WPD"
+    size_bytes: int
+    modified_ns: int
+
+    @property
+    def directory(self) -> str:
+        """The containing directory path (``MPF``, ``WKS/SHAFT.WPD`` …)."""
+        return self.path.rpartition("/")[0]
+
+
+@dataclass(frozen=True, slots=True)
+class OpenedProgram:
+    """A program opened for the editor: its text and whether it may be edited."""
+
+    path: str
+    text: str
+    read_only: bool
+    message: str = ""
+
+
+class NcFileSystem:
+    """The NC file system below ``root``; creates its directories when missing."""
+
+    def __init__(self, root: Path | str) -> None:
+        self.root = Path(root)
+        for directory in DIRECTORIES:
+            (self.root / directory).mkdir(parents=True, exist_ok=True)
+            remove_stale_temp_files(self.root / directory)
+        self._in_use: set[str] = set()
+        #: Returns the paths or file names of the programs in use (selected/running).
+        self.in_use_check: Callable[[], Iterable[str]] = lambda: self._in_use
+
+    # ------------------------------------------------------------------ paths
+    def canonical(self, path: str) -> str:
+        """Return the canonical form of a program/directory path, or raise bad_path."""
+        parts = [p for p in path.strip().replace("\\", "/").upper().split("/") if p]
+        if len(parts) == 1 and parts[0] not in DIRECTORIES:
+            _, ext = split_file_name(parts[0])
+            if ext == WORKPIECE_SUFFIX:
+                parts = ["WKS", parts[0]]
+            else:
+                parts = [ext, parts[0]]
+        if not parts or parts[0] not in DIRECTORIES:
+            raise StorageError("bad_path", f"{path}: not a path of the NC file system")
+        if len(parts) == 1:
+            return parts[0]
+        stem, ext = split_file_name(parts[1])
+        if parts[0] in PROGRAM_TYPES:
+            if len(parts) != 2 or ext != parts[0]:
+                raise StorageError("bad_path", f"{path}: a .{ext} file does not belong in {parts[0]}")
+        else:
+            if ext != WORKPIECE_SUFFIX:
+                raise StorageError("bad_path", f"{path}: the WKS directory holds only workpieces")
+            if len(parts) == 3:
+                _, inner = split_file_name(parts[2])
+                if inner not in PROGRAM_TYPES:
+                    raise StorageError("bad_path", f"{path}: a workpiece holds MPF and SPF files")
+            elif len(parts) > 3:
+                raise StorageError("bad_path", f"{path}: too many levels")
+        return "/".join(parts)
+
+    def _disk(self, canonical: str) -> Path:
+        """The file on disk for a canonical path (matching names case-insensitively)."""
+        current = self.root
+        for part in canonical.split("/"):
+            candidate = current / part
+            if not candidate.exists() and current.is_dir():
+                for existing in current.iterdir():
+                    if existing.name.upper() == part:
+                        candidate = existing
+                        break
+            current = candidate
+        return current
+
+    def _entry(self, canonical: str) -> ProgramEntry:
+        disk = self._disk(canonical)
+        stat = disk.stat()
+        name = canonical.rpartition("/")[2]
+        kind = name.rpartition(".")[2]
+        size = stat.st_size if disk.is_file() else sum(
+            p.stat().st_size for p in disk.iterdir() if p.is_file()
+        )
+        return ProgramEntry(canonical, name, kind, size, stat.st_mtime_ns)
+
+    # ----------------------------------------------------------------- in use
+    def set_in_use(self, paths: Iterable[str]) -> None:
+        """Declare the programs in use (for a simple owner; see :attr:`in_use_check`)."""
+        self._in_use = {p.upper() for p in paths}
+
+    def is_in_use(self, path: str) -> bool:
+        """True when the program (or, for a workpiece, any program in it) is in use."""
+        canonical = self.canonical(path)
+        name = canonical.rpartition("/")[2]
+        for used in self.in_use_check():
+            used_upper = used.strip().replace("\\", "/").upper()
+            if used_upper in (canonical, name):
+                return True
+            if canonical.endswith("." + WORKPIECE_SUFFIX) and used_upper.startswith(canonical + "/"):
+                return True
+        return False
+
+    def _refuse_in_use(self, path: str, verb: str) -> None:
+        if self.is_in_use(path):
+            raise StorageError("in_use", f"{path} is in use and cannot be {verb}")
+
+    # ---------------------------------------------------------------- listing
+    def exists(self, path: str) -> bool:
+        """True when the program or directory exists."""
+        return self._disk(self.canonical(path)).exists()
+
+    def list_directory(self, directory: str = "MPF") -> list[ProgramEntry]:
+        """The programs (or, for ``WKS``, the workpieces) of one directory, sorted by name."""
+        canonical = self.canonical(directory)
+        disk = self._disk(canonical)
+        if not disk.is_dir():
+            raise StorageError("not_found", f"{directory} does not exist")
+        entries = []
+        for item in disk.iterdir():
+            try:
+                child = self.canonical(f"{canonical}/{item.name}")
+            except StorageError:
+                continue  # not an NC file (temp files, foreign files)
+            if item.is_dir() == child.endswith("." + WORKPIECE_SUFFIX):
+                entries.append(self._entry(child))
+        return sorted(entries, key=lambda e: e.name)
+
+    def all_programs(self) -> list[ProgramEntry]:
+        """Every MPF and SPF file, workpieces included."""
+        entries = self.list_directory("MPF") + self.list_directory("SPF")
+        for workpiece in self.list_directory("WKS"):
+            entries += self.list_directory(workpiece.path)
+        return entries
+
+    # ---------------------------------------------------------- read / write
+    def read_bytes(self, path: str) -> bytes:
+        """The raw content of a program."""
+        disk = self._disk(self.canonical(path))
+        if not disk.is_file():
+            raise StorageError("not_found", f"{path} does not exist")
+        return disk.read_bytes()
+
+    def read(self, path: str) -> str:
+        """The text of a program (raise not_text when it is binary or not UTF-8)."""
+        data = self.read_bytes(path)
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise StorageError("not_text", f"{path} is not a UTF-8 text file") from exc
+        if "\x00" in text:
+            raise StorageError("not_text", f"{path} is a binary file")
+        return text
+
+    def open_program(self, path: str) -> OpenedProgram:
+        """Open a program for the editor.
+
+        Binary or non-UTF-8 files open read-only (undecodable bytes replaced), with a
+        message; so does a program in use.
+        """
+        canonical = self.canonical(path)
+        try:
+            text = self.read(canonical)
+        except StorageError as exc:
+            if exc.code != "not_text":
+                raise
+            shown = self.read_bytes(canonical).decode("utf-8", errors="replace").replace("\x00", "?")
+            return OpenedProgram(canonical, shown, True, f"{exc} — opened read-only")
+        if self.is_in_use(canonical):
+            return OpenedProgram(canonical, text, True, f"{canonical} is in use — opened read-only")
+        return OpenedProgram(canonical, text, False)
+
+    def save(self, path: str, text: str) -> ProgramEntry:
+        """Write a program (new or existing) atomically; refused while it is in use."""
+        canonical = self.canonical(path)
+        if "/" not in canonical or canonical.endswith("." + WORKPIECE_SUFFIX):
+            raise StorageError("bad_path", f"{path} is not a program")
+        self._refuse_in_use(canonical, "changed")
+        self._require_parent(canonical)
+        try:
+            atomic_write_bytes(self._disk(canonical), text.encode("utf-8"))
+        except OSError as exc:
+            raise StorageError("io", f"{canonical} could not be written: {exc.strerror}") from exc
+        return self._entry(canonical)
+
+    def create(self, path: str, text: str = "") -> ProgramEntry:
+        """Create a new program (refused when the name exists)."""
+        canonical = self.canonical(path)
+        if self.exists(canonical):
+            raise StorageError("exists", f"{canonical} already exists")
+        return self.save(canonical, text)
+
+    def create_workpiece(self, name: str, with_program: bool = True) -> ProgramEntry:
+        """Create ``WKS/<NAME>.WPD`` (and its main program ``<NAME>.MPF``)."""
+        stem = validate_name(name.upper().removesuffix("." + WORKPIECE_SUFFIX))
+        canonical = f"WKS/{stem}.{WORKPIECE_SUFFIX}"
+        if self.exists(canonical):
+            raise StorageError("exists", f"{canonical} already exists")
+        self._disk(canonical).mkdir(parents=True)
+        if with_program:
+            self.save(f"{canonical}/{stem}.MPF", "")
+        return self._entry(canonical)
+
+    def _require_parent(self, canonical: str) -> None:
+        parent = canonical.rpartition("/")[0]
+        if not self._disk(parent).is_dir():
+            raise StorageError("not_found", f"{parent} does not exist")
+
+    # ------------------------------------------------- copy / rename / delete
+    def _target(self, source: str, target: str) -> str:
+        """The canonical target path; a directory target keeps the source's file name."""
+        target_canonical = self.canonical(target)
+        name = source.rpartition("/")[2]
+        if target_canonical in DIRECTORIES or (
+            target_canonical.endswith("." + WORKPIECE_SUFFIX) and not source.endswith("." + WORKPIECE_SUFFIX)
+        ):
+            target_canonical = self.canonical(f"{target_canonical}/{name}")
+        return target_canonical
+
+    def copy(self, source: str, target: str, overwrite: bool = False) -> ProgramEntry:
+        """Copy a program (or workpiece) to a new path or into a directory."""
+        src = self.canonical(source)
+        if not self.exists(src):
+            raise StorageError("not_found", f"{src} does not exist")
+        dst = self._target(src, target)
+        if dst == src:
+            raise StorageError("exists", f"{src} cannot be copied onto itself")
+        if self.exists(dst):
+            if not overwrite:
+                raise StorageError("exists", f"{dst} already exists")
+            self._refuse_in_use(dst, "overwritten")
+        if src.endswith("." + WORKPIECE_SUFFIX):
+            if self.exists(dst):
+                raise StorageError("exists", f"{dst} already exists")
+            shutil.copytree(self._disk(src), self._disk(dst))
+            return self._entry(dst)
+        self._require_parent(dst)
+        try:
+            atomic_write_bytes(self._disk(dst), self.read_bytes(src))
+        except OSError as exc:
+            raise StorageError("io", f"{dst} could not be written: {exc.strerror}") from exc
+        return self._entry(dst)
+
+    def rename(self, source: str, new_name: str) -> ProgramEntry:
+        """Rename a program or workpiece within its directory (refused while in use)."""
+        src = self.canonical(source)
+        if not self.exists(src):
+            raise StorageError("not_found", f"{src} does not exist")
+        self._refuse_in_use(src, "renamed")
+        parent, _, old_name = src.rpartition("/")
+        new_file = new_name.strip().upper()
+        if "." not in new_file:
+            new_file = f"{new_file}.{old_name.rpartition('.')[2]}"
+        dst = self.canonical(f"{parent}/{new_file}")
+        if dst != src and self.exists(dst):
+            raise StorageError("exists", f"{dst} already exists")
+        os.replace(self._disk(src), self._disk(parent) / dst.rpartition("/")[2])
+        return self._entry(dst)
+
+    def delete(self, path: str) -> None:
+        """Delete a program or a whole workpiece (refused while in use)."""
+        canonical = self.canonical(path)
+        if canonical in DIRECTORIES:
+            raise StorageError("bad_path", f"the directory {canonical} cannot be deleted")
+        disk = self._disk(canonical)
+        if not disk.exists():
+            raise StorageError("not_found", f"{canonical} does not exist")
+        self._refuse_in_use(canonical, "deleted")
+        if disk.is_dir():
+            shutil.rmtree(disk)
+        else:
+            disk.unlink()
+
+    # ------------------------------------------------------- import / export
+    def import_file(self, local_path: Path | str, directory: str = "MPF",
+                    name: str | None = None, overwrite: bool = False) -> ProgramEntry:
+        """Copy a file from the local file system into ``directory``.
+
+        Without ``name`` the local file name is used (its extension, or the
+        directory's type when it has none of MPF/SPF).
+        """
+        local = Path(local_path)
+        if not local.is_file():
+            raise StorageError("not_found", f"{local} is not a file")
+        if local.stat().st_size > MAX_IMPORT_BYTES:
+            raise StorageError("io", f"{local} is too large for the NC memory")
+        folder = self.canonical(directory)
+        file_name = (name or local.name).strip().upper()
+        stem, dot, ext = file_name.rpartition(".")
+        if not dot or ext not in PROGRAM_TYPES:
+            default_ext = folder if folder in PROGRAM_TYPES else "MPF"
+            file_name = f"{file_name if not dot else stem}.{default_ext}"
+        if folder in PROGRAM_TYPES:
+            file_name = f"{file_name.rpartition('.')[0]}.{folder}"
+        target = self.canonical(f"{folder}/{file_name}")
+        if self.exists(target):
+            if not overwrite:
+                raise StorageError("exists", f"{target} already exists")
+            self._refuse_in_use(target, "overwritten")
+        try:
+            atomic_write_bytes(self._disk(target), local.read_bytes())
+        except OSError as exc:
+            raise StorageError("io", f"{target} could not be written: {exc.strerror}") from exc
+        return self._entry(target)
+
+    def export_file(self, path: str, local_path: Path | str) -> Path:
+        """Copy a program to the local file system (atomically); return the file written.
+
+        ``local_path`` may be a directory: the program's file name is used there.
+        """
+        canonical = self.canonical(path)
+        local = Path(local_path)
+        if local.is_dir():
+            local = local / canonical.rpartition("/")[2]
+        try:
+            atomic_write_bytes(local, self.read_bytes(canonical))
+        except OSError as exc:
+            raise StorageError("io", f"{local} could not be written: {exc.strerror}") from exc
+        return local
+
+    # ---------------------------------------------------------- ProgramSource
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        """``ProgramSource``: the text of a program by name, or None when absent.
+
+        A name with an extension is looked up in its directory; without one as
+        ``.SPF`` first, then ``.MPF``. A full path (``WKS/X.WPD/X.MPF``) is read as is.
+        """
+        return self.program_source().read_program(name)
+
+    def program_source(self, context: str | None = None) -> "ScopedProgramSource":
+        """A ``ProgramSource`` that searches the workpiece of ``context`` first."""
+        return ScopedProgramSource(self, context)
+
+    # --------------------------------------------------------------- samples
+    def install_samples(self, source: Path | str, force: bool = False) -> list[str]:
+        """Copy the training programs of ``source`` into an NC file system once.
+
+        ``*.MPF``/``*.SPF`` files go to MPF/SPF (from any sub-folder), ``*.WPD``
+        folders to WKS. Existing programs are never overwritten, and after the
+        first installation (a mark file in the root) nothing is installed again
+        unless ``force``. Returns the paths installed.
+        """
+        mark = self.root / SAMPLES_MARK
+        if mark.exists() and not force:
+            return []
+        installed: list[str] = []
+        source = Path(source)
+        if source.is_dir():
+            for item in sorted(source.rglob("*")):
+                upper = item.name.upper()
+                try:
+                    if item.is_dir() and upper.endswith("." + WORKPIECE_SUFFIX):
+                        target = self.canonical(f"WKS/{upper}")
+                        if not self.exists(target):
+                            self._disk(target).mkdir(parents=True)
+                            installed.append(target)
+                    elif item.is_file() and upper.rpartition(".")[2] in PROGRAM_TYPES:
+                        parent = item.parent.name.upper()
+                        folder = f"WKS/{parent}" if parent.endswith("." + WORKPIECE_SUFFIX) else ""
+                        target = self.canonical(f"{folder}/{upper}" if folder else upper)
+                        if not self.exists(target):
+                            atomic_write_bytes(self._disk(target), item.read_bytes())
+                            installed.append(target)
+                except StorageError:
+                    continue  # a sample with a name the control cannot hold
+        atomic_write_bytes(mark, "\n".join(installed).encode("utf-8"))
+        return installed
+
+
+class ScopedProgramSource:
+    """Looks programs up in one workpiece first, then in SPF and MPF."""
+
+    def __init__(self, fs: NcFileSystem, context: str | None = None) -> None:
+        self.fs = fs
+        self.workpiece: str | None = None
+        if context:
+            try:
+                canonical = fs.canonical(context)
+            except StorageError:
+                canonical = ""
+            if canonical.startswith("WKS/"):
+                self.workpiece = "/".join(canonical.split("/")[:2])
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        """``ProgramSource.read_program`` (see :meth:`NcFileSystem.read_program`)."""
+        upper = name.strip().replace("\\", "/").upper()
+        if "/" in upper:
+            candidates = [upper]
+        else:
+            stem, dot, ext = upper.rpartition(".")
+            names = [upper] if dot and ext in PROGRAM_TYPES else [f"{upper}.SPF", f"{upper}.MPF"]
+            candidates = []
+            for file_name in names:
+                if self.workpiece:
+                    candidates.append(f"{self.workpiece}/{file_name}")
+                candidates.append(file_name)
+        for candidate in candidates:
+            try:
+                canonical = self.fs.canonical(candidate)
+                disk = self.fs._disk(canonical)
+                if disk.is_file():
+                    text = disk.read_bytes().decode("utf-8", errors="replace")
+                    return canonical.rpartition("/")[2], text
+            except (StorageError, OSError):
+                continue
+        return None
