@@ -63,6 +63,11 @@ class NcData:
     base_frame: WorkOffset = field(default_factory=WorkOffset)
     setting_data: dict[str, Any] = field(default_factory=dict)
     gud: dict[str, Any] = field(default_factory=dict)
+    # Workpiece counters by variable name without prefix (TOTAL_PARTS, REQUIRED_PARTS,
+    # ACTUAL_PARTS, SPECIAL_PARTS: the $AC_… values); retained like the rest.
+    part_counters: dict[str, int] = field(default_factory=dict)
+    # The MDA buffer (kept until deleted, also over power off/on).
+    mda_program: str = ""
 
     def edge(self, tool: int, edge: int) -> ToolEdge | None:
         """Return the cutting edge ``D<edge>`` of tool ``T<tool>``, if it exists."""
