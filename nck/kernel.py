@@ -29,7 +29,7 @@ from typing import Any, Callable
 
 from nck import commands as cmd
 from nck.alarms import AlarmServer
-from nck.canon import AuxFunction, EdgeSelect, Motion, SpindleCommand, ToolSelect, UserAlarm
+from nck.canon import AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand, ToolSelect, UserAlarm
 from nck.channel import (
     ABORTED, ACTIVE, INTERRUPTED, MACHINE_FUNCTIONS, PROG_INTERRUPTED, RESET, RUNNING, STOPPED,
     ChannelSituation, mode_change_allowed, next_state, situation_after_mode_change,
@@ -118,8 +118,8 @@ class Nck:
         self._jogging = False
         self._jog_targets: dict[str, float] = {}
         self._jog_rest: dict[str, float] = {}
-        self._moved_since_stop = False
-        self._repos_point: dict[str, float] | None = None
+        self._repos_point: dict[str, float] | None = None  # interruption point (REPOS)
+        self._parked: list[Motion | Dwell] | None = None  # unexecuted motion of the parked program
         self._wcs_offset: dict[str, float] = {}
         self._aux: dict[str, str] = {}
         self._tool = 0
@@ -225,6 +225,7 @@ class Nck:
         if reason is not None:
             return Rejected(reason)
         new = situation_after_mode_change(self._sit, mode, self._owner)
+        self._park()
         if self._sit.channel == INTERRUPTED and self._sit.program == ABORTED:
             self._jog_rest.clear()
         self._sit = new
@@ -302,13 +303,12 @@ class Nck:
             return Accepted()
         if run.phase == SEARCH_ACTIONS_DONE:
             approach = run.search_approach()
-            self._resume_motion()
+            self._path_motion().resume()
             if approach is not None:
-                approach = replace(approach, start_mcs=dict(self._path_motion().positions_mcs()))
-                self._path_motion().push(approach)
+                run.requeue([replace(approach, start_mcs=dict(self._path_motion().positions_mcs()))])
             self._transition("program_start")
             return Accepted()
-        self._resume_motion()
+        self._resume_motion(run)
         run.continue_after_stop()
         self._transition("program_start")
         return Accepted()
@@ -319,7 +319,7 @@ class Nck:
         if self._owner == "AUTO":
             overlay = self._overlay
             if overlay is not None and overlay.phase != "ended":
-                self._resume_motion(repos=False)
+                self._path_motion().resume()
                 overlay.continue_after_stop()
             else:
                 if not self._mda_text.strip():
@@ -331,7 +331,7 @@ class Nck:
             self._transition("overlay_start")
             return Accepted()
         if self._owner == "MDA" and self._run is not None:
-            self._resume_motion()
+            self._resume_motion(self._run)
             self._run.continue_after_stop()
             self._transition("program_start")
             return Accepted()
@@ -347,8 +347,8 @@ class Nck:
     def _begin_run(self, run: ProgramRun) -> None:
         self._run = run
         self._owner = None
-        self._moved_since_stop = False
         self._repos_point = None
+        self._parked = None
         self.motion.resume()
         if self._pc["program_test"]:
             self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
@@ -383,8 +383,8 @@ class Nck:
         self._jogging = False
         self._jog_targets.clear()
         self._jog_rest.clear()
-        self._moved_since_stop = False
         self._repos_point = None
+        self._parked = None
         keep = frozenset({ALARM_EMERGENCY_STOP}) if self._estop_pressed else frozenset()
         self.alarms.clear("reset", self._time_s, keep=keep)
         if self._estop_active and not self._estop_pressed:
@@ -499,6 +499,7 @@ class Nck:
         if self._sit.channel == ACTIVE and not self._jogging:
             return Rejected("Channel active")
         direction = 1 if command.direction > 0 else -1
+        self._park()
         position = self.motion.positions_mcs()[axis]
         if function == "REF":
             plus = int(self.machine.md_value("MD34010", axis, 0) or 0) == 0
@@ -522,8 +523,6 @@ class Nck:
         if not self._jogging:
             self._jogging = True
             self._transition("jog_start")
-        if self._owner is not None:
-            self._moved_since_stop = True
         return Accepted()
 
     def _start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
@@ -549,8 +548,8 @@ class Nck:
         self._run = run
         self._overlay = None
         self._owner = "AUTO"
-        self._moved_since_stop = False
         self._repos_point = None
+        self._parked = None
         self.runtime.start_from_reset()
         self._transition("search_found")
         return Accepted()
@@ -720,23 +719,43 @@ class Nck:
             self._sit = new
 
     def _mark_interrupted(self, run: ProgramRun | None) -> None:
-        """Remember which program is stopped and where, for REPOS."""
-        if run is None:
-            return
-        if run is not self._overlay:
+        """Remember which program is stopped (the owner of the interruption)."""
+        if run is not None and run is not self._overlay:
             self._owner = run.kind
-        if self._repos_point is None or run is not self._overlay:
-            self._repos_point = dict(self.motion.positions_mcs())
-        self._moved_since_stop = False
 
-    def _resume_motion(self, repos: bool = True) -> None:
+    def _park(self) -> None:
+        """Before JOG or another mode touches the axes: keep the interrupted program's
+        unexecuted motion and the interruption point, and empty the motion buffer."""
+        run = self._run
+        if run is None or self._owner is None or self._parked is not None or self._overlay is not None:
+            return
         motion = self._path_motion()
-        if repos and self._moved_since_stop:
-            run = self._run
-            feed = run.last_motion.feed_mm_min if run and run.last_motion and run.last_motion.kind != "G0" else None
-            motion.reposition(feed)
+        position = dict(motion.positions_mcs())
+        self._parked = run.park(motion.current_source(), position)
+        self._repos_point = position
+        motion.abort()
+
+    def _resume_motion(self, run: ProgramRun) -> None:
+        """NC START of an interrupted program: REPOS (RMI) back, then the remainder."""
+        motion = self._path_motion()
         motion.resume()
-        self._moved_since_stop = False
+        if self._parked is None:
+            return
+        items: list[Motion | Dwell] = []
+        here = dict(motion.positions_mcs())
+        point = self._repos_point or {}
+        if any(abs(here.get(axis, 0.0) - value) > 1e-6 for axis, value in point.items()):
+            first = next((i for i in self._parked if isinstance(i, Motion)), None) or run.last_motion
+            feed = first.feed_mm_min if first is not None and first.kind != "G0" else None
+            source = first.source if first is not None else Source(run.name, 0)
+            items.append(Motion(
+                kind="G0" if feed is None else "G1", source=source, plane="G17",
+                end_wcs={a: v - self._wcs_offset.get(a, 0.0) for a, v in point.items()},
+                end_mcs=dict(point), start_mcs=here, feed_mm_min=feed, inserted=True,
+            ))
+        items.extend(self._parked)
+        run.requeue(items)
+        self._parked = None
 
     def _stop_jog(self, keep_rest: bool) -> None:
         positions = self.motion.positions_mcs()

@@ -20,18 +20,19 @@ from __future__ import annotations
 
 import re
 from collections import deque
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable, Mapping
 
 from nck.canon import (
     AuxFunction, Dwell, EdgeSelect, Message, Motion, ProgramEnd, SpindleCommand, StopPoint,
-    ToolSelect, UserAlarm,
+    Source, ToolSelect, UserAlarm,
 )
 from nck.errors import NcAlarmError
 from nck.interp.api import BlockResult, Interpreter
 from nck.motion.api import MotionSystem
 from nck.status import BlockView
 
+PUSHED_HISTORY = 256  # motion items remembered for REPOS (more than any look-ahead buffer)
 MAX_BLOCKS_PER_CYCLE = 50  # interpretation blocks per IPO cycle when blocks cost no time
 SEARCH_BLOCK_LIMIT = 200_000
 DISPLAY_HISTORY = 8
@@ -117,6 +118,8 @@ class ProgramRun:
         self.blocks_executed = 0
         self.last_motion: Motion | None = None
         self.segment_ends: dict[tuple[str, int], Mapping[str, float]] = {}
+        self.pushed: deque[Motion | Dwell] = deque(maxlen=PUSHED_HISTORY)
+        self._requeued: deque[Motion | Dwell] = deque()
         self._transform = transform or (lambda motion: motion)
         self._pending: BlockResult | None = None
         self._index = 0
@@ -128,6 +131,12 @@ class ProgramRun:
     def feed(self, motion: MotionSystem, options: RunOptions, budget_s: float) -> list[RunEvent]:
         """Advance the run by one IPO cycle's worth of interpretation."""
         events: list[RunEvent] = []
+        while self._requeued:
+            if not motion.can_accept():
+                return events
+            item = self._requeued.popleft()
+            self.pushed.append(item)
+            motion.push(item)
         if self.phase in (WAIT_IDLE, WAIT_STOP, WAIT_END):
             if not motion.is_idle():
                 return events
@@ -187,6 +196,7 @@ class ProgramRun:
                     self.segment_ends[(src.file, src.line)] = command.end_mcs
                     if len(self.segment_ends) > 64:
                         self.segment_ends.pop(next(iter(self.segment_ends)))
+                self.pushed.append(command)
                 motion.push(command)
             elif isinstance(command, StopPoint):
                 kind = command.kind.upper()
@@ -253,6 +263,31 @@ class ProgramRun:
         if self.phase in (FEEDING, WAIT_IDLE):
             self._pending = None
             self._stop_at_idle(reason)
+
+    def park(self, current: Source | None, position_mcs: Mapping[str, float]) -> list[Motion | Dwell]:
+        """The motion items not yet executed, from the one at ``current`` on.
+
+        Called before the kernel discards the motion buffer of an interrupted
+        program (mode change, JOG); the first item is cut to start at
+        ``position_mcs``. ``current`` None (nothing was executing) gives [].
+        """
+        items = list(self._requeued)
+        if current is not None:
+            history = list(self.pushed)
+            key = (current.file, current.line)
+            for index in range(len(history) - 1, -1, -1):
+                if (history[index].source.file, history[index].source.line) == key:
+                    rest = history[index:]
+                    if isinstance(rest[0], Motion):
+                        rest[0] = replace(rest[0], start_mcs=dict(position_mcs))
+                    items = rest + items
+                    break
+        self._requeued.clear()
+        return items
+
+    def requeue(self, items: list[Motion | Dwell]) -> None:
+        """Push ``items`` (REPOS approach, then the parked remainder) before new blocks."""
+        self._requeued.extend(items)
 
     @property
     def at_stop(self) -> bool:
