@@ -61,6 +61,7 @@ def run_program(
     on_command: Callable[[canon.CanonCommand], None] | None = None,
     dialect: str = "siemens",
     text: str | None = None,
+    skip_levels: frozenset[int] = frozenset(),
 ) -> RunResult:
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
@@ -68,6 +69,7 @@ def run_program(
     ``on_command`` sees every canonical command as it is produced.
     """
     interp = Interpreter(machine, programs, data, dialect=dialect)
+    interp.skip_levels = frozenset(skip_levels)
     result = RunResult(status="ended", interpreter=interp)
     try:
         if text is not None:

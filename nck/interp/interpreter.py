@@ -128,7 +128,7 @@ class Interpreter:
         self.dialect = dialect
         self.table = gtable(dialect)
         self.builder = MotionBuilder(machine, data)
-        self.skip_levels: frozenset[int] = frozenset({0})
+        self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
         self.position_source: Callable[[str], float] | None = None
         self._axis_names = frozenset(a.name for a in machine.axes)
@@ -744,6 +744,15 @@ class _BlockRun:
     # ------------------------------------------------------------ assignment
     def _assign_stmt(self, stmt: ast.Assign) -> None:
         target = stmt.target
+        if isinstance(target, ast.Index) and target.name == "AX" and self.interp.lookup("AX") is None:
+            # AX[<axis expression>]=value: axis word with a computed axis name
+            if len(target.indices) != 1:
+                raise NcAlarmError(17020, "AX")
+            axis = self._index_value(target.indices[0])
+            if not isinstance(axis, str) or not self.interp.is_axis(axis):
+                raise NcAlarmError(14092, "AX")
+            self._address(ast.AddressWord(str(axis), stmt.value))
+            return
         if isinstance(target, ast.Name):
             name = target.name
             if self.interp.lookup(name) is None and not name.startswith("$") and self._is_address(name):
@@ -900,6 +909,13 @@ class _BlockRun:
                 number = int(text[1:])
             else:
                 label = text
+        if label is not None and program.find_label(label, self.index, "FB") is None \
+                and self.interp.lookup(label) is not None:
+            # GOTOF <variable>: the destination is the variable's (string) value
+            text = to_string(self.eval(ast.Name(label))).strip().upper()
+            label, number = text, None
+            if text[:1] == "N" and text[1:].isdigit():
+                label, number = None, int(text[1:])
         found = None
         if number is not None:
             found = program.find_number(number, self.index, direction)

@@ -129,22 +129,32 @@ class MotionBuilder:
         modal.edge = 1 if modal.tool else 0
 
     def _spindle(self, words: BlockWords, modal: ModalState, out: list[canon.CanonCommand]) -> None:
+        """S / M3 M4 M5 M19 per spindle (``S2=``, ``M2=3`` address spindle 2; plain = master)."""
         src = words.source
-        speed = words.words.get("S")
-        state = None
-        states = [SPINDLE_M[v] for ext, v in words.m_codes if v in SPINDLE_M and ext in (None, 1)]
-        if len(states) > 1:
-            raise NcAlarmError(12000, "M")
-        if states:
-            state = states[0]
-        if speed is not None:
-            if speed < 0:
+        speeds: dict[int, float] = {}
+        states: dict[int, str] = {}
+        if "S" in words.words:
+            speeds[1] = words.words["S"]
+        for (address, ext), value in words.extended.items():
+            if address == "S":
+                speeds[ext or 1] = value
+        for ext, value in words.m_codes:
+            if value in SPINDLE_M:
+                spindle = ext or 1
+                if spindle in states:
+                    raise NcAlarmError(12000, "M")
+                states[spindle] = SPINDLE_M[value]
+        for spindle in sorted(set(speeds) | set(states)):
+            speed = speeds.get(spindle)
+            state = states.get(spindle)
+            if speed is not None and speed < 0:
                 raise NcAlarmError(12160, "S")
-            modal.spindle_speed_rpm = speed
-        if state is not None:
-            modal.spindle_state = state
-        if speed is not None or state is not None:
-            out.append(canon.SpindleCommand(src, 1, state=state, speed_rpm=speed))
+            if spindle == 1:
+                if speed is not None:
+                    modal.spindle_speed_rpm = speed
+                if state is not None:
+                    modal.spindle_state = state
+            out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed))
 
     # ------------------------------------------------------------------ motion
     def _motion(self, words: BlockWords, modal: ModalState) -> canon.Motion | None:

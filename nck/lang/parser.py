@@ -454,6 +454,8 @@ class _Parser:
             if tok.kind != NAME or tok.text in RESERVED:
                 raise _syntax(tok)
             name = self.advance().text
+            if len(name) < 2 or name in VALUE_ADDRESSES or name.startswith("$"):
+                raise NcAlarmError(12080, name)
         dims = 0
         if self.is_op("["):
             self.advance()
