@@ -45,6 +45,11 @@ class Motion:
         lead_mm: thread lead for G33 (mm per spindle revolution).
         gcodes: the active member of every G group (group number -> G code) at this block.
         inserted: True for segments inserted by the NC (chamfers, roundings, cycle moves).
+        arc_normal_mcs: arcs only: unit vector in the MCS about which the arc turns
+            counter-clockwise (right-hand rule). ``kind`` stays the programmed G2/G3;
+            a mirroring or rotating frame can make the machine turn the other way or in
+            another plane: G3 in G17 without frames gives ``{"X": 0, "Y": 0, "Z": 1}``,
+            G2 gives Z = -1; with ``MIRROR X0`` a G2 gives Z = +1.
     """
 
     kind: str
@@ -63,6 +68,7 @@ class Motion:
     lead_mm: float | None = None
     gcodes: Mapping[int, str] = field(default_factory=dict)
     inserted: bool = False
+    arc_normal_mcs: Mapping[str, float] | None = None
 
 
 @dataclass(frozen=True, slots=True)
