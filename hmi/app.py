@@ -199,7 +199,14 @@ class HmiApp(App):
     def program_names(self) -> list[str]:
         """Names of the part programs the kernel can select (for the selection dialog)."""
         nck = self.bridge.nck
-        for holder in (nck, getattr(nck, "programs", None)):
+        source = getattr(nck, "programs", None)
+        lister = getattr(source, "all_programs", None)
+        if callable(lister):
+            try:
+                return [e.name if e.directory == "MPF" else e.path for e in lister() if e.kind == "MPF"]
+            except Exception:  # a broken listing shows as an empty list
+                return []
+        for holder in (nck, source):
             lister = getattr(holder, "list_programs", None)
             if callable(lister):
                 try:
@@ -455,48 +462,43 @@ class HmiApp(App):
 
 def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
               program: str | None = None) -> tuple[Any, Callable[[], None] | None]:
-    """Build the kernel for the app; return it and the function that saves NC data on quit.
+    """Build the kernel on the NC data directory; return it and the function run on quit.
 
-    The NC data directory and persistence belong to ``nck.storage`` / ``nck.persistence``;
-    this only passes the options through where the kernel accepts them.
+    The NC file system (``nck.storage``) lives in ``<data dir>/nc``; the training
+    programs of ``data/programs`` are installed into a fresh directory. With
+    ``ephemeral`` the kernel works on a temporary copy that is deleted on quit.
+    ``program`` (a local file or a program name) is selected in AUTO at start.
     """
     from nck.kernel import Nck
     from nck.machine import load_machine
+    from nck.paths import open_data_dir
+    from nck.resources import data_path
+    from nck.storage import NcFileSystem
 
     config = load_machine(machine)
-    kwargs: dict[str, Any] = {"machine": config}
-    opener = getattr(Nck, "open", None)
-    if callable(opener):
-        nck = opener(config, data_dir=data_dir, ephemeral=ephemeral)
-    else:
-        programs = _program_source(data_dir, program)
-        if programs is not None:
-            kwargs["programs"] = programs
-        nck = Nck(**kwargs)
+    root, copy = open_data_dir(data_dir, ephemeral)
+    files = NcFileSystem(root / "nc")
+    files.install_samples(data_path("programs"))
+    nck = Nck(machine=config, programs=files)
+    files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
     if program:
+        name = program
+        local = Path(program)
+        if local.is_file():
+            name = files.import_file(local, overwrite=True).name
         nck.submit(cmd.SelectMode("AUTO"))
-        nck.submit(cmd.SelectProgram(Path(program).name))
-    saver = getattr(nck, "save", None)
-    return nck, saver if callable(saver) else None
+        result = nck.submit(cmd.SelectProgram(name))
+        if isinstance(result, Rejected):
+            raise ValueError(f"program {program}: {result.reason}")
 
+    def on_quit() -> None:
+        saver = getattr(nck, "save", None)
+        if callable(saver):
+            saver()
+        if copy is not None:
+            copy.cleanup()
 
-def _program_source(data_dir: str | None, program: str | None) -> Any:
-    """A program source for the kernel: the NC file system if present, else a directory."""
-    try:
-        from nck.storage import open_storage  # type: ignore[attr-defined]
-
-        return open_storage(data_dir)
-    except (ImportError, AttributeError, TypeError):
-        pass
-    from hmi.programs import DirectoryPrograms
-
-    folders = [Path(program).parent] if program else []
-    if data_dir:
-        folders.append(Path(data_dir))
-    from nck.resources import data_path
-
-    folders.append(data_path("programs"))
-    return DirectoryPrograms(folders)
+    return nck, on_quit
 
 
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,

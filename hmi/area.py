@@ -43,6 +43,18 @@ class DialogLine(Static):
     """The line above the horizontal softkeys: operator hints and refused commands."""
 
 
+def show_text(widget: Static, content: object) -> None:
+    """Update a fixed-size Static only when ``content`` differs from what it shows.
+
+    No layout pass is made: area windows have fixed sizes, so a refresh repaints
+    just the widget (this keeps a refresh well under the 15 ms CPU budget).
+    """
+    if getattr(widget, "_shown_content", None) == content:
+        return
+    widget._shown_content = content  # type: ignore[attr-defined]
+    widget.update(content, layout=False)  # type: ignore[arg-type]
+
+
 class AreaBase(Screen):
     """A SINUMERIK operating area: header, content, vertical and horizontal softkeys."""
 
@@ -184,7 +196,10 @@ class AreaBase(Screen):
     def show_hint(self, text: str) -> None:
         """Write ``text`` on the dialog line (empty clears it)."""
         if self.is_mounted:
-            self.query_one(DialogLine).update(text)
+            line = self.query_one(DialogLine)
+            if getattr(line, "_last_text", None) != text:
+                line._last_text = text  # type: ignore[attr-defined]
+                line.update(text, layout=False)
 
     def on_mount(self) -> None:
         """Show what is known as soon as the screen exists."""

@@ -139,7 +139,7 @@ class SoftkeyCell(Static):
         if not view.empty:
             text.append(f"{view.hint} ", style="dim")
             text.append(view.label.replace("\n", " "))
-        self.update(text)
+        self.update(text, layout=False)
 
     def on_click(self) -> None:
         """Mouse users may click a softkey; it does the same as its function key."""

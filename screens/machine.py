@@ -19,7 +19,7 @@ from textual.widgets import ContentSwitcher, Input, Static, TextArea
 from nck import commands as cmd
 from nck.status import NckStatus
 
-from hmi.area import AreaBase
+from hmi.area import AreaBase, show_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.blocks import BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
@@ -289,25 +289,25 @@ class MachineScreen(AreaBase):
             switcher.current = view_id
         self._focus_for(view_id)
         if view_id == "view-jog":
-            self.query_one("#jog-info", Static).update(self._jog_text(status))
+            show_text(self.query_one("#jog-info", Static), self._jog_text(status))
         elif view_id == "view-mda":
-            self.query_one("#mda-title", Static).update(
+            show_text(self.query_one("#mda-title", Static), 
                 f" MDA — type blocks, CYCLE START (Alt+G) runs them   {channel.program_state}")
         elif view_id == "view-auto":
-            self.query_one("#auto-title", Static).update(self._auto_title(status))
+            show_text(self.query_one("#auto-title", Static), self._auto_title(status))
             program = (self.hmi.program_text(channel.selected_program)
                        if channel.selected_program else None)
             self.query_one("#auto-blocks", BlockWindow).show(channel, program)
         elif view_id == "view-gfunc":
             self.query_one(GFunctionsTable).show(channel.modal.gcodes)
         elif view_id == "view-aux":
-            self.query_one("#aux-table", Static).update(self._aux_text(status))
+            show_text(self.query_one("#aux-table", Static), self._aux_text(status))
         elif view_id == "view-progctl":
-            self.query_one("#progctl-table", Static).update(self._progctl_text(status))
+            show_text(self.query_one("#progctl-table", Static), self._progctl_text(status))
         elif view_id == "view-times":
-            self.query_one("#times-table", Static).update(self._times_text(status))
+            show_text(self.query_one("#times-table", Static), self._times_text(status))
         elif view_id == "view-search":
-            self.query_one("#search-info", Static).update(
+            show_text(self.query_one("#search-info", Static), 
                 f" Program: {channel.selected_program or '—'}   {channel.stop_reason}")
         self.refresh_softkeys()
 

@@ -66,4 +66,4 @@ class BlockWindow(Static):
         if key == self._key:
             return
         self._key = key
-        self.update(block_lines(blocks, current, self.height_lines))
+        self.update(block_lines(blocks, current, self.height_lines), layout=False)

@@ -66,7 +66,7 @@ class GFunctionsLine(Static):
         key = tuple(sorted(gcodes.items()))
         if key != self._key:
             self._key = key
-            self.update(main_groups_line(gcodes))
+            self.update(main_groups_line(gcodes), layout=False)
 
 
 class GFunctionsTable(Static):
@@ -81,4 +81,4 @@ class GFunctionsTable(Static):
         key = tuple(sorted(gcodes.items()))
         if key != self._key:
             self._key = key
-            self.update(all_groups_table(gcodes))
+            self.update(all_groups_table(gcodes), layout=False)

@@ -130,4 +130,4 @@ class AreaHeader(Vertical):
     def _set(widget: Static, text: str) -> None:
         if getattr(widget, "_last_text", None) != text:
             widget._last_text = text  # type: ignore[attr-defined]
-            widget.update(text)
+            widget.update(text, layout=False)

@@ -24,6 +24,7 @@ from typing import Iterable, Mapping
 from rich.segment import Segment
 from rich.style import Style
 from rich.text import Text
+from textual.binding import Binding
 from textual.strip import Strip
 from textual.widgets import TextArea
 
@@ -258,6 +259,11 @@ class NcEditor(TextArea):
     NcEditor { border: none; padding: 0; }
     """
 
+    BINDINGS = [
+        Binding("ctrl+home", "document_start", "Start of program", show=False),
+        Binding("ctrl+end", "document_end", "End of program", show=False),
+    ]
+
     def __init__(self, text: str = "", *, read_only: bool = False, **kwargs: object) -> None:
         super().__init__(
             text,
@@ -270,6 +276,14 @@ class NcEditor(TextArea):
         )
         self.cursor_blink = False
         self._error_marks: dict[int, ErrorMark] = {}
+
+    def action_document_start(self) -> None:
+        """Cursor to the first line."""
+        self.move_cursor((0, 0), center=True)
+
+    def action_document_end(self) -> None:
+        """Cursor to the end of the last line."""
+        self.move_cursor(self.document.end, center=True)
 
     # -- errors --------------------------------------------------------------------------------
 

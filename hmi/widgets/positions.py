@@ -62,4 +62,4 @@ class PositionWindow(Static):
         if key == self._key:
             return
         self._key = key
-        self.update(position_lines(status, mcs, selected_axis))
+        self.update(position_lines(status, mcs, selected_axis), layout=False)

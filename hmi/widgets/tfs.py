@@ -48,4 +48,4 @@ class TfsWindow(Static):
         if key == self._key:
             return
         self._key = key
-        self.update(tfs_lines(status))
+        self.update(tfs_lines(status), layout=False)

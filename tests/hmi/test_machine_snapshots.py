@@ -137,3 +137,8 @@ def test_help_overlay(snap_compare) -> None:
 def test_area_menu(snap_compare) -> None:
     """F9: the operating areas on the horizontal softkeys."""
     assert snap_compare(app_on(FakeNck()), terminal_size=SIZE, press=["f9"])
+
+
+def test_small_terminal_120x36(snap_compare) -> None:
+    """At 120×36 the frame still fits: detail is dropped, nothing breaks."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=(120, 36))
