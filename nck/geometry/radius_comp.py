@@ -85,7 +85,9 @@ from nck.geometry.trc_geometry import (
     line,
     offset,
     offset_radius,
+    length,
     param,
+    param_tolerance,
     path_length_mm,
     same_point,
     scale,
@@ -577,22 +579,38 @@ class RadiusCompensator:
         inside = rest[0].inside_before
         detect = head.owner.collision_detection
         chosen: tuple[int, Vec] | None = None
-        window = 0
-        for index, piece in enumerate(rest):
-            if piece.role == "contour" and piece.owner is not head.owner:
-                window += 1
-            if window > self.settings.max_check_blocks:
-                break
-            if index == 0 and not inside:
-                continue
-            if not inside and not detect:
-                break
-            exclude = head.curve.end if not inside else None
-            crossing = self._valid_crossing(head.curve, piece.curve, exclude)
-            if crossing is not None:
-                chosen = (index, crossing)
-                if not detect:
+        # Where the head would end with its neighbour alone.
+        if inside:
+            adjacent = self._valid_crossing(head.curve, rest[0].curve, None)
+            if adjacent is not None:
+                chosen = (0, adjacent)
+                limit = param(head.curve, adjacent)
+            else:
+                limit = math.inf
+        else:
+            limit = length(head.curve)
+        if chosen is None and inside or detect:
+            # Search later blocks. A crossing counts only before the neighbour's
+            # crossing on the head (the offset path would form a loop there); of
+            # several, the first along the head wins, for equal points the later block.
+            tolerance = param_tolerance(head.curve)
+            best = limit - tolerance
+            window = 0
+            for index, piece in enumerate(rest):
+                if piece.role == "contour" and piece.owner is not head.owner:
+                    window += 1
+                if window > self.settings.max_check_blocks:
                     break
+                if index == 0:
+                    continue
+                exclude = head.curve.end if not inside else None
+                crossing = self._valid_crossing(head.curve, piece.curve, exclude)
+                if crossing is None:
+                    continue
+                at = param(head.curve, crossing)
+                if at < best + tolerance:
+                    chosen = (index, crossing)
+                    best = min(best, at)
         if chosen is None:
             if inside:
                 raise _alarm(ALARM_COLLISION, rest[0].owner)

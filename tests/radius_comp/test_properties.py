@@ -1,0 +1,102 @@
+"""Property: the compensated path of a convex polygon stays exactly r from the contour."""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+from nck.errors import NcAlarmError
+from nck.geometry.radius_comp import TrcSettings, compensate
+from nck.geometry.trc_geometry import distance_to_curve, line, sample
+from tests.radius_comp.helpers import assert_continuous, lin
+
+
+@st.composite
+def convex_polygons(draw):
+    """Vertices on a circle (so the polygon is convex), counter-clockwise, gaps ≥ 0.3 rad."""
+    count = draw(st.integers(min_value=3, max_value=9))
+    radius = draw(st.floats(min_value=20.0, max_value=80.0))
+    gaps = draw(st.lists(st.floats(min_value=0.3, max_value=2.5), min_size=count, max_size=count))
+    total = sum(gaps)
+    assume(all(g / total * 2 * math.pi < math.pi - 0.1 for g in gaps))
+    start = draw(st.floats(min_value=0.0, max_value=2 * math.pi))
+    angles, acc = [], start
+    for gap in gaps:
+        angles.append(acc)
+        acc += gap / total * 2 * math.pi
+    return [(radius * math.cos(a), radius * math.sin(a)) for a in angles]
+
+
+def closed_program(vertices, clockwise, tool_radius, cdon=False):
+    """Approach the middle of the first edge, go round, end there, G40 away.
+
+    Starting and ending in the middle of an edge makes the first and last
+    transition tangent, so every contour element has a neighbour on both sides.
+    """
+    pts = list(reversed(vertices)) if clockwise else list(vertices)
+    mid = ((pts[0][0] + pts[1][0]) / 2, (pts[0][1] + pts[1][1]) / 2)
+    cx = sum(p[0] for p in pts) / len(pts)
+    cy = sum(p[1] for p in pts) / len(pts)
+    if clockwise:  # G41 outside: start far outside, beyond the middle of the edge
+        away = (mid[0] - cx, mid[1] - cy)
+        k = (tool_radius + 30.0) / math.hypot(*away)
+        outside = (mid[0] + away[0] * k, mid[1] + away[1] * k)
+        start = outside
+    else:  # G41 inside: start at the centroid
+        start = (cx, cy)
+    path = [mid] + pts[1:] + [pts[0], mid]
+    blocks = [lin(start, mid, "N1", radius=tool_radius, collision_detection=cdon)]
+    for index, (a, b) in enumerate(zip(path, path[1:])):
+        blocks.append(lin(a, b, f"N{10 * (index + 1)}", radius=tool_radius, collision_detection=cdon))
+    blocks.append(lin(mid, start, "N999", side="G40", radius=tool_radius))
+    contour = [line(a, b) for a, b in zip(path, path[1:])]
+    return blocks, contour
+
+
+def assert_all_at_distance(out, contour, tool_radius):
+    for element in out:
+        if element.role not in ("contour", "corner") or element.kind == "dummy":
+            continue
+        for point in sample(element.curve(), 8):
+            nearest = min(distance_to_curve(point, edge) for edge in contour)
+            assert abs(nearest - tool_radius) < 1e-6, (element, point, nearest)
+
+
+@settings(max_examples=60, deadline=None)
+@given(convex_polygons(), st.floats(min_value=0.2, max_value=8.0), st.sampled_from(["G450", "G451"]))
+def test_outside_offset_of_convex_polygon_is_at_distance_r(vertices, tool_radius, mode):
+    blocks, contour = closed_program(vertices, clockwise=True, tool_radius=tool_radius)
+    blocks = [b.__class__(**{**{f: getattr(b, f) for f in b.__dataclass_fields__}, "corner_mode": mode})
+              for b in blocks]
+    # MD20230 = 0: no switch to the intersection at very flat corners, so every
+    # G450 corner is a circle and the whole path keeps exactly r.
+    out = compensate(blocks, TrcSettings(curve_insert_limit_deg=0.0) if mode == "G450" else None)
+    assert_continuous(out)
+    if mode == "G450":
+        assert_all_at_distance(out, contour, tool_radius)
+    else:
+        # G451: the offset lines are at distance r, the intersection corners farther.
+        for element in out:
+            if element.role == "contour":
+                a, b = element.start, element.end
+                m = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                assert min(distance_to_curve(m, e) for e in contour) <= tool_radius + 1e-6
+
+
+@settings(max_examples=60, deadline=None)
+@given(convex_polygons(), st.floats(min_value=0.2, max_value=6.0))
+def test_inside_offset_of_convex_polygon_is_at_distance_r(vertices, tool_radius):
+    # Inside, short edges can vanish from the offset; CDON (collision detection)
+    # finds the crossing past them (CDOF only checks neighbours, as on the control).
+    blocks, contour = closed_program(vertices, clockwise=False, tool_radius=tool_radius, cdon=True)
+    try:
+        out = compensate(blocks)
+    except NcAlarmError as error:
+        # Only a genuine bottleneck may stop the program.
+        assert error.number == 10751
+        assume(False)
+        return
+    assert_continuous(out)
+    assert_all_at_distance(out, contour, tool_radius)
