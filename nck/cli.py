@@ -15,13 +15,10 @@ from typing import Any, TextIO
 
 from nck import __version__, canon
 from nck.errors import NcAlarmError
-from nck.headless import alarm_message, format_alarm, run_program
-from nck.interp.program import load_program
+from nck.headless import alarm_message, check_program, format_alarm, run_program
 from nck.interp.sources import DirectorySource, read_text_file
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
-
-CHECK_BLOCK_BUDGET = 200_000  # blocks a check may interpret before giving up quietly
 
 
 class CliError(Exception):
@@ -173,14 +170,10 @@ def _check(options: argparse.Namespace) -> int:
     files = [_read_program(p) for p in options.programs]
     problems = 0
     for path, text in files:
-        program = load_program(path.name, text)
-        found = program.problems()
-        if not found:
-            data = NcData()
-            _apply_settings(options.set, machine, data)
-            outcome = run_program(machine, _source(path, options), data, path.name, text=text,
-                                  max_blocks=CHECK_BLOCK_BUDGET, dialect=options.dialect)
-            found = list(outcome.alarms)
+        data = NcData()
+        _apply_settings(options.set, machine, data)
+        found = check_program(machine, _source(path, options), path.name, text, data,
+                              dialect=options.dialect)
         for alarm in found:
             print(format_alarm(alarm), file=sys.stderr)
         problems += len(found)

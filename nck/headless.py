@@ -1,10 +1,12 @@
 """Headless program run: the loop behind ``nck run`` and ``nck check``.
 
-For now the loop drives the interpreter directly: each motion segment is
-placed at its end point, and ``machine_time_s`` is the sum of the blocks'
-interpretation cost plus a feed-based estimate of each segment (path length /
-feed; rapid traverse at the slowest programmed axis' MD32000). The kernel will
-later take over this loop; keep :func:`run_program`'s signature.
+``nck run`` goes through the kernel (:func:`run_on_kernel`): the program is
+selected in AUTOMATIC with every axis referenced, started with NC START, and
+simulated time advances until program end, an alarm or the timeout, so
+``machine_time_s`` is the kernel's simulated time. ``nck check`` (a block
+budget) interprets without the kernel (:func:`interpret_only`): each segment
+is placed at its end point and ``machine_time_s`` is the blocks' cost plus a
+feed-based estimate (rapid traverse at the slowest axis' MD32000).
 """
 
 from __future__ import annotations
@@ -67,7 +69,127 @@ def run_program(
 
     ``text`` runs the given text under ``program_name`` instead of reading it.
     ``on_command`` sees every canonical command as it is produced.
+
+    With ``max_blocks`` (``nck check``) the interpreter is driven directly and
+    no time is simulated; otherwise the run goes through the kernel
+    (:func:`run_on_kernel`): AUTOMATIC, axes referenced, select, NC START,
+    ticks until program end, an alarm or ``timeout_s`` of simulated time.
     """
+    if max_blocks is None:
+        return run_on_kernel(machine, programs, data, program_name, timeout_s=timeout_s,
+                             on_command=on_command, dialect=dialect, text=text,
+                             skip_levels=skip_levels)
+    return interpret_only(machine, programs, data, program_name, timeout_s=timeout_s,
+                          max_blocks=max_blocks, on_command=on_command, dialect=dialect,
+                          text=text, skip_levels=skip_levels)
+
+
+class _TextOverlay:
+    """A program source that answers ``name`` with ``text`` and delegates the rest."""
+
+    def __init__(self, base: ProgramSource, name: str, text: str) -> None:
+        self.base, self.name, self.text = base, name, text
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        if name.upper() == self.name.upper():
+            return self.name, self.text
+        return self.base.read_program(name)
+
+
+KERNEL_CHUNK_S = 10.0  # simulated seconds between timeout checks
+
+
+def run_on_kernel(
+    machine: MachineConfig,
+    programs: ProgramSource,
+    data: NcData,
+    program_name: str,
+    *,
+    timeout_s: float | None = None,
+    on_command: Callable[[canon.CanonCommand], None] | None = None,
+    dialect: str = "siemens",
+    text: str | None = None,
+    skip_levels: frozenset[int] = frozenset(),
+) -> RunResult:
+    """The headless run through :class:`nck.kernel.Nck` (see :func:`run_program`).
+
+    M0/M1 stops are continued with NC START at once (nobody is at the machine).
+    """
+    from nck import commands as cmd  # noqa: PLC0415 - the kernel imports this module's users
+    from nck.kernel import Nck  # noqa: PLC0415
+
+    source: ProgramSource = programs if text is None else _TextOverlay(programs, program_name, text)
+    interpreters: list[Interpreter] = []
+
+    def factory(m: MachineConfig, p: ProgramSource, d: NcData) -> Interpreter:
+        interp = Interpreter(m, p, d, dialect=dialect)
+        interpreters.append(interp)
+        return interp
+
+    nck = Nck(machine, data, source, referenced=True, interpreter_factory=factory)
+    result = RunResult(status="ended")
+
+    def on_block(block: object) -> None:
+        result.blocks += 1
+        for command in getattr(block, "commands", ()):
+            result.commands.append(command)
+            if on_command is not None:
+                on_command(command)
+
+    nck.block_listener = on_block
+    nck.alarm_listener = result.alarms.append
+    nck.submit(cmd.SetProgramControl("skip_levels", frozenset(skip_levels)))
+    nck.submit(cmd.SelectMode("AUTO"))
+    if isinstance(nck.submit(cmd.SelectProgram(program_name)), cmd.Rejected):
+        result.status = "alarm"
+        result.alarms.append(NcAlarmError(14011, program_name).located(program_name, None, None))
+        return result
+    started = nck.submit(cmd.CycleStart())
+    result.interpreter = interpreters[0] if interpreters else None
+    if isinstance(started, cmd.Rejected):
+        result.status = "alarm"
+        if not result.alarms:
+            result.alarms.append(NcAlarmError(1, started.reason))
+        return result
+    while True:
+        elapsed = nck.time_s
+        budget = KERNEL_CHUNK_S if timeout_s is None else min(KERNEL_CHUNK_S, timeout_s - elapsed)
+        if budget <= 0.0 or not nck.run_until(lambda k: k.situation.channel != "active", budget):
+            if timeout_s is not None and nck.time_s >= timeout_s - 1e-9:
+                result.status = "timeout"
+                break
+            continue
+        status = nck.status()
+        if status.channel.channel_state == "reset":
+            break
+        if status.channel.stop_reason in ("M0", "M1") and not status.alarms:
+            nck.submit(cmd.CycleStart())
+            continue
+        break
+    if nck.internal_errors and not any(a.number == 1 for a in result.alarms):
+        result.alarms.append(NcAlarmError(1, "internal error"))
+    if result.status != "timeout" and (result.alarms or nck.situation.channel != "reset"):
+        result.status = "alarm"
+    result.machine_time_s = nck.time_s
+    return result
+
+
+def interpret_only(
+    machine: MachineConfig,
+    programs: ProgramSource,
+    data: NcData,
+    program_name: str,
+    *,
+    timeout_s: float | None = None,
+    max_blocks: int | None = None,
+    on_command: Callable[[canon.CanonCommand], None] | None = None,
+    dialect: str = "siemens",
+    text: str | None = None,
+    skip_levels: frozenset[int] = frozenset(),
+) -> RunResult:
+    """Interpret ``program_name`` without the kernel (``nck check``): each segment is
+    placed at its end point; ``machine_time_s`` is the blocks' cost plus a
+    feed-based estimate of each segment."""
     interp = Interpreter(machine, programs, data, dialect=dialect)
     interp.skip_levels = frozenset(skip_levels)
     result = RunResult(status="ended", interpreter=interp)
@@ -113,6 +235,28 @@ def run_program(
             break
     result.machine_time_s = clock
     return result
+
+
+CHECK_BLOCK_BUDGET = 200_000  # blocks a check may interpret before it stops quietly
+
+
+def check_program(machine: MachineConfig, programs: ProgramSource, name: str, text: str,
+                  data: NcData | None = None, max_blocks: int = CHECK_BLOCK_BUDGET,
+                  dialect: str = "siemens") -> list[NcAlarmError]:
+    """Every problem of a program: static ones (all lines), else the first run-time alarm.
+
+    Static problems are syntax errors and control-structure errors of every
+    line; when there are none, the program is interpreted (without moving
+    anything) up to its end or ``max_blocks`` blocks to find run-time alarms.
+    """
+    from nck.interp.program import load_program
+
+    found = load_program(name, text).problems()
+    if found:
+        return found
+    outcome = run_program(machine, programs, data or NcData(), name, text=text,
+                          max_blocks=max_blocks, dialect=dialect)
+    return list(outcome.alarms)
 
 
 def segment_time_s(machine: MachineConfig, motion: canon.Motion) -> float:

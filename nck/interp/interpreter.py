@@ -48,6 +48,7 @@ BLOCK_COST_S = 0.001  # simulated time one interpreted block costs (1 ms)
 MAX_PROGRAM_LEVELS = 16  # main program + 15 subprogram levels (alarm 14012 beyond)
 MAX_PASSES = 9999
 PROGRAM_CONTROL_M = {0: "M0", 1: "M1", 2: "M2", 17: "M17", 30: "M30"}
+MODE_WORDS = frozenset(("I", "J", "K", "RP", "AP"))  # non-axis words that take AC()/IC()
 
 
 # ----------------------------------------------------------------------------- bindings
@@ -199,10 +200,8 @@ class Interpreter:
     def sync_position(self, position_mcs: Mapping[str, float]) -> None:
         """Take over actual machine positions (after JOG, before a start or REPOS)."""
         modal = self._state.modal
-        for axis, value in position_mcs.items():
-            if axis in modal.position_mcs:
-                modal.position_mcs[axis] = float(value)
-                modal.position_wcs[axis] = float(value)
+        known = {a: float(v) for a, v in position_mcs.items() if a in modal.position_mcs}
+        self.builder.sync_position(modal, known)  # WCS via frames and tool offset
 
     def current_source(self) -> canon.Source | None:
         """File, line and block number of the next block (None when finished)."""
@@ -315,7 +314,7 @@ class Interpreter:
         index = frame.pc
         line = program.lines[index]
         if line.error is not None:
-            raise copy.copy(line.error)
+            raise _clone(line.error)
         block = line.block
         assert block is not None
         source = canon.Source(program.name, line.number, block.number)
@@ -323,7 +322,7 @@ class Interpreter:
             frame.pc = index + 1
             return BlockResult(source, line.text, cost_s=BLOCK_COST_S, extras={"skipped": True})
         if index in program.structure_errors:
-            raise copy.copy(program.structure_errors[index])
+            raise _clone(program.structure_errors[index])
         run = _BlockRun(self, frame, index, source)
         commands = run.execute(block)
         return BlockResult(
@@ -353,6 +352,7 @@ class Interpreter:
         source = canon.Source(program.name, len(program.lines), None)
         commands: list[canon.CanonCommand] = []
         if frame.is_main:
+            commands.extend(self.builder.flush(self._state.modal))  # held-back chamfer/rounding
             commands.append(canon.ProgramEnd(source, "EOF"))
             self._program_end()
         else:
@@ -608,6 +608,8 @@ class _BlockRun:
         if self.words.gcodes or self.words.axes or self.words.words or self.words.m_codes \
                 or self.words.h_codes or self.words.extended:
             commands.extend(interp.builder.build(self.words, interp.modal))
+        if m_control or self.end_kind is not None or any(isinstance(c, canon.StopPoint) for c in self.late):
+            commands.extend(interp.builder.flush(interp.modal))  # held-back chamfer/rounding
         for _, value in m_control:
             kind = PROGRAM_CONTROL_M[value]
             if kind in ("M0", "M1"):
@@ -689,7 +691,9 @@ class _BlockRun:
             self.words.axes[address] = (float(to_number(value, address)), mode)
             return
         if mode is not None:
-            raise NcAlarmError(12080, f"{address}={mode}")
+            if address not in MODE_WORDS and not (address[0] in "IJK" and address[1:].isdigit()):
+                raise NcAlarmError(12080, f"{address}={mode}")
+            self.words.word_modes[address] = mode  # I=AC(…), AP=IC(…): read by the motion builder
         if address == "G":
             raise NcAlarmError(12080, "G=")
         number = to_number(value, address)
@@ -723,6 +727,8 @@ class _BlockRun:
                 raise NcAlarmError(12550, address)
         elif address not in VALUE_ADDRESSES and not (address[0] in "IJK" and address[1:].isdigit()):
             raise NcAlarmError(12550, address)
+        if word.indices and address == "FA":  # FA[X]=…: one feed per positioning axis
+            address = f"FA[{to_string(self._index_value(word.indices[0]))}]"
         if address in self.words.words:
             raise NcAlarmError(12000, address)
         self.words.words[address] = float(number)
@@ -1007,6 +1013,11 @@ class _BlockRun:
             self.late.append(canon.StopPoint(self.source, "STOPRE"))
         elif name == "RET":
             self.end_kind = "RET"
+
+
+def _clone(alarm: NcAlarmError) -> NcAlarmError:
+    """A fresh copy of a stored alarm (stored alarms are raised again on every pass)."""
+    return NcAlarmError(alarm.number, *alarm.params, file=alarm.file, line=alarm.line, n=alarm.n)
 
 
 def _whole(number: Any, address: str) -> int:

@@ -10,6 +10,7 @@ the interpreter snapshots the whole object before each block.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from nck.lang.gcodes import GTable
 from nck.machine import MachineConfig
@@ -42,6 +43,7 @@ class ModalState:
     tool: int = 0
     edge: int = 0
     aux: dict[str, str] = field(default_factory=dict)
+    geometry: Any = None  # nck.geometry.path_state.GeometryState, created by the motion builder
 
     @classmethod
     def initial(cls, machine: MachineConfig, table: GTable) -> "ModalState":
@@ -62,6 +64,8 @@ class ModalState:
         self.gcodes = table.reset_state(reset_overrides(machine, table))
         self.feed = 0.0
         self.tool_selected = self.tool
+        if self.geometry is not None:
+            self.geometry.reset()  # programmable frame, pole, RNDM; settable frame re-read
 
 
 def reset_overrides(machine: MachineConfig, table: GTable) -> dict[int, str]:

@@ -12,29 +12,43 @@ Interface::
 
     builder = MotionBuilder(machine, data)
     commands = builder.build(words, modal)   # may raise NcAlarmError
+    commands = builder.flush(modal)          # before a stop point / program end
 
-``build`` updates ``modal`` (positions, feed, spindle, tool, edge) in place
-and returns the commands in output order (tool, edge, spindle, other aux
-functions, then motion). The interpreter snapshots ``modal`` before the block,
-so an alarm here leaves no trace.
+``build`` updates ``modal`` (positions, feed, spindle, tool, edge and the
+geometry state ``modal.geometry``) in place and returns the commands in output
+order (tool, edge, spindle, other aux functions, then motion). The
+interpreter snapshots ``modal`` before the block, so an alarm here leaves no
+trace. A block with a chamfer or rounding (CHF/CHR/RND/RNDM) holds its motion
+back until the next path block is known; :meth:`MotionBuilder.flush` emits it
+unchanged when the program stops or ends first.
 
-Current scope: G0/G1 with linear/rotary axes in G90/G91 with AC()/IC(),
-WCS = MCS (no frames, no tool offsets yet); F with G94 (mm/min) and G95
-(mm/rev × S); S, M3/M4/M5/M19; T with M6 (mill, MD22550 = 1) or direct change
-(MD22550 = 0); D.
+The path geometry (frames, planes, circles, polar coordinates, tool length,
+inch/metric, contour aids) lives in :mod:`nck.geometry.path_builder`; this
+module keeps the technology: feed (G93/G94/G95/G96/G97, F, FA), spindle (S,
+M3/M4/M5/M19, SPOS, LIMS), tool (T, M6 per MD22550, D) and G4 dwell.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
+from typing import Any
 
 from nck import canon
 from nck.errors import NcAlarmError
+from nck.geometry.path_builder import PathBuilder
+from nck.geometry.path_state import GeometryState
 from nck.interp.modal import ModalState
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
 
 SPINDLE_M = {3: "M3", 4: "M4", 5: "M5", 19: "M19"}
+FEED_TYPES_PER_REV = ("G95", "G96", "G97")
+ALARM_NO_TRANSVERSE_AXIS = 10870  # G96 without a transverse axis (MD20100)
+ALARM_G96_WITHOUT_S = 10900  # first G96 without a cutting speed S
+ALARM_LIMS_NEGATIVE = 14820  # negative maximum spindle speed for G96 (LIMS)
+ALARM_NO_FEED = 10860
+ALARM_PATH_VELOCITY = 14800
 
 
 @dataclass
@@ -46,8 +60,9 @@ class BlockWords:
         gcodes: every G code written in the block, group → code (modal and non-modal).
         axes: axis name → (value, mode) with mode ``"AC"``, ``"IC"`` or None (use G90/G91).
         words: other addresses → value (``F``, ``S``, ``T``, ``D``, ``I``, ``J``, ``K``,
-            ``CR``, ``AR``, ``TURN``, ``I1``, …); extended ones as ``S1``/``M2`` style keys
-            in ``extended``.
+            ``CR``, ``AR``, ``TURN``, ``I1``, ``RP``, ``AP``, ``RPL``, ``CHF``, …);
+            axis-indexed ones as ``FA[X]``; extended ones in ``extended``.
+        word_modes: ``"AC"``/``"IC"`` written around a non-axis word (``I=AC(10)``, ``AP=IC(30)``).
         extended: (address, extension) → value for ``S1=``, ``T1=``, ``H2=`` words.
         m_codes: the M functions of the block in order, as (extension or None, value).
         h_codes: the H functions, as (extension or None, value).
@@ -57,6 +72,7 @@ class BlockWords:
     gcodes: dict[int, str] = field(default_factory=dict)
     axes: dict[str, tuple[float, str | None]] = field(default_factory=dict)
     words: dict[str, float] = field(default_factory=dict)
+    word_modes: dict[str, str] = field(default_factory=dict)
     extended: dict[tuple[str, int], float] = field(default_factory=dict)
     m_codes: list[tuple[int | None, int]] = field(default_factory=list)
     h_codes: list[tuple[int | None, float]] = field(default_factory=list)
@@ -71,15 +87,26 @@ class MotionBuilder:
         self.path_axes = machine.path_axes
         mode = machine.md_value("MD22550")
         self.tool_change_with_m6 = (machine.kind != "lathe") if mode is None else bool(mode)
+        default_edge = machine.md_value("MD20270")
+        self.default_edge = 1 if default_edge is None else int(default_edge)
+        transverse = machine.md_value("MD20100")
+        self.transverse_axis = transverse if transverse in self.path_axes else None
+        self.spindle_limit_rpm = _first_spindle_value(machine, "MD35100")
+        self.path = PathBuilder(machine, data)
 
-    # ------------------------------------------------------------------ entry point
+    # ------------------------------------------------------------------ entry points
     def build(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
         """Return the commands of the block and update ``modal``."""
+        geo = self.path.state(modal)
+        if 8 in words.gcodes:
+            self.path.select_settable(modal, geo)
+        if words.gcodes.get(2) == "G4":
+            return self._dwell(words, modal)
         out: list[canon.CanonCommand] = []
         src = words.source
-        self._feed(words, modal)
+        self._feed(words, modal, geo)
         self._tool(words, modal, out)
-        self._spindle(words, modal, out)
+        self._spindle(words, modal, geo, out)
         for ext, value in words.m_codes:
             if value in SPINDLE_M or value == 6:
                 continue
@@ -88,22 +115,97 @@ class MotionBuilder:
         for ext, value in words.h_codes:
             out.append(canon.AuxFunction(src, "H", float(value), ext))
             modal.aux["H"] = _fmt(value)
-        motion = self._motion(words, modal)
-        if motion is not None:
-            out.append(motion)
+        if words.gcodes.get(3) is not None:
+            out.extend(self.path.frame_block(words, modal, geo))
+            return out
+        if self.path.has_path_words(words, modal):
+            feed = self._feed_info(modal, geo)
+            motions = self.path.motion(words, modal, geo, feed)
+            out.extend(motions)
+            if modal.gcodes.get(15) == "G96" and motions:
+                self._constant_cutting_speed(modal, geo, out, src)
+        elif any(k in words.words for k in ("CHF", "CHR", "RND")):
+            raise NcAlarmError(10882)
+        elif "RNDM" in words.words:
+            value = float(words.words["RNDM"]) * self.path.units(modal).position_mm
+            if value < 0:
+                raise NcAlarmError(16500)
+            geo.rndm_mm = value
         return out
 
-    # ------------------------------------------------------------------ technology
-    def _feed(self, words: BlockWords, modal: ModalState) -> None:
+    def flush(self, modal: ModalState) -> list[canon.CanonCommand]:
+        """Emit a motion held back for a chamfer/rounding (program stop or end reached)."""
+        return list(self.path.flush(modal))
+
+    def sync_position(self, modal: ModalState, position_mcs: dict[str, float]) -> None:
+        """Take over actual machine positions; the programmed WCS follows via frames and tool."""
+        self.path.sync_position(modal, position_mcs)
+
+    def wcs_from_mcs(self, modal: ModalState, position_mcs: dict[str, float]) -> dict[str, float]:
+        """WCS (program units) of machine positions under the active frames and tool offset."""
+        return self.path.wcs_from_mcs(modal, position_mcs)
+
+    # ------------------------------------------------------------------ dwell
+    def _dwell(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
+        """G4 F… (seconds) or G4 S… (revolutions of the master spindle); F and S stay as they were."""
+        out: list[canon.CanonCommand] = list(self.flush(modal))
+        seconds = words.words.get("F")
+        revolutions = words.words.get("S")
+        if seconds is None and revolutions is None:
+            raise NcAlarmError(12080, "G4")
+        for value in (seconds, revolutions):
+            if value is not None and value < 0:
+                raise NcAlarmError(12160, "G4")
+        out.append(canon.Dwell(words.source, seconds=seconds, revolutions=revolutions))
+        return out
+
+    # ------------------------------------------------------------------ feed
+    def _feed(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> None:
+        feed_type = modal.gcodes.get(15, "G94")
+        if feed_type != geo.feed_type:
+            # Changing between G93, G94 and G95 deletes the programmed F (V1, 5.1).
+            if _feed_family(feed_type) != _feed_family(geo.feed_type):
+                modal.feed = 0.0
+            geo.feed_type = feed_type
         if "F" in words.words:
             feed = words.words["F"]
             if feed <= 0:
-                raise NcAlarmError(14800)
+                raise NcAlarmError(ALARM_PATH_VELOCITY)
             modal.feed = feed
+        for key, value in words.words.items():
+            if key.startswith("FA[") and key.endswith("]"):
+                if value <= 0:
+                    raise NcAlarmError(ALARM_PATH_VELOCITY)
+                geo.axis_feeds[key[3:-1]] = value * self.path.units(modal).feed_mm
 
+    def _feed_info(self, modal: ModalState, geo: GeometryState) -> dict[str, Any]:
+        kind = modal.gcodes.get(1, "G1")
+        if kind == "G0":
+            return {"feed": None, "feed_mm_min": None, "inverse_time": False}
+        if kind == "G33":
+            lead_speed = modal.spindle_speed_rpm
+            if lead_speed <= 0:
+                raise NcAlarmError(ALARM_PATH_VELOCITY)
+            return {"feed": modal.feed or None, "feed_mm_min": None, "inverse_time": False,
+                    "per_rev_rpm": lead_speed}
+        if modal.feed <= 0:
+            raise NcAlarmError(ALARM_NO_FEED)
+        feed_type = modal.gcodes.get(15, "G94")
+        units = self.path.units(modal)
+        if feed_type == "G93":
+            return {"feed": modal.feed, "feed_mm_min": None, "inverse_time": True}
+        if feed_type in FEED_TYPES_PER_REV or feed_type in ("G952", "G962", "G972"):
+            rpm = modal.spindle_speed_rpm
+            if rpm <= 0:
+                raise NcAlarmError(ALARM_PATH_VELOCITY)
+            return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm * rpm,
+                    "inverse_time": False}
+        return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm, "inverse_time": False}
+
+    # ------------------------------------------------------------------ tool
     def _tool(self, words: BlockWords, modal: ModalState, out: list[canon.CanonCommand]) -> None:
         src = words.source
-        change = any(v == 6 for _, v in words.m_codes)
+        change = any(v == 6 and ext in (None, 0, 1) for ext, v in words.m_codes)
         if "T" in words.words:
             tool = int(words.words["T"])
             if tool < 0:
@@ -112,27 +214,37 @@ class MotionBuilder:
             direct = not self.tool_change_with_m6
             out.append(canon.ToolSelect(src, tool, change=direct or change))
             if direct:
-                self._change_tool(modal)
+                self._change_tool(modal, "D" in words.words)
         elif change:
             out.append(canon.ToolSelect(src, modal.tool_selected, change=True))
         if change and self.tool_change_with_m6:
-            self._change_tool(modal)
+            self._change_tool(modal, "D" in words.words)
         if "D" in words.words:
             edge = int(words.words["D"])
             if edge < 0:
                 raise NcAlarmError(12160, "D")
             modal.edge = edge
+            self.path.tool_vector(modal)  # a D that does not exist for the tool: alarm 17180
             out.append(canon.EdgeSelect(src, edge))
 
-    def _change_tool(self, modal: ModalState) -> None:
+    def _change_tool(self, modal: ModalState, edge_programmed: bool) -> None:
+        """The tool change: new tool, and the default edge of MD20270 unless D is in the block."""
         modal.tool = modal.tool_selected
-        modal.edge = 1 if modal.tool else 0
+        if edge_programmed:
+            return
+        if not modal.tool:
+            modal.edge = 0
+        elif self.default_edge >= 0:
+            modal.edge = self.default_edge
 
-    def _spindle(self, words: BlockWords, modal: ModalState, out: list[canon.CanonCommand]) -> None:
-        """S / M3 M4 M5 M19 per spindle (``S2=``, ``M2=3`` address spindle 2; plain = master)."""
+    # ------------------------------------------------------------------ spindle
+    def _spindle(self, words: BlockWords, modal: ModalState, geo: GeometryState,
+                 out: list[canon.CanonCommand]) -> None:
+        """S / M3 M4 M5 M19 / SPOS per spindle (``S2=``, ``M2=3`` address spindle 2; plain = master)."""
         src = words.source
         speeds: dict[int, float] = {}
         states: dict[int, str] = {}
+        positions: dict[int, float] = {}
         if "S" in words.words:
             speeds[1] = words.words["S"]
         for (address, ext), value in words.extended.items():
@@ -144,6 +256,28 @@ class MotionBuilder:
                 if spindle in states:
                     raise NcAlarmError(12000, "M")
                 states[spindle] = SPINDLE_M[value]
+                if value == 19:
+                    positions[spindle] = float(self.data.setting_data.get("SD43240", 0.0) or 0.0)
+        for key in ("SPOS", "SPOSA"):
+            if key in words.words:
+                states[1] = "SPOS"
+                positions[1] = float(words.words[key]) % 360.0
+        if "LIMS" in words.words:
+            lims = words.words["LIMS"]
+            if lims < 0:
+                raise NcAlarmError(ALARM_LIMS_NEGATIVE)
+            geo.lims_rpm = lims
+        feed_type = modal.gcodes.get(15, "G94")
+        if feed_type == "G96":
+            if self.transverse_axis is None:
+                raise NcAlarmError(ALARM_NO_TRANSVERSE_AXIS)
+            if 1 in speeds:
+                if speeds[1] < 0:
+                    raise NcAlarmError(12160, "S")
+                geo.cutting_speed_m_min = speeds.pop(1)
+            elif geo.cutting_speed_m_min <= 0:
+                raise NcAlarmError(ALARM_G96_WITHOUT_S)
+            speeds[1] = self._g96_speed(modal, geo)
         for spindle in sorted(set(speeds) | set(states)):
             speed = speeds.get(spindle)
             state = states.get(spindle)
@@ -153,56 +287,50 @@ class MotionBuilder:
                 if speed is not None:
                     modal.spindle_speed_rpm = speed
                 if state is not None:
-                    modal.spindle_state = state
-            out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed))
+                    modal.spindle_state = state if state != "SPOS" else "M19"
+            out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed,
+                                            position_deg=positions.get(spindle)))
 
-    # ------------------------------------------------------------------ motion
-    def _motion(self, words: BlockWords, modal: ModalState) -> canon.Motion | None:
-        if not words.axes:
-            return None
-        kind = modal.gcodes.get(1, "G1")
-        if kind not in ("G0", "G1"):
-            raise NcAlarmError(12550, kind)
-        absolute = modal.gcodes.get(14, "G90") == "G90"
-        start_mcs = dict(modal.position_mcs)
-        end_wcs = dict(modal.position_wcs)
-        for axis, (value, mode) in words.axes.items():
-            if axis not in end_wcs:
-                raise NcAlarmError(12550, axis)
-            incremental = mode == "IC" or (mode is None and not absolute)
-            end_wcs[axis] = end_wcs[axis] + value if incremental else value
-        feed = None
-        feed_mm_min = None
-        if kind != "G0":
-            if modal.feed <= 0:
-                raise NcAlarmError(10860)
-            feed = modal.feed
-            feed_mm_min = self._feed_mm_min(modal)
-        end_mcs = dict(end_wcs)  # WCS = MCS until frames and tool offsets arrive
-        modal.position_wcs = end_wcs
-        modal.position_mcs = end_mcs
-        exact = modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9"
-        return canon.Motion(
-            kind=kind,
-            source=words.source,
-            plane=modal.gcodes.get(6, "G17"),
-            end_wcs=end_wcs,
-            end_mcs=end_mcs,
-            start_mcs=start_mcs,
-            feed=feed,
-            feed_mm_min=feed_mm_min,
-            exact_stop=exact,
-            exact_stop_window=modal.gcodes.get(12, "G601"),
-            gcodes=dict(modal.gcodes),
-        )
+    def _g96_speed(self, modal: ModalState, geo: GeometryState) -> float:
+        """Spindle speed for the constant cutting speed at the programmed transverse position."""
+        assert self.transverse_axis is not None
+        radius_mm = abs(geo.wcs_mm.get(self.transverse_axis, 0.0))
+        speed_mm_min = geo.cutting_speed_m_min * 1000.0 * self.path.units(modal).feed_mm
+        limit = geo.lims_rpm if geo.lims_rpm is not None else self.spindle_limit_rpm
+        if radius_mm <= 1e-9:
+            return float(limit) if limit else 0.0
+        rpm = speed_mm_min / (2.0 * math.pi * radius_mm)
+        if limit:
+            rpm = min(rpm, float(limit))
+        return round(rpm, 6)
 
-    def _feed_mm_min(self, modal: ModalState) -> float:
-        feed_type = modal.gcodes.get(15, "G94")
-        if feed_type == "G95":
-            if modal.spindle_speed_rpm <= 0:
-                raise NcAlarmError(14800)
-            return modal.feed * modal.spindle_speed_rpm
-        return modal.feed
+    def _constant_cutting_speed(self, modal: ModalState, geo: GeometryState,
+                                out: list[canon.CanonCommand], src: canon.Source) -> None:
+        if self.transverse_axis is None or geo.cutting_speed_m_min <= 0:
+            return
+        rpm = self._g96_speed(modal, geo)
+        if abs(rpm - modal.spindle_speed_rpm) > 1e-6:
+            modal.spindle_speed_rpm = rpm
+            out.append(canon.SpindleCommand(src, 1, speed_rpm=rpm))
+
+
+def _feed_family(feed_type: str) -> str:
+    """``time`` (G93), ``rev`` (per revolution) or ``lin`` (per minute) feed."""
+    if feed_type == "G93":
+        return "time"
+    if feed_type in ("G95", "G96", "G97", "G952", "G962", "G972"):
+        return "rev"
+    return "lin"
+
+
+def _first_spindle_value(machine: MachineConfig, ident: str) -> float | None:
+    value = machine.md.get(ident)
+    if isinstance(value, dict):
+        for spindle in machine.spindles:
+            if spindle in value:
+                return float(value[spindle])
+        return None
+    return float(value) if value is not None else None
 
 
 def _fmt(value: float) -> str:
