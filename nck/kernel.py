@@ -136,6 +136,10 @@ class Nck:
         self._password_level: int | None = None
         self._seq = 0
         self._last_body: NckStatus | None = None
+        # Optional observers for headless runs and tools (not for the HMI, which
+        # reads status() and the alarm log): every interpreted block, every alarm raised.
+        self.block_listener: Callable[[Any], None] | None = None
+        self.alarm_listener: Callable[[NcAlarmError], None] | None = None
         self._apply_overrides()
 
     # ------------------------------------------------------------------ API
@@ -289,7 +293,7 @@ class Nck:
             interp = self._interpreter("AUTO")
             interp.reset()
             interp.start(self._selected)
-            self._begin_run(ProgramRun("AUTO", self._selected, interp, self._adjust_motion))
+            self._begin_run(self._new_run("AUTO", self._selected, interp))
             self.runtime.start_from_reset()
             self._transition("program_start")
             return Accepted()
@@ -327,7 +331,7 @@ class Nck:
                 interp = self._interpreter("MDA")
                 interp.reset()
                 interp.start_text(MDA_NAME, self._mda_text)
-                self._overlay = ProgramRun("MDA", MDA_NAME, interp, self._adjust_motion)
+                self._overlay = self._new_run("MDA", MDA_NAME, interp)
             self._transition("overlay_start")
             return Accepted()
         if self._owner == "MDA" and self._run is not None:
@@ -340,9 +344,21 @@ class Nck:
         interp = self._interpreter("MDA")
         interp.reset()
         interp.start_text(MDA_NAME, self._mda_text)
-        self._begin_run(ProgramRun("MDA", MDA_NAME, interp, self._adjust_motion))
+        self._begin_run(self._new_run("MDA", MDA_NAME, interp))
         self._transition("program_start")
         return Accepted()
+
+    def _new_run(self, kind: str, name: str, interp: Interpreter) -> ProgramRun:
+        sync = getattr(interp, "sync_position", None)
+        if sync is not None:
+            sync(self._path_motion().positions_mcs())
+        flags = getattr(interp, "flags", None)
+        if isinstance(flags, dict):
+            flags["test"] = bool(self._pc["program_test"])
+            flags["dry_run"] = bool(self._pc["dry_run"])
+        run = ProgramRun(kind, name, interp, self._adjust_motion)
+        run.listener = self.block_listener
+        return run
 
     def _begin_run(self, run: ProgramRun) -> None:
         self._run = run
@@ -536,7 +552,7 @@ class Nck:
         interp = self._interpreter("AUTO")
         interp.reset()
         interp.start(self._selected)
-        run = ProgramRun("AUTO", self._selected, interp, self._adjust_motion)
+        run = self._new_run("AUTO", self._selected, interp)
         try:
             result = run.search(command.target, self.motion.positions_mcs())
         except NcAlarmError:
@@ -787,9 +803,16 @@ class Nck:
         return interp
 
     def _apply_skip_levels(self, interp: Interpreter) -> None:
+        levels = frozenset(self._pc["skip_levels"])  # type: ignore[arg-type]
         setter = getattr(interp, "set_skip_levels", None)
         if setter is not None:
-            setter(frozenset(self._pc["skip_levels"]))  # type: ignore[arg-type]
+            setter(levels)
+        elif hasattr(interp, "skip_levels"):
+            interp.skip_levels = levels  # type: ignore[attr-defined]
+
+    def _actual_position(self, axis: str) -> float:
+        """Actual MCS position of ``axis`` (for ``$AA_IM`` and friends)."""
+        return float(self._path_motion().positions_mcs().get(axis, 0.0))
 
     def _path_motion(self) -> Any:
         """The motion system programs run on: the simulated one under program test."""
@@ -859,11 +882,15 @@ class Nck:
         return DEFAULT_IPO_S
 
     def _raise(self, error: NcAlarmError) -> None:
+        if self.alarm_listener is not None:
+            self.alarm_listener(error)
         block = f"N{error.n}" if error.n is not None else (str(error.line) if error.line else "")
         self.alarms.raise_alarm(error.number, error.params, now_s=self._time_s, block=block,
                                 file=error.file, line=error.line, n=error.n)
 
     def _raise_number(self, number: int, *params: object) -> None:
+        if self.alarm_listener is not None:
+            self.alarm_listener(NcAlarmError(number, *params))
         self.alarms.raise_alarm(number, tuple(str(p) for p in params), now_s=self._time_s)
 
     def _internal_error(self, exc: BaseException) -> None:

@@ -121,6 +121,7 @@ class ProgramRun:
         self.pushed: deque[Motion | Dwell] = deque(maxlen=PUSHED_HISTORY)
         self._requeued: deque[Motion | Dwell] = deque()
         self._transform = transform or (lambda motion: motion)
+        self.listener: Callable[[BlockResult], None] | None = None  # sees every interpreted block
         self._pending: BlockResult | None = None
         self._index = 0
         self._stop_after: str | None = None
@@ -174,6 +175,8 @@ class ProgramRun:
         return events
 
     def _take(self, result: BlockResult) -> None:
+        if self.listener is not None:
+            self.listener(result)
         self._pending = result
         self._index = 0
         self.current = result
