@@ -1,0 +1,614 @@
+"""Path motion of one block: end points, circles, polar moves, frames, tool length.
+
+The interpreter's motion builder (:mod:`nck.interp.motion_builder`) handles the
+technology words (F, S, T, D, M, H) and calls :class:`PathBuilder` for
+
+* frame and pole instructions (G group 3: TRANS … AMIRROR, G58, G59, G110 …
+  G112) — :meth:`PathBuilder.frame_block`;
+* path motion (G0, G1, G2, G3, CIP, CT, G33, polar RP/AP, helix TURN,
+  chamfers and roundings) — :meth:`PathBuilder.motion`.
+
+Coordinates: programmed values are converted into millimetres of the WCS
+(G70/G700 inch, DIAMON diameter), mapped through the frame chain into the BCS
+and the tool length vector is added to get the MCS. A geometry axis that is
+not programmed in a block keeps its machine position (a new offset is
+travelled when the axis is next programmed) unless a rotation couples the
+axes. The canonical motion carries the WCS in program units and the MCS in mm.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from nck import canon
+from nck.errors import NcAlarmError
+from nck.geometry import circles
+from nck.geometry.chain import SUPPRESSION_CODES, frame_from_work_offset
+from nck.geometry.circles import Arc, CircleTolerance
+from nck.geometry.contour_aids import Corner, LineElement, chamfer, rounding
+from nck.geometry.frames import Frame
+from nck.geometry.path_state import GeometryState, PendingCorner
+from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane, plane
+from nck.geometry.tool_length import length_offset, resolve_edge
+from nck.geometry.transform import Transform
+from nck.geometry.units import UnitSystem
+from nck.machine import MachineConfig
+from nck.ncdata import NcData, WorkOffset
+
+ALARM_CIRCLE_NOT_DETERMINED = circles.ALARM_CIRCLE_END_POINT
+ALARM_AID_WITHOUT_MOTION = 10882  # chamfer/rounding programmed in a block without path motion
+ALARM_THREAD_LEAD_ZERO = 16720  # G33 without (or with zero) thread lead
+ARC_KINDS = ("G2", "G3", "CIP", "CT")
+PATH_KINDS = ("G0", "G1", "G33") + ARC_KINDS
+INTERP_LETTERS = "IJK"
+ROUND_DIGITS = 9
+
+
+def _r(value: float) -> float:
+    """Round away floating noise (sub-nanometre) and negative zero."""
+    return round(float(value), ROUND_DIGITS) + 0.0
+
+
+class PathBuilder:
+    """Computes the path geometry of blocks for one machine (see module docstring)."""
+
+    def __init__(self, machine: MachineConfig, data: NcData) -> None:
+        self.machine = machine
+        self.data = data
+        self.geo_axes: tuple[str, str, str] = GEOMETRY_AXES_DEFAULT
+        self.path_axes = machine.path_axes
+        self.kinds = {a.name: a.kind for a in machine.axes}
+        self.diameter_axes = frozenset(a.name for a in machine.axes if a.diameter)
+        self.tolerance = CircleTolerance(
+            float(machine.md_value("MD21000", default=circles.CIRCLE_ERROR_CONST_MM)),
+            float(machine.md_value("MD21010", default=circles.CIRCLE_ERROR_FACTOR)),
+        )
+        self.mirror_toggle = bool(machine.md_value("MD10612", default=1))
+        self.basic_metric = bool(machine.md_value("MD10240", default=1))
+
+    # ================================================================ state
+    def state(self, modal: Any) -> GeometryState:
+        """The geometry state inside ``modal`` (created and loaded on first use / after RESET)."""
+        geo = getattr(modal, "geometry", None)
+        if geo is None:
+            geo = GeometryState()
+            geo.wcs_mm = {axis: float(modal.position_wcs.get(axis, 0.0)) for axis in self.path_axes}
+            modal.geometry = geo
+        code = modal.gcodes.get(8, "G500")
+        if not geo.loaded:
+            geo.frames = geo.frames.with_base(self._base_frame(modal))
+            geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
+            geo.feed_type = modal.gcodes.get(15, "G94")
+            geo.loaded = True
+        elif geo.frames.settable_code != code:
+            geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
+        return geo
+
+    def select_settable(self, modal: Any, geo: GeometryState) -> None:
+        """G500/G54… written in the block: (re)activate the settable frame from the NC data."""
+        code = modal.gcodes.get(8, "G500")
+        geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
+
+    def _settable_frame(self, code: str, modal: Any) -> Frame:
+        offset = self.data.settable_frames.get(code)
+        if offset is None:
+            return Frame(geometry_axes=self.geo_axes)
+        return frame_from_work_offset(offset, self.geo_axes, self.units(modal).data_mm)
+
+    def _base_frame(self, modal: Any) -> Frame:
+        offset: WorkOffset = self.data.base_frame
+        return frame_from_work_offset(offset, self.geo_axes, self.units(modal).data_mm)
+
+    def units(self, modal: Any) -> UnitSystem:
+        """The active inch/metric code (G group 13) against the basic system."""
+        return UnitSystem(modal.gcodes.get(13, "G71"), basic_metric=self.basic_metric)
+
+    def plane(self, modal: Any) -> Plane:
+        """The active working plane (G group 6)."""
+        return plane(modal.gcodes.get(6, "G17"), self.geo_axes)
+
+    # ================================================================ unit helpers
+    def _is_length(self, axis: str) -> bool:
+        return self.kinds.get(axis, "linear") == "linear"
+
+    def _diameter(self, axis: str, modal: Any) -> bool:
+        return axis in self.diameter_axes and modal.gcodes.get(29) == "DIAMON"
+
+    def to_mm(self, axis: str, value: float, modal: Any, units: UnitSystem) -> float:
+        """A programmed axis value in internal units (mm radius, or degrees)."""
+        if not self._is_length(axis):
+            return float(value)
+        out = float(value) * units.position_mm
+        return out / 2.0 if self._diameter(axis, modal) else out
+
+    def from_mm(self, axis: str, value: float, modal: Any, units: UnitSystem) -> float:
+        """An internal value back in programmed units (WCS display)."""
+        if not self._is_length(axis):
+            return _r(value)
+        out = float(value) / units.position_mm
+        return _r(out * 2.0 if self._diameter(axis, modal) else out)
+
+    def wcs_view(self, geo: GeometryState, modal: Any) -> dict[str, float]:
+        """The programmed WCS position in program units, per path axis."""
+        units = self.units(modal)
+        return {a: self.from_mm(a, geo.wcs_mm.get(a, 0.0), modal, units) for a in self.path_axes}
+
+    # ================================================================ tool
+    def tool_vector(self, modal: Any) -> dict[str, float]:
+        """Tool length vector (mm) of the active T/D in the active plane.
+
+        A D of a tool that has cutting-edge data but not this edge is alarm
+        17180; a tool without any data counts as a tool without offsets.
+        """
+        tool, edge = int(modal.tool), int(modal.edge)
+        if tool == 0 or edge == 0:
+            return {axis: 0.0 for axis in self.geo_axes}
+        if self.data.edge(tool, edge) is None and not any(t == tool for t, _ in self.data.tools):
+            return {axis: 0.0 for axis in self.geo_axes}
+        found = resolve_edge(self.data, tool, edge)
+        sd = self.data.setting_data
+        return length_offset(
+            found,
+            modal.gcodes.get(6, "G17"),
+            self.geo_axes,
+            length_const=int(sd.get("SD42940", 0) or 0),
+            length_type=int(sd.get("SD42950", 0) or 0),
+            wear_sign=int(sd.get("SD42930", 0) or 0),
+            data_mm=self.units(modal).data_mm,
+        )
+
+    # ================================================================ frames / pole
+    def frame_block(self, words: Any, modal: Any, geo: GeometryState) -> list[canon.Motion]:
+        """Execute a G group 3 instruction; returns motions flushed ahead of it."""
+        code = words.gcodes.get(3)
+        flushed = self.flush(modal)
+        units = self.units(modal)
+        values = {a: self.to_mm(a, v, modal, units) for a, (v, _mode) in words.axes.items()}
+        angles = {a: float(v) for a, (v, _mode) in words.axes.items()}
+        frames = geo.frames
+        prog = frames.programmable
+        geo_axes = self.geo_axes
+        if code == "TRANS":
+            prog = Frame.ctrans(values, geo_axes)
+        elif code == "ATRANS":
+            prog = prog.atrans(values)
+        elif code in ("ROT", "AROT"):
+            base = Frame(geometry_axes=geo_axes) if code == "ROT" else prog
+            if "RPL" in words.words:
+                prog = base.arot_plane(self.plane(modal), float(words.words["RPL"]))
+            else:
+                prog = base.arot(angles)
+        elif code == "SCALE":
+            prog = Frame.cscale(angles, geo_axes)
+        elif code == "ASCALE":
+            prog = prog.ascale(angles)
+        elif code == "MIRROR":
+            prog = Frame.cmirror(angles.keys(), geo_axes)
+        elif code == "AMIRROR":
+            prog = prog.amirror(angles, toggle=self.mirror_toggle)
+        elif code == "G58":
+            prog = prog.g58(values)
+        elif code == "G59":
+            prog = prog.g59(values)
+        elif code in ("G110", "G111", "G112"):
+            self._pole(code, words, modal, geo, units)
+            return flushed
+        else:
+            return flushed  # G25/G26 working-area limits: not geometry
+        geo.frames = frames.with_programmable(prog)
+        return flushed
+
+    def _pole(self, code: str, words: Any, modal: Any, geo: GeometryState, units: UnitSystem) -> None:
+        pl = self.plane(modal)
+        a, o = pl.abscissa, pl.ordinate
+        last = (geo.wcs_mm.get(a, 0.0), geo.wcs_mm.get(o, 0.0))
+        if "RP" in words.words or "AP" in words.words:
+            rp = float(words.words.get("RP", 0.0)) * units.position_mm
+            ap = float(words.words.get("AP", 0.0))
+            geo.polar = geo.polar.define_pole(code, last, polar=(rp, ap))
+        else:
+            axes = {ax: self.to_mm(ax, v, modal, units) for ax, (v, _m) in words.axes.items()}
+            geo.polar = geo.polar.define_pole(code, last, axes=(axes.get(a, 0.0), axes.get(o, 0.0)))
+
+    # ================================================================ motion
+    def has_path_words(self, words: Any, modal: Any) -> bool:
+        """True when the block commands a path motion (axes, polar values, or circle data)."""
+        w = words.words
+        if words.axes or "RP" in w or "AP" in w:
+            return True
+        kind = modal.gcodes.get(1, "G1")
+        if kind in ("G2", "G3"):
+            return any(k in w for k in ("I", "J", "K", "CR", "AR", "TURN"))
+        if kind == "CIP":
+            return any(k in w for k in ("I1", "J1", "K1"))
+        return False
+
+    def motion(self, words: Any, modal: Any, geo: GeometryState, feed: dict[str, Any]) -> list[canon.Motion]:
+        """Path motion of the block (possibly several segments, possibly held back).
+
+        ``feed`` holds ``feed`` (programmed F or None), ``feed_mm_min`` (or None)
+        and ``inverse_time`` (G93: F is 1/min, the mm/min value follows from the length).
+        """
+        kind = modal.gcodes.get(1, "G1")
+        if kind not in PATH_KINDS:
+            raise NcAlarmError(12550, kind)
+        units = self.units(modal)
+        pl = self.plane(modal)
+        suppress = words.gcodes.get(9)
+        if suppress in SUPPRESSION_CODES:
+            return self.flush(modal) + [self._suppressed_move(kind, words, modal, geo, units, suppress, feed)]
+        start = dict(geo.wcs_mm)
+        end, programmed = self._targets(words, modal, geo, units, pl)
+        if kind in ARC_KINDS:
+            element: LineElement | Arc = self._arc(kind, words, modal, geo, units, pl, start, end)
+            programmed |= {pl.abscissa, pl.ordinate}
+            element_end = element.end
+            for i, axis in enumerate(self.geo_axes):
+                end[axis] = element_end[i]
+        else:
+            element = LineElement(self._vec(start), self._vec(end))
+        lead = None
+        if kind == "G33":
+            lead = self._thread_lead(words, geo, units)
+        context = {
+            "kind": kind, "source": words.source, "plane": pl.code, "programmed": programmed,
+            "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
+            "feed": feed, "lead": lead, "gcodes": dict(modal.gcodes),
+            "exact": modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9",
+            "window": modal.gcodes.get(12, "G601"), "modal": modal, "units": units,
+            "end_other": {a: end[a] for a in end if a not in self.geo_axes},
+        }
+        start_mcs = dict(modal.position_mcs)
+        geo.wcs_mm = end
+        out = self._with_contour_aids(words, modal, geo, pl, element, context, start_mcs, units)
+        geo.tangent = _end_tangent(element)
+        modal.position_wcs = self.wcs_view(geo, modal)
+        modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
+        return out
+
+    # ---------------------------------------------------------------- targets
+    def _vec(self, point: Mapping[str, float]) -> tuple[float, float, float]:
+        return (float(point.get("X", 0.0)), float(point.get("Y", 0.0)), float(point.get("Z", 0.0)))
+
+    def _targets(self, words: Any, modal: Any, geo: GeometryState, units: UnitSystem, pl: Plane):
+        absolute = modal.gcodes.get(14, "G90") == "G90"
+        end = dict(geo.wcs_mm)
+        for axis in self.geo_axes:
+            end.setdefault(axis, 0.0)
+        programmed: set[str] = set()
+        for axis, (value, mode) in words.axes.items():
+            v = self.to_mm(axis, value, modal, units)
+            incremental = mode == "IC" or (mode is None and not absolute)
+            end[axis] = end.get(axis, 0.0) + v if incremental else v
+            programmed.add(axis)
+        w = words.words
+        if ("RP" in w or "AP" in w) and modal.gcodes.get(1) != "CIP":
+            modes = getattr(words, "word_modes", {})
+            polar = geo.polar
+            rp, ap = polar.radius_mm, polar.angle_deg
+            if "RP" in w:
+                v = float(w["RP"]) * units.position_mm
+                inc = modes.get("RP") == "IC" or (modes.get("RP") is None and not absolute)
+                rp = rp + v if inc else v
+            if "AP" in w:
+                v = float(w["AP"])
+                inc = modes.get("AP") == "IC" or (modes.get("AP") is None and not absolute)
+                ap = ap + v if inc else v
+            geo.polar = polar.with_values(radius_mm=rp, angle_deg=ap)
+            target = geo.polar.target()
+            end[pl.abscissa], end[pl.ordinate] = target
+            programmed |= {pl.abscissa, pl.ordinate}
+        return end, programmed
+
+    # ---------------------------------------------------------------- circles
+    def _arc(self, kind: str, words: Any, modal: Any, geo: GeometryState, units: UnitSystem,
+             pl: Plane, start: dict[str, float], end: dict[str, float]) -> Arc | LineElement:
+        w = words.words
+        modes = getattr(words, "word_modes", {})
+        s, e = self._vec(start), self._vec(end)
+        turns_value = w.get("TURN", 0.0)
+        if turns_value != int(turns_value):
+            raise NcAlarmError(circles.ALARM_CIRCLE_TURNS)
+        turns = int(turns_value)
+        if kind == "CIP":
+            absolute = modal.gcodes.get(14, "G90") == "G90"
+            mid = list(s)
+            for i, letter in enumerate(INTERP_LETTERS):
+                key = f"{letter}1"
+                if key in w:
+                    v = float(w[key]) * units.position_mm
+                    inc = modes.get(key) == "IC" or (modes.get(key) is None and not absolute)
+                    mid[i] = s[i] + v if inc else v
+            arc = circles.arc_through_point(s, (mid[0], mid[1], mid[2]), e, turns)
+            return LineElement(s, e) if arc is None else arc
+        if kind == "CT":
+            if geo.tangent is None:
+                raise NcAlarmError(circles.ALARM_TANGENTIAL_CIRCLE)
+            return circles.arc_tangential(pl, s, e, geo.tangent, turns)
+        clockwise = kind == "G2"
+        if "RP" in w or "AP" in w:  # circle about the pole
+            pole = geo.polar.effective_pole
+            return circles.arc_from_center(pl, s, e, pole, clockwise, turns, self.tolerance)
+        centre_given = any(letter in w for letter in INTERP_LETTERS)
+        centre = self._centre(pl, s, w, modes, units)
+        if "CR" in w:
+            return circles.arc_from_radius(pl, s, e, float(w["CR"]) * units.position_mm, clockwise,
+                                           turns, self.tolerance)
+        if "AR" in w:
+            if centre_given:
+                end_app = pl.to_plane(e)[2]
+                return circles.arc_from_center_and_angle(pl, s, centre, float(w["AR"]), clockwise,
+                                                         end_app, turns)
+            return circles.arc_from_end_and_angle(pl, s, e, float(w["AR"]), clockwise, turns)
+        if not centre_given:
+            raise NcAlarmError(ALARM_CIRCLE_NOT_DETERMINED)
+        return circles.arc_from_center(pl, s, e, centre, clockwise, turns, self.tolerance)
+
+    def _centre(self, pl: Plane, s: tuple[float, float, float], w: Mapping[str, float],
+                modes: Mapping[str, str], units: UnitSystem) -> tuple[float, float]:
+        out = []
+        for index in pl.indices[:2]:
+            letter = INTERP_LETTERS[index]
+            if letter in w:
+                v = float(w[letter]) * units.position_mm
+                out.append(v if modes.get(letter) == "AC" else s[index] + v)
+            else:
+                out.append(s[index])
+        return (out[0], out[1])
+
+    def _thread_lead(self, words: Any, geo: GeometryState, units: UnitSystem) -> float:
+        leads = [float(words.words[k]) for k in INTERP_LETTERS if k in words.words]
+        if leads:
+            geo.thread_lead_mm = abs(leads[-1]) * units.position_mm
+        if not geo.thread_lead_mm:
+            raise NcAlarmError(ALARM_THREAD_LEAD_ZERO)
+        return geo.thread_lead_mm
+
+    # ---------------------------------------------------------------- suppression
+    def _suppressed_move(self, kind: str, words: Any, modal: Any, geo: GeometryState,
+                         units: UnitSystem, suppress: str, feed: dict[str, Any]) -> canon.Motion:
+        if kind not in ("G0", "G1"):
+            kind = "G1"
+        tool = self.tool_vector(modal)
+        full = geo.frames.transform()
+        reduced = geo.frames.transform(suppress)
+        start_mcs = dict(modal.position_mcs)
+        bcs = {a: start_mcs.get(a, 0.0) - tool.get(a, 0.0) for a in self.path_axes}
+        for axis in self.geo_axes:
+            bcs.setdefault(axis, 0.0)
+        point = reduced.inverse().apply(bcs)
+        absolute = modal.gcodes.get(14, "G90") == "G90"
+        for axis, (value, mode) in words.axes.items():
+            v = self.to_mm(axis, value, modal, units)
+            incremental = mode == "IC" or (mode is None and not absolute)
+            point[axis] = point.get(axis, 0.0) + v if incremental else v
+        end_bcs = reduced.apply(point)
+        end_mcs = dict(start_mcs)
+        for axis in words.axes:
+            if axis in end_mcs:
+                end_mcs[axis] = _r(end_bcs[axis] + tool.get(axis, 0.0))
+        wcs = full.inverse().apply(end_bcs)
+        for axis in words.axes:
+            geo.wcs_mm[axis] = wcs.get(axis, 0.0)
+        modal.position_wcs = self.wcs_view(geo, modal)
+        modal.position_mcs = end_mcs
+        geo.tangent = None
+        length = math.dist([start_mcs.get(a, 0.0) for a in self.path_axes],
+                           [end_mcs.get(a, 0.0) for a in self.path_axes])
+        return canon.Motion(
+            kind=kind, source=words.source, plane=modal.gcodes.get(6, "G17"),
+            end_wcs=dict(modal.position_wcs), end_mcs=end_mcs, start_mcs=start_mcs,
+            feed=feed.get("feed") if kind != "G0" else None,
+            feed_mm_min=self._feed_value(feed, length) if kind != "G0" else None,
+            exact_stop=True, exact_stop_window=modal.gcodes.get(12, "G601"),
+            gcodes=dict(modal.gcodes),
+        )
+
+    # ---------------------------------------------------------------- MCS mapping
+    def _mcs_of(self, point: tuple[float, float, float], context: Mapping[str, Any],
+                start_mcs: Mapping[str, float], keep: bool) -> dict[str, float]:
+        """MCS of a WCS geometry point; with ``keep`` unprogrammed axes stay where they are."""
+        transform: Transform = context["transform"]
+        tool: Mapping[str, float] = context["tool"]
+        full = {"X": point[0], "Y": point[1], "Z": point[2]}
+        full.update(context["end_other"])
+        bcs = transform.apply(full)
+        coupled = _couples_axes(transform)
+        out: dict[str, float] = {}
+        for axis in self.path_axes:
+            value = bcs.get(axis, 0.0) + tool.get(axis, 0.0)
+            if keep and axis not in context["programmed"] and (axis not in self.geo_axes or not coupled):
+                value = start_mcs.get(axis, value)
+            out[axis] = _r(value)
+        return out
+
+    def _wcs_out(self, point: tuple[float, float, float], context: Mapping[str, Any]) -> dict[str, float]:
+        modal, units = context["modal"], context["units"]
+        full = {"X": point[0], "Y": point[1], "Z": point[2]}
+        full.update(context["end_other"])
+        return {a: self.from_mm(a, full.get(a, 0.0), modal, units) for a in self.path_axes}
+
+    def _feed_value(self, feed: Mapping[str, Any], length_mm: float) -> float | None:
+        if feed.get("inverse_time"):
+            f = feed.get("feed") or 0.0
+            return max(length_mm, 1e-9) * float(f)
+        return feed.get("feed_mm_min")
+
+    def emit(self, element: LineElement | Arc, context: Mapping[str, Any], start_mcs: Mapping[str, float],
+             kind: str | None = None, inserted: bool = False, keep: bool = True) -> canon.Motion:
+        """Turn a WCS element into a canonical motion."""
+        kind = kind or context["kind"]
+        end_mcs = self._mcs_of(element.end, context, start_mcs, keep and not inserted)
+        center_wcs = center_mcs = None
+        normal = None
+        turns = 0
+        if isinstance(element, Arc):
+            center_wcs = self._wcs_out(element.center, context)
+            centre_point = self._mcs_of(element.center, context, start_mcs, keep=False)
+            transform: Transform = context["transform"]
+            applicate = plane(context["plane"], self.geo_axes).applicate
+            if applicate in self.path_axes and applicate not in context["programmed"] \
+                    and not _couples_axes(transform):
+                centre_point[applicate] = start_mcs.get(applicate, centre_point[applicate])
+            center_mcs = centre_point
+            normal = _map_normal(transform, element.axis)
+            turns = element.turns
+            if kind not in ARC_KINDS:
+                kind = "G2" if element.clockwise_in(plane(context["plane"], self.geo_axes)) else "G3"
+        length = element.length() if isinstance(element, Arc) else math.dist(element.start, element.end)
+        feed = context["feed"]
+        rapid = kind == "G0"
+        feed_mm_min = None if rapid else self._feed_value(feed, length)
+        if context["lead"] is not None and feed.get("per_rev_rpm"):
+            feed_mm_min = context["lead"] * float(feed["per_rev_rpm"])
+        return canon.Motion(
+            kind=kind,
+            source=context["source"],
+            plane=context["plane"],
+            end_wcs=self._wcs_out(element.end, context),
+            end_mcs=end_mcs,
+            start_mcs=dict(start_mcs),
+            center_wcs=center_wcs,
+            center_mcs=center_mcs,
+            turns=turns,
+            feed=None if rapid else feed.get("feed"),
+            feed_mm_min=feed_mm_min,
+            exact_stop=context["exact"],
+            exact_stop_window=context["window"],
+            lead_mm=context["lead"],
+            gcodes=context["gcodes"],
+            inserted=inserted,
+            arc_normal_mcs=normal,
+        )
+
+    # ---------------------------------------------------------------- chamfers and roundings
+    def _aid_of(self, words: Any, geo: GeometryState, units: UnitSystem) -> tuple[str, float] | None:
+        w = words.words
+        if "RNDM" in w:
+            value = float(w["RNDM"]) * units.position_mm
+            if value < 0:
+                raise NcAlarmError(16500)
+            geo.rndm_mm = value
+        for key in ("CHF", "CHR", "RND"):
+            if key in w:
+                value = float(w[key]) * units.position_mm
+                if value < 0:
+                    raise NcAlarmError(16500)
+                return (key, value)
+        if geo.rndm_mm > 0:
+            return ("RND", geo.rndm_mm)
+        return None
+
+    def _with_contour_aids(self, words: Any, modal: Any, geo: GeometryState, pl: Plane,
+                           element: LineElement | Arc, context: dict[str, Any],
+                           start_mcs: dict[str, float], units: UnitSystem) -> list[canon.Motion]:
+        out: list[canon.Motion] = []
+        in_plane = _moves_in_plane(element, pl)
+        pending = geo.pending
+        geo.pending = None
+        if pending is not None:
+            if in_plane and pending.context["plane"] == pl.code:
+                corner = self._corner(pl, pending, element)
+                first = self.emit(corner.first, pending.context, pending.context["start_mcs"])
+                out.append(first)
+                last_mcs = first.end_mcs
+                if corner.inserted is not None:
+                    inserted_context = dict(pending.context)
+                    inserted_context["feed"] = context["feed"]
+                    inserted_context["programmed"] = set(pending.context["programmed"]) | {pl.abscissa, pl.ordinate}
+                    kind = "G1" if isinstance(corner.inserted, LineElement) else None
+                    motion = self.emit(corner.inserted, inserted_context, last_mcs, kind=kind, inserted=True)
+                    out.append(motion)
+                    last_mcs = motion.end_mcs
+                element = corner.second
+                start_mcs = dict(last_mcs)
+                if isinstance(element, LineElement) or corner.inserted is not None:
+                    context["programmed"] = set(context["programmed"]) | {pl.abscissa, pl.ordinate}
+            else:
+                out.append(self.emit(pending.element, pending.context, pending.context["start_mcs"]))
+                start_mcs = dict(out[-1].end_mcs)
+        aid = self._aid_of(words, geo, units)
+        if aid is not None and in_plane and context["kind"] != "G33":
+            context["start_mcs"] = start_mcs
+            geo.pending = PendingCorner(element, aid[0], aid[1], context)
+            return out
+        if aid is not None and not in_plane and ("CHF" in words.words or "CHR" in words.words
+                                                 or "RND" in words.words):
+            raise NcAlarmError(ALARM_AID_WITHOUT_MOTION)
+        out.append(self.emit(element, context, start_mcs))
+        return out
+
+    def _corner(self, pl: Plane, pending: PendingCorner, element: LineElement | Arc) -> Corner:
+        if pending.aid == "RND":
+            return rounding(pl, pending.element, element, pending.size_mm)
+        return chamfer(pl, pending.element, element, pending.size_mm, pending.aid)
+
+    def flush(self, modal: Any) -> list[canon.Motion]:
+        """Emit an element held back for a chamfer/rounding unchanged (no next element came)."""
+        geo = getattr(modal, "geometry", None)
+        if geo is None or geo.pending is None:
+            return []
+        pending, geo.pending = geo.pending, None
+        return [self.emit(pending.element, pending.context, pending.context["start_mcs"])]
+
+    # ---------------------------------------------------------------- positions
+    def wcs_from_mcs(self, modal: Any, position_mcs: Mapping[str, float]) -> dict[str, float]:
+        """WCS (program units) of machine positions under the active frames and tool offset."""
+        geo = self.state(modal)
+        tool = self.tool_vector(modal)
+        bcs = {a: float(position_mcs.get(a, 0.0)) - tool.get(a, 0.0) for a in self.path_axes}
+        for axis in self.geo_axes:
+            bcs.setdefault(axis, 0.0)
+        wcs = geo.frames.transform().inverse().apply(bcs)
+        units = self.units(modal)
+        return {a: self.from_mm(a, wcs.get(a, 0.0), modal, units) for a in self.path_axes}
+
+    def sync_position(self, modal: Any, position_mcs: Mapping[str, float]) -> None:
+        """Take over machine positions (after JOG): programmed WCS follows from the MCS."""
+        geo = self.state(modal)
+        tool = self.tool_vector(modal)
+        bcs = {a: float(position_mcs.get(a, modal.position_mcs.get(a, 0.0))) - tool.get(a, 0.0)
+               for a in self.path_axes}
+        for axis in self.geo_axes:
+            bcs.setdefault(axis, 0.0)
+        wcs = geo.frames.transform().inverse().apply(bcs)
+        for axis in self.path_axes:
+            if axis in position_mcs:
+                modal.position_mcs[axis] = float(position_mcs[axis])
+                geo.wcs_mm[axis] = wcs.get(axis, 0.0)
+        modal.position_wcs = self.wcs_view(geo, modal)
+
+
+def _couples_axes(transform: Transform) -> bool:
+    m = transform.matrix[:3, :3]
+    return bool(np.any(np.abs(m - np.diag(np.diag(m))) > 1e-12))
+
+
+def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[str, float]:
+    """Map an arc's turning axis through a linear map (cofactor rule keeps the turning sense)."""
+    a = transform.matrix[:3, :3]
+    cof = np.linalg.det(a) * np.linalg.inv(a).T
+    n = cof @ np.asarray(axis, dtype=float)
+    n = n / float(np.linalg.norm(n))
+    names = transform.geometry_axes
+    return {names[i]: _r(n[i]) for i in range(3)}
+
+
+def _moves_in_plane(element: LineElement | Arc, pl: Plane) -> bool:
+    if isinstance(element, Arc):
+        return True
+    s, e = pl.to_plane(element.start), pl.to_plane(element.end)
+    return math.hypot(e[0] - s[0], e[1] - s[1]) > 1e-9
+
+
+def _end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:
+    if isinstance(element, Arc):
+        return element.tangent_at(1.0)
+    d = np.subtract(element.end, element.start)
+    n = float(np.linalg.norm(d))
+    if n < 1e-12:
+        return None
+    return (float(d[0] / n), float(d[1] / n), float(d[2] / n))

@@ -1,0 +1,81 @@
+"""The geometric modal state of a channel, kept inside the interpreter's modal state.
+
+Everything here survives from block to block and is deep-copied with the
+modal state before each block (all members are immutable or plain dicts), so
+an alarm in a block leaves it untouched.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from nck.geometry.chain import FrameChain
+from nck.geometry.frames import Frame
+from nck.geometry.polar import PolarState
+
+Vec3 = tuple[float, float, float]
+
+
+@dataclass
+class PendingCorner:
+    """A path element held back until the next one is known (CHF/CHR/RND/RNDM).
+
+    Attributes:
+        element: the element in the WCS (mm): a line or an arc.
+        aid: ``CHF``, ``CHR`` or ``RND``.
+        size_mm: chamfer length / leg or rounding radius, mm.
+        context: what is needed to emit it later (kind, source, transform, tool vector …).
+    """
+
+    element: Any
+    aid: str
+    size_mm: float
+    context: dict[str, Any]
+
+
+@dataclass
+class GeometryState:
+    """Frames, polar data, programmed position and technology values of the path.
+
+    Attributes:
+        frames: base, settable and programmable frame.
+        polar: pole and modal RP/AP.
+        wcs_mm: the programmed end point per axis in the WCS, in mm (degrees for rotary axes).
+        tangent: WCS direction of travel at the end of the last path element (for CT).
+        pending: an element held back for a chamfer/rounding, or None.
+        rndm_mm: modal rounding radius (RNDM), 0 = off.
+        feed_type: the member of G group 15 the programmed F belongs to.
+        cutting_speed_m_min: G96 constant cutting speed (S under G96).
+        lims_rpm: G96 spindle speed limit (LIMS), None = none.
+        axis_feeds: positioning-axis feeds FA[axis] (mm/min or deg/min).
+        thread_lead_mm: last programmed thread lead.
+        loaded: False after RESET: settable and basic frame are read again from the NC data.
+    """
+
+    frames: FrameChain = field(default_factory=FrameChain)
+    polar: PolarState = field(default_factory=PolarState)
+    wcs_mm: dict[str, float] = field(default_factory=dict)
+    tangent: Vec3 | None = None
+    pending: PendingCorner | None = None
+    rndm_mm: float = 0.0
+    feed_type: str = "G94"
+    cutting_speed_m_min: float = 0.0
+    lims_rpm: float | None = None
+    axis_feeds: dict[str, float] = field(default_factory=dict)
+    thread_lead_mm: float | None = None
+    loaded: bool = False
+
+    def reset(self) -> None:
+        """RESET / program end: programmable frame, pole, RNDM and held-back element go.
+
+        The settable and basic frames are re-read from the NC data before the next
+        block (their G code comes back to its reset member).
+        """
+        self.frames = self.frames.with_programmable(Frame(geometry_axes=self.frames.geometry_axes))
+        self.polar = PolarState()
+        self.tangent = None
+        self.pending = None
+        self.rndm_mm = 0.0
+        self.lims_rpm = None
+        self.loaded = False
