@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 from nck.errors import NcAlarmError
 from nck.lang import ast
+from nck.lang.gcodes import gtable
 from nck.lang.parser import parse_block
 
 MAX_STRUCTURE_DEPTH = 16  # nesting depth of control structures per program level
@@ -159,6 +160,9 @@ def _index(program: Program) -> None:
                 program.labels[block.label] = index
         if block.number is not None:
             program.numbers.setdefault(block.number, []).append(index)
+        gcode_problem = _check_gcodes(block)
+        if gcode_problem is not None:
+            program.structure_errors[index] = gcode_problem.located(program.name, line.number, block.number)
         for stmt in block.statements:
             if isinstance(stmt, ast.Proc):
                 if index == _first_code_line(program, index):
@@ -194,6 +198,21 @@ def _index(program: Program) -> None:
         line = program.lines[index]
         program.structure_errors.setdefault(index, NcAlarmError(12640).located(
             program.name, line.number, line.block.number if line.block else None))
+
+
+def _check_gcodes(block: ast.Block) -> NcAlarmError | None:
+    """Unknown G functions (12470) and two codes of one group (12060), found statically."""
+    table = gtable()
+    seen: dict[int, str] = {}
+    for stmt in block.statements:
+        if isinstance(stmt, ast.GWord):
+            number = table.group_of.get(stmt.code)
+            if number is None:
+                return NcAlarmError(12470, stmt.code)
+            if seen.get(number, stmt.code) != stmt.code:
+                return NcAlarmError(12060, number)
+            seen[number] = stmt.code
+    return None
 
 
 def _first_code_line(program: Program, upto: int) -> int:
