@@ -927,6 +927,7 @@ class Nck:
         run = self._overlay or self._run
         current_source = self._path_motion().current_source() if run is not None else None
         current = None
+        executing: Motion | None = None
         blocks: tuple = ()
         dtg: dict[str, float] = {}
         if run is not None:
@@ -936,9 +937,10 @@ class Nck:
                     if view.file == current_source.file and view.line == current_source.line:
                         current = view
                         break
-                end = run.segment_ends.get((current_source.file, current_source.line))
-                if end:
-                    dtg = {a: float(v) - positions.get(a, 0.0) for a, v in end.items()}
+                segment = run.segments.get((current_source.file, current_source.line))
+                if segment is not None:
+                    dtg = {a: float(v) - positions.get(a, 0.0) for a, v in segment.end_mcs.items()}
+                    executing = segment
             if current is None and blocks:
                 current = blocks[-1]
         axes = []
@@ -956,6 +958,10 @@ class Nck:
                 referenced=bool(self.motion.is_referenced(axis.name)), setpoint_mcs=mcs,
             ))
         modal = self._modal_view(run)
+        if executing is not None and executing.gcodes:
+            # The main run lags the interpreter: show the G codes of the executing block.
+            modal = replace(modal, gcodes={**dict(modal.gcodes), **dict(executing.gcodes)},
+                            feed=executing.feed if executing.feed is not None else modal.feed)
         repos = {}
         if self._repos_point is not None and self._owner is not None:
             now = self.motion.positions_mcs()
@@ -966,7 +972,7 @@ class Nck:
             program_state=self._sit.program, selected_program=self._selected,
             current_block=current, blocks=blocks, modal=modal,
             program_control=dict(self._pc), overrides=dict(self._overrides),
-            path_feed_mm_min=0.0, program_runtime_s=self.runtime.act_s,
+            path_feed_mm_min=(executing.feed_mm_min or 0.0) if executing is not None else 0.0, program_runtime_s=self.runtime.act_s,
             part_count=self.counters.actual, message=self.alarms.message,
             stop_reason=run.stop_reason if run is not None and self._sit.channel == INTERRUPTED else "",
             interrupted_program=self._owner, mda_text=self._mda_text,

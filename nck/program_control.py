@@ -117,7 +117,7 @@ class ProgramRun:
         self.history: deque[BlockView] = deque(maxlen=DISPLAY_HISTORY)
         self.blocks_executed = 0
         self.last_motion: Motion | None = None
-        self.segment_ends: dict[tuple[str, int], Mapping[str, float]] = {}
+        self.segments: dict[tuple[str, int], Motion] = {}  # recent segments by (file, line)
         self.pushed: deque[Motion | Dwell] = deque(maxlen=PUSHED_HISTORY)
         self._requeued: deque[Motion | Dwell] = deque()
         self._transform = transform or (lambda motion: motion)
@@ -196,9 +196,9 @@ class ProgramRun:
                     command = self._transform(command)
                     self.last_motion = command
                     src = command.source
-                    self.segment_ends[(src.file, src.line)] = command.end_mcs
-                    if len(self.segment_ends) > 64:
-                        self.segment_ends.pop(next(iter(self.segment_ends)))
+                    self.segments[(src.file, src.line)] = command
+                    if len(self.segments) > 64:
+                        self.segments.pop(next(iter(self.segments)))
                 self.pushed.append(command)
                 motion.push(command)
             elif isinstance(command, StopPoint):
