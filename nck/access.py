@@ -33,7 +33,7 @@ PASSWORD_LEVELS = (1, 2, 3)
 PASSWORD_MAX_CHARS = 8
 DEFAULT_PASSWORDS = {1: "SUNRISE", 2: "EVENING", 3: "CUSTOMER"}
 KEYSWITCH_POSITIONS = (0, 1, 2, 3)
-KDF_ITERATIONS = 60_000
+KDF_ITERATIONS = 20_000  # a trainer: enough to make the file useless as a password list
 KDF_NAME = "pbkdf2_sha256"
 
 

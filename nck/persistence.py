@@ -1,0 +1,517 @@
+"""Retained NC data: what a real control keeps in battery-backed memory, kept in files.
+
+Every section lives in its own file ``<data dir>/retained/<section>.json`` so
+that a damaged file costs only that section:
+
+=================  ==========================================================
+``tools``          cutting edges ``$TC_DP1…25`` by tool and edge
+``work_offsets``   settable frames G54 … and the base frame
+``r_parameters``   R parameters that are not zero
+``user_data``      global user data (GUD)
+``setting_data``   setting data (``SD…`` keys as in ``NcData.setting_data``)
+``machine_data``   machine data changed against the machine file, per machine
+``access``         keyswitch position, active password level, password hashes
+``counters``       workpiece counters
+``mda``            the MDA buffer
+``alarm_log``      the alarm log (bounded)
+=================  ==========================================================
+
+File format (version 1)::
+
+    {"format": "sinumerik-trainer/retained", "section": "tools",
+     "format_version": 1, "data": { ... section data ... }}
+
+Files are written atomically with one backup generation (``<file>.bak``). At
+start a file that cannot be read (truncated, garbage, wrong section or a
+``format_version`` this program does not know) is moved aside as
+``<file>.bad-<n>`` and its backup is used, with alarm 4065 naming the file; if
+the backup is unusable too the section starts from standard values with alarm
+4060. A section is never reset silently.
+
+:class:`Session` ties it together for one data directory and one machine:
+NC data, MD/SD store, access control, NC file system; ``save()`` writes the
+sections that changed, ``power_on()`` restarts from the files.
+"""
+
+from __future__ import annotations
+
+import base64
+import copy
+import dataclasses
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterable, Mapping
+
+from nck.access import AccessControl, AccessState, default_password_hashes
+from nck.atomic import atomic_write_bytes, atomic_write_text, backup_path, remove_stale_temp_files
+from nck.errors import NcAlarmError
+from nck.machine import MachineConfig, load_machine
+from nck.machine_data import MachineDataStore, catalog, fill_setting_defaults
+from nck.ncdata import NcData, ToolEdge, WorkOffset
+from nck.resources import data_path
+from nck.storage import NcFileSystem, StorageError
+
+FORMAT = "sinumerik-trainer/retained"
+FORMAT_VERSION = 1
+ARCHIVE_FORMAT = "sinumerik-trainer/archive"
+ARCHIVE_VERSION = 1
+RETAINED_DIR = "retained"
+NC_DIR = "nc"
+ALARM_LOG_LIMIT = 500
+ALARM_FROM_BACKUP = 4065
+ALARM_DEFAULTS_LOADED = 4060
+
+
+class BadFile(Exception):
+    """A retained-data file that cannot be used; ``str()`` says why."""
+
+
+class ArchiveError(Exception):
+    """An archive could not be read or imported; ``str()`` says why (nothing was changed)."""
+
+
+@dataclass
+class RetainedData:
+    """Everything retained, in memory."""
+
+    ncdata: NcData = field(default_factory=NcData)
+    md_by_machine: dict[str, dict[str, Any]] = field(default_factory=dict)
+    # no hashes until loaded (the factory passwords are hashed only for a fresh state)
+    access: AccessState = field(default_factory=lambda: AccessState(password_hashes={}))
+    alarm_log: list[dict[str, Any]] = field(default_factory=list)
+
+
+# ---------------------------------------------------------------- validators
+def _number(value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"{value!r} is not a number")
+    return float(value)
+
+
+def _integer(value: Any) -> int:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError(f"{value!r} is not an integer")
+    return value
+
+
+def _mapping(value: Any) -> Mapping[str, Any]:
+    if not isinstance(value, dict):
+        raise ValueError("a table was expected")
+    return value
+
+
+def _plain(value: Any) -> Any:
+    """Check that a value is plain JSON data (numbers, strings, bools, lists, tables)."""
+    if isinstance(value, (bool, int, float, str)) or value is None:
+        return value
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    raise ValueError(f"{value!r} cannot be stored")
+
+
+# ------------------------------------------------------------------ sections
+def _dump_offset(offset: WorkOffset) -> dict[str, Any]:
+    return {"trans": dict(offset.trans), "fine": dict(offset.fine), "rot": dict(offset.rot),
+            "scale": dict(offset.scale), "mirror": dict(offset.mirror)}
+
+
+def _load_offset(data: Any) -> WorkOffset:
+    table = _mapping(data)
+    offset = WorkOffset()
+    for part in ("trans", "fine", "rot", "scale"):
+        setattr(offset, part, {str(k): _number(v) for k, v in _mapping(table.get(part, {})).items()})
+    mirror = _mapping(table.get("mirror", {}))
+    if not all(isinstance(v, bool) for v in mirror.values()):
+        raise ValueError("mirror flags must be true/false")
+    offset.mirror = dict(mirror)
+    return offset
+
+
+def _dump_tools(rd: RetainedData) -> dict[str, Any]:
+    return {"edges": [
+        {"t": t, "d": d, "params": {str(i): v for i, v in sorted(edge.params.items())}}
+        for (t, d), edge in sorted(rd.ncdata.tools.items())
+    ]}
+
+
+def _load_tools(data: Mapping[str, Any], rd: RetainedData) -> None:
+    tools: dict[tuple[int, int], ToolEdge] = {}
+    for entry in data["edges"]:
+        entry = _mapping(entry)
+        key = (_integer(entry["t"]), _integer(entry["d"]))
+        params = {int(i): _number(v) for i, v in _mapping(entry["params"]).items()}
+        tools[key] = ToolEdge(params=params)
+    rd.ncdata.tools = tools
+
+
+def _dump_offsets(rd: RetainedData) -> dict[str, Any]:
+    return {"settable": {name: _dump_offset(o) for name, o in rd.ncdata.settable_frames.items()},
+            "base": _dump_offset(rd.ncdata.base_frame)}
+
+
+def _load_offsets(data: Mapping[str, Any], rd: RetainedData) -> None:
+    settable = {str(name): _load_offset(o) for name, o in _mapping(data["settable"]).items()}
+    base = _load_offset(data["base"])
+    rd.ncdata.settable_frames = settable
+    rd.ncdata.base_frame = base
+
+
+def _dump_r(rd: RetainedData) -> dict[str, Any]:
+    r = rd.ncdata.r
+    return {"count": len(r), "values": {str(i): v for i, v in enumerate(r) if v != 0.0}}
+
+
+def _load_r(data: Mapping[str, Any], rd: RetainedData) -> None:
+    count = _integer(data["count"])
+    values = {int(i): _number(v) for i, v in _mapping(data["values"]).items()}
+    if count < 0 or any(i < 0 for i in values):
+        raise ValueError("negative R parameter index")
+    r = [0.0] * max(count, max(values, default=-1) + 1)
+    for index, value in values.items():
+        r[index] = value
+    rd.ncdata.r = r
+
+
+def _dump_gud(rd: RetainedData) -> dict[str, Any]:
+    return {"gud": _plain(rd.ncdata.gud)}
+
+
+def _load_gud(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.ncdata.gud = dict(_plain(_mapping(data["gud"])))
+
+
+def _dump_sd(rd: RetainedData) -> dict[str, Any]:
+    return {"values": _plain(rd.ncdata.setting_data)}
+
+
+def _load_sd(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.ncdata.setting_data = dict(_plain(_mapping(data["values"])))
+
+
+def _dump_md(rd: RetainedData) -> dict[str, Any]:
+    return {"machines": _plain(rd.md_by_machine)}
+
+
+def _load_md(data: Mapping[str, Any], rd: RetainedData) -> None:
+    machines: dict[str, dict[str, Any]] = {}
+    cat = catalog()
+    for machine, values in _mapping(data["machines"]).items():
+        checked: dict[str, Any] = {}
+        for key, value in _mapping(values).items():
+            definition = cat.get(key)
+            if definition is not None:  # unknown keys (an older catalogue) are kept as they are
+                items = value.values() if isinstance(value, dict) else [value]
+                for item in items:
+                    for element in item if isinstance(item, list) else [item]:
+                        definition.coerce(element)
+            checked[key] = _plain(value)
+        machines[str(machine)] = checked
+    rd.md_by_machine = machines
+
+
+def _dump_access(rd: RetainedData) -> dict[str, Any]:
+    return rd.access.to_json()
+
+
+def _load_access(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.access = AccessState.from_json(data)
+
+
+def _dump_counters(rd: RetainedData) -> dict[str, Any]:
+    return {"part_counters": dict(rd.ncdata.part_counters)}
+
+
+def _load_counters(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.ncdata.part_counters = {str(k): _integer(v) for k, v in _mapping(data["part_counters"]).items()}
+
+
+def _dump_mda(rd: RetainedData) -> dict[str, Any]:
+    return {"text": rd.ncdata.mda_program}
+
+
+def _load_mda(data: Mapping[str, Any], rd: RetainedData) -> None:
+    if not isinstance(data["text"], str):
+        raise ValueError("the MDA buffer must be text")
+    rd.ncdata.mda_program = data["text"]
+
+
+def _dump_alarm_log(rd: RetainedData) -> dict[str, Any]:
+    return {"entries": _plain(rd.alarm_log[-ALARM_LOG_LIMIT:])}
+
+
+def _load_alarm_log(data: Mapping[str, Any], rd: RetainedData) -> None:
+    entries = []
+    for entry in data["entries"]:
+        entry = dict(_plain(_mapping(entry)))
+        _integer(entry["number"])
+        entries.append(entry)
+    rd.alarm_log = entries[-ALARM_LOG_LIMIT:]
+
+
+SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, RetainedData], None]]] = {
+    "tools": (_dump_tools, _load_tools),
+    "work_offsets": (_dump_offsets, _load_offsets),
+    "r_parameters": (_dump_r, _load_r),
+    "user_data": (_dump_gud, _load_gud),
+    "setting_data": (_dump_sd, _load_sd),
+    "machine_data": (_dump_md, _load_md),
+    "access": (_dump_access, _load_access),
+    "counters": (_dump_counters, _load_counters),
+    "mda": (_dump_mda, _load_mda),
+    "alarm_log": (_dump_alarm_log, _load_alarm_log),
+}
+
+
+def section_text(name: str, rd: RetainedData) -> str:
+    """The file content of one section (stable: sorted keys, one item per line)."""
+    document = {"format": FORMAT, "section": name, "format_version": FORMAT_VERSION,
+                "data": SECTIONS[name][0](rd)}
+    return json.dumps(document, indent=1, sort_keys=True, ensure_ascii=False) + "\n"
+
+
+def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
+    """Read one section file's content into ``rd``; raise BadFile when it is unusable."""
+    try:
+        document = json.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        raise BadFile("not UTF-8 text") from exc
+    except json.JSONDecodeError as exc:
+        if not raw.strip():
+            raise BadFile("empty file") from exc
+        raise BadFile(f"truncated or garbled at byte {exc.pos}") from exc
+    if not isinstance(document, dict) or document.get("format") != FORMAT:
+        raise BadFile("not a retained-data file")
+    if document.get("section") != name:
+        raise BadFile(f"holds section {document.get('section')!r}, not {name!r}")
+    version = document.get("format_version")
+    if version != FORMAT_VERSION:
+        raise BadFile(f"format version {version!r} is not supported (this program reads {FORMAT_VERSION})")
+    # loaders assign new objects (never mutate), so a shallow copy keeps rd untouched on error
+    scratch = RetainedData(copy.copy(rd.ncdata), rd.md_by_machine, rd.access, rd.alarm_log)
+    try:
+        SECTIONS[name][1](_mapping(document["data"]), scratch)
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:
+        raise BadFile(f"unexpected content ({exc})") from exc
+    # apply only after the whole section was read without error
+    rd.ncdata = scratch.ncdata
+    rd.md_by_machine = scratch.md_by_machine
+    rd.access = scratch.access
+    rd.alarm_log = scratch.alarm_log
+
+
+def _set_aside(path: Path) -> Path:
+    """Rename a bad file to ``<name>.bad-<n>`` (first free n); return the new path."""
+    n = 1
+    while True:
+        target = path.with_name(f"{path.name}.bad-{n}")
+        if not target.exists():
+            path.rename(target)
+            return target
+        n += 1
+
+
+def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmError]:
+    """Load one section with recovery from its backup; return the alarms to raise."""
+    main = directory / f"{name}.json"
+    backup = backup_path(main)
+    if not main.exists() and not backup.exists():
+        return []
+    reason = "file missing"
+    if main.exists():
+        try:
+            parse_section(name, main.read_bytes(), rd)
+            return []
+        except BadFile as exc:
+            reason = str(exc)
+        kept = _set_aside(main).name
+    else:
+        kept = "-"
+    if backup.exists():
+        try:
+            raw = backup.read_bytes()
+            parse_section(name, raw, rd)
+            atomic_write_bytes(main, raw)  # the backup becomes the file again
+            return [NcAlarmError(ALARM_FROM_BACKUP, main.name, reason, kept)]
+        except BadFile:
+            _set_aside(backup)
+    return [NcAlarmError(ALARM_DEFAULTS_LOADED, main.name, reason, kept)]
+
+
+# ------------------------------------------------------------------- session
+class Session:
+    """The retained state of one NC data directory for one machine.
+
+    Use :meth:`open`. Attributes: ``data_dir``, ``machine`` (as in its file),
+    ``retained`` (:class:`RetainedData`), ``ncdata`` (shared with the kernel),
+    ``md`` (:class:`MachineDataStore`), ``access`` (:class:`AccessControl`),
+    ``files`` (:class:`NcFileSystem`), ``startup_alarms`` (alarms to raise after
+    start, e.g. 4065 for a file restored from its backup).
+    """
+
+    def __init__(self, data_dir: Path, machine: MachineConfig, retained: RetainedData,
+                 files: NcFileSystem, startup_alarms: list[NcAlarmError]) -> None:
+        self.data_dir = data_dir
+        self.machine = machine
+        self.retained = retained
+        self.files = files
+        self.startup_alarms = startup_alarms
+        self.md = MachineDataStore(machine, retained.md_by_machine.get(machine.name, {}),
+                                   retained.ncdata.setting_data)
+        fill_setting_defaults(retained.ncdata.setting_data, machine)
+        r_count = int(self.md.active_value("MD28050"))
+        r = retained.ncdata.r
+        retained.ncdata.r = (r + [0.0] * r_count)[:r_count]
+        self.access = AccessControl(retained.access, user_class=self.md.user_class)
+        self._written: dict[str, str] = {}
+
+    @property
+    def retained_dir(self) -> Path:
+        """``<data dir>/retained``."""
+        return self.data_dir / RETAINED_DIR
+
+    @property
+    def ncdata(self) -> NcData:
+        """The NC data (give this object to the kernel; :meth:`save` persists it)."""
+        return self.retained.ncdata
+
+    @property
+    def alarm_log(self) -> list[dict[str, Any]]:
+        """The retained alarm log entries (oldest first)."""
+        return self.retained.alarm_log
+
+    @classmethod
+    def open(cls, data_dir: Path | str, machine: MachineConfig | None = None, *,
+             install_samples: bool = True, samples: Path | None = None) -> "Session":
+        """Start from the data directory (created when new): load, recover, install samples."""
+        data_dir = Path(data_dir)
+        retained_dir = data_dir / RETAINED_DIR
+        retained_dir.mkdir(parents=True, exist_ok=True)
+        remove_stale_temp_files(retained_dir)
+        files = NcFileSystem(data_dir / NC_DIR)
+        if install_samples:
+            files.install_samples(samples if samples is not None else data_path("programs"))
+        rd = RetainedData()
+        alarms: list[NcAlarmError] = []
+        damaged: list[str] = []
+        for name in SECTIONS:
+            found = load_section(retained_dir, name, rd)
+            alarms += found
+            if any(a.number == ALARM_DEFAULTS_LOADED for a in found):
+                damaged.append(name)
+        if not rd.access.password_hashes:  # fresh, or the access file was lost
+            rd.access.password_hashes = default_password_hashes()
+        session = cls(data_dir, machine or load_machine(), rd, files, alarms)
+        for name in SECTIONS:
+            path = retained_dir / f"{name}.json"
+            if name not in damaged and path.exists():
+                session._written[name] = path.read_text(encoding="utf-8")
+        session.save()
+        return session
+
+    def save(self) -> list[str]:
+        """Write every section whose content changed (atomically, with backup); return them."""
+        self.retained.md_by_machine[self.machine.name] = self.md.retained_changes()
+        if not self.retained.md_by_machine[self.machine.name]:
+            del self.retained.md_by_machine[self.machine.name]
+        written = []
+        for name in SECTIONS:
+            text = section_text(name, self.retained)
+            if self._written.get(name) != text:
+                atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True)
+                self._written[name] = text
+                written.append(name)
+        return written
+
+    def record_alarms(self, entries: Iterable[Any]) -> None:
+        """Append alarm-log entries (``nck.status.AlarmEntry`` objects or dicts), bounded."""
+        for entry in entries:
+            data = dataclasses.asdict(entry) if dataclasses.is_dataclass(entry) else dict(entry)
+            self.retained.alarm_log.append(_plain({k: v for k, v in data.items()}))
+        del self.retained.alarm_log[:-ALARM_LOG_LIMIT]
+
+    def active_machine(self) -> MachineConfig:
+        """The machine with the active MD values (build the kernel from this)."""
+        return self.md.active_machine()
+
+    def power_on(self) -> "Session":
+        """Save, then start again from the files: every stored MD becomes active."""
+        self.save()
+        return Session.open(self.data_dir, self.machine, install_samples=False)
+
+    # ------------------------------------------------------------- archives
+    def export_archive(self, path: Path | str) -> Path:
+        """Write all NC data (retained sections and every program) into one file."""
+        self.save()
+        programs = []
+        for entry in self.files.all_programs():
+            raw = self.files.read_bytes(entry.path)
+            try:
+                programs.append({"path": entry.path, "text": raw.decode("utf-8")})
+            except UnicodeDecodeError:
+                programs.append({"path": entry.path, "base64": base64.b64encode(raw).decode()})
+        archive = {
+            "format": ARCHIVE_FORMAT,
+            "format_version": ARCHIVE_VERSION,
+            "sections": {name: SECTIONS[name][0](self.retained) for name in SECTIONS},
+            "workpieces": [e.path for e in self.files.list_directory("WKS")],
+            "programs": programs,
+        }
+        target = Path(path)
+        atomic_write_text(target, json.dumps(archive, indent=1, sort_keys=True) + "\n")
+        return target
+
+    def import_archive(self, path: Path | str, include_access: bool = False) -> "Session":
+        """Load an archive written by :meth:`export_archive` and restart from it.
+
+        Every section in the archive replaces the retained one (the access
+        section — keyswitch and passwords — only with ``include_access``);
+        programs are added or overwritten, other programs stay. The whole archive
+        is checked first: on any problem ArchiveError is raised and nothing changes.
+        """
+        try:
+            archive = json.loads(Path(path).read_bytes().decode("utf-8"))
+        except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+            raise ArchiveError(f"{path}: not a readable archive ({exc})") from exc
+        if not isinstance(archive, dict) or archive.get("format") != ARCHIVE_FORMAT:
+            raise ArchiveError(f"{path}: not an NC data archive")
+        if archive.get("format_version") != ARCHIVE_VERSION:
+            raise ArchiveError(f"{path}: archive version {archive.get('format_version')!r} not supported")
+        sections = archive.get("sections", {})
+        texts: dict[str, str] = {}
+        try:
+            for name, data in _mapping(sections).items():
+                if name not in SECTIONS:
+                    raise ArchiveError(f"{path}: unknown section {name!r}")
+                if name == "access" and not include_access:
+                    continue
+                scratch = RetainedData(access=self.retained.access)
+                SECTIONS[name][1](_mapping(data), scratch)
+                texts[name] = section_text(name, scratch)
+            workpieces = [self.files.canonical(w) for w in archive.get("workpieces", [])]
+            programs: list[tuple[str, bytes]] = []
+            for item in archive.get("programs", []):
+                item = _mapping(item)
+                canonical = self.files.canonical(item["path"])
+                raw = (item["text"].encode("utf-8") if "text" in item
+                       else base64.b64decode(item["base64"], validate=True))
+                if self.files.exists(canonical) and self.files.is_in_use(canonical):
+                    raise ArchiveError(f"{canonical} is in use and cannot be replaced")
+                programs.append((canonical, raw))
+        except ArchiveError:
+            raise
+        except (StorageError, KeyError, TypeError, ValueError) as exc:
+            raise ArchiveError(f"{path}: bad content ({exc})") from exc
+        for name, text in texts.items():
+            atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True)
+        for workpiece in workpieces:
+            if not self.files.exists(workpiece):
+                self.files.create_workpiece(workpiece.split("/")[1], with_program=False)
+        for canonical, raw in programs:
+            parent = canonical.rpartition("/")[0]
+            if parent.startswith("WKS/") and not self.files.exists(parent):
+                self.files.create_workpiece(parent.split("/")[1], with_program=False)
+            atomic_write_bytes(self.files._disk(canonical), raw)
+        return Session.open(self.data_dir, self.machine, install_samples=False)
