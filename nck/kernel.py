@@ -92,7 +92,10 @@ class Nck:
         self._interpreter_factory = interpreter_factory or _default_interpreter_factory
         self.motion = (motion_factory or instant_motion_factory)(self.machine)
         for axis in self.machine.path_axes:
-            self.motion.set_referenced(axis, referenced)
+            # MD34210 ENC_REFP_STATE = 2: absolute encoder adjusted (or buffered
+            # position) -> referenced at power on without any motion.
+            adjusted = self.machine.md_value("MD34210", axis, 0) == 2
+            self.motion.set_referenced(axis, referenced or adjusted)
         self._test_motion: InstantMotion | None = None
         self.alarms = AlarmServer()
         self.internal_errors: list[str] = []

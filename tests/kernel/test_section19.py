@@ -430,3 +430,18 @@ def test_25b_block_search_target_not_found_and_by_text_and_cascaded() -> None:
     nck.submit(c.CycleStart())
     assert until_state(nck, "reset", "aborted")
     assert nck.positions_mcs() == pytest.approx({"X": 0.0, "Y": 40.0, "Z": 0.0})
+
+
+# 15 ------------------------------------------------------------------------
+def test_15_adjusted_absolute_encoder_is_referenced_at_power_on() -> None:
+    base = load_machine()
+    machine = dataclasses.replace(base, md={**base.md, "MD34210": {"X": 2, "Y": 2, "Z": 0}})
+    nck = make_nck({"P": LINE}, referenced=False, machine=machine)
+    referenced = {axis.name: axis.referenced for axis in nck.status().axes}
+    assert referenced == {"X": True, "Y": True, "Z": False, "SP": True}
+    assert nck.positions_mcs() == {"X": 0.0, "Y": 0.0, "Z": 0.0}  # no motion
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P"))
+    result = nck.submit(c.CycleStart())
+    assert isinstance(result, c.Rejected) and result.alarm == 10203
+    assert "Z" in nck.status().alarms[0].text
