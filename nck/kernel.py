@@ -28,6 +28,7 @@ from dataclasses import replace
 from typing import Any, Callable
 
 from nck import commands as cmd
+from nck.access import AccessControl, AccessError, AccessState
 from nck.alarms import AlarmServer
 from nck.canon import AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand, ToolSelect, UserAlarm
 from nck.channel import (
@@ -85,6 +86,7 @@ class Nck:
         motion_factory: Callable[[MachineConfig], Any] | None = None,
         referenced: bool = False,
         interpreter_factory: Callable[[MachineConfig, ProgramSource, NcData], Interpreter] | None = None,
+        access: AccessControl | None = None,
     ) -> None:
         self.machine = machine or load_machine()
         self.data = data if data is not None else NcData()
@@ -135,8 +137,10 @@ class Nck:
         if isinstance(md27882, list) and len(md27882) == 3:
             self.counters.m_codes = tuple(int(v) for v in md27882)  # type: ignore[assignment]
         self.runtime = RuntimeTimer()
-        self._keyswitch = 0
-        self._password_level: int | None = None
+        # Access control (keyswitch, passwords) of nck.access; created on first
+        # use because the default password hashes cost time to compute.
+        self._access = access
+        self._keyswitch = access.state.keyswitch_position if access is not None else 0
         self._seq = 0
         self._last_body: NckStatus | None = None
         # Optional observers for headless runs and tools (not for the HMI, which
@@ -597,22 +601,31 @@ class Nck:
             return Rejected(f"bad value for {command.name}")
         return Rejected(f"{command.name} cannot be written here")
 
+    @property
+    def access(self) -> AccessControl:
+        """Keyswitch and passwords (protection levels 0 … 7)."""
+        if self._access is None:
+            self._access = AccessControl(AccessState(keyswitch_position=self._keyswitch))
+        return self._access
+
     def _set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
         if command.position not in (0, 1, 2, 3):
             return Rejected("keyswitch positions are 0 … 3")
         self._keyswitch = command.position
+        if self._access is not None:
+            self._access.set_keyswitch(command.position)
         return Accepted()
 
     def _enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
-        levels = {"SUNRISE": 1, "EVENING": 2, "CUSTOMER": 3}
-        level = levels.get(command.password.strip().upper())
-        if level is None:
-            return Rejected("Password not accepted")
-        self._password_level = level
+        try:
+            self.access.enter_password(command.password)
+        except AccessError as error:
+            return Rejected(str(error) or "Password not accepted")
         return Accepted()
 
     def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:
-        self._password_level = None
+        if self._access is not None:
+            self._access.delete_password()
         return Accepted()
 
     _HANDLERS: dict[type, Callable[["Nck", Any], SubmitResult]] = {
@@ -919,10 +932,9 @@ class Nck:
 
     # ------------------------------------------------------------- status
     def _access_level(self) -> int:
-        level = 7 - self._keyswitch
-        if self._password_level is not None:
-            level = min(level, self._password_level)
-        return level
+        if self._access is not None:
+            return self._access.level
+        return 7 - self._keyswitch
 
     def _build_status(self) -> NckStatus:
         shown = self._display_motion()
