@@ -1,0 +1,121 @@
+"""Golden: the frame chain in programs, with the MCS end point of every block worked out by hand.
+
+Setup: G54 = (100, 50, 0); tool T1 D1 end mill with length L1 = 100 (acts on Z in G17),
+so MCS = G54(programmable(WCS)) + (0, 0, 100).
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from nck.errors import NcAlarmError
+from nck.ncdata import WorkOffset
+
+from .helpers import approx, lines, mill_data, run
+
+C30, S30 = math.cos(math.radians(30)), math.sin(math.radians(30))
+
+CHAIN = lines(
+    "N10 G54 G17 G90 T1 M6 D1",
+    "N20 G0 X0 Y0 Z10",
+    "N30 TRANS X10 Y10",
+    "N40 G1 X10 Y0 F500",
+    "N50 AROT RPL=30",
+    "N60 G1 X10 Y0",
+    "N70 ASCALE X2 Y2",
+    "N80 G1 X5 Y5",
+    "N90 AMIRROR X0",
+    "N100 G1 X5 Y5",
+    "N110 G1 Z-5",
+    "N120 G500 G0 X0 Y0",
+    "N130 D0",
+    "N140 G53 G0 Z0",
+    "N150 G0 X20",
+    "N160 M30",
+)
+
+
+def test_trans_arot_ascale_amirror_chain() -> None:
+    r = run(CHAIN, mill_data({"X": 100.0, "Y": 50.0}))
+    # N20: WCS (0,0,10) + G54 -> (100, 50, 10) + tool length -> Z 110.
+    assert r.end_mcs(20) == approx({"X": 100.0, "Y": 50.0, "Z": 110.0})
+    # N40: TRANS (10,10): (10,0) -> (20,10) -> (120, 60); Z not programmed stays 110.
+    assert r.end_mcs(40) == approx({"X": 120.0, "Y": 60.0, "Z": 110.0})
+    # N60: AROT RPL=30 turns (10,0) to (10cos30, 10sin30) = (8.660254, 5) -> + (110, 60).
+    assert r.end_mcs(60) == approx({"X": 110.0 + 10 * C30, "Y": 65.0, "Z": 110.0})
+    # N80: ASCALE 2: (5,5) -> (10,10) -> rotated (10cos30-10sin30, 10sin30+10cos30) -> + (110, 60).
+    assert r.end_mcs(80) == approx({"X": 110 + 10 * C30 - 5, "Y": 60 + 5 + 10 * C30, "Z": 110.0})
+    # N100: AMIRROR X: (5,5) -> (-5,5) -> (-10,10) -> (-10cos30-10sin30, -10sin30+10cos30) -> + (110, 60).
+    assert r.end_mcs(100) == approx({"X": 110 - 10 * C30 - 5, "Y": 60 - 5 + 10 * C30, "Z": 110.0})
+    assert r.end_wcs(100) == approx({"X": 5.0, "Y": 5.0, "Z": 10.0})
+    # N110: Z-5 -> MCS Z 95 (scale acts on X/Y only).
+    assert r.end_mcs(110) == approx({"X": 110 - 10 * C30 - 5, "Y": 60 - 5 + 10 * C30, "Z": 95.0})
+    # N120: G500 drops G54; the programmable frame maps (0,0) to its origin (10,10).
+    assert r.end_mcs(120) == approx({"X": 10.0, "Y": 10.0, "Z": 95.0})
+    # N140: D0 then G53 Z0: machine Z 0; X/Y stay.
+    assert r.end_mcs(140) == approx({"X": 10.0, "Y": 10.0, "Z": 0.0})
+    # N150: back in the WCS (G53 was block-wise): X20 -> T R S M: (-20,0)->(-40,0)->(-40cos30,-40sin30)+(10,10).
+    assert r.end_mcs(150) == approx({"X": 10 - 40 * C30, "Y": 10 - 40 * S30, "Z": 0.0})
+
+
+def test_mirror_reverses_the_machine_direction_of_arcs() -> None:
+    r = run(lines("N10 G0 X10 Y0", "N20 G2 X0 Y-10 I-10 J0 F100",
+                  "N30 MIRROR X0", "N40 G0 X10 Y0", "N50 G2 X0 Y-10 I-10 J0", "N60 M30"))
+    plain, mirrored = r.block(20)[0], r.block(50)[0]
+    assert plain.kind == mirrored.kind == "G2"
+    assert plain.arc_normal_mcs == approx({"X": 0.0, "Y": 0.0, "Z": -1.0})
+    assert mirrored.arc_normal_mcs == approx({"X": 0.0, "Y": 0.0, "Z": 1.0})  # runs as G3
+    assert mirrored.end_mcs == approx({"X": 0.0, "Y": -10.0, "Z": 0.0})
+    assert mirrored.center_mcs == approx({"X": 0.0, "Y": 0.0, "Z": 0.0})
+    assert r.block(40)[0].end_mcs == approx({"X": -10.0, "Y": 0.0, "Z": 0.0})
+
+
+def test_rot_absolute_replaces_and_scale_zero_is_an_alarm() -> None:
+    r = run(lines("N10 TRANS X50", "N20 ROT Z90", "N30 G0 X10 Y0", "N40 M30"))
+    # ROT replaces the whole programmable frame: the TRANS is gone. (10,0) -> (0,10).
+    assert r.end_mcs(30) == approx({"X": 0.0, "Y": 10.0, "Z": 0.0})
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 SCALE X0", "N20 M30"))
+    assert info.value.number == 18309
+
+
+def test_settable_frame_with_rotation_and_base_frame() -> None:
+    data = mill_data()
+    data.settable_frames["G55"] = WorkOffset(trans={"X": 200.0}, rot={"Z": 90.0})
+    data.base_frame = WorkOffset(trans={"Z": -20.0})
+    r = run(lines("N10 G55 G0 X10 Y0 Z0", "N20 G153 G0 Z0", "N30 G0 Z5", "N40 M30"), data)
+    # G55: (10,0) rotated 90 -> (0,10) + (200,0); base frame Z -20.
+    assert r.end_mcs(10) == approx({"X": 200.0, "Y": 10.0, "Z": -20.0})
+    # G153 also suppresses the basic frame: machine Z 0.
+    assert r.end_mcs(20) == approx({"X": 200.0, "Y": 10.0, "Z": 0.0})
+    assert r.end_mcs(30) == approx({"X": 200.0, "Y": 10.0, "Z": -15.0})
+
+
+def test_g53_keeps_the_basic_frame_and_supa_does_not() -> None:
+    data = mill_data({"X": 100.0})
+    data.base_frame = WorkOffset(trans={"X": 5.0})
+    r = run(lines("N10 G54 G0 X0", "N20 G53 X0", "N30 SUPA X0", "N40 M30"), data)
+    assert r.end_mcs(10)["X"] == pytest.approx(105.0)
+    assert r.end_mcs(20)["X"] == pytest.approx(5.0)
+    assert r.end_mcs(30)["X"] == pytest.approx(0.0)
+
+
+def test_offset_is_taken_up_when_the_axis_is_next_programmed() -> None:
+    r = run(lines("N10 G0 X0 Y0 Z0", "N20 T1 M6 D1", "N30 G0 X10 Y10", "N40 G0 Z5",
+                  "N50 G91 G54 G0 X1", "N60 M30"), mill_data({"X": 100.0, "Y": 50.0}))
+    # N30: the tool length acts on Z, which is not programmed: Z stays at machine 0.
+    assert r.end_mcs(30) == approx({"X": 10.0, "Y": 10.0, "Z": 0.0})
+    # N40: Z programmed: 5 + 100.
+    assert r.end_mcs(40) == approx({"X": 10.0, "Y": 10.0, "Z": 105.0})
+    # N50: G54 selected with G91 X1: X travels the increment plus the new offset
+    # (SD42440 = 1); Y is not programmed and keeps its position.
+    assert r.end_mcs(50) == approx({"X": 111.0, "Y": 10.0, "Z": 105.0})
+    assert r.end_wcs(50) == approx({"X": 11.0, "Y": 10.0, "Z": 5.0})
+
+
+def test_missing_edge_of_a_known_tool_is_17180() -> None:
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 T1 M6", "N20 D2", "N30 M30"), mill_data())
+    assert info.value.number == 17180
