@@ -221,19 +221,18 @@ class Interpreter:
         """Interpret the next block; raise NcAlarmError on failure (state unchanged)."""
         if self._state.finished:
             return BlockResult(source=canon.Source("", 0, None), text="", finished=True)
-        saved = copy.deepcopy(self._state)
-        saved_skip = self._skip_run
+        saved = self._snapshot()
         self._journal = []
         try:
             result = self._step()
         except NcAlarmError as alarm:
-            self._rollback(saved, saved_skip)
+            self._rollback(saved)
             raise self._locate(alarm)
         except RecursionError:
-            self._rollback(saved, saved_skip)
+            self._rollback(saved)
             raise self._locate(NcAlarmError(12540)) from None
         except (ArithmeticError, ValueError, TypeError) as exc:
-            self._rollback(saved, saved_skip)
+            self._rollback(saved)
             raise self._locate(NcAlarmError(14051, type(exc).__name__)) from None
         self._state.blocks += 1
         return result
@@ -261,9 +260,40 @@ class Interpreter:
         return SearchResult(False, blocks, tuple(collected), dict(self._state.modal.position_wcs))
 
     # ================================================================== internals
-    def _rollback(self, saved: _State, saved_skip: tuple[int, bool] | None) -> None:
+    def _snapshot(self) -> tuple:
+        """What a failing block must restore.
+
+        Frames are saved shallowly (program counter, loop ends, the variable
+        table); writes into existing variables and NC data are journaled; the
+        modal state is copied only when the next block can change it.
+        """
+        state = self._state
+        frames = [(f, f.pc, f.passes_left, f.def_open, dict(f.for_ends), dict(f.locals))
+                  for f in state.frames]
+        modal = copy.deepcopy(state.modal) if self._next_block_touches_modal() else None
+        return (list(state.frames), frames, modal, state.finished, state.message, self._skip_run)
+
+    def _next_block_touches_modal(self) -> bool:
+        frame = self._state.frames[-1] if self._state.frames else None
+        if frame is None or frame.pc >= len(frame.program.lines):
+            return True
+        line = frame.program.lines[frame.pc]
+        if line.block is None:
+            return False
+        if line.touches_modal is None:
+            line.touches_modal = _touches_modal(line.block)
+        return line.touches_modal
+
+    def _rollback(self, saved: tuple) -> None:
+        frame_list, frames, modal, finished, message, skip_run = saved
         for kind, key, old in reversed(self._journal):
-            if kind == "r":
+            if kind == "cell":
+                cell, offset = key
+                if offset is None:
+                    cell.value = old
+                else:
+                    cell.value[offset] = old
+            elif kind == "r":
                 self.data.r[key] = old
             elif kind == "tool":
                 tool, edge, param = key
@@ -281,8 +311,15 @@ class Interpreter:
                 else:
                     self.data.gud[key] = old
         self._journal = []
-        self._state = saved
-        self._skip_run = saved_skip
+        state = self._state
+        for frame, pc, passes_left, def_open, for_ends, local_vars in frames:
+            frame.pc, frame.passes_left, frame.def_open = pc, passes_left, def_open
+            frame.for_ends, frame.locals = for_ends, local_vars
+        state.frames = frame_list
+        if modal is not None:
+            state.modal = modal
+        state.finished, state.message = finished, message
+        self._skip_run = skip_run
 
     def _locate(self, alarm: NcAlarmError) -> NcAlarmError:
         source = self.current_source()
@@ -499,6 +536,30 @@ class _Scope:
         return self.interp.lookup(name) is not None
 
 
+_MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Def, ast.Extern, ast.Proc, ast.Call)
+
+
+def _touches_modal(block: ast.Block) -> bool:
+    """True if a block may change the modal state (machine words, builtins, addresses)."""
+    for stmt in block.statements:
+        if isinstance(stmt, _MODAL_SAFE):
+            continue
+        if isinstance(stmt, ast.Assign) and isinstance(stmt.target, (ast.RParam, ast.Index)) \
+                and not (isinstance(stmt.target, ast.Index) and stmt.target.name == "AX"):
+            continue
+        return True
+    return False
+
+
+def _journal_cell(interp: Interpreter, cell: Cell, indices: tuple[Any, ...]) -> None:
+    """Record the old value of a variable (or one array element) before a write."""
+    if cell.dims:
+        offset = cell.offset(indices)
+        interp._journal.append(("cell", (cell, offset), cell.value[offset]))
+    else:
+        interp._journal.append(("cell", (cell, None), cell.value))
+
+
 def read_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...]) -> Any:
     """Read through a variable binding."""
     if isinstance(binding, Cell):
@@ -531,6 +592,7 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
     if isinstance(binding, Cell):
         if binding.dims and not indices:
             raise NcAlarmError(12150, binding.name)
+        _journal_cell(interp, binding, indices)
         binding.set(value, indices)
         return
     if isinstance(binding, _RRef):
@@ -541,6 +603,7 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
     if isinstance(binding, _ElemRef):
         if indices:
             raise NcAlarmError(17020, binding.cell.name)
+        _journal_cell(interp, binding.cell, binding.indices)
         binding.cell.set(value, binding.indices)
         return
     current = interp.data.gud[binding.name]

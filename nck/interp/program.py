@@ -29,6 +29,7 @@ class Line:
     text: str
     block: ast.Block | None
     error: NcAlarmError | None = None
+    touches_modal: bool | None = None  # cache for the interpreter's block snapshot
 
 
 @dataclass
