@@ -211,8 +211,8 @@ def test_g96_needs_a_transverse_axis_and_computes_the_speed_on_a_lathe() -> None
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 G96 S200 M3", "N20 M30"))
     assert info.value.number == 10870
-    # Lathe: X is the transverse axis. At radius 20 mm (X40 in diameter? lathe2 resets to DIAMOF
-    # unless configured; X here is a radius): n = 200000 / (2π·20) = 1591.549 rpm; LIMS caps it.
+    # Lathe: X is the transverse axis (DIAMOF here, so X20 is a radius of 20 mm):
+    # n = 200 m/min / (2π · 20 mm) = 200000 / 125.664 = 1591.549 rpm, below LIMS=3000.
     r = run(lines("N10 G0 X20 Z5", "N20 G96 S200 LIMS=3000 M3", "N30 G95 G1 Z0 F0.2", "N40 M30"),
             machine="lathe2")
     speeds = [c.speed_rpm for c in r.commands if isinstance(c, canon.SpindleCommand) and c.speed_rpm]
