@@ -197,7 +197,60 @@ def md_number(identifier: str) -> int | None:
     return FALLBACK_MD_NUMBERS.get(identifier)
 
 
+def _catalog_definition(name: str) -> Any:
+    """The machine-data catalogue entry of ``$MC_…``-style names, or None."""
+    try:
+        from nck.machine_data import catalog
+
+        return catalog().get("$" + name.lstrip("$"))
+    except Exception:  # noqa: BLE001 - catalogue missing or still under construction
+        return None
+
+
+def _from_catalog(ctx: SysContext, name: str, definition: Any, indices: tuple[Any, ...]) -> Any:
+    axis = None
+    rest = list(indices)
+    if definition.per_axis:
+        if not rest or not isinstance(rest[-1], str):
+            raise NcAlarmError(17040, name)
+        axis = str(rest.pop())
+        if axis not in [a.name for a in ctx.machine.axes]:
+            raise NcAlarmError(17040, name)
+    if any(isinstance(i, str) for i in rest) or len(rest) > 1:
+        raise NcAlarmError(17020, name)
+    index = int(to_number(rest[0], name)) if rest else None
+    sources: list[Any] = [ctx.machine.md]
+    if definition.kind == "sd":
+        sources.insert(0, ctx.data.setting_data)
+    value = definition.default
+    for source in sources:
+        if definition.key in source:
+            candidate = source[definition.key]
+            if isinstance(candidate, dict):
+                if axis in candidate:
+                    value = candidate[axis]
+                    break
+                continue
+            value = candidate
+            break
+    if isinstance(value, dict):
+        value = value.get(axis, definition.default)
+    if isinstance(value, list):
+        if index is None:
+            raise NcAlarmError(17020, name)
+        if not 0 <= index < max(len(value), definition.array or 0):
+            raise NcAlarmError(17020, name)
+        return value[index] if index < len(value) else value[-1]
+    if index is not None and definition.array:
+        if not 0 <= index < definition.array:
+            raise NcAlarmError(17020, name)
+    return value
+
+
 def _machine_data(ctx: SysContext, name: str, match: re.Match, indices: tuple[Any, ...]) -> Any:
+    definition = _catalog_definition(name)
+    if definition is not None:
+        return _from_catalog(ctx, name, definition, indices)
     kind, scope, ident = match.groups()
     number = md_number(ident)
     prefix = "MD" if kind == "M" else "SD"
