@@ -66,31 +66,42 @@ AREAS: tuple[Area, ...] = (
 
 
 def area_screen_factory(area: Area) -> Callable[[], Screen]:
-    """Return a factory for the screen of ``area``: ``screens.<id>.AreaScreen`` or a placeholder."""
+    """Return a factory for the screen of ``area``: ``screens.<id>.AreaScreen`` or a placeholder.
+
+    The module is imported when the area is first shown (a quicker start); an
+    area whose module is missing, fails to import or lacks its stylesheet shows
+    the placeholder with the reason instead of taking the other areas down.
+    """
+
+    def build() -> Screen:
+        screen_class, problem = load_area_screen(area)
+        if screen_class is None:
+            from screens.placeholder import PlaceholderScreen
+
+            return PlaceholderScreen(area.id, area.title, problem)
+        return screen_class()
+
+    return build
+
+
+def load_area_screen(area: Area) -> tuple[type | None, str]:
+    """Import ``screens.<id>`` and return its ``AreaScreen`` class, or None and the reason."""
     module_name = f"screens.{area.id}"
-    problem = ""
     try:
         module = importlib.import_module(module_name)
     except ModuleNotFoundError as exc:
-        module = None
-        if exc.name != module_name:
-            problem = f"{module_name} could not be loaded: {exc}"
+        if exc.name == module_name:
+            return None, ""
+        return None, f"{module_name} could not be loaded: {exc}"
     except Exception as exc:  # a broken area must not take the other areas down
-        module = None
-        problem = f"{module_name} could not be loaded: {type(exc).__name__}: {exc}"
-    screen_class = getattr(module, "AreaScreen", None) if module is not None else None
-    if screen_class is not None and module is not None:
-        missing = _missing_css(screen_class, module)
-        if missing:
-            problem = f"{module_name}: stylesheet {missing} is missing"
-            screen_class = None
+        return None, f"{module_name} could not be loaded: {type(exc).__name__}: {exc}"
+    screen_class = getattr(module, "AreaScreen", None)
     if screen_class is None:
-        from screens.placeholder import PlaceholderScreen
-
-        if problem:
-            print(f"hmi: {problem}", file=sys.stderr)
-        return lambda: PlaceholderScreen(area.id, area.title, problem)
-    return screen_class
+        return None, f"{module_name} has no AreaScreen"
+    missing = _missing_css(screen_class, module)
+    if missing:
+        return None, f"{module_name}: stylesheet {missing} is missing"
+    return screen_class, ""
 
 
 def _missing_css(screen_class: type, module: Any) -> str:
@@ -467,7 +478,8 @@ def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral
     The NC file system (``nck.storage``) lives in ``<data dir>/nc``; the training
     programs of ``data/programs`` are installed into a fresh directory. With
     ``ephemeral`` the kernel works on a temporary copy that is deleted on quit.
-    ``program`` (a local file or a program name) is selected in AUTO at start.
+    ``program`` (a local file, imported into MPF, or a program name) is selected
+    at start; the HMI still starts in JOG (axes must be referenced first).
     """
     from nck.kernel import Nck
     from nck.machine import load_machine
@@ -486,7 +498,6 @@ def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral
         local = Path(program)
         if local.is_file():
             name = files.import_file(local, overwrite=True).name
-        nck.submit(cmd.SelectMode("AUTO"))
         result = nck.submit(cmd.SelectProgram(name))
         if isinstance(result, Rejected):
             raise ValueError(f"program {program}: {result.reason}")
@@ -510,7 +521,7 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
         data_dir: NC data directory (passed through to the kernel's storage).
         ephemeral: work on a temporary copy of the NC data.
         nck: an existing kernel (tests); built from the other options when None.
-        program: a part program to select in AUTO at start.
+        program: a part program to select at start (for AUTOMATIC).
         realtime: advance the kernel from the wall clock (False: tests advance it).
     """
     on_quit = None

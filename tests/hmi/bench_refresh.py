@@ -30,7 +30,8 @@ async def measure() -> None:
     app = HmiApp(nck, realtime=False)
     first_frame: list[float] = []
     async with app.run_test(size=(160, 48)) as pilot:
-        app.call_after_refresh(lambda: first_frame.append(time.perf_counter() - START))
+        app.call_after_refresh(lambda: first_frame.extend(
+            [time.perf_counter() - START, time.process_time()]))
         await pilot.pause()
         await pilot.pause()
         nck.submit(c.SetKeyswitch(1))
@@ -50,7 +51,8 @@ async def measure() -> None:
             kernel.append(t1 - t0)
             costs.append(t2 - t1)
         running = app.bridge.status.channel.program_state
-    print(f"time to first frame: {first_frame[0] * 1000:.0f} ms (from interpreter start of this script)")
+    print(f"time to first frame: {first_frame[0] * 1000:.0f} ms wall, {first_frame[1] * 1000:.0f} ms CPU "
+          "(from the start of the interpreter, imports included)")
     print(f"refresh (HMI only) CPU per frame: median {statistics.median(costs) * 1000:.2f} ms, "
           f"p95 {sorted(costs)[94] * 1000:.2f} ms; kernel tick 50 ms: median "
           f"{statistics.median(kernel) * 1000:.2f} ms; program state at end: {running}")
