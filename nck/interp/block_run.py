@@ -1,0 +1,505 @@
+"""Execution of one NC block: statements, machine words, jumps, calls, program end.
+
+:class:`BlockRun` is created by the interpreter for every block. It evaluates
+the statements in source order (assignments, DEF, control structures,
+builtins), collects the machine words into
+:class:`~nck.interp.motion_builder.BlockWords` for the motion builder, and
+finally applies jumps, subprogram calls and program/subprogram ends.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from nck import canon
+from nck.errors import NcAlarmError
+from nck.interp import sysvars
+from nck.interp.evaluator import evaluate
+from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, write_binding
+from nck.interp.motion_builder import BlockWords
+from nck.interp.program import Program, load_program
+from nck.interp.values import Axis, Cell, convert, to_bool, to_number, to_string
+from nck.lang import ast
+from nck.lang.parser import RESERVED, VALUE_ADDRESSES
+
+if TYPE_CHECKING:
+    from nck.interp.interpreter import Interpreter
+
+MAX_PROGRAM_LEVELS = 16  # main program + 15 subprogram levels (alarm 14012 beyond)
+MAX_PASSES = 9999
+PROGRAM_CONTROL_M = {0: "M0", 1: "M1", 2: "M2", 17: "M17", 30: "M30"}
+MODE_WORDS = frozenset(("I", "J", "K", "RP", "AP"))  # non-axis words that take AC()/IC()
+
+# ----------------------------------------------------------------------------- block run
+class BlockRun:
+    """Executes the statements of one block (created per block)."""
+
+    def __init__(self, interp: Interpreter, frame: Frame, index: int, source: canon.Source) -> None:
+        self.interp = interp
+        self.frame = frame
+        self.index = index
+        self.source = source
+        self.scope = VariableScope(interp)
+        self.next_pc = index + 1
+        self.words = BlockWords(source=source)
+        self.goto: ast.Goto | None = None
+        self.call: ast.Call | None = None
+        self.passes: int | None = None
+        self.early: list[canon.CanonCommand] = []
+        self.late: list[canon.CanonCommand] = []
+        self.end_kind: str | None = None  # M2/M30/M17/RET
+        self.executable = False
+
+    def eval(self, expr: ast.Expr) -> Any:
+        return evaluate(expr, self.scope)
+
+    # ------------------------------------------------------------ driver
+    def execute(self, block: ast.Block) -> list[canon.CanonCommand]:
+        interp = self.interp
+        for stmt in block.statements:
+            self.statement(stmt)
+        if self.executable:
+            self.frame.def_open = False
+        commands = list(self.early)
+        m_control = [(ext, v) for ext, v in self.words.m_codes if ext in (None, 0) and v in PROGRAM_CONTROL_M]
+        self.words.m_codes = [mc for mc in self.words.m_codes if mc not in m_control]
+        self._apply_gcodes()
+        if self.words.gcodes or self.words.axes or self.words.words or self.words.m_codes \
+                or self.words.h_codes or self.words.extended:
+            commands.extend(interp.builder.build(self.words, interp.modal))
+        if m_control or self.end_kind is not None or any(isinstance(c, canon.StopPoint) for c in self.late):
+            commands.extend(interp.builder.flush(interp.modal))  # held-back chamfer/rounding
+        for _, value in m_control:
+            kind = PROGRAM_CONTROL_M[value]
+            if kind in ("M0", "M1"):
+                commands.append(canon.StopPoint(self.source, kind))
+            elif self.end_kind is None:
+                self.end_kind = kind
+        commands.extend(self.late)
+        self.frame.pc = self.next_pc
+        if self.goto is not None:
+            self._jump(self.goto)
+        if self.call is not None:
+            self._call(self.call)
+        if self.end_kind is not None:
+            commands.extend(self._end())
+        return commands
+
+    def _end(self) -> list[canon.CanonCommand]:
+        interp = self.interp
+        if self.call is not None:
+            raise NcAlarmError(12080, self.end_kind)
+        if self.frame.is_main:
+            interp._program_end()
+            return [canon.ProgramEnd(self.source, self.end_kind or "M30")]
+        interp._return_from(self.frame)
+        return []
+
+    # ------------------------------------------------------------ statements
+    def statement(self, stmt: ast.Statement) -> None:
+        kind = type(stmt)
+        if kind is ast.AddressWord:
+            self.executable = True
+            self._address(stmt)  # type: ignore[arg-type]
+        elif kind is ast.GWord:
+            self.executable = True
+            self._gword(stmt.code)  # type: ignore[union-attr]
+        elif kind is ast.Assign:
+            self.executable = True
+            self._assign_stmt(stmt)  # type: ignore[arg-type]
+        elif kind is ast.Control:
+            self.executable = True
+            self._control(stmt)  # type: ignore[arg-type]
+        elif kind is ast.Goto:
+            self.executable = True
+            self.goto = stmt  # type: ignore[assignment]
+        elif kind is ast.IfGoto:
+            self.executable = True
+            if to_bool(self.eval(stmt.cond)):  # type: ignore[union-attr]
+                self.goto = stmt.goto  # type: ignore[union-attr]
+        elif kind is ast.Call:
+            self.executable = True
+            if self.call is not None:
+                raise NcAlarmError(12080, stmt.name)  # type: ignore[union-attr]
+            self.call = stmt  # type: ignore[assignment]
+        elif kind is ast.Builtin:
+            self.executable = True
+            self._builtin(stmt)  # type: ignore[arg-type]
+        elif kind is ast.Def:
+            self._def(stmt)  # type: ignore[arg-type]
+        elif kind is ast.Proc:
+            if self.index != 0 and self.frame.program.proc is not stmt:
+                raise NcAlarmError(14500)
+        elif kind is ast.Extern:
+            pass  # declarations only; calls are resolved by name at run time
+
+    def _address(self, word: ast.AddressWord) -> None:
+        address = word.address
+        interp = self.interp
+        value_expr = word.value
+        mode = None
+        if isinstance(value_expr, ast.Func) and value_expr.name in ("AC", "IC"):
+            if len(value_expr.args) != 1 or value_expr.args[0] is None:
+                raise NcAlarmError(12080, value_expr.name)
+            mode = value_expr.name
+            value_expr = value_expr.args[0]
+        value = self.eval(value_expr)
+        if address in interp.machine.path_axes:
+            if address in self.words.axes:
+                raise NcAlarmError(12000, address)
+            self.words.axes[address] = (float(to_number(value, address)), mode)
+            return
+        if mode is not None:
+            if address not in MODE_WORDS and not (address[0] in "IJK" and address[1:].isdigit()):
+                raise NcAlarmError(12080, f"{address}={mode}")
+            self.words.word_modes[address] = mode  # I=AC(…), AP=IC(…): read by the motion builder
+        if address == "G":
+            raise NcAlarmError(12080, "G=")
+        number = to_number(value, address)
+        if address == "M":
+            m = _whole(number, "M")
+            self.words.m_codes.append((word.ext, m))
+            if word.ext in (None, 0) and m == 17:
+                pass
+            return
+        if address == "H":
+            self.words.h_codes.append((word.ext, float(number)))
+            return
+        if address == "P":
+            passes = _whole(number, "P")
+            if not 1 <= passes <= MAX_PASSES:
+                raise NcAlarmError(14013)
+            self.passes = passes
+            return
+        if address in ("S", "T", "D", "F") and word.ext is not None:
+            key = (address, word.ext)
+            if key in self.words.extended:
+                raise NcAlarmError(12000, f"{address}{word.ext}")
+            self.words.extended[key] = float(number)
+            if word.ext == 1 or address in ("T", "D"):
+                self.words.words.setdefault(address, float(number))
+            return
+        if address in ("T", "D"):
+            _whole(number, address)
+        if len(address) == 1:
+            if address not in "FSTDIJK":
+                raise NcAlarmError(12550, address)
+        elif address not in VALUE_ADDRESSES and not (address[0] in "IJK" and address[1:].isdigit()):
+            raise NcAlarmError(12550, address)
+        if word.indices and address == "FA":  # FA[X]=…: one feed per positioning axis
+            address = f"FA[{to_string(self._index_value(word.indices[0]))}]"
+        if address in self.words.words:
+            raise NcAlarmError(12000, address)
+        self.words.words[address] = float(number)
+
+    def _gword(self, code: str) -> None:
+        group = self.interp.table.lookup(code)
+        present = self.words.gcodes.get(group.number)
+        if present is not None and present != code:
+            raise NcAlarmError(12060, group.number)
+        self.words.gcodes[group.number] = code
+
+    def _apply_gcodes(self) -> None:
+        modal = self.interp.modal
+        table = self.interp.table
+        for number, code in self.words.gcodes.items():
+            if table.groups[number].modal:
+                modal.gcodes[number] = code
+
+    # ------------------------------------------------------------ assignment
+    def _assign_stmt(self, stmt: ast.Assign) -> None:
+        target = stmt.target
+        if isinstance(target, ast.Index) and target.name == "AX" and self.interp.lookup("AX") is None:
+            # AX[<axis expression>]=value: axis word with a computed axis name
+            if len(target.indices) != 1:
+                raise NcAlarmError(17020, "AX")
+            axis = self._index_value(target.indices[0])
+            if not isinstance(axis, str) or not self.interp.is_axis(axis):
+                raise NcAlarmError(14092, "AX")
+            self._address(ast.AddressWord(str(axis), stmt.value))
+            return
+        if isinstance(target, ast.Name):
+            name = target.name
+            if self.interp.lookup(name) is None and not name.startswith("$") and self._is_address(name):
+                self._address(ast.AddressWord(name, stmt.value))
+                return
+        self.assign(target, self.eval(stmt.value))
+
+    def _is_address(self, name: str) -> bool:
+        return self.interp.is_axis(name) or name in VALUE_ADDRESSES or (len(name) == 1)
+
+    def assign(self, target: ast.Name | ast.Index | ast.RParam, value: Any) -> None:
+        interp = self.interp
+        if isinstance(target, ast.RParam):
+            interp.write_r(target.number, value)
+            return
+        if isinstance(target, ast.Index):
+            indices = tuple(self._index_value(i) for i in target.indices)
+            if target.name == "R":
+                if len(indices) != 1:
+                    raise NcAlarmError(17020, "R")
+                interp.write_r(indices[0], value)
+                return
+            binding = interp.lookup(target.name)
+            if binding is not None:
+                write_binding(interp, binding, indices, value)
+                return
+            if target.name.startswith("$"):
+                sysvars.write(interp, target.name, indices, value)  # type: ignore[arg-type]
+                return
+            raise NcAlarmError(12550, target.name)
+        binding = interp.lookup(target.name)
+        if binding is not None:
+            write_binding(interp, binding, (), value)
+            return
+        if target.name.startswith("$"):
+            sysvars.write(interp, target.name, (), value)  # type: ignore[arg-type]
+            return
+        raise NcAlarmError(12550, target.name)
+
+    def _index_value(self, expr: ast.Expr) -> Any:
+        if isinstance(expr, ast.Name) and self.interp.is_axis(expr.name) and self.interp.lookup(expr.name) is None:
+            return Axis(expr.name)
+        return self.eval(expr)
+
+    # ------------------------------------------------------------ DEF
+    def _def(self, stmt: ast.Def) -> None:
+        frame = self.frame
+        if not frame.def_open:
+            raise NcAlarmError(14500)
+        lower = float(to_number(self.eval(stmt.lower))) if stmt.lower is not None else None
+        upper = float(to_number(self.eval(stmt.upper))) if stmt.upper is not None else None
+        for decl in stmt.names:
+            name = decl.name
+            if len(name) < 2 or not all(c.isalpha() or c == "_" for c in name[:2]):
+                raise NcAlarmError(12080, name)
+            if name in RESERVED or self.interp.is_axis(name) or self.interp.table.is_gcode(name) \
+                    or name in VALUE_ADDRESSES:
+                raise NcAlarmError(12170, name)
+            scope_dict = frame.locals
+            if stmt.scope is None and name in scope_dict:
+                raise NcAlarmError(12170, name)
+            dims: list[int] = []
+            for dim_expr in decl.dims:
+                size = to_number(self.eval(dim_expr), name)
+                if size != int(size) or not 1 <= int(size) <= 65535:
+                    raise NcAlarmError(17020, name)
+                dims.append(int(size))
+            cell = Cell.create(name, stmt.type, tuple(dims), lower, upper, stmt.string_len)
+            if decl.init is not None:
+                values = [self.eval(e) for e in decl.init]
+                if not dims:
+                    if len(values) != 1:
+                        raise NcAlarmError(12260, name)
+                    cell.set(values[0])
+                else:
+                    size = len(cell.value)
+                    if decl.init_rep:
+                        if len(values) != 1:
+                            raise NcAlarmError(12260, name)
+                        converted = convert(values[0], stmt.type, name, stmt.string_len)
+                        for i in range(size):
+                            cell.value[i] = converted
+                        cell.set(values[0], tuple(0 for _ in dims))
+                    else:
+                        if len(values) > size:
+                            raise NcAlarmError(12260, name)
+                        for i, v in enumerate(values):
+                            cell.set(v, _unflatten(i, tuple(dims)))
+            if stmt.scope is not None:
+                self._def_gud(cell)
+            else:
+                scope_dict[name] = cell
+
+    def _def_gud(self, cell: Cell) -> None:
+        """``DEF NCK/CHAN``: a global user variable kept in NcData.gud (created once)."""
+        if cell.name in self.interp.data.gud:
+            return
+        value = list(cell.value) if cell.dims else cell.value
+        if cell.dims and len(cell.dims) > 1:
+            raise NcAlarmError(12190, cell.name)
+        self.interp.write_gud(cell.name, value)
+
+    # ------------------------------------------------------------ control structures
+    def _control(self, stmt: ast.Control) -> None:
+        program = self.frame.program
+        index = self.index
+        kind = stmt.kind
+        if kind == "IF":
+            if not to_bool(self.eval(stmt.cond)):  # type: ignore[arg-type]
+                else_index = program.else_of.get(index)
+                self.next_pc = (else_index if else_index is not None else program.partner[index]) + 1
+        elif kind == "ELSE":
+            self.next_pc = program.partner[index] + 1
+        elif kind == "WHILE":
+            if not to_bool(self.eval(stmt.cond)):  # type: ignore[arg-type]
+                self.next_pc = program.partner[index] + 1
+        elif kind == "ENDWHILE":
+            self.next_pc = program.partner[index]
+        elif kind == "ENDLOOP":
+            self.next_pc = program.partner[index] + 1
+        elif kind == "UNTIL":
+            if not to_bool(self.eval(stmt.cond)):  # type: ignore[arg-type]
+                self.next_pc = program.partner[index] + 1
+        elif kind == "FOR":
+            start = self.eval(stmt.start)  # type: ignore[arg-type]
+            end = to_number(self.eval(stmt.end), "FOR")  # type: ignore[arg-type]
+            self.assign(stmt.var, start)  # type: ignore[arg-type]
+            self.frame.for_ends[index] = end
+            if to_number(self._read_target(stmt.var), "FOR") > end:  # type: ignore[arg-type]
+                self.next_pc = program.partner[index] + 1
+        elif kind == "ENDFOR":
+            opener = program.partner[index]
+            head = program.lines[opener].block.statements[0]  # type: ignore[union-attr]
+            end = self.frame.for_ends.get(opener)
+            if end is None:
+                raise NcAlarmError(12640)
+            value = to_number(self._read_target(head.var), "FOR") + 1  # type: ignore[union-attr]
+            self.assign(head.var, value)  # type: ignore[union-attr,arg-type]
+            if to_number(self._read_target(head.var), "FOR") <= end:  # type: ignore[union-attr]
+                self.next_pc = opener + 1
+        # ENDIF, LOOP, REPEAT: fall through to the next block
+
+    def _read_target(self, target: ast.Expr) -> Any:
+        return self.eval(target)
+
+    # ------------------------------------------------------------ jumps and calls
+    def _jump(self, goto: ast.Goto) -> None:
+        program = self.frame.program
+        direction = {"GOTOF": "F", "GOTOB": "B", "GOTO": "FB", "GOTOC": "FB"}[goto.kind]
+        label, number = goto.label, goto.number
+        if goto.expr is not None:
+            text = to_string(self.eval(goto.expr)).strip().upper()
+            if text[:1] == "N" and text[1:].isdigit():
+                number = int(text[1:])
+            else:
+                label = text
+        if label is not None and program.find_label(label, self.index, "FB") is None \
+                and self.interp.lookup(label) is not None:
+            # GOTOF <variable>: the destination is the variable's (string) value
+            text = to_string(self.eval(ast.Name(label))).strip().upper()
+            label, number = text, None
+            if text[:1] == "N" and text[1:].isdigit():
+                label, number = None, int(text[1:])
+        found = None
+        if number is not None:
+            found = program.find_number(number, self.index, direction)
+        elif label is not None:
+            found = program.find_label(label, self.index, direction)
+            if found is None and label[:1] == "N" and label[1:].isdigit():
+                found = program.find_number(int(label[1:]), self.index, direction)
+        if found is None:
+            if goto.kind == "GOTOC":
+                return
+            raise NcAlarmError(14080, label if label is not None else f"N{number}")
+        self.frame.pc = found
+
+    def _call(self, call: ast.Call) -> None:
+        interp = self.interp
+        state = interp._state
+        found = interp.programs.read_program(call.name)
+        if found is None:
+            if call.args is None and not call.name[:1] == "L" and self.passes is None:
+                raise NcAlarmError(12550, call.name)
+            raise NcAlarmError(14011, call.name)
+        if len(state.frames) >= MAX_PROGRAM_LEVELS:
+            raise NcAlarmError(14012)
+        name, text = found
+        program = _program_cache(interp, name, text)
+        frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
+        self._bind_parameters(program, call, frame)
+        frame.locals = dict(frame.params)
+        state.frames.append(frame)
+
+    def _bind_parameters(self, program: Program, call: ast.Call, frame: Frame) -> None:
+        params = program.proc.params if program.proc is not None else ()
+        args = call.args or ()
+        if len(args) > len(params):
+            raise NcAlarmError(12340, call.name)
+        for position, param in enumerate(params):
+            name = param.name or f"_P{position}"
+            arg = args[position] if position < len(args) else None
+            if param.by_ref:
+                frame.params[name] = self._reference(arg, param, call.name)
+            else:
+                cell = Cell.create(name, param.type)
+                if arg is not None:
+                    cell.set(self.eval(arg))
+                frame.params[name] = cell
+
+    def _reference(self, arg: ast.Expr | None, param: ast.ParamDecl, callee: str) -> Binding:
+        interp = self.interp
+        if arg is None:
+            return Cell.create(param.name or "_", param.type)
+        if isinstance(arg, ast.RParam):
+            return RRef(interp.r_index(arg.number))
+        if isinstance(arg, ast.Name):
+            binding = interp.lookup(arg.name)
+            if binding is None:
+                raise NcAlarmError(12320, arg.name)
+            return binding
+        if isinstance(arg, ast.Index):
+            indices = tuple(self._index_value(i) for i in arg.indices)
+            if arg.name == "R":
+                if len(indices) != 1:
+                    raise NcAlarmError(17020, "R")
+                return RRef(interp.r_index(indices[0]))
+            binding = interp.lookup(arg.name)
+            if isinstance(binding, Cell) and binding.dims:
+                binding.offset(indices)  # validates
+                return ElemRef(binding, indices)
+            raise NcAlarmError(12320, arg.name)
+        raise NcAlarmError(12320, callee)
+
+    # ------------------------------------------------------------ builtins
+    def _builtin(self, stmt: ast.Builtin) -> None:
+        name = stmt.name
+        if name == "MSG":
+            if len(stmt.args) > 1:
+                raise NcAlarmError(14020, "MSG")
+            text = to_string(self.eval(stmt.args[0])) if stmt.args and stmt.args[0] is not None else ""
+            self.interp._state.message = text
+            self.early.append(canon.Message(self.source, text))
+        elif name == "SETAL":
+            if not stmt.args or stmt.args[0] is None:
+                raise NcAlarmError(14020, "SETAL")
+            number = _whole(to_number(self.eval(stmt.args[0]), "SETAL"), "SETAL")
+            if not 60000 <= number <= 69999:
+                raise NcAlarmError(14020, "SETAL")
+            params = tuple(to_string(self.eval(a)) for a in stmt.args[1:] if a is not None)
+            self.late.append(canon.UserAlarm(self.source, number, params))
+        elif name == "STOPRE":
+            self.late.append(canon.StopPoint(self.source, "STOPRE"))
+        elif name == "RET":
+            self.end_kind = "RET"
+
+
+def _whole(number: Any, address: str) -> int:
+    value = to_number(number, address)
+    if isinstance(value, float):
+        if not value.is_integer():
+            raise NcAlarmError(12080, address)
+        value = int(value)
+    if value < 0 or value > 99_999_999:
+        raise NcAlarmError(12160, address)
+    return value
+
+
+def _unflatten(flat: int, dims: tuple[int, ...]) -> tuple[int, ...]:
+    out = []
+    for size in reversed(dims):
+        out.append(flat % size)
+        flat //= size
+    return tuple(reversed(out))
+
+
+def _program_cache(interp: Interpreter, name: str, text: str) -> Program:
+    cache: dict[tuple[str, str], Program] = interp.__dict__.setdefault("_programs", {})
+    key = (name, text)
+    program = cache.get(key)
+    if program is None:
+        if len(cache) > 64:
+            cache.clear()
+        program = load_program(name, text)
+        cache[key] = program
+    return program

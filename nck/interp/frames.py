@@ -1,0 +1,186 @@
+"""Call frames and variable bindings of the interpreter.
+
+A :class:`Frame` is one program level (main program or subprogram) with its
+program counter and local variables. Variables are reached through bindings:
+a :class:`~nck.interp.values.Cell` (own variable), or a reference used for
+by-reference parameters (:class:`RRef` R parameter, :class:`ElemRef` array
+element, :class:`GudRef` global user datum). :class:`VariableScope` is what
+expressions use to read names; writes go through :func:`write_binding`, which
+journals the old value so that a failing block can be undone.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from nck.errors import NcAlarmError
+from nck.interp import sysvars
+from nck.interp.program import Program
+from nck.interp.values import Axis, Cell, convert, to_number
+
+if TYPE_CHECKING:
+    from nck.interp.interpreter import Interpreter
+
+@dataclass
+class RRef:
+    """By-reference binding to an R parameter."""
+
+    index: int
+
+
+@dataclass
+class ElemRef:
+    """By-reference binding to one element of an array variable."""
+
+    cell: Cell
+    indices: tuple[Any, ...]
+
+
+@dataclass
+class GudRef:
+    """By-reference binding to a global user variable stored in NcData.gud."""
+
+    name: str
+
+
+Binding = Cell | RRef | ElemRef | GudRef
+
+
+@dataclass
+class Frame:
+    """One program level on the call stack."""
+
+    program: Program
+    pc: int = 0
+    locals: dict[str, Binding] = field(default_factory=dict)
+    params: dict[str, Binding] = field(default_factory=dict)
+    passes_left: int = 0
+    def_open: bool = True
+    for_ends: dict[int, Any] = field(default_factory=dict)
+    is_main: bool = False
+
+
+class VariableScope:
+    """Variable access for expressions (see :class:`nck.interp.evaluator.Scope`)."""
+
+    __slots__ = ("interp",)
+
+    def __init__(self, interp: Interpreter) -> None:
+        self.interp = interp
+
+    def read_r(self, index: Any) -> float:
+        return self.interp.data.r[self.interp.r_index(index)]
+
+    def read_name(self, name: str) -> Any:
+        interp = self.interp
+        binding = interp.lookup(name)
+        if binding is not None:
+            return read_binding(interp, binding, ())
+        if name.startswith("$"):
+            return sysvars.read(interp, name, ())  # type: ignore[arg-type]
+        if interp.is_axis(name):
+            return Axis(name)
+        raise NcAlarmError(12550, name)
+
+    def read_index(self, name: str, indices: tuple[Any, ...]) -> Any:
+        interp = self.interp
+        if name == "R":
+            if len(indices) != 1:
+                raise NcAlarmError(17020, "R")
+            return self.read_r(indices[0])
+        binding = interp.lookup(name)
+        if binding is not None:
+            return read_binding(interp, binding, indices)
+        if name.startswith("$"):
+            return sysvars.read(interp, name, indices)  # type: ignore[arg-type]
+        raise NcAlarmError(12550, name)
+
+    def is_axis(self, name: str) -> bool:
+        return self.interp.is_axis(name)
+
+    def has_name(self, name: str) -> bool:
+        return self.interp.lookup(name) is not None
+
+
+def journal_cell(interp: Interpreter, cell: Cell, indices: tuple[Any, ...]) -> None:
+    """Record the old value of a variable (or one array element) before a write."""
+    if cell.dims:
+        offset = cell.offset(indices)
+        interp._journal.append(("cell", (cell, offset), cell.value[offset]))
+    else:
+        interp._journal.append(("cell", (cell, None), cell.value))
+
+
+def read_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...]) -> Any:
+    """Read through a variable binding."""
+    if isinstance(binding, Cell):
+        if binding.dims and not indices:
+            raise NcAlarmError(12150, binding.name)
+        return binding.get(indices)
+    if isinstance(binding, RRef):
+        if indices:
+            raise NcAlarmError(17020, f"R{binding.index}")
+        return interp.data.r[binding.index]
+    if isinstance(binding, ElemRef):
+        if indices:
+            raise NcAlarmError(17020, binding.cell.name)
+        return binding.cell.get(binding.indices)
+    value = interp.data.gud[binding.name]
+    if isinstance(value, list):
+        if len(indices) != 1:
+            raise NcAlarmError(17020, binding.name)
+        i = int(to_number(indices[0], binding.name))
+        if not 0 <= i < len(value):
+            raise NcAlarmError(17020, binding.name)
+        return value[i]
+    if indices:
+        raise NcAlarmError(17020, binding.name)
+    return value
+
+
+def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...], value: Any) -> None:
+    """Write through a variable binding (converted to the variable's type)."""
+    if isinstance(binding, Cell):
+        if binding.dims and not indices:
+            raise NcAlarmError(12150, binding.name)
+        journal_cell(interp, binding, indices)
+        binding.set(value, indices)
+        return
+    if isinstance(binding, RRef):
+        if indices:
+            raise NcAlarmError(17020, f"R{binding.index}")
+        interp.write_r(binding.index, value)
+        return
+    if isinstance(binding, ElemRef):
+        if indices:
+            raise NcAlarmError(17020, binding.cell.name)
+        journal_cell(interp, binding.cell, binding.indices)
+        binding.cell.set(value, binding.indices)
+        return
+    current = interp.data.gud[binding.name]
+    if isinstance(current, list):
+        if len(indices) != 1:
+            raise NcAlarmError(17020, binding.name)
+        i = int(to_number(indices[0], binding.name))
+        if not 0 <= i < len(current):
+            raise NcAlarmError(17020, binding.name)
+        new = list(current)
+        new[i] = _like(current[i], value, binding.name)
+        interp.write_gud(binding.name, new)
+    else:
+        if indices:
+            raise NcAlarmError(17020, binding.name)
+        interp.write_gud(binding.name, _like(current, value, binding.name))
+
+
+def _like(current: Any, value: Any, name: str) -> Any:
+    if isinstance(current, bool):
+        return convert(value, "BOOL", name)
+    if isinstance(current, int):
+        return convert(value, "INT", name)
+    if isinstance(current, float):
+        return convert(value, "REAL", name)
+    if isinstance(current, str):
+        return convert(value, "STRING", name)
+    return value
