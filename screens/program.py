@@ -146,6 +146,14 @@ class ProgramScreen(AreaBase):
         self.open_program(requested)
         return True
 
+    def say(self, text: str) -> None:
+        """Write ``text`` on the dialog line (kept when the area is shown again)."""
+        setter = getattr(self.hmi, "set_hint", None)
+        if callable(setter):
+            setter(text)
+        else:
+            self.show_hint(text)
+
     # -- softkeys ------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
         """Top level: Edit, Search, Renumber, Save, Simulation, Execute, Close."""
@@ -246,7 +254,7 @@ class ProgramScreen(AreaBase):
         return False
 
     # -- opening and closing -----------------------------------------------------------------
-    def open_program(self, program: str, *, text: str | None = None) -> bool:
+    def open_program(self, program: str, *, text: str | None = None, offer_journal: bool = True) -> bool:
         """Show ``program`` in the editor (read from the NC file system unless ``text`` is given).
 
         Returns False (with a message) when it cannot be read.
@@ -256,7 +264,7 @@ class ProgramScreen(AreaBase):
         try:
             raw = self.files.read_bytes(program) if text is None else text.encode("utf-8")
         except Exception as exc:  # a file problem is a notification, never a traceback
-            self.show_hint(f"{program}: cannot be read ({exc})")
+            self.say(f"{program}: cannot be read ({exc})")
             return False
         decoded, binary = decode_program(raw)
         self.program = self.files.display_name(program)
@@ -271,13 +279,13 @@ class ProgramScreen(AreaBase):
         editor.set_error_marks([])
         self._update_read_only()
         if binary:
-            self.show_hint(f"{self.program} is not a UTF-8 text file: opened read-only")
+            self.say(f"{self.program} is not a UTF-8 text file: opened read-only")
         self._update_title()
         self.refresh_softkeys()
         editor.focus()
         if not binary:
             self.check_now()
-            entry = self.journal.entry(self.program)
+            entry = self.journal.entry(self.program) if offer_journal else None
             if entry is not None and entry.text != decoded:
                 self._ask_restore(entry)
         return True
@@ -290,6 +298,8 @@ class ProgramScreen(AreaBase):
         """Close the editor (no question asked: callers ask first)."""
         if self.program is not None:
             self.journal.discard(self.program)
+            if self.files.last_program == self.program:
+                self.files.last_program = None
         self.program = None
         self.saved_text = ""
         self._dirty = False
@@ -365,7 +375,7 @@ class ProgramScreen(AreaBase):
                 self.journal.write(self.program, text, text_hash(self.saved_text))
                 self._journaled_hash = digest
             except OSError as exc:
-                self.show_hint(f"Journal could not be written: {exc}")
+                self.say(f"Journal could not be written: {exc}")
 
     def journal_now(self) -> None:
         """Write the journal at once (before leaving, closing, crashing risks)."""
@@ -389,7 +399,7 @@ class ProgramScreen(AreaBase):
             entries = []
         if not entries:
             if self.program is not None:
-                self.show_hint("No unsaved programs in the journal")
+                self.say("No unsaved programs in the journal")
             return
         by_label = {f"Restore {e.program}": e for e in entries}
 
@@ -400,7 +410,7 @@ class ProgramScreen(AreaBase):
             elif choice == "Discard all unsaved texts":
                 for entry in entries:
                     self.journal.discard(entry.program)
-                self.show_hint("Unsaved texts discarded")
+                self.say("Unsaved texts discarded")
 
         self.app.push_screen(
             ChoiceDialog(
@@ -427,16 +437,16 @@ class ProgramScreen(AreaBase):
 
     def _restore(self, entry: Any) -> None:
         if self.program != entry.program:
-            if not self.open_program(entry.program):
+            if not self.open_program(entry.program, offer_journal=False):
                 # the file is gone: restore into a fresh editor under the old name
-                self.open_program(entry.program, text="")
+                self.open_program(entry.program, text="", offer_journal=False)
             if self.program is None:
                 return
         editor = self.editor
         editor.replace(entry.text, (0, 0), editor.document.end)
         self._dirty = True
         self._update_title()
-        self.show_hint(f"{entry.program}: unsaved text restored (not saved yet)")
+        self.say(f"{entry.program}: unsaved text restored (not saved yet)")
         self.schedule_check()
 
     # -- read-only rules -----------------------------------------------------------------------
@@ -453,7 +463,7 @@ class ProgramScreen(AreaBase):
         if self.is_mounted:
             self.editor.read_only = bool(reason)
             if changed and reason == "program is being executed":
-                self.show_hint(f"{self.program} is being executed: editing is not possible")
+                self.say(f"{self.program} is being executed: editing is not possible")
         if changed:
             self._update_title()
             self.refresh_softkeys()
@@ -558,7 +568,7 @@ class ProgramScreen(AreaBase):
                     self.app.call_from_thread(self._apply_marks, generation, batch, False)
                     batch = []
         except Exception as exc:  # a bug in the check must not take the editor down
-            self.app.call_from_thread(self.show_hint, f"Check failed: {exc!r}")
+            self.app.call_from_thread(self.say, f"Check failed: {exc!r}")
         if not stale():
             self.app.call_from_thread(self._apply_marks, generation, batch, True)
 
@@ -576,7 +586,7 @@ class ProgramScreen(AreaBase):
         """Next error softkey: put the cursor on the next faulty line."""
         line = self.editor.next_error_line()
         if line is None:
-            self.show_hint("No errors found")
+            self.say("No errors found")
             return
         self.editor.move_cursor((line, 0), center=True)
         self.editor.focus()
@@ -597,11 +607,11 @@ class ProgramScreen(AreaBase):
         """Mark: start (or end) marking a block from the cursor."""
         if self._mark_anchor is None:
             self._mark_anchor = self.editor.cursor_location
-            self.show_hint("Marking: move the cursor, then Copy / Cut / Delete")
+            self.say("Marking: move the cursor, then Copy / Cut / Delete")
         else:
             self._mark_anchor = None
             self.editor.selection = Selection.cursor(self.editor.cursor_location)
-            self.show_hint("")
+            self.say("")
         self.editor.focus()
 
     def _selected_text(self) -> str:
@@ -612,7 +622,7 @@ class ProgramScreen(AreaBase):
         text = self._selected_text()
         if text:
             self.app.copy_to_clipboard(text)
-            self.show_hint(f"{len(text.splitlines()) or 1} line(s) copied")
+            self.say(f"{len(text.splitlines()) or 1} line(s) copied")
         self._end_mark()
 
     def action_cut(self) -> None:
@@ -663,7 +673,7 @@ class ProgramScreen(AreaBase):
             self.editor.replace(new, (0, 0), self.editor.document.end)
             row = min(cursor[0], self.editor.document.line_count - 1)
             self.editor.move_cursor((row, 0))
-            self.show_hint("Blocks renumbered (step 10)")
+            self.say("Blocks renumbered (step 10)")
 
     # -- search --------------------------------------------------------------------------------
     def action_search(self) -> None:
@@ -698,12 +708,12 @@ class ProgramScreen(AreaBase):
         after = (start[0], start[1] - 1) if start else (row, column - 1)
         found = find_text(lines, query, after)
         if found is None:
-            self.show_hint(f"'{query}' not found")
+            self.say(f"'{query}' not found")
             return False
         row, column = found
         self.editor.selection = Selection((row, column), (row, column + len(query)))
         self.editor.scroll_cursor_visible(center=True)
-        self.show_hint("")
+        self.say("")
         return True
 
     def action_replace_one(self) -> None:
@@ -731,27 +741,27 @@ class ProgramScreen(AreaBase):
         new, count = re.subn(re.escape(query), lambda _m: replacement, text, flags=re.IGNORECASE)
         if count:
             self.editor.replace(new, (0, 0), self.editor.document.end)
-        self.show_hint(f"{count} replaced")
+        self.say(f"{count} replaced")
 
     # -- save, execute -------------------------------------------------------------------------
     def action_save(self) -> bool:
         """Save softkey: write the text atomically through the NC file system."""
         if self.program is None or self.editor.read_only:
             if self.read_only_reason:
-                self.show_hint(f"Not saved: {self.read_only_reason}")
+                self.say(f"Not saved: {self.read_only_reason}")
             return False
         text = self.editor.text
         try:
             self.files.write_text(self.program, text)
         except Exception as exc:  # storage refusals are notifications
-            self.show_hint(f"{self.program} not saved: {exc}")
+            self.say(f"{self.program} not saved: {exc}")
             return False
         self.saved_text = text
         self._dirty = False
         self.journal.discard(self.program)
         self._journaled_hash = ""
         self._update_title()
-        self.show_hint(f"{self.program} saved")
+        self.say(f"{self.program} saved")
         return True
 
     def action_execute(self) -> None:
@@ -763,11 +773,11 @@ class ProgramScreen(AreaBase):
         if self.status is not None and self.status.channel.mode != "AUTO":
             result = self.submit(cmd.SelectMode("AUTO"))
             if isinstance(result, Rejected):
-                self.show_hint(f"Execute: {result.reason}")
+                self.say(f"Execute: {result.reason}")
                 return
         result = self.submit(cmd.SelectProgram(self.files.select_name(self.program)))
         if isinstance(result, Rejected):
-            self.show_hint(f"Execute: {result.reason}")
+            self.say(f"Execute: {result.reason}")
             return
         self.perform("app.switch_area('machine')")
 

@@ -146,6 +146,14 @@ class ProgramManagerScreen(AreaBase):
         if self.is_mounted:
             self.refresh_listing()
 
+    def say(self, text: str) -> None:
+        """Write ``text`` on the dialog line (kept when the area is shown again)."""
+        setter = getattr(self.hmi, "set_hint", None)
+        if callable(setter):
+            setter(text)
+        else:
+            self.show_hint(text)
+
     # -- softkeys ------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
         """Execute, New, Open, Copy, Paste, Rename, Delete, Search / Import, Export, directories."""
@@ -230,7 +238,7 @@ class ProgramManagerScreen(AreaBase):
             self.entries = self.files.list(self.directory)
         except (OSError, ProgramFileError) as exc:
             self.entries = []
-            self.show_hint(f"{self.directory}: {exc}")
+            self.say(f"{self.directory}: {exc}")
         selected = (self.status.channel.selected_program if self.status else None) or ""
         selected_name = Path(selected).name.upper()
         table.clear()
@@ -306,16 +314,16 @@ class ProgramManagerScreen(AreaBase):
         """Execute: select the program for AUTO and go to the Machine area."""
         entry = self.current_entry()
         if entry is None or entry.kind != "MPF":
-            self.show_hint("Only a part program (MPF) can be selected")
+            self.say("Only a part program (MPF) can be selected")
             return
         if self.status is not None and self.status.channel.mode != "AUTO":
             result = self.submit(cmd.SelectMode("AUTO"))
             if isinstance(result, Rejected):
-                self.show_hint(f"Execute: {result.reason}")
+                self.say(f"Execute: {result.reason}")
                 return
         result = self.submit(cmd.SelectProgram(self.files.select_name(entry.path)))
         if isinstance(result, Rejected):
-            self.show_hint(f"Execute: {result.reason}")
+            self.say(f"Execute: {result.reason}")
             return
         self.refresh_listing()
         self.perform("app.switch_area('machine')")
@@ -331,11 +339,11 @@ class ProgramManagerScreen(AreaBase):
             try:
                 path = self.files.create(directory, name)
             except (ProgramFileError, OSError) as exc:
-                self.show_hint(f"New: {exc}")
+                self.say(f"New: {exc}")
                 return
             self.rebuild_tree()
             self.refresh_listing(select=path)
-            self.show_hint(f"{path} created")
+            self.say(f"{path} created")
             if not path.startswith("/WKS/") or path.count("/") > 2:
                 self.files.request_open(path)
                 self.perform("app.switch_area('program')")
@@ -347,7 +355,7 @@ class ProgramManagerScreen(AreaBase):
         entry = self.current_entry()
         if entry is not None and entry.kind != "WPD":
             self._clipboard = entry.path
-            self.show_hint(f"{entry.path} copied — Paste puts a copy into the directory shown")
+            self.say(f"{entry.path} copied — Paste puts a copy into the directory shown")
             self.refresh_softkeys()
 
     def action_paste(self) -> None:
@@ -357,10 +365,10 @@ class ProgramManagerScreen(AreaBase):
         try:
             path = self.files.copy(self._clipboard, self.directory)
         except (ProgramFileError, OSError) as exc:
-            self.show_hint(f"Paste: {exc}")
+            self.say(f"Paste: {exc}")
             return
         self.refresh_listing(select=path)
-        self.show_hint(f"{path} created as a copy of {self._clipboard}")
+        self.say(f"{path} created as a copy of {self._clipboard}")
 
     def action_rename(self) -> None:
         """Rename: ask for the new name (refused for the program being executed)."""
@@ -368,7 +376,7 @@ class ProgramManagerScreen(AreaBase):
         if entry is None or entry.kind == "WPD":
             return
         if entry.path in self._in_use() or entry.name.upper() in {Path(p).name.upper() for p in self._in_use()}:
-            self.show_hint(f"{entry.path} is being executed and cannot be renamed")
+            self.say(f"{entry.path} is being executed and cannot be renamed")
             return
 
         def rename(name: str | None) -> None:
@@ -377,10 +385,10 @@ class ProgramManagerScreen(AreaBase):
             try:
                 path = self.files.rename(entry.path, name, self._in_use())
             except (ProgramFileError, OSError) as exc:
-                self.show_hint(f"Rename: {exc}")
+                self.say(f"Rename: {exc}")
                 return
             self.refresh_listing(select=path)
-            self.show_hint(f"{entry.path} renamed to {path}")
+            self.say(f"{entry.path} renamed to {path}")
 
         self.app.push_screen(PromptDialog(f"Rename {entry.path} to:", entry.name), rename)
 
@@ -392,7 +400,7 @@ class ProgramManagerScreen(AreaBase):
         if entry is None:
             return
         if entry.name.upper() in {Path(p).name.upper() for p in self._in_use()}:
-            self.show_hint(f"{entry.path} is being executed and cannot be deleted")
+            self.say(f"{entry.path} is being executed and cannot be deleted")
             return
 
         def confirmed(choice: str | None) -> None:
@@ -401,12 +409,12 @@ class ProgramManagerScreen(AreaBase):
             try:
                 self.files.delete(entry.path, self._in_use())
             except (ProgramFileError, OSError) as exc:
-                self.show_hint(f"Delete: {exc}")
+                self.say(f"Delete: {exc}")
                 return
             if entry.kind == "WPD":
                 self.rebuild_tree()
             self.refresh_listing()
-            self.show_hint(f"{entry.path} deleted")
+            self.say(f"{entry.path} deleted")
 
         what = "the workpiece folder and everything in it" if entry.kind == "WPD" else "the program"
         self.app.push_screen(ChoiceDialog(f"Delete {what} {entry.path}?", ["Cancel", "Delete"]), confirmed)
@@ -438,9 +446,9 @@ class ProgramManagerScreen(AreaBase):
                     self.directory = folder
                     self.refresh_listing(select=entry.path)
                     self.table.focus()
-                    self.show_hint(f"Found {entry.path}")
+                    self.say(f"Found {entry.path}")
                     return True
-        self.show_hint(f"No program name contains '{text}'")
+        self.say(f"No program name contains '{text}'")
         return False
 
     def action_import_file(self) -> None:
@@ -453,11 +461,11 @@ class ProgramManagerScreen(AreaBase):
             try:
                 target = self.files.import_file(path, directory)
             except (ProgramFileError, OSError) as exc:
-                self.show_hint(f"Import: {exc}")
+                self.say(f"Import: {exc}")
                 return
             self.directory = directory
             self.refresh_listing(select=target)
-            self.show_hint(f"{path} imported as {target}")
+            self.say(f"{path} imported as {target}")
 
         self.app.push_screen(PromptDialog(f"Import into {directory}: path of the file on this PC", ""), do_import)
 
@@ -473,9 +481,9 @@ class ProgramManagerScreen(AreaBase):
             try:
                 target = self.files.export_file(entry.path, path)
             except (ProgramFileError, OSError) as exc:
-                self.show_hint(f"Export: {exc}")
+                self.say(f"Export: {exc}")
                 return
-            self.show_hint(f"{entry.path} exported to {target}")
+            self.say(f"{entry.path} exported to {target}")
 
         self.app.push_screen(PromptDialog(f"Export {entry.path} to (file or folder on this PC):", str(Path.cwd())),
                              do_export)

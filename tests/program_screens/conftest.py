@@ -1,0 +1,52 @@
+"""Fixtures of the program-screen tests: an NC data directory, the HMI on a real kernel."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from nck.kernel import Nck
+
+from hmi.app import HmiApp
+from screens.program_files import _DirectoryBackend
+
+SIZE = (160, 48)
+
+DEMO_PROGRAM = (
+    "; pocket outline\n"
+    "N10 G90 G0 X0 Y0 Z5\n"
+    "N20 G1 Z-1 F200\n"
+    "N30 X40\n"
+    "N40 Y30\n"
+    "N50 X0\n"
+    "N60 Y0\n"
+    "N70 G0 Z50\n"
+    "N80 M30\n"
+)
+
+
+def nc_files(root: Path):
+    """The NC file system of a data directory (``/MPF``, ``/SPF``, ``/WKS``)."""
+    return _DirectoryBackend(root)
+
+
+def make_program_app(root: Path, referenced: bool = True) -> HmiApp:
+    """The HMI on a real kernel whose programs live in the NC data directory ``root``."""
+    return HmiApp(Nck(programs=nc_files(root), referenced=referenced), realtime=False)
+
+
+@pytest.fixture
+def data_dir(tmp_path: Path) -> Path:
+    """An NC data directory with one part program ``/MPF/DEMO.MPF``."""
+    root = tmp_path / "nc"
+    nc_files(root)
+    (root / "MPF" / "DEMO.MPF").write_text(DEMO_PROGRAM)
+    return root
+
+
+async def settle(pilot) -> None:
+    """Let the editor's check worker finish and its results reach the screen."""
+    await pilot.pause()
+    await pilot.app.workers.wait_for_complete()
+    await pilot.pause()

@@ -1,0 +1,285 @@
+"""Pilot tests of the Program manager and editor on the real kernel, driven by the keymap keys.
+
+Checks run in a worker thread; the tests trigger them where the debounce timer
+would (``check_now``) and wait for the worker, no sleeps.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.program_screens.conftest import SIZE, make_program_app, settle
+
+
+async def test_create_fix_save_select_and_run(data_dir: Path) -> None:
+    """New program, a faulty block gets its alarm mark, fixed, saved, executed in AUTO to the end."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n")  # PROGRAM MANAGER
+        await pilot.pause()
+        await pilot.press("f2", *"train1", "enter")  # New → name → editor opens
+        await pilot.pause()
+        screen = app.screen
+        assert screen.AREA_ID == "program" and screen.program == "/MPF/TRAIN1.MPF"
+        await pilot.press("ctrl+end", *"N10 G0 X10 Y==5", "enter", *"N20 M30")
+        screen.check_now()
+        await settle(pilot)
+        marks = screen.editor.error_marks
+        assert [(m.line, m.number) for m in marks.values()] == [(1, 12080)]
+        await pilot.press("shift+f3")  # next error
+        await pilot.pause()
+        assert screen.editor.cursor_location[0] == 1
+        assert "12080" in str(screen.query_one("#prog-message").render())
+        # fix the block: Y==5 → Y5
+        await pilot.press("end", "backspace", "backspace", "backspace", "5")
+        screen.check_now()
+        await settle(pilot)
+        assert screen.editor.error_marks == {}
+        await pilot.press("f4")  # Save
+        await pilot.pause()
+        saved = (data_dir / "MPF" / "TRAIN1.MPF").read_text()
+        assert "N10 G0 X10 Y5" in saved and "N20 M30" in saved
+        assert not screen.is_modified()
+        await pilot.press("alt+t")  # keyswitch 1: program selection allowed
+        await pilot.press("f6")  # Execute: AUTO, select, Machine area
+        await pilot.pause()
+        status = app.bridge.status
+        assert status.channel.mode == "AUTO"
+        assert status.channel.selected_program.upper().endswith("TRAIN1.MPF")
+        assert app.current_mode == "machine"
+        await pilot.press("alt+g")  # NC START
+        status = app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=30)
+        await pilot.pause()
+        x = {a.name: a.position_wcs for a in status.axes}["X"]
+        assert abs(x - 10.0) < 1e-6
+        assert not [a for a in status.alarms if a.number < 60000]
+
+
+async def test_typing_is_checked_after_the_debounce(data_dir: Path) -> None:
+    """Without any help from the test, the debounce timer starts the check and marks the line."""
+    import screens.program as program_module
+
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        program_module.CHECK_DEBOUNCE_S = 0.01
+        try:
+            await pilot.press("alt+n", "f3")  # open DEMO.MPF
+            await pilot.pause()
+            screen = app.screen
+            await pilot.press("ctrl+end", *"X=)")
+            for _ in range(50):
+                await settle(pilot)
+                if screen.editor.error_marks:
+                    break
+                await pilot.pause(0.02)
+            assert 9 in screen.editor.error_marks
+        finally:
+            program_module.CHECK_DEBOUNCE_S = 0.4
+
+
+async def test_close_with_unsaved_changes_asks(data_dir: Path) -> None:
+    """Close with changes asks; Discard closes without writing; Save writes."""
+    app = make_program_app(data_dir)
+    original = (data_dir / "MPF" / "DEMO.MPF").read_text()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")
+        await pilot.pause()
+        screen = app.screen
+        await pilot.press(*"; note", "f8")  # type, Close
+        await pilot.pause()
+        assert type(app.screen).__name__ == "ChoiceDialog"
+        await pilot.press("down", "enter")  # "Discard changes"
+        await pilot.pause()
+        assert screen.program is None
+        assert (data_dir / "MPF" / "DEMO.MPF").read_text() == original
+        assert app.current_mode == "program_manager"
+        # again, this time Save
+        await pilot.press("f3", *"; kept", "f8")
+        await pilot.pause()
+        await pilot.press("enter")  # "Save changes"
+        await pilot.pause()
+        assert (data_dir / "MPF" / "DEMO.MPF").read_text().startswith("; kept")
+
+
+async def test_leaving_the_area_with_unsaved_changes_asks(data_dir: Path) -> None:
+    """An area key with unsaved text: the question appears in the new area; Back returns."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")
+        await pilot.pause()
+        await pilot.press(*"G1", "alt+m")
+        await pilot.pause()
+        await pilot.pause()
+        assert type(app.screen).__name__ == "ChoiceDialog"
+        await pilot.press("up", "enter")  # last entry: "Back to the editor"
+        await pilot.pause()
+        assert app.current_mode == "program"
+        assert app.screen.editor.text.startswith("G1")
+
+
+async def test_crash_restore_from_the_journal(data_dir: Path) -> None:
+    """Text typed before a kill (journal written by the autosave timer) is offered after restart."""
+    first = make_program_app(data_dir)
+    async with first.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")
+        await pilot.pause()
+        await pilot.press(*"N5 G0 Z100", "enter")
+        first.screen.autosave()  # what the autosave timer does every few seconds
+        await pilot.press(*"N6")  # a keystroke after the last autosave is lost, as expected
+        # the app is dropped here without saving or closing the editor (a kill)
+    assert (data_dir / "MPF" / "DEMO.MPF").read_text().startswith("; pocket")
+
+    second = make_program_app(data_dir)
+    async with second.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+p")  # PROGRAM: the editor offers the unsaved text
+        await pilot.pause()
+        await pilot.pause()
+        assert type(second.screen).__name__ == "ChoiceDialog"
+        await pilot.press("enter")  # "Restore /MPF/DEMO.MPF"
+        await settle(pilot)
+        screen = second.screen
+        assert screen.program == "/MPF/DEMO.MPF"
+        assert screen.editor.text.startswith("N5 G0 Z100\n; pocket")
+        assert screen.is_modified()
+        await pilot.press("f4")  # save: the journal entry is gone
+        await pilot.pause()
+        assert screen.journal.entries() == []
+        assert (data_dir / "MPF" / "DEMO.MPF").read_text().startswith("N5 G0 Z100")
+
+
+async def test_binary_file_opens_read_only(data_dir: Path) -> None:
+    """A file that is not UTF-8 opens read-only with a message; typing changes nothing."""
+    (data_dir / "MPF" / "BLOB.MPF").write_bytes(b"\xff\xfe\x00\x01G1 X\x80\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")  # BLOB.MPF sorts before DEMO.MPF
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "/MPF/BLOB.MPF"
+        assert screen.editor.read_only
+        assert "not a UTF-8 text file" in str(screen.query_one("#dialog-line").render())
+        before = screen.editor.text
+        await pilot.press("a", "b", "f4")
+        await pilot.pause()
+        assert screen.editor.text == before
+        assert (data_dir / "MPF" / "BLOB.MPF").read_bytes().startswith(b"\xff\xfe")
+
+
+async def test_running_program_is_read_only(data_dir: Path) -> None:
+    """While DEMO.MPF is executed (stopped at M0), the editor refuses edits."""
+    (data_dir / "MPF" / "HOLD.MPF").write_text("N10 G0 X5\nN20 M0\nN30 M30\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+t", "alt+n")
+        await pilot.pause()
+        await pilot.press("down", "f1")  # HOLD.MPF (second row), Execute
+        await pilot.pause()
+        assert app.bridge.status.channel.selected_program.upper().endswith("HOLD.MPF")
+        await pilot.press("alt+g")
+        app.bridge.run_until(lambda s: s.channel.channel_state != "active", max_s=30)
+        await pilot.pause()
+        assert app.bridge.status.channel.channel_state != "reset"
+        await pilot.press("alt+n")
+        await pilot.pause()
+        await pilot.press("f3")  # open HOLD.MPF (cursor stays on it)
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "/MPF/HOLD.MPF"
+        assert screen.editor.read_only
+        await pilot.press("x")
+        assert screen.editor.text.startswith("N10 G0 X5")
+        await pilot.press("alt+q")  # RESET: editable again
+        app.bridge.advance(0.1)
+        await pilot.pause()
+        await pilot.pause()
+        assert not screen.editor.read_only
+
+
+async def test_search_replace_renumber_undo(data_dir: Path) -> None:
+    """Search finds, Replace all replaces, Renumber numbers blocks by 10, Undo restores."""
+    (data_dir / "MPF" / "NUM.MPF").write_text("G0 X0\nG1 X5 F100\nG1 X7\nM30\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "down", "f3")  # DEMO, NUM → NUM.MPF is the second row
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "/MPF/NUM.MPF"
+        await pilot.press("f2", *"g1")  # Search bar, type
+        await pilot.press("enter")
+        await pilot.pause()
+        assert screen.editor.selection.start == (1, 0)
+        await pilot.press("tab", *"G2", "f3")  # replace field, Replace all
+        await pilot.pause()
+        assert screen.editor.text == "G0 X0\nG2 X5 F100\nG2 X7\nM30\n"
+        await pilot.press("f8")  # back from search
+        await pilot.press("f3")  # Renumber
+        await pilot.pause()
+        assert screen.editor.text == "N10 G0 X0\nN20 G2 X5 F100\nN30 G2 X7\nN40 M30\n"
+        await pilot.press("shift+f4")  # Undo
+        await pilot.pause()
+        assert screen.editor.text == "G0 X0\nG2 X5 F100\nG2 X7\nM30\n"
+
+
+async def test_mark_copy_paste(data_dir: Path) -> None:
+    """Edit → Mark, move, Copy, move, Paste duplicates the marked block."""
+    (data_dir / "MPF" / "NUM.MPF").write_text("A1\nB2\nC3\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "down", "f3")
+        await pilot.pause()
+        screen = app.screen
+        await pilot.press("f1", "f1", "down", "f2")  # Edit, Mark, cursor down, Copy
+        await pilot.pause()
+        await pilot.press("ctrl+end", "f4")  # Paste at the end
+        await pilot.pause()
+        assert screen.editor.text == "A1\nB2\nC3\nA1\n"
+
+
+async def test_simulation_shows_the_toolpath(data_dir: Path) -> None:
+    """Simulation draws the moves of DEMO.MPF; views and zoom by softkeys; F8 back to the editor."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        screen = app.screen
+        await pilot.press("f5")  # Simulation
+        await settle(pilot)
+        pieces = screen.toolpath.pieces
+        assert len(pieces) >= 6
+        feed_ends = {(round(p.end[0], 3), round(p.end[1], 3)) for p in pieces if not p.rapid}
+        assert {(40.0, 0.0), (40.0, 30.0), (0.0, 30.0), (0.0, 0.0)} <= feed_ends
+        assert any(p.rapid for p in pieces)
+        await pilot.press("f2")  # XZ
+        assert screen.toolpath.view == "XZ"
+        await pilot.press("f4", "f4")  # zoom + twice
+        assert screen.toolpath.zoom > 2
+        await pilot.press("f6")  # fit
+        assert screen.toolpath.zoom == 1
+        await pilot.press("f8")  # back to the editor
+        await pilot.pause()
+        assert not screen.simulating and screen.editor.display
+
+
+async def test_large_program_opens_and_scrolls(data_dir: Path) -> None:
+    """A 200,000-line program opens, scrolls to the end, and its check marks the last line."""
+    import time
+
+    # 3,700 distinct blocks repeated: the check's per-line cache keeps the test quick
+    lines = [f"G1 X{i % 100} Y{i % 37} F500" for i in range(1, 200_000)] + ["X=)"]
+    (data_dir / "MPF" / "BIG.MPF").write_text("\n".join(lines))
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        started = time.perf_counter()
+        await pilot.press("alt+n", "f3")  # BIG.MPF is the first row
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "/MPF/BIG.MPF"
+        await pilot.press("ctrl+end", "pageup", "pageup")
+        await pilot.pause()
+        opened_s = time.perf_counter() - started
+        assert screen.editor.document.line_count == 200_000
+        assert screen.editor.cursor_location[0] > 199_000
+        # generous: a sanity bound on a busy machine; the check runs in its worker, not here
+        assert opened_s < 60, opened_s
+        await settle(pilot)
+        assert 199_999 in screen.editor.error_marks
