@@ -17,6 +17,7 @@ from textual.containers import Horizontal, Vertical
 from textual.widgets import ContentSwitcher, Input, Static, TextArea
 
 from nck import commands as cmd
+from nck.commands import Accepted
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
@@ -235,7 +236,9 @@ class MachineScreen(AreaBase):
         if not target:
             self.show_hint("Enter a block number or text to search for")
             return
-        self.submit(cmd.StartBlockSearch(target))
+        if isinstance(self.submit(cmd.StartBlockSearch(target)), Accepted):
+            self.view = None
+            self._redraw()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         """Enter in the search field starts the search."""

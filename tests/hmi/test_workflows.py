@@ -208,3 +208,34 @@ async def test_continuous_jog_stops_on_release(programs: DirectoryPrograms) -> N
         assert x < -1.0
         app.bridge.advance(1.0)
         assert {a.name: a.position_mcs for a in app.bridge.status.axes}["X"] == pytest.approx(x)
+
+
+async def test_block_search_then_continue(programs: DirectoryPrograms) -> None:
+    """Block search to N30, NC START (alarm 10208 shown), NC START again runs from N30 to the end."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await select_in_auto(pilot, "STEP.MPF")
+        await pilot.press("f5")
+        await pilot.pause()
+        assert app.focused is app.screen.query_one("#search-input")
+        await pilot.press("N", "3", "0", "enter")
+        app.bridge.run_until(lambda s: s.channel.stop_reason != "", max_s=5)
+        await pilot.press("alt+g")
+        status = app.bridge.run_until(lambda s: s.channel.channel_state != "active", max_s=10)
+        await pilot.pause()
+        assert [a.number for a in status.alarms] == [10208]
+        assert "10208" in text_of(app, "#hdr-alarm")
+        assert "▶N30 Y10" in text_of(app, "#auto-blocks")
+        await pilot.press("alt+g")
+        status = app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=10)
+        positions = {a.name: a.position_wcs for a in status.axes}
+        assert positions["Y"] == pytest.approx(10.0) and positions["X"] == pytest.approx(0.0)
+
+
+def test_cli_bad_machine_is_a_message(capsys) -> None:
+    """hmi --machine with an unknown machine prints a clear message and exits 2 (no traceback)."""
+    from hmi.app import main
+
+    assert main(["--machine", "no_such_machine", "--ephemeral"]) == 2
+    err = capsys.readouterr().err
+    assert "no_such_machine" in err and "Traceback" not in err
