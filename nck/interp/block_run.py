@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.interp import sysvars
-from nck.interp.evaluator import evaluate
+from nck.interp.evaluator import equal, evaluate
 from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, write_binding
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
@@ -113,6 +113,14 @@ class BlockRun:
         elif kind is ast.Goto:
             self.executable = True
             self.goto = stmt  # type: ignore[assignment]
+        elif kind is ast.Case:
+            self.executable = True
+            value = self.eval(stmt.expr)  # type: ignore[union-attr]
+            self.goto = stmt.default  # type: ignore[union-attr]
+            for constant, goto in stmt.branches:  # type: ignore[union-attr]
+                if equal(value, self.eval(constant)):
+                    self.goto = goto
+                    break
         elif kind is ast.IfGoto:
             self.executable = True
             if to_bool(self.eval(stmt.cond)):  # type: ignore[union-attr]
@@ -407,6 +415,8 @@ class BlockRun:
         name, text = found
         program = _program_cache(interp, name, text)
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
+        if program.proc is not None and program.proc.save:
+            frame.saved_gcodes = dict(interp.modal.gcodes)  # PROC … SAVE
         self._bind_parameters(program, call, frame)
         frame.locals = dict(frame.params)
         state.frames.append(frame)

@@ -100,7 +100,8 @@ def _int(value: Any) -> int:
     return number
 
 
-def _equal(a: Any, b: Any) -> bool:
+def equal(a: Any, b: Any) -> bool:
+    """The NC's "==": strings by text, numbers with the REAL tolerance."""
     if isinstance(a, str) or isinstance(b, str):
         if isinstance(a, str) and isinstance(b, str):
             return a == b
@@ -117,9 +118,9 @@ def _equal(a: Any, b: Any) -> bool:
 
 def _compare(op: str, a: Any, b: Any) -> bool:
     if op == "==":
-        return _equal(a, b)
+        return equal(a, b)
     if op == "<>":
-        return not _equal(a, b)
+        return not equal(a, b)
     if isinstance(a, str) and isinstance(b, str):
         x: Any = a
         y: Any = b
@@ -130,8 +131,8 @@ def _compare(op: str, a: Any, b: Any) -> bool:
     if op == ">":
         return x > y
     if op == "<=":
-        return x <= y or _equal(a, b)
-    return x >= y or _equal(a, b)
+        return x <= y or equal(a, b)
+    return x >= y or equal(a, b)
 
 
 def _binary(expr: ast.Binary, scope: Scope) -> Any:

@@ -59,6 +59,7 @@ class Frame:
     def_open: bool = True
     for_ends: dict[int, Any] = field(default_factory=dict)
     is_main: bool = False
+    saved_gcodes: dict[int, str] | None = None  # PROC … SAVE: G groups restored at the return
 
 
 class VariableScope:

@@ -371,6 +371,8 @@ class Interpreter:
             frame.for_ends = {}
             return
         self._state.frames.pop()
+        if frame.saved_gcodes is not None:
+            self._state.modal.gcodes = dict(frame.saved_gcodes)
 
     # ---------------------------------------------------------------- data writes
     def write_r(self, index: Any, value: Any) -> None:

@@ -198,6 +198,15 @@ class IfGoto:
 
 
 @dataclass(frozen=True, slots=True)
+class Case:
+    """``CASE(expr) OF c1 GOTOF l1 c2 GOTOF l2 … DEFAULT GOTOF ld``."""
+
+    expr: Expr
+    branches: tuple[tuple[Expr, Goto], ...]
+    default: Goto | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Control:
     """A control-structure statement.
 
@@ -221,7 +230,7 @@ class Builtin:
     args: tuple[Expr | None, ...] = ()
 
 
-Statement = Union[GWord, AddressWord, Assign, Def, Proc, Extern, Call, Goto, IfGoto, Control,
+Statement = Union[GWord, AddressWord, Assign, Def, Proc, Extern, Call, Goto, IfGoto, Case, Control,
                   Builtin]
 
 

@@ -26,7 +26,8 @@ RESERVED = frozenset(
     DATA_TYPES + GOTO_KINDS + SIMPLE_CONTROL + BUILTIN_PROCS
     + ("IF", "WHILE", "FOR", "TO", "UNTIL", "DEF", "PROC", "EXTERN", "AND", "OR", "XOR",
        "NOT", "B_AND", "B_OR", "B_XOR", "B_NOT", "DIV", "MOD", "TRUE", "FALSE", "VAR",
-       "SET", "REP", "AC", "IC", "NCK", "CHAN", "LLI", "ULI", "SAVE", "DISPLOF")
+       "SET", "REP", "AC", "IC", "NCK", "CHAN", "LLI", "ULI", "SAVE", "DISPLOF", "CASE", "OF",
+       "DEFAULT")
 )
 # Addresses that take a value with "=" and are never variables.
 VALUE_ADDRESSES = frozenset(
@@ -209,6 +210,9 @@ class _Parser:
             else:
                 stmts.append(ast.Control("IF", cond=cond))
             return
+        if name == "CASE":
+            stmts.append(self._case())
+            return
         if name in ("WHILE", "UNTIL"):
             self.advance()
             stmts.append(ast.Control(name, cond=self.expression()))
@@ -358,6 +362,35 @@ class _Parser:
         if tok.kind == EOL:
             raise _syntax(tok)
         return ast.Goto(kind, expr=self.expression())
+
+    def _case(self) -> ast.Case:
+        self.advance()  # CASE
+        self.expect_op("(")
+        expr = self.expression()
+        self.expect_op(")")
+        if not self.is_name("OF"):
+            raise _syntax(self.tok)
+        self.advance()
+        branches: list[tuple[ast.Expr, ast.Goto]] = []
+        default = None
+        while not self.at_end():
+            if self.is_name("DEFAULT"):
+                self.advance()
+                if not (self.tok.kind == NAME and self.tok.text in GOTO_KINDS):
+                    raise _syntax(self.tok)
+                default = self._goto()
+                if not self.at_end():
+                    raise _syntax(self.tok)
+                break
+            constant = self._unary()
+            if not isinstance(constant, (ast.Num, ast.Str)):
+                raise _syntax(self.tok, "CASE")
+            if not (self.tok.kind == NAME and self.tok.text in GOTO_KINDS):
+                raise _syntax(self.tok)
+            branches.append((constant, self._goto()))
+        if not branches and default is None:
+            raise _syntax(self.tok, "CASE")
+        return ast.Case(expr, tuple(branches), default)
 
     def _def(self) -> ast.Def:
         self.advance()  # DEF
