@@ -45,6 +45,7 @@ ALARM_CIP_POINT = 14920  # intermediate point of circle incorrect
 CIRCLE_ERROR_CONST_MM = 0.01  # MD21000 default
 CIRCLE_ERROR_FACTOR = 0.001  # MD21010 default
 MAX_TURNS = 999
+MAX_CIP_RADIUS_MM = 1e6  # a CIP circle larger than this counts as a straight line
 POINT_EPS = 1e-9
 TWO_PI = 2.0 * math.pi
 
@@ -344,12 +345,14 @@ def arc_through_point(start: Vec3, intermediate: Vec3, end: Vec3, turns: int = 0
         raise NcAlarmError(ALARM_CIP_POINT)
     axis = normal / norm
     # Circumcentre of the triangle s, m, e.
-    uu, vvv, uv = float(np.dot(u, u)), float(np.dot(v, v)), float(np.dot(u, v))
-    denom = 2.0 * (uu * vvv - uv * uv)
-    alpha = vvv * (uu - uv) / denom
-    beta = uu * (vvv - uv) / denom
-    center = s + alpha * u + beta * v
+    center = s + np.cross(float(np.dot(u, u)) * v - float(np.dot(v, v)) * u, normal) / (2.0 * norm * norm)
     radius = float(np.linalg.norm(s - center))
+    if radius > MAX_CIP_RADIUS_MM:  # practically a straight line
+        vv = float(np.dot(v, v))
+        t = float(np.dot(u, v)) / vv if vv > 0 else -1.0
+        if turns == 0 and 0.0 < t < 1.0:
+            return None
+        raise NcAlarmError(ALARM_CIP_POINT)
     rs, re = s - center, e - center
     sweep = math.atan2(float(np.dot(np.cross(rs, re), axis)), float(np.dot(rs, re))) % TWO_PI
     if sweep < 1e-12:
