@@ -36,6 +36,7 @@ from typing import Any
 
 from nck import canon
 from nck.errors import NcAlarmError
+from nck.geometry import trc_canon
 from nck.geometry.path_builder import PathBuilder
 from nck.geometry.path_state import GeometryState
 from nck.interp.modal import ModalState
@@ -97,6 +98,7 @@ class MotionBuilder:
     # ------------------------------------------------------------------ entry points
     def build(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
         """Return the commands of the block and update ``modal``."""
+        trc_canon.reset_if_needed(modal)  # radius compensation look-ahead goes with RESET
         geo = self.path.state(modal)
         if 8 in words.gcodes:
             self.path.select_settable(modal, geo)
@@ -121,6 +123,7 @@ class MotionBuilder:
         if self.path.has_path_words(words, modal):
             feed = self._feed_info(modal, geo)
             motions = self.path.motion(words, modal, geo, feed)
+            motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
             out.extend(motions)
             if modal.gcodes.get(15) == "G96" and motions:
                 self._constant_cutting_speed(modal, geo, out, src)
@@ -135,7 +138,10 @@ class MotionBuilder:
 
     def flush(self, modal: ModalState) -> list[canon.CanonCommand]:
         """Emit a motion held back for a chamfer/rounding (program stop or end reached)."""
-        return list(self.path.flush(modal))
+        held = list(self.path.flush(modal))
+        if held:
+            held = trc_canon.process(held, modal, self.path, self.data, self.machine)
+        return held + trc_canon.flush(modal, self.path, self.data)
 
     def sync_position(self, modal: ModalState, position_mcs: dict[str, float]) -> None:
         """Take over actual machine positions; the programmed WCS follows via frames and tool."""

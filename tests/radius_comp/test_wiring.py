@@ -1,0 +1,126 @@
+"""Radius compensation through the interpreter: programs in, compensated motions out."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck.check import run_text
+from nck.machine import load_machine
+from nck.ncdata import NcData, ToolEdge
+
+
+def mill(text: str, radius: float = 5.0, length: float = 0.0):
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120, 3: length, 6: radius})
+    data.tools[(1, 2)] = ToolEdge({1: 120, 3: length, 6: 0.0})
+    return run_text("TRC.MPF", text, machine=load_machine("mill3"), data=data)
+
+
+def plane_path(result):
+    return [(m.source.n, m.kind, round(m.end_wcs["X"], 4) + 0.0, round(m.end_wcs["Y"], 4) + 0.0)
+            for m in result.motions]
+
+
+RECTANGLE = """N5 G17 G90 G0 X-20 Y-20 Z5 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 Y30
+N30 X50
+N40 Y0
+N50 X0
+N60 G40 X-20 Y-20
+N70 M30
+"""
+
+
+def test_rectangle_program_is_compensated():
+    result = mill(RECTANGLE)
+    assert result.alarms == []
+    assert plane_path(result) == [
+        (5, "G0", -20.0, -20.0),
+        (10, "G1", -5.0, 0.0),
+        (20, "G1", -5.0, 30.0),
+        (30, "G2", 0.0, 35.0),
+        (30, "G1", 50.0, 35.0),
+        (40, "G2", 55.0, 30.0),
+        (40, "G1", 55.0, 0.0),
+        (50, "G2", 50.0, -5.0),
+        (50, "G1", 0.0, -5.0),
+        (60, "G1", -20.0, -20.0),
+    ]
+    corner = result.motions[3]
+    assert corner.inserted and corner.center_wcs["X"] == pytest.approx(0.0)
+    assert corner.center_wcs["Y"] == pytest.approx(30.0)
+    # Each segment starts where the previous one ended, in the MCS.
+    for a, b in zip(result.motions, result.motions[1:]):
+        assert all(b.start_mcs[axis] == pytest.approx(a.end_mcs[axis]) for axis in ("X", "Y", "Z"))
+
+
+def test_tool_length_still_applies_with_compensation():
+    result = mill(RECTANGLE, length=100.0)
+    assert result.motions[2].end_mcs["Z"] == pytest.approx(105.0)
+    assert result.motions[2].end_mcs["X"] == pytest.approx(-5.0)
+
+
+def test_program_without_compensation_is_unchanged():
+    text = RECTANGLE.replace("G41 ", "").replace("G40 ", "")
+    result = mill(text)
+    assert [p[2:] for p in plane_path(result)] == [
+        (-20.0, -20.0), (0.0, 0.0), (0.0, 30.0), (50.0, 30.0), (50.0, 0.0), (0.0, 0.0), (-20.0, -20.0)]
+
+
+def test_selection_in_a_circle_block_is_alarm_10753():
+    result = mill("""N5 G17 G90 G0 X0 Y0 T1 D1 M6
+N10 G2 G41 X20 Y0 I10 J0 F500
+N20 M30
+""")
+    assert [a.number for a in result.alarms] == [10753]
+    assert [m.source.n for m in result.motions] == [5]
+
+
+def test_d0_while_compensating_is_alarm_10750():
+    result = mill("""N5 G17 G90 G0 X-10 Y0 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 X20
+N30 D0 X30
+N40 M30
+""")
+    assert [a.number for a in result.alarms] == [10750]
+
+
+def test_pocket_too_tight_stops_with_10751():
+    result = mill("""N5 G17 G90 G0 X4 Y20 T1 D1 M6
+N10 G1 G41 X0 Y20 F500
+N20 Y0
+N30 X8
+N40 Y40
+N50 X0
+N60 Y20
+N70 G40 X4
+N80 M30
+""")
+    assert [a.number for a in result.alarms] == [10751]
+    # Nothing at or after the corner that cannot be machined was released.
+    assert {m.source.n for m in result.motions} <= {5, 10, 20}
+
+
+def test_turning_profile_with_cutting_edge_position_3():
+    # G18, DIAMON. The nose centre runs 0.8 outside the contour; the tool tip P
+    # (what the length measures to) runs on the diameters and faces exactly.
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 500, 2: 3, 6: 0.8})
+    result = run_text("TURN.MPF", """N5 G18 G90 DIAMON T1 D1
+N10 G0 X24 Z5
+N20 G1 G42 X20 Z0 F0.2
+N30 Z-20
+N40 X30 Z-30
+N50 X40
+N60 G40 X50 Z-25
+N70 M30
+""", machine=load_machine("lathe2"), data=data)
+    assert result.alarms == []
+    by_block = {m.source.n: m for m in result.motions}
+    assert by_block[30].end_wcs["X"] == pytest.approx(20.0)  # Ø20 cylinder
+    assert by_block[30].end_mcs["X"] == pytest.approx(10.0)
+    assert by_block[50].end_wcs["Z"] == pytest.approx(-30.0)  # shoulder face
+    assert by_block[50].end_wcs["X"] == pytest.approx(2 * (20 - 0.8))
+    assert by_block[60].end_wcs["X"] == pytest.approx(50.0)  # retract ends on the programmed point
