@@ -49,6 +49,7 @@ class BlockRun:
         self.late: list[canon.CanonCommand] = []
         self.end_kind: str | None = None  # M2/M30/M17/RET
         self.executable = False
+        self.repeat: ast.SectionRepeat | None = None
 
     def eval(self, expr: ast.Expr) -> Any:
         return evaluate(expr, self.scope)
@@ -79,6 +80,10 @@ class BlockRun:
         self.frame.pc = self.next_pc
         if self.goto is not None:
             self._jump(self.goto)
+        if self.repeat is not None:
+            self._start_repeat(self.repeat)
+        elif self.goto is None:
+            self._section_end()
         if self.call is not None:
             self._call(self.call)
         if self.end_kind is not None:
@@ -113,6 +118,9 @@ class BlockRun:
         elif kind is ast.Goto:
             self.executable = True
             self.goto = stmt  # type: ignore[assignment]
+        elif kind is ast.SectionRepeat:
+            self.executable = True
+            self.repeat = stmt  # type: ignore[assignment]
         elif kind is ast.Case:
             self.executable = True
             value = self.eval(stmt.expr)  # type: ignore[union-attr]
@@ -401,6 +409,45 @@ class BlockRun:
                 return
             raise NcAlarmError(14080, label if label is not None else f"N{number}")
         self.frame.pc = found
+
+    def _start_repeat(self, stmt: ast.SectionRepeat) -> None:
+        """REPEAT/REPEATB: find the section, remember where to come back, jump to its start."""
+        program = self.frame.program
+        start = program.find_label(stmt.start, self.index, "B")
+        if start is None:
+            start = program.find_label(stmt.start, self.index, "F")
+        if start is None:
+            raise NcAlarmError(14080, stmt.start)
+        if stmt.single_block:
+            end = start
+        elif stmt.end is not None:
+            end = program.find_label(stmt.end, start - 1, "F")
+            if end is None:
+                raise NcAlarmError(14080, stmt.end)
+        else:
+            end_label = program.find_label("ENDLABEL", start, "F")
+            end = end_label if end_label is not None and end_label < self.index else self.index - 1
+        passes = 1
+        if stmt.passes is not None:
+            passes = _whole(self.eval(stmt.passes), "P")
+            if not 1 <= passes <= MAX_PASSES:
+                raise NcAlarmError(14013)
+        if end < start:
+            raise NcAlarmError(14080, stmt.start)
+        self.frame.repeats.append((end, start, passes, self.index + 1))
+        self.frame.pc = start
+
+    def _section_end(self) -> None:
+        """After the last block of a REPEAT section: run it again or go back behind REPEAT."""
+        repeats = self.frame.repeats
+        while repeats and repeats[-1][0] == self.index:
+            end, start, passes, back = repeats[-1]
+            if passes > 1:
+                repeats[-1] = (end, start, passes - 1, back)
+                self.frame.pc = start
+                return
+            repeats.pop()
+            self.frame.pc = back
 
     def _call(self, call: ast.Call) -> None:
         interp = self.interp

@@ -226,8 +226,8 @@ class Interpreter:
         modal state is copied only when the next block can change it.
         """
         state = self._state
-        frames = [(f, f.pc, f.passes_left, f.def_open, dict(f.for_ends), dict(f.locals))
-                  for f in state.frames]
+        frames = [(f, f.pc, f.passes_left, f.def_open, dict(f.for_ends), dict(f.locals),
+                   list(f.repeats)) for f in state.frames]
         modal = copy.deepcopy(state.modal) if self._next_block_touches_modal() else None
         return (list(state.frames), frames, modal, state.finished, state.message, self._skip_run)
 
@@ -270,9 +270,9 @@ class Interpreter:
                     self.data.gud[key] = old
         self._journal = []
         state = self._state
-        for frame, pc, passes_left, def_open, for_ends, local_vars in frames:
+        for frame, pc, passes_left, def_open, for_ends, local_vars, repeats in frames:
             frame.pc, frame.passes_left, frame.def_open = pc, passes_left, def_open
-            frame.for_ends, frame.locals = for_ends, local_vars
+            frame.for_ends, frame.locals, frame.repeats = for_ends, local_vars, repeats
         state.frames = frame_list
         if modal is not None:
             state.modal = modal
@@ -369,6 +369,7 @@ class Interpreter:
             frame.locals = dict(frame.params)
             frame.def_open = True
             frame.for_ends = {}
+            frame.repeats = []
             return
         self._state.frames.pop()
         if frame.saved_gcodes is not None:
@@ -454,7 +455,8 @@ class Interpreter:
 _MISSING_EDGE = object()
 
 
-_MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Def, ast.Extern, ast.Proc, ast.Call)
+_MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Case, ast.SectionRepeat, ast.Def, ast.Extern,
+               ast.Proc, ast.Call)
 
 
 def _touches_modal(block: ast.Block) -> bool:

@@ -198,6 +198,21 @@ class IfGoto:
 
 
 @dataclass(frozen=True, slots=True)
+class SectionRepeat:
+    """Program section repetition.
+
+    ``REPEATB LBL P=n`` repeats the block labelled LBL; ``REPEAT LBL P=n`` the
+    blocks from LBL up to the REPEAT block (or up to a block labelled
+    ``ENDLABEL``); ``REPEAT LBL1 LBL2 P=n`` the blocks from LBL1 to LBL2.
+    """
+
+    single_block: bool
+    start: str
+    end: str | None = None
+    passes: Expr | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Case:
     """``CASE(expr) OF c1 GOTOF l1 c2 GOTOF l2 … DEFAULT GOTOF ld``."""
 
@@ -231,7 +246,7 @@ class Builtin:
 
 
 Statement = Union[GWord, AddressWord, Assign, Def, Proc, Extern, Call, Goto, IfGoto, Case, Control,
-                  Builtin]
+                  Builtin, SectionRepeat]
 
 
 @dataclass(frozen=True, slots=True)

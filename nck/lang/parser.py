@@ -27,7 +27,7 @@ RESERVED = frozenset(
     + ("IF", "WHILE", "FOR", "TO", "UNTIL", "DEF", "PROC", "EXTERN", "AND", "OR", "XOR",
        "NOT", "B_AND", "B_OR", "B_XOR", "B_NOT", "DIV", "MOD", "TRUE", "FALSE", "VAR",
        "SET", "REP", "AC", "IC", "NCK", "CHAN", "LLI", "ULI", "SAVE", "DISPLOF", "CASE", "OF",
-       "DEFAULT")
+       "DEFAULT", "REPEATB")
 )
 # Addresses that take a value with "=" and are never variables.
 VALUE_ADDRESSES = frozenset(
@@ -217,6 +217,10 @@ class _Parser:
             self.advance()
             stmts.append(ast.Control(name, cond=self.expression()))
             return
+        if name == "REPEATB" or (name == "REPEAT" and self.peek().kind == NAME
+                                 and self.peek().text not in RESERVED):
+            stmts.append(self._section_repeat())
+            return
         if name in SIMPLE_CONTROL:
             self.advance()
             stmts.append(ast.Control(name))
@@ -362,6 +366,25 @@ class _Parser:
         if tok.kind == EOL:
             raise _syntax(tok)
         return ast.Goto(kind, expr=self.expression())
+
+    def _section_repeat(self) -> ast.SectionRepeat:
+        single = self.advance().text == "REPEATB"
+        labels: list[str] = []
+        while self.tok.kind == NAME and self.tok.text not in RESERVED and not self.is_op("=", 1):
+            labels.append(self.advance().text)
+        if not labels or len(labels) > (1 if single else 2):
+            raise _syntax(self.tok, "REPEAT")
+        passes = None
+        if self.tok.kind == NAME and self.tok.text == "P" and self.is_op("=", 1):
+            self.advance()
+            self.advance()
+            passes = self.expression()
+        elif self.tok.kind == ADDR and self.tok.text == "P":
+            self.advance()
+            passes = ast.Num(self.advance().value)  # type: ignore[arg-type]
+        if not self.at_end():
+            raise _syntax(self.tok)
+        return ast.SectionRepeat(single, labels[0], labels[1] if len(labels) > 1 else None, passes)
 
     def _case(self) -> ast.Case:
         self.advance()  # CASE
@@ -628,6 +651,6 @@ def _check_single_statements(stmts: list[ast.Statement]) -> None:
     if len(stmts) <= 1:
         return
     for stmt in stmts:
-        if isinstance(stmt, (ast.Def, ast.Proc, ast.Extern, ast.Control)):
+        if isinstance(stmt, (ast.Def, ast.Proc, ast.Extern, ast.Control, ast.SectionRepeat)):
             label = stmt.kind if isinstance(stmt, ast.Control) else type(stmt).__name__.upper()
             raise NcAlarmError(12080, label)
