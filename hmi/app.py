@@ -32,6 +32,7 @@ from typing import Any, Callable
 from textual.app import App
 from textual.screen import Screen
 from textual.timer import Timer
+from textual.widgets import Input, TextArea
 
 from nck import commands as cmd
 from nck.commands import Accepted, Rejected, SubmitResult
@@ -401,6 +402,20 @@ class HmiApp(App):
         """RAPID: toggle the rapid traverse overlay for JOG."""
         self.rapid_overlay = not self.rapid_overlay
         self._refresh_area()
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """Let Ctrl+Left/Right reach a focused text editor unless they can jog.
+
+        The + / − keys traverse an axis in the Machine area in JOG (and in REF /
+        REPOS); anywhere else with an editor or input field focused, the keys keep
+        their editing meaning (word left / right).
+        """
+        if action == "jog" and isinstance(self.focused, (TextArea, Input)):
+            channel = self._status().channel
+            can_jog = channel.mode == "JOG" or channel.machine_function in ("REF", "REPOS")
+            if not (can_jog and self.current_mode == "machine"):
+                return False
+        return True
 
     def action_jog(self, direction: int) -> None:
         """+ / − keys: traverse the selected axis.

@@ -136,3 +136,14 @@ def test_broken_area_module_reports_reason(monkeypatch) -> None:
     monkeypatch.setattr(importlib, "import_module", broken)
     screen_class, problem = load_area_screen(Area("broken_zz", "B", "B"))
     assert screen_class is None and "boom" in problem
+
+
+async def test_ctrl_arrows_stay_with_the_mda_editor(fake: FakeNck, fake_app: HmiApp) -> None:
+    """In MDA the editor keeps Ctrl+Left (word left): no JOG command is sent."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d")
+        await pilot.pause()
+        await pilot.press(*"G1 X5", "ctrl+left")
+        assert not any(isinstance(cmd, c.Jog) for cmd in fake.submitted)
+        editor = fake_app.screen.query_one("#mda-editor")
+        assert editor.cursor_location == (0, 3)
