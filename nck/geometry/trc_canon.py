@@ -267,6 +267,17 @@ def process(motions: list[canon.Motion], modal: Any, path: Any, data: Any, machi
     return found.process(motions, modal, path, data, source)
 
 
+def split_released(motions: list[canon.Motion], source: canon.Source) -> tuple[list[canon.Motion], list[canon.Motion]]:
+    """Split into (motions of earlier blocks, motions of the block ``source``).
+
+    The look-ahead releases earlier blocks' motions while a later block is built;
+    they belong before that block's own auxiliary functions.
+    """
+    earlier = [m for m in motions if m.source != source]
+    own = [m for m in motions if m.source == source]
+    return earlier, own
+
+
 def flush(modal: Any, path: Any, data: Any) -> list[canon.Motion]:
     """Release the compensation look-ahead at a stop point / program end."""
     geo = getattr(modal, "geometry", None)
@@ -276,4 +287,4 @@ def flush(modal: Any, path: Any, data: Any) -> list[canon.Motion]:
     return found.flush(modal, path, data)
 
 
-__all__ = ["TrcStage", "TrcKey", "process", "flush", "reset_if_needed", "stage", "same_point"]
+__all__ = ["TrcStage", "TrcKey", "process", "flush", "reset_if_needed", "split_released", "stage"]

@@ -124,6 +124,8 @@ class MotionBuilder:
             feed = self._feed_info(modal, geo)
             motions = self.path.motion(words, modal, geo, feed)
             motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
+            earlier, motions = trc_canon.split_released(motions, src)
+            out[:0] = earlier  # motions of earlier blocks released by the TRC look-ahead
             out.extend(motions)
             if modal.gcodes.get(15) == "G96" and motions:
                 self._constant_cutting_speed(modal, geo, out, src)
@@ -134,6 +136,8 @@ class MotionBuilder:
             if value < 0:
                 raise NcAlarmError(16500)
             geo.rndm_mm = value
+        else:
+            out[:0] = trc_canon.process([], modal, self.path, self.data, self.machine, src)
         return out
 
     def flush(self, modal: ModalState) -> list[canon.CanonCommand]:

@@ -124,3 +124,36 @@ N70 M30
     assert by_block[50].end_wcs["Z"] == pytest.approx(-30.0)  # shoulder face
     assert by_block[50].end_wcs["X"] == pytest.approx(2 * (20 - 0.8))
     assert by_block[60].end_wcs["X"] == pytest.approx(50.0)  # retract ends on the programmed point
+
+
+def test_blocks_without_plane_motion_run_at_the_offset_point():
+    result = mill("""N5 G17 G90 G0 X-20 Y-20 Z5 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 Y30
+N25 Z-2
+N30 X50
+N40 G40 X60 Y40
+N50 M30
+""")
+    assert result.alarms == []
+    infeed = [m for m in result.motions if m.source.n == 25]
+    assert len(infeed) == 1
+    # The Z move happens at the end normal point of N20, before N30's corner circle.
+    assert (infeed[0].end_wcs["X"], infeed[0].end_wcs["Y"], infeed[0].end_wcs["Z"]) == \
+        pytest.approx((-5.0, 30.0, -2.0))
+    order = [m.source.n for m in result.motions]
+    assert order.index(20) < order.index(25) < order.index(30)
+
+
+def test_too_many_blocks_without_plane_motion_is_alarm_10762():
+    result = mill("""N5 G17 G90 G0 X-20 Y-20 Z5 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 Y30
+N21 M8
+N22 Z4
+N23 Z3
+N24 Z2
+N30 X50
+N40 M30
+""")
+    assert [a.number for a in result.alarms] == [10762]
