@@ -1,0 +1,99 @@
+"""Software limit switches (MD36100/MD36110) and working-area limitation (G25/G26, SD434xx).
+
+Both act only on referenced axes. In AUTO/MDA a segment is checked before it
+starts (alarms 10720 / 10730); in JOG the axis is sent no further than the
+limit, and a further key press at the limit raises 10621 / 10631.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from nck.motion.params import AxisParams
+from nck.motion.path import Segment
+
+ALARM_SW_LIMIT_AUTO = 10720
+ALARM_WORKAREA_AUTO = 10730
+ALARM_SW_LIMIT_JOG = 10621
+ALARM_WORKAREA_JOG = 10631
+EDGE_MM = 1e-6
+
+
+def _setting(data: Mapping[str, Any] | None, number: int, axis: str, default: Any) -> Any:
+    """Read setting datum ``SD<number>`` for ``axis`` (``{"SD43420": {"X": 1}}`` or ``"SD43420[X]"``)."""
+    if not data:
+        return default
+    key = f"SD{number}"
+    value = data.get(key)
+    if isinstance(value, Mapping):
+        return value.get(axis, default)
+    if value is not None:
+        return value
+    return data.get(f"{key}[{axis}]", default)
+
+
+class Limits:
+    """The active travel limits of every path axis."""
+
+    def __init__(self, axes: tuple[AxisParams, ...], setting_data: Mapping[str, Any] | None) -> None:
+        self.axes = axes
+        self.setting_data = setting_data
+        self.workarea_on = True  # WALIMON (reset position); WALIMOF switches it off
+
+    def software(self, i: int) -> tuple[float, float]:
+        """(minus, plus) software limit of axis ``i``."""
+        axis = self.axes[i]
+        return axis.pos_limit_minus_mm, axis.pos_limit_plus_mm
+
+    def workarea(self, i: int) -> tuple[float, float]:
+        """(minus, plus) working-area limit of axis ``i`` (infinite when not enabled)."""
+        name = self.axes[i].name
+        if not self.workarea_on:
+            return -math.inf, math.inf
+        data = self.setting_data
+        minus = -math.inf
+        plus = math.inf
+        if bool(_setting(data, 43410, name, 0)):
+            minus = float(_setting(data, 43430, name, -math.inf))
+        if bool(_setting(data, 43400, name, 0)):
+            plus = float(_setting(data, 43420, name, math.inf))
+        return minus, plus
+
+    def check_segment(self, segment: Segment, referenced: list[bool]) -> tuple[int, str, str] | None:
+        """First violation of a segment: (alarm number, axis name, ``+``/``-``), or None."""
+        if segment.arc is None:
+            points = segment.end[None, :]
+        else:
+            points = segment.positions(np.linspace(0.0, segment.length, 65))
+        low = points.min(axis=0)
+        high = points.max(axis=0)
+        moved = np.abs(segment.end - segment.start) > 0
+        if segment.arc is not None:
+            moved[segment.arc[0]] = moved[segment.arc[1]] = True
+        for i, axis in enumerate(self.axes):
+            if not referenced[i] or not moved[i]:
+                continue
+            minus, plus = self.software(i)
+            if high[i] > plus + EDGE_MM:
+                return ALARM_SW_LIMIT_AUTO, axis.name, "+"
+            if low[i] < minus - EDGE_MM:
+                return ALARM_SW_LIMIT_AUTO, axis.name, "-"
+            w_minus, w_plus = self.workarea(i)
+            if high[i] > w_plus + EDGE_MM:
+                return ALARM_WORKAREA_AUTO, axis.name, "+"
+            if low[i] < w_minus - EDGE_MM:
+                return ALARM_WORKAREA_AUTO, axis.name, "-"
+        return None
+
+    def jog_limit(self, i: int, direction: float, referenced: bool) -> tuple[float, int]:
+        """The limit a JOG motion in ``direction`` stops at, and the alarm for pressing on."""
+        if not referenced:
+            return (math.inf if direction > 0 else -math.inf), 0
+        minus, plus = self.software(i)
+        w_minus, w_plus = self.workarea(i)
+        if direction > 0:
+            return (plus, ALARM_SW_LIMIT_JOG) if plus <= w_plus else (w_plus, ALARM_WORKAREA_JOG)
+        return (minus, ALARM_SW_LIMIT_JOG) if minus >= w_minus else (w_minus, ALARM_WORKAREA_JOG)

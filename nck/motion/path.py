@@ -1,0 +1,144 @@
+"""Path segments in axis space: straight lines, arcs and helices.
+
+A segment maps the path distance ``s`` (0 … ``length``) to a position vector
+over all path axes of the machine (numpy, vectorised over many ``s`` at
+once) and knows its unit tangent and curvature vector at both ends, which the
+planner needs for corner and curvature-jump limits.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Plane -> (abscissa, ordinate, applicate) axis names.
+PLANE_AXES = {"G17": ("X", "Y", "Z"), "G18": ("Z", "X", "Y"), "G19": ("Y", "Z", "X")}
+MIN_LENGTH_MM = 1e-9
+
+
+@dataclass
+class Segment:
+    """One path element. ``arc`` is None for a straight line.
+
+    Attributes:
+        start, end: position vectors (all path axes, MCS).
+        length: path length used for the feed (mm).
+        arc: (i1, i2, c1, c2, r_start, r_end, theta0, sweep) for arcs and helices.
+    """
+
+    start: np.ndarray
+    end: np.ndarray
+    length: float
+    arc: tuple[int, int, float, float, float, float, float, float] | None = None
+
+    def positions(self, s: np.ndarray) -> np.ndarray:
+        """Positions at path distances ``s`` (shape ``(len(s), n_axes)``)."""
+        lam = np.clip(s / self.length, 0.0, 1.0) if self.length > 0 else np.ones_like(s)
+        out = self.start[None, :] + lam[:, None] * (self.end - self.start)[None, :]
+        if self.arc is not None:
+            i1, i2, c1, c2, r0, r1, th0, sweep = self.arc
+            theta = th0 + lam * sweep
+            radius = r0 + lam * (r1 - r0)
+            out[:, i1] = c1 + radius * np.cos(theta)
+            out[:, i2] = c2 + radius * np.sin(theta)
+            # Pin the end exactly (no cos/sin rounding at the block end).
+            at_end = lam >= 1.0
+            if np.any(at_end):
+                out[at_end] = self.end
+        return out
+
+    def _derivatives(self, lam: float) -> tuple[np.ndarray, np.ndarray]:
+        """d/ds and d²/ds² of the position at ``lam`` (fraction of the length)."""
+        first = (self.end - self.start) / self.length
+        second = np.zeros_like(first)
+        if self.arc is not None:
+            i1, i2, _c1, _c2, r0, r1, th0, sweep = self.arc
+            th = th0 + lam * sweep
+            r = r0 + lam * (r1 - r0)
+            dr = r1 - r0
+            length = self.length
+            first[i1] = (dr * math.cos(th) - r * sweep * math.sin(th)) / length
+            first[i2] = (dr * math.sin(th) + r * sweep * math.cos(th)) / length
+            second[i1] = (-2 * dr * sweep * math.sin(th) - r * sweep * sweep * math.cos(th)) / length**2
+            second[i2] = (2 * dr * sweep * math.cos(th) - r * sweep * sweep * math.sin(th)) / length**2
+        return first, second
+
+    def tangent(self, at_end: bool) -> np.ndarray:
+        """Unit tangent at the start or the end."""
+        first, _ = self._derivatives(1.0 if at_end else 0.0)
+        norm = float(np.linalg.norm(first))
+        return first / norm if norm > 0 else first
+
+    def curvature(self, at_end: bool) -> np.ndarray:
+        """Curvature vector d²p/ds² at the start or the end (zero for lines)."""
+        _, second = self._derivatives(1.0 if at_end else 0.0)
+        return second
+
+    def max_direction_share(self) -> np.ndarray:
+        """Upper bound of |dp_k/ds| over the segment, per axis."""
+        share = np.abs(self.end - self.start) / self.length
+        if self.arc is not None:
+            i1, i2, _c1, _c2, r0, r1, _th0, sweep = self.arc
+            bound = (abs(r1 - r0) + max(r0, r1) * abs(sweep)) / self.length
+            share[i1] = min(bound, 1.0)
+            share[i2] = min(bound, 1.0)
+        return share
+
+    @property
+    def min_radius(self) -> float:
+        """Smallest radius of an arc (infinite for a line)."""
+        if self.arc is None:
+            return math.inf
+        return max(min(self.arc[4], self.arc[5]), 1e-6)
+
+
+def line(start: np.ndarray, end: np.ndarray, linear_mask: np.ndarray) -> Segment:
+    """A straight segment; its length counts the linear axes (rotary-only moves in degrees)."""
+    delta = end - start
+    length = float(np.linalg.norm(delta[linear_mask]))
+    if length <= MIN_LENGTH_MM:
+        length = float(np.linalg.norm(delta))
+    return Segment(start=start.copy(), end=end.copy(), length=length)
+
+
+def arc(
+    start: np.ndarray,
+    end: np.ndarray,
+    center: tuple[float, float],
+    plane_idx: tuple[int, int],
+    clockwise: bool,
+    turns: int,
+    linear_mask: np.ndarray,
+) -> Segment:
+    """An arc (helix when other axes move too) in the plane of axes ``plane_idx``."""
+    i1, i2 = plane_idx
+    c1, c2 = center
+    r0 = math.hypot(start[i1] - c1, start[i2] - c2)
+    r1 = math.hypot(end[i1] - c1, end[i2] - c2)
+    th0 = math.atan2(start[i2] - c2, start[i1] - c1)
+    th1 = math.atan2(end[i2] - c2, end[i1] - c1)
+    two_pi = 2.0 * math.pi
+    if clockwise:
+        sweep = -((th0 - th1) % two_pi)
+        if abs(sweep) < 1e-9:
+            sweep = -two_pi
+        sweep -= two_pi * max(turns, 0)
+    else:
+        sweep = (th1 - th0) % two_pi
+        if abs(sweep) < 1e-9:
+            sweep = two_pi
+        sweep += two_pi * max(turns, 0)
+    planar = abs(sweep) * (r0 + r1) / 2.0
+    other = end - start
+    other_mask = linear_mask.copy()
+    other_mask[i1] = False
+    other_mask[i2] = False
+    length = math.sqrt(planar * planar + float(np.sum(other[other_mask] ** 2)))
+    if r0 <= MIN_LENGTH_MM or length <= MIN_LENGTH_MM:
+        return line(start, end, linear_mask)
+    return Segment(
+        start=start.copy(), end=end.copy(), length=length,
+        arc=(i1, i2, c1, c2, r0, r1, th0, sweep),
+    )

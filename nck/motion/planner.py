@@ -1,0 +1,223 @@
+"""Look-ahead planning: velocity limits of each segment and at each transition.
+
+Each buffered segment gets the highest path velocity its axes allow (MD32000),
+its path acceleration and jerk (MD32300/MD32431 scaled by the direction share
+of each axis, with the G0/SOFT factors MD32434/32435/32433), arc limits from
+the radial acceleration share MD20602, and the short-block limit
+``0.9 · length / IPO cycle``. At each transition of continuous-path mode the
+velocity is lowered until no axis's velocity jump exceeds
+``MD32300 · (MD32310 − 1) · T`` (BRISK) or ``MD32431 · (MD32310 − 1) · T²``
+(SOFT; plus the curvature jump). A backward pass then makes sure the path can
+always brake to standstill at the end of the last buffered segment.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from nck.canon import Source
+from nck.errors import NcAlarmError
+from nck.motion.params import MotionParams
+from nck.motion.path import Segment
+from nck.motion.profile import reach_up
+
+SHORT_BLOCK_FACTOR = 0.9
+
+
+@dataclass
+class PlannedSegment:
+    """A segment with its dynamic limits and its place in the look-ahead chain."""
+
+    segment: Segment
+    source: Source | None
+    rapid: bool
+    feed_mm_s: float | None  # programmed path feed (after dry run); None for rapid traverse
+    v_cap_mm_s: float  # axis, arc and short-block limits (no override)
+    accel: float
+    jerk: float | None  # None = BRISK
+    exact_stop: bool
+    window: str  # G601 / G602 / G603
+    moved: np.ndarray  # axes that move
+    junction_out: float = 0.0  # velocity limit at the end (0 until a successor is known)
+    exit_limit: float = 0.0  # result of the backward pass
+    done_s: float = 0.0  # distance already travelled (after an interruption)
+
+    @property
+    def remaining(self) -> float:
+        """Path distance still to go."""
+        return max(self.segment.length - self.done_s, 0.0)
+
+    def v_max(self, feed_pct: float, rapid_pct: float) -> float:
+        """Velocity limit with the overrides applied."""
+        if self.feed_mm_s is None:
+            return self.v_cap_mm_s * max(rapid_pct, 0.0) / 100.0
+        return min(self.v_cap_mm_s, self.feed_mm_s * max(feed_pct, 0.0) / 100.0)
+
+
+@dataclass
+class DwellItem:
+    """G4: wait ``seconds``."""
+
+    seconds: float
+    source: Source | None
+
+
+@dataclass
+class AlarmItem:
+    """A block that must not start: when execution reaches it, raise the alarm and stop."""
+
+    alarm: NcAlarmError
+    source: Source | None
+
+
+BufferItem = PlannedSegment | DwellItem | AlarmItem
+
+
+def plan_segment(
+    params: MotionParams,
+    segment: Segment,
+    *,
+    rapid: bool,
+    feed_mm_s: float | None,
+    soft: bool,
+    exact_stop: bool,
+    window: str,
+    source: Source | None,
+) -> PlannedSegment:
+    """Compute the limits of one segment."""
+    share = segment.max_direction_share()
+    moved = share > 1e-12
+    axes = params.axes
+    v_cap = math.inf
+    a_lin = math.inf
+    j_lin = math.inf
+    for k in np.flatnonzero(moved):
+        axis = axes[k]
+        factor_a = axis.g0_accel_factor if rapid else 1.0
+        if soft:
+            factor_a *= axis.soft_accel_factor
+        factor_j = axis.g0_jerk_factor if rapid else 1.0
+        v_cap = min(v_cap, axis.max_velo_mm_s / share[k])
+        a_lin = min(a_lin, axis.max_accel_mm_s2 * factor_a / share[k])
+        j_lin = min(j_lin, axis.max_jerk_mm_s3 * factor_j / share[k])
+    if not math.isfinite(v_cap):
+        v_cap, a_lin, j_lin = 0.0, 1.0, 1.0
+    accel = a_lin
+    jerk: float | None = j_lin if soft else None
+    if segment.arc is not None:
+        i1, i2 = segment.arc[0], segment.arc[1]
+        radius = segment.min_radius
+        f = params.curv_effect
+        a_plane = min(axes[i1].max_accel_mm_s2, axes[i2].max_accel_mm_s2)
+        if f > 0.0:
+            v_cap = min(v_cap, math.sqrt(f * a_plane * radius))
+            accel = max((1.0 - f) * a_lin, 1e-3)
+        if soft:
+            j_plane = min(axes[i1].max_jerk_mm_s3, axes[i2].max_jerk_mm_s3)
+            v_cap = min(v_cap, (j_plane / 3.0 * radius * radius) ** (1.0 / 3.0))
+            jerk = j_lin / 3.0
+            if v_cap > 0.0:
+                accel = min(accel, max(j_plane * radius / (9.0 * v_cap), 1e-3))
+    v_cap = min(v_cap, SHORT_BLOCK_FACTOR * segment.length / params.ipo_cycle_s)
+    return PlannedSegment(
+        segment=segment, source=source, rapid=rapid, feed_mm_s=feed_mm_s, v_cap_mm_s=v_cap,
+        accel=accel, jerk=jerk, exact_stop=exact_stop, window=window, moved=moved,
+    )
+
+
+def junction_limit(params: MotionParams, prev: PlannedSegment, nxt: PlannedSegment) -> float:
+    """Highest velocity at the transition from ``prev`` to ``nxt`` in continuous-path mode."""
+    if prev.exact_stop or (prev.jerk is None) != (nxt.jerk is None):
+        return 0.0
+    T = params.ipo_cycle_s
+    t1 = prev.segment.tangent(True)
+    t2 = nxt.segment.tangent(False)
+    jump = np.abs(t2 - t1)
+    soft = nxt.jerk is not None
+    limit = math.inf
+    for k, axis in enumerate(params.axes):
+        reserve = axis.accel_ovl_factor - 1.0
+        allowed = reserve * (axis.max_jerk_mm_s3 * T * T if soft else axis.max_accel_mm_s2 * T)
+        if jump[k] > 1e-12:
+            limit = min(limit, allowed / jump[k])
+    if soft:
+        k1 = prev.segment.curvature(True)
+        k2 = nxt.segment.curvature(False)
+        dk = np.abs(k2 - k1)
+        for k, axis in enumerate(params.axes):
+            if dk[k] > 1e-12:
+                allowed = (axis.accel_ovl_factor - 1.0) * axis.max_jerk_mm_s3 * T
+                limit = min(limit, math.sqrt(allowed / dk[k]))
+    return max(limit, 0.0)
+
+
+@dataclass
+class LookAhead:
+    """The buffer of planned items and the backward pass over it."""
+
+    params: MotionParams
+    items: list[BufferItem] = field(default_factory=list)
+    feed_pct: float = 100.0
+    rapid_pct: float = 100.0
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def v_max(self, seg: PlannedSegment) -> float:
+        """Velocity limit of ``seg`` with the current overrides."""
+        return seg.v_max(self.feed_pct, self.rapid_pct)
+
+    def entry_max(self, seg: PlannedSegment) -> float:
+        """Highest velocity at which ``seg`` may be entered (its exit limit still reachable)."""
+        return min(self.v_max(seg), reach_up(seg.exit_limit, seg.remaining, seg.accel, seg.jerk))
+
+    def append(self, item: BufferItem) -> None:
+        """Buffer an item; update the transition limits backwards."""
+        if isinstance(item, PlannedSegment):
+            item.exit_limit = 0.0
+            prev = self.items[-1] if self.items else None
+            if isinstance(prev, PlannedSegment):
+                prev.junction_out = junction_limit(self.params, prev, item)
+            self.items.append(item)
+            self._propagate(len(self.items) - 2)
+        else:
+            self.items.append(item)
+
+    def _propagate(self, index: int) -> None:
+        """Backward pass from ``index`` down while limits keep changing."""
+        while index >= 0:
+            seg = self.items[index]
+            nxt = self.items[index + 1]
+            if not isinstance(seg, PlannedSegment):
+                return
+            if isinstance(nxt, PlannedSegment):
+                new = min(seg.junction_out, self.entry_max(nxt), self.v_max(seg))
+            else:
+                new = 0.0
+            if abs(new - seg.exit_limit) <= 1e-12:
+                return
+            seg.exit_limit = new
+            index -= 1
+
+    def replan_all(self) -> None:
+        """Full backward pass (after an override change)."""
+        for index in range(len(self.items) - 1, -1, -1):
+            seg = self.items[index]
+            if not isinstance(seg, PlannedSegment):
+                continue
+            nxt = self.items[index + 1] if index + 1 < len(self.items) else None
+            if isinstance(nxt, PlannedSegment):
+                seg.exit_limit = min(seg.junction_out, self.entry_max(nxt), self.v_max(seg))
+            else:
+                seg.exit_limit = 0.0
+
+    def pop_front(self) -> BufferItem:
+        """Remove and return the head item."""
+        return self.items.pop(0)
+
+    def clear(self) -> None:
+        """Discard everything."""
+        self.items.clear()

@@ -1,0 +1,115 @@
+"""Spindles in speed control: ramped speed, angle, limits, simple drive values.
+
+The speed follows its setpoint with the acceleration of MD35200; the setpoint
+is clamped to the gear-stage limits (MD35130/MD35140) and the chuck limit
+MD35100. M19/SPOS stop the spindle and orient it (the orientation itself is
+not interpolated). Everything is closed-form per call, independent of the
+number of IPO cycles.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from nck.motion.params import SpindleParams
+
+AMBIENT_C = 25.0
+
+
+@dataclass
+class SpindleState:
+    """Speeds in rpm (signed: + = M3), angle in degrees, drive values."""
+
+    programmed_rpm: float = 0.0
+    setpoint_rpm: float = 0.0
+    actual_rpm: float = 0.0
+    angle_deg: float = 0.0
+    override_pct: float = 100.0
+    state: str = "M5"
+    torque_nm: float = 0.0
+    temperature_c: float = AMBIENT_C
+    jog_direction: int = 0
+
+
+class Spindle:
+    """One spindle in speed control."""
+
+    def __init__(self, params: SpindleParams) -> None:
+        self.params = params
+        self.state = SpindleState()
+        self._accel_rpm_s = params.accel_rev_s2 * 60.0
+
+    def command(self, state: str | None, speed_rpm: float | None, position_deg: float | None = None) -> None:
+        """M3/M4/M5/M19 and S: set the speed setpoint (or orient the spindle)."""
+        st = self.state
+        if speed_rpm is not None:
+            st.programmed_rpm = abs(float(speed_rpm))
+        if state in ("M3", "M4", "M5"):
+            st.state = state
+        elif state in ("M19", "SPOS"):
+            st.state = "M5"
+            st.actual_rpm = 0.0
+            if position_deg is not None:
+                st.angle_deg = float(position_deg) % 360.0
+        self._update_setpoint()
+
+    def jog(self, direction: int) -> None:
+        """Spindle JOG: turn at the JOG speed (MD32020 in rpm) while ``direction`` ≠ 0."""
+        self.state.jog_direction = 0 if direction == 0 else (1 if direction > 0 else -1)
+        self._update_setpoint()
+
+    def set_override(self, percent: float) -> None:
+        """Spindle override (50 … 120 %)."""
+        self.state.override_pct = max(float(percent), 0.0)
+        self._update_setpoint()
+
+    def stop(self) -> None:
+        """RESET: spindle stops (M5)."""
+        self.state.state = "M5"
+        self.state.jog_direction = 0
+        self._update_setpoint()
+
+    def _update_setpoint(self) -> None:
+        st = self.state
+        p = self.params
+        if st.jog_direction:
+            target = st.jog_direction * p.jog_rpm * st.override_pct / 100.0
+        elif st.state == "M3":
+            target = st.programmed_rpm * st.override_pct / 100.0
+        elif st.state == "M4":
+            target = -st.programmed_rpm * st.override_pct / 100.0
+        else:
+            target = 0.0
+        upper = min(p.max_rpm, p.gear_max_rpm)
+        magnitude = min(abs(target), upper)
+        if magnitude > 0.0:
+            magnitude = max(magnitude, p.gear_min_rpm)
+        st.setpoint_rpm = math.copysign(magnitude, target) if target else 0.0
+
+    def advance(self, dt_s: float) -> None:
+        """Ramp the speed towards its setpoint and turn the spindle."""
+        st = self.state
+        p = self.params
+        start = st.actual_rpm
+        diff = st.setpoint_rpm - start
+        ramp_s = abs(diff) / self._accel_rpm_s
+        if ramp_s >= dt_s:
+            end = start + math.copysign(self._accel_rpm_s * dt_s, diff)
+            revolutions = (start + end) / 2.0 * dt_s / 60.0
+            accel = math.copysign(self._accel_rpm_s, diff)
+        else:
+            end = st.setpoint_rpm
+            revolutions = ((start + end) / 2.0 * ramp_s + end * (dt_s - ramp_s)) / 60.0
+            accel = 0.0
+        st.actual_rpm = end
+        st.angle_deg = (st.angle_deg + revolutions * 360.0) % 360.0
+        st.torque_nm = p.inertia_kgm2 * accel * 2.0 * math.pi / 60.0 + (0.02 * p.rated_torque_nm if end else 0.0)
+        load = (st.torque_nm / max(p.rated_torque_nm, 1e-9)) ** 2
+        target = AMBIENT_C + p.rated_temp_rise_k * load
+        st.temperature_c = target + (st.temperature_c - target) * math.exp(-dt_s / max(p.thermal_time_s, 1e-6))
+
+    @property
+    def moving(self) -> bool:
+        """True while the spindle turns or its speed changes."""
+        return abs(self.state.actual_rpm) > 1e-9 or abs(self.state.setpoint_rpm) > 1e-9

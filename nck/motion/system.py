@@ -1,0 +1,575 @@
+"""The real motion system: look-ahead planner, IPO-cycle interpolator, axes, JOG.
+
+:class:`PlannedMotion` implements :class:`nck.motion.api.MotionSystem` and
+:class:`nck.motion.api.JogControl`. ``advance(dt)`` produces one setpoint per
+path axis per IPO cycle (MD10050 × MD10070), a whole block at a time with
+numpy, runs the position controllers and monitors over them, and keeps an
+optional trace of the setpoints.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from nck.canon import Dwell, Motion, Source, SpindleCommand
+from nck.errors import NcAlarmError
+from nck.machine import MachineConfig
+from nck.motion.jog import JogUnit
+from nck.motion.limits import Limits
+from nck.motion.params import motion_params
+from nck.motion.path import PLANE_AXES, Segment, arc, line
+from nck.motion.planner import AlarmItem, DwellItem, LookAhead, PlannedSegment, plan_segment
+from nck.motion.profile import braking_profile, build_profile
+from nck.motion.runs import PathRun
+from nck.motion.servo import AxisState, ServoBank
+from nck.motion.spindle import Spindle
+
+RECHECK_CYCLES = 25
+
+
+class PlannedMotion:
+    """Planner + interpolator + position control + JOG/referencing of one channel."""
+
+    def __init__(
+        self,
+        machine: MachineConfig,
+        positions_mcs: Mapping[str, float] | None = None,
+        referenced: bool = False,
+        setting_data: Mapping[str, Any] | None = None,
+    ) -> None:
+        self.machine = machine
+        self.params = motion_params(machine)
+        self.T = self.params.ipo_cycle_s
+        self.names = [a.name for a in self.params.axes]
+        self.index = {name: i for i, name in enumerate(self.names)}
+        start = np.zeros(len(self.names))
+        for name, value in (positions_mcs or {}).items():
+            if name in self.index:
+                start[self.index[name]] = float(value)
+        self.linear_mask = np.array([not a.rotary for a in self.params.axes], dtype=bool)
+        self.cmd = start.copy()
+        self.servo = ServoBank(self.params.axes, self.T, start)
+        self.referenced = [bool(referenced)] * len(self.names)
+        self.limits = Limits(self.params.axes, setting_data)
+        self.jog = JogUnit(self.params, self.limits, self.referenced)
+        self.la = LookAhead(self.params)
+        self.spindles = {p.name: Spindle(p) for p in self.params.spindles}
+        self.run: PathRun | None = None
+        self.v_path = 0.0
+        self.plan_pos: np.ndarray | None = None
+        self.wait_cycles = 0
+        self.wait_source: Source | None = None
+        self.exact_wait: tuple[np.ndarray, np.ndarray] | None = None
+        self.held = False
+        self.faulted = False
+        self.hold_point: np.ndarray | None = None
+        self.repos_feed: float | None = None
+        self.repos_pending = False
+        self.dry_run_feed_mm_min: float | None = None
+        self.dry_run_mode = 0
+        self.time_s = 0.0
+        self.cycles = 0
+        self._fraction = 0.0
+        self._alarms: list[NcAlarmError] = []
+        self._last_source: Source | None = None
+        self._trace: list[tuple[np.ndarray, np.ndarray]] | None = None
+        self._saved_for_test: np.ndarray | None = None
+        self._fine = np.array([a.stop_limit_fine_mm for a in self.params.axes])
+        self._coarse = np.array([a.stop_limit_coarse_mm for a in self.params.axes])
+
+    # ------------------------------------------------------------ MotionSystem
+    @property
+    def ipo_cycle_s(self) -> float:
+        """The interpolation cycle in seconds."""
+        return self.T
+
+    def can_accept(self) -> bool:
+        """True while the look-ahead buffer (MD28060) has room."""
+        return len(self.la) < self.params.buffer_segments
+
+    def push(self, item: Motion | Dwell) -> None:
+        """Plan a segment (or buffer a dwell) behind the ones already buffered."""
+        if isinstance(item, Dwell):
+            seconds = item.seconds
+            if seconds is None:
+                rpm = max((abs(s.state.actual_rpm) for s in self.spindles.values()), default=0.0)
+                seconds = (item.revolutions or 0.0) / (rpm / 60.0) if rpm > 0 else 0.0
+            self.la.append(DwellItem(max(float(seconds), 0.0), item.source))
+            return
+        if not isinstance(item, Motion):
+            return
+        start = self._plan_start()
+        end = start.copy()
+        for name, value in item.end_mcs.items():
+            if name in self.index:
+                end[self.index[name]] = float(value)
+        segment = self._segment(item, start, end)
+        self.plan_pos = end
+        if segment is None:
+            return
+        violation = self.limits.check_segment(segment, self.referenced)
+        if violation is not None:
+            number, axis, sign = violation
+            alarm = NcAlarmError(number, axis, sign, file=item.source.file, line=item.source.line, n=item.source.n)
+            self.la.append(AlarmItem(alarm, item.source))
+            return
+        rapid = item.kind == "G0"
+        feed = None if rapid else self._effective_feed(item)
+        soft = item.gcodes.get(21, "BRISK") == "SOFT" if item.gcodes else False
+        window = item.exact_stop_window or "G601"
+        planned = plan_segment(
+            self.params, segment, rapid=rapid, feed_mm_s=feed, soft=soft,
+            exact_stop=bool(item.exact_stop), window=window, source=item.source,
+        )
+        self.la.append(planned)
+        self._replan_if_exit_changed()
+
+    def advance(self, dt_s: float) -> None:
+        """Advance by ``dt_s`` (rounded to whole IPO cycles, remainders carried)."""
+        self._fraction += dt_s / self.T
+        n = int(math.floor(self._fraction + 1e-9))
+        if n <= 0:
+            return
+        self._fraction -= n
+        for spindle in self.spindles.values():
+            spindle.advance(n * self.T)
+        for i, delta in self.jog.take_shifts().items():
+            self.servo.x_set[i] += delta
+            self.cmd[i] += delta
+        if self._quiet():
+            self.servo.idle(n)
+            self._record(np.repeat(self.cmd[None, :], n, axis=0))
+            self._tick(n)
+            return
+        columns = self.jog.fill(n, self.cmd.copy())
+        rows = np.empty((n, len(self.names)))
+        k = 0
+        while k < n:
+            k_end, sync = self._path_fill(rows, k, n)
+            for i, col in columns.items():
+                rows[k:k_end, i] = col[k:k_end]
+            actual, trip = self.servo.process(rows[k:k_end])
+            taken = actual.shape[0]
+            self._record(rows[k:k + taken])
+            if taken:
+                self.cmd = rows[k + taken - 1].copy()
+            self._tick(taken)
+            k += taken
+            if trip is not None:
+                self._on_trip(trip)
+                columns = {}
+                continue
+            if sync:
+                self._check_exact_stop()
+
+    def is_idle(self) -> bool:
+        """True when nothing is buffered or moving and every axis is in its coarse window."""
+        if self.run is not None or self.la.items or self.wait_cycles or self.exact_wait is not None:
+            return False
+        if self.jog.active():
+            return False
+        return bool(np.all(np.abs(self.servo.v_set) <= 1e-9) and np.all(np.abs(self.servo.e) <= self._coarse))
+
+    def hold(self) -> None:
+        """NC STOP: brake along the path and stay interrupted."""
+        self.held = True
+        if self.run is not None and self.run.kind == "segment":
+            self._brake_path("brake")
+
+    def resume(self) -> None:
+        """NC START: continue the interrupted segment (after the REPOS approach, if any)."""
+        self.held = False
+        if self.repos_pending and self.hold_point is not None:
+            self.repos_pending = False
+            start = self.cmd.copy()
+            if float(np.max(np.abs(self.hold_point - start))) > 1e-9:
+                segment = line(start, self.hold_point, self.linear_mask)
+                rapid = self.repos_feed is None
+                feed = None if rapid else self.repos_feed / 60.0
+                planned = plan_segment(self.params, segment, rapid=rapid, feed_mm_s=feed, soft=False,
+                                       exact_stop=True, window="G601", source=self._last_source)
+                self.la.items.insert(0, planned)
+
+    def abort(self) -> None:
+        """RESET: brake, discard everything buffered, leave follow-up, stop the spindles."""
+        self.held = False
+        self.faulted = False
+        self.wait_cycles = 0
+        self.exact_wait = None
+        self.repos_pending = False
+        self.hold_point = None
+        if self.run is not None and self.run.state()[1] > 1e-9:
+            self._brake_path("abort")
+        else:
+            self.run = None
+        self.la.clear()
+        self.plan_pos = None
+        self.jog.stop_all(abort_reference=True)
+        self.servo.reset()
+        self.cmd = self.servo.x_set.copy()
+        for spindle in self.spindles.values():
+            spindle.stop()
+        self.limits.workarea_on = True
+
+    def positions_mcs(self) -> Mapping[str, float]:
+        """Actual positions of every path axis (MCS) and the angle of every spindle."""
+        actual = self.servo.actual
+        out = {name: float(actual[i]) for i, name in enumerate(self.names)}
+        for name, spindle in self.spindles.items():
+            out[name] = spindle.state.angle_deg
+        return out
+
+    def set_overrides(self, feed_percent: float, rapid_percent: float) -> None:
+        """Feed and rapid override, on the fly (feed also scales JOG)."""
+        feed = max(float(feed_percent), 0.0)
+        rapid = max(float(rapid_percent), 0.0)
+        if feed == self.la.feed_pct and rapid == self.la.rapid_pct:
+            return
+        self.la.feed_pct = feed
+        self.la.rapid_pct = rapid
+        self.la.replan_all()
+        self.jog.set_override(feed, self.cmd)
+        if self.run is not None and self.run.kind == "segment":
+            self._replan_run()
+
+    def reposition(self, feed_mm_min: float | None) -> None:
+        """REPOS: on the next resume, return linearly to the hold point first."""
+        self.repos_feed = feed_mm_min
+        self.repos_pending = True
+
+    def current_source(self) -> Source | None:
+        """The block whose segment or dwell is executing."""
+        if self.run is not None and self.run.kind != "abort":
+            return self.run.chain[0].source
+        if self.wait_cycles or self.exact_wait is not None:
+            return self.wait_source
+        if self.la.items:
+            return self.la.items[0].source
+        return None
+
+    def drain_alarms(self) -> list[NcAlarmError]:
+        """Alarms raised by monitoring, limits and referencing since the last call."""
+        out = self._alarms + self.jog.alarms
+        self._alarms = []
+        self.jog.alarms = []
+        return out
+
+    # --------------------------------------------------------------- JogControl
+    def jog_continuous(self, axis: str, direction: int, velocity_mm_min: float) -> None:
+        """Start (±1) or stop (0) continuous JOG of an axis or a spindle."""
+        if axis in self.spindles:
+            self.spindles[axis].jog(direction)
+            return
+        if axis in self.index:
+            i = self.index[axis]
+            self.jog.continuous(i, direction, velocity_mm_min, float(self.cmd[i]))
+
+    def jog_increment(self, axis: str, distance_mm: float, velocity_mm_min: float) -> None:
+        """Traverse one axis by a signed increment."""
+        if axis in self.index:
+            i = self.index[axis]
+            self.jog.increment(i, distance_mm, velocity_mm_min, float(self.cmd[i]))
+
+    def start_reference(self, axis: str) -> None:
+        """Start the reference point approach of one axis."""
+        if axis in self.index:
+            i = self.index[axis]
+            self.jog.start_reference(i, float(self.cmd[i]))
+
+    def is_referenced(self, axis: str) -> bool:
+        """True once the axis is referenced (spindles count as referenced)."""
+        if axis in self.index:
+            return self.referenced[self.index[axis]]
+        return True
+
+    def jog_active(self) -> bool:
+        """True while a JOG motion or a reference point approach is under way."""
+        return self.jog.active()
+
+    def set_referenced(self, axis: str, referenced: bool) -> None:
+        """Mark an axis referenced (or not) without motion."""
+        if axis in self.index:
+            self.referenced[self.index[axis]] = bool(referenced)
+
+    # ----------------------------------------------------------- extensions
+    def drain_cleared_alarms(self) -> list[int]:
+        """Numbers of self-clearing alarms (10621, 10631) whose cause has gone."""
+        out = self.jog.cleared
+        self.jog.cleared = []
+        return out
+
+    def set_dry_run(self, feed_mm_min: float | None, mode: int = 0) -> None:
+        """Dry run (SD42100 feed, SD42101 mode) for segments pushed from now on; None = off."""
+        self.dry_run_feed_mm_min = feed_mm_min
+        self.dry_run_mode = int(mode)
+
+    def set_program_test(self, active: bool) -> None:
+        """Program test: the display moves, the machine does not (restored when switched off)."""
+        if active and self._saved_for_test is None:
+            self._saved_for_test = self.servo.actual.copy()
+        elif not active and self._saved_for_test is not None:
+            for i, value in enumerate(self._saved_for_test):
+                self.servo.set_position(i, float(value))
+            self.cmd = self._saved_for_test.copy()
+            self._saved_for_test = None
+            self.plan_pos = None
+
+    def set_workarea_monitoring(self, active: bool) -> None:
+        """WALIMON / WALIMOF."""
+        self.limits.workarea_on = bool(active)
+
+    def spindle_command(self, command: SpindleCommand) -> None:
+        """M3/M4/M5/M19/S for a spindle (``spindle`` 1 = the first spindle)."""
+        names = list(self.spindles)
+        if not names:
+            return
+        index = min(max(command.spindle, 1), len(names)) - 1
+        self.spindles[names[index]].command(command.state, command.speed_rpm, command.position_deg)
+
+    def set_spindle_override(self, percent: float) -> None:
+        """Spindle override for every spindle."""
+        for spindle in self.spindles.values():
+            spindle.set_override(percent)
+
+    def axis_states(self) -> dict[str, AxisState]:
+        """Service-screen values of every path axis."""
+        return {name: self.servo.state(i) for i, name in enumerate(self.names)}
+
+    def inject_fault(self, axis: str, **kwargs: float | None) -> None:
+        """Simulate a mechanical fault (``jam_at_mm``, ``offset_mm``, ``runaway_mm_s``, ``push_mm``)."""
+        fault = self.servo.faults[self.index[axis]]
+        for key, value in kwargs.items():
+            setattr(fault, key, value)
+
+    def set_clamped(self, axis: str, clamped: bool) -> None:
+        """Clamping in progress (clamping monitoring replaces zero-speed monitoring)."""
+        self.servo.clamped[self.index[axis]] = bool(clamped)
+
+    def enable_trace(self) -> None:
+        """Start recording every IPO-cycle setpoint (for ``--trace``)."""
+        self._trace = []
+
+    def trace(self) -> tuple[np.ndarray, np.ndarray]:
+        """Recorded times (s) and setpoints (rows × path axes, MCS)."""
+        if not self._trace:
+            return np.zeros(0), np.zeros((0, len(self.names)))
+        times = np.concatenate([t for t, _ in self._trace])
+        rows = np.concatenate([r for _, r in self._trace])
+        return times, rows
+
+    # ------------------------------------------------------------- internals
+    def _tick(self, n: int) -> None:
+        self.cycles += n
+        self.time_s = self.cycles * self.T
+
+    def _record(self, rows: np.ndarray) -> None:
+        if self._trace is not None and rows.shape[0]:
+            times = (self.cycles + np.arange(1, rows.shape[0] + 1)) * self.T
+            self._trace.append((times, rows.copy()))
+
+    def _quiet(self) -> bool:
+        return (
+            self.run is None and not self.la.items and not self.wait_cycles and self.exact_wait is None
+            and not self.jog.runs and self.servo.settled()
+        )
+
+    def _plan_start(self) -> np.ndarray:
+        if self.plan_pos is None or (self.run is None and not self.la.items):
+            self.plan_pos = self.cmd.copy()
+        return self.plan_pos.copy()
+
+    def _segment(self, item: Motion, start: np.ndarray, end: np.ndarray) -> Segment | None:
+        if item.kind in ("G2", "G3") and item.center_mcs:
+            plane = PLANE_AXES.get(item.plane, PLANE_AXES["G17"])
+            if plane[0] in self.index and plane[1] in self.index:
+                i1, i2 = self.index[plane[0]], self.index[plane[1]]
+                c1 = float(item.center_mcs.get(plane[0], start[i1]))
+                c2 = float(item.center_mcs.get(plane[1], start[i2]))
+                seg = arc(start, end, (c1, c2), (i1, i2), item.kind == "G2", item.turns, self.linear_mask)
+                return seg if seg.length > 1e-9 else None
+        seg = line(start, end, self.linear_mask)
+        return seg if seg.length > 1e-9 else None
+
+    def _effective_feed(self, item: Motion) -> float:
+        feed = item.feed_mm_min if item.feed_mm_min and item.feed_mm_min > 0 else None
+        dry = self.dry_run_feed_mm_min
+        if dry is not None and dry > 0:
+            mode = self.dry_run_mode % 10
+            if self.dry_run_mode >= 10 and item.kind == "G33":
+                pass
+            elif feed is None or mode == 2:
+                feed = dry
+            elif mode == 1:
+                feed = min(feed, dry)
+            else:
+                feed = max(feed, dry)
+        return (feed if feed is not None else 0.0) / 60.0
+
+    def _replan_if_exit_changed(self) -> None:
+        run = self.run
+        if run is None or run.kind != "segment":
+            return
+        head = run.chain[0]
+        if abs(min(head.exit_limit, self.la.v_max(head)) - run.exit_target) > 1e-9:
+            self._replan_run()
+
+    def _replan_run(self) -> None:
+        """Rebuild the running segment's profile from the current state (override, look-ahead)."""
+        run = self.run
+        assert run is not None
+        s, v, a = run.state()
+        seg = run.chain[0]
+        seg.done_s = run.s_begin + s
+        vmax = self.la.v_max(seg)
+        if vmax <= 1e-9:
+            self._brake_path("brake")
+            return
+        exit_v = min(seg.exit_limit, vmax)
+        profile = build_profile(seg.remaining, v, exit_v, vmax, seg.accel, seg.jerk, a_start=a)
+        self.run = PathRun([seg], seg.done_s, profile, tau=0.0, kind="segment", exit_target=exit_v)
+
+    def _brake_path(self, kind: str) -> None:
+        run = self.run
+        assert run is not None
+        s, v, a = run.state()
+        head = run.chain[0]
+        s_begin = run.s_begin + s
+        profile = braking_profile(v, a, head.accel, head.jerk)
+        chain = [head]
+        covered = head.segment.length - s_begin
+        if run.kind == "segment":
+            items = self.la.items
+            index = 1
+            while covered < profile.length and index < len(items) and isinstance(items[index], PlannedSegment):
+                chain.append(items[index])  # type: ignore[arg-type]
+                covered += items[index].segment.length  # type: ignore[union-attr]
+                index += 1
+        else:
+            chain = list(run.chain)
+        self.run = PathRun(chain, s_begin, profile, tau=0.0, kind=kind)
+
+    def _path_fill(self, rows: np.ndarray, k: int, n: int) -> tuple[int, bool]:
+        """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop."""
+        T = self.T
+        while k < n:
+            if self.wait_cycles > 0:
+                m = min(self.wait_cycles, n - k)
+                rows[k:k + m] = self.cmd
+                self.wait_cycles -= m
+                k += m
+                if self.wait_cycles == 0 and self.exact_wait is not None:
+                    return k, True
+                continue
+            if self.exact_wait is not None:
+                return k, True
+            if self.run is None and not self._start_next(0.0):
+                rows[k:n] = self.cmd
+                return n, False
+            if self.run is None:
+                continue
+            run = self.run
+            room = n - k
+            taus = run.tau + T * np.arange(1, room + 1)
+            m = int(np.searchsorted(taus, run.profile.duration_s + 1e-12, side="right"))
+            if m:
+                s = run.profile.sample(taus[:m])[0]
+                rows[k:k + m] = run.positions(s)
+                run.tau = float(taus[m - 1])
+                self.cmd = rows[k + m - 1].copy()
+                k += m
+            if m == room:
+                break
+            carry = run.tau - run.profile.duration_s
+            if self._finish_run(run):
+                return k, True
+            if self.run is None and not self.held and not self.faulted:
+                self._start_next(carry)
+        return k, False
+
+    def _finish_run(self, run: PathRun) -> bool:
+        """Book-keeping at the end of a run; True when an exact-stop wait begins."""
+        self.run = None
+        if run.kind == "segment":
+            seg = run.chain[0]
+            if self.la.items and self.la.items[0] is seg:
+                self.la.pop_front()
+            self.cmd = seg.segment.end.copy()
+            self.v_path = run.profile.v_end
+            self._last_source = seg.source
+            if seg.exact_stop and seg.window != "G603":
+                window = self._coarse if seg.window == "G602" else self._fine
+                self.exact_wait = (np.flatnonzero(seg.moved), window)
+                self.wait_source = seg.source
+                self.v_path = 0.0
+                return True
+            return False
+        self.v_path = 0.0
+        if run.kind == "abort":
+            return False
+        index, local = run.split_end()
+        for _ in range(index):
+            if self.la.items and self.la.items[0] is not run.chain[index]:
+                self.la.pop_front()
+        seg = run.chain[index]
+        seg.done_s = local
+        if seg.remaining <= 1e-9 and self.la.items and self.la.items[0] is seg:
+            self.la.pop_front()
+        self.hold_point = self.cmd.copy()
+        return False
+
+    def _start_next(self, carry: float) -> bool:
+        """Begin the next buffered item; False when nothing can start."""
+        if self.held or self.faulted or not self.la.items:
+            return False
+        head = self.la.items[0]
+        if isinstance(head, AlarmItem):
+            self.la.pop_front()
+            self._alarms.append(head.alarm)
+            self.faulted = True
+            return False
+        if isinstance(head, DwellItem):
+            self.la.pop_front()
+            self.wait_cycles = int(round(head.seconds / self.T))
+            self.wait_source = head.source
+            self.v_path = 0.0
+            return True
+        vmax = self.la.v_max(head)
+        if vmax <= 1e-9:
+            self.v_path = 0.0
+            return False
+        exit_v = min(head.exit_limit, vmax)
+        profile = build_profile(head.remaining, self.v_path, exit_v, vmax, head.accel, head.jerk)
+        self.run = PathRun([head], head.done_s, profile, tau=carry, kind="segment", exit_target=exit_v)
+        return True
+
+    def _check_exact_stop(self) -> None:
+        if self.exact_wait is None or self.wait_cycles:
+            return
+        indices, window = self.exact_wait
+        cycles = self.servo.cycles_to_window(indices, window)
+        if cycles == 0:
+            self.exact_wait = None
+        else:
+            self.wait_cycles = RECHECK_CYCLES if cycles is None else cycles
+
+    def _on_trip(self, trip: Any) -> None:
+        source = self.current_source()
+        file = source.file if source else None
+        line_no = source.line if source else None
+        n = source.n if source else None
+        self._alarms.append(NcAlarmError(trip.number, trip.axis, file=file, line=line_no, n=n))
+        self.servo.enter_follow_up()
+        self.cmd = self.servo.x_set.copy()
+        self.run = None
+        self.faulted = True
+        self.wait_cycles = 0
+        self.exact_wait = None
+        self.jog.runs.clear()
+
+
+def planned_motion_factory(machine: MachineConfig) -> PlannedMotion:
+    """``motion_factory`` for :class:`nck.kernel.Nck`: the real motion system."""
+    return PlannedMotion(machine)
