@@ -29,12 +29,14 @@ from dataclasses import dataclass, replace
 from typing import Any, Mapping
 
 from nck import canon
+from nck.errors import NcAlarmError
 from nck.geometry.cutting_edge import effective_radius, reference_offset
 from nck.geometry.radius_comp import CompensatedElement, ContourElement, RadiusCompensator, TrcSettings
 from nck.geometry.tool_length import resolve_edge
 from nck.geometry.trc_geometry import plane_axes, same_point
 
 STAGE_ATTRIBUTE = "trc_stage"
+ALARM_PLANE_CHANGE = 10757  # G17/G18/G19 changed while G41/G42 is active
 SIDES = ("G40", "G41", "G42")
 CORNER_MODES = ("G450", "G451")
 APPROACH_MODES = ("NORM", "KONT", "KONTT", "KONTC")
@@ -66,6 +68,7 @@ class TrcStage:
         self.templates: dict[int, canon.Motion | None] = {}
         self.serial = 0
         self.last_end_mcs: dict[str, float] | None = None
+        self.plane: str | None = None
 
     # ------------------------------------------------------------------ input
     def _element(self, motion: canon.Motion | None, modal: Any, data: Any, key: TrcKey,
@@ -192,7 +195,21 @@ class TrcStage:
             if motions:
                 self.last_end_mcs = dict(motions[-1].end_mcs)
             return motions
-        mirrored = _plane_mirrored(modal, motions[0].plane if motions else modal.gcodes.get(6, "G17"))
+        plane = motions[0].plane if motions else modal.gcodes.get(6, "G17")
+        if comp.active and self.plane is not None and plane != self.plane:
+            error = NcAlarmError(ALARM_PLANE_CHANGE)
+            if source is not None:
+                error.located(source.file, source.line, source.n)
+            raise error
+        mirrored = _plane_mirrored(modal, plane)
+        try:
+            return self._process(motions, modal, path, data, source, mirrored)
+        finally:
+            self.plane = plane if comp.active else None
+
+    def _process(self, motions: list[canon.Motion], modal: Any, path: Any, data: Any,
+                 source: canon.Source | None, mirrored: bool) -> list[canon.Motion]:
+        comp = self.compensator
         result: list[canon.Motion] = []
         if not motions:
             # A block without path motion counts as a block without plane motion.

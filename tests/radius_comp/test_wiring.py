@@ -157,3 +157,14 @@ N30 X50
 N40 M30
 """)
     assert [a.number for a in result.alarms] == [10762]
+
+
+def test_plane_change_while_compensating_is_alarm_10757():
+    result = mill("""N5 G17 G90 G0 X-20 Y-20 Z5 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 Y30
+N30 G18 X50
+N40 M30
+""")
+    assert [a.number for a in result.alarms] == [10757]
+    assert result.alarms[0].line == 4
