@@ -52,9 +52,10 @@ def _common_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--machine", help="machine name or TOML file")
     parser.add_argument("--dialect", default="siemens", choices=["siemens", "iso-m", "iso-t"])
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
-    parser.add_argument("--tools", help="(accepted; tool table loading not yet implemented)")
-    parser.add_argument("--data-dir", help="NC data directory (subprograms are searched there too)")
-    parser.add_argument("--ephemeral", action="store_true", help="(accepted; nothing is written back)")
+    parser.add_argument("--tools", help="tool table (TOML, see nck/cli_tools.py)")
+    parser.add_argument("--data-dir", help="NC data directory (retained data, NC file system)")
+    parser.add_argument("--ephemeral", action="store_true",
+                        help="work on a temporary copy of the data directory")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -111,12 +112,59 @@ def _read_program(path_text: str) -> tuple[Path, str]:
         raise CliError(f"cannot read '{path_text}': {exc.strerror}") from None
 
 
-def _source(path: Path, options: argparse.Namespace) -> DirectorySource:
-    dirs: list[Path] = [path.parent if str(path.parent) else Path(".")]
-    if options.data_dir:
-        base = Path(options.data_dir)
-        dirs += [base, base / "SPF", base / "MPF", base / "spf", base / "mpf"]
-    return DirectorySource(*dirs)
+def _source(path: Path, options: argparse.Namespace, env: "_Environment | None" = None) -> Any:
+    """Subprograms: the program's own directory first, then the NC file system."""
+    from nck.interp.sources import ChainSource
+
+    here = DirectorySource(path.parent if str(path.parent) else Path("."))
+    return ChainSource(here, env.session.files if env is not None and env.session else None)
+
+
+class _Environment:
+    """Machine, NC data and (with ``--data-dir``) the retained-data session of one command.
+
+    Without ``--data-dir`` every run starts from fresh NC data (nothing is read
+    or written); with it the data directory is loaded (a temporary copy with
+    ``--ephemeral``) and, unless ephemeral, saved again after the run.
+    """
+
+    def __init__(self, options: argparse.Namespace) -> None:
+        self.machine = _machine(options)
+        self.session: Any = None
+        self._ephemeral: Any = None
+        self.data = NcData()
+        if options.data_dir:
+            from nck.paths import EphemeralDataDir, resolve_data_dir
+            from nck.persistence import Session
+
+            try:
+                if options.ephemeral:
+                    self._ephemeral = EphemeralDataDir(options.data_dir)
+                    directory = self._ephemeral.path
+                else:
+                    directory = resolve_data_dir(options.data_dir)
+                self.session = Session.open(directory, self.machine)
+            except OSError as exc:
+                raise CliError(f"NC data directory '{options.data_dir}': {exc}") from None
+            for alarm in self.session.startup_alarms:
+                print(format_alarm(alarm), file=sys.stderr)
+            self.machine = self.session.active_machine()
+            self.data = self.session.ncdata
+        if getattr(options, "tools", None):
+            from nck.cli_tools import ToolFileError, load_tool_table
+
+            try:
+                load_tool_table(options.tools, self.data)
+            except ToolFileError as exc:
+                raise CliError(str(exc)) from None
+        _apply_settings(options.set, self.machine, self.data)
+
+    def finish(self, save: bool = True) -> None:
+        """Write the retained data back (not for ephemeral copies); clean up."""
+        if self.session is not None and save and self._ephemeral is None:
+            self.session.save()
+        if self._ephemeral is not None:
+            self._ephemeral.cleanup()
 
 
 def _apply_settings(settings: list[str], machine: MachineConfig, data: NcData) -> None:
@@ -170,14 +218,15 @@ def _set_machine_data(machine: MachineConfig, name: str, value_text: str, md_num
 
 # ----------------------------------------------------------------------------- check
 def _check(options: argparse.Namespace) -> int:
-    machine = _machine(options)
     files = [_read_program(p) for p in options.programs]
     problems = 0
     for path, text in files:
-        data = NcData()
-        _apply_settings(options.set, machine, data)
-        found = check_program(machine, _source(path, options), path.name, text, data,
-                              dialect=options.dialect)
+        env = _Environment(options)
+        try:
+            found = check_program(env.machine, _source(path, options, env), path.name, text,
+                                  env.data, dialect=options.dialect)
+        finally:
+            env.finish(save=False)
         for alarm in found:
             print(format_alarm(alarm), file=sys.stderr)
         problems += len(found)
@@ -187,10 +236,9 @@ def _check(options: argparse.Namespace) -> int:
 
 # ----------------------------------------------------------------------------- run
 def _run(options: argparse.Namespace) -> int:
-    machine = _machine(options)
     path, text = _read_program(options.program)
-    data = NcData()
-    _apply_settings(options.set, machine, data)
+    env = _Environment(options)
+    machine, data = env.machine, env.data
     segment_out: TextIO | None = None
     close = False
     if options.segments:
@@ -208,12 +256,13 @@ def _run(options: argparse.Namespace) -> int:
             segment_out.write(json.dumps(segment_json(command)) + "\n")
 
     try:
-        result = run_program(machine, _source(path, options), data, path.name, text=text,
+        result = run_program(machine, _source(path, options, env), data, path.name, text=text,
                              timeout_s=options.timeout, on_command=on_command,
                              dialect=options.dialect)
     finally:
         if close and segment_out is not None:
             segment_out.close()
+        env.finish()
     for alarm in result.alarms:
         print(format_alarm(alarm), file=sys.stderr)
     if result.status == "timeout":

@@ -72,3 +72,18 @@ class MemorySource:
             if upper + ext in self.programs:
                 return self.programs[upper + ext]
         return self.programs.get(upper)
+
+
+class ChainSource:
+    """Several program sources searched in order (program directory, then NC file system)."""
+
+    def __init__(self, *sources: object) -> None:
+        self.sources = [s for s in sources if s is not None]
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        """Return the first source's ``(display_name, text)``, or None."""
+        for source in self.sources:
+            found = source.read_program(name)  # type: ignore[attr-defined]
+            if found is not None:
+                return found
+        return None

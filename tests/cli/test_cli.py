@@ -121,3 +121,36 @@ def test_binary_file_is_checked_without_traceback(tmp_path: Path, capsys: pytest
 def test_python_dash_m_nck_version() -> None:
     done = subprocess.run([sys.executable, "-m", "nck", "version"], capture_output=True, text=True, check=False)
     assert done.returncode == 0 and done.stdout.startswith("nck ")
+
+
+def test_tool_table_is_loaded(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    tools = write(tmp_path, "tools.toml", "[[edge]]\nt = 3\nd = 2\ntype = 120\nlength1 = 80\nradius = 5\ndp = { 12 = 0.25 }\n")
+    prog = write(tmp_path, "P.MPF", "R1=$TC_DP3[3,2]+$TC_DP12[3,2] R2=$TC_DP6[3,2]\nM30\n")
+    assert main(["run", str(prog), "--json", "--tools", str(tools)]) == 0
+    assert json.loads(capsys.readouterr().out)["r"] == {"1": 80.25, "2": 5.0}
+    bad = write(tmp_path, "bad.toml", "[[edge]]\nt = 0\n")
+    assert main(["run", str(prog), "--tools", str(bad)]) == 2
+
+
+def test_data_dir_keeps_retained_data_unless_ephemeral(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    prog = write(tmp_path, "COUNT.MPF", "R7=R7+1\nM30\n")
+    data_dir = tmp_path / "ncdata"
+
+    def r7(*extra: str) -> float:
+        assert main(["run", str(prog), "--json", "--data-dir", str(data_dir), *extra]) == 0
+        return json.loads(capsys.readouterr().out)["r"]["7"]
+
+    assert r7() == 1.0
+    assert r7() == 2.0
+    assert r7("--ephemeral") == 3.0
+    assert r7() == 3.0  # the ephemeral run wrote nothing back
+
+
+def test_subprograms_found_in_the_nc_file_system(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    data_dir = tmp_path / "ncdata"
+    prog = write(tmp_path, "MAIN.MPF", "HELPER\nM30\n")
+    assert main(["run", str(prog), "--data-dir", str(data_dir)]) == 1  # not there yet: 12550
+    capsys.readouterr()
+    (data_dir / "nc" / "SPF" / "HELPER.SPF").write_text("R3=3\nM17\n")
+    assert main(["run", str(prog), "--json", "--data-dir", str(data_dir)]) == 0
+    assert json.loads(capsys.readouterr().out)["r"]["3"] == 3.0

@@ -1,0 +1,77 @@
+"""``nck run --tools FILE``: a tool table in TOML, loaded into the NC data.
+
+Format (one ``[[edge]]`` table per cutting edge)::
+
+    [[edge]]
+    t = 1            # tool number
+    d = 1            # cutting edge (D number), default 1
+    type = 120       # $TC_DP1 tool type (120 end mill, 200 twist drill, 500 roughing tool …)
+    position = 0     # $TC_DP2 cutting edge position (turning tools)
+    length1 = 75.5   # $TC_DP3 geometry length 1
+    length2 = 0      # $TC_DP4
+    length3 = 0      # $TC_DP5
+    radius = 4       # $TC_DP6
+    dp = { 12 = 0.1, 15 = -0.02 }   # any $TC_DP<n> by number (wear, adapters …)
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+from nck.ncdata import NcData, ToolEdge
+
+NAMED_PARAMS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 5, "radius": 6}
+MAX_PARAM = 25
+
+
+class ToolFileError(Exception):
+    """The tool table could not be used; ``str()`` says why."""
+
+
+def load_tool_table(path: Path | str, data: NcData) -> int:
+    """Read the tool table into ``data.tools``; returns the number of edges loaded."""
+    path = Path(path)
+    try:
+        table = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise ToolFileError(f"cannot read tool table '{path}': {exc.strerror}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ToolFileError(f"tool table '{path}' is not valid TOML: {exc}") from None
+    edges = table.get("edge", [])
+    if not isinstance(edges, list):
+        raise ToolFileError(f"tool table '{path}': [[edge]] tables expected")
+    loaded: dict[tuple[int, int], ToolEdge] = {}
+    for number, entry in enumerate(edges, start=1):
+        where = f"tool table '{path}', edge {number}"
+        if not isinstance(entry, dict):
+            raise ToolFileError(f"{where}: a table expected")
+        tool, edge = entry.get("t"), entry.get("d", 1)
+        if not isinstance(tool, int) or not 1 <= tool <= 99_999_999:
+            raise ToolFileError(f"{where}: 't' must be a tool number 1…99999999")
+        if not isinstance(edge, int) or not 1 <= edge <= 12:
+            raise ToolFileError(f"{where}: 'd' must be an edge number 1…12")
+        params: dict[int, float] = {}
+        for key, value in entry.items():
+            if key in ("t", "d"):
+                continue
+            if key == "dp":
+                if not isinstance(value, dict):
+                    raise ToolFileError(f"{where}: 'dp' must be a table {{n = value}}")
+                for raw, number_value in value.items():
+                    if not raw.isdigit() or not 1 <= int(raw) <= MAX_PARAM:
+                        raise ToolFileError(f"{where}: $TC_DP{raw} does not exist")
+                    params[int(raw)] = _number(number_value, where, f"dp.{raw}")
+            elif key in NAMED_PARAMS:
+                params[NAMED_PARAMS[key]] = _number(value, where, key)
+            else:
+                raise ToolFileError(f"{where}: unknown key '{key}'")
+        loaded[(tool, edge)] = ToolEdge(params=params)
+    data.tools.update(loaded)
+    return len(loaded)
+
+
+def _number(value: object, where: str, key: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ToolFileError(f"{where}: '{key}' must be a number")
+    return float(value)
