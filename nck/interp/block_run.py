@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 from nck import canon
 from nck.errors import NcAlarmError
+from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
 from nck.interp import sysvars
 from nck.interp.evaluator import equal, evaluate
 from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, write_binding
@@ -276,6 +277,8 @@ class BlockRun:
     def _index_value(self, expr: ast.Expr) -> Any:
         if isinstance(expr, ast.Name) and self.interp.is_axis(expr.name) and self.interp.lookup(expr.name) is None:
             return Axis(expr.name)
+        if isinstance(expr, ast.Name) and expr.name in FRAME_COMPONENTS and self.interp.lookup(expr.name) is None:
+            return expr.name  # $P_UIFR[1,X,TR]=…: frame component names
         return self.eval(expr)
 
     # ------------------------------------------------------------ DEF

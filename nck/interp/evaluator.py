@@ -11,6 +11,7 @@ import math
 from typing import Any, Callable, Protocol
 
 from nck.errors import NcAlarmError
+from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
 from nck.interp.values import (
     Axis, INT_MAX, INT_MIN, round_half_away, to_bool, to_number, to_string,
 )
@@ -65,6 +66,8 @@ def _index_value(expr: ast.Expr, scope: Scope) -> Any:
     """An index may be an axis name (``$AA_IM[X]``) — those evaluate to Axis."""
     if isinstance(expr, ast.Name) and scope.is_axis(expr.name) and not scope.has_name(expr.name):
         return Axis(expr.name)
+    if isinstance(expr, ast.Name) and expr.name in FRAME_COMPONENTS and not scope.has_name(expr.name):
+        return expr.name  # $P_UIFR[1,X,TR]: frame component names
     return evaluate(expr, scope)
 
 

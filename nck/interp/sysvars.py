@@ -21,6 +21,7 @@ import re
 from typing import Any, Protocol
 
 from nck.errors import NcAlarmError
+from nck.geometry import frame_vars
 from nck.interp.modal import ModalState
 from nck.interp.values import Axis, to_number
 from nck.machine import MachineConfig
@@ -93,6 +94,8 @@ def _axis_arg(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> str:
 
 def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     """Read system variable ``name`` with evaluated ``indices``."""
+    if name in frame_vars.NAMES:  # frames and $AA_IW (WCS through frames and tool length)
+        return frame_vars.read(ctx, name, indices)
     modal = ctx.modal
     if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
         axis = _axis_arg(ctx, name, indices)
@@ -142,6 +145,9 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
 
 def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> None:
     """Write system variable ``name`` (only tool data is writable for now)."""
+    if name in frame_vars.NAMES:  # $P_UIFR[n,ax,TR], $P_PFRAME[ax,RT], …
+        frame_vars.write(ctx, name, indices, value)
+        return
     match = _TC_DP.match(name)
     if match:
         param, tool, edge = _tool_address(name, match, indices)

@@ -1,0 +1,204 @@
+"""Frame system variables: single frame components read and written by part programs.
+
+* ``$P_UIFR[n, axis, comp]`` — settable frame n (0 = G500, 1…4 = G54…G57,
+  5… = G505…) in the NC data; a write is not active until the frame is
+  selected again (G500/G54…);
+* ``$P_PFRAME[axis, comp]`` — the programmable frame, effective at once;
+* ``$P_UBFR[axis, comp]`` — the (first) channel basic frame in the NC data;
+* ``$P_UIFRNUM`` — index of the active settable frame;
+* ``$AA_IW[axis]`` — the actual position in the WCS (through frames and tool length).
+
+``comp`` is ``TR`` (translation), ``FI`` (fine translation), ``RT`` (rotation,
+degrees), ``SC`` (scale factor) or ``MI`` (mirror, 0/1). Lengths are read and
+written in the programmed system for the programmable frame, and per G70/G71
+vs G700/G710 rules for stored frames (:mod:`nck.geometry.units`).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from nck.errors import NcAlarmError
+from nck.geometry.chain import frame_from_work_offset
+from nck.geometry.frames import Frame, _as_matrix3, rpy_matrix
+from nck.ncdata import WorkOffset
+
+COMPONENTS = frozenset(("TR", "FI", "RT", "SC", "MI"))
+NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_UIFRNUM", "$AA_IW"))
+ALARM_INDEX = 17020  # illegal array index
+ALARM_SCALE_ZERO = 18309
+
+
+def settable_code(index: int) -> str:
+    """The G code of settable frame ``$P_UIFR[index]``."""
+    if index == 0:
+        return "G500"
+    if 1 <= index <= 4:
+        return f"G{53 + index}"
+    if 5 <= index <= 99:
+        return f"G{500 + index}"
+    raise NcAlarmError(ALARM_INDEX, "$P_UIFR")
+
+
+def settable_index(code: str) -> int:
+    """Inverse of :func:`settable_code`."""
+    number = int(code[1:])
+    if number == 500:
+        return 0
+    if 54 <= number <= 57:
+        return number - 53
+    return number - 500
+
+
+def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
+    """Read one of :data:`NAMES` (``interp`` is the interpreter)."""
+    modal = interp.modal
+    path = interp.builder.path
+    if name == "$P_UIFRNUM":
+        return settable_index(modal.gcodes.get(8, "G500"))
+    if name == "$AA_IW":
+        axis = _axis(interp, name, indices[:1]) if len(indices) == 1 else _bad(name)
+        actual = {a: float(interp.actual_position(a)) for a in interp.machine.path_axes}
+        return float(path.wcs_from_mcs(modal, actual)[axis])
+    if name == "$P_PFRAME":
+        axis, comp = _address(interp, name, indices)
+        return _component(path.state(modal).frames.programmable, axis, comp,
+                          path.units(modal).position_mm)
+    if name == "$P_UIFR":
+        if len(indices) != 3:
+            _bad(name)
+        code = settable_code(_int(indices[0], name))
+        axis, comp = _address(interp, name, indices[1:])
+        offset = interp.data.settable_frames.get(code, WorkOffset())
+        return _stored_component(offset, axis, comp, path.units(modal).data_mm)
+    if name == "$P_UBFR":
+        axis, comp = _address(interp, name, indices)
+        return _stored_component(interp.data.base_frame, axis, comp, path.units(modal).data_mm)
+    raise NcAlarmError(12550, name)
+
+
+def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
+    """Write one of :data:`NAMES` (read-only ones give alarm 17070)."""
+    from nck.interp.values import to_number
+
+    number = float(to_number(value, name))
+    modal = interp.modal
+    path = interp.builder.path
+    if name == "$P_PFRAME":
+        axis, comp = _address(interp, name, indices)
+        geo = path.state(modal)
+        frame = _set_component(geo.frames.programmable, axis, comp, number, path.units(modal).position_mm)
+        geo.frames = geo.frames.with_programmable(frame)
+        return
+    if name in ("$P_UIFR", "$P_UBFR"):
+        if name == "$P_UIFR":
+            if len(indices) != 3:
+                _bad(name)
+            code = settable_code(_int(indices[0], name))
+            offset = interp.data.settable_frame(code) if code != "G500" else \
+                interp.data.settable_frames.setdefault("G500", WorkOffset())
+            rest = indices[1:]
+        else:
+            offset = interp.data.base_frame
+            rest = indices
+        axis, comp = _address(interp, name, rest)
+        _set_stored(offset, axis, comp, number, path.units(modal).data_mm)
+        return
+    raise NcAlarmError(17070, name)
+
+
+# --------------------------------------------------------------------------- helpers
+def _bad(name: str) -> Any:
+    raise NcAlarmError(ALARM_INDEX, name)
+
+
+def _int(value: Any, name: str) -> int:
+    from nck.interp.values import to_number
+
+    number = to_number(value, name)
+    if int(number) != number:
+        raise NcAlarmError(ALARM_INDEX, name)
+    return int(number)
+
+
+def _axis(interp: Any, name: str, indices: tuple[Any, ...]) -> str:
+    axis = indices[0]
+    if not isinstance(axis, str) or axis not in interp.machine.path_axes and axis not in ("X", "Y", "Z"):
+        raise NcAlarmError(ALARM_INDEX, name)
+    return str(axis)
+
+
+def _address(interp: Any, name: str, indices: tuple[Any, ...]) -> tuple[str, str]:
+    if len(indices) != 2:
+        raise NcAlarmError(ALARM_INDEX, name)
+    axis = _axis(interp, name, indices[:1])
+    comp = str(indices[1]).upper()
+    if comp not in COMPONENTS:
+        raise NcAlarmError(ALARM_INDEX, name)
+    return axis, comp
+
+
+def _component(frame: Frame, axis: str, comp: str, length_mm: float) -> float:
+    if comp == "TR":
+        return float(frame.trans.get(axis, 0.0)) / length_mm
+    if comp == "FI":
+        return float(frame.fine.get(axis, 0.0)) / length_mm
+    if comp == "RT":
+        geo = frame.geometry_axes
+        return frame.rotation_deg[geo.index(axis)] if axis in geo else 0.0
+    if comp == "SC":
+        return float(frame.scale.get(axis, 1.0))
+    return 1.0 if axis in frame.mirror else 0.0
+
+
+def _set_component(frame: Frame, axis: str, comp: str, value: float, length_mm: float) -> Frame:
+    if comp == "TR":
+        trans = dict(frame.trans)
+        trans[axis] = value * length_mm
+        return frame._replace(trans=trans)
+    if comp == "FI":
+        fine = dict(frame.fine)
+        fine[axis] = value * length_mm
+        return frame._replace(fine=fine)
+    if comp == "RT":
+        geo = frame.geometry_axes
+        if axis not in geo:
+            raise NcAlarmError(14092, axis)
+        angles = list(frame.rotation_deg)
+        angles[geo.index(axis)] = value
+        return frame._replace(rotation=_as_matrix3(rpy_matrix((angles[0], angles[1], angles[2]))))
+    if comp == "SC":
+        if value == 0.0:
+            raise NcAlarmError(ALARM_SCALE_ZERO, axis)
+        scale = dict(frame.scale)
+        scale[axis] = value
+        return frame._replace(scale=scale)
+    mirror = set(frame.mirror)
+    if value:
+        mirror.add(axis)
+    else:
+        mirror.discard(axis)
+    return frame._replace(mirror=frozenset(mirror))
+
+
+def _stored_component(offset: WorkOffset, axis: str, comp: str, data_mm: float) -> float:
+    frame = frame_from_work_offset(offset, data_mm=1.0)
+    if comp in ("TR", "FI"):
+        table = offset.trans if comp == "TR" else offset.fine
+        return float(table.get(axis, 0.0)) * (1.0 / data_mm if data_mm != 1.0 else 1.0)
+    return _component(frame, axis, comp, 1.0)
+
+
+def _set_stored(offset: WorkOffset, axis: str, comp: str, value: float, data_mm: float) -> None:
+    if comp == "TR":
+        offset.trans[axis] = value * data_mm
+    elif comp == "FI":
+        offset.fine[axis] = value * data_mm
+    elif comp == "RT":
+        offset.rot[axis] = value
+    elif comp == "SC":
+        if value == 0.0:
+            raise NcAlarmError(ALARM_SCALE_ZERO, axis)
+        offset.scale[axis] = value
+    else:
+        offset.mirror[axis] = bool(value)

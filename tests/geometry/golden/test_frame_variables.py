@@ -1,0 +1,51 @@
+"""Golden: frame components through system variables ($P_UIFR, $P_PFRAME, $P_UBFR, $AA_IW)."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck.errors import NcAlarmError
+from nck.ncdata import NcData
+
+from .helpers import approx, lines, run
+
+
+def test_settable_frame_written_by_the_program_acts_after_selection() -> None:
+    data = NcData()
+    r = run(lines(
+        "N10 $P_UIFR[1,X,TR]=100 $P_UIFR[1,Y,TR]=50",
+        "N20 G0 X0 Y0",                # G500 still active: machine (0,0)
+        "N30 G54 X0 Y0",               # now G54 = (100,50)
+        "N40 $P_PFRAME[X,TR]=10",      # programmable frame, effective at once
+        "N50 X0",
+        "N60 R1=$P_UIFR[1,X,TR] R2=$P_UIFRNUM R3=$P_PFRAME[X,TR] R4=$AA_IW[X]",
+        "N70 $P_PFRAME[Z,RT]=90",
+        "N80 X10 Y0",                  # (10,0) turned to (0,10), + (10,0) + (100,50)
+        "N90 M30",
+    ), data)
+    assert r.end_mcs(20) == approx({"X": 0.0, "Y": 0.0, "Z": 0.0})
+    assert r.end_mcs(30) == approx({"X": 100.0, "Y": 50.0, "Z": 0.0})
+    assert r.end_mcs(50) == approx({"X": 110.0, "Y": 50.0, "Z": 0.0})
+    assert data.r[1:4] == [100.0, 1.0, 10.0]
+    assert data.settable_frames["G54"].trans == {"X": 100.0, "Y": 50.0}
+    assert r.end_mcs(80) == approx({"X": 110.0, "Y": 60.0, "Z": 0.0})
+
+
+def test_basic_frame_and_inch_data() -> None:
+    data = NcData()
+    r = run(lines("N10 $P_UBFR[Z,TR]=-5", "N20 G700", "N25 $P_UIFR[2,X,TR]=1",
+                  "N30 G71 G55 G0 X0 Z0", "N40 M30"), data)
+    # G700: stored data are written in inch: 1 inch = 25.4 mm.
+    assert data.settable_frames["G55"].trans["X"] == pytest.approx(25.4)
+    # The basic frame is read again at RESET / program start; this run started before the write,
+    # so only G55 acts.
+    assert r.end_mcs(30)["X"] == pytest.approx(25.4)
+
+
+def test_bad_component_and_zero_scale() -> None:
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 $P_PFRAME[X,SC]=0", "N20 M30"))
+    assert info.value.number == 18309
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 $P_UIFR[1,X]=5", "N20 M30"))
+    assert info.value.number == 17020
