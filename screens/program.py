@@ -16,7 +16,7 @@ manager, or the last one again with the PROGRAM key Alt+P):
   read-only with a message.
 
 Files are read and written only through the NC file system (``nck.storage``);
-see :mod:`screens.program_files` for the small adapter.
+:mod:`screens.program_files` finds it in the app.
 """
 
 from __future__ import annotations
@@ -262,18 +262,19 @@ class ProgramScreen(AreaBase):
         if self.program is not None and self.program != program and self.is_modified():
             self.journal_now()
         try:
-            raw = self.files.read_bytes(program) if text is None else text.encode("utf-8")
+            canonical = self.files.canonical(program)
+            raw = self.files.fs.read_bytes(canonical) if text is None else text.encode("utf-8")
         except Exception as exc:  # a file problem is a notification, never a traceback
             self.say(f"{program}: cannot be read ({exc})")
             return False
         decoded, binary = decode_program(raw)
-        self.program = self.files.display_name(program)
+        self.program = canonical
         self.binary = binary
         self.saved_text = decoded
         self._dirty = False
         self._mark_anchor = None
         self._journaled_hash = ""
-        self.files.remember_last(self.program)
+        self.files.last_program = self.program
         editor = self.editor
         editor.load_text(decoded)
         editor.set_error_marks([])
@@ -458,6 +459,8 @@ class ProgramScreen(AreaBase):
             reason = "not a text file"
         elif _is_executing(self.status, self.program):
             reason = "program is being executed"
+        elif self.files.is_in_use(self.program):
+            reason = "program is in use (selected)"
         changed = reason != self.read_only_reason
         self.read_only_reason = reason
         if self.is_mounted:
@@ -548,7 +551,8 @@ class ProgramScreen(AreaBase):
         self._generation += 1
         self._check_running = True
         self._show_cursor_message()
-        self._check_worker(self._generation, self.program, self.editor.text, self.files.program_source())
+        self._check_worker(self._generation, self.program, self.editor.text,
+                           self.files.program_source(self.program))
 
     @work(thread=True, exclusive=True, group="program-check", exit_on_error=False)
     def _check_worker(self, generation: int, program: str, text: str, programs: Any) -> None:
@@ -752,7 +756,7 @@ class ProgramScreen(AreaBase):
             return False
         text = self.editor.text
         try:
-            self.files.write_text(self.program, text)
+            self.files.fs.save(self.program, text)
         except Exception as exc:  # storage refusals are notifications
             self.say(f"{self.program} not saved: {exc}")
             return False
@@ -775,7 +779,7 @@ class ProgramScreen(AreaBase):
             if isinstance(result, Rejected):
                 self.say(f"Execute: {result.reason}")
                 return
-        result = self.submit(cmd.SelectProgram(self.files.select_name(self.program)))
+        result = self.submit(cmd.SelectProgram(self.program))
         if isinstance(result, Rejected):
             self.say(f"Execute: {result.reason}")
             return
@@ -799,7 +803,7 @@ class ProgramScreen(AreaBase):
         if self.program is None:
             return
         self.toolpath.set_pieces([], "calculating …")
-        self._simulate_worker(self.program, self.editor.text, self.files.program_source())
+        self._simulate_worker(self.program, self.editor.text, self.files.program_source(self.program))
 
     @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
     def _simulate_worker(self, program: str, text: str, programs: Any) -> None:

@@ -32,7 +32,9 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.softkeys import Softkey, SoftkeyMenu
-from screens.program_files import DIRECTORIES, ProgramEntry, ProgramFileError, ProgramFiles
+from nck.storage import ProgramEntry
+
+from screens.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 
 PROGRAM_SELECTION_LEVEL = 6
 """Selecting a program for execution needs keyswitch position 1 (level 6) or better."""
@@ -100,7 +102,7 @@ class ProgramManagerScreen(AreaBase):
 
     def __init__(self) -> None:
         super().__init__(id="area-program-manager")
-        self.directory = "/MPF"
+        self.directory = "MPF"
         self.entries: list[ProgramEntry] = []
         self._clipboard: str | None = None
         self._search_text = ""
@@ -137,7 +139,7 @@ class ProgramManagerScreen(AreaBase):
         table.add_column("Length", key="size", width=10)
         table.add_column("Date", key="date", width=18)
         self.rebuild_tree()
-        self.show_directory("/MPF")
+        self.show_directory("MPF")
         table.focus()
 
     def on_screen_resume(self) -> None:
@@ -175,12 +177,12 @@ class ProgramManagerScreen(AreaBase):
                 Softkey("pm.import", "Import", "import_file"),
                 Softkey("pm.export", "Export", "export_file", enabled=on_program),
                 None,
-                Softkey("pm.dir_mpf", "Part\nprograms", "show_directory('/MPF')",
-                        active=lambda s: s.directory == "/MPF"),
-                Softkey("pm.dir_spf", "Sub-\nprograms", "show_directory('/SPF')",
-                        active=lambda s: s.directory == "/SPF"),
-                Softkey("pm.dir_wks", "Work-\npieces", "show_directory('/WKS')",
-                        active=lambda s: s.directory.startswith("/WKS")),
+                Softkey("pm.dir_mpf", "Part\nprograms", "show_directory('MPF')",
+                        active=lambda s: s.directory == "MPF"),
+                Softkey("pm.dir_spf", "Sub-\nprograms", "show_directory('SPF')",
+                        active=lambda s: s.directory == "SPF"),
+                Softkey("pm.dir_wks", "Work-\npieces", "show_directory('WKS')",
+                        active=lambda s: s.directory.startswith("WKS")),
                 None,
                 Softkey("pm.refresh", "Refresh", "refresh_listing"),
             ],
@@ -195,21 +197,22 @@ class ProgramManagerScreen(AreaBase):
         root.expand()
         for directory, title in DIRECTORIES:
             if directory != "WKS":
-                root.add_leaf(title, data=f"/{directory}")
+                root.add_leaf(title, data=directory)
                 continue
-            node = root.add(title, data=f"/{directory}", expand=True)
-            if directory == "WKS":
-                try:
-                    folders = [e for e in self.files.list("/WKS") if e.kind == "WPD"]
-                except (OSError, ProgramFileError):
-                    folders = []
-                for folder in folders:
-                    node.add_leaf(folder.name, data=folder.path)
+            node = root.add(title, data=directory, expand=True)
+            for folder in self._workpieces():
+                node.add_leaf(folder.name, data=folder.path)
+
+    def _workpieces(self) -> list[ProgramEntry]:
+        try:
+            return [e for e in self.files.fs.list_directory("WKS") if e.kind == "WPD"]
+        except (OSError, ProgramFileError):
+            return []
 
     def on_tree_node_selected(self, event: Tree.NodeSelected) -> None:
         """Enter on a directory: list it and move to the list."""
         path = event.node.data
-        if path and path != "/":
+        if path and path != "/" and path != "NC":
             self.show_directory(path)
             self.table.focus()
 
@@ -235,7 +238,7 @@ class ProgramManagerScreen(AreaBase):
         table = self.table
         previous = select or (self.current_entry().path if self.current_entry() else None)
         try:
-            self.entries = self.files.list(self.directory)
+            self.entries = self.files.fs.list_directory(self.directory)
         except (OSError, ProgramFileError) as exc:
             self.entries = []
             self.say(f"{self.directory}: {exc}")
@@ -247,14 +250,14 @@ class ProgramManagerScreen(AreaBase):
             name = Text(("▶ " if marked else "  ") + entry.name + ("/" if entry.kind == "WPD" else ""))
             if marked:
                 name.stylize("bold #f39200")
-            size = Text("" if entry.kind == "WPD" else f"{entry.size}", justify="right")
-            table.add_row(name, entry.kind, size, entry.modified, key=entry.path)
+            size = Text(f"{entry.size_bytes}", justify="right")
+            table.add_row(name, entry.kind, size, format_modified(entry.modified_ns), key=entry.path)
         if previous:
             for index, entry in enumerate(self.entries):
                 if entry.path == previous:
                     table.move_cursor(row=index)
                     break
-        title = dict((f"/{d}", t) for d, t in DIRECTORIES).get(self.directory, self.directory)
+        title = dict(DIRECTORIES).get(self.directory, "Workpiece")
         self.query_one("#pm-path", Static).update(f" {title}   {self.directory}   ({len(self.entries)} entries)")
         self._update_info()
         self.refresh_softkeys()
@@ -321,7 +324,7 @@ class ProgramManagerScreen(AreaBase):
             if isinstance(result, Rejected):
                 self.say(f"Execute: {result.reason}")
                 return
-        result = self.submit(cmd.SelectProgram(self.files.select_name(entry.path)))
+        result = self.submit(cmd.SelectProgram(entry.path))
         if isinstance(result, Rejected):
             self.say(f"Execute: {result.reason}")
             return
@@ -331,7 +334,7 @@ class ProgramManagerScreen(AreaBase):
     def action_new(self) -> None:
         """New: ask for a name and create an empty program (a folder in Workpieces)."""
         directory = self.directory
-        kind = "workpiece" if directory == "/WKS" else ("subprogram" if directory == "/SPF" else "part program")
+        kind = "workpiece" if directory == "WKS" else ("subprogram" if directory == "SPF" else "program")
 
         def create(name: str | None) -> None:
             if not name:
@@ -344,7 +347,7 @@ class ProgramManagerScreen(AreaBase):
             self.rebuild_tree()
             self.refresh_listing(select=path)
             self.say(f"{path} created")
-            if not path.startswith("/WKS/") or path.count("/") > 2:
+            if not path.endswith(".WPD"):
                 self.files.request_open(path)
                 self.perform("app.switch_area('program')")
 
@@ -363,7 +366,7 @@ class ProgramManagerScreen(AreaBase):
         if self._clipboard is None:
             return
         try:
-            path = self.files.copy(self._clipboard, self.directory)
+            path = self.files.paste_copy(self._clipboard, self.directory)
         except (ProgramFileError, OSError) as exc:
             self.say(f"Paste: {exc}")
             return
@@ -383,7 +386,7 @@ class ProgramManagerScreen(AreaBase):
             if not name:
                 return
             try:
-                path = self.files.rename(entry.path, name, self._in_use())
+                path = self.files.fs.rename(entry.path, name).path
             except (ProgramFileError, OSError) as exc:
                 self.say(f"Rename: {exc}")
                 return
@@ -407,7 +410,7 @@ class ProgramManagerScreen(AreaBase):
             if choice != "Delete":
                 return
             try:
-                self.files.delete(entry.path, self._in_use())
+                self.files.fs.delete(entry.path)
             except (ProgramFileError, OSError) as exc:
                 self.say(f"Delete: {exc}")
                 return
@@ -433,12 +436,12 @@ class ProgramManagerScreen(AreaBase):
     def find_next(self, text: str) -> bool:
         """Move the cursor to the next program whose name contains ``text`` (all directories)."""
         needle = text.upper()
-        folders = ["/MPF", "/SPF"] + [e.path for e in self.files.list("/WKS") if e.kind == "WPD"]
+        folders = ["MPF", "SPF"] + [e.path for e in self._workpieces()]
         start = folders.index(self.directory) if self.directory in folders else 0
         current_row = self.table.cursor_row if self.entries else -1
         for step in range(len(folders) + 1):
             folder = folders[(start + step) % len(folders)]
-            entries = self.files.list(folder)
+            entries = self.files.fs.list_directory(folder)
             for index, entry in enumerate(entries):
                 if step == 0 and index <= current_row:
                     continue
@@ -453,13 +456,13 @@ class ProgramManagerScreen(AreaBase):
 
     def action_import_file(self) -> None:
         """Import: copy a file of the PC into the directory shown."""
-        directory = self.directory if self.directory != "/WKS" else "/MPF"
+        directory = self.directory if self.directory != "WKS" else "MPF"
 
         def do_import(path: str | None) -> None:
             if not path:
                 return
             try:
-                target = self.files.import_file(path, directory)
+                target = self.files.fs.import_file(Path(path).expanduser(), directory).path
             except (ProgramFileError, OSError) as exc:
                 self.say(f"Import: {exc}")
                 return
@@ -479,7 +482,7 @@ class ProgramManagerScreen(AreaBase):
             if not path:
                 return
             try:
-                target = self.files.export_file(entry.path, path)
+                target = self.files.fs.export_file(entry.path, Path(path).expanduser())
             except (ProgramFileError, OSError) as exc:
                 self.say(f"Export: {exc}")
                 return

@@ -9,7 +9,7 @@ import pytest
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
-from screens.program_files import _DirectoryBackend
+from nck.storage import NcFileSystem
 
 SIZE = (160, 48)
 
@@ -26,19 +26,25 @@ DEMO_PROGRAM = (
 )
 
 
-def nc_files(root: Path):
-    """The NC file system of a data directory (``/MPF``, ``/SPF``, ``/WKS``)."""
-    return _DirectoryBackend(root)
+def nc_files(root: Path) -> NcFileSystem:
+    """The NC file system ``root`` (``MPF``, ``SPF``, ``WKS``)."""
+    return NcFileSystem(root)
 
 
 def make_program_app(root: Path, referenced: bool = True) -> HmiApp:
-    """The HMI on a real kernel whose programs live in the NC data directory ``root``."""
-    return HmiApp(Nck(programs=nc_files(root), referenced=referenced), realtime=False)
+    """The HMI on a real kernel whose programs live in the NC file system ``root``.
+
+    As in the app, the selected program counts as in use for the file system.
+    """
+    files = nc_files(root)
+    nck = Nck(programs=files, referenced=referenced)
+    files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
+    return HmiApp(nck, realtime=False)
 
 
 @pytest.fixture
 def data_dir(tmp_path: Path) -> Path:
-    """An NC data directory with one part program ``/MPF/DEMO.MPF``."""
+    """An NC data directory with one part program ``MPF/DEMO.MPF``."""
     root = tmp_path / "nc"
     nc_files(root)
     (root / "MPF" / "DEMO.MPF").write_text(DEMO_PROGRAM)

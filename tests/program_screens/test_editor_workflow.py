@@ -20,7 +20,7 @@ async def test_create_fix_save_select_and_run(data_dir: Path) -> None:
         await pilot.press("f2", *"train1", "enter")  # New → name → editor opens
         await pilot.pause()
         screen = app.screen
-        assert screen.AREA_ID == "program" and screen.program == "/MPF/TRAIN1.MPF"
+        assert screen.AREA_ID == "program" and screen.program == "MPF/TRAIN1.MPF"
         await pilot.press("ctrl+end", *"N10 G0 X10 Y==5", "enter", *"N20 M30")
         screen.check_now()
         await settle(pilot)
@@ -135,10 +135,10 @@ async def test_crash_restore_from_the_journal(data_dir: Path) -> None:
         await pilot.pause()
         await pilot.pause()
         assert type(second.screen).__name__ == "ChoiceDialog"
-        await pilot.press("enter")  # "Restore /MPF/DEMO.MPF"
+        await pilot.press("enter")  # "Restore MPF/DEMO.MPF"
         await settle(pilot)
         screen = second.screen
-        assert screen.program == "/MPF/DEMO.MPF"
+        assert screen.program == "MPF/DEMO.MPF"
         assert screen.editor.text.startswith("N5 G0 Z100\n; pocket")
         assert screen.is_modified()
         await pilot.press("f4")  # save: the journal entry is gone
@@ -155,7 +155,7 @@ async def test_binary_file_opens_read_only(data_dir: Path) -> None:
         await pilot.press("alt+n", "f3")  # BLOB.MPF sorts before DEMO.MPF
         await pilot.pause()
         screen = app.screen
-        assert screen.program == "/MPF/BLOB.MPF"
+        assert screen.program == "MPF/BLOB.MPF"
         assert screen.editor.read_only
         assert "not a UTF-8 text file" in str(screen.query_one("#dialog-line").render())
         before = screen.editor.text
@@ -184,15 +184,17 @@ async def test_running_program_is_read_only(data_dir: Path) -> None:
         await pilot.press("f3")  # open HOLD.MPF (cursor stays on it)
         await pilot.pause()
         screen = app.screen
-        assert screen.program == "/MPF/HOLD.MPF"
+        assert screen.program == "MPF/HOLD.MPF"
         assert screen.editor.read_only
         await pilot.press("x")
         assert screen.editor.text.startswith("N10 G0 X5")
-        await pilot.press("alt+q")  # RESET: editable again
+        assert screen.read_only_reason == "program is being executed"
+        await pilot.press("alt+q")  # RESET: no longer executed, but still the selected program
         app.bridge.advance(0.1)
         await pilot.pause()
         await pilot.pause()
-        assert not screen.editor.read_only
+        assert screen.read_only_reason == "program is in use (selected)"
+        assert screen.editor.read_only
 
 
 async def test_search_replace_renumber_undo(data_dir: Path) -> None:
@@ -203,7 +205,7 @@ async def test_search_replace_renumber_undo(data_dir: Path) -> None:
         await pilot.press("alt+n", "down", "f3")  # DEMO, NUM → NUM.MPF is the second row
         await pilot.pause()
         screen = app.screen
-        assert screen.program == "/MPF/NUM.MPF"
+        assert screen.program == "MPF/NUM.MPF"
         await pilot.press("f2", *"g1")  # Search bar, type
         await pilot.press("enter")
         await pilot.pause()
@@ -273,7 +275,7 @@ async def test_large_program_opens_and_scrolls(data_dir: Path) -> None:
         await pilot.press("alt+n", "f3")  # BIG.MPF is the first row
         await pilot.pause()
         screen = app.screen
-        assert screen.program == "/MPF/BIG.MPF"
+        assert screen.program == "MPF/BIG.MPF"
         await pilot.press("ctrl+end", "pageup", "pageup")
         await pilot.pause()
         opened_s = time.perf_counter() - started
