@@ -119,3 +119,20 @@ def test_missing_edge_of_a_known_tool_is_17180() -> None:
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 T1 M6", "N20 D2", "N30 M30"), mill_data())
     assert info.value.number == 17180
+
+
+def test_mcs_plane_and_direction_helper() -> None:
+    from nck.geometry.arc_mcs import mcs_plane_and_direction
+
+    r = run(lines("N10 G0 X10 Y0", "N20 G2 X0 Y-10 I-10 F100", "N30 MIRROR X0",
+                  "N40 G0 X10 Y0", "N50 G2 X0 Y-10 I-10", "N60 ROT X90", "N70 G0 X10 Y0",
+                  "N80 G3 X0 Y10 I-10", "N90 ROT X45", "N100 G0 X10 Y0", "N110 G3 X0 Y10 I-10",
+                  "N120 M30"))
+    assert mcs_plane_and_direction(r.block(20)[0]) == ("G17", True)
+    assert mcs_plane_and_direction(r.block(50)[0]) == ("G17", False)  # mirrored: runs as G3
+    # ROT X90: the WCS X-Y plane lies in the machine X-Z plane (WCS Y -> machine Z); a G3 about
+    # WCS +Z turns about machine -Y: in G18 (Z,X) that is clockwise.
+    assert mcs_plane_and_direction(r.block(80)[0]) == ("G18", True)
+    assert r.block(80)[0].end_mcs == approx({"X": 0.0, "Y": 0.0, "Z": 10.0})
+    assert mcs_plane_and_direction(r.block(110)[0]) is None  # tilted plane
+    assert mcs_plane_and_direction(r.block(10)[0]) is None  # a line
