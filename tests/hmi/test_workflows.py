@@ -239,3 +239,45 @@ def test_cli_bad_machine_is_a_message(capsys) -> None:
     assert main(["--machine", "no_such_machine", "--ephemeral"]) == 2
     err = capsys.readouterr().err
     assert "no_such_machine" in err and "Traceback" not in err
+
+
+async def test_stop_jog_away_and_repos_back(programs: DirectoryPrograms) -> None:
+    """NC STOP, JOG Y away by 1 mm (INC 1000), REPOS view shows the way back; AUTO + NC START ends on the path."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await select_in_auto(pilot, "LONG.MPF")
+        await pilot.press("alt+g")
+        app.bridge.advance(2.0)
+        await pilot.press("alt+h")
+        app.bridge.run_until(lambda s: s.channel.channel_state == "interrupted", max_s=5)
+        await pilot.press("alt+j", "alt+i", "alt+i", "alt+i", "alt+i", "alt+y", "ctrl+right")
+        status = app.bridge.run_until(
+            lambda s: {a.name: a.position_wcs for a in s.axes}["Y"] > 0.999
+            and s.channel.channel_state != "active", max_s=10)
+        assert {a.name: a.position_wcs for a in status.axes}["Y"] == pytest.approx(1.0)
+        await pilot.press("alt+e")
+        await pilot.pause()
+        assert "REPOS" in text_of(app, "#hdr-state")
+        assert "-1.000" in text_of(app, "#jog-info")
+        await pilot.press("alt+u", "alt+g")
+        status = app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=60)
+        positions = {a.name: a.position_wcs for a in status.axes}
+        assert positions["X"] == pytest.approx(100.0) and positions["Y"] == pytest.approx(0.0)
+
+
+async def test_rapid_overlay_reaches_the_kernel(programs: DirectoryPrograms) -> None:
+    """Alt+W switches the rapid overlay on: continuous JOG then moves faster."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+x", "ctrl+right")
+        app.bridge.advance(0.3)
+        app.release_jog()
+        slow = app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=5)
+        slow_x = {a.name: a.position_mcs for a in slow.axes}["X"]
+        await pilot.press("alt+w", "ctrl+right")
+        await pilot.pause()
+        assert "Rapid overlay: ON" in text_of(app, "#jog-info")
+        app.bridge.advance(0.3)
+        app.release_jog()
+        fast = app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=5)
+        assert {a.name: a.position_mcs for a in fast.axes}["X"] - slow_x > 1.5 * slow_x
