@@ -60,6 +60,28 @@ MDA_NAME = "MDA"
 THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
 
 
+SERVICE_FIELDS = (
+    "position_actual_mm", "control_deviation_mm", "contour_deviation_mm",
+    "velocity_setpoint_mm_min", "kv_calculated", "speed_setpoint_pct", "speed_actual_pct",
+    "motor_speed_setpoint_rpm", "motor_speed_actual_rpm", "torque_nm", "current_pct",
+    "motor_temperature_c", "controller_mode", "exact_stop_coarse", "exact_stop_fine", "clamped",
+    "servo_parameter_set",
+)
+
+
+def _service_values(state: Any) -> dict[str, float]:
+    """The service-screen values of a motion system's axis state (numbers only)."""
+    values: dict[str, float] = {}
+    for name in SERVICE_FIELDS:
+        value = getattr(state, name, None)
+        if isinstance(value, (bool, int, float)):
+            values[name] = float(value)
+    for name, value in dict(getattr(state, "extra", {}) or {}).items():
+        if isinstance(value, (int, float)):
+            values[name] = float(value)
+    return values
+
+
 class _NoPrograms:
     """Program source used when none is given: no programs at all."""
 
@@ -316,7 +338,7 @@ class Nck:
             approach = run.search_approach()
             self._path_motion().resume()
             if approach is not None:
-                run.requeue([replace(approach, start_mcs=dict(self._path_motion().positions_mcs()))])
+                run.requeue([replace(approach, start_mcs=self._path_positions(self._path_motion()))])
             self._transition("program_start")
             return Accepted()
         self._resume_motion(run)
@@ -561,7 +583,7 @@ class Nck:
         interp.start(self._selected)
         run = self._new_run("AUTO", self._selected, interp)
         try:
-            result = run.search(command.target, self.motion.positions_mcs())
+            result = run.search(command.target, self._path_positions(self.motion))
         except NcAlarmError:
             interp.reset()
             raise
@@ -661,6 +683,10 @@ class Nck:
             self._test_motion.advance(self._ipo_s)
         for error in self.motion.drain_alarms():
             self._motion_alarm(error)
+        cleared = getattr(self.motion, "drain_cleared_alarms", None)
+        if cleared is not None:
+            for number in cleared():
+                self.alarms.clear_number(number, self._time_s)
         if self._jogging and not self.motion.jog_active():
             self._jogging = False
             self._jog_targets.clear()
@@ -726,6 +752,9 @@ class Nck:
                 self._spindle_state = command.state
             if command.speed_rpm is not None:
                 self._spindle_rpm = float(command.speed_rpm)
+            spindle = getattr(self.motion, "spindle_command", None)
+            if spindle is not None and not self._pc["program_test"]:
+                spindle(command)
 
     def _motion_alarm(self, error: NcAlarmError) -> None:
         self._raise(error)
@@ -762,7 +791,7 @@ class Nck:
         if run is None or self._owner is None or self._parked is not None or self._overlay is not None:
             return
         motion = self._path_motion()
-        position = dict(motion.positions_mcs())
+        position = self._path_positions(motion)
         self._parked = run.park(motion.current_source(), position)
         self._repos_point = position
         motion.abort()
@@ -774,7 +803,7 @@ class Nck:
         if self._parked is None:
             return
         items: list[Motion | Dwell] = []
-        here = dict(motion.positions_mcs())
+        here = self._path_positions(motion)
         point = self._repos_point or {}
         if any(abs(here.get(axis, 0.0) - value) > 1e-6 for axis, value in point.items()):
             first = next((i for i in self._parked if isinstance(i, Motion)), None) or run.last_motion
@@ -783,7 +812,7 @@ class Nck:
             items.append(Motion(
                 kind="G0" if feed is None else "G1", source=source, plane="G17",
                 end_wcs={a: v - self._wcs_offset.get(a, 0.0) for a, v in point.items()},
-                end_mcs=dict(point), start_mcs=here, feed_mm_min=feed, inserted=True,
+                end_mcs=dict(point), start_mcs=here, feed_mm_min=feed, exact_stop=True, inserted=True,
             ))
         items.extend(self._parked)
         run.requeue(items)
@@ -826,6 +855,11 @@ class Nck:
         elif hasattr(interp, "skip_levels"):
             interp.skip_levels = levels  # type: ignore[attr-defined]
 
+    def _path_positions(self, motion: Any) -> dict[str, float]:
+        """Actual MCS positions of the path axes (no spindles) of ``motion``."""
+        positions = motion.positions_mcs()
+        return {axis: float(positions[axis]) for axis in self.machine.path_axes if axis in positions}
+
     def _actual_position(self, axis: str) -> float:
         """Actual MCS position of ``axis`` (for ``$AA_IM`` and friends)."""
         return float(self._path_motion().positions_mcs().get(axis, 0.0))
@@ -863,6 +897,9 @@ class Nck:
         return value
 
     def _apply_overrides(self) -> None:
+        spindle = getattr(self.motion, "set_spindle_override", None)
+        if spindle is not None:
+            spindle(self._overrides["spindle"])
         feed = self._overrides["feed"]
         rapid = feed if self._pc["rapid_override"] else self._overrides["rapid"]
         for motion in (self.motion, self._test_motion):
@@ -959,6 +996,8 @@ class Nck:
             if current is None and blocks:
                 current = blocks[-1]
         axes = []
+        getter = getattr(self.motion, "axis_states", None)
+        drive = getter() if getter is not None else {}
         for axis in self.machine.axes:
             if axis.kind == "spindle":
                 axes.append(AxisStatus(name=axis.name, kind="spindle", position_mcs=0.0,
@@ -966,11 +1005,16 @@ class Nck:
                                        speed_rpm=self._spindle_rpm if self._spindle_state in ("M3", "M4") else 0.0))
                 continue
             mcs = float(positions.get(axis.name, 0.0))
+            state = drive.get(axis.name)
             axes.append(AxisStatus(
                 name=axis.name, kind=axis.kind, position_mcs=mcs,
                 position_wcs=mcs - self._wcs_offset.get(axis.name, 0.0),
                 distance_to_go=dtg.get(axis.name, 0.0),
-                referenced=bool(self.motion.is_referenced(axis.name)), setpoint_mcs=mcs,
+                referenced=bool(self.motion.is_referenced(axis.name)),
+                setpoint_mcs=float(state.position_setpoint_mm) if state is not None else mcs,
+                velocity=float(state.velocity_actual_mm_min) if state is not None else 0.0,
+                following_error=float(state.following_error_mm) if state is not None else 0.0,
+                extra=_service_values(state) if state is not None else {},
             ))
         modal = self._modal_view(run)
         if executing is not None and executing.gcodes:
@@ -979,7 +1023,7 @@ class Nck:
                             feed=executing.feed if executing.feed is not None else modal.feed)
         repos = {}
         if self._repos_point is not None and self._owner is not None:
-            now = self.motion.positions_mcs()
+            now = self._path_positions(self.motion)
             repos = {a: p - now[a] for a, p in self._repos_point.items() if a in now}
         channel = ChannelStatus(
             mode=self._sit.mode, machine_function=self._machine_function,

@@ -385,5 +385,5 @@ class ProgramRun:
         return Motion(
             kind="G0", source=source, plane="G17",
             end_wcs=dict(search.position_wcs), end_mcs=dict(search.position_mcs),
-            inserted=True,
+            exact_stop=True, inserted=True,
         )

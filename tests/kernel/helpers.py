@@ -5,12 +5,15 @@ from __future__ import annotations
 from nck import commands as c
 from nck.kernel import Nck
 from nck.machine import MachineConfig, load_machine
+from nck.motion.instant import instant_motion_factory
 from tests.kernel.fakes import MemoryPrograms, fake_factory
 
 
 def make_nck(programs: dict[str, str] | None = None, referenced: bool = True,
              machine: MachineConfig | None = None, **kwargs) -> Nck:
-    """An Nck with the fake interpreter and an in-memory program store."""
+    """An Nck with the fake interpreter, the instant motion stand-in (exact times and
+    positions) and an in-memory program store."""
+    kwargs.setdefault("motion_factory", instant_motion_factory)
     return Nck(machine=machine or load_machine(), programs=MemoryPrograms(programs),
                referenced=referenced, interpreter_factory=fake_factory, **kwargs)
 

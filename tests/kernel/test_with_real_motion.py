@@ -1,0 +1,96 @@
+"""Key channel scenarios on the default motion system and on the planned one.
+
+Positions are end points (the real planner brakes on ramps, so intermediate
+positions are only compared loosely).
+"""
+
+from __future__ import annotations
+
+import importlib
+
+import pytest
+
+from nck import commands as c
+from nck.interp.sources import MemorySource
+from nck.kernel import Nck
+from tests.kernel.helpers import states, until_state
+
+
+def _factories() -> list:
+    factories = [None]  # the kernel's default
+    try:
+        module = importlib.import_module("nck.motion.system")
+        factories.append(module.planned_motion_factory)
+    except (ImportError, AttributeError):
+        pass
+    return factories
+
+
+@pytest.fixture(params=_factories(), ids=lambda f: "default" if f is None else f.__name__)
+def factory(request):
+    return request.param
+
+
+def make(factory, programs: dict[str, str], referenced: bool = True) -> Nck:
+    return Nck(programs=MemorySource(programs), referenced=referenced, motion_factory=factory)
+
+
+def test_stop_jog_away_and_repos_reach_the_end_point(factory) -> None:
+    nck = make(factory, {"P.MPF": "N10 G1 X100 F1000\nN20 M30"})
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] >= 40.0, 10.0)
+    nck.submit(c.CycleStop())
+    nck.tick(0.5)
+    stop_x = nck.positions_mcs()["X"]
+    assert 40.0 <= stop_x < 45.0
+    assert states(nck) == ("AUTO", "interrupted", "stopped")
+    nck.submit(c.SelectMode("JOG"))
+    nck.submit(c.Jog("X", 1))
+    nck.tick(0.5)
+    nck.submit(c.Jog("X", 0))
+    assert until_state(nck, "interrupted", "interrupted", 5.0)
+    assert nck.positions_mcs()["X"] > stop_x + 5.0
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.CycleStart())
+    trail: list[float] = []
+    assert nck.run_until(lambda k: trail.append(k.positions_mcs()["X"]) or k.situation.channel == "reset", 30.0)
+    assert min(trail) == pytest.approx(stop_x, abs=0.01)
+    assert nck.positions_mcs()["X"] == pytest.approx(100.0, abs=0.01)
+    assert nck.internal_errors == []
+
+
+def test_single_block_and_program_end(factory) -> None:
+    nck = make(factory, {"P.MPF": "N10 G1 X10 F3000\nN20 R1=1\nN30 G0 Y20\nN40 M30"})
+    nck.submit(c.SetProgramControl("single_block", "SBL1"))
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "interrupted", "stopped", 10.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(10.0, abs=0.01)
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "interrupted", "stopped", 10.0)
+    assert nck.positions_mcs()["Y"] == pytest.approx(20.0, abs=0.01)
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "reset", "aborted", 10.0)
+    assert nck.status().channel.parts_total == 1
+    assert nck.internal_errors == []
+
+
+def test_reference_all_axes_then_start(factory) -> None:
+    nck = make(factory, {"P.MPF": "N10 G1 X1 F1000\nN20 M30"}, referenced=False)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    assert nck.submit(c.CycleStart()).alarm == 10203
+    nck.submit(c.SelectMode("JOG"))
+    nck.submit(c.SelectMachineFunction("REF"))
+    for axis in ("Z", "X", "Y"):
+        nck.submit(c.Jog(axis, 1))
+        assert nck.run_until(lambda k, a=axis: next(s for s in k.status().axes if s.name == a).referenced, 120.0)
+        nck.submit(c.Jog(axis, 0))
+        assert nck.run_until(lambda k: k.situation.channel == "reset", 30.0)
+    nck.submit(c.SelectMode("AUTO"))
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert until_state(nck, "reset", "aborted", 10.0)
+    assert nck.internal_errors == []
