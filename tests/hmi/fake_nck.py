@@ -65,6 +65,7 @@ class FakeNck:
         self.runtime_s = 0.0
         self.parts = 0
         self.message = ""
+        self.repos_offsets: dict[str, float] = {}
         self.submitted: list[object] = []
 
     # -- facade -------------------------------------------------------------------------
@@ -90,6 +91,7 @@ class FakeNck:
                             spindle_state=self.spindle_state),
             program_control=dict(self.control), overrides=dict(self.overrides),
             program_runtime_s=self.runtime_s, part_count=self.parts, message=self.message,
+            repos_offsets=dict(self.repos_offsets),
         )
         return NckStatus(seq=self.seq, time_s=self.time_s, channel=channel, axes=axes,
                          alarms=tuple(self.alarms), access_level=7 - self.keyswitch,

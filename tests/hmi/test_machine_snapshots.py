@@ -142,3 +142,20 @@ def test_area_menu(snap_compare) -> None:
 def test_small_terminal_120x36(snap_compare) -> None:
     """At 120×36 the frame still fits: detail is dropped, nothing breaks."""
     assert snap_compare(app_on(auto_fake()), terminal_size=(120, 36))
+
+
+def test_jog_repos_with_way_back(snap_compare) -> None:
+    """JOG REPOS after an interruption: the way back to the interruption point per axis."""
+    fake = referenced_fake()
+    fake.repos_offsets = {"X": -12.5, "Y": 0.0, "Z": 3.25}
+    fake.message = "Roughing pass 2"
+    assert snap_compare(app_on(fake), terminal_size=SIZE, press=["alt+e"])
+
+
+def test_placeholder_area(snap_compare) -> None:
+    """An area without its module yet: the frame works, the content says so."""
+    from hmi.app import Area, area_screen_factory
+
+    app = app_on(FakeNck())
+    app._modes["parameter"] = area_screen_factory(Area("no_module_zz", "PARAMETER", "Parameter"))
+    assert snap_compare(app, terminal_size=SIZE, press=["alt+o"])
