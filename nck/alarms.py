@@ -174,6 +174,13 @@ class AlarmServer:
         """Log events newer than ``seq`` (those still held in the bounded log)."""
         return tuple(event for event in self._log if event.seq > seq)
 
+    def load_history(self, entries: list[AlarmEntry]) -> None:
+        """Put retained entries (older than anything raised since power on) in front."""
+        kept = list(self._history)
+        self._history.clear()
+        for entry in list(entries) + kept:
+            self._history.append(entry)
+
     def history(self) -> tuple[AlarmEntry, ...]:
         """The alarm log as the diagnosis screen shows it: each alarm with come/go times."""
         return tuple(self._history)

@@ -236,6 +236,14 @@ class Nck:
         """The alarm log with come/go times, oldest first (bounded)."""
         return self.alarms.history()
 
+    def load_alarm_history(self, entries: list[AlarmEntry]) -> None:
+        """Put retained alarm-log entries (from before this power on) in front of the log."""
+        self.alarms.load_history(entries)
+
+    def raise_alarm(self, error: NcAlarmError) -> None:
+        """Raise an alarm from outside the channel (power-on checks, data loading)."""
+        self._raise(error)
+
     def positions_mcs(self) -> dict[str, float]:
         """Displayed machine positions (program test: the simulated ones)."""
         return dict(self._display_motion().positions_mcs())

@@ -128,3 +128,17 @@ def test_internal_error_becomes_alarm_1_and_is_logged() -> None:
     assert states(nck)[1:] == ("reset", "aborted")
     result = nck.submit(c.CycleStart())
     assert isinstance(result, c.Rejected) and result.alarm == 10200
+
+
+def test_retained_history_and_external_alarms() -> None:
+    from nck.errors import NcAlarmError
+    from nck.status import AlarmEntry
+
+    nck = make_nck()
+    old = AlarmEntry(seq=0, number=10203, text="old", category="channel", clear="cancel",
+                     came_s=1.0, went_s=2.0)
+    nck.raise_alarm(NcAlarmError(3000))
+    nck.load_alarm_history([old])
+    history = nck.alarm_history()
+    assert [e.number for e in history] == [10203, 3000]
+    assert 3000 in alarm_numbers(nck)
