@@ -28,58 +28,33 @@ from dataclasses import replace
 from typing import Any, Callable
 
 from nck import commands as cmd
-from nck.access import AccessControl, AccessError, AccessState
+from nck.access import AccessControl
 from nck.alarms import AlarmServer
 from nck.canon import AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand, ToolSelect, UserAlarm
 from nck.channel import (
-    ABORTED, ACTIVE, INTERRUPTED, MACHINE_FUNCTIONS, PROG_INTERRUPTED, RESET, RUNNING, STOPPED,
-    ChannelSituation, mode_change_allowed, next_state, situation_after_mode_change,
+    ABORTED, ACTIVE, INTERRUPTED, RESET, RUNNING, ChannelSituation, mode_change_allowed,
+    next_state, situation_after_mode_change,
 )
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
+from nck.kernel_manual import ManualControl
+from nck.kernel_settings import ControlSettings
+from nck.kernel_status import StatusView
 from nck.machine import MachineConfig, load_machine
 from nck.motion.instant import InstantMotion, instant_motion_factory
 from nck.ncdata import NcData
-from nck.program_control import (
-    SEARCH_ACTIONS_DONE, SEARCH_FOUND, STOPPED as RUN_STOPPED, ProgramRun, RunEvent, RunOptions,
-)
-from nck.status import AlarmEntry, AlarmEvent, AxisStatus, ChannelStatus, ModalView, NckStatus
+from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, ProgramRun, RunEvent, RunOptions
+from nck.status import AlarmEntry, AlarmEvent, NckStatus
 
 DEFAULT_IPO_S = 0.004
-DEFAULT_JOG_MM_MIN = 2000.0  # MD32020 JOG_VELO
-DEFAULT_JOG_RAPID_MM_MIN = 10000.0  # MD32010 JOG_VELO_RAPID
-DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
 ALARM_INTERNAL = 1
 ALARM_EMERGENCY_STOP = 3000
 ALARM_START_WITH_ALARM = 10200
 ALARM_START_UNREFERENCED = 10203
 ALARM_CONTINUE_WITH_START = 10208
 MDA_NAME = "MDA"
-THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
-
-
-SERVICE_FIELDS = (
-    "position_actual_mm", "control_deviation_mm", "contour_deviation_mm",
-    "velocity_setpoint_mm_min", "kv_calculated", "speed_setpoint_pct", "speed_actual_pct",
-    "motor_speed_setpoint_rpm", "motor_speed_actual_rpm", "torque_nm", "current_pct",
-    "motor_temperature_c", "controller_mode", "exact_stop_coarse", "exact_stop_fine", "clamped",
-    "servo_parameter_set",
-)
-
-
-def _service_values(state: Any) -> dict[str, float]:
-    """The service-screen values of a motion system's axis state (numbers only)."""
-    values: dict[str, float] = {}
-    for name in SERVICE_FIELDS:
-        value = getattr(state, name, None)
-        if isinstance(value, (bool, int, float)):
-            values[name] = float(value)
-    for name, value in dict(getattr(state, "extra", {}) or {}).items():
-        if isinstance(value, (int, float)):
-            values[name] = float(value)
-    return values
 
 
 class _NoPrograms:
@@ -97,7 +72,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data)
 
 
-class Nck:
+class Nck(ManualControl, ControlSettings, StatusView):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -174,11 +149,11 @@ class Nck:
     # ------------------------------------------------------------------ API
     def submit(self, command: object) -> SubmitResult:
         """Carry out one operator command; never raises."""
-        handler = self._HANDLERS.get(type(command))
-        if handler is None:
+        name = self._HANDLERS.get(type(command))
+        if name is None:
             return Rejected(f"unknown command {type(command).__name__}")
         try:
-            return handler(self, command)
+            return getattr(self, name)(command)
         except NcAlarmError as error:
             self._raise(error)
             return Rejected(self.alarms.definition(error.number).format(error.params), alarm=error.number)
@@ -274,30 +249,6 @@ class Nck:
             self._machine_function = None
         elif mode == "MDA" and self._machine_function == "INC":
             self._machine_function = None
-        return Accepted()
-
-    def _select_machine_function(self, command: cmd.SelectMachineFunction) -> SubmitResult:
-        function = command.function.upper() if command.function else None
-        if function is not None and function not in MACHINE_FUNCTIONS:
-            return Rejected(f"unknown machine function {command.function!r}")
-        if self._sit.mode == "AUTO" and function is not None:
-            return Rejected("Machine functions are available in JOG and MDA only")
-        if function == "INC" and self._sit.mode != "JOG":
-            return Rejected("INC is available in JOG only")
-        if self._sit.channel == ACTIVE:
-            return Rejected("Channel active: stop the motion first")
-        self._machine_function = function
-        return Accepted()
-
-    def _select_increment(self, command: cmd.SelectIncrement) -> SubmitResult:
-        value = command.increment
-        if value is not None and value not in (1, 10, 100, 1000, 10000):
-            return Rejected("Increment must be 1, 10, 100, 1000, 10000 or VAR")
-        if self._sit.mode != "JOG":
-            return Rejected("INC is available in JOG only")
-        self._increment = value
-        if self._machine_function not in ("REF", "REPOS"):
-            self._machine_function = "INC"
         return Accepted()
 
     def _cycle_start(self, command: cmd.CycleStart) -> SubmitResult:
@@ -485,99 +436,6 @@ class Nck:
         self._mda_text = command.text
         return Accepted()
 
-    def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
-        name, value = command.name, command.value
-        if name == "single_block":
-            text = None if value in (None, False, "") else str(value).upper()
-            if text == "SBL3":
-                text = "SBL2"
-            if text not in (None, "SBL1", "SBL2"):
-                return Rejected("single block is None, SBL1 or SBL2")
-            self._pc[name] = text
-        elif name in ("dry_run", "m01", "rapid_override"):
-            self._pc[name] = bool(value)
-            self._apply_overrides()
-        elif name == "program_test":
-            if self._sit.channel != RESET:
-                return Rejected("Program test can be switched only in channel reset")
-            self._pc[name] = bool(value)
-            self._test_motion = (
-                InstantMotion(self.machine, self.motion.positions_mcs()) if value else None
-            )
-        elif name == "skip_levels":
-            try:
-                levels = frozenset(int(v) for v in (value or ()))  # type: ignore[union-attr]
-            except (TypeError, ValueError):
-                return Rejected("skip levels are numbers 0 … 9")
-            if any(level < 0 or level > 9 for level in levels):
-                return Rejected("skip levels are numbers 0 … 9")
-            if self._sit.channel == ACTIVE:
-                return Rejected("Skip levels can be changed only in STOP or RESET")
-            self._pc[name] = levels
-            for interp in self._interpreters.values():
-                self._apply_skip_levels(interp)
-        else:
-            return Rejected(f"unknown program control {name!r}")
-        return Accepted()
-
-    def _set_override(self, command: cmd.SetOverride) -> SubmitResult:
-        limits = {"feed": (0.0, 120.0), "rapid": (0.0, 100.0), "spindle": (50.0, 120.0)}
-        if command.which not in limits:
-            return Rejected(f"unknown override {command.which!r}")
-        low, high = limits[command.which]
-        percent = float(command.percent)
-        if not low <= percent <= high:
-            return Rejected(f"{command.which} override must be {low:g} … {high:g} %")
-        self._overrides[command.which] = percent
-        self._apply_overrides()
-        return Accepted()
-
-    def _cancel_alarms(self, command: cmd.CancelAlarms) -> SubmitResult:
-        self.alarms.clear("cancel", self._time_s)
-        return Accepted()
-
-    def _jog(self, command: cmd.Jog) -> SubmitResult:
-        axis = command.axis.upper()
-        if axis not in self.machine.path_axes:
-            return Rejected(f"no axis {command.axis}")
-        function = self._machine_function
-        if command.direction == 0:
-            if self._jogging and function is None:
-                self.motion.jog_continuous(axis, 0, 0.0)
-            return Accepted()
-        if self._estop_active:
-            return Rejected("Emergency stop active")
-        if self._sit.mode == "AUTO" or (self._sit.mode == "MDA" and function not in ("REF", "REPOS")):
-            return Rejected("Axes can be traversed by hand only in JOG")
-        if self._sit.channel == ACTIVE and not self._jogging:
-            return Rejected("Channel active")
-        direction = 1 if command.direction > 0 else -1
-        self._park()
-        position = self.motion.positions_mcs()[axis]
-        if function == "REF":
-            plus = int(self.machine.md_value("MD34010", axis, 0) or 0) == 0
-            if (direction > 0) != plus:
-                return Accepted()  # wrong direction key: nothing happens
-            self.motion.start_reference(axis)
-        elif function == "REPOS":
-            if self._repos_point is None or axis not in self._repos_point:
-                return Rejected("No REPOS point")
-            distance = self._repos_point[axis] - position
-            if abs(distance) < 1e-9 or (distance > 0) != (direction > 0):
-                return Accepted()
-            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
-        elif function == "INC":
-            distance = direction * self._increment_mm()
-            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
-            self._jog_targets[axis] = self._jog_targets.get(axis, position) + distance
-        else:
-            self.motion.jog_continuous(axis, direction, self._jog_velocity(axis, command.rapid))
-        self._jog_rest.clear()
-        if not self._jogging:
-            self._jogging = True
-            self._transition("jog_start")
-        return Accepted()
-
     def _start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
         if self._sit.mode != "AUTO":
             return Rejected("Block search is possible in AUTOMATIC only")
@@ -607,76 +465,25 @@ class Nck:
         self._transition("search_found")
         return Accepted()
 
-    def _write_data(self, command: cmd.WriteData) -> SubmitResult:
-        name = command.name.strip().upper()
-        try:
-            if name.startswith("R") and name[1:].isdigit():
-                index = int(name[1:])
-                if index >= len(self.data.r):
-                    return Rejected(f"R parameter {index} does not exist")
-                self.data.r[index] = float(command.value)  # type: ignore[arg-type]
-                return Accepted()
-            if name.startswith("SD") and name[2:].isdigit():
-                self.data.setting_data[name] = command.value
-                return Accepted()
-            parts = {"$AC_TOTAL_PARTS": "total", "$AC_ACTUAL_PARTS": "actual",
-                     "$AC_SPECIAL_PARTS": "special", "$AC_REQUIRED_PARTS": "required"}
-            if name in parts:
-                value = int(command.value)  # type: ignore[call-overload]
-                if not 0 <= value <= 999_999_999:
-                    return Rejected("part counters range over 0 … 999999999")
-                setattr(self.counters, parts[name], value)
-                return Accepted()
-        except (TypeError, ValueError):
-            return Rejected(f"bad value for {command.name}")
-        return Rejected(f"{command.name} cannot be written here")
-
-    @property
-    def access(self) -> AccessControl:
-        """Keyswitch and passwords (protection levels 0 … 7)."""
-        if self._access is None:
-            self._access = AccessControl(AccessState(keyswitch_position=self._keyswitch))
-        return self._access
-
-    def _set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
-        if command.position not in (0, 1, 2, 3):
-            return Rejected("keyswitch positions are 0 … 3")
-        self._keyswitch = command.position
-        if self._access is not None:
-            self._access.set_keyswitch(command.position)
-        return Accepted()
-
-    def _enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
-        try:
-            self.access.enter_password(command.password)
-        except AccessError as error:
-            return Rejected(str(error) or "Password not accepted")
-        return Accepted()
-
-    def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:
-        if self._access is not None:
-            self._access.delete_password()
-        return Accepted()
-
-    _HANDLERS: dict[type, Callable[["Nck", Any], SubmitResult]] = {
-        cmd.SelectMode: _select_mode,
-        cmd.SelectMachineFunction: _select_machine_function,
-        cmd.SelectIncrement: _select_increment,
-        cmd.CycleStart: _cycle_start,
-        cmd.CycleStop: _cycle_stop,
-        cmd.Reset: _reset,
-        cmd.EmergencyStop: _emergency_stop,
-        cmd.SelectProgram: _select_program,
-        cmd.SetMdaProgram: _set_mda,
-        cmd.SetProgramControl: _set_program_control,
-        cmd.SetOverride: _set_override,
-        cmd.CancelAlarms: _cancel_alarms,
-        cmd.Jog: _jog,
-        cmd.StartBlockSearch: _start_block_search,
-        cmd.WriteData: _write_data,
-        cmd.SetKeyswitch: _set_keyswitch,
-        cmd.EnterPassword: _enter_password,
-        cmd.DeletePassword: _delete_password,
+    _HANDLERS: dict[type, str] = {
+        cmd.SelectMode: "_select_mode",
+        cmd.SelectMachineFunction: "_select_machine_function",
+        cmd.SelectIncrement: "_select_increment",
+        cmd.CycleStart: "_cycle_start",
+        cmd.CycleStop: "_cycle_stop",
+        cmd.Reset: "_reset",
+        cmd.EmergencyStop: "_emergency_stop",
+        cmd.SelectProgram: "_select_program",
+        cmd.SetMdaProgram: "_set_mda",
+        cmd.SetProgramControl: "_set_program_control",
+        cmd.SetOverride: "_set_override",
+        cmd.CancelAlarms: "_cancel_alarms",
+        cmd.Jog: "_jog",
+        cmd.StartBlockSearch: "_start_block_search",
+        cmd.WriteData: "_write_data",
+        cmd.SetKeyswitch: "_set_keyswitch",
+        cmd.EnterPassword: "_enter_password",
+        cmd.DeletePassword: "_delete_password",
     }
 
     # ------------------------------------------------------------- cycle
@@ -826,27 +633,6 @@ class Nck:
         run.requeue(items)
         self._parked = None
 
-    def _stop_jog(self, keep_rest: bool) -> None:
-        positions = self.motion.positions_mcs()
-        rest = {axis: target - positions[axis] for axis, target in self._jog_targets.items()}
-        for axis in self.machine.path_axes:
-            self.motion.jog_continuous(axis, 0, 0.0)
-        self._jogging = False
-        self._jog_targets.clear()
-        self._jog_rest = {a: d for a, d in rest.items() if abs(d) > 1e-9} if keep_rest else {}
-
-    def _continue_jog(self) -> SubmitResult:
-        if self._sit.channel != INTERRUPTED or self._sit.program != ABORTED or not self._jog_rest:
-            return Rejected("NC START in JOG only continues a stopped increment")
-        positions = self.motion.positions_mcs()
-        for axis, distance in self._jog_rest.items():
-            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, False))
-            self._jog_targets[axis] = positions[axis] + distance
-        self._jog_rest.clear()
-        self._jogging = True
-        self._transition("jog_start")
-        return Accepted()
-
     def _interpreter(self, kind: str) -> Interpreter:
         interp = self._interpreters.get(kind)
         if interp is None:
@@ -854,14 +640,6 @@ class Nck:
             self._apply_skip_levels(interp)
             self._interpreters[kind] = interp
         return interp
-
-    def _apply_skip_levels(self, interp: Interpreter) -> None:
-        levels = frozenset(self._pc["skip_levels"])  # type: ignore[arg-type]
-        setter = getattr(interp, "set_skip_levels", None)
-        if setter is not None:
-            setter(levels)
-        elif hasattr(interp, "skip_levels"):
-            interp.skip_levels = levels  # type: ignore[attr-defined]
 
     def _path_positions(self, motion: Any) -> dict[str, float]:
         """Actual MCS positions of the path axes (no spindles) of ``motion``."""
@@ -881,48 +659,6 @@ class Nck:
 
     def _run_options(self) -> RunOptions:
         return RunOptions(single_block=self._pc["single_block"], m01=bool(self._pc["m01"]))  # type: ignore[arg-type]
-
-    def _adjust_motion(self, motion: Motion) -> Motion:
-        """Dry run feed (SD42100/SD42101) and the WCS offset bookkeeping."""
-        for axis, mcs in motion.end_mcs.items():
-            if axis in motion.end_wcs:
-                self._wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
-        if not self._pc["dry_run"] or motion.kind == "G0" or motion.feed_mm_min is None:
-            return motion
-        dry = float(self._setting("SD42100", DEFAULT_DRY_RUN_MM_MIN))
-        mode = int(self._setting("SD42101", 0))
-        if mode >= 10 and motion.kind in THREAD_KINDS:
-            return motion
-        base = mode % 10
-        programmed = motion.feed_mm_min
-        feed = {0: max(programmed, dry), 1: min(programmed, dry)}.get(base, dry)
-        return replace(motion, feed_mm_min=feed)
-
-    def _setting(self, name: str, default: object) -> Any:
-        value = self.data.setting_data.get(name)
-        if value is None:
-            return default
-        return value
-
-    def _apply_overrides(self) -> None:
-        spindle = getattr(self.motion, "set_spindle_override", None)
-        if spindle is not None:
-            spindle(self._overrides["spindle"])
-        feed = self._overrides["feed"]
-        rapid = feed if self._pc["rapid_override"] else self._overrides["rapid"]
-        for motion in (self.motion, self._test_motion):
-            if motion is not None:
-                motion.set_overrides(feed, rapid)
-
-    def _jog_velocity(self, axis: str, rapid: bool) -> float:
-        if rapid:
-            return float(self.machine.md_value("MD32010", axis, DEFAULT_JOG_RAPID_MM_MIN) or DEFAULT_JOG_RAPID_MM_MIN)
-        return float(self.machine.md_value("MD32020", axis, DEFAULT_JOG_MM_MIN) or DEFAULT_JOG_MM_MIN)
-
-    def _increment_mm(self) -> float:
-        if self._increment is None:
-            return float(self._setting("SD41010", 0.001))
-        return self._increment * 0.001
 
     def _unreferenced_axes(self) -> list[str]:
         if int(self.machine.md_value("MD20700", None, 1) or 0) == 0:
@@ -976,96 +712,3 @@ class Nck:
         self._sit = ChannelSituation(self._sit.mode, RESET, ABORTED)
 
     # ------------------------------------------------------------- status
-    def _access_level(self) -> int:
-        if self._access is not None:
-            return self._access.level
-        return 7 - self._keyswitch
-
-    def _build_status(self) -> NckStatus:
-        shown = self._display_motion()
-        positions = shown.positions_mcs()
-        run = self._overlay or self._run
-        current_source = self._path_motion().current_source() if run is not None else None
-        current = None
-        executing: Motion | None = None
-        blocks: tuple = ()
-        dtg: dict[str, float] = {}
-        if run is not None:
-            blocks = run.display_blocks()
-            if current_source is not None:
-                for view in reversed(blocks):
-                    if view.file == current_source.file and view.line == current_source.line:
-                        current = view
-                        break
-                segment = run.segments.get((current_source.file, current_source.line))
-                if segment is not None:
-                    dtg = {a: float(v) - positions.get(a, 0.0) for a, v in segment.end_mcs.items()}
-                    executing = segment
-            if current is None and blocks:
-                current = blocks[-1]
-        axes = []
-        getter = getattr(self.motion, "axis_states", None)
-        drive = getter() if getter is not None else {}
-        for axis in self.machine.axes:
-            if axis.kind == "spindle":
-                axes.append(AxisStatus(name=axis.name, kind="spindle", position_mcs=0.0,
-                                       position_wcs=0.0, referenced=True,
-                                       speed_rpm=self._spindle_rpm if self._spindle_state in ("M3", "M4") else 0.0))
-                continue
-            mcs = float(positions.get(axis.name, 0.0))
-            state = drive.get(axis.name)
-            axes.append(AxisStatus(
-                name=axis.name, kind=axis.kind, position_mcs=mcs,
-                position_wcs=mcs - self._wcs_offset.get(axis.name, 0.0),
-                distance_to_go=dtg.get(axis.name, 0.0),
-                referenced=bool(self.motion.is_referenced(axis.name)),
-                setpoint_mcs=float(state.position_setpoint_mm) if state is not None else mcs,
-                velocity=float(state.velocity_actual_mm_min) if state is not None else 0.0,
-                following_error=float(state.following_error_mm) if state is not None else 0.0,
-                extra=_service_values(state) if state is not None else {},
-            ))
-        modal = self._modal_view(run)
-        if executing is not None and executing.gcodes:
-            # The main run lags the interpreter: show the G codes of the executing block.
-            modal = replace(modal, gcodes={**dict(modal.gcodes), **dict(executing.gcodes)},
-                            feed=executing.feed if executing.feed is not None else modal.feed)
-        repos = {}
-        if self._repos_point is not None and self._owner is not None:
-            now = self._path_positions(self.motion)
-            repos = {a: p - now[a] for a, p in self._repos_point.items() if a in now}
-        channel = ChannelStatus(
-            mode=self._sit.mode, machine_function=self._machine_function,
-            increment=self._increment, channel_state=self._sit.channel,
-            program_state=self._sit.program, selected_program=self._selected,
-            current_block=current, blocks=blocks, modal=modal,
-            program_control=dict(self._pc), overrides=dict(self._overrides),
-            path_feed_mm_min=(executing.feed_mm_min or 0.0) if executing is not None else 0.0, program_runtime_s=self.runtime.act_s,
-            part_count=self.counters.actual, message=self.alarms.message,
-            stop_reason=run.stop_reason if run is not None and self._sit.channel == INTERRUPTED else "",
-            interrupted_program=self._owner, mda_text=self._mda_text,
-            program_runtime_last_s=self.runtime.old_s, program_runtime_count=self.runtime.old_count,
-            parts_total=self.counters.total, parts_required=self.counters.required,
-            parts_special=self.counters.special, repos_offsets=repos,
-        )
-        return NckStatus(
-            seq=0, time_s=0.0, channel=channel, axes=tuple(axes), alarms=self.alarms.active,
-            access_level=self._access_level(), machine_name=self.machine.name,
-            emergency_stop=self._estop_active, mode_group_ready=not self._estop_active,
-            alarm_log_seq=self.alarms.last_seq, internal_errors=len(self.internal_errors),
-        )
-
-    def _modal_view(self, run: ProgramRun | None) -> ModalView:
-        base = ModalView()
-        interp = run.interp if run is not None else self._interpreters.get("AUTO")
-        getter = getattr(interp, "modal_view", None) if interp is not None else None
-        if getter is not None:
-            try:
-                base = getter()
-            except Exception:  # noqa: BLE001 - display only
-                base = ModalView()
-        return replace(
-            base, tool=base.tool or self._tool, edge=base.edge or self._edge,
-            spindle_speed_rpm=base.spindle_speed_rpm or self._spindle_rpm,
-            spindle_state=self._spindle_state if base.spindle_state == "M5" else base.spindle_state,
-            aux={**dict(base.aux), **self._aux},
-        )

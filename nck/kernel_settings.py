@@ -1,0 +1,174 @@
+"""Switches and data for :class:`nck.kernel.Nck`: program control, overrides,
+written data, access (a mixin).
+
+Program control: single block SBL1/SBL2, M01, dry run (SD42100 feed with the
+SD42101 mode applied to each segment as it is pushed), program test (switched
+only in channel reset; the program runs on a simulated copy of the axes),
+rapid override (ROV) and skip levels (changed only in STOP or RESET).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Any
+
+from nck import commands as cmd
+from nck.access import AccessControl, AccessError, AccessState
+from nck.canon import Motion
+from nck.channel import ACTIVE, RESET
+from nck.commands import Accepted, Rejected, SubmitResult
+from nck.interp.api import Interpreter
+from nck.motion.instant import InstantMotion
+
+DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
+THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
+
+
+class ControlSettings:
+    """Program control, overrides, data writes, keyswitch and passwords; mixed into ``Nck``."""
+
+    machine: Any
+    motion: Any
+    data: Any
+
+    def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
+        name, value = command.name, command.value
+        if name == "single_block":
+            text = None if value in (None, False, "") else str(value).upper()
+            if text == "SBL3":
+                text = "SBL2"
+            if text not in (None, "SBL1", "SBL2"):
+                return Rejected("single block is None, SBL1 or SBL2")
+            self._pc[name] = text
+        elif name in ("dry_run", "m01", "rapid_override"):
+            self._pc[name] = bool(value)
+            self._apply_overrides()
+        elif name == "program_test":
+            if self._sit.channel != RESET:
+                return Rejected("Program test can be switched only in channel reset")
+            self._pc[name] = bool(value)
+            self._test_motion = (
+                InstantMotion(self.machine, self.motion.positions_mcs()) if value else None
+            )
+        elif name == "skip_levels":
+            try:
+                levels = frozenset(int(v) for v in (value or ()))  # type: ignore[union-attr]
+            except (TypeError, ValueError):
+                return Rejected("skip levels are numbers 0 … 9")
+            if any(level < 0 or level > 9 for level in levels):
+                return Rejected("skip levels are numbers 0 … 9")
+            if self._sit.channel == ACTIVE:
+                return Rejected("Skip levels can be changed only in STOP or RESET")
+            self._pc[name] = levels
+            for interp in self._interpreters.values():
+                self._apply_skip_levels(interp)
+        else:
+            return Rejected(f"unknown program control {name!r}")
+        return Accepted()
+
+    def _set_override(self, command: cmd.SetOverride) -> SubmitResult:
+        limits = {"feed": (0.0, 120.0), "rapid": (0.0, 100.0), "spindle": (50.0, 120.0)}
+        if command.which not in limits:
+            return Rejected(f"unknown override {command.which!r}")
+        low, high = limits[command.which]
+        percent = float(command.percent)
+        if not low <= percent <= high:
+            return Rejected(f"{command.which} override must be {low:g} … {high:g} %")
+        self._overrides[command.which] = percent
+        self._apply_overrides()
+        return Accepted()
+
+    def _cancel_alarms(self, command: cmd.CancelAlarms) -> SubmitResult:
+        self.alarms.clear("cancel", self._time_s)
+        return Accepted()
+
+    def _write_data(self, command: cmd.WriteData) -> SubmitResult:
+        name = command.name.strip().upper()
+        try:
+            if name.startswith("R") and name[1:].isdigit():
+                index = int(name[1:])
+                if index >= len(self.data.r):
+                    return Rejected(f"R parameter {index} does not exist")
+                self.data.r[index] = float(command.value)  # type: ignore[arg-type]
+                return Accepted()
+            if name.startswith("SD") and name[2:].isdigit():
+                self.data.setting_data[name] = command.value
+                return Accepted()
+            parts = {"$AC_TOTAL_PARTS": "total", "$AC_ACTUAL_PARTS": "actual",
+                     "$AC_SPECIAL_PARTS": "special", "$AC_REQUIRED_PARTS": "required"}
+            if name in parts:
+                value = int(command.value)  # type: ignore[call-overload]
+                if not 0 <= value <= 999_999_999:
+                    return Rejected("part counters range over 0 … 999999999")
+                setattr(self.counters, parts[name], value)
+                return Accepted()
+        except (TypeError, ValueError):
+            return Rejected(f"bad value for {command.name}")
+        return Rejected(f"{command.name} cannot be written here")
+
+    @property
+    def access(self) -> AccessControl:
+        """Keyswitch and passwords (protection levels 0 … 7)."""
+        if self._access is None:
+            self._access = AccessControl(AccessState(keyswitch_position=self._keyswitch))
+        return self._access
+
+    def _set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
+        if command.position not in (0, 1, 2, 3):
+            return Rejected("keyswitch positions are 0 … 3")
+        self._keyswitch = command.position
+        if self._access is not None:
+            self._access.set_keyswitch(command.position)
+        return Accepted()
+
+    def _enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
+        try:
+            self.access.enter_password(command.password)
+        except AccessError as error:
+            return Rejected(str(error) or "Password not accepted")
+        return Accepted()
+
+    def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:
+        if self._access is not None:
+            self._access.delete_password()
+        return Accepted()
+
+    def _apply_skip_levels(self, interp: Interpreter) -> None:
+        levels = frozenset(self._pc["skip_levels"])  # type: ignore[arg-type]
+        setter = getattr(interp, "set_skip_levels", None)
+        if setter is not None:
+            setter(levels)
+        elif hasattr(interp, "skip_levels"):
+            interp.skip_levels = levels  # type: ignore[attr-defined]
+
+    def _adjust_motion(self, motion: Motion) -> Motion:
+        """Dry run feed (SD42100/SD42101) and the WCS offset bookkeeping."""
+        for axis, mcs in motion.end_mcs.items():
+            if axis in motion.end_wcs:
+                self._wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
+        if not self._pc["dry_run"] or motion.kind == "G0" or motion.feed_mm_min is None:
+            return motion
+        dry = float(self._setting("SD42100", DEFAULT_DRY_RUN_MM_MIN))
+        mode = int(self._setting("SD42101", 0))
+        if mode >= 10 and motion.kind in THREAD_KINDS:
+            return motion
+        base = mode % 10
+        programmed = motion.feed_mm_min
+        feed = {0: max(programmed, dry), 1: min(programmed, dry)}.get(base, dry)
+        return replace(motion, feed_mm_min=feed)
+
+    def _setting(self, name: str, default: object) -> Any:
+        value = self.data.setting_data.get(name)
+        if value is None:
+            return default
+        return value
+
+    def _apply_overrides(self) -> None:
+        spindle = getattr(self.motion, "set_spindle_override", None)
+        if spindle is not None:
+            spindle(self._overrides["spindle"])
+        feed = self._overrides["feed"]
+        rapid = feed if self._pc["rapid_override"] else self._overrides["rapid"]
+        for motion in (self.motion, self._test_motion):
+            if motion is not None:
+                motion.set_overrides(feed, rapid)

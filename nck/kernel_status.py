@@ -1,0 +1,141 @@
+"""The status snapshot of :class:`nck.kernel.Nck` (a mixin).
+
+Positions come from the displayed motion system (the simulated one under
+program test); the block display follows the block the main run executes
+(``current_source`` of the motion system), not the interpreter's look-ahead;
+service values of the drives come from ``axis_states()`` when the motion
+system offers it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Any
+
+from nck.canon import Motion
+from nck.channel import INTERRUPTED
+from nck.program_control import ProgramRun
+from nck.status import AxisStatus, ChannelStatus, ModalView, NckStatus
+
+SERVICE_FIELDS = (
+    "position_actual_mm", "control_deviation_mm", "contour_deviation_mm",
+    "velocity_setpoint_mm_min", "kv_calculated", "speed_setpoint_pct", "speed_actual_pct",
+    "motor_speed_setpoint_rpm", "motor_speed_actual_rpm", "torque_nm", "current_pct",
+    "motor_temperature_c", "controller_mode", "exact_stop_coarse", "exact_stop_fine", "clamped",
+    "servo_parameter_set",
+)
+
+
+def _service_values(state: Any) -> dict[str, float]:
+    """The service-screen values of a motion system's axis state (numbers only)."""
+    values: dict[str, float] = {}
+    for name in SERVICE_FIELDS:
+        value = getattr(state, name, None)
+        if isinstance(value, (bool, int, float)):
+            values[name] = float(value)
+    for name, value in dict(getattr(state, "extra", {}) or {}).items():
+        if isinstance(value, (int, float)):
+            values[name] = float(value)
+    return values
+
+
+
+class StatusView:
+    """Builds :class:`NckStatus` from the kernel's state; mixed into ``Nck``."""
+
+    machine: Any
+    motion: Any
+
+    def _access_level(self) -> int:
+        if self._access is not None:
+            return self._access.level
+        return 7 - self._keyswitch
+
+    def _build_status(self) -> NckStatus:
+        shown = self._display_motion()
+        positions = shown.positions_mcs()
+        run = self._overlay or self._run
+        current_source = self._path_motion().current_source() if run is not None else None
+        current = None
+        executing: Motion | None = None
+        blocks: tuple = ()
+        dtg: dict[str, float] = {}
+        if run is not None:
+            blocks = run.display_blocks()
+            if current_source is not None:
+                for view in reversed(blocks):
+                    if view.file == current_source.file and view.line == current_source.line:
+                        current = view
+                        break
+                segment = run.segments.get((current_source.file, current_source.line))
+                if segment is not None:
+                    dtg = {a: float(v) - positions.get(a, 0.0) for a, v in segment.end_mcs.items()}
+                    executing = segment
+            if current is None and blocks:
+                current = blocks[-1]
+        axes = []
+        getter = getattr(self.motion, "axis_states", None)
+        drive = getter() if getter is not None else {}
+        for axis in self.machine.axes:
+            if axis.kind == "spindle":
+                axes.append(AxisStatus(name=axis.name, kind="spindle", position_mcs=0.0,
+                                       position_wcs=0.0, referenced=True,
+                                       speed_rpm=self._spindle_rpm if self._spindle_state in ("M3", "M4") else 0.0))
+                continue
+            mcs = float(positions.get(axis.name, 0.0))
+            state = drive.get(axis.name)
+            axes.append(AxisStatus(
+                name=axis.name, kind=axis.kind, position_mcs=mcs,
+                position_wcs=mcs - self._wcs_offset.get(axis.name, 0.0),
+                distance_to_go=dtg.get(axis.name, 0.0),
+                referenced=bool(self.motion.is_referenced(axis.name)),
+                setpoint_mcs=float(state.position_setpoint_mm) if state is not None else mcs,
+                velocity=float(state.velocity_actual_mm_min) if state is not None else 0.0,
+                following_error=float(state.following_error_mm) if state is not None else 0.0,
+                extra=_service_values(state) if state is not None else {},
+            ))
+        modal = self._modal_view(run)
+        if executing is not None and executing.gcodes:
+            # The main run lags the interpreter: show the G codes of the executing block.
+            modal = replace(modal, gcodes={**dict(modal.gcodes), **dict(executing.gcodes)},
+                            feed=executing.feed if executing.feed is not None else modal.feed)
+        repos = {}
+        if self._repos_point is not None and self._owner is not None:
+            now = self._path_positions(self.motion)
+            repos = {a: p - now[a] for a, p in self._repos_point.items() if a in now}
+        channel = ChannelStatus(
+            mode=self._sit.mode, machine_function=self._machine_function,
+            increment=self._increment, channel_state=self._sit.channel,
+            program_state=self._sit.program, selected_program=self._selected,
+            current_block=current, blocks=blocks, modal=modal,
+            program_control=dict(self._pc), overrides=dict(self._overrides),
+            path_feed_mm_min=(executing.feed_mm_min or 0.0) if executing is not None else 0.0, program_runtime_s=self.runtime.act_s,
+            part_count=self.counters.actual, message=self.alarms.message,
+            stop_reason=run.stop_reason if run is not None and self._sit.channel == INTERRUPTED else "",
+            interrupted_program=self._owner, mda_text=self._mda_text,
+            program_runtime_last_s=self.runtime.old_s, program_runtime_count=self.runtime.old_count,
+            parts_total=self.counters.total, parts_required=self.counters.required,
+            parts_special=self.counters.special, repos_offsets=repos,
+        )
+        return NckStatus(
+            seq=0, time_s=0.0, channel=channel, axes=tuple(axes), alarms=self.alarms.active,
+            access_level=self._access_level(), machine_name=self.machine.name,
+            emergency_stop=self._estop_active, mode_group_ready=not self._estop_active,
+            alarm_log_seq=self.alarms.last_seq, internal_errors=len(self.internal_errors),
+        )
+
+    def _modal_view(self, run: ProgramRun | None) -> ModalView:
+        base = ModalView()
+        interp = run.interp if run is not None else self._interpreters.get("AUTO")
+        getter = getattr(interp, "modal_view", None) if interp is not None else None
+        if getter is not None:
+            try:
+                base = getter()
+            except Exception:  # noqa: BLE001 - display only
+                base = ModalView()
+        return replace(
+            base, tool=base.tool or self._tool, edge=base.edge or self._edge,
+            spindle_speed_rpm=base.spindle_speed_rpm or self._spindle_rpm,
+            spindle_state=self._spindle_state if base.spindle_state == "M5" else base.spindle_state,
+            aux={**dict(base.aux), **self._aux},
+        )
