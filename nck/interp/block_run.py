@@ -51,6 +51,7 @@ class BlockRun:
         self.end_kind: str | None = None  # M2/M30/M17/RET
         self.executable = False
         self.repeat: ast.SectionRepeat | None = None
+        self.goto_start = False
 
     def eval(self, expr: ast.Expr) -> Any:
         return evaluate(expr, self.scope)
@@ -81,6 +82,12 @@ class BlockRun:
         self.frame.pc = self.next_pc
         if self.goto is not None:
             self._jump(self.goto)
+        if self.goto_start:  # GOTOS: a fresh pass of this program level
+            self.frame.pc = 0
+            self.frame.repeats = []
+            self.frame.for_ends = {}
+            self.frame.locals = dict(self.frame.params)
+            self.frame.def_open = True
         if self.repeat is not None:
             self._start_repeat(self.repeat)
         elif self.goto is None:
@@ -467,6 +474,8 @@ class BlockRun:
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
         if program.proc is not None and program.proc.save:
             frame.saved_gcodes = dict(interp.modal.gcodes)  # PROC … SAVE
+        frame.single_block_off = self.frame.single_block_off or bool(program.proc and program.proc.sblof)
+        frame.display_off = self.frame.display_off or bool(program.proc and program.proc.displof)
         self._bind_parameters(program, call, frame)
         frame.locals = dict(frame.params)
         state.frames.append(frame)
@@ -532,6 +541,14 @@ class BlockRun:
             self.late.append(canon.StopPoint(self.source, "STOPRE"))
         elif name == "RET":
             self.end_kind = "RET"
+        elif name == "GOTOS":
+            # back to the start of the program (of this level), with an implicit STOPRE
+            self.late.append(canon.StopPoint(self.source, "STOPRE"))
+            self.goto_start = True
+        elif name in ("SBLOF", "SBLON"):
+            self.frame.single_block_off = name == "SBLOF"
+        elif name in ("DISPLOF", "DISPLON"):
+            self.frame.display_off = name == "DISPLOF"
 
 
 def _whole(number: Any, address: str) -> int:

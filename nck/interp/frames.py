@@ -60,6 +60,8 @@ class Frame:
     for_ends: dict[int, Any] = field(default_factory=dict)
     is_main: bool = False
     saved_gcodes: dict[int, str] | None = None  # PROC … SAVE: G groups restored at the return
+    single_block_off: bool = False  # SBLOF active at this level (inherited by calls)
+    display_off: bool = False  # DISPLOF: blocks of this level are not displayed
     # active REPEAT sections: (last line index, first line index, passes left, return index)
     repeats: list[tuple[int, int, int, int]] = field(default_factory=list)
 

@@ -20,6 +20,11 @@ Program-control hooks for the channel: :attr:`skip_levels` (active ``/n``
 levels), :attr:`position_source` (actual positions for ``$AA_IM``),
 :attr:`flags` (``search``, ``test``, ``dry_run`` for ``$P_…``) and
 :meth:`block_search` (block search with calculation).
+
+``BlockResult.extras`` carries ``level`` (program level after the block, 0 at
+the end), ``skipped`` (a ``/`` block that was skipped), ``single_block_off``
+(SBLOF active: single block must not stop after this block) and
+``display_off`` (DISPLOF: do not show this block).
 """
 
 from __future__ import annotations
@@ -327,7 +332,9 @@ class Interpreter:
             action_block=bool(commands),
             finished=state.finished,
             cost_s=BLOCK_COST_S,
-            extras={"level": len(state.frames) if not state.finished else 0},
+            extras={"level": len(state.frames) if not state.finished else 0,
+                    "single_block_off": frame.single_block_off,
+                    "display_off": frame.display_off},
         )
 
     def _skipped(self, block: ast.Block) -> bool:

@@ -152,6 +152,8 @@ class Proc:
     name: str
     params: tuple[ParamDecl, ...] = ()
     save: bool = False
+    sblof: bool = False  # the whole subprogram is one single-block step
+    displof: bool = False  # its blocks are not shown in the block display
 
 
 @dataclass(frozen=True, slots=True)
@@ -239,7 +241,7 @@ class Control:
 
 @dataclass(frozen=True, slots=True)
 class Builtin:
-    """A predefined procedure: MSG, SETAL, STOPRE, RET (args already parsed)."""
+    """A predefined procedure: MSG, SETAL, STOPRE, RET, GOTOS, SBLOF/SBLON, DISPLOF/DISPLON."""
 
     name: str
     args: tuple[Expr | None, ...] = ()

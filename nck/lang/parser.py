@@ -21,7 +21,7 @@ MAX_NAME_CHARS = 31
 DATA_TYPES = ("INT", "REAL", "BOOL", "CHAR", "STRING", "AXIS", "FRAME")
 GOTO_KINDS = ("GOTOF", "GOTOB", "GOTO", "GOTOC")
 SIMPLE_CONTROL = ("ELSE", "ENDIF", "ENDWHILE", "ENDFOR", "LOOP", "ENDLOOP", "REPEAT")
-BUILTIN_PROCS = ("MSG", "SETAL", "STOPRE", "RET")
+BUILTIN_PROCS = ("MSG", "SETAL", "STOPRE", "RET", "GOTOS", "SBLOF", "SBLON", "DISPLOF", "DISPLON")
 RESERVED = frozenset(
     DATA_TYPES + GOTO_KINDS + SIMPLE_CONTROL + BUILTIN_PROCS
     + ("IF", "WHILE", "FOR", "TO", "UNTIL", "DEF", "PROC", "EXTERN", "AND", "OR", "XOR",
@@ -248,7 +248,7 @@ class _Parser:
         if name == "EXTERN":
             stmts.append(self._extern())
             return
-        if name in ("STOPRE", "RET"):
+        if name in ("STOPRE", "RET", "GOTOS", "SBLOF", "SBLON", "DISPLOF", "DISPLON"):
             self.advance()
             args: tuple[ast.Expr | None, ...] = ()
             if self.is_op("("):
@@ -551,12 +551,13 @@ class _Parser:
         else:
             raise _syntax(tok)
         params = self._param_list(with_name=True)
-        save = False
+        attributes: set[str] = set()
         while self.tok.kind == NAME and self.tok.text in ("SAVE", "DISPLOF", "SBLOF", "DISPLON", "ACTBLOCNO"):
-            save = save or self.advance().text == "SAVE"
+            attributes.add(self.advance().text)
         if not self.at_end():
             raise _syntax(self.tok)
-        return ast.Proc(name, params, save)
+        return ast.Proc(name, params, "SAVE" in attributes, "SBLOF" in attributes,
+                        "DISPLOF" in attributes)
 
     def _extern(self) -> ast.Extern:
         self.advance()
