@@ -179,8 +179,9 @@ class ProgramRun:
             self.listener(result)
         self._pending = result
         self._index = 0
-        self.current = result
-        self.history.append(block_view(result))
+        if not result.extras.get("display_off"):
+            self.current = result
+            self.history.append(block_view(result))
         self.blocks_executed += 1
 
     def _emit(self, motion: MotionSystem, options: RunOptions, events: list[RunEvent]) -> bool:
@@ -238,7 +239,7 @@ class ProgramRun:
         if reason == "STOPRE":
             self.phase = WAIT_IDLE
             reason = None
-        if reason is None:
+        if reason is None and not block.extras.get("single_block_off"):
             if options.single_block == "SBL2" or (
                 options.single_block == "SBL1" and block.action_block
             ):

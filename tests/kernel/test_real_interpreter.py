@@ -129,3 +129,22 @@ def test_reset_deletes_the_programmable_frame() -> None:
     nck.submit(c.CycleStart())
     assert until_state(nck, "reset", "aborted")
     assert nck.positions_mcs()["X"] == pytest.approx(0.0)
+
+
+def test_sblof_subprogram_runs_as_one_single_block_step() -> None:
+    nck = make({
+        "P.MPF": "N10 G1 X1 F6000\nN20 SUB1\nN30 X5\nN40 M30",
+        "SUB1.SPF": "PROC SUB1 SBLOF\nN100 G1 X2\nN110 X3\nN120 X4\nN130 RET",
+    })
+    nck.submit(c.SetProgramControl("single_block", "SBL1"))
+    start(nck, "P.MPF")
+    stops = []
+    for _ in range(10):
+        nck.run_until(lambda k: k.situation.channel != "active", 10.0)
+        if nck.situation.channel == "reset":
+            break
+        stops.append(round(nck.positions_mcs()["X"], 3))
+        nck.submit(c.CycleStart())
+    assert 2.0 not in stops and 3.0 not in stops  # no stop inside the SBLOF subprogram
+    assert stops[0] == 1.0 and stops[-1] == 5.0
+    assert nck.positions_mcs()["X"] == pytest.approx(5.0)
