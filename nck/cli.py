@@ -171,15 +171,13 @@ def _apply_settings(settings: list[str], machine: MachineConfig, data: NcData) -
     """``--set NAME=VALUE``: R parameters, tool edges ($TC_DP), machine data."""
     from nck.interp.interpreter import Interpreter
     from nck.interp.sources import MemorySource
-    from nck.interp.sysvars import md_number
-
     for setting in settings:
         if "=" not in setting:
             raise CliError(f"--set needs NAME=VALUE, got '{setting}'")
         name, value = (part.strip() for part in setting.split("=", 1))
         upper = name.upper()
         if upper.startswith(("$M", "$S", "MD", "SD")):
-            _set_machine_data(machine, upper, value, md_number)
+            _set_machine_data(machine, data, upper, value)
             continue
         interp = Interpreter(machine, MemorySource(), data)
         interp.start_text("--set", f"{name}={value}")
@@ -189,31 +187,51 @@ def _apply_settings(settings: list[str], machine: MachineConfig, data: NcData) -
             raise CliError(f"--set {setting}: {alarm_message(alarm)}") from None
 
 
-def _set_machine_data(machine: MachineConfig, name: str, value_text: str, md_number: Any) -> None:
-    axis = None
+def _set_machine_data(machine: MachineConfig, data: NcData, name: str, value_text: str) -> None:
+    """``--set MD32000[X]=…`` / ``$MA_MAX_AX_VELO[X]=…`` / ``SD42100=…`` / ``MD20150[5]=…``."""
+    from nck.interp.sysvars import md_number
+
+    index = None
     if name.endswith("]") and "[" in name:
-        name, axis = name[:-1].split("[", 1)
-    if name.startswith("$"):
-        ident = name.lstrip("$").split("_", 1)[1] if "_" in name else name
-        number = md_number(ident)
-        if number is None:
-            raise CliError(f"--set: unknown machine data '{name}'")
-        key = ("SD" if name.lstrip("$").startswith("S") else "MD") + str(number)
-    else:
+        name, index = name[:-1].split("[", 1)
+        index = index.strip()
+    key = None
+    try:
+        from nck.machine_data import catalog
+
+        definition = catalog().get(name)
+        if definition is not None:
+            key = definition.key
+    except Exception:  # noqa: BLE001 - catalogue unavailable: fall back to the small table
+        key = None
+    if key is None and name.startswith("$"):
+        number = md_number(name.lstrip("$").split("_", 1)[1] if "_" in name else name)
+        if number is not None:
+            key = ("SD" if name.lstrip("$").startswith("S") else "MD") + str(number)
+    if key is None and name[:2] in ("MD", "SD") and name[2:].isdigit():
         key = name
+    if key is None:
+        raise CliError(f"--set: unknown machine or setting data '{name}'")
     try:
         value: Any = float(value_text)
         if value.is_integer() and "." not in value_text:
             value = int(value)
     except ValueError:
         value = value_text
-    if axis is not None:
-        current = machine.md.get(key)
-        table = dict(current) if isinstance(current, dict) else {}
-        table[axis] = value
-        machine.md[key] = table
+    store: dict[str, Any] = data.setting_data if key.startswith("SD") else machine.md
+    current = store.get(key)
+    if index is None:
+        store[key] = value
+    elif index.isdigit():
+        values = list(current) if isinstance(current, list) else []
+        position = int(index)
+        values += [0] * (position + 1 - len(values))
+        values[position] = value
+        store[key] = values
     else:
-        machine.md[key] = value
+        table = dict(current) if isinstance(current, dict) else {}
+        table[index] = value
+        store[key] = table
 
 
 # ----------------------------------------------------------------------------- check

@@ -154,3 +154,10 @@ def test_subprograms_found_in_the_nc_file_system(tmp_path: Path, capsys: pytest.
     (data_dir / "nc" / "SPF" / "HELPER.SPF").write_text("R3=3\nM17\n")
     assert main(["run", str(prog), "--json", "--data-dir", str(data_dir)]) == 0
     assert json.loads(capsys.readouterr().out)["r"]["3"] == 3.0
+
+
+def test_set_setting_and_axis_machine_data(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    prog = write(tmp_path, "SD.MPF", "R1=$SC_DRY_RUN_FEED R2=$MA_MAX_AX_VELO[Y]\nM30\n")
+    assert main(["run", str(prog), "--json", "--set", "SD42100=1234", "--set", "$MA_MAX_AX_VELO[Y]=5000"]) == 0
+    assert json.loads(capsys.readouterr().out)["r"] == {"1": 1234.0, "2": 5000.0}
+    assert main(["run", str(prog), "--set", "$MC_NO_SUCH_DATUM=1"]) == 2
