@@ -134,6 +134,42 @@ def level_name(level: int) -> str:
     return f"level {level} (keyswitch position {LEVEL_FEWEST_RIGHTS - level})"
 
 
+_TOOL_WEAR_PARAMS = range(12, 21)  # $TC_DP12 … $TC_DP20: wear; the rest is geometry
+
+
+def action_for_write(name: str) -> Action | None:
+    """The protected function that writing the datum ``name`` is, or None when unprotected here.
+
+    ``R10`` / ``R[10]`` → write R parameter; ``$TC_DP12…20[t,d]`` → tool wear, other
+    ``$TC_DP…`` → tool geometry; ``$TC_TP…`` (tool name/type) → tool type;
+    ``$P_UIFR…``, ``$P_CHBFR…``, ``$P_NCBFR…`` or a frame name ``G54``… → work offset.
+    Machine and setting data (``MD…``, ``SD…``, ``$M…``, ``$S…``) are checked per datum
+    by :class:`nck.machine_data.MachineDataStore`; they return None here.
+    """
+    upper = name.strip().upper()
+    if upper.startswith("$R") or (upper.startswith("R") and (upper[1:2].isdigit() or upper[1:2] == "[")):
+        return Action.WRITE_R_PARAMETER
+    if upper.startswith("$TC_DP"):
+        digits = ""
+        for char in upper[6:]:
+            if not char.isdigit():
+                break
+            digits += char
+        if digits and int(digits) in _TOOL_WEAR_PARAMS:
+            return Action.WRITE_TOOL_WEAR
+        return Action.WRITE_TOOL_GEOMETRY
+    if upper.startswith("$TC_TP"):
+        return Action.WRITE_TOOL_TYPE
+    if upper.startswith(("$P_UIFR", "$P_CHBFR", "$P_NCBFR", "$P_BFRAME")):
+        return Action.WRITE_WORK_OFFSET
+    frame = upper.split("[")[0].split(".")[0]
+    if frame in ("G54", "G55", "G56", "G57") or (
+        frame.startswith("G5") and frame[1:].isdigit() and 505 <= int(frame[1:]) <= 599
+    ):
+        return Action.WRITE_WORK_OFFSET
+    return None
+
+
 class AccessError(Exception):
     """A refused protected operation; ``str()`` is a message for the operator."""
 
@@ -354,6 +390,13 @@ class AccessControl:
     def may(self, action: Action | int) -> bool:
         """True when the current level allows ``action`` (or a datum of that level)."""
         return may(self.level, action, self.user_class)
+
+    def require_write(self, name: str) -> None:
+        """Raise AccessDenied unless the current level may write the datum ``name``
+        (see :func:`action_for_write`; names it does not know are not checked here)."""
+        action = action_for_write(name)
+        if action is not None:
+            self.require(action, f"{action_rules()[action].title} ({name})")
 
     def require(self, action: Action | int, what: str | None = None) -> None:
         """Raise AccessDenied unless the current level allows ``action``."""

@@ -550,6 +550,18 @@ class MachineDataStore:
         return copy.deepcopy(self.changes)
 
 
+def number_of(identifier: str) -> int | None:
+    """Number of a datum by identifier, with or without prefix (``MAX_AX_VELO`` → 32000)."""
+    upper = identifier.strip().upper().lstrip("$")
+    if "_" in upper[:4] and upper[:3] in {p[1:] for p in PREFIX.values()}:
+        definition = catalog().get("$" + upper)
+        return definition.number if definition is not None else None
+    for definition in catalog():
+        if definition.name == upper:
+            return definition.number
+    return None
+
+
 def fill_setting_defaults(setting_data: dict[str, Any], machine: MachineConfig,
                           cat: Catalog | None = None) -> None:
     """Put the catalogue default of every setting datum not yet present into ``setting_data``.
@@ -578,5 +590,5 @@ def unknown_machine_keys(machine: MachineConfig, cat: Catalog | None = None) -> 
 __all__ = [
     "ACTIVATION_TEXT", "Catalog", "DataDefinition", "DataError", "DataRef", "DataValueError",
     "LEVEL_FEWEST_RIGHTS", "MachineDataStore", "UnknownDataError", "WriteResult", "catalog",
-    "fill_setting_defaults", "format_value", "parse_ref", "unknown_machine_keys",
+    "fill_setting_defaults", "format_value", "number_of", "parse_ref", "unknown_machine_keys",
 ]

@@ -186,3 +186,33 @@ def test_state_round_trip_keeps_only_hashes() -> None:
 def test_malformed_state_is_refused(bad: dict) -> None:
     with pytest.raises((ValueError, KeyError, TypeError)):
         AccessState.from_json(bad)
+
+
+@pytest.mark.parametrize("name, action", [
+    ("R10", Action.WRITE_R_PARAMETER), ("R[5]", Action.WRITE_R_PARAMETER),
+    ("$R3", Action.WRITE_R_PARAMETER),
+    ("$TC_DP6[1,1]", Action.WRITE_TOOL_GEOMETRY), ("$TC_DP3[2,1]", Action.WRITE_TOOL_GEOMETRY),
+    ("$TC_DP12[1,1]", Action.WRITE_TOOL_WEAR), ("$TC_DP15[1,2]", Action.WRITE_TOOL_WEAR),
+    ("$TC_DP21[1,1]", Action.WRITE_TOOL_GEOMETRY), ("$TC_TP2[1]", Action.WRITE_TOOL_TYPE),
+    ("$P_UIFR[1,X,TR]", Action.WRITE_WORK_OFFSET), ("G54", Action.WRITE_WORK_OFFSET),
+    ("G505.X", Action.WRITE_WORK_OFFSET), ("$P_CHBFR[0,Z,TR]", Action.WRITE_WORK_OFFSET),
+    ("MD32000[X]", None), ("SD42100", None), ("RESULT", None), ("G500", None),
+])
+def test_action_for_write(name: str, action: Action | None) -> None:
+    from nck.access import action_for_write
+
+    assert action_for_write(name) is action
+
+
+def test_require_write_matrix() -> None:
+    control = control_at(7)
+    with pytest.raises(AccessDenied) as refused:
+        control.require_write("$P_UIFR[1,X,TR]")
+    assert refused.value.needed_level == 6
+    control.require_write("MD32000[X]")  # checked by the MD store, not here
+    control = control_at(6)
+    control.require_write("$P_UIFR[1,X,TR]")
+    control.require_write("$TC_DP12[1,1]")
+    with pytest.raises(AccessDenied):
+        control.require_write("$TC_DP6[1,1]")
+    control_at(4).require_write("$TC_DP6[1,1]")

@@ -183,3 +183,12 @@ def test_fill_setting_defaults_keeps_existing_values() -> None:
     assert data["SD42100"] == 777.0
     assert data["SD43420"]["X"] == 5.0 and data["SD43420"]["Y"] == 1e8
     assert data["SD42101"] == 0
+
+
+def test_number_of_identifier() -> None:
+    from nck.machine_data import number_of
+
+    assert number_of("MAX_AX_VELO") == 32000
+    assert number_of("$MA_MAX_AX_VELO") == 32000
+    assert number_of("$SC_DRY_RUN_FEED") == 42100
+    assert number_of("NO_SUCH_DATUM") is None
