@@ -65,3 +65,37 @@ def test_random_command_sequences_keep_the_channel_consistent(sequence, referenc
     assert nck.submit(c.Reset()) == c.Accepted()
     assert (nck.situation.channel, nck.situation.program) == ("reset", "aborted")
     assert 3000 not in [a.number for a in nck.status().alarms]
+
+
+REAL_PROGRAMS = {
+    "P.MPF": "N10 G0 X10 Y5\nN20 M01\nN30 R1=R1+1\nN40 G1 Z-2 F2000\nN50 M00\nN60 G91 X5\nN70 M30",
+    "E.MPF": "N10 G1 X5 F3000\nN20 X=\nN30 M30",
+}
+REAL_COMMANDS = st.one_of(
+    COMMANDS,
+    st.sampled_from(["P.MPF", "E.MPF"]).map(c.SelectProgram),
+    st.sampled_from(["N40", "N60", "X5"]).map(c.StartBlockSearch),
+    st.builds(c.SetOverride, st.sampled_from(["feed", "rapid", "spindle"]), st.sampled_from([0, 50, 100, 120, 200])),
+    st.builds(c.WriteData, st.sampled_from(["R1", "SD42100", "$AC_REQUIRED_PARTS", "MD1"]), st.sampled_from([0, 3, "x"])),
+)
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(REAL_COMMANDS, min_size=1, max_size=30))
+def test_random_commands_with_the_real_interpreter(sequence) -> None:
+    from nck.interp.sources import MemorySource
+    from nck.kernel import Nck
+    from nck.motion.instant import instant_motion_factory
+
+    nck = Nck(programs=MemorySource(REAL_PROGRAMS), referenced=True, motion_factory=instant_motion_factory)
+    for item in sequence:
+        if isinstance(item, tuple):
+            nck.tick(item[1])
+        else:
+            assert isinstance(nck.submit(item), (c.Accepted, c.Rejected))
+        assert is_valid(nck.situation), nck.situation
+        assert nck.internal_errors == []
+    nck.status()
+    nck.submit(c.EmergencyStop(False))
+    nck.submit(c.Reset())
+    assert (nck.situation.channel, nck.situation.program) == ("reset", "aborted")
