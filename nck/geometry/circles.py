@@ -346,6 +346,10 @@ def arc_through_point(start: Vec3, intermediate: Vec3, end: Vec3, turns: int = 0
     axis = normal / norm
     # Circumcentre of the triangle s, m, e.
     center = s + np.cross(float(np.dot(u, u)) * v - float(np.dot(v, v)) * u, normal) / (2.0 * norm * norm)
+    chord = float(np.linalg.norm(v))
+    if chord > POINT_EPS:  # the end point is trusted: keep the centre on the chord's bisector
+        d = v / chord
+        center = center - float(np.dot(center - (s + e) / 2.0, d)) * d
     radius = float(np.linalg.norm(s - center))
     if radius > MAX_CIP_RADIUS_MM:  # practically a straight line
         vv = float(np.dot(v, v))

@@ -24,7 +24,7 @@ from nck.geometry.frames import Frame, _as_matrix3, rpy_matrix
 from nck.ncdata import WorkOffset
 
 COMPONENTS = frozenset(("TR", "FI", "RT", "SC", "MI"))
-NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_UIFRNUM", "$AA_IW"))
+NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_IFRAME", "$P_UIFRNUM", "$AA_IW"))
 ALARM_INDEX = 17020  # illegal array index
 ALARM_SCALE_ZERO = 18309
 
@@ -60,10 +60,16 @@ def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
         axis = _axis(interp, name, indices[:1]) if len(indices) == 1 else _bad(name)
         actual = {a: float(interp.actual_position(a)) for a in interp.machine.path_axes}
         return float(path.wcs_from_mcs(modal, actual)[axis])
+    whole = _whole_frame_read(interp, name, indices)
+    if whole is not None:
+        return whole
     if name == "$P_PFRAME":
         axis, comp = _address(interp, name, indices)
         return _component(path.state(modal).frames.programmable, axis, comp,
                           path.units(modal).position_mm)
+    if name == "$P_IFRAME":
+        axis, comp = _address(interp, name, indices)
+        return _component(path.state(modal).frames.settable, axis, comp, path.units(modal).data_mm)
     if name == "$P_UIFR":
         if len(indices) != 3:
             _bad(name)
@@ -79,8 +85,11 @@ def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
 
 def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     """Write one of :data:`NAMES` (read-only ones give alarm 17070)."""
-    from nck.interp.values import to_number
+    from nck.interp.values import FrameValue, to_number
 
+    if isinstance(value, FrameValue):
+        _whole_frame_write(interp, name, indices, value)
+        return
     number = float(to_number(value, name))
     modal = interp.modal
     path = interp.builder.path
@@ -89,6 +98,12 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
         geo = path.state(modal)
         frame = _set_component(geo.frames.programmable, axis, comp, number, path.units(modal).position_mm)
         geo.frames = geo.frames.with_programmable(frame)
+        return
+    if name == "$P_IFRAME":
+        axis, comp = _address(interp, name, indices)
+        geo = path.state(modal)
+        frame = _set_component(geo.frames.settable, axis, comp, number, path.units(modal).data_mm)
+        geo.frames = geo.frames.with_settable(geo.frames.settable_code, frame)
         return
     if name in ("$P_UIFR", "$P_UBFR"):
         if name == "$P_UIFR":
@@ -105,6 +120,65 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
         _set_stored(offset, axis, comp, number, path.units(modal).data_mm)
         return
     raise NcAlarmError(17070, name)
+
+
+# --------------------------------------------------------------------------- whole frames
+def _whole_frame_read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
+    """``$P_PFRAME``, ``$P_IFRAME``, ``$P_UBFR``, ``$P_UIFR[n]`` as FRAME values (None: not whole)."""
+    from nck.geometry.frame_functions import GeoFrameValue
+
+    path = interp.builder.path
+    modal = interp.modal
+    frame: Frame | None = None
+    if name in ("$P_PFRAME", "$P_IFRAME", "$P_UBFR") and not indices:
+        geo = path.state(modal)
+        if name == "$P_PFRAME":
+            frame = geo.frames.programmable
+        elif name == "$P_IFRAME":
+            frame = geo.frames.settable
+        else:
+            frame = frame_from_work_offset(interp.data.base_frame)
+    elif name == "$P_UIFR" and len(indices) == 1:
+        code = settable_code(_int(indices[0], name))
+        frame = frame_from_work_offset(interp.data.settable_frames.get(code, WorkOffset()))
+    if frame is None:
+        return None
+    return GeoFrameValue(trans=dict(frame.trans), rot={}, frame=frame)
+
+
+def _whole_frame_write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
+    from nck.geometry.frame_functions import as_frame
+
+    frame = as_frame(value, name)
+    path = interp.builder.path
+    modal = interp.modal
+    if name in ("$P_PFRAME", "$P_IFRAME") and not indices:
+        geo = path.state(modal)
+        if name == "$P_PFRAME":
+            geo.frames = geo.frames.with_programmable(frame)
+        else:
+            geo.frames = geo.frames.with_settable(geo.frames.settable_code, frame)
+        return
+    if name == "$P_UBFR" and not indices:
+        interp.data.base_frame = work_offset_of(frame)
+        return
+    if name == "$P_UIFR" and len(indices) == 1:
+        code = settable_code(_int(indices[0], name))
+        interp.data.settable_frames[code] = work_offset_of(frame)
+        return
+    raise NcAlarmError(ALARM_INDEX, name)
+
+
+def work_offset_of(frame: Frame) -> WorkOffset:
+    """Store a frame's components as a work offset (translations in mm, RPY angles)."""
+    angles = frame.rotation_deg
+    return WorkOffset(
+        trans={a: v for a, v in frame.trans.items() if v},
+        fine={a: v for a, v in frame.fine.items() if v},
+        rot={axis: angle for axis, angle in zip(frame.geometry_axes, angles) if angle},
+        scale={a: v for a, v in frame.scale.items() if v != 1.0},
+        mirror={a: True for a in frame.mirror},
+    )
 
 
 # --------------------------------------------------------------------------- helpers

@@ -11,6 +11,7 @@ import math
 from typing import Any, Callable, Protocol
 
 from nck.errors import NcAlarmError
+from nck.geometry import frame_functions
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
 from nck.interp.values import (
     Axis, INT_MAX, INT_MIN, round_half_away, to_bool, to_number, to_string,
@@ -273,6 +274,9 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
     if name in ("AC", "IC"):
         # Only meaningful as an address value; the interpreter handles that case.
         raise NcAlarmError(12080, name)
+    if name in frame_functions.NAMES:  # CTRANS(X,10), CROT(Z,45), … → FRAME value
+        return frame_functions.call(name, [_index_value(a, scope) for a in args],  # type: ignore[arg-type]
+                                    frame_functions_length_mm(scope))
     if name in ONE_ARG:
         _arity(name, args, 1)
         return _checked(ONE_ARG[name](float(_number(evaluate(args[0], scope)))))  # type: ignore[arg-type]
@@ -340,3 +344,12 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
 def _arity(name: str, args: tuple, count: int) -> None:
     if len(args) != count:
         raise NcAlarmError(14020, name)
+
+
+def frame_functions_length_mm(scope: Scope) -> float:
+    """mm per programmed length unit (G70/G700) for frame functions; 1 without an interpreter."""
+    interp = getattr(scope, "interp", None)
+    builder = getattr(interp, "builder", None)
+    if builder is None:
+        return 1.0
+    return builder.path.units(interp.modal).position_mm

@@ -49,3 +49,30 @@ def test_bad_component_and_zero_scale() -> None:
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 $P_UIFR[1,X]=5", "N20 M30"))
     assert info.value.number == 17020
+
+
+def test_frame_functions_assigned_to_frame_variables() -> None:
+    data = NcData()
+    r = run(lines(
+        "N10 G0 X100",
+        "N20 $P_PFRAME=CTRANS(X,10)",   # digest K2 §10.5: X100 then shows WCS 100, machine 110
+        "N30 X100",
+        "N40 $P_UIFR[1]=CTRANS(X,100,Y,50)",
+        "N50 G54 $P_PFRAME=CROT(Z,90)",
+        "N60 X10 Y0",                   # (10,0) -> (0,10) -> + (100,50)
+        "N70 $P_IFRAME=CTRANS()",       # active settable frame zeroed at once (data keep G54)
+        "N80 X10 Y0",
+        "N90 $P_PFRAME=CMIRROR(Y)",
+        "N100 X10 Y10",
+        "N110 M30",
+    ), data)
+    assert r.end_mcs(10)["X"] == pytest.approx(100.0)
+    assert r.end_mcs(30)["X"] == pytest.approx(110.0)
+    assert r.end_wcs(30)["X"] == pytest.approx(100.0)
+    assert data.settable_frames["G54"].trans == {"X": 100.0, "Y": 50.0}
+    assert r.end_mcs(60) == approx({"X": 100.0, "Y": 60.0, "Z": 0.0})
+    assert r.end_mcs(80) == approx({"X": 0.0, "Y": 10.0, "Z": 0.0})
+    assert r.end_mcs(100) == approx({"X": 10.0, "Y": -10.0, "Z": 0.0})
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 $P_PFRAME=CTRANS(X)", "N20 M30"))
+    assert info.value.number == 14020
