@@ -51,6 +51,8 @@ class ManualControl:
 
     def _jog(self, command: cmd.Jog) -> SubmitResult:
         axis = command.axis.upper()
+        if axis in self.machine.spindles:
+            return self._jog_spindle(axis, command.direction)
         if axis not in self.machine.path_axes:
             return Rejected(f"no axis {command.axis}")
         function = self._machine_function
@@ -89,6 +91,17 @@ class ManualControl:
         if not self._jogging:
             self._jogging = True
             self._transition("jog_start")
+        return Accepted()
+
+    def _jog_spindle(self, spindle: str, direction: int) -> SubmitResult:
+        """Spindle JOG: turns at its JOG speed while the key is held (JOG mode only)."""
+        if direction != 0:
+            if self._estop_active:
+                return Rejected("Emergency stop active")
+            if self._sit.mode != "JOG" or self._sit.channel == ACTIVE:
+                return Rejected("The spindle can be jogged only in JOG")
+        self.motion.jog_continuous(spindle, 0 if direction == 0 else (1 if direction > 0 else -1),
+                                   self._jog_velocity(spindle, False))
         return Accepted()
 
     def _stop_jog(self, keep_rest: bool) -> None:

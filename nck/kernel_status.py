@@ -78,9 +78,7 @@ class StatusView:
         drive = getter() if getter is not None else {}
         for axis in self.machine.axes:
             if axis.kind == "spindle":
-                axes.append(AxisStatus(name=axis.name, kind="spindle", position_mcs=0.0,
-                                       position_wcs=0.0, referenced=True,
-                                       speed_rpm=self._spindle_rpm if self._spindle_state in ("M3", "M4") else 0.0))
+                axes.append(self._spindle_status(axis.name, positions))
                 continue
             mcs = float(positions.get(axis.name, 0.0))
             state = drive.get(axis.name)
@@ -123,6 +121,27 @@ class StatusView:
             emergency_stop=self._estop_active, mode_group_ready=not self._estop_active,
             alarm_log_seq=self.alarms.last_seq, internal_errors=len(self.internal_errors),
         )
+
+    def _spindle_status(self, name: str, positions: Any) -> AxisStatus:
+        """A spindle: speed from the motion system when it models spindles, else programmed."""
+        spindle = (getattr(self.motion, "spindles", None) or {}).get(name)
+        state = getattr(spindle, "state", None)
+        if state is not None and hasattr(state, "actual_rpm"):
+            angle = float(getattr(state, "angle_deg", 0.0))
+            return AxisStatus(
+                name=name, kind="spindle", position_mcs=angle, position_wcs=angle, referenced=True,
+                setpoint_mcs=angle, velocity=float(state.actual_rpm), speed_rpm=float(state.actual_rpm),
+                extra={"setpoint_rpm": float(getattr(state, "setpoint_rpm", 0.0)),
+                       "override_pct": float(getattr(state, "override_pct", 100.0)),
+                       "torque_nm": float(getattr(state, "torque_nm", 0.0)),
+                       "motor_temperature_c": float(getattr(state, "temperature_c", 0.0))},
+            )
+        rpm = self._spindle_rpm if self._spindle_state in ("M3", "M4") else 0.0
+        if self._spindle_state == "M4":
+            rpm = -rpm
+        position = float(positions.get(name, 0.0)) if hasattr(positions, "get") else 0.0
+        return AxisStatus(name=name, kind="spindle", position_mcs=position, position_wcs=position,
+                          referenced=True, speed_rpm=rpm)
 
     def _modal_view(self, run: ProgramRun | None) -> ModalView:
         base = ModalView()

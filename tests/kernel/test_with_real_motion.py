@@ -94,3 +94,23 @@ def test_reference_all_axes_then_start(factory) -> None:
     assert nck.submit(c.CycleStart()) == c.Accepted()
     assert until_state(nck, "reset", "aborted", 10.0)
     assert nck.internal_errors == []
+
+
+def test_spindle_jog_and_program_spindle_speed_on_the_planned_motion() -> None:
+    module = pytest.importorskip("nck.motion.system")
+    nck = make(module.planned_motion_factory, {"P.MPF": "N10 S1000 M3\nN20 G4 F2\nN30 M30"})
+    assert nck.submit(c.Jog("SP", 1)) == c.Accepted()
+    nck.tick(2.0)
+    spindle = next(a for a in nck.status().axes if a.kind == "spindle")
+    assert spindle.speed_rpm > 0.0
+    assert states(nck) == ("JOG", "reset", "aborted")  # spindle JOG does not make the channel active
+    nck.submit(c.Jog("SP", 0))
+    nck.tick(3.0)
+    nck.submit(c.SelectMode("AUTO"))
+    assert isinstance(nck.submit(c.Jog("SP", 1)), c.Rejected)
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    nck.tick(1.5)
+    spindle = next(a for a in nck.status().axes if a.kind == "spindle")
+    assert spindle.speed_rpm == pytest.approx(1000.0, rel=0.01)
+    assert until_state(nck, "reset", "aborted", 10.0)
