@@ -77,12 +77,16 @@ def test_outside_offset_of_convex_polygon_is_at_distance_r(vertices, tool_radius
     if mode == "G450":
         assert_all_at_distance(out, contour, tool_radius)
     else:
-        # G451: the offset lines are at distance r, the intersection corners farther.
+        # G451: each block runs on the parallel to its own edge at distance r (extended
+        # to the intersection, so the corners lie farther than r from the contour).
         for element in out:
             if element.role == "contour":
-                a, b = element.start, element.end
-                m = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-                assert min(distance_to_curve(m, e) for e in contour) <= tool_radius + 1e-6
+                a, b = element.programmed.start, element.programmed.end
+                length = math.dist(a, b)
+                for p in (element.start, element.end):
+                    off = ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])) / length
+                    assert abs(off - tool_radius) < 1e-6  # left of travel (G41), r away
+                    assert min(distance_to_curve(p, e) for e in contour) >= tool_radius - 1e-6
 
 
 @settings(max_examples=60, deadline=None)
