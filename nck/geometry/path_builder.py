@@ -25,12 +25,12 @@ import numpy as np
 
 from nck import canon
 from nck.errors import NcAlarmError
-from nck.geometry import circles
+from nck.geometry import circles, path_aids
 from nck.geometry.chain import SUPPRESSION_CODES, frame_from_work_offset
 from nck.geometry.circles import Arc, CircleTolerance
-from nck.geometry.contour_aids import Corner, LineElement, chamfer, rounding
+from nck.geometry.contour_aids import LineElement
 from nck.geometry.frames import Frame
-from nck.geometry.path_state import GeometryState, PendingCorner
+from nck.geometry.path_state import GeometryState
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane, plane
 from nck.geometry.tool_length import length_offset, resolve_edge
 from nck.geometry.transform import Transform
@@ -39,7 +39,6 @@ from nck.machine import MachineConfig
 from nck.ncdata import NcData, WorkOffset
 
 ALARM_CIRCLE_NOT_DETERMINED = circles.ALARM_CIRCLE_END_POINT
-ALARM_AID_WITHOUT_MOTION = 10882  # chamfer/rounding programmed in a block without path motion
 ALARM_THREAD_LEAD_ZERO = 16720  # G33 without (or with zero) thread lead
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
 PATH_KINDS = ("G0", "G1", "G33") + ARC_KINDS
@@ -263,7 +262,7 @@ class PathBuilder:
         }
         start_mcs = dict(modal.position_mcs)
         geo.wcs_mm = end
-        out = self._with_contour_aids(words, modal, geo, pl, element, context, start_mcs, units)
+        out = path_aids.with_contour_aids(self, words, geo, pl, element, context, start_mcs, units)
         geo.tangent = _end_tangent(element)
         modal.position_wcs = self.wcs_view(geo, modal)
         modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
@@ -485,74 +484,9 @@ class PathBuilder:
         )
 
     # ---------------------------------------------------------------- chamfers and roundings
-    def _aid_of(self, words: Any, geo: GeometryState, units: UnitSystem) -> tuple[str, float] | None:
-        w = words.words
-        if "RNDM" in w:
-            value = float(w["RNDM"]) * units.position_mm
-            if value < 0:
-                raise NcAlarmError(16500)
-            geo.rndm_mm = value
-        for key in ("CHF", "CHR", "RND"):
-            if key in w:
-                value = float(w[key]) * units.position_mm
-                if value < 0:
-                    raise NcAlarmError(16500)
-                return (key, value)
-        if geo.rndm_mm > 0:
-            return ("RND", geo.rndm_mm)
-        return None
-
-    def _with_contour_aids(self, words: Any, modal: Any, geo: GeometryState, pl: Plane,
-                           element: LineElement | Arc, context: dict[str, Any],
-                           start_mcs: dict[str, float], units: UnitSystem) -> list[canon.Motion]:
-        out: list[canon.Motion] = []
-        in_plane = _moves_in_plane(element, pl)
-        pending = geo.pending
-        geo.pending = None
-        if pending is not None:
-            if in_plane and pending.context["plane"] == pl.code:
-                corner = self._corner(pl, pending, element)
-                first = self.emit(corner.first, pending.context, pending.context["start_mcs"])
-                out.append(first)
-                last_mcs = first.end_mcs
-                if corner.inserted is not None:
-                    inserted_context = dict(pending.context)
-                    inserted_context["feed"] = context["feed"]
-                    inserted_context["programmed"] = set(pending.context["programmed"]) | {pl.abscissa, pl.ordinate}
-                    kind = "G1" if isinstance(corner.inserted, LineElement) else None
-                    motion = self.emit(corner.inserted, inserted_context, last_mcs, kind=kind, inserted=True)
-                    out.append(motion)
-                    last_mcs = motion.end_mcs
-                element = corner.second
-                start_mcs = dict(last_mcs)
-                if isinstance(element, LineElement) or corner.inserted is not None:
-                    context["programmed"] = set(context["programmed"]) | {pl.abscissa, pl.ordinate}
-            else:
-                out.append(self.emit(pending.element, pending.context, pending.context["start_mcs"]))
-                start_mcs = dict(out[-1].end_mcs)
-        aid = self._aid_of(words, geo, units)
-        if aid is not None and in_plane and context["kind"] != "G33":
-            context["start_mcs"] = start_mcs
-            geo.pending = PendingCorner(element, aid[0], aid[1], context)
-            return out
-        if aid is not None and not in_plane and ("CHF" in words.words or "CHR" in words.words
-                                                 or "RND" in words.words):
-            raise NcAlarmError(ALARM_AID_WITHOUT_MOTION)
-        out.append(self.emit(element, context, start_mcs))
-        return out
-
-    def _corner(self, pl: Plane, pending: PendingCorner, element: LineElement | Arc) -> Corner:
-        if pending.aid == "RND":
-            return rounding(pl, pending.element, element, pending.size_mm)
-        return chamfer(pl, pending.element, element, pending.size_mm, pending.aid)
-
     def flush(self, modal: Any) -> list[canon.Motion]:
         """Emit an element held back for a chamfer/rounding unchanged (no next element came)."""
-        geo = getattr(modal, "geometry", None)
-        if geo is None or geo.pending is None:
-            return []
-        pending, geo.pending = geo.pending, None
-        return [self.emit(pending.element, pending.context, pending.context["start_mcs"])]
+        return path_aids.flush(self, modal)
 
     # ---------------------------------------------------------------- positions
     def wcs_from_mcs(self, modal: Any, position_mcs: Mapping[str, float]) -> dict[str, float]:
@@ -595,13 +529,6 @@ def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[
     n = n / float(np.linalg.norm(n))
     names = transform.geometry_axes
     return {names[i]: _r(n[i]) for i in range(3)}
-
-
-def _moves_in_plane(element: LineElement | Arc, pl: Plane) -> bool:
-    if isinstance(element, Arc):
-        return True
-    s, e = pl.to_plane(element.start), pl.to_plane(element.end)
-    return math.hypot(e[0] - s[0], e[1] - s[1]) > 1e-9
 
 
 def _end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:
