@@ -226,3 +226,13 @@ def test_foreign_files_are_not_listed(fs: NcFileSystem) -> None:
     (fs.root / "MPF" / "lower.mpf").write_text("N1\n")
     assert [e.name for e in fs.list_directory("MPF")] == ["LOWER.MPF"]
     assert fs.read("LOWER.MPF") == "N1\n"
+
+
+def test_every_shipped_training_program_is_installed(tmp_path: Path) -> None:
+    from nck.resources import data_path
+
+    shipped = {p.name.upper() for p in data_path("programs").rglob("*")
+               if p.suffix.upper() in (".MPF", ".SPF")}
+    fs = NcFileSystem(tmp_path / "nc")
+    installed = {path.rpartition("/")[2] for path in fs.install_samples(data_path("programs"))}
+    assert installed == shipped
