@@ -238,6 +238,8 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if mode == self._sit.mode:
             return Accepted()
         reason = mode_change_allowed(self._sit, mode, self._owner)
+        if reason is None and mode == "AUTO" and self._overlay is not None:
+            reason = "Interrupted MDA program: RESET before AUTOMATIC"
         if reason is not None:
             return Rejected(reason)
         new = situation_after_mode_change(self._sit, mode, self._owner)

@@ -311,6 +311,17 @@ class ProgramRun:
         """
         number, text = parse_search_target(target)
         result = SearchResult(found=False, position_mcs=dict(start_positions))
+        flags = getattr(self.interp, "flags", None)
+        if isinstance(flags, dict):
+            flags["search"] = True
+        try:
+            self._search_blocks(number, text, result)
+        finally:
+            if isinstance(flags, dict):
+                flags["search"] = False
+        return result
+
+    def _search_blocks(self, number: int | None, text: str, result: SearchResult) -> None:
         spindles: dict[int, SpindleCommand] = {}
         aux: dict[tuple[str, int | None], AuxFunction] = {}
         tool: ToolSelect | None = None
@@ -353,7 +364,6 @@ class ProgramRun:
             self._search = result
             self.phase = SEARCH_FOUND
             self.stop_reason = "search target found"
-        return result
 
     @staticmethod
     def _is_target(block: BlockResult, number: int | None, text: str) -> bool:

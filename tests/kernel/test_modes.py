@@ -212,3 +212,25 @@ def test_keyswitch_and_password_set_the_access_level() -> None:
     assert nck.status().access_level == 3
     nck.submit(c.DeletePassword())
     assert nck.status().access_level == 4
+
+
+def test_interrupted_mda_blocks_keep_auto_out_until_reset() -> None:
+    nck = make_nck({"P": "N10 G1 X100 F1000\nN20 M30"})
+    auto_start(nck, "P")
+    nck.tick(1.0)
+    nck.submit(c.CycleStop())
+    nck.submit(c.SelectMode("MDA"))
+    nck.submit(c.SetMdaProgram("G1 Z50 F600"))
+    nck.submit(c.CycleStart())
+    nck.tick(1.0)
+    nck.submit(c.CycleStop())
+    assert states(nck) == ("MDA", "interrupted", "interrupted")
+    assert isinstance(nck.submit(c.SelectMode("AUTO")), c.Rejected)
+    nck.submit(c.CycleStart())  # the MDA blocks finish
+    assert until_state(nck, "interrupted", "interrupted")
+    assert nck.positions_mcs()["Z"] == pytest.approx(50.0)
+    assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "reset", "aborted")
+    assert x(nck) == pytest.approx(100.0)
+    assert nck.positions_mcs()["Z"] == pytest.approx(0.0)  # REPOS undid the MDA move
