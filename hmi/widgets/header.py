@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from textual.app import ComposeResult
-from textual.containers import Vertical
+from textual.containers import Horizontal, Vertical
 from textual.widgets import Static
 
 from nck.status import NckStatus
@@ -70,17 +70,21 @@ class AreaHeader(Vertical):
         """The three lines."""
         yield Static("", id="hdr-state", markup=False)
         yield Static("", id="hdr-alarm", markup=False)
-        yield Static("", id="hdr-program", markup=False)
+        with Horizontal(id="hdr-line3"):
+            yield Static("", id="hdr-program", markup=False)
+            yield Static("", id="hdr-overrides", markup=False)
 
     def show(self, area_title: str, status: NckStatus | None, hint: str = "") -> None:
         """Show the header for ``status`` (updates only lines that changed)."""
         state = self.query_one("#hdr-state", Static)
         alarm = self.query_one("#hdr-alarm", Static)
         program = self.query_one("#hdr-program", Static)
+        overrides_line = self.query_one("#hdr-overrides", Static)
         if status is None:
             self._set(state, f" {area_title}  │ NCK not connected")
             self._set(alarm, "")
             self._set(program, "")
+            self._set(overrides_line, "")
             return
         channel = status.channel
         level = status.access_level
@@ -104,9 +108,8 @@ class AreaHeader(Vertical):
             f"Rapid {format_override(overrides.get('rapid', 100))} %   "
             f"Spindle {format_override(overrides.get('spindle', 100))} % "
         )
-        width = max(self.size.width, 80)
-        left = f" {selected}"
-        self._set(program, left + " " * max(1, width - len(left) - len(right)) + right)
+        self._set(program, f" {selected}")
+        self._set(overrides_line, right)
 
     @staticmethod
     def alarm_line(status: NckStatus, hint: str = "") -> tuple[str, str]:

@@ -30,9 +30,9 @@ from nck.canon import Motion
 Point3 = tuple[float, float, float]
 
 VIEWS: dict[str, tuple[int, int, str]] = {
-    "XY": (0, 1, "Top view XY"),
-    "XZ": (0, 2, "Side view XZ"),
-    "YZ": (1, 2, "Side view YZ"),
+    "XY": (0, 1, "Top view XY  (→X ↑Y)"),
+    "XZ": (0, 2, "Side view XZ  (→X ↑Z)"),
+    "YZ": (1, 2, "Side view YZ  (→Y ↑Z)"),
 }
 """Projection of each view: index of the horizontal and the vertical coordinate, and its title."""
 

@@ -129,7 +129,7 @@ async def test_override_switches_step_through_positions(fake: FakeNck, fake_app:
             await pilot.press("ctrl+pageup")
         assert fake.overrides["spindle"] == 120
         await pilot.pause()
-        assert "Feed 95 %" in str(fake_app.screen.query_one("#hdr-program").render())
+        assert "Feed 95 %" in str(fake_app.screen.query_one("#hdr-overrides").render())
 
 
 async def test_alarm_line_shows_newest_alarm_and_f12_cancels(fake: FakeNck, fake_app: HmiApp) -> None:
