@@ -49,6 +49,9 @@ Rules implemented (Function Manual W1 §18.5; Programming Guide 840C ch. 11):
   MD20240 blocks ahead are searched (the blocks in between are skipped,
   warning 10763); none found: alarm 10751. With CDON non-adjacent blocks are
   always checked and the last intersection wins.
+* Retraction (G462, the initial setting): if the last block's offset has no
+  intersection with the one before, it is extended by its end tangent; where
+  that meets the previous offset the tool stops and retracts.
 * Arcs are offset to radius R ∓ r; an inside arc whose radius is smaller than
   the compensation: alarm 10758.
 * Up to MD20250 consecutive blocks without plane motion; one more: alarm 10762.
@@ -636,8 +639,47 @@ class RadiusCompensator:
 
     # ------------------------------------------------------------- retraction
 
+    def _retract_extended(self, element: ContourElement) -> list[CompensatedElement] | None:
+        """G462: the last block has no intersection with the one before; extend it.
+
+        Its offset is prolonged by its end tangent; where that meets the previous
+        offset the tool stops and retracts (the rest of the corner stays unmachined).
+        Returns None when this does not apply (the caller raises 10751).
+        """
+        if len(self._pieces) != 2 or self._pieces[1].role != "contour":
+            return None
+        head, last = self._pieces
+        end = last.curve.end
+        ray = line(end, add(end, tangent_end(last.curve)))
+        found = [
+            point for point in intersections(head.curve, ray)
+            if contains(head.curve, point) and param(ray, point) >= -EPS_MM
+        ]
+        if not found:
+            return None
+        crossing = min(found, key=lambda point: param(head.curve, point))
+        out = self._emit(head, head.curve.with_end(crossing))
+        out.append(self._dummy_output(last.owner, crossing, "contour"))
+        for dummy in last.trailing:
+            out.append(self._dummy_output(dummy, crossing))
+        out.append(self._make(element, line(crossing, element.end), "retract"))
+        self._pieces = []
+        self._state = "off"
+        self._resume = None
+        return out
+
     def _retract(self, element: ContourElement) -> list[CompensatedElement]:
-        out = self._drain(0)
+        out: list[CompensatedElement] = []
+        while len(self._pieces) > 1:
+            try:
+                out += self._resolve_head()
+            except NcAlarmError as error:
+                if error.number != ALARM_COLLISION:
+                    raise
+                extended = self._retract_extended(element)
+                if extended is None:
+                    raise
+                return out + extended
         if not self._pieces:
             # Deselection right after a flush: go from the offset point to the end point.
             point = self._resume[0] if self._resume is not None else element.start

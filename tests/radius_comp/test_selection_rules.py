@@ -321,3 +321,23 @@ def test_cdon_finds_the_bottleneck_past_an_adjacent_intersection():
     with pytest.raises(NcAlarmError) as info:
         compensate(blocks(False))
     assert info.value.number == 10751
+
+
+def test_short_last_block_g462_extends_it_by_its_end_tangent():
+    # Manual example (W1 G461/G462): G42, r = 20; N10 along −X on y = 0, N20 only
+    # 10 mm up, then G40 to (50, 50). The offsets y = 20 (N10) and x = 20 (N20, y 0…10)
+    # do not meet; G462 extends N20 by its end tangent (x = 20 upwards) to (20, 20):
+    # the tool stops there and retracts; N20 itself has no motion left in the plane.
+    blocks = [
+        lin((130, 20), (110, 0), "N5", side="G42", radius=20),
+        lin((110, 0), (0, 0), "N10", side="G42", radius=20),
+        lin((0, 0), (0, 10), "N20", side="G42", radius=20),
+        lin((0, 10), (50, 50), "N30", side="G40"),
+    ]
+    out = compensate(blocks)
+    assert_path(out, [
+        ("N5", "G1", (130, 20), (110, 20)),
+        ("N10", "G1", (110, 20), (20, 20)),
+        ("N20", "dummy", (20, 20), (20, 20)),
+        ("N30", "G1", (20, 20), (50, 50)),
+    ])
