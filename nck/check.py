@@ -18,12 +18,15 @@ motions, for the toolpath simulation.
 from __future__ import annotations
 
 import functools
+import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterator
 
 from nck.canon import CanonCommand, Motion
 from nck.errors import NcAlarmError
 from nck.resources import alarm_text
+
+_BLOCK_NUMBER = re.compile(r"\s*(?:/\d?\s*)?[Nn](\d+)\b")
 
 MAX_RUN_BLOCKS = 200_000
 """A headless run stops after this many interpreted blocks (endless loops end)."""
@@ -64,7 +67,8 @@ class RunResult:
 
 def _alarm(error: NcAlarmError, fallback_line: int | None = None) -> CheckAlarm:
     line = error.line if error.line is not None else fallback_line
-    params = ("1", str(error.n if error.n is not None else (line if line is not None else "")))
+    block = f"N{error.n}" if error.n is not None else (str(line) if line is not None else "")
+    params = ("1", block)
     return CheckAlarm(
         number=error.number,
         line=line,
@@ -103,6 +107,9 @@ def iter_syntax_alarms(text: str) -> Iterator[CheckAlarm]:
         problem = _line_problem(line)
         if problem is not None:
             number, params, n = problem
+            if n is None:
+                block = _BLOCK_NUMBER.match(line)
+                n = int(block.group(1)) if block else None
             yield _alarm(NcAlarmError(number, *params, line=index, n=n), index)
 
 

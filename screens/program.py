@@ -133,7 +133,7 @@ class ProgramScreen(AreaBase):
     def on_screen_resume(self) -> None:
         """Back in the area: open what the Program manager asked for, else the last program."""
         super().on_screen_resume()
-        if self.is_mounted:
+        if self._ready:
             self._open_requested()
             self._update_read_only()
 
@@ -145,6 +145,11 @@ class ProgramScreen(AreaBase):
             return False
         self.open_program(requested)
         return True
+
+    @property
+    def _ready(self) -> bool:
+        """True once the windows exist (``is_mounted`` is still False inside ``on_mount``)."""
+        return bool(self.query("#prog-editor"))
 
     def say(self, text: str) -> None:
         """Write ``text`` on the dialog line (kept when the area is shown again)."""
@@ -168,9 +173,9 @@ class ProgramScreen(AreaBase):
                         active=lambda s: s.search_open),
                 Softkey("program.renumber", "Renumber", "renumber", enabled=writable),
                 Softkey("program.save", "Save", "save", enabled=writable),
-                Softkey("program.simulate", "Simula-\ntion", "simulate", enabled=has_program),
+                Softkey("program.simulate", "Simulation", "simulate", enabled=has_program),
                 Softkey("program.execute", "Execute", "execute", enabled=has_program),
-                Softkey("program.manager", "Program\nmanager", "app.switch_area('program_manager')"),
+                Softkey("program.manager", "Programs", "app.switch_area('program_manager')"),
                 Softkey("program.close", "Close", "close", enabled=has_program),
             ],
             [
@@ -222,7 +227,7 @@ class ProgramScreen(AreaBase):
                 Softkey("sim.zoom_in", "Zoom +", "sim_zoom(1)"),
                 Softkey("sim.zoom_out", "Zoom -", "sim_zoom(-1)"),
                 Softkey("sim.fit", "Fit", "sim_fit"),
-                Softkey("sim.rerun", "Recal-\nculate", "simulate_run"),
+                Softkey("sim.rerun", "Recalculate", "simulate_run"),
                 Softkey("sim.back", "Editor", "simulate"),
             ],
             [
@@ -463,7 +468,7 @@ class ProgramScreen(AreaBase):
             reason = "program is in use (selected)"
         changed = reason != self.read_only_reason
         self.read_only_reason = reason
-        if self.is_mounted:
+        if self._ready:
             self.editor.read_only = bool(reason)
             if changed and reason == "program is being executed":
                 self.say(f"{self.program} is being executed: editing is not possible")
@@ -499,7 +504,7 @@ class ProgramScreen(AreaBase):
         self._show_cursor_message()
 
     def _show_cursor_message(self) -> None:
-        if not self.is_mounted:
+        if not self._ready:
             return
         mark = self.editor.error_at_cursor()
         message = self.query_one("#prog-message", Static)
@@ -514,7 +519,7 @@ class ProgramScreen(AreaBase):
             message.set_class(False, "-error")
 
     def _update_title(self) -> None:
-        if not self.is_mounted:
+        if not self._ready:
             return
         title = self.query_one("#prog-title", Static)
         if self.program is None:
@@ -577,7 +582,7 @@ class ProgramScreen(AreaBase):
             self.app.call_from_thread(self._apply_marks, generation, batch, True)
 
     def _apply_marks(self, generation: int, marks: list[ErrorMark], done: bool) -> None:
-        if generation != self._generation or not self.is_mounted:
+        if generation != self._generation or not self._ready:
             return
         first = self._marks_generation != generation
         self._marks_generation = generation
@@ -846,7 +851,7 @@ class ProgramScreen(AreaBase):
 
     # -- view switching --------------------------------------------------------------------------
     def _show_view(self) -> None:
-        if not self.is_mounted:
+        if not self._ready:
             return
         self.editor.display = not self.simulating
         self.toolpath.display = self.simulating

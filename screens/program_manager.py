@@ -134,6 +134,7 @@ class ProgramManagerScreen(AreaBase):
         """Columns, tree, first listing."""
         super().on_mount()
         table = self.table
+        table.add_column(" ", key="mark", width=1)
         table.add_column("Name", key="name", width=34)
         table.add_column("Type", key="type", width=6)
         table.add_column("Length", key="size", width=10)
@@ -145,8 +146,13 @@ class ProgramManagerScreen(AreaBase):
     def on_screen_resume(self) -> None:
         """Back in the area: list again (files may have changed in the editor)."""
         super().on_screen_resume()
-        if self.is_mounted:
+        if self._ready:
             self.refresh_listing()
+
+    @property
+    def _ready(self) -> bool:
+        """True once the windows exist (``is_mounted`` is still False inside ``on_mount``)."""
+        return bool(self.query("#pm-list"))
 
     def say(self, text: str) -> None:
         """Write ``text`` on the dialog line (kept when the area is shown again)."""
@@ -233,7 +239,7 @@ class ProgramManagerScreen(AreaBase):
 
     def refresh_listing(self, select: str | None = None) -> None:
         """Read the directory again and redraw the list (cursor on ``select`` if given)."""
-        if not self.is_mounted:
+        if not self._ready:
             return
         table = self.table
         previous = select or (self.current_entry().path if self.current_entry() else None)
@@ -247,11 +253,12 @@ class ProgramManagerScreen(AreaBase):
         table.clear()
         for entry in self.entries:
             marked = entry.kind != "WPD" and entry.name.upper() == selected_name
-            name = Text(("▶ " if marked else "  ") + entry.name + ("/" if entry.kind == "WPD" else ""))
+            mark = Text("▶" if marked else " ", style="bold #f39200")
+            name = Text(entry.name + ("/" if entry.kind == "WPD" else ""))
             if marked:
                 name.stylize("bold #f39200")
             size = Text(f"{entry.size_bytes}", justify="right")
-            table.add_row(name, entry.kind, size, format_modified(entry.modified_ns), key=entry.path)
+            table.add_row(mark, name, entry.kind, size, format_modified(entry.modified_ns), key=entry.path)
         if previous:
             for index, entry in enumerate(self.entries):
                 if entry.path == previous:
@@ -272,7 +279,7 @@ class ProgramManagerScreen(AreaBase):
 
     def current_entry(self) -> ProgramEntry | None:
         """The entry under the list cursor."""
-        if not self.is_mounted or not self.entries:
+        if not self._ready or not self.entries:
             return None
         row = self.table.cursor_row
         return self.entries[row] if 0 <= row < len(self.entries) else None
@@ -287,7 +294,7 @@ class ProgramManagerScreen(AreaBase):
 
     def update_status(self, status: NckStatus) -> None:
         """A new snapshot: the selection mark may have moved."""
-        if not self.is_mounted:
+        if not self._ready:
             return
         selected = status.channel.selected_program
         if selected != getattr(self, "_shown_selection", None) or _executing_program(status) != getattr(

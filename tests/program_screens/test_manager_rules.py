@@ -95,8 +95,8 @@ async def test_program_being_executed_cannot_be_renamed_or_deleted(data_dir: Pat
         await open_manager(pilot)
         await pilot.pause()
         manager = app.screen
-        row = str(manager.table.get_row_at(0)[0])
-        assert row.startswith("▶ DEMO.MPF")
+        mark, name = (str(cell) for cell in manager.table.get_row_at(0)[:2])
+        assert (mark, name) == ("▶", "DEMO.MPF")
         await pilot.press("f7")
         await pilot.pause()
         assert "cannot be deleted" in hint(app)

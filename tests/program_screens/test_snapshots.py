@@ -1,0 +1,87 @@
+"""SVG snapshots of the Program manager, the editor with an error mark, and the simulation.
+
+Real kernel and NC file system, 160×48, file dates pinned (mtime and time zone),
+no cursor blink; checks and the simulation run to completion before the picture.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+
+import pytest
+
+from tests.program_screens.conftest import SIZE, make_program_app, settle
+
+PINNED_NS = 1_790_000_000 * 10**9  # 2026-09-21 14:13 UTC
+
+
+@pytest.fixture
+def pinned(data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The data directory with a second program and a subprogram, every date pinned, TZ=UTC."""
+    (data_dir / "MPF" / "POCKET.MPF").write_text("N10 G0 X0 Y0\nN20 M30\n")
+    (data_dir / "SPF" / "CONTOUR.SPF").write_text("G1 X10\nM17\n")
+    for folder in ("MPF", "SPF"):
+        for path in (data_dir / folder).iterdir():
+            os.utime(path, ns=(PINNED_NS, PINNED_NS))
+    monkeypatch.setenv("TZ", "UTC")
+    time.tzset()
+    yield data_dir
+    monkeypatch.undo()
+    time.tzset()
+
+
+def test_program_manager(snap_compare, pinned: Path) -> None:
+    """Part programs listed with type, length and date; POCKET.MPF selected for execution (▶)."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+t", "alt+n", "down", "f1")  # select POCKET.MPF
+        await pilot.pause()
+        await pilot.press("alt+n")
+        await pilot.pause()
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_editor_with_error_mark(snap_compare, pinned: Path) -> None:
+    """DEMO.MPF with a faulty block: gutter mark on line 4, alarm 12080 in the message line."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3")
+        await pilot.pause()
+        await pilot.press("down", "down", "down", "end", *" Y==2")
+        pilot.app.screen.check_now()
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_simulation_side_view(snap_compare, pinned: Path) -> None:
+    """Simulation of DEMO.MPF in the side view XZ: rapid moves dashed, feed moves solid."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        await pilot.press("f5")
+        await settle(pilot)
+        await pilot.press("f2")
+        await pilot.pause()
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_simulation_top_view(snap_compare, pinned: Path) -> None:
+    """Simulation of DEMO.MPF, top view XY: the 40 × 30 rectangle and the origin cross."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        await pilot.press("f5")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
