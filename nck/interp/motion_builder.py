@@ -50,6 +50,9 @@ ALARM_G96_WITHOUT_S = 10900  # first G96 without a cutting speed S
 ALARM_LIMS_NEGATIVE = 14820  # negative maximum spindle speed for G96 (LIMS)
 ALARM_NO_FEED = 10860
 ALARM_PATH_VELOCITY = 14800
+ALARM_ADDRESS_TOO_OFTEN = 12010  # address type programmed too often
+AUX_LIMITS = {"M": 5, "S": 3, "H": 3, "T": 1, "D": 1, "F": 6}  # per block (H2, 828D)
+AUX_LIMIT_TOTAL = 10
 
 
 @dataclass
@@ -104,6 +107,7 @@ class MotionBuilder:
             self.path.select_settable(modal, geo)
         if words.gcodes.get(2) == "G4":
             return self._dwell(words, modal)
+        _check_aux_limits(words)
         out: list[canon.CanonCommand] = []
         src = words.source
         self._feed(words, modal, geo)
@@ -322,6 +326,27 @@ class MotionBuilder:
         if abs(rpm - modal.spindle_speed_rpm) > 1e-6:
             modal.spindle_speed_rpm = rpm
             out.append(canon.SpindleCommand(src, 1, speed_rpm=rpm))
+
+
+def _check_aux_limits(words: BlockWords) -> None:
+    """Auxiliary functions per block (H2): M ≤ 5, S ≤ 3, H ≤ 3, T ≤ 1, D ≤ 1, F/FA ≤ 6, all ≤ 10.
+
+    Raises:
+        NcAlarmError: 12010 (address type programmed too often) naming the address.
+    """
+    counts = {
+        "M": len(words.m_codes),
+        "S": len({ext or 1 for (a, ext) in words.extended if a == "S"} | ({1} if "S" in words.words else set())),
+        "H": len(words.h_codes),
+        "T": len({ext for (a, ext) in words.extended if a == "T"} | ({0} if "T" in words.words else set())),
+        "D": len({ext for (a, ext) in words.extended if a == "D"} | ({0} if "D" in words.words else set())),
+        "F": sum(1 for k in words.words if k == "F" or k.startswith("FA[")),
+    }
+    for address, count in counts.items():
+        if count > AUX_LIMITS[address]:
+            raise NcAlarmError(ALARM_ADDRESS_TOO_OFTEN, address)
+    if sum(counts.values()) > AUX_LIMIT_TOTAL:
+        raise NcAlarmError(ALARM_ADDRESS_TOO_OFTEN, "M/S/H/T/D/F")
 
 
 def _feed_family(feed_type: str) -> str:

@@ -94,3 +94,16 @@ def test_reset_clears_the_programmable_frame_and_the_pole() -> None:
     geo = r.interp.modal.geometry
     assert geo.frames.programmable.is_identity()
     assert geo.polar.pole is None
+
+
+def test_aux_function_limits_per_block() -> None:
+    run(lines("N10 M7 M8 M9 M10 M11 H1 H2 H3", "N20 M30"))  # 5 M + 3 H = 8: allowed
+    assert alarm(lines("N10 M7 M8 M9 M10 M11 M12", "N20 M30")) == 12010  # 6 M
+    assert alarm(lines("N10 H1 H2 H3 H4", "N20 M30")) == 12010
+    assert alarm(lines("N10 M7 M8 M9 M10 M11 H1 H2 H3 S100 F100 D1", "N20 M30")) == 12010  # 11 in all
+
+
+def test_aux_output_order() -> None:
+    r = run(lines("N10 G1 X10 F100 M8 H5 S200 M3 T1 D1", "N20 M30"))
+    kinds = [type(c).__name__ for c in r.commands if c.source.n == 10]
+    assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "AuxFunction", "AuxFunction", "Motion"]
