@@ -50,6 +50,10 @@ class Motion:
             a mirroring or rotating frame can make the machine turn the other way or in
             another plane: G3 in G17 without frames gives ``{"X": 0, "Y": 0, "Z": 1}``,
             G2 gives Z = -1; with ``MIRROR X0`` a G2 gives Z = +1.
+        contour_end_wcs: with tool radius compensation active, the programmed contour end
+            point of the block (``end_wcs`` is then the compensated tool path); None
+            otherwise and for NC-inserted segments.
+        contour_center_wcs: likewise the programmed arc centre (arcs only).
     """
 
     kind: str
@@ -69,6 +73,8 @@ class Motion:
     gcodes: Mapping[int, str] = field(default_factory=dict)
     inserted: bool = False
     arc_normal_mcs: Mapping[str, float] | None = None
+    contour_end_wcs: Mapping[str, float] | None = None
+    contour_center_wcs: Mapping[str, float] | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -169,6 +169,12 @@ class TrcStage:
         )
         if hasattr(template, "arc_normal_mcs"):
             changes["arc_normal_mcs"] = normal
+        if hasattr(template, "contour_end_wcs") and not out.inserted and out.role != "approach":
+            # The programmed contour stays visible next to the compensated path.
+            changes["contour_end_wcs"] = dict(template.end_wcs)
+            changes["contour_center_wcs"] = (
+                dict(template.center_wcs) if template.center_wcs is not None else None
+            )
         if out.kind in ("G2", "G3"):
             changes["turns"] = 0
         return replace(template, **changes)

@@ -168,3 +168,19 @@ N40 M30
 """)
     assert [a.number for a in result.alarms] == [10757]
     assert result.alarms[0].line == 4
+
+
+def test_programmed_contour_stays_available():
+    result = mill(RECTANGLE)
+    by_block = {}
+    for motion in result.motions:
+        if motion.contour_end_wcs is not None:
+            by_block[motion.source.n] = motion.contour_end_wcs
+    assert (by_block[20]["X"], by_block[20]["Y"]) == (0.0, 30.0)
+    assert (by_block[30]["X"], by_block[30]["Y"]) == (50.0, 30.0)
+    assert (by_block[60]["X"], by_block[60]["Y"]) == (-20.0, -20.0)
+    inserted = [m for m in result.motions if m.inserted]
+    assert inserted and all(m.contour_end_wcs is None for m in inserted)
+    # Without compensation nothing is set.
+    plain = mill(RECTANGLE.replace("G41 ", "").replace("G40 ", ""))
+    assert all(m.contour_end_wcs is None for m in plain.motions)
