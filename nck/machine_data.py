@@ -357,6 +357,19 @@ class WriteResult:
         return ACTIVATION_TEXT[self.activation]
 
 
+@dataclass(frozen=True, slots=True)
+class DataRow:
+    """One line of a machine/setting data list as the Setup and Parameter screens show it."""
+
+    ref: DataRef
+    value_text: str
+    unit: str
+    activation: str  # so / re / cf / po
+    write_level: int
+    pending: bool  # stored value not active yet
+    title: str
+
+
 class MachineDataStore:
     """Machine and setting data values of one machine, with stored vs active values.
 
@@ -451,6 +464,23 @@ class MachineDataStore:
         if definition is None:
             return None
         return int(self._read(self._active, DataRef(definition)))
+
+    def rows(self, kind: str = "md", scope: str | None = None, axis: str | None = None,
+             search: str | None = None, level: int = 0) -> list[DataRow]:
+        """The list of a data area: ``kind`` ``md``/``sd``, ``scope`` ``general``,
+        ``channel``, ``axis`` or ``display`` (None = all), axis data for ``axis``
+        (default: the first axis); only data ``level`` may read; ``search`` filters
+        by number, identifier or title."""
+        found = self.catalog.find(search) if search else list(self.catalog)
+        chosen_axis = axis or (self.axes[0] if self.axes else None)
+        rows = []
+        for d in found:
+            if d.kind != kind or (scope is not None and d.scope != scope) or level > d.read_level:
+                continue
+            ref = DataRef(d, chosen_axis if d.per_axis else None)
+            rows.append(DataRow(ref, format_value(d, self.value(ref)), d.unit, d.activation,
+                                self.required_write_level(ref), self.is_pending(ref), d.title))
+        return rows
 
     # ---------------------------------------------------------------- writes
     def required_write_level(self, ref: DataRef | str) -> int:
@@ -588,7 +618,7 @@ def unknown_machine_keys(machine: MachineConfig, cat: Catalog | None = None) -> 
 
 
 __all__ = [
-    "ACTIVATION_TEXT", "Catalog", "DataDefinition", "DataError", "DataRef", "DataValueError",
+    "ACTIVATION_TEXT", "Catalog", "DataDefinition", "DataError", "DataRef", "DataRow", "DataValueError",
     "LEVEL_FEWEST_RIGHTS", "MachineDataStore", "UnknownDataError", "WriteResult", "catalog",
     "fill_setting_defaults", "format_value", "number_of", "parse_ref", "unknown_machine_keys",
 ]

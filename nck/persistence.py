@@ -436,6 +436,19 @@ class Session:
         """The machine with the active MD values (build the kernel from this)."""
         return self.md.active_machine()
 
+    def kernel_arguments(self) -> dict[str, Any]:
+        """Keyword arguments for ``nck.kernel.Nck`` on this data directory::
+
+            nck = Nck(**session.kernel_arguments(), referenced=False)
+            for alarm in session.startup_alarms:
+                nck.raise_alarm(alarm)
+            ...
+            session.save()          # after changes (and on quit)
+            session = session.power_on()   # "Reset (po)": build a new Nck from it
+        """
+        return {"machine": self.active_machine(), "data": self.ncdata,
+                "programs": self.files, "access": self.access}
+
     def power_on(self) -> "Session":
         """Save, then start again from the files: every stored MD becomes active."""
         self.save()

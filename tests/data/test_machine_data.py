@@ -192,3 +192,19 @@ def test_number_of_identifier() -> None:
     assert number_of("$MA_MAX_AX_VELO") == 32000
     assert number_of("$SC_DRY_RUN_FEED") == 42100
     assert number_of("NO_SUCH_DATUM") is None
+
+
+def test_rows_for_the_setup_lists() -> None:
+    store = MachineDataStore(load_machine(), setting_data={})
+    axis_rows = store.rows("md", "axis", axis="Y")
+    row = next(r for r in axis_rows if r.ref.definition.number == 32000)
+    assert (row.ref.text, row.value_text, row.unit, row.activation, row.write_level) == (
+        "MD32000[Y]", "30000", "mm/min", "cf", 2)
+    assert all(r.ref.definition.scope == "axis" for r in axis_rows)
+    store.write("MD32000[Y]", 1000, level=2)
+    assert next(r for r in store.rows("md", "axis", axis="Y") if r.ref.definition.number == 32000).pending
+    assert [r.ref.text for r in store.rows("md", search="DRYRUN")] == ["MD10704"]
+    assert [r.ref.text for r in store.rows("sd", search="42100")] == ["SD42100"]
+    assert "MD20154" not in [r.ref.text for r in store.rows("md", "channel", level=7)]
+    assert {r.ref.definition.scope for r in store.rows("sd")} == {"general", "channel", "axis"}
+    assert store.rows("sd", "channel")[0].write_level == 4  # USER_CLASS_WRITE_SEA

@@ -66,3 +66,17 @@ def test_programs_of_the_data_dir_run_in_the_kernel(tmp_path: Path) -> None:
     assert nck.run_until(lambda k: k.status().channel.channel_state == "reset", 30.0)
     assert nck.positions_mcs()["X"] == pytest.approx(20.0)
     assert nck.positions_mcs()["Y"] == pytest.approx(5.0)
+
+
+def test_kernel_arguments_and_startup_alarms(tmp_path: Path) -> None:
+    Session.open(tmp_path, install_samples=False).save()
+    (tmp_path / "retained" / "counters.json").write_text("garbage")
+    session = Session.open(tmp_path, install_samples=False)
+    nck = Nck(**session.kernel_arguments(), referenced=True)
+    for alarm in session.startup_alarms:
+        nck.raise_alarm(alarm)
+    numbers = [a.number for a in nck.status().alarms]
+    assert numbers == [4060]
+    assert "counters.json" in nck.status().alarms[0].text
+    session.access.set_keyswitch(3)
+    assert nck.status().access_level == 4
