@@ -309,3 +309,33 @@ def test_step_shorter_than_radius_is_skipped_with_warning_10763():
     ])
     assert out[2].warning == 10763 and out[2].role == "skipped"
     assert all(o.warning is None for o in out if o.source != "N30")
+
+
+def test_programming_guide_contour_11_15():
+    # Complete contour of the 840C Programming Guide example 11.15 (G41 G450 D1) with
+    # R = 5: outside corners get circles, inside corners are cut, arcs are offset.
+    # Every compensated element stays exactly 5 mm from the programmed contour.
+    from nck.geometry.trc_geometry import distance_to_curve, sample
+
+    pts = [(30, 60), (40, 80)]
+    blocks = [lin((15, 60), (30, 60), "N10"), lin((30, 60), (40, 80), "N20"),
+              circ((40, 80), (65, 55), (40, 55), "N30", ccw=False),
+              lin((65, 55), (95, 55), "N40"),
+              circ((95, 55), (110, 70), (110, 55), "N50", ccw=False)]
+    pts = [(110, 70), (105, 55), (110, 35), (90, 35), (65, 15), (40, 40), (30, 60)]
+    blocks += [lin(a, b, f"N{60 + 10 * i}") for i, (a, b) in enumerate(zip(pts, pts[1:]))]
+    blocks.append(lin((30, 60), (15, 60), "N120", side="G40"))
+    out = compensate(blocks)
+    assert_continuous(out)
+    contour = [b.curve() for b in blocks[1:-1]]
+    checked = 0
+    for element in out:
+        if element.role in ("contour", "corner") and element.kind != "dummy":
+            for point in sample(element.curve(), 10):
+                assert min(distance_to_curve(point, c) for c in contour) == pytest.approx(R, abs=1e-6)
+                checked += 1
+    assert checked > 100
+    # Every block from N20 to N110 is present; the arcs keep their direction and centre.
+    assert [o.source for o in out if o.role == "contour"] == [f"N{n}" for n in range(20, 120, 10)]
+    arcs = {o.source: o for o in out if o.role == "contour" and o.kind == "G2"}
+    assert arcs["N30"].center == (40, 55) and arcs["N50"].center == (110, 55)
