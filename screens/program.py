@@ -480,11 +480,15 @@ class ProgramScreen(AreaBase):
         """A new snapshot: read-only while executing; current block in the simulation."""
         self._update_read_only()
         if self.simulating:
-            block = status.channel.current_block
-            line = None
-            if block is not None and self.program and Path(block.file).name.upper() == Path(self.program).name.upper():
-                line = block.line
-            self.toolpath.current_line = line
+            self._mark_current_block(status)
+
+    def _mark_current_block(self, status: NckStatus | None) -> None:
+        """Mark the block being executed in the simulation (only for the program shown)."""
+        line = None
+        block = status.channel.current_block if status is not None else None
+        if block is not None and self.program and Path(block.file).name.upper() == Path(self.program).name.upper():
+            line = block.line
+        self.toolpath.current_line = line
 
     # -- editing events ----------------------------------------------------------------------
     def on_text_area_changed(self, event: TextArea.Changed) -> None:
@@ -798,6 +802,7 @@ class ProgramScreen(AreaBase):
         self._show_view()
         self.refresh_softkeys()
         if self.simulating:
+            self._mark_current_block(self.status)
             self.action_simulate_run()
             self.toolpath.focus()
         else:

@@ -285,3 +285,26 @@ async def test_large_program_opens_and_scrolls(data_dir: Path) -> None:
         assert opened_s < 60, opened_s
         await settle(pilot)
         assert 199_999 in screen.editor.error_marks
+
+
+async def test_simulation_marks_the_current_block_in_auto(data_dir: Path) -> None:
+    """While the program runs in AUTO (single block), the simulation marks the executing block."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+t", "alt+n", "f1")  # keyswitch 1, Execute DEMO.MPF → Machine area
+        await pilot.pause()
+        assert app.current_mode == "machine"
+        await pilot.press("alt+k", "alt+g", "alt+g", "alt+g")  # single block: three blocks
+        app.bridge.run_until(lambda s: s.channel.channel_state != "active", max_s=30)
+        await pilot.press("alt+n", "f3")  # open DEMO.MPF in the editor (read-only: in use)
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "MPF/DEMO.MPF"
+        await pilot.press("f5")  # Simulation
+        await settle(pilot)
+        app.bridge.advance(0.05)
+        await pilot.pause()
+        block = app.bridge.status.channel.current_block
+        assert block is not None and block.line > 1
+        assert screen.toolpath.current_line == block.line
+        assert any(p.line == block.line for p in screen.toolpath.pieces)
