@@ -204,7 +204,7 @@ def test_rows_for_the_setup_lists() -> None:
     store.write("MD32000[Y]", 1000, level=2)
     assert next(r for r in store.rows("md", "axis", axis="Y") if r.ref.definition.number == 32000).pending
     assert [r.ref.text for r in store.rows("md", search="DRYRUN")] == ["MD10704"]
-    assert [r.ref.text for r in store.rows("sd", search="42100")] == ["SD42100"]
+    assert [r.ref.text for r in store.rows("sd", search="DRY_RUN_FEED_MODE")] == ["SD42101"]
     assert "MD20154" not in [r.ref.text for r in store.rows("md", "channel", level=7)]
     assert {r.ref.definition.scope for r in store.rows("sd")} == {"general", "channel", "axis"}
     assert store.rows("sd", "channel")[0].write_level == 4  # USER_CLASS_WRITE_SEA
