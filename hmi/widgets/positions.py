@@ -35,7 +35,7 @@ def position_lines(status: NckStatus, mcs: bool, selected_axis: str | None) -> T
         text.append(f"{marker}{axis.name:<4}", style="bold")
         text.append("   ")
         text.append(format_mm(axis.position_mcs if mcs else axis.position_wcs, 17) + "°")
-        text.append(f"{axis.speed_rpm:>13.0f} rpm\n")
+        text.append(f"{axis.speed_rpm:>13.0f} rpm  {status.channel.modal.spindle_state}\n")
     return text
 
 
@@ -58,7 +58,7 @@ class PositionWindow(Static):
 
     def show(self, status: NckStatus, mcs: bool, selected_axis: str | None) -> None:
         """Redraw only when the axes, the coordinate system or the selection changed."""
-        key = (status.axes, mcs, selected_axis)
+        key = (status.axes, status.channel.modal.spindle_state, mcs, selected_axis)
         if key == self._key:
             return
         self._key = key
