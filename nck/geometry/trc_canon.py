@@ -40,7 +40,8 @@ ALARM_PLANE_CHANGE = 10757  # G17/G18/G19 changed while G41/G42 is active
 SIDES = ("G40", "G41", "G42")
 CORNER_MODES = ("G450", "G451")
 APPROACH_MODES = ("NORM", "KONT", "KONTT", "KONTC")
-COMPENSATED_KINDS = ("G0", "G1", "G2", "G3")
+COMPENSATED_KINDS = ("G0", "G1", "G2", "G3", "CIP", "CT")
+ARC_KINDS = ("G2", "G3", "CIP", "CT")
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,6 +70,7 @@ class TrcStage:
         self.serial = 0
         self.last_end_mcs: dict[str, float] | None = None
         self.plane: str | None = None
+        self.tips: dict[int, tuple[float, float]] = {}
 
     # ------------------------------------------------------------------ input
     def _element(self, motion: canon.Motion | None, modal: Any, data: Any, key: TrcKey,
@@ -80,6 +82,8 @@ class TrcStage:
         side = _member(gcodes, SIDES, "G40")
         edge = resolve_edge(data, modal.tool, modal.edge) if side != "G40" else None
         radius = effective_radius(edge, int(data.setting_data.get("SD42930", 0) or 0))
+        if edge is not None:
+            self.tips[key.serial] = reference_offset(edge.tool_type, int(edge.get(2)), radius)
         state = dict(
             side=side,
             radius_mm=radius,
@@ -98,11 +102,13 @@ class TrcStage:
         end = (motion.end_mcs.get(a, 0.0), motion.end_mcs.get(b, 0.0))
         kind = motion.kind
         center = None
-        if kind in ("G2", "G3") and motion.center_mcs is not None:
+        if kind in ARC_KINDS and motion.center_mcs is not None:
             center = (motion.center_mcs.get(a, 0.0), motion.center_mcs.get(b, 0.0))
             normal = getattr(motion, "arc_normal_mcs", None)
             if normal:
                 kind = "G3" if float(normal.get(c, 0.0)) > 0 else "G2"
+            elif kind not in ("G2", "G3"):
+                kind = "G3"
         geometry_axis = any(
             abs(motion.end_mcs.get(axis, 0.0) - motion.start_mcs.get(axis, 0.0)) > 1e-9
             for axis in (a, b, c)
@@ -120,10 +126,9 @@ class TrcStage:
             self.last_end_mcs = dict(template.end_mcs)
             return template
         a, b, _c = plane_axes(template.plane)
-        edge = resolve_edge(data, modal.tool, modal.edge) if modal.edge else None
         tip = (0.0, 0.0)
-        if edge is not None and out.programmed is not None:
-            tip = reference_offset(edge.tool_type, int(edge.get(2)), out.programmed.radius_mm)
+        if out.programmed is not None and isinstance(out.programmed.source, TrcKey):
+            tip = self.tips.get(out.programmed.source.serial, tip)
 
         def placed(point: tuple[float, float], base: Mapping[str, float]) -> dict[str, float]:
             values = dict(base)
@@ -159,7 +164,7 @@ class TrcStage:
             normal[plane_axes(template.plane)[2]] = 1.0 if out.kind == "G3" else -1.0
             if out.programmed is not None and out.programmed.mirrored:
                 kind = "G2" if out.kind == "G3" else "G3"
-        elif kind in ("G2", "G3"):
+        elif kind in ARC_KINDS:
             kind = "G1"
         self.last_end_mcs = dict(end_mcs)
         changes: dict[str, Any] = dict(
@@ -175,7 +180,7 @@ class TrcStage:
             changes["contour_center_wcs"] = (
                 dict(template.center_wcs) if template.center_wcs is not None else None
             )
-        if out.kind in ("G2", "G3"):
+        if out.kind in ("G2", "G3") and (out.inserted or out.role != "contour"):
             changes["turns"] = 0
         return replace(template, **changes)
 
@@ -188,6 +193,7 @@ class TrcStage:
             if isinstance(out.source, TrcKey):
                 for serial in [s for s in self.templates if s < out.source.serial]:
                     del self.templates[serial]
+                    self.tips.pop(serial, None)
         return result
 
     # ------------------------------------------------------------------ API
