@@ -184,3 +184,26 @@ def test_programmed_contour_stays_available():
     # Without compensation nothing is set.
     plain = mill(RECTANGLE.replace("G41 ", "").replace("G40 ", ""))
     assert all(m.contour_end_wcs is None for m in plain.motions)
+
+
+def test_mirror_gives_the_mirror_image_of_the_compensated_path():
+    # MIRROR X0 swaps G41/G42 in the machine: the MCS path is the exact mirror image,
+    # the WCS path (and the displayed G2 of the corner circle) stay as without mirror.
+    body = """G0 X-20 Y-20 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 Y30
+N30 X50
+N40 G40 X70 Y50
+M30
+"""
+    plain = mill("G17 G90\n" + body)
+    mirrored = mill("G17 G90 MIRROR X0\n" + body)
+    assert plain.alarms == [] and mirrored.alarms == []
+    assert len(plain.motions) == len(mirrored.motions)
+    for a, b in zip(plain.motions, mirrored.motions):
+        assert b.end_mcs["X"] == pytest.approx(-a.end_mcs["X"])
+        assert b.end_mcs["Y"] == pytest.approx(a.end_mcs["Y"])
+        assert b.end_wcs["X"] == pytest.approx(a.end_wcs["X"])
+        assert b.kind == a.kind
+    arc = next(m for m in mirrored.motions if m.inserted)
+    assert arc.kind == "G2" and arc.arc_normal_mcs["Z"] == 1.0
