@@ -82,6 +82,8 @@ class PathBuilder:
             geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
             geo.feed_type = modal.gcodes.get(15, "G94")
             geo.loaded = True
+            # After RESET the WCS position follows from the machine position and the new frames.
+            self._resync(modal, geo, dict(modal.position_mcs))
         elif geo.frames.settable_code != code:
             geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
         return geo
@@ -502,8 +504,13 @@ class PathBuilder:
 
     def sync_position(self, modal: Any, position_mcs: Mapping[str, float]) -> None:
         """Take over machine positions (after JOG): programmed WCS follows from the MCS."""
-        geo = self.state(modal)
-        tool = self.tool_vector(modal)
+        self._resync(modal, self.state(modal), position_mcs)
+
+    def _resync(self, modal: Any, geo: GeometryState, position_mcs: Mapping[str, float]) -> None:
+        try:
+            tool = self.tool_vector(modal)
+        except NcAlarmError:  # a missing edge is reported when it is used, not here
+            tool = {}
         bcs = {a: float(position_mcs.get(a, modal.position_mcs.get(a, 0.0))) - tool.get(a, 0.0)
                for a in self.path_axes}
         for axis in self.geo_axes:

@@ -136,3 +136,25 @@ def test_mcs_plane_and_direction_helper() -> None:
     assert r.block(80)[0].end_mcs == approx({"X": 0.0, "Y": 0.0, "Z": 10.0})
     assert mcs_plane_and_direction(r.block(110)[0]) is None  # tilted plane
     assert mcs_plane_and_direction(r.block(10)[0]) is None  # a line
+
+
+def test_jog_sync_and_reset_recompute_the_wcs_from_the_machine_position() -> None:
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+
+    data = mill_data({"X": 100.0})
+    interp = Interpreter(load_machine("mill3"), MemorySource({}), data)
+    interp.start_text("A.MPF", "N10 G54 T1 M6 D1\nN20 G0 X5 Y0 Z0\n")
+    while not interp.finished:
+        interp.step()
+    # Program end reset G54 to G500; the WCS follows from machine (105, 0, 100): tool 100 on Z.
+    assert interp.modal.position_mcs == approx({"X": 105.0, "Y": 0.0, "Z": 100.0})
+    interp.start_text("B.MPF", "N10 G91 G0 X1\n")
+    interp.step()
+    assert interp.modal.position_wcs == approx({"X": 106.0, "Y": 0.0, "Z": 0.0})
+    # JOG moved the machine to X 50: with G500 and the tool length, WCS X = 50, Z = 20 - 100.
+    interp.sync_position({"X": 50.0, "Z": 20.0})
+    assert interp.modal.position_wcs == approx({"X": 50.0, "Y": 0.0, "Z": -80.0})
+    assert interp.builder.wcs_from_mcs(interp.modal, {"X": 50.0, "Y": 0.0, "Z": 20.0}) == approx(
+        {"X": 50.0, "Y": 0.0, "Z": -80.0})
