@@ -214,6 +214,10 @@ class TrcStage:
                 error.located(source.file, source.line, source.n)
             raise error
         mirrored = _plane_mirrored(modal, plane)
+        if not comp.active:
+            # The selection block starts where the block itself says (positions may
+            # have changed outside this stage: frames, JOG, REPOS).
+            self.last_end_mcs = None
         try:
             return self._process(motions, modal, path, data, source, mirrored)
         finally:
