@@ -162,7 +162,12 @@ class MotionBuilder:
     # ------------------------------------------------------------------ dwell
     def _dwell(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
         """G4 F… (seconds) or G4 S… (revolutions of the master spindle); F and S stay as they were."""
-        out: list[canon.CanonCommand] = list(self.flush(modal))
+        held = list(self.path.flush(modal))
+        if held:
+            held = trc_canon.process(held, modal, self.path, self.data, self.machine)
+        # With radius compensation G4 is a block without plane motion, not a stop of the look-ahead.
+        out: list[canon.CanonCommand] = held + trc_canon.process(
+            [], modal, self.path, self.data, self.machine, words.source)
         seconds = words.words.get("F")
         revolutions = words.words.get("S")
         if seconds is None and revolutions is None:

@@ -207,3 +207,9 @@ M30
         assert b.kind == a.kind
     arc = next(m for m in mirrored.motions if m.inserted)
     assert arc.kind == "G2" and arc.arc_normal_mcs["Z"] == 1.0
+
+
+def test_dwell_inside_the_contour_does_not_break_the_compensation():
+    with_dwell = mill(RECTANGLE.replace("N30 X50", "N25 G4 F1\nN30 X50"))
+    assert with_dwell.alarms == []
+    assert [p[1:] for p in plane_path(with_dwell)] == [p[1:] for p in plane_path(mill(RECTANGLE))]
