@@ -49,7 +49,7 @@ class ModalState:
     def initial(cls, machine: MachineConfig, table: GTable) -> "ModalState":
         """The power-on state: reset G codes, every path axis at 0."""
         state = cls()
-        state.gcodes = table.reset_state(reset_overrides(machine, table))
+        state.gcodes = table.reset_state(reset_overrides(machine, table), machine.kind)
         for axis in machine.path_axes:
             state.position_wcs[axis] = 0.0
             state.position_mcs[axis] = 0.0
@@ -61,7 +61,7 @@ class ModalState:
         Positions, the active tool/edge and the spindle are kept (they are
         physical states or are reset by the channel according to machine data).
         """
-        self.gcodes = table.reset_state(reset_overrides(machine, table))
+        self.gcodes = table.reset_state(reset_overrides(machine, table), machine.kind)
         self.feed = 0.0
         self.tool_selected = self.tool
         if self.geometry is not None:

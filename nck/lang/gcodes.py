@@ -23,6 +23,7 @@ class GGroup:
     reset: str | None
     modal: bool
     meaning: str
+    reset_by_kind: tuple[tuple[str, str], ...] = ()  # machine kind -> reset member (e.g. lathe: G18)
 
     def position(self, code: str) -> int:
         """1-based position of ``code`` in the group (the value ``$P_GG`` returns)."""
@@ -47,9 +48,20 @@ class GTable:
         """True if ``name`` (normalised) is a G function of this dialect."""
         return name in self.group_of
 
-    def reset_state(self, overrides: dict[int, str] | None = None) -> dict[int, str]:
-        """The active code of every modal group after RESET (with machine overrides)."""
-        state = {n: g.reset for n, g in self.groups.items() if g.modal and g.reset}
+    def reset_state(self, overrides: dict[int, str] | None = None, kind: str = "mill") -> dict[int, str]:
+        """The active code of every modal group after RESET.
+
+        ``kind`` is the machine kind (``mill``/``lathe``): groups may name a
+        different reset member per kind (``reset_lathe`` in the table);
+        ``overrides`` (from MD20150 of the machine) win over both.
+        """
+        state: dict[int, str] = {}
+        for number, group in self.groups.items():
+            if not group.modal:
+                continue
+            member = dict(group.reset_by_kind).get(kind, group.reset)
+            if member:
+                state[number] = member
         if overrides:
             state.update(overrides)
         return state
@@ -78,6 +90,8 @@ def gtable(dialect: str = "siemens") -> GTable:
             reset=entry.get("reset"),
             modal=bool(entry.get("modal", True)),
             meaning=entry.get("meaning", ""),
+            reset_by_kind=tuple((key[len("reset_"):], value) for key, value in entry.items()
+                                if key.startswith("reset_") and isinstance(value, str)),
         )
         groups[group.number] = group
         for code in members:
