@@ -24,13 +24,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, ClassVar
 
-from textual import work
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.timer import Timer
 from textual.widgets import Input, Static, TextArea
 from textual.widgets.text_area import Selection
-from textual.worker import get_current_worker
 
 from nck import commands as cmd
 from nck.commands import Rejected
@@ -39,15 +37,11 @@ from nck.status import NckStatus
 from hmi.area import AreaBase
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.softkeys import Softkey, SoftkeyMenu
-from hmi.widgets.nc_editor import ErrorMark, NcEditor, find_text, renumber_blocks
-from hmi.widgets.toolpath import ToolpathView, path_from_motions
+from hmi.widgets.nc_editor import NcEditor
+from hmi.widgets.toolpath import ToolpathView
+from screens.program_edit import EditActions
 from screens.program_files import ProgramFiles, decode_program
-
-CHECK_DEBOUNCE_S = 0.4
-"""Quiet time after the last keystroke before the check starts."""
-
-STREAM_BATCH = 50
-"""Check results are handed to the screen in batches of this many alarms."""
+from screens.program_runs import CheckAndSimulation
 
 
 def _is_executing(status: NckStatus | None, program: str | None) -> bool:
@@ -62,7 +56,7 @@ def _is_executing(status: NckStatus | None, program: str | None) -> bool:
     return same and (channel.channel_state != "reset" or channel.program_state != "aborted")
 
 
-class ProgramScreen(AreaBase):
+class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
     """The program editor (area PROGRAM)."""
 
     AREA_ID: ClassVar[str] = "program"
@@ -187,54 +181,6 @@ class ProgramScreen(AreaBase):
                 None,
                 Softkey("program.check", "Check\nnow", "check_now", enabled=has_program),
                 Softkey("program.restore", "Restore\nunsaved", "offer_restore_any"),
-            ],
-        )
-
-    def _edit_menu(self) -> SoftkeyMenu:
-        writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
-        return SoftkeyMenu.of(
-            [
-                Softkey("program.mark", "Mark", "mark", active=lambda s: s._mark_anchor is not None),
-                Softkey("program.copy", "Copy", "copy"),
-                Softkey("program.cut", "Cut", "cut", enabled=writable),
-                Softkey("program.paste", "Paste", "paste", enabled=writable),
-                Softkey("program.delete", "Delete", "delete_selection", enabled=writable),
-                Softkey("program.undo_e", "Undo", "undo", enabled=writable),
-                Softkey("program.redo_e", "Redo", "redo", enabled=writable),
-                Softkey("program.edit_back", "Back", "pop_menu"),
-            ]
-        )
-
-    def _search_menu(self) -> SoftkeyMenu:
-        writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
-        return SoftkeyMenu.of(
-            [
-                Softkey("program.find_next", "Find\nnext", "find_next"),
-                Softkey("program.replace", "Replace", "replace_one", enabled=writable),
-                Softkey("program.replace_all", "Replace\nall", "replace_all", enabled=writable),
-                None, None, None, None,
-                Softkey("program.search_back", "Back", "close_search"),
-            ]
-        )
-
-    def _simulation_menu(self) -> SoftkeyMenu:
-        view = lambda v: (lambda s: s.toolpath.view == v)  # noqa: E731
-        return SoftkeyMenu.of(
-            [
-                Softkey("sim.xy", "Top view\nXY", "sim_view('XY')", active=view("XY")),
-                Softkey("sim.xz", "Side view\nXZ", "sim_view('XZ')", active=view("XZ")),
-                Softkey("sim.yz", "Side view\nYZ", "sim_view('YZ')", active=view("YZ")),
-                Softkey("sim.zoom_in", "Zoom +", "sim_zoom(1)"),
-                Softkey("sim.zoom_out", "Zoom -", "sim_zoom(-1)"),
-                Softkey("sim.fit", "Fit", "sim_fit"),
-                Softkey("sim.rerun", "Recalculate", "simulate_run"),
-                Softkey("sim.back", "Editor", "simulate"),
-            ],
-            [
-                Softkey("sim.pan_up", "Pan ↑", "sim_pan(0, 1)"),
-                Softkey("sim.pan_down", "Pan ↓", "sim_pan(0, -1)"),
-                Softkey("sim.pan_left", "Pan ←", "sim_pan(-1, 0)"),
-                Softkey("sim.pan_right", "Pan →", "sim_pan(1, 0)"),
             ],
         )
 
@@ -539,223 +485,6 @@ class ProgramScreen(AreaBase):
         suffix = f"  [{', '.join(flags)}]" if flags else ""
         title.update(f" {self.program}{suffix}   line {row + 1}/{lines}  col {column + 1}")
 
-    # -- checks ---------------------------------------------------------------------------------
-    def schedule_check(self) -> None:
-        """Run the check after a short quiet time (debounce)."""
-        if self._check_timer is not None:
-            self._check_timer.stop()
-        self._check_timer = self.set_timer(CHECK_DEBOUNCE_S, self.check_now)
-
-    def action_check_now(self) -> None:
-        """Check now softkey."""
-        self.check_now()
-
-    def check_now(self) -> None:
-        """Start a check of the current text in a worker thread (older checks are abandoned)."""
-        if self._check_timer is not None:
-            self._check_timer.stop()
-            self._check_timer = None
-        if self.program is None or self.binary:
-            return
-        self._generation += 1
-        self._check_running = True
-        self._show_cursor_message()
-        self._check_worker(self._generation, self.program, self.editor.text,
-                           self.files.program_source(self.program))
-
-    @work(thread=True, exclusive=True, group="program-check", exit_on_error=False)
-    def _check_worker(self, generation: int, program: str, text: str, programs: Any) -> None:
-        from nck.check import iter_check
-
-        worker = get_current_worker()
-        stale = lambda: worker.is_cancelled or generation != self._generation  # noqa: E731
-        batch: list[ErrorMark] = []
-        name = Path(program).name
-        try:
-            for alarm in iter_check(name, text, programs=programs, should_stop=stale):
-                if stale():
-                    return
-                line = (alarm.line or 1) - 1
-                batch.append(ErrorMark(line, alarm.number, alarm.text))
-                if len(batch) >= STREAM_BATCH:
-                    self.app.call_from_thread(self._apply_marks, generation, batch, False)
-                    batch = []
-        except Exception as exc:  # a bug in the check must not take the editor down
-            self.app.call_from_thread(self.say, f"Check failed: {exc!r}")
-        if not stale():
-            self.app.call_from_thread(self._apply_marks, generation, batch, True)
-
-    def _apply_marks(self, generation: int, marks: list[ErrorMark], done: bool) -> None:
-        if generation != self._generation or not self._ready:
-            return
-        first = self._marks_generation != generation
-        self._marks_generation = generation
-        self.editor.set_error_marks(marks, replace=first)
-        if done:
-            self._check_running = False
-        self._show_cursor_message()
-
-    def action_next_error(self) -> None:
-        """Next error softkey: put the cursor on the next faulty line."""
-        line = self.editor.next_error_line()
-        if line is None:
-            self.say("No errors found")
-            return
-        self.editor.move_cursor((line, 0), center=True)
-        self.editor.focus()
-        self._show_cursor_message()
-
-    # -- edit softkeys --------------------------------------------------------------------------
-    def action_cursor_start(self) -> None:
-        """Cursor to the start of the program."""
-        self.editor.move_cursor((0, 0), center=True)
-        self.editor.focus()
-
-    def action_cursor_end(self) -> None:
-        """Cursor to the end of the program."""
-        self.editor.move_cursor(self.editor.document.end, center=True)
-        self.editor.focus()
-
-    def action_mark(self) -> None:
-        """Mark: start (or end) marking a block from the cursor."""
-        if self._mark_anchor is None:
-            self._mark_anchor = self.editor.cursor_location
-            self.say("Marking: move the cursor, then Copy / Cut / Delete")
-        else:
-            self._mark_anchor = None
-            self.editor.selection = Selection.cursor(self.editor.cursor_location)
-            self.say("")
-        self.editor.focus()
-
-    def _selected_text(self) -> str:
-        return self.editor.selected_text
-
-    def action_copy(self) -> None:
-        """Copy the marked text to the clipboard."""
-        text = self._selected_text()
-        if text:
-            self.app.copy_to_clipboard(text)
-            self.say(f"{len(text.splitlines()) or 1} line(s) copied")
-        self._end_mark()
-
-    def action_cut(self) -> None:
-        """Cut the marked text into the clipboard."""
-        text = self._selected_text()
-        if text and not self.editor.read_only:
-            self.app.copy_to_clipboard(text)
-            self.editor.delete(*self.editor.selection)
-        self._end_mark()
-
-    def action_paste(self) -> None:
-        """Paste the clipboard at the cursor (replacing a marked block)."""
-        if self.editor.read_only or not self.app.clipboard:
-            return
-        start, end = self.editor.selection
-        self.editor.replace(self.app.clipboard, start, end)
-        self._end_mark()
-
-    def action_delete_selection(self) -> None:
-        """Delete the marked text."""
-        if not self.editor.read_only and self._selected_text():
-            self.editor.delete(*self.editor.selection)
-        self._end_mark()
-
-    def _end_mark(self) -> None:
-        self._mark_anchor = None
-        self.editor.focus()
-        self.refresh_softkeys()
-
-    def action_undo(self) -> None:
-        """Undo the last edit."""
-        if not self.editor.read_only:
-            self.editor.undo()
-
-    def action_redo(self) -> None:
-        """Redo the last undone edit."""
-        if not self.editor.read_only:
-            self.editor.redo()
-
-    def action_renumber(self) -> None:
-        """Renumber softkey: block numbers N10, N20 … (one undo step)."""
-        if self.editor.read_only:
-            return
-        text = self.editor.text
-        new = renumber_blocks(text, start=10, step=10)
-        if new != text:
-            cursor = self.editor.cursor_location
-            self.editor.replace(new, (0, 0), self.editor.document.end)
-            row = min(cursor[0], self.editor.document.line_count - 1)
-            self.editor.move_cursor((row, 0))
-            self.say("Blocks renumbered (step 10)")
-
-    # -- search --------------------------------------------------------------------------------
-    def action_search(self) -> None:
-        """Search softkey: open the search bar."""
-        self.search_open = True
-        self._show_view()
-        self.push_softkeys(self._search_menu())
-        self.query_one("#prog-find", Input).focus()
-
-    def action_close_search(self) -> None:
-        """Close the search bar."""
-        self.search_open = False
-        self._show_view()
-        self.pop_softkeys()
-        self.editor.focus()
-
-    def on_input_submitted(self, event: Input.Submitted) -> None:
-        """Enter in the search field finds the next occurrence."""
-        if event.input.id == "prog-find":
-            self.action_find_next()
-        elif event.input.id == "prog-replace":
-            self.action_replace_one()
-
-    def action_find_next(self) -> bool:
-        """Find the search text after the cursor (wrapping round)."""
-        query = self.query_one("#prog-find", Input).value
-        if not query:
-            return False
-        lines = self.editor.document.lines
-        start = self.editor.selection.end if self.editor.selected_text.upper() == query.upper() else None
-        row, column = self.editor.cursor_location
-        after = (start[0], start[1] - 1) if start else (row, column - 1)
-        found = find_text(lines, query, after)
-        if found is None:
-            self.say(f"'{query}' not found")
-            return False
-        row, column = found
-        self.editor.selection = Selection((row, column), (row, column + len(query)))
-        self.editor.scroll_cursor_visible(center=True)
-        self.say("")
-        return True
-
-    def action_replace_one(self) -> None:
-        """Replace the found text, then find the next one."""
-        query = self.query_one("#prog-find", Input).value
-        replacement = self.query_one("#prog-replace", Input).value
-        if self.editor.read_only or not query:
-            return
-        if self.editor.selected_text.upper() != query.upper():
-            if not self.action_find_next():
-                return
-        start, end = sorted(self.editor.selection)
-        self.editor.replace(replacement, start, end)
-        self.action_find_next()
-
-    def action_replace_all(self) -> None:
-        """Replace every occurrence (one undo step)."""
-        query = self.query_one("#prog-find", Input).value
-        replacement = self.query_one("#prog-replace", Input).value
-        if self.editor.read_only or not query:
-            return
-        import re
-
-        text = self.editor.text
-        new, count = re.subn(re.escape(query), lambda _m: replacement, text, flags=re.IGNORECASE)
-        if count:
-            self.editor.replace(new, (0, 0), self.editor.document.end)
-        self.say(f"{count} replaced")
-
     # -- save, execute -------------------------------------------------------------------------
     def action_save(self) -> bool:
         """Save softkey: write the text atomically through the NC file system."""
@@ -793,66 +522,6 @@ class ProgramScreen(AreaBase):
             self.say(f"Execute: {result.reason}")
             return
         self.perform("app.switch_area('machine')")
-
-    # -- simulation ----------------------------------------------------------------------------
-    def action_simulate(self) -> None:
-        """Simulation softkey: show the toolpath (again: back to the editor)."""
-        self.simulating = not self.simulating
-        self._menu_stack.clear()
-        self._show_view()
-        self.refresh_softkeys()
-        if self.simulating:
-            self._mark_current_block(self.status)
-            self.action_simulate_run()
-            self.toolpath.focus()
-        else:
-            self.editor.focus()
-
-    def action_simulate_run(self) -> None:
-        """Interpret the text headless and draw its toolpath."""
-        if self.program is None:
-            return
-        self.toolpath.set_pieces([], "calculating …")
-        self._simulate_worker(self.program, self.editor.text, self.files.program_source(self.program))
-
-    @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
-    def _simulate_worker(self, program: str, text: str, programs: Any) -> None:
-        from nck.check import run_text
-
-        worker = get_current_worker()
-        try:
-            result = run_text(Path(program).name, text, programs=programs,
-                              should_stop=lambda: worker.is_cancelled)
-            pieces = path_from_motions(result.motions)
-        except Exception as exc:  # never crash the screen
-            self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
-            return
-        if result.alarms:
-            alarm = result.alarms[0]
-            note = f"stopped at line {alarm.line}: {alarm.number} {alarm.text}"
-        elif result.truncated:
-            note = f"stopped after {result.blocks} blocks"
-        else:
-            note = f"{result.blocks} blocks, {len(result.motions)} moves"
-        if not worker.is_cancelled:
-            self.app.call_from_thread(self.toolpath.set_pieces, pieces, note)
-
-    def action_sim_view(self, view: str) -> None:
-        """Choose the projection."""
-        self.toolpath.action_view(view)
-        self.refresh_softkeys()
-
-    def action_sim_zoom(self, direction: int) -> None:
-        """Zoom in/out."""
-        self.toolpath.action_zoom(direction)
-
-    def action_sim_pan(self, dh: int, dv: int) -> None:
-        """Pan the view."""
-        self.toolpath.action_pan(dh, dv)
-
-    def action_sim_fit(self) -> None:
-        """Fit the whole path."""
-        self.toolpath.action_fit()
 
     # -- view switching --------------------------------------------------------------------------
     def _show_view(self) -> None:

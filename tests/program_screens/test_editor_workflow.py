@@ -57,7 +57,7 @@ async def test_create_fix_save_select_and_run(data_dir: Path) -> None:
 
 async def test_typing_is_checked_after_the_debounce(data_dir: Path) -> None:
     """Without any help from the test, the debounce timer starts the check and marks the line."""
-    import screens.program as program_module
+    import screens.program_runs as program_module
 
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:

@@ -1,0 +1,191 @@
+"""Live checks and the toolpath simulation of the program editor.
+
+A mixin of :class:`screens.program.ProgramScreen`. Both run in worker threads
+on a copy of the text: the check streams its alarms back in batches (each
+faulty line gets its mark as soon as it is known; a newer check makes an older
+one stop), the simulation interprets the program headless and draws the
+collected motions.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from textual import work
+from textual.timer import Timer
+from textual.worker import get_current_worker
+
+from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.widgets.nc_editor import ErrorMark
+from hmi.widgets.toolpath import path_from_motions
+
+CHECK_DEBOUNCE_S = 0.4
+"""Quiet time after the last keystroke before the check starts."""
+
+STREAM_BATCH = 50
+"""Check results are handed to the screen in batches of this many alarms."""
+
+
+class CheckAndSimulation:
+    """Checks as you type, next error, and the simulation view (mixin)."""
+
+    program: str | None
+    binary: bool
+    simulating: bool
+    _generation: int
+    _marks_generation: int
+    _check_running: bool
+    _check_timer: Timer | None
+    editor: Any
+    toolpath: Any
+    files: Any
+    status: Any
+    app: Any
+
+    def _simulation_menu(self) -> SoftkeyMenu:
+        view = lambda v: (lambda s: s.toolpath.view == v)  # noqa: E731
+        return SoftkeyMenu.of(
+            [
+                Softkey("sim.xy", "Top view\nXY", "sim_view('XY')", active=view("XY")),
+                Softkey("sim.xz", "Side view\nXZ", "sim_view('XZ')", active=view("XZ")),
+                Softkey("sim.yz", "Side view\nYZ", "sim_view('YZ')", active=view("YZ")),
+                Softkey("sim.zoom_in", "Zoom +", "sim_zoom(1)"),
+                Softkey("sim.zoom_out", "Zoom -", "sim_zoom(-1)"),
+                Softkey("sim.fit", "Fit", "sim_fit"),
+                Softkey("sim.rerun", "Recalculate", "simulate_run"),
+                Softkey("sim.back", "Editor", "simulate"),
+            ],
+            [
+                Softkey("sim.pan_up", "Pan ↑", "sim_pan(0, 1)"),
+                Softkey("sim.pan_down", "Pan ↓", "sim_pan(0, -1)"),
+                Softkey("sim.pan_left", "Pan ←", "sim_pan(-1, 0)"),
+                Softkey("sim.pan_right", "Pan →", "sim_pan(1, 0)"),
+            ],
+        )
+
+    # -- checks ---------------------------------------------------------------------------------
+    def schedule_check(self) -> None:
+        """Run the check after a short quiet time (debounce)."""
+        if self._check_timer is not None:
+            self._check_timer.stop()
+        self._check_timer = self.set_timer(CHECK_DEBOUNCE_S, self.check_now)
+
+    def action_check_now(self) -> None:
+        """Check now softkey."""
+        self.check_now()
+
+    def check_now(self) -> None:
+        """Start a check of the current text in a worker thread (older checks are abandoned)."""
+        if self._check_timer is not None:
+            self._check_timer.stop()
+            self._check_timer = None
+        if self.program is None or self.binary:
+            return
+        self._generation += 1
+        self._check_running = True
+        self._show_cursor_message()
+        self._check_worker(self._generation, self.program, self.editor.text,
+                           self.files.program_source(self.program))
+
+    @work(thread=True, exclusive=True, group="program-check", exit_on_error=False)
+    def _check_worker(self, generation: int, program: str, text: str, programs: Any) -> None:
+        from nck.check import iter_check
+
+        worker = get_current_worker()
+        stale = lambda: worker.is_cancelled or generation != self._generation  # noqa: E731
+        batch: list[ErrorMark] = []
+        name = Path(program).name
+        try:
+            for alarm in iter_check(name, text, programs=programs, should_stop=stale):
+                if stale():
+                    return
+                line = (alarm.line or 1) - 1
+                batch.append(ErrorMark(line, alarm.number, alarm.text))
+                if len(batch) >= STREAM_BATCH:
+                    self.app.call_from_thread(self._apply_marks, generation, batch, False)
+                    batch = []
+        except Exception as exc:  # a bug in the check must not take the editor down
+            self.app.call_from_thread(self.say, f"Check failed: {exc!r}")
+        if not stale():
+            self.app.call_from_thread(self._apply_marks, generation, batch, True)
+
+    def _apply_marks(self, generation: int, marks: list[ErrorMark], done: bool) -> None:
+        if generation != self._generation or not self._ready:
+            return
+        first = self._marks_generation != generation
+        self._marks_generation = generation
+        self.editor.set_error_marks(marks, replace=first)
+        if done:
+            self._check_running = False
+        self._show_cursor_message()
+
+    def action_next_error(self) -> None:
+        """Next error softkey: put the cursor on the next faulty line."""
+        line = self.editor.next_error_line()
+        if line is None:
+            self.say("No errors found")
+            return
+        self.editor.move_cursor((line, 0), center=True)
+        self.editor.focus()
+        self._show_cursor_message()
+
+    # -- simulation ----------------------------------------------------------------------------
+    def action_simulate(self) -> None:
+        """Simulation softkey: show the toolpath (again: back to the editor)."""
+        self.simulating = not self.simulating
+        self._menu_stack.clear()
+        self._show_view()
+        self.refresh_softkeys()
+        if self.simulating:
+            self._mark_current_block(self.status)
+            self.action_simulate_run()
+            self.toolpath.focus()
+        else:
+            self.editor.focus()
+
+    def action_simulate_run(self) -> None:
+        """Interpret the text headless and draw its toolpath."""
+        if self.program is None:
+            return
+        self.toolpath.set_pieces([], "calculating …")
+        self._simulate_worker(self.program, self.editor.text, self.files.program_source(self.program))
+
+    @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
+    def _simulate_worker(self, program: str, text: str, programs: Any) -> None:
+        from nck.check import run_text
+
+        worker = get_current_worker()
+        try:
+            result = run_text(Path(program).name, text, programs=programs,
+                              should_stop=lambda: worker.is_cancelled)
+            pieces = path_from_motions(result.motions)
+        except Exception as exc:  # never crash the screen
+            self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
+            return
+        if result.alarms:
+            alarm = result.alarms[0]
+            note = f"stopped at line {alarm.line}: {alarm.number} {alarm.text}"
+        elif result.truncated:
+            note = f"stopped after {result.blocks} blocks"
+        else:
+            note = f"{result.blocks} blocks, {len(result.motions)} moves"
+        if not worker.is_cancelled:
+            self.app.call_from_thread(self.toolpath.set_pieces, pieces, note)
+
+    def action_sim_view(self, view: str) -> None:
+        """Choose the projection."""
+        self.toolpath.action_view(view)
+        self.refresh_softkeys()
+
+    def action_sim_zoom(self, direction: int) -> None:
+        """Zoom in/out."""
+        self.toolpath.action_zoom(direction)
+
+    def action_sim_pan(self, dh: int, dv: int) -> None:
+        """Pan the view."""
+        self.toolpath.action_pan(dh, dv)
+
+    def action_sim_fit(self) -> None:
+        """Fit the whole path."""
+        self.toolpath.action_fit()
