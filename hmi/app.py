@@ -15,8 +15,10 @@ Keys
 Every key is global and comes from ``data/keymap.toml`` (:mod:`hmi.keymap`):
 the area keys, F1–F8 / Shift+F1–F8 (routed to the softkeys of the current
 area), F9 area menu, F10 back, F11 help, F12 alarm cancel and the machine
-control panel. MCP keys act on the kernel through the bridge
-(:mod:`hmi.bridge`), the only code that calls the kernel.
+control panel (:mod:`hmi.mcp`). MCP keys act on the kernel through the bridge
+(:mod:`hmi.bridge`), the only code that calls the running kernel; the kernel
+is built (machine, NC data directory, NC file system) in :mod:`hmi.startup`.
+Ctrl+Left/Right give way to a focused editor where they cannot jog.
 """
 
 from __future__ import annotations
@@ -31,17 +33,17 @@ from typing import Any, Callable
 
 from textual.app import App
 from textual.screen import Screen
-from textual.timer import Timer
-from textual.widgets import Input, TextArea
 
 from nck import commands as cmd
-from nck.commands import Accepted, Rejected, SubmitResult
+from nck.commands import Accepted, SubmitResult
 from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.bridge import NckBridge
 from hmi.keymap import Keymap, default_keymap
+from hmi.mcp import MachineControlPanel
 from hmi.messages import CommandRejected, NckStatusChanged
+from hmi.startup import build_nck
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.theme import SINUMERIK_THEME
 
@@ -120,13 +122,7 @@ def _missing_css(screen_class: type, module: Any) -> str:
     return ""
 
 
-def _next_position(table: tuple[float, ...], current: float, step: int) -> float:
-    """Return the switch position ``step`` positions from the one nearest ``current``."""
-    nearest = min(range(len(table)), key=lambda i: abs(table[i] - current))
-    return table[max(0, min(len(table) - 1, nearest + step))]
-
-
-class HmiApp(App):
+class HmiApp(MachineControlPanel, App):
     """The SINUMERIK Operate trainer.
 
     Args:
@@ -151,12 +147,7 @@ class HmiApp(App):
         self.bridge = NckBridge(nck, realtime=realtime)
         self.latest_status: NckStatus | None = None
         self.hint = ""
-        self.selected_axis_index = 0
-        self.spindle_selected = False
-        self.rapid_overlay = False
-        self.single_block_type = "SBL1"
-        self._jog_release_timer: Timer | None = None
-        self._jogging: str | None = None
+        self.init_panel()
         self._on_quit = on_quit
         self._program_cache: dict[str, tuple[str, tuple[str, ...]]] = {}
         for area in AREAS:
@@ -246,9 +237,6 @@ class HmiApp(App):
         self._program_cache = {name: result}
         return result
 
-    def _status(self) -> NckStatus:
-        return self.bridge.status
-
     # -- operator panel ---------------------------------------------------------------------
     def action_switch_area(self, area_id: str) -> None:
         """Area key: show the operating area ``area_id``."""
@@ -310,222 +298,6 @@ class HmiApp(App):
             except Exception as exc:  # a failed save is reported, the app still quits
                 print(f"hmi: saving NC data failed: {exc}", file=sys.stderr)
         self.exit()
-
-    # -- machine control panel -------------------------------------------------------------
-    def action_mode(self, mode: str) -> None:
-        """Mode keys JOG / MDA / AUTO (JOG again leaves REF/REPOS/INC)."""
-        status = self._status()
-        if mode == status.channel.mode == "JOG" and status.channel.machine_function:
-            self.submit(cmd.SelectMachineFunction(None))
-            return
-        self.submit(cmd.SelectMode(mode))
-
-    def action_machine_function(self, function: str) -> None:
-        """REF POINT / REPOS keys: toggle the machine function in JOG."""
-        current = self._status().channel.machine_function
-        self.submit(cmd.SelectMachineFunction(None if current == function else function))
-
-    def action_cycle_increment(self) -> None:
-        """INC key: continuous → 1 → 10 → 100 → 1000 → 10000 → VAR → 1 …"""
-        channel = self._status().channel
-        steps: list[int | None] = [*self.keymap.switches.increments, None]
-        if channel.machine_function != "INC":
-            nxt = steps[0]
-        else:
-            try:
-                nxt = steps[(steps.index(channel.increment) + 1) % len(steps)]
-            except ValueError:
-                nxt = steps[0]
-        if isinstance(self.submit(cmd.SelectIncrement(nxt)), Rejected):
-            return
-        if channel.machine_function != "INC":
-            self.submit(cmd.SelectMachineFunction("INC"))
-
-    def action_single_block(self) -> None:
-        """SINGLE BLOCK: toggle single block (of the type chosen in program control)."""
-        current = self._status().channel.program_control.get("single_block")
-        self.submit(cmd.SetProgramControl("single_block", None if current else self.single_block_type))
-
-    def action_cycle_start(self) -> None:
-        """CYCLE START (NC START); in MDA the editor's text is the program."""
-        area = self.area_screen
-        before = getattr(area, "before_cycle_start", None)
-        if callable(before):
-            before()
-        self.submit(cmd.CycleStart())
-
-    def action_cycle_stop(self) -> None:
-        """CYCLE STOP (NC STOP)."""
-        self.submit(cmd.CycleStop())
-
-    def action_reset(self) -> None:
-        """RESET of the channel / mode group."""
-        self._release_jog()
-        self.submit(cmd.Reset())
-
-    def axis_names(self) -> tuple[str, ...]:
-        """Names of the path axes (not spindles), as the status shows them."""
-        return tuple(a.name for a in self._status().axes if a.kind != "spindle")
-
-    def spindle_names(self) -> tuple[str, ...]:
-        """Names of the spindles."""
-        return tuple(a.name for a in self._status().axes if a.kind == "spindle")
-
-    @property
-    def selected_axis(self) -> str | None:
-        """The axis the + / − keys traverse."""
-        if self.spindle_selected:
-            spindles = self.spindle_names()
-            return spindles[0] if spindles else None
-        axes = self.axis_names()
-        return axes[self.selected_axis_index] if self.selected_axis_index < len(axes) else None
-
-    def action_select_axis(self, index: int) -> None:
-        """Axis keys X, Y, Z, 4th axis."""
-        axes = self.axis_names()
-        if index >= len(axes):
-            self.set_hint(f"This machine has no axis {index + 1}")
-            return
-        self.selected_axis_index = index
-        self.spindle_selected = False
-        self._refresh_area()
-
-    def action_select_spindle(self) -> None:
-        """Spindle key."""
-        if not self.spindle_names():
-            self.set_hint("This machine has no spindle")
-            return
-        self.spindle_selected = True
-        self._refresh_area()
-
-    def action_rapid_overlay(self) -> None:
-        """RAPID: toggle the rapid traverse overlay for JOG."""
-        self.rapid_overlay = not self.rapid_overlay
-        self._refresh_area()
-
-    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """Let Ctrl+Left/Right reach a focused text editor unless they can jog.
-
-        The + / − keys traverse an axis in the Machine area in JOG (and in REF /
-        REPOS); anywhere else with an editor or input field focused, the keys keep
-        their editing meaning (word left / right).
-        """
-        if action == "jog" and isinstance(self.focused, (TextArea, Input)):
-            channel = self._status().channel
-            can_jog = channel.mode == "JOG" or channel.machine_function in ("REF", "REPOS")
-            if not (can_jog and self.current_mode == "machine"):
-                return False
-        return True
-
-    def action_jog(self, direction: int) -> None:
-        """+ / − keys: traverse the selected axis.
-
-        In INC each press is one increment; in continuous JOG the axis moves while
-        the key repeats and stops ``jog_release_ms`` after the last repeat.
-        """
-        axis = self.selected_axis
-        if axis is None:
-            self.set_hint("No axis selected")
-            return
-        channel = self._status().channel
-        continuous = channel.machine_function != "INC"
-        if continuous and self._jogging == f"{axis}{direction}" and self._jog_release_timer:
-            self._jog_release_timer.reset()
-            return
-        if self._jogging is not None:
-            self._release_jog()
-        result = self.submit(cmd.Jog(axis, direction, rapid=self.rapid_overlay))
-        if continuous and isinstance(result, Accepted):
-            self._jogging = f"{axis}{direction}"
-            if self.bridge.realtime:
-                delay = self.keymap.switches.jog_release_ms / 1000
-                self._jog_release_timer = self.set_timer(delay, self._release_jog)
-
-    def _release_jog(self) -> None:
-        """The + / − key was let go: stop continuous JOG."""
-        if self._jog_release_timer is not None:
-            self._jog_release_timer.stop()
-            self._jog_release_timer = None
-        if self._jogging is not None:
-            axis = self._jogging[:-2] if self._jogging.endswith("-1") else self._jogging[:-1]
-            self._jogging = None
-            self.submit(cmd.Jog(axis, 0))
-
-    def release_jog(self) -> None:
-        """Tests: let go of the + / − key (the realtime app does this by timer)."""
-        self._release_jog()
-
-    def action_feed_override(self, step: int) -> None:
-        """Feed override switch one position up / down."""
-        current = float(self._status().channel.overrides.get("feed", 100.0))
-        table = self.keymap.switches.feed_override_percent
-        self.submit(cmd.SetOverride("feed", _next_position(table, current, step)))
-
-    def action_spindle_override(self, step: int) -> None:
-        """Spindle override switch one position up / down."""
-        current = float(self._status().channel.overrides.get("spindle", 100.0))
-        table = self.keymap.switches.spindle_override_percent
-        self.submit(cmd.SetOverride("spindle", _next_position(table, current, step)))
-
-    def keyswitch_position(self) -> int:
-        """The keyswitch position: from the snapshot if it has one, else from the level."""
-        status = self._status()
-        position = getattr(status, "keyswitch_position", None)
-        if isinstance(position, int):
-            return position
-        level = status.access_level
-        return 7 - level if 4 <= level <= 7 else 3
-
-    def action_keyswitch(self) -> None:
-        """Keyswitch: 0 → 1 → 2 → 3 → 0 (levels 7 → 6 → 5 → 4)."""
-        self.submit(cmd.SetKeyswitch((self.keyswitch_position() + 1) % 4))
-
-    def _refresh_area(self) -> None:
-        area = self.area_screen
-        if area is not None:
-            area.show_status(self.bridge.status)
-
-
-def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
-              program: str | None = None) -> tuple[Any, Callable[[], None] | None]:
-    """Build the kernel on the NC data directory; return it and the function run on quit.
-
-    The NC file system (``nck.storage``) lives in ``<data dir>/nc``; the training
-    programs of ``data/programs`` are installed into a fresh directory. With
-    ``ephemeral`` the kernel works on a temporary copy that is deleted on quit.
-    ``program`` (a local file, imported into MPF, or a program name) is selected
-    at start; the HMI still starts in JOG (axes must be referenced first).
-    """
-    from nck.kernel import Nck
-    from nck.machine import load_machine
-    from nck.paths import open_data_dir
-    from nck.resources import data_path
-    from nck.storage import NcFileSystem
-
-    config = load_machine(machine)
-    root, copy = open_data_dir(data_dir, ephemeral)
-    files = NcFileSystem(root / "nc")
-    files.install_samples(data_path("programs"))
-    nck = Nck(machine=config, programs=files)
-    files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
-    if program:
-        name = program
-        local = Path(program)
-        if local.is_file():
-            name = files.import_file(local, overwrite=True).name
-        result = nck.submit(cmd.SelectProgram(name))
-        if isinstance(result, Rejected):
-            raise ValueError(f"program {program}: {result.reason}")
-
-    def on_quit() -> None:
-        saver = getattr(nck, "save", None)
-        if callable(saver):
-            saver()
-        if copy is not None:
-            copy.cleanup()
-
-    return nck, on_quit
-
 
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
              *, nck: Any = None, program: str | None = None, realtime: bool = True) -> HmiApp:
