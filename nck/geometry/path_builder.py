@@ -40,6 +40,10 @@ from nck.ncdata import NcData, WorkOffset
 
 ALARM_CIRCLE_NOT_DETERMINED = circles.ALARM_CIRCLE_END_POINT
 ALARM_THREAD_LEAD_ZERO = 16720  # G33 without (or with zero) thread lead
+ALARM_DC_NOT_POSSIBLE = 16800  # DC programmed for an axis that is not a rotary axis
+ALARM_ACP_NOT_POSSIBLE = 16810  # ACP/ACN programmed for an axis that is not a rotary axis
+ALARM_MODULO_POSITION = 16830  # ACP/ACN target outside 0 … < 360°
+ROTARY_MODES = ("DC", "ACP", "ACN")
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
 PATH_KINDS = ("G0", "G1", "G33") + ARC_KINDS
 INTERP_LETTERS = "IJK"
@@ -282,8 +286,11 @@ class PathBuilder:
         programmed: set[str] = set()
         for axis, (value, mode) in words.axes.items():
             v = self.to_mm(axis, value, modal, units)
-            incremental = mode == "IC" or (mode is None and not absolute)
-            end[axis] = end.get(axis, 0.0) + v if incremental else v
+            if mode in ROTARY_MODES:
+                end[axis] = self._rotary_target(axis, end.get(axis, 0.0), v, mode)
+            else:
+                incremental = mode == "IC" or (mode is None and not absolute)
+                end[axis] = end.get(axis, 0.0) + v if incremental else v
             programmed.add(axis)
         w = words.words
         if ("RP" in w or "AP" in w) and modal.gcodes.get(1) != "CIP":
@@ -303,6 +310,22 @@ class PathBuilder:
             end[pl.abscissa], end[pl.ordinate] = target
             programmed |= {pl.abscissa, pl.ordinate}
         return end, programmed
+
+    def _rotary_target(self, axis: str, current: float, value: float, mode: str) -> float:
+        """``DC`` (shortest way), ``ACP`` (positive), ``ACN`` (negative) to an absolute angle.
+
+        Only rotary axes; the angle is taken within one revolution (0 … < 360°).
+        """
+        if self._is_length(axis):
+            raise NcAlarmError(ALARM_DC_NOT_POSSIBLE if mode == "DC" else ALARM_ACP_NOT_POSSIBLE, axis)
+        if mode != "DC" and not 0.0 <= value < 360.0:
+            raise NcAlarmError(ALARM_MODULO_POSITION, axis)
+        delta = (value % 360.0 - current % 360.0) % 360.0
+        if mode == "DC" and delta > 180.0:
+            delta -= 360.0
+        elif mode == "ACN" and delta > 0.0:
+            delta -= 360.0
+        return current + delta
 
     # ---------------------------------------------------------------- circles
     def _arc(self, kind: str, words: Any, modal: Any, geo: GeometryState, units: UnitSystem,

@@ -162,7 +162,7 @@ class BlockRun:
         interp = self.interp
         value_expr = word.value
         mode = None
-        if isinstance(value_expr, ast.Func) and value_expr.name in ("AC", "IC"):
+        if isinstance(value_expr, ast.Func) and value_expr.name in ("AC", "IC", "DC", "ACP", "ACN"):
             if len(value_expr.args) != 1 or value_expr.args[0] is None:
                 raise NcAlarmError(12080, value_expr.name)
             mode = value_expr.name
