@@ -52,6 +52,7 @@ class BlockRun:
         self.executable = False
         self.repeat: ast.SectionRepeat | None = None
         self.goto_start = False
+        self.mcall_set = False
 
     def eval(self, expr: ast.Expr) -> Any:
         return evaluate(expr, self.scope)
@@ -92,6 +93,9 @@ class BlockRun:
             self._start_repeat(self.repeat)
         elif self.goto is None:
             self._section_end()
+        if self.call is None and self.words.axes and self.frame.modal_call is not None \
+                and not self.mcall_set and self.end_kind is None:
+            self.call = self.frame.modal_call  # MCALL: after every block with path motion
         if self.call is not None:
             self._call(self.call)
         if self.end_kind is not None:
@@ -126,6 +130,10 @@ class BlockRun:
         elif kind is ast.Goto:
             self.executable = True
             self.goto = stmt  # type: ignore[assignment]
+        elif kind is ast.ModalCall:
+            self.executable = True
+            self.frame.modal_call = stmt.call  # type: ignore[union-attr]
+            self.mcall_set = True
         elif kind is ast.SectionRepeat:
             self.executable = True
             self.repeat = stmt  # type: ignore[assignment]
@@ -541,6 +549,12 @@ class BlockRun:
             self.late.append(canon.StopPoint(self.source, "STOPRE"))
         elif name == "RET":
             self.end_kind = "RET"
+        elif name == "CALL":
+            # indirect call: CALL "NAME" / CALL <string variable>
+            target = to_string(self.eval(stmt.args[0])).strip().upper()  # type: ignore[arg-type]
+            if not target or self.call is not None:
+                raise NcAlarmError(14011, target or "CALL")
+            self.call = ast.Call(target, ())
         elif name == "GOTOS":
             # back to the start of the program (of this level), with an implicit STOPRE
             self.late.append(canon.StopPoint(self.source, "STOPRE"))

@@ -8,6 +8,7 @@ overflow) raise alarm 14051; type mismatches 12150/14096.
 from __future__ import annotations
 
 import math
+import re
 from typing import Any, Callable, Protocol
 
 from nck.errors import NcAlarmError
@@ -338,7 +339,57 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
     if name == "ISVAR":
         _arity(name, args, 1)
         return scope.has_name(to_string(evaluate(args[0], scope)).upper())  # type: ignore[arg-type]
+    if name == "ISAXIS":
+        _arity(name, args, 1)
+        index = _int(evaluate(args[0], scope))  # type: ignore[arg-type]
+        axes = [n for n in ("X", "Y", "Z") if scope.is_axis(n)]
+        return 1 <= index <= len(axes)
+    if name == "SPRINT":
+        if not args:
+            raise NcAlarmError(14020, name)
+        return sprint(to_string(evaluate(args[0], scope)),  # type: ignore[arg-type]
+                      [evaluate(a, scope) for a in args[1:]])  # type: ignore[arg-type]
     raise NcAlarmError(12550, name)
+
+
+_FORMAT = re.compile(r"%(\.(\d+))?([DFSBEXRC%])")
+
+
+def sprint(template: str, values: list[Any]) -> str:
+    """SPRINT: ``%D`` integer, ``%F`` real (``%.2F`` decimals, default 6), ``%S`` string,
+    ``%B`` TRUE/FALSE, ``%E`` exponent, ``%X`` hex, ``%R`` real as written, ``%C`` char."""
+    remaining = list(values)
+
+    def take() -> Any:
+        if not remaining:
+            raise NcAlarmError(14020, "SPRINT")
+        return remaining.pop(0)
+
+    def replace(match: re.Match) -> str:
+        digits, code = match.group(2), match.group(3)
+        if code == "%":
+            return "%"
+        value = take()
+        if code == "D":
+            return str(_int(value))
+        if code == "F":
+            return f"{float(_number(value)):.{int(digits) if digits else 6}f}"
+        if code == "E":
+            return f"{float(_number(value)):.{int(digits) if digits else 6}E}"
+        if code == "X":
+            return f"{_int(value):X}"
+        if code == "B":
+            return "TRUE" if to_bool(value) else "FALSE"
+        if code == "C":
+            return chr(_int(value) % 256) if not isinstance(value, str) else value[:1]
+        return to_string(value)
+
+    text = _FORMAT.sub(replace, template)
+    if remaining:
+        raise NcAlarmError(14020, "SPRINT")
+    if len(text) > 400:
+        raise NcAlarmError(14099, "SPRINT")
+    return text
 
 
 def _arity(name: str, args: tuple, count: int) -> None:

@@ -62,6 +62,7 @@ class Frame:
     saved_gcodes: dict[int, str] | None = None  # PROC … SAVE: G groups restored at the return
     single_block_off: bool = False  # SBLOF active at this level (inherited by calls)
     display_off: bool = False  # DISPLOF: blocks of this level are not displayed
+    modal_call: Any = None  # MCALL: the ast.Call made after every motion block of this level
     # active REPEAT sections: (last line index, first line index, passes left, return index)
     repeats: list[tuple[int, int, int, int]] = field(default_factory=list)
 

@@ -231,8 +231,7 @@ class Interpreter:
         modal state is copied only when the next block can change it.
         """
         state = self._state
-        frames = [(f, f.pc, f.passes_left, f.def_open, dict(f.for_ends), dict(f.locals),
-                   list(f.repeats)) for f in state.frames]
+        frames = [(f, _frame_copy(f)) for f in state.frames]
         modal = copy.deepcopy(state.modal) if self._next_block_touches_modal() else None
         return (list(state.frames), frames, modal, state.finished, state.message, self._skip_run)
 
@@ -275,9 +274,8 @@ class Interpreter:
                     self.data.gud[key] = old
         self._journal = []
         state = self._state
-        for frame, pc, passes_left, def_open, for_ends, local_vars, repeats in frames:
-            frame.pc, frame.passes_left, frame.def_open = pc, passes_left, def_open
-            frame.for_ends, frame.locals, frame.repeats = for_ends, local_vars, repeats
+        for frame, saved_frame in frames:
+            frame.__dict__.update(saved_frame.__dict__)
         state.frames = frame_list
         if modal is not None:
             state.modal = modal
@@ -463,7 +461,16 @@ _MISSING_EDGE = object()
 
 
 _MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Case, ast.SectionRepeat, ast.Def, ast.Extern,
-               ast.Proc, ast.Call)
+               ast.Proc, ast.Call, ast.ModalCall)
+
+
+def _frame_copy(frame: Frame) -> Frame:
+    """A copy of a frame's own state (the variables themselves are journaled, not copied)."""
+    saved = copy.copy(frame)
+    saved.locals = dict(frame.locals)
+    saved.for_ends = dict(frame.for_ends)
+    saved.repeats = list(frame.repeats)
+    return saved
 
 
 def _touches_modal(block: ast.Block) -> bool:

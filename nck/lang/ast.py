@@ -173,6 +173,13 @@ class Call:
 
 
 @dataclass(frozen=True, slots=True)
+class ModalCall:
+    """``MCALL NAME(args)`` / ``MCALL L12``: call after every motion block; ``MCALL`` alone ends it."""
+
+    call: Call | None
+
+
+@dataclass(frozen=True, slots=True)
 class Goto:
     """``GOTOF``/``GOTOB``/``GOTO``/``GOTOC`` to a label, block number or string expression."""
 
@@ -248,7 +255,7 @@ class Builtin:
 
 
 Statement = Union[GWord, AddressWord, Assign, Def, Proc, Extern, Call, Goto, IfGoto, Case, Control,
-                  Builtin, SectionRepeat]
+                  Builtin, SectionRepeat, ModalCall]
 
 
 @dataclass(frozen=True, slots=True)

@@ -18,7 +18,7 @@ from nck.lang.expressions import (  # noqa: F401 - re-exported vocabulary
     VALUE_ADDRESSES, int_literal, syntax_error,
 )
 from nck.lang.gcodes import named_gcodes, normalize
-from nck.lang.lexer import ADDR, NAME, NUMBER, OP, split_comment, tokenize
+from nck.lang.lexer import ADDR, EOL, NAME, NUMBER, OP, split_comment, tokenize
 
 
 class _Parser(DeclarationParser):
@@ -85,6 +85,14 @@ class _Parser(DeclarationParser):
                 args = self._arguments()
             stmts.append(ast.Builtin(name, args))
             return
+        if name == "CALL":
+            self.advance()
+            stmts.append(ast.Builtin("CALL", (self.expression(),)))
+            return
+        if name == "MCALL":
+            self.advance()
+            stmts.append(ast.ModalCall(self._modal_call_target()))
+            return
         if name in ("MSG", "SETAL"):
             self.advance()
             if not self.is_op("("):
@@ -127,6 +135,21 @@ class _Parser(DeclarationParser):
             stmts.append(ast.Call(name, self._arguments()))
             return
         stmts.append(ast.Call(name))
+
+    def _modal_call_target(self) -> ast.Call | None:
+        tok = self.tok
+        if tok.kind == EOL:
+            return None
+        if tok.kind == ADDR and tok.text == "L":
+            self.advance()
+            number = self.advance()
+            if not isinstance(number.value, int):
+                raise syntax_error(number, "L" + number.text)
+            return ast.Call("L" + number.text)
+        if tok.kind == NAME and tok.text not in RESERVED and len(tok.text) > 1:
+            self.advance()
+            return ast.Call(tok.text, self._arguments() if self.is_op("(") else None)
+        raise syntax_error(tok, "MCALL")
 
     def _address_constant(self, letter: str) -> ast.Statement:
         sign = 1
