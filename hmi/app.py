@@ -25,7 +25,9 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
+import traceback
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -147,6 +149,7 @@ class HmiApp(MachineControlPanel, App):
         self.bridge = NckBridge(nck, realtime=realtime)
         self.latest_status: NckStatus | None = None
         self.hint = ""
+        self.internal_errors: list[str] = []
         self.init_panel()
         self._on_quit = on_quit
         self._program_cache: dict[str, tuple[str, tuple[str, ...]]] = {}
@@ -177,7 +180,20 @@ class HmiApp(MachineControlPanel, App):
         self.latest_status = message.status
         for screen in self.screen_stack:
             if isinstance(screen, AreaBase):
-                screen.show_status(message.status)
+                try:
+                    screen.show_status(message.status)
+                except Exception as exc:  # a display bug must not end the operator's session
+                    self.report_internal_error(exc)
+
+    def report_internal_error(self, exc: Exception) -> None:
+        """Keep an HMI bug's traceback, say so on the dialog line, and carry on.
+
+        Under pytest the error is raised again so that tests fail on it.
+        """
+        self.internal_errors.append("".join(traceback.format_exception(exc)))
+        if "PYTEST_CURRENT_TEST" in os.environ:
+            raise exc
+        self.set_hint(f"HMI internal error: {type(exc).__name__}: {exc}")
 
     def on_command_rejected(self, message: CommandRejected) -> None:
         """Show why the kernel refused a command."""

@@ -145,7 +145,14 @@ class AreaBase(Screen):
             else:
                 self.show_hint(f"{key.label.replace(chr(10), ' ')}: not possible in this state")
             return False
-        self.perform(key.action)
+        try:
+            self.perform(key.action)
+        except Exception as exc:  # a broken softkey must not end the operator's session
+            report = getattr(self.app, "report_internal_error", None)
+            if report is None:
+                raise
+            report(exc)
+            return False
         self.refresh_softkeys()
         return True
 

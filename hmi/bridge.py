@@ -85,7 +85,13 @@ class NckBridge:
         self._last_wall = now
         dt = min(max(now - last, 0.0), MAX_CATCH_UP_S)
         if dt > 0:
-            self.advance(dt)
+            try:
+                self.advance(dt)
+            except Exception as exc:  # the kernel promises never to raise; stay alive if it does
+                report = getattr(self._target, "report_internal_error", None)
+                if report is None:
+                    raise
+                report(exc)
 
     # -- kernel access ------------------------------------------------------------------
     @property

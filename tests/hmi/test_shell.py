@@ -161,3 +161,16 @@ async def test_quit_saves_first() -> None:
         await pilot.press("ctrl+q")
         await pilot.pause()
     assert saved == [True]
+
+
+async def test_broken_softkey_is_reported_not_fatal(monkeypatch, fake_app: HmiApp) -> None:
+    """A softkey whose action raises becomes an HMI internal error on the dialog line (outside pytest)."""
+    monkeypatch.delenv("PYTEST_CURRENT_TEST", raising=False)
+    async with fake_app.run_test(size=SIZE) as pilot:
+        screen = fake_app.screen
+        monkeypatch.setattr(screen, "action_toggle_mcs", lambda: 1 / 0)
+        await pilot.press("f1")
+        await pilot.pause()
+        assert fake_app.is_running
+        assert "ZeroDivisionError" in str(screen.query_one("#dialog-line").render())
+        assert len(fake_app.internal_errors) == 1
