@@ -88,11 +88,15 @@ class FrameChain:
         """WCS → BCS mapping, with the frames that ``suppress`` (G53/G153/SUPA) leaves out."""
         if suppress is not None and suppress not in SUPPRESSION_CODES:
             raise ValueError(f"not a frame suppression: {suppress}")
+        cache: dict = self.__dict__.setdefault("_transforms", {})  # the chain is immutable
+        if suppress in cache:
+            return cache[suppress]
         result = Transform.identity(self.geometry_axes)
         if suppress not in ("G153", "SUPA"):
             result = result @ self.base.to_transform()
         if suppress is None:
             result = result @ self.settable.to_transform() @ self.programmable.to_transform()
+        cache[suppress] = result
         return result
 
     def settable_zero_transform(self) -> Transform:

@@ -19,6 +19,7 @@ axes. The canonical motion carries the WCS in program units and the MCS in mm.
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 from typing import Any, Mapping
 
 import numpy as np
@@ -263,7 +264,7 @@ class PathBuilder:
             "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
             "feed": feed, "lead": lead, "gcodes": dict(modal.gcodes),
             "exact": modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9",
-            "window": modal.gcodes.get(12, "G601"), "modal": modal, "units": units,
+            "window": modal.gcodes.get(12, "G601"), "units": units,
             "end_other": {a: end[a] for a in end if a not in self.geo_axes},
         }
         start_mcs = dict(modal.position_mcs)
@@ -450,7 +451,7 @@ class PathBuilder:
         return out
 
     def _wcs_out(self, point: tuple[float, float, float], context: Mapping[str, Any]) -> dict[str, float]:
-        modal, units = context["modal"], context["units"]
+        modal, units = SimpleNamespace(gcodes=context["gcodes"]), context["units"]
         full = {"X": point[0], "Y": point[1], "Z": point[2]}
         full.update(context["end_other"])
         return {a: self.from_mm(a, full.get(a, 0.0), modal, units) for a in self.path_axes}

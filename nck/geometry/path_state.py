@@ -7,6 +7,7 @@ an alarm in a block leaves it untouched.
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -65,6 +66,16 @@ class GeometryState:
     axis_feeds: dict[str, float] = field(default_factory=dict)
     thread_lead_mm: float | None = None
     loaded: bool = False
+
+    def __deepcopy__(self, memo: dict) -> "GeometryState":
+        """Snapshots before each block: frames, pole and elements are immutable and shared."""
+        new = copy.copy(self)
+        new.wcs_mm = dict(self.wcs_mm)
+        new.axis_feeds = dict(self.axis_feeds)
+        if self.pending is not None:
+            new.pending = PendingCorner(self.pending.element, self.pending.aid, self.pending.size_mm,
+                                        dict(self.pending.context))
+        return new
 
     def reset(self) -> None:
         """RESET / program end: programmable frame, pole, RNDM and held-back element go.
