@@ -73,6 +73,13 @@ class StatusView:
                     executing = segment
             if current is None and blocks:
                 current = blocks[-1]
+        offsets = dict(self._wcs_offset)
+        if executing is not None:
+            # The WCS of the block being executed (the interpreter may already be ahead).
+            for name, mcs_end in executing.end_mcs.items():
+                if name in executing.end_wcs:
+                    offsets[name] = float(mcs_end) - float(executing.end_wcs[name])
+        wcs_now = self._interpreter_wcs(run, positions) if executing is None else None
         axes = []
         getter = getattr(self.motion, "axis_states", None)
         drive = getter() if getter is not None else {}
@@ -84,7 +91,8 @@ class StatusView:
             state = drive.get(axis.name)
             axes.append(AxisStatus(
                 name=axis.name, kind=axis.kind, position_mcs=mcs,
-                position_wcs=mcs - self._wcs_offset.get(axis.name, 0.0),
+                position_wcs=(wcs_now[axis.name] if wcs_now and axis.name in wcs_now
+                              else mcs - offsets.get(axis.name, 0.0)),
                 distance_to_go=dtg.get(axis.name, 0.0),
                 referenced=bool(self.motion.is_referenced(axis.name)),
                 setpoint_mcs=float(state.position_setpoint_mm) if state is not None else mcs,
@@ -121,6 +129,25 @@ class StatusView:
             emergency_stop=self._estop_active, mode_group_ready=not self._estop_active,
             alarm_log_seq=self.alarms.last_seq, internal_errors=len(self.internal_errors),
         )
+
+    def _interpreter_wcs(self, run: ProgramRun | None, positions: Any) -> dict[str, float] | None:
+        """WCS of ``positions`` under the frames the interpreter holds now (when nothing executes).
+
+        Uses the real interpreter's motion builder when it offers ``wcs_from_mcs``
+        (display only; any failure falls back to the last executed segment's offset).
+        """
+        interp = run.interp if run is not None else (
+            self._interpreters.get("AUTO") or self._interpreters.get("MDA"))
+        builder = getattr(interp, "builder", None)
+        modal = getattr(interp, "modal", None)
+        convert = getattr(builder, "wcs_from_mcs", None)
+        if convert is None or modal is None:
+            return None
+        try:
+            wcs = convert(modal, {a: float(positions[a]) for a in self.machine.path_axes if a in positions})
+        except Exception:  # noqa: BLE001 - display only
+            return None
+        return {a: float(v) for a, v in dict(wcs).items()}
 
     def _spindle_status(self, name: str, positions: Any) -> AxisStatus:
         """A spindle: speed from the motion system when it models spindles, else programmed."""

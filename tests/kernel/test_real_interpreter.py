@@ -148,3 +148,19 @@ def test_sblof_subprogram_runs_as_one_single_block_step() -> None:
     assert 2.0 not in stops and 3.0 not in stops  # no stop inside the SBLOF subprogram
     assert stops[0] == 1.0 and stops[-1] == 5.0
     assert nck.positions_mcs()["X"] == pytest.approx(5.0)
+
+
+def test_wcs_display_follows_the_executing_block() -> None:
+    nck = make({"P.MPF": "N10 G1 X20 F600\nN20 TRANS X10\nN30 G1 X20\nN40 M30"})
+    start(nck, "P.MPF")
+    nck.tick(1.0)  # in N10: X = 10, no frame yet although the interpreter read ahead
+    x_axis = nck.status().axes[0]
+    assert x_axis.position_mcs == pytest.approx(10.0, abs=0.05)
+    assert x_axis.position_wcs == pytest.approx(x_axis.position_mcs)
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] > 25.0, 10.0)
+    x_axis = nck.status().axes[0]
+    assert x_axis.position_wcs == pytest.approx(x_axis.position_mcs - 10.0)  # N30 under TRANS X10
+    assert until_state(nck, "reset", "aborted")
+    x_axis = nck.status().axes[0]
+    assert x_axis.position_mcs == pytest.approx(30.0)
+    assert x_axis.position_wcs == pytest.approx(30.0)  # M30 deleted the programmable frame
