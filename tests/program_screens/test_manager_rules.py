@@ -51,13 +51,13 @@ async def test_rename_rules(data_dir: Path) -> None:
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_manager(pilot)
-        await pilot.press("f6", *["backspace"] * 8, *"OTHER", "enter")  # DEMO → OTHER: taken
+        await pilot.press("f6", "ctrl+u", *"OTHER", "enter")  # DEMO → OTHER: taken
         await pilot.pause()
         assert "already exists" in hint(app)
-        await pilot.press("f6", *["backspace"] * 8, *"x y", "enter")  # invalid characters
+        await pilot.press("f6", "ctrl+u", *"x y", "enter")  # invalid characters
         await pilot.pause()
         assert listed(app) == ["DEMO.MPF", "OTHER.MPF"]
-        await pilot.press("f6", *["backspace"] * 8, *"POCKET", "enter")
+        await pilot.press("f6", "ctrl+u", *"POCKET", "enter")
         await pilot.pause()
         assert listed(app) == ["OTHER.MPF", "POCKET.MPF"]
         assert (data_dir / "MPF" / "POCKET.MPF").read_text().startswith("; pocket")
@@ -107,19 +107,20 @@ async def test_program_being_executed_cannot_be_renamed_or_deleted(data_dir: Pat
         assert (data_dir / "MPF" / "DEMO.MPF").exists()
 
 
-async def test_import_export_and_search(data_dir: Path, tmp_path: Path) -> None:
+async def test_import_export_and_search(data_dir: Path, tmp_path: Path, monkeypatch) -> None:
     """Export writes a local copy; Import brings a local file into SPF; Search finds it."""
+    monkeypatch.chdir(tmp_path)  # short relative paths to type
     outside = tmp_path / "outside"
     outside.mkdir()
     (outside / "contour.spf").write_text("G1 X1\nM17\n")
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_manager(pilot)
-        await pilot.press("shift+f2", *["backspace"] * 200, *str(outside), "enter")  # Export
+        await pilot.press("shift+f2", "ctrl+u", *"outside", "enter")  # Export
         await pilot.pause()
         assert (outside / "DEMO.MPF").read_text() == (data_dir / "MPF" / "DEMO.MPF").read_text()
         await pilot.press("shift+f5")  # Subprograms
-        await pilot.press("shift+f1", *str(outside / "contour.spf"), "enter")  # Import
+        await pilot.press("shift+f1", *"outside/contour.spf", "enter")  # Import
         await pilot.pause()
         assert listed(app) == ["CONTOUR.SPF"]
         await pilot.press("shift+f4")  # Part programs
