@@ -20,7 +20,7 @@ ACTIONS: frozenset[str] = frozenset(
         "switch_area", "softkey", "menu_select", "menu_recall", "help", "alarm_cancel",
         "quit_hmi", "mode", "machine_function", "cycle_increment", "single_block",
         "cycle_start", "cycle_stop", "reset", "select_axis", "select_spindle", "jog",
-        "rapid_overlay", "feed_override", "spindle_override", "keyswitch",
+        "rapid_overlay", "feed_override", "spindle_override", "keyswitch", "emergency_stop",
     }
 )
 """Every action id a key may name (the ``action_<id>`` methods of the app)."""

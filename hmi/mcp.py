@@ -51,6 +51,7 @@ class MachineControlPanel:
         self.single_block_type = "SBL1"
         self._jog_release_timer: Timer | None = None
         self._jogging: str | None = None
+        self.estop_pressed = False
 
     def _status(self) -> NckStatus:
         return self.bridge.status
@@ -227,3 +228,11 @@ class MachineControlPanel:
         area = self.area_screen
         if area is not None:
             area.show_status(self.bridge.status)
+
+    def action_emergency_stop(self) -> None:
+        """EMERGENCY STOP mushroom: press, or release (RESET then acknowledges alarm 3000)."""
+        self._release_jog()
+        result = self.submit(cmd.EmergencyStop(pressed=not self.estop_pressed))
+        if isinstance(result, Accepted):
+            self.estop_pressed = not self.estop_pressed
+            self._refresh_area()

@@ -96,6 +96,8 @@ class AreaHeader(Vertical):
             PROGRAM_STATE_TEXT.get(channel.program_state, channel.program_state),
             f"Level {level} {LEVEL_NAMES.get(level, '')}".rstrip(),
         ]
+        if status.emergency_stop:
+            parts.insert(1, "EMERGENCY STOP")
         self._set(state, "  │ ".join(parts))
         text, css = self.alarm_line(status, hint)
         self._set(alarm, text)

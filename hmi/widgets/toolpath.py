@@ -387,6 +387,7 @@ class ToolpathView(Widget, can_focus=True):
         head.append("── current block  ", KIND_STYLES["current"])
         if self.status_text:
             head.append(self.status_text)
+        head.truncate(width)  # one line, whatever the terminal width
         head.append("\n")
         head.append_text(canvas.to_text())
         return head

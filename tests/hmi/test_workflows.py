@@ -281,3 +281,21 @@ async def test_rapid_overlay_reaches_the_kernel(programs: DirectoryPrograms) -> 
         app.release_jog()
         fast = app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=5)
         assert {a.name: a.position_mcs for a in fast.axes}["X"] - slow_x > 1.5 * slow_x
+
+
+async def test_emergency_stop_and_reset(programs: DirectoryPrograms) -> None:
+    """Alt+L presses E-stop (alarm 3000, header says so); release + RESET clears it; axes stay referenced."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+l")
+        app.bridge.advance(0.1)
+        await pilot.pause()
+        assert app.bridge.status.emergency_stop
+        assert "EMERGENCY STOP" in text_of(app, "#hdr-state")
+        assert 3000 in [a.number for a in app.bridge.status.alarms]
+        await pilot.press("alt+l", "alt+q")
+        status = app.bridge.run_until(lambda s: not s.emergency_stop, max_s=2)
+        await pilot.pause()
+        assert 3000 not in [a.number for a in status.alarms]
+        assert "EMERGENCY STOP" not in text_of(app, "#hdr-state")
+        assert all(a.referenced for a in status.axes)
