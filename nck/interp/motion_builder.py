@@ -202,11 +202,9 @@ class MotionBuilder:
         if kind == "G0":
             return {"feed": None, "feed_mm_min": None, "inverse_time": False}
         if kind == "G33":
-            lead_speed = modal.spindle_speed_rpm
-            if lead_speed <= 0:
-                raise NcAlarmError(ALARM_PATH_VELOCITY)
-            return {"feed": modal.feed or None, "feed_mm_min": None, "inverse_time": False,
-                    "per_rev_rpm": lead_speed}
+            # Feed = spindle speed x lead; a stopped spindle means the axes wait (no alarm).
+            return {"feed": modal.feed or None, "feed_mm_min": 0.0, "inverse_time": False,
+                    "per_rev_rpm": _turning_rpm(modal)}
         if modal.feed <= 0:
             raise NcAlarmError(ALARM_NO_FEED)
         feed_type = modal.gcodes.get(15, "G94")
@@ -214,10 +212,8 @@ class MotionBuilder:
         if feed_type == "G93":
             return {"feed": modal.feed, "feed_mm_min": None, "inverse_time": True}
         if feed_type in FEED_TYPES_PER_REV or feed_type in ("G952", "G962", "G972"):
-            rpm = modal.spindle_speed_rpm
-            if rpm <= 0:
-                raise NcAlarmError(ALARM_PATH_VELOCITY)
-            return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm * rpm,
+            # Revolutional feed follows the master spindle; while it stands the path waits (V1).
+            return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm * _turning_rpm(modal),
                     "inverse_time": False}
         return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm, "inverse_time": False}
 
@@ -352,6 +348,11 @@ def _check_aux_limits(words: BlockWords) -> None:
             raise NcAlarmError(ALARM_ADDRESS_TOO_OFTEN, address)
     if sum(counts.values()) > AUX_LIMIT_TOTAL:
         raise NcAlarmError(ALARM_ADDRESS_TOO_OFTEN, "M/S/H/T/D/F")
+
+
+def _turning_rpm(modal: ModalState) -> float:
+    """Speed of the master spindle for revolutional feed: S while M3/M4, else 0."""
+    return modal.spindle_speed_rpm if modal.spindle_state in ("M3", "M4") else 0.0
 
 
 def _feed_family(feed_type: str) -> str:

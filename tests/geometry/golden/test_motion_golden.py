@@ -188,8 +188,9 @@ def test_thread_dwell_and_spindle() -> None:
         "N40 G4 F2.5",
         "N50 G4 S10",
         "N60 SPOS=90",
-        "N70 G95 G1 X10 F0.1",  # 0.1 mm/rev x 1000 rpm = 100 mm/min
-        "N80 M30",
+        "N70 G95 G1 X10 F0.1",  # spindle positioned (not turning): the path waits, 0 mm/min
+        "N80 M3 X20",           # 0.1 mm/rev x 1000 rpm = 100 mm/min
+        "N90 M30",
     ))
     thread = r.block(30)[0]
     assert thread.kind == "G33" and thread.lead_mm == pytest.approx(1.5)
@@ -198,7 +199,8 @@ def test_thread_dwell_and_spindle() -> None:
     assert [(d.seconds, d.revolutions) for d in dwells] == [(2.5, None), (None, 10.0)]
     spos = [c for c in r.commands if isinstance(c, canon.SpindleCommand) and c.state == "SPOS"]
     assert spos[0].position_deg == pytest.approx(90.0)
-    assert r.block(70)[0].feed_mm_min == pytest.approx(100.0)
+    assert r.block(70)[0].feed_mm_min == pytest.approx(0.0)
+    assert r.block(80)[0].feed_mm_min == pytest.approx(100.0)
 
 
 def test_feed_type_change_deletes_f() -> None:
