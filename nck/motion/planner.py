@@ -53,7 +53,7 @@ class PlannedSegment:
     def v_max(self, feed_pct: float, rapid_pct: float) -> float:
         """Velocity limit with the overrides applied."""
         if self.feed_mm_s is None:
-            return self.v_cap_mm_s * max(rapid_pct, 0.0) / 100.0
+            return self.v_cap_mm_s * min(max(rapid_pct, 0.0), 100.0) / 100.0
         return min(self.v_cap_mm_s, self.feed_mm_s * max(feed_pct, 0.0) / 100.0)
 
 

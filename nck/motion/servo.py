@@ -112,6 +112,7 @@ class ServoBank:
         gain = np.array([1.0 - a.ffw_weight + a.ffw_weight * a.kv_per_s * a.equiv_speedctrl_time_s for a in axes])
         self.b = (1.0 - self.alpha) / self.kv * gain
         self.ffw = np.array([a.ffw_weight for a in axes])
+        self._ffw_net = np.array([a.ffw_weight * (1.0 - a.kv_per_s * a.equiv_speedctrl_time_s) for a in axes])
         self.x_set = positions.astype(float).copy()
         self.v_set = np.zeros(n)
         self.e = np.zeros(n)
@@ -248,9 +249,12 @@ class ServoBank:
             dev = np.zeros_like(dev)
         e = e_model + dev
         actual = setpoints - e
-        prev_act = np.vstack([(self.x_set - self.e)[None, :], actual])
+        pushed = np.array([f.push_mm for f in self.faults])
+        # A push moves the actual value before this block: it is not a velocity of the block.
+        prev_act = np.vstack([(self.x_set - self.e - pushed)[None, :], actual])
         v_act = np.diff(prev_act, axis=0) / T
-        v_cmd = self.kv[None, :] * e + self.ffw[None, :] * v
+        # Speed setpoint: P share on the error beyond what the feedforward path lags by itself.
+        v_cmd = self.kv[None, :] * e + self._ffw_net[None, :] * v
         trip = None if (self.follow_up or not self.monitoring) else self._monitor(v, v_act, v_cmd, e, dev)
         last = m if trip is None else trip.index + 1
         self._commit(setpoints[:last], v[:last], e[:last], e_model[:last], v_act[:last], v_cmd[:last])
@@ -262,14 +266,15 @@ class ServoBank:
         """Evaluate every monitor on the block, all axes at once; return the earliest trip."""
         m = v.shape[0]
         lim = self._limits
-        candidates: list[tuple[int, int, int]] = []
+        candidates: list[tuple[int, int, int, int]] = []
 
         def earliest(mask: np.ndarray, number: int) -> None:
+            # Ties within one cycle go to the monitor checked first.
             if mask.any():
                 rows = np.argmax(mask, axis=0)
                 hit = mask.any(axis=0)
                 for col in np.flatnonzero(hit):
-                    candidates.append((int(rows[col]), number, int(col)))
+                    candidates.append((int(rows[col]), len(candidates), number, int(col)))
 
         earliest(np.abs(dev) > lim["contour"], 25050)
         speed_pct = np.abs(v_cmd) * (self._rpm_per_mm_s / self._rated_rpm * 100.0)
@@ -299,7 +304,7 @@ class ServoBank:
         earliest(bad & ~self.clamped[None, :], 25040)
         first = None
         if candidates:
-            index, number, col = min(candidates)
+            index, _order, number, col = min(candidates)
             first = Trip(index, number, self.axes[col].name)
         cut = m if first is None else first.index + 1
         mv = moving[:cut]

@@ -504,7 +504,8 @@ class PlannedMotion:
                 self.exact_wait = (np.flatnonzero(seg.moved), window)
                 self.wait_source = seg.source
                 self.v_path = 0.0
-                return True
+                # Output the end point once, then check the window.
+                self.wait_cycles = 1
             return False
         self.v_path = 0.0
         if run.kind == "abort":
