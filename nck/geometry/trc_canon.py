@@ -25,6 +25,7 @@ The stage lives in the geometry state of the modal state (attribute
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, replace
 from typing import Any, Mapping
 
@@ -197,15 +198,17 @@ class TrcStage:
         return result
 
     # ------------------------------------------------------------------ API
+    def idle_for(self, motions: list[canon.Motion]) -> bool:
+        """True if these motions pass through untouched (G40 and nothing buffered)."""
+        return not self.compensator.active and not any(
+            _member(m.gcodes, SIDES, "G40") != "G40" and m.kind in COMPENSATED_KINDS for m in motions
+        )
+
     def process(self, motions: list[canon.Motion], modal: Any, path: Any, data: Any,
                 source: canon.Source | None = None) -> list[canon.Motion]:
         """Compensate the motions of one block (untouched while G40 is in force and idle)."""
         comp = self.compensator
-        if not comp.active and not any(
-            _member(m.gcodes, SIDES, "G40") != "G40" and m.kind in COMPENSATED_KINDS for m in motions
-        ):
-            if motions:
-                self.last_end_mcs = dict(motions[-1].end_mcs)
+        if self.idle_for(motions):
             return motions
         plane = motions[0].plane if motions else modal.gcodes.get(6, "G17")
         if comp.active and self.plane is not None and plane != self.plane:
@@ -295,9 +298,9 @@ def process(motions: list[canon.Motion], modal: Any, path: Any, data: Any, machi
             source: canon.Source | None = None) -> list[canon.Motion]:
     """Compensate one block's motions (see :class:`TrcStage`)."""
     found = stage(modal, machine)
-    if found is None:
+    if found is None or found.idle_for(motions):
         return motions
-    return found.process(motions, modal, path, data, source)
+    return _writable(modal, found).process(motions, modal, path, data, source)
 
 
 def split_released(motions: list[canon.Motion], source: canon.Source) -> tuple[list[canon.Motion], list[canon.Motion]]:
@@ -315,9 +318,18 @@ def flush(modal: Any, path: Any, data: Any) -> list[canon.Motion]:
     """Release the compensation look-ahead at a stop point / program end."""
     geo = getattr(modal, "geometry", None)
     found = getattr(geo, STAGE_ATTRIBUTE, None) if geo is not None else None
-    if found is None:
+    if found is None or not found.compensator.active:
         return []
-    return found.flush(modal, path, data)
+    return _writable(modal, found).flush(modal, path, data)
+
+
+def _writable(modal: Any, found: TrcStage) -> TrcStage:
+    """Copy on write: the interpreter's snapshot of the geometry state shares its
+    attributes, so the stage is replaced by a copy before it changes (an alarm then
+    rolls back to the untouched original)."""
+    fresh = copy.deepcopy(found)
+    setattr(modal.geometry, STAGE_ATTRIBUTE, fresh)
+    return fresh
 
 
 __all__ = ["TrcStage", "TrcKey", "process", "flush", "reset_if_needed", "split_released", "stage"]

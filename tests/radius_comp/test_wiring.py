@@ -213,3 +213,36 @@ def test_dwell_inside_the_contour_does_not_break_the_compensation():
     with_dwell = mill(RECTANGLE.replace("N30 X50", "N25 G4 F1\nN30 X50"))
     assert with_dwell.alarms == []
     assert [p[1:] for p in plane_path(with_dwell)] == [p[1:] for p in plane_path(mill(RECTANGLE))]
+
+
+def test_alarm_in_a_block_leaves_the_compensation_state_untouched():
+    # The compensation state lives in the geometry state; an alarm rolls the block
+    # back, so the stage must not be changed in place (copy on write).
+    from nck.check import _make_interpreter
+    from nck.errors import NcAlarmError
+
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120, 6: 5.0})
+    text = """N5 G17 G90 G0 X-20 Y-20 T1 D1 M6
+N10 G1 G41 X0 Y0 F500
+N20 Y30
+N30 G2 G40 X40 Y30 CR=20
+N40 M30
+"""
+    interp = _make_interpreter("ROLL.MPF", text, load_machine("mill3"), None, data)
+    interp.start_text("ROLL.MPF", text)
+    interp.step()
+    interp.step()
+    selecting = interp._state.modal.geometry.trc_stage
+    assert selecting.compensator._state == "selecting"
+    interp.step()  # N20: the compensation is now on, in a new stage object
+    assert interp._state.modal.geometry.trc_stage.compensator._state == "on"
+    assert selecting.compensator._state == "selecting"  # a snapshot holding it is intact
+    stage_before = interp._state.modal.geometry.trc_stage
+    pieces_before = len(stage_before.compensator._pieces)
+    with pytest.raises(NcAlarmError) as info:
+        interp.step()
+    assert info.value.number == 10754
+    stage_after = interp._state.modal.geometry.trc_stage
+    assert len(stage_after.compensator._pieces) == pieces_before
+    assert stage_after.compensator.active
