@@ -23,6 +23,7 @@ becomes alarm 1 "internal error"; its traceback is kept in
 
 from __future__ import annotations
 
+import math
 import traceback
 from dataclasses import replace
 from typing import Any, Callable
@@ -155,15 +156,21 @@ class Nck(ManualControl, ControlSettings, StatusView):
         try:
             return getattr(self, name)(command)
         except NcAlarmError as error:
-            self._raise(error)
-            return Rejected(self.alarms.definition(error.number).format(error.params), alarm=error.number)
+            entry = self._raise(error)
+            return Rejected(entry.text, alarm=error.number)
         except Exception as exc:  # noqa: BLE001 - every bug becomes alarm 1
             self._internal_error(exc)
             return Rejected("internal error", alarm=ALARM_INTERNAL)
 
     def tick(self, dt_s: float) -> None:
         """Advance simulated time by ``dt_s`` seconds (whole IPO cycles; the rest is kept)."""
-        self._tick_rest_s += max(0.0, float(dt_s))
+        try:
+            dt = float(dt_s)
+        except (TypeError, ValueError):
+            return
+        if not math.isfinite(dt) or dt <= 0.0:
+            return
+        self._tick_rest_s += dt
         cycles = int((self._tick_rest_s + 1e-9) // self._ipo_s)
         self._tick_rest_s = max(0.0, self._tick_rest_s - cycles * self._ipo_s)
         self.step(cycles)
@@ -680,12 +687,12 @@ class Nck(ManualControl, ControlSettings, StatusView):
             return float(sysclock) * float(ratio)
         return DEFAULT_IPO_S
 
-    def _raise(self, error: NcAlarmError) -> None:
+    def _raise(self, error: NcAlarmError) -> AlarmEntry:
         if self.alarm_listener is not None:
             self.alarm_listener(error)
         block = f"N{error.n}" if error.n is not None else (str(error.line) if error.line else "")
-        self.alarms.raise_alarm(error.number, error.params, now_s=self._time_s, block=block,
-                                file=error.file, line=error.line, n=error.n)
+        return self.alarms.raise_alarm(error.number, error.params, now_s=self._time_s, block=block,
+                                       file=error.file, line=error.line, n=error.n)
 
     def _raise_number(self, number: int, *params: object) -> None:
         if self.alarm_listener is not None:

@@ -234,3 +234,11 @@ def test_interrupted_mda_blocks_keep_auto_out_until_reset() -> None:
     assert until_state(nck, "reset", "aborted")
     assert x(nck) == pytest.approx(100.0)
     assert nck.positions_mcs()["Z"] == pytest.approx(0.0)  # REPOS undid the MDA move
+
+
+def test_tick_ignores_nonsense_durations() -> None:
+    nck = make_nck()
+    for value in (float("nan"), float("inf"), -1.0, "abc", None):
+        nck.tick(value)
+    assert nck.time_s == 0.0
+    assert nck.internal_errors == []
