@@ -52,6 +52,7 @@ class MachineControlPanel:
         self._jog_release_timer: Timer | None = None
         self._jogging: str | None = None
         self.estop_pressed = False
+        self._keyswitch_turned_to: int | None = None
 
     def _status(self) -> NckStatus:
         return self.bridge.status
@@ -212,17 +213,26 @@ class MachineControlPanel:
         self.submit(cmd.SetOverride("spindle", _next_position(table, current, step)))
 
     def keyswitch_position(self) -> int:
-        """The keyswitch position: from the snapshot if it has one, else from the level."""
+        """The keyswitch position.
+
+        The snapshot's ``keyswitch_position`` when the kernel reports it; else the
+        position this panel last turned the switch to; else (at start) the one the
+        access level implies (levels 7…4 are positions 0…3; a password hides it: 0).
+        """
         status = self._status()
         position = getattr(status, "keyswitch_position", None)
         if isinstance(position, int):
             return position
+        if self._keyswitch_turned_to is not None:
+            return self._keyswitch_turned_to
         level = status.access_level
-        return 7 - level if 4 <= level <= 7 else 3
+        return 7 - level if 4 <= level <= 7 else 0
 
     def action_keyswitch(self) -> None:
         """Keyswitch: 0 → 1 → 2 → 3 → 0 (levels 7 → 6 → 5 → 4)."""
-        self.submit(cmd.SetKeyswitch((self.keyswitch_position() + 1) % 4))
+        target = (self.keyswitch_position() + 1) % 4
+        if isinstance(self.submit(cmd.SetKeyswitch(target)), Accepted):
+            self._keyswitch_turned_to = target
 
     def _refresh_area(self) -> None:
         area = self.area_screen

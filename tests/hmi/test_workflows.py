@@ -299,3 +299,16 @@ async def test_emergency_stop_and_reset(programs: DirectoryPrograms) -> None:
         assert 3000 not in [a.number for a in status.alarms]
         assert "EMERGENCY STOP" not in text_of(app, "#hdr-state")
         assert all(a.referenced for a in status.axes)
+
+
+async def test_keyswitch_cycles_under_a_password(programs: DirectoryPrograms) -> None:
+    """With a password set (level 2) the keyswitch still turns 0 → 1 → 2 …; deleting it shows the switch's level."""
+    from nck import commands as c
+
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        app.submit(c.EnterPassword("EVENING"))
+        await pilot.press("alt+t", "alt+t")
+        app.submit(c.DeletePassword())
+        await pilot.pause()
+        assert app.bridge.status.access_level == 5
