@@ -717,6 +717,10 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self._overlay = None
         self._owner = None
         self._jogging = False
+        self._jog_targets.clear()
+        self._jog_rest.clear()
+        self._parked = None
+        self._repos_point = None
         self._test_motion = None if not self._pc["program_test"] else self._test_motion
         self._sit = ChannelSituation(self._sit.mode, RESET, ABORTED)
 
