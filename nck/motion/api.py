@@ -54,7 +54,9 @@ class MotionSystem(Protocol):
         On the next ``resume()`` the axes first travel linearly from their actual
         positions back to the point where they were held (RMI), at ``feed_mm_min``
         (``None`` = rapid traverse), then the interrupted remainder continues.
-        A zero-length approach must be harmless.
+        A zero-length approach must be harmless. (The kernel does not rely on
+        this: when a program is left for JOG/MDA it keeps the unexecuted segments,
+        calls ``abort()``, and on NC START pushes the approach and the remainder.)
         """
 
     def current_source(self) -> Source | None:
