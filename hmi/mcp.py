@@ -50,7 +50,7 @@ class MachineControlPanel:
         self.rapid_overlay = False
         self.single_block_type = "SBL1"
         self._jog_release_timer: Timer | None = None
-        self._jogging: str | None = None
+        self._jogging: tuple[str, int] | None = None  # (axis, direction) of the held + / − key
         self.estop_pressed = False
         self._keyswitch_turned_to: int | None = None
 
@@ -174,14 +174,14 @@ class MachineControlPanel:
             return
         channel = self._status().channel
         continuous = channel.machine_function != "INC"
-        if continuous and self._jogging == f"{axis}{direction}" and self._jog_release_timer:
+        if continuous and self._jogging == (axis, direction) and self._jog_release_timer:
             self._jog_release_timer.reset()
             return
         if self._jogging is not None:
             self._release_jog()
         result = self.submit(cmd.Jog(axis, direction, rapid=self.rapid_overlay))
         if continuous and isinstance(result, Accepted):
-            self._jogging = f"{axis}{direction}"
+            self._jogging = (axis, direction)
             if self.bridge.realtime:
                 delay = self.keymap.switches.jog_release_ms / 1000
                 self._jog_release_timer = self.set_timer(delay, self._release_jog)
@@ -192,7 +192,7 @@ class MachineControlPanel:
             self._jog_release_timer.stop()
             self._jog_release_timer = None
         if self._jogging is not None:
-            axis = self._jogging[:-2] if self._jogging.endswith("-1") else self._jogging[:-1]
+            axis = self._jogging[0]
             self._jogging = None
             self.submit(cmd.Jog(axis, 0))
 
