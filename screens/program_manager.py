@@ -135,13 +135,26 @@ class ProgramManagerScreen(AreaBase):
         super().on_mount()
         table = self.table
         table.add_column(" ", key="mark", width=1)
-        table.add_column("Name", key="name", width=34)
+        table.add_column("Name", key="name", width=28)
         table.add_column("Type", key="type", width=6)
         table.add_column("Length", key="size", width=10)
-        table.add_column("Date", key="date", width=18)
+        table.add_column("Date", key="date", width=16)
         self.rebuild_tree()
         self.show_directory("MPF")
         table.focus()
+        self._hint_unsaved_journal()
+
+    def _hint_unsaved_journal(self) -> None:
+        """After a crash, point at the unsaved editor text the journal still holds."""
+        from hmi.journal import EditorJournal
+
+        try:
+            entries = EditorJournal(self.files.journal_dir).entries()
+        except OSError:
+            return
+        if entries:
+            names = ", ".join(e.program for e in entries[:3])
+            self.say(f"Unsaved text from an earlier session ({names}): PROGRAM (Alt+P) offers to restore it")
 
     def on_screen_resume(self) -> None:
         """Back in the area: list again (files may have changed in the editor)."""
