@@ -262,8 +262,12 @@ class Frame:
 
     # --- programmable-frame commands --------------------------------------------------------
     def atrans(self, values: Mapping[str, float]) -> "Frame":
-        """``ATRANS``: additive translation in the current system."""
-        return self.chain(Frame.ctrans(values, self.geometry_axes))
+        """``ATRANS``: additive translation in the current system.
+
+        It is booked into the fine translation (K2 bookkeeping table: ATRANS leaves the
+        coarse part alone, so a later ``G58`` that replaces the coarse part keeps it).
+        """
+        return self.chain(Frame.cfine(values, self.geometry_axes))
 
     def arot(self, angles_deg: Mapping[str, float]) -> "Frame":
         """``AROT X.. Y.. Z..``: additive rotation about the current axes."""

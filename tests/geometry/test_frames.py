@@ -36,7 +36,7 @@ def test_trans_then_atrans_adds_up() -> None:
 
 def test_g58_replaces_coarse_and_g59_the_fine_part() -> None:
     # Digest K2 §11.1 bookkeeping: (15,15,10) -> G58 X20 -> (25,15,10) -> G59 X10 Y10 -> (30,20,10).
-    frame = Frame.ctrans({"X": 10, "Y": 10, "Z": 10}).chain(Frame.cfine({"X": 5, "Y": 5}))
+    frame = Frame.ctrans({"X": 10, "Y": 10, "Z": 10}).atrans({"X": 5, "Y": 5})
     assert apply(frame) == approx({"X": 15.0, "Y": 15.0, "Z": 10.0})
     frame = frame.g58({"X": 20})
     assert apply(frame) == approx({"X": 25.0, "Y": 15.0, "Z": 10.0})
@@ -68,7 +68,8 @@ def test_atrans_after_rot_moves_along_rotated_axes() -> None:
     # ROT Z90 then ATRANS X10: the shift runs along the rotated X, i.e. parent +Y.
     frame = Frame.crot({"Z": 90}).atrans({"X": 10})
     assert apply(frame) == approx({"X": 0.0, "Y": 10.0, "Z": 0.0})
-    assert frame.trans["Y"] == pytest.approx(10.0)
+    assert frame.offset("Y") == pytest.approx(10.0)
+    assert frame.fine["Y"] == pytest.approx(10.0)  # ATRANS books into the fine part
 
 
 def test_ascale_scales_later_translations() -> None:
