@@ -21,6 +21,12 @@ The stage lives in the geometry state of the modal state (attribute
     reset_if_needed(modal)                  # before the builder reloads after RESET
     motions = process(motions, modal, path, data, machine)
     motions = flush(modal, path)            # stop point / program end
+
+Known simplifications: a stop point (M0/M1/M2/M30, STOPRE) ends the
+look-ahead like a preprocessing stop (the tool ends at the offset point of the
+block and the next block starts with a linking line); G4 does not. KONTT and
+KONTC approach like KONT; DISC, CUTCONON, G460/G461 and smooth approach
+(G147 …) are not simulated; the retraction uses G462.
 """
 
 from __future__ import annotations
