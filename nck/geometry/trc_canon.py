@@ -20,7 +20,7 @@ The stage lives in the geometry state of the modal state (attribute
 
     reset_if_needed(modal)                  # before the builder reloads after RESET
     motions = process(motions, modal, path, data, machine)
-    motions = flush(modal, path)            # stop point / program end
+    motions = flush(modal, path, data)      # stop point / program end
 
 Known simplifications: a stop point (M0/M1/M2/M30, STOPRE) ends the
 look-ahead like a preprocessing stop (the tool ends at the offset point of the
