@@ -56,6 +56,7 @@ def test_02_nc_stop_interrupts_and_nc_start_resumes_in_the_same_block() -> None:
     assert until_state(nck, "reset", "aborted")
     assert x(nck) == pytest.approx(100.0)
     assert nck.positions_mcs()["Y"] == pytest.approx(10.0)
+    assert nck._interpreters["AUTO"].steps == 3  # N10, N20, N30 once each: N10 not re-run
 
 
 # 3 -------------------------------------------------------------------------
@@ -357,6 +358,19 @@ def test_17_skip_levels() -> None:
     assert isinstance(nck.submit(c.SetProgramControl("skip_levels", set())), c.Rejected)
     assert until_state(nck, "reset", "aborted")
     assert nck.positions_mcs()["Y"] == pytest.approx(0.0)
+
+
+def test_17b_skip_levels_stay_effective_during_block_search() -> None:
+    program = "N10 G1 X1 F6000\n/N40 X40\nN50 Y5\nN60 Y9\nN70 M30"
+    nck = make_nck({"P": program})
+    nck.submit(c.SetProgramControl("skip_levels", {0}))
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P"))
+    assert nck.submit(c.StartBlockSearch("N60")) == c.Accepted()
+    nck.submit(c.CycleStart())
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "reset", "aborted")
+    assert nck.positions_mcs() == pytest.approx({"X": 1.0, "Y": 9.0, "Z": 0.0})
 
 
 # 18 ------------------------------------------------------------------------
