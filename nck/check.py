@@ -5,6 +5,8 @@ in a worker thread and shows the results as they come):
 
 1. **Block syntax**, line by line with the language's block parser: every
    faulty line is reported, so a trainee sees all syntax errors at once.
+   Then the **control structure** of the whole text (IF/ENDIF, loops) with the
+   interpreter's program loader.
 2. **Interpretation**: the interpreter runs the whole program headless (no axis
    moves; the canonical commands are only collected). This finds what one line
    cannot show (undefined labels, nesting, unknown subprograms, values out of
@@ -113,6 +115,24 @@ def iter_syntax_alarms(text: str) -> Iterator[CheckAlarm]:
             yield _alarm(NcAlarmError(number, *params, line=index, n=n), index)
 
 
+def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:
+    """Yield the control-structure problems of the whole text (IF without ENDIF, …).
+
+    Uses the interpreter's program loader, which knows the nesting rules; run it
+    only on a text without syntax errors (it would report those again).
+    """
+    try:
+        from nck.interp.program import load_program
+    except ImportError:
+        return
+    try:
+        problems = load_program(name, text).problems()
+    except RecursionError:
+        return
+    for error in problems:
+        yield _alarm(error)
+
+
 class _OverlaySource:
     """Serves the edited text under its own name, everything else from ``fallback``."""
 
@@ -212,6 +232,10 @@ def iter_check(
         if should_stop is not None and count % 64 == 0 and should_stop():
             return
     if syntax_lines:
+        return
+    structure = list(iter_structure_alarms(name, text))
+    yield from structure
+    if structure:
         return
     run = run_text(name, text, machine=machine, programs=programs, data=data, should_stop=should_stop)
     for alarm in run.alarms:
