@@ -145,6 +145,10 @@ class Nck(ManualControl, ControlSettings, StatusView):
         # reads status() and the alarm log): every interpreted block, every alarm raised.
         self.block_listener: Callable[[Any], None] | None = None
         self.alarm_listener: Callable[[NcAlarmError], None] | None = None
+        # Called at the end of every IPO cycle (the trace recorder of nck.trace).
+        self.cycle_listeners: list[Callable[["Nck"], None]] = []
+        self.cycles_done = 0  # IPO cycles since power on (system utilisation)
+        self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
         self._apply_overrides()
 
     # ------------------------------------------------------------------ API
@@ -213,6 +217,19 @@ class Nck(ManualControl, ControlSettings, StatusView):
     def alarm_log_since(self, seq: int) -> tuple[AlarmEvent, ...]:
         """Alarm/message log events newer than ``seq`` (bounded log)."""
         return self.alarms.log_since(seq)
+
+    def buffer_fill(self) -> tuple[int, int]:
+        """Read-only: (items in the motion system's block buffer, its capacity) for the diagnosis."""
+        motion = self._path_motion()
+        planner = getattr(motion, "la", None)
+        if planner is not None and hasattr(motion, "params"):
+            return len(planner), int(motion.params.buffer_segments)
+        queue = getattr(motion, "_queue", None)
+        if queue is not None:
+            from nck.motion.instant import BUFFER_SEGMENTS  # noqa: PLC0415
+
+            return len(queue), BUFFER_SEGMENTS
+        return 0, 0
 
     def alarm_history(self) -> tuple[AlarmEntry, ...]:
         """The alarm log with come/go times, oldest first (bounded)."""
@@ -354,7 +371,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
             flags["test"] = bool(self._pc["program_test"])
             flags["dry_run"] = bool(self._pc["dry_run"])
         run = ProgramRun(kind, name, interp, self._adjust_motion)
-        run.listener = self.block_listener
+        run.listener = self._count_block
         return run
 
     def _begin_run(self, run: ProgramRun) -> None:
@@ -521,6 +538,15 @@ class Nck(ManualControl, ControlSettings, StatusView):
             and self._sit.program == RUNNING and self._run is not None and self._run.kind == "AUTO"
         ):
             self.runtime.run(self._ipo_s)
+        self.cycles_done += 1
+        for listener in self.cycle_listeners:
+            listener(self)
+
+    def _count_block(self, block: Any) -> None:
+        """Every interpreted block: count it, then tell the optional block listener."""
+        self.blocks_interpreted += 1
+        if self.block_listener is not None:
+            self.block_listener(block)
 
     def _handle_events(self, run: ProgramRun, events: list[RunEvent]) -> None:
         for event in events:
