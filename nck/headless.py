@@ -282,5 +282,10 @@ def format_alarm(alarm: NcAlarmError) -> str:
 
 def alarm_message(alarm: NcAlarmError) -> str:
     """The alarm text with channel and block filled in."""
+    from nck.resources import alarm_catalog
+
     block = f"N{alarm.n}" if alarm.n is not None else (str(alarm.line) if alarm.line else "-")
+    if alarm.number not in alarm_catalog():
+        kind = "cycle/user alarm" if 60000 <= alarm.number <= 69999 else "alarm"
+        return " ".join([f"Channel 1 block {block}: {kind} {alarm.number}", *alarm.params])
     return alarm_text(alarm.number, ("1", block, *alarm.params))
