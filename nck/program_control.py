@@ -209,11 +209,8 @@ class ProgramRun:
                 elif kind in ("M1", "M01"):
                     if options.m01:
                         self._stop_after = "M1"
-                elif kind == "STOPRE":
-                    if self._stop_after is None:
-                        self._stop_after = "STOPRE"
-                else:
-                    self._stop_after = kind
+                elif self._stop_after is None:
+                    self._stop_after = "STOPRE"  # STOPRE and any other sync point: wait for the main run
             elif isinstance(command, ProgramEnd):
                 self._end_kind = command.kind
             elif isinstance(command, Message):
