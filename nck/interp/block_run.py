@@ -191,8 +191,6 @@ class BlockRun:
         if address == "M":
             m = _whole(number, "M")
             self.words.m_codes.append((word.ext, m))
-            if word.ext in (None, 0) and m == 17:
-                pass
             return
         if address == "H":
             self.words.h_codes.append((word.ext, float(number)))
