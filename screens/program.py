@@ -305,6 +305,14 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             self.journal_now()
             self.app.call_later(self._ask_after_leave)
 
+    def on_unmount(self) -> None:
+        """The app is closing (Ctrl+Q): unsaved text goes into the journal, offered next time."""
+        if self.program is not None and not self.binary:
+            try:
+                self.journal_now()
+            except Exception:  # never block quitting
+                pass
+
     def _ask_after_leave(self) -> None:
         if self.app.current_mode == self.AREA_ID or not self.is_modified():
             return

@@ -150,6 +150,13 @@ class BrailleCanvas:
         self._bits = [[0] * self.width for _ in range(self.height)]
         self._kinds = [[""] * self.width for _ in range(self.height)]
 
+    def copy(self) -> BrailleCanvas:
+        """An independent copy (to draw a marker over a kept drawing)."""
+        twin = BrailleCanvas(self.width, self.height)
+        twin._bits = [row[:] for row in self._bits]
+        twin._kinds = [row[:] for row in self._kinds]
+        return twin
+
     @property
     def dot_width(self) -> int:
         """Width in dots."""
@@ -252,7 +259,7 @@ def fit_viewport(pieces: Sequence[PathPiece], view: str, canvas: BrailleCanvas) 
 
 def draw_path(
     pieces: Sequence[PathPiece], view: str, viewport: Viewport, canvas: BrailleCanvas,
-    current_line: int | None = None,
+    current_line: int | None = None, origin: bool = True,
 ) -> None:
     """Project ``pieces`` into ``canvas`` (rapid dashed, current block marked, origin cross)."""
     h_index, v_index, _ = VIEWS[view]
@@ -262,9 +269,10 @@ def draw_path(
         y = canvas.dot_height / 2 - (point[v_index] - viewport.center_v) / viewport.mm_per_dot
         return x, y
 
-    ox, oy = to_dots((0.0, 0.0, 0.0))
-    canvas.line(ox - 3, oy, ox + 3, oy, "origin")
-    canvas.line(ox, oy - 3, ox, oy + 3, "origin")
+    if origin:
+        ox, oy = to_dots((0.0, 0.0, 0.0))
+        canvas.line(ox - 3, oy, ox + 3, oy, "origin")
+        canvas.line(ox, oy - 3, ox, oy + 3, "origin")
     for piece in pieces:
         x0, y0 = to_dots(piece.start)
         x1, y1 = to_dots(piece.end)
@@ -315,6 +323,9 @@ class ToolpathView(Widget, can_focus=True):
     def __init__(self, pieces: Sequence[PathPiece] = (), **kwargs: object) -> None:
         super().__init__(**kwargs)  # type: ignore[arg-type]
         self._pieces: list[PathPiece] = list(pieces)
+        self._by_line: dict[int, list[PathPiece]] = {}
+        self._base: tuple[tuple, BrailleCanvas, Viewport] | None = None
+        self._index_lines()
         self._zoom = 1.0
         self._pan_h = 0.0
         self._pan_v = 0.0
@@ -328,8 +339,15 @@ class ToolpathView(Widget, can_focus=True):
     def set_pieces(self, pieces: Sequence[PathPiece], status_text: str = "") -> None:
         """Show a new toolpath (fitted to the window)."""
         self._pieces = list(pieces)
+        self._index_lines()
         self.status_text = status_text
         self.action_fit()
+
+    def _index_lines(self) -> None:
+        self._base = None
+        self._by_line = {}
+        for piece in self._pieces:
+            self._by_line.setdefault(piece.line, []).append(piece)
 
     @property
     def zoom(self) -> float:
@@ -360,17 +378,31 @@ class ToolpathView(Widget, can_focus=True):
             self.action_fit()
 
     def render_canvas(self, width: int, height: int) -> tuple[BrailleCanvas, Viewport]:
-        """Draw the toolpath into a canvas of ``width × height`` cells."""
-        canvas = BrailleCanvas(width, height)
-        fitted = fit_viewport(self._pieces, self.view, canvas)
-        span_h = fitted.mm_per_dot * canvas.dot_width
-        span_v = fitted.mm_per_dot * canvas.dot_height
-        viewport = Viewport(
-            fitted.center_h + self._pan_h * span_h,
-            fitted.center_v + self._pan_v * span_v,
-            fitted.mm_per_dot / self._zoom,
-        )
-        draw_path(self._pieces, self.view, viewport, canvas, self.current_line)
+        """Draw the toolpath into a canvas of ``width × height`` cells.
+
+        The path without the current block is drawn once per size, view, zoom and
+        pan and kept; a new current block only redraws its own pieces on a copy.
+        """
+        key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(self._pieces))
+        if self._base is None or self._base[0] != key:
+            canvas = BrailleCanvas(width, height)
+            fitted = fit_viewport(self._pieces, self.view, canvas)
+            span_h = fitted.mm_per_dot * canvas.dot_width
+            span_v = fitted.mm_per_dot * canvas.dot_height
+            viewport = Viewport(
+                fitted.center_h + self._pan_h * span_h,
+                fitted.center_v + self._pan_v * span_v,
+                fitted.mm_per_dot / self._zoom,
+            )
+            draw_path(self._pieces, self.view, viewport, canvas)
+            self._base = (key, canvas, viewport)
+        _, base, viewport = self._base
+        line = self.current_line
+        current = [p for p in self._by_line.get(line, ())] if line is not None else []
+        if not current:
+            return base, viewport
+        canvas = base.copy()
+        draw_path(current, self.view, viewport, canvas, line, origin=False)
         return canvas, viewport
 
     def render(self) -> Text:

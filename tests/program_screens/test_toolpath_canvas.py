@@ -86,3 +86,23 @@ def test_huge_coordinates_do_not_hang() -> None:
     canvas.line(-1e12, 5, 1e12, 5, "feed")
     canvas.line(float("nan"), 0, 1, 1, "feed")
     assert any(ch != " " for ch, _ in canvas.rows()[1])
+
+
+def test_view_marks_the_current_block_over_the_kept_drawing() -> None:
+    """The current block is drawn in its own colour; the kept base drawing stays unmarked."""
+    from hmi.widgets.toolpath import ToolpathView
+
+    pieces = path_from_motions([
+        motion("G0", 1, 10, 0, start={"X": 0.0, "Y": 0.0, "Z": 0.0}),
+        motion("G1", 2, 10, 10),
+        motion("G1", 3, 0, 10),
+    ])
+    view = ToolpathView(pieces)
+    kinds = lambda c: {k for row in c.rows() for _, k in row}
+    plain, _ = view.render_canvas(40, 12)
+    assert "current" not in kinds(plain)
+    view.current_line = 2
+    marked, _ = view.render_canvas(40, 12)
+    assert "current" in kinds(marked)
+    view.current_line = None
+    assert "current" not in kinds(view.render_canvas(40, 12)[0])
