@@ -57,6 +57,11 @@ def call(name: str, args: Sequence[Any], length_mm: float = 1.0) -> GeoFrameValu
     raise NcAlarmError(12550, name)
 
 
+def chain(left: Any, right: Any) -> GeoFrameValue:
+    """The ``:`` operator: ``right`` acts inside ``left`` (alarm 14096 for non-frames)."""
+    return _value(as_frame(left, ":").chain(as_frame(right, ":")))
+
+
 def as_frame(value: Any, name: str) -> Frame:
     """The :class:`Frame` inside a FRAME value (alarm 14096 for anything else)."""
     if isinstance(value, GeoFrameValue):

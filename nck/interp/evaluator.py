@@ -144,6 +144,8 @@ def _binary(expr: ast.Binary, scope: Scope) -> Any:
     op = expr.op
     left = evaluate(expr.left, scope)
     right = evaluate(expr.right, scope)
+    if op == ":":  # frame chaining
+        return frame_functions.chain(left, right)
     if op == "+":
         return _checked(_number(left) + _number(right))
     if op == "-":

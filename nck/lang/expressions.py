@@ -36,6 +36,7 @@ VALUE_ADDRESSES = frozenset(
 
 # Binary operator levels, lowest priority first.
 _LEVELS: tuple[tuple[str, ...], ...] = (
+    (":",),  # frame chaining: CTRANS(X,10):CROT(Z,45)
     ("==", "<>", "<", ">", "<=", ">="),
     ("<<",),
     ("OR",),

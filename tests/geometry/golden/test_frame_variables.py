@@ -76,3 +76,17 @@ def test_frame_functions_assigned_to_frame_variables() -> None:
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 $P_PFRAME=CTRANS(X)", "N20 M30"))
     assert info.value.number == 14020
+
+
+def test_frame_chain_operator() -> None:
+    data = NcData()
+    r = run(lines(
+        "N10 $P_UIFR[1]=CTRANS(X,100,Y,50):CROT(Z,90)",  # shift, then turn about the new origin
+        "N20 G54 G0 X10 Y0",                            # (10,0) -> (0,10) -> (100,60)
+        "N30 $P_PFRAME=CROT(Z,90):CTRANS(X,5)",         # the shift runs along the turned X (= +Y)
+        "N40 G0 X0 Y0",                                 # (0,0) -> (0,5); G54 turns it to (-5,0), + (100,50)
+        "N50 M30",
+    ), data)
+    assert data.settable_frames["G54"].rot == {"Z": pytest.approx(90.0)}
+    assert r.end_mcs(20) == approx({"X": 100.0, "Y": 60.0, "Z": 0.0})
+    assert r.end_mcs(40) == approx({"X": 95.0, "Y": 50.0, "Z": 0.0})
