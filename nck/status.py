@@ -134,3 +134,15 @@ class AlarmEvent:
     kind: str
     time_s: float
     entry: AlarmEntry
+
+
+@dataclass(frozen=True, slots=True)
+class LogbookEntry:
+    """One line of the diagnosis logbook (``Nck.logbook``): an access-level or MD/SD change.
+
+    ``kind`` is ``"access"`` or ``"data"``; ``time_s`` is simulated-control time.
+    """
+
+    time_s: float
+    kind: str
+    text: str
