@@ -6,7 +6,7 @@ import tomllib
 from pathlib import Path
 
 from nck import canon
-from nck.headless import RunResult, run_program
+from nck.headless import RunResult, interpret_only
 from nck.interp.sources import MemorySource
 from nck.lang.gcodes import gtable
 from nck.machine import load_machine
@@ -82,9 +82,11 @@ def run_case(folder: Path) -> str:
     data = NcData()
     for index, value in options.get("r", {}).items():
         data.r[int(index)] = float(value)
-    result = run_program(load_machine(options.get("machine")), MemorySource(programs), data, "main.mpf",
-                         text=programs["main.mpf"], timeout_s=options.get("timeout_s", 100.0),
-                         skip_levels=frozenset(options.get("skip_levels", [])))
+    # The language is tested on its own: the interpreter-only loop (no kernel, no motion
+    # simulation), with a generous block budget so that a runaway program still ends.
+    result = interpret_only(load_machine(options.get("machine")), MemorySource(programs), data,
+                            "main.mpf", text=programs["main.mpf"], max_blocks=100_000,
+                            skip_levels=frozenset(options.get("skip_levels", [])))
     lines = [command_line(c) for c in result.commands]
     lines.append("--")
     lines.extend(final_lines(result, data))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from nck.headless import RunResult, run_program
+from nck.headless import RunResult, interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
 from nck.ncdata import NcData
@@ -14,8 +14,8 @@ def run_text(text: str, subprograms: dict[str, str] | None = None, data: NcData 
              timeout_s: float | None = 60.0, machine: str | None = None) -> RunResult:
     """Run ``text`` as TEST.MPF with optional subprograms; returns the RunResult."""
     source = MemorySource(subprograms or {})
-    return run_program(load_machine(machine), source, data or NcData(), "TEST.MPF", text=text,
-                       timeout_s=timeout_s)
+    return interpret_only(load_machine(machine), source, data or NcData(), "TEST.MPF", text=text,
+                          timeout_s=timeout_s, max_blocks=100_000)
 
 
 @pytest.fixture
