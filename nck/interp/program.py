@@ -57,6 +57,7 @@ class Program:
     partner: dict[int, int] = field(default_factory=dict)
     else_of: dict[int, int] = field(default_factory=dict)
     structure_errors: dict[int, NcAlarmError] = field(default_factory=dict)
+    jump_warnings: dict[int, NcAlarmError] = field(default_factory=dict)
     proc: ast.Proc | None = None
 
     def __deepcopy__(self, memo: dict) -> "Program":
@@ -71,6 +72,8 @@ class Program:
                 found.append((index, line.error))
             elif index in self.structure_errors:
                 found.append((index, self.structure_errors[index]))
+            elif index in self.jump_warnings:
+                found.append((index, self.jump_warnings[index]))
         return [alarm for _, alarm in found]
 
     def find_label(self, label: str, start: int, direction: str) -> int | None:
@@ -129,6 +132,7 @@ def load_program(name: str, text: str) -> Program:
             lines.append(Line(number, raw, None, _located(alarm, name, number, _guess_n(raw))))
     program = Program(name=name, lines=lines)
     _index(program)
+    _check_jumps(program)
     return program
 
 
@@ -199,6 +203,39 @@ def _index(program: Program) -> None:
         line = program.lines[index]
         program.structure_errors.setdefault(index, NcAlarmError(12640).located(
             program.name, line.number, line.block.number if line.block else None))
+
+
+def _check_jumps(program: Program) -> None:
+    """Jumps to labels or block numbers that cannot be found in their direction.
+
+    Found for ``nck check`` only (``jump_warnings``): at run time the jump
+    itself raises 14080 when it is taken. A target name that is also a
+    variable DEFined in the program (``GOTOF <string variable>``) is skipped.
+    """
+    variables = {decl.name for line in program.lines if line.block is not None
+                 for stmt in line.block.statements if isinstance(stmt, ast.Def) for decl in stmt.names}
+    for index, line in enumerate(program.lines):
+        if line.block is None:
+            continue
+        for stmt in line.block.statements:
+            gotos: list[ast.Goto] = []
+            if isinstance(stmt, ast.Goto):
+                gotos = [stmt]
+            elif isinstance(stmt, ast.IfGoto):
+                gotos = [stmt.goto]
+            elif isinstance(stmt, ast.Case):
+                gotos = [g for _, g in stmt.branches] + ([stmt.default] if stmt.default else [])
+            for goto in gotos:
+                if goto.kind == "GOTOC" or goto.expr is not None or goto.label in variables:
+                    continue
+                direction = {"GOTOF": "F", "GOTOB": "B", "GOTO": "FB"}[goto.kind]
+                if goto.number is not None:
+                    found = program.find_number(goto.number, index, direction)
+                else:
+                    found = program.find_label(goto.label or "", index, direction)
+                if found is None:
+                    program.jump_warnings.setdefault(index, NcAlarmError(14080, goto.target_text).located(
+                        program.name, line.number, line.block.number))
 
 
 def _check_gcodes(block: ast.Block) -> NcAlarmError | None:

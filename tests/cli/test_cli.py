@@ -161,3 +161,13 @@ def test_set_setting_and_axis_machine_data(tmp_path: Path, capsys: pytest.Captur
     assert main(["run", str(prog), "--json", "--set", "SD42100=1234", "--set", "$MA_MAX_AX_VELO[Y]=5000"]) == 0
     assert json.loads(capsys.readouterr().out)["r"] == {"1": 1234.0, "2": 5000.0}
     assert main(["run", str(prog), "--set", "$MC_NO_SUCH_DATUM=1"]) == 2
+
+
+def test_check_finds_jumps_without_destination_on_paths_not_taken(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    prog = write(tmp_path, "J.MPF", "R1=1\nIF R1==0 GOTOF NOWHERE\nGOTOB LATER\nLATER: GOTOC GONE\nM30\n")
+    assert main(["check", str(prog)]) == 1
+    err = capsys.readouterr().err.splitlines()
+    assert [(line.split()[1], line.split()[2]) for line in err] == [("14080", "J.MPF:2"), ("14080", "J.MPF:3")]
+    ok = write(tmp_path, "S.MPF", 'DEF STRING[8] DEST="END"\nGOTOF DEST\nEND: M30\n')
+    assert main(["check", str(ok)]) == 0
