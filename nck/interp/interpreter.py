@@ -23,8 +23,9 @@ levels), :attr:`position_source` (actual positions for ``$AA_IM``),
 
 ``BlockResult.extras`` carries ``level`` (program level after the block, 0 at
 the end), ``skipped`` (a ``/`` block that was skipped), ``single_block_off``
-(SBLOF active: single block must not stop after this block) and
-``display_off`` (DISPLOF: do not show this block).
+(SBLOF active: single block must not stop after this block),
+``display_off`` (DISPLOF: do not show this block) and ``preprocessing_stop``
+(the block read main-run data; see :meth:`Interpreter.needs_preprocessing_stop`).
 """
 
 from __future__ import annotations
@@ -165,6 +166,25 @@ class Interpreter:
         modal = self._state.modal
         known = {a: float(v) for a, v in position_mcs.items() if a in modal.position_mcs}
         self.builder.sync_position(modal, known)  # WCS via frames and tool offset
+
+    def needs_preprocessing_stop(self) -> bool:
+        """True if the next block reads main-run data (``$A…``, ``$V…``, ``$$…``).
+
+        Such a block may only be interpreted once every block before it has
+        been executed (implicit STOPRE): the channel should wait until motion
+        is idle, update :attr:`position_source`, then call :meth:`step`.
+        """
+        if self._state.finished or not self._state.frames:
+            return False
+        frame = self._state.frames[-1]
+        if frame.pc >= len(frame.program.lines):
+            return False
+        line = frame.program.lines[frame.pc]
+        if line.block is None:
+            return False
+        if line.main_run_read is None:
+            line.main_run_read = _reads_main_run_data(line.block)
+        return line.main_run_read
 
     def current_source(self) -> canon.Source | None:
         """File, line and block number of the next block (None when finished)."""
@@ -321,6 +341,8 @@ class Interpreter:
             return BlockResult(source, line.text, cost_s=BLOCK_COST_S, extras={"skipped": True})
         if index in program.structure_errors:
             raise _clone(program.structure_errors[index])
+        if line.main_run_read is None:
+            line.main_run_read = _reads_main_run_data(block)
         run = BlockRun(self, frame, index, source)
         commands = run.execute(block)
         return BlockResult(
@@ -331,6 +353,7 @@ class Interpreter:
             finished=state.finished,
             cost_s=BLOCK_COST_S,
             extras={"level": len(state.frames) if not state.finished else 0,
+                    "preprocessing_stop": bool(line.main_run_read),
                     "single_block_off": frame.single_block_off,
                     "display_off": frame.display_off},
         )
@@ -462,6 +485,33 @@ _MISSING_EDGE = object()
 
 _MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Case, ast.SectionRepeat, ast.Def, ast.Extern,
                ast.Proc, ast.Call, ast.ModalCall)
+
+
+_MAIN_RUN_PREFIXES = ("$A", "$V", "$$")
+
+
+def _reads_main_run_data(block: ast.Block) -> bool:
+    """True if any expression of the block names a main-run variable."""
+    found = False
+
+    def visit(node: object) -> None:
+        nonlocal found
+        if found or node is None:
+            return
+        if isinstance(node, (ast.Name, ast.Index)) and node.name.startswith(_MAIN_RUN_PREFIXES):
+            found = True
+            return
+        if isinstance(node, (list, tuple)):
+            for item in node:
+                visit(item)
+            return
+        fields = getattr(node, "__dataclass_fields__", None)
+        if fields:
+            for name in fields:
+                visit(getattr(node, name))
+
+    visit(block.statements)
+    return found
 
 
 def _frame_copy(frame: Frame) -> Frame:

@@ -30,6 +30,7 @@ class Line:
     block: ast.Block | None
     error: NcAlarmError | None = None
     touches_modal: bool | None = None  # cache for the interpreter's block snapshot
+    main_run_read: bool | None = None  # cache: the block reads $A…/$V… (preprocessing stop)
 
 
 @dataclass

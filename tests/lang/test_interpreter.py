@@ -202,3 +202,13 @@ def test_modal_view_reports_tool_feed_spindle() -> None:
     view = interp.modal_view()
     assert (view.tool, view.edge, view.feed, view.spindle_speed_rpm, view.spindle_state) == (2, 1, 300.0, 800.0, "M4")
     assert view.gcodes[1] == "G1"
+
+
+def test_blocks_reading_main_run_data_ask_for_a_preprocessing_stop() -> None:
+    interp = make("G0 X10\nR1=$AA_IM[X]+1\nIF $AA_IW[Y]>0 GOTOF END\nR2=$P_EP[X]\nEND: M30\n")
+    flags = []
+    while not interp.finished:
+        flags.append(interp.needs_preprocessing_stop())
+        result = interp.step()
+        assert result.extras.get("preprocessing_stop", False) == flags[-1]
+    assert flags == [False, True, True, False, False]
