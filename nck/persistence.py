@@ -50,6 +50,7 @@ from nck.machine import MachineConfig, load_machine
 from nck.machine_data import MachineDataStore, catalog, fill_setting_defaults
 from nck.ncdata import NcData, ToolEdge, WorkOffset
 from nck.resources import data_path
+from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError
 
 FORMAT = "sinumerik-trainer/retained"
@@ -340,6 +341,18 @@ def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmEr
     return [NcAlarmError(ALARM_DEFAULTS_LOADED, main.name, reason, kept)]
 
 
+def alarm_entry_from_dict(data: Mapping[str, Any]) -> AlarmEntry:
+    """An alarm-log entry from its retained form (tolerates missing optional keys)."""
+    went = data.get("went_s")
+    return AlarmEntry(
+        seq=_integer(data.get("seq", 0)), number=_integer(data["number"]), text=str(data.get("text", "")),
+        category=str(data.get("category", "")), clear=str(data.get("clear", "reset")),
+        came_s=_number(data.get("came_s", 0.0)), went_s=None if went is None else _number(went),
+        params=tuple(str(p) for p in data.get("params", ()) or ()),
+        file=data.get("file"), line=data.get("line"), n=data.get("n"),
+    )
+
+
 # ------------------------------------------------------------------- session
 class Session:
     """The retained state of one NC data directory for one machine.
@@ -431,6 +444,30 @@ class Session:
             data = dataclasses.asdict(entry) if dataclasses.is_dataclass(entry) else dict(entry)
             self.retained.alarm_log.append(_plain({k: v for k, v in data.items()}))
         del self.retained.alarm_log[:-ALARM_LOG_LIMIT]
+
+    def restore_alarm_log(self, nck: Any) -> None:
+        """Give the kernel the retained alarm log (after power on), as entries before its own.
+
+        Retained entries get negative sequence numbers (oldest lowest), so they
+        never mix with the ones the kernel numbers from 1 after this power on;
+        the diagnosis marks them as coming from before the last power on.
+        """
+        self._alarm_base = list(self.retained.alarm_log)
+        entries = [alarm_entry_from_dict(data) for data in self._alarm_base]
+        count = len(entries)
+        nck.load_alarm_history([dataclasses.replace(e, seq=index - count) for index, e in enumerate(entries)])
+
+    def store_alarm_log(self, nck: Any) -> None:
+        """Replace the retained alarm log by the retained part plus this power on's entries (bounded).
+
+        Call before :meth:`save` (on quit; calling it again later is fine). Alarms
+        still pending keep ``went_s`` None.
+        """
+        base = getattr(self, "_alarm_base", None)
+        if base is None:
+            base = self._alarm_base = list(self.retained.alarm_log)
+        self.retained.alarm_log = list(base)
+        self.record_alarms(e for e in nck.alarm_history() if e.seq > 0)
 
     def active_machine(self) -> MachineConfig:
         """The machine with the active MD values (build the kernel from this)."""
