@@ -16,7 +16,7 @@ from nck.errors import NcAlarmError
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
 from nck.interp import sysvars
 from nck.interp.evaluator import equal, evaluate
-from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, write_binding
+from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, journal_cell, write_binding
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
 from nck.interp.values import Axis, Cell, convert, to_bool, to_number, to_string
@@ -239,6 +239,9 @@ class BlockRun:
     # ------------------------------------------------------------ assignment
     def _assign_stmt(self, stmt: ast.Assign) -> None:
         target = stmt.target
+        if isinstance(stmt.value, ast.Func) and stmt.value.name in ("SET", "REP"):
+            self._assign_list(target, stmt.value)
+            return
         if isinstance(target, ast.Index) and target.name == "AX" and self.interp.lookup("AX") is None:
             # AX[<axis expression>]=value: axis word with a computed axis name
             if len(target.indices) != 1:
@@ -254,6 +257,29 @@ class BlockRun:
                 self._address(ast.AddressWord(name, stmt.value))
                 return
         self.assign(target, self.eval(stmt.value))
+
+    def _assign_list(self, target: ast.Name | ast.Index | ast.RParam, func: ast.Func) -> None:
+        """``ARR[i]=SET(a, b, …)`` fills from element i on; ``ARR[i]=REP(v)`` fills to the end."""
+        if isinstance(target, ast.RParam) or any(a is None for a in func.args) or not func.args:
+            raise NcAlarmError(12080, func.name)
+        binding = self.interp.lookup(target.name)
+        if not isinstance(binding, Cell) or not binding.dims:
+            raise NcAlarmError(12150, target.name)
+        start = 0
+        if isinstance(target, ast.Index):
+            start = binding.offset(tuple(self._index_value(i) for i in target.indices))
+        values = [self.eval(a) for a in func.args if a is not None]
+        size = len(binding.value)
+        if func.name == "REP":
+            if len(values) != 1:
+                raise NcAlarmError(12080, "REP")
+            values = values * (size - start)
+        elif start + len(values) > size:
+            raise NcAlarmError(17020, target.name)
+        for position, value in enumerate(values, start=start):
+            element = _unflatten(position, binding.dims)
+            journal_cell(self.interp, binding, element)
+            binding.set(value, element)
 
     def _is_address(self, name: str) -> bool:
         return self.interp.is_axis(name) or name in VALUE_ADDRESSES or (len(name) == 1)

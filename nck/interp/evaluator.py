@@ -274,6 +274,9 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
     args = expr.args
     if any(a is None for a in args):
         raise NcAlarmError(12080, name)
+    if name in ("SET", "REP"):
+        # Only meaningful as the whole right side of an array assignment (handled there).
+        raise NcAlarmError(12080, name)
     if name in ("AC", "IC"):
         # Only meaningful as an address value; the interpreter handles that case.
         raise NcAlarmError(12080, name)

@@ -157,7 +157,7 @@ class TokenParser:
                 return ast.Num(True)
             if name == "FALSE":
                 return ast.Num(False)
-            if name in RESERVED and name not in ("AC", "IC"):
+            if name in RESERVED and not (name in ("AC", "IC", "SET", "REP") and self.is_op("(")):
                 raise syntax_error(tok)
             if self.is_op("("):
                 return ast.Func(name, self._arguments())
