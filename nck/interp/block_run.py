@@ -494,7 +494,7 @@ class BlockRun:
     def _call(self, call: ast.Call) -> None:
         interp = self.interp
         state = interp._state
-        found = interp.programs.read_program(call.name)
+        found = interp.programs.read_program(call.name) or interp.read_cycle(call.name)
         if found is None:
             if call.args is None and not call.name[:1] == "L" and self.passes is None:
                 raise NcAlarmError(12550, call.name)

@@ -167,6 +167,18 @@ class Interpreter:
         known = {a: float(v) for a, v in position_mcs.items() if a in modal.position_mcs}
         self.builder.sync_position(modal, known)  # WCS via frames and tool offset
 
+    def read_cycle(self, name: str) -> tuple[str, str] | None:
+        """A standard cycle shipped as an NC program in ``data/cycles`` (CYCLE81 …), or None.
+
+        Programs of the program source with the same name win (a user's own cycle).
+        """
+        from nck.interp.sources import DirectorySource
+        from nck.resources import data_path
+
+        if not name.upper().startswith("CYCLE"):
+            return None
+        return DirectorySource(data_path("cycles")).read_program(name)
+
     def needs_preprocessing_stop(self) -> bool:
         """True if the next block reads main-run data (``$A…``, ``$V…``, ``$$…``).
 
