@@ -27,6 +27,10 @@ class BlockResult:
         finished: True when the main program ended (M2/M30) with this block.
         cost_s: simulated time the interpretation of this block costs (so an
             endless loop without motion still advances time).
+        extras: further facts about the block, by key: ``level`` (program level
+            after the block), ``skipped`` (skip level active), ``single_block_off``
+            (SBLOF), ``display_off`` (DISPLOF), ``preprocessing_stop`` (the block
+            read main-run data such as ``$AA_IM``).
     """
 
     source: Source
