@@ -7,7 +7,7 @@ manager, or the last one again with the PROGRAM key Alt+P):
 * a check of the whole text runs shortly after each change, in a worker
   thread, and streams its alarms: each faulty line gets a gutter mark and an
   underline, the alarm number and text of the cursor line stand in the
-  message line under the editor, and ``Next error`` (Shift+F3) jumps there;
+  message line under the editor, and ``Next error`` (Shift+F1) jumps there;
 * softkeys for Edit (mark, copy, cut, paste, delete, undo, redo), Search /
   Replace, Renumber (step 10), Save, Simulation, Execute and Close;
 * unsaved text goes into a journal every few seconds (``hmi.journal``); after a
@@ -173,13 +173,15 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
                 Softkey("program.close", "Close", "close", enabled=has_program),
             ],
             [
-                Softkey("program.start", "Start of\nprogram", "cursor_start", enabled=has_program),
-                Softkey("program.end", "End of\nprogram", "cursor_end", enabled=has_program),
+                # VSK3 (Shift+F3) is left to non-essential keys: Textual reads its escape
+                # sequence as a cursor position report, so it never arrives as a key.
                 Softkey("program.next_error", "Next\nerror", "next_error", enabled=has_program),
+                Softkey("program.start", "Start of\nprogram", "cursor_start", enabled=has_program),
+                Softkey("program.check", "Check\nnow", "check_now", enabled=has_program),
+                Softkey("program.end", "End of\nprogram", "cursor_end", enabled=has_program),
                 Softkey("program.undo", "Undo", "undo", enabled=writable),
                 Softkey("program.redo", "Redo", "redo", enabled=writable),
                 None,
-                Softkey("program.check", "Check\nnow", "check_now", enabled=has_program),
                 Softkey("program.restore", "Restore\nunsaved", "offer_restore_any"),
             ],
         )
@@ -472,7 +474,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             message.set_class(True, "-error")
         else:
             state = "checking …" if self._check_running else (
-                f"{count} faulty line(s) — Shift+F3: next error" if count else "no errors found")
+                f"{count} faulty line(s) — Shift+F1: next error" if count else "no errors found")
             message.update(state if self.program else "")
             message.set_class(False, "-error")
 
