@@ -1,0 +1,416 @@
+"""The Diagnostics area: alarms, messages, alarm log, service screens, utilisation, trace.
+
+Views (horizontal softkeys): alarm list, messages, alarm log, service overview,
+service axis/spindle, service drive, trace; ``More`` leads to system
+utilisation, version and the logbook. The vertical softkeys belong to the
+view on display (acknowledge, filter/export, axis +/−, trace settings).
+Everything shown comes from the status snapshot, the alarm log and read-only
+kernel accessors (``alarm_history``, ``logbook``, ``buffer_fill``, counters).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, ClassVar
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.containers import Vertical
+from textual.widgets import ContentSwitcher, Input, Static
+
+import nck as nck_package
+from nck import commands as cmd
+from nck.status import NckStatus
+
+from hmi.area import AreaBase, show_text
+from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.widgets.plot import TracePlot
+from screens.diagnostics_alarms import (
+    LogFilter, alarm_list_text, clock_text, log_as_csv, log_as_text, log_rows, log_text, message_lines,
+    messages_text, parse_filter,
+)
+from screens.diagnostics_service import (
+    UtilisationMeter, axis_rows, drive_rows, overview_text, rows_text, utilisation_rows,
+)
+from screens.diagnostics_trace import TraceSession
+
+VIEWS = ("alarms", "messages", "log", "overview", "axis", "drive", "utilisation", "trace",
+         "version", "logbook")
+TITLES = {
+    "alarms": "Alarm list", "messages": "Messages", "log": "Alarm log",
+    "overview": "Service overview", "axis": "Service axis/spindle", "drive": "Service drive",
+    "utilisation": "System utilisation", "trace": "Trace", "version": "Version",
+    "logbook": "Logbook",
+}
+LOG_PAGE = 30
+
+
+def _view_key(key_id: str, label: str, view: str) -> Softkey:
+    return Softkey(key_id, label, f"show_view('{view}')", active=lambda s, v=view: s.view == v)
+
+
+class DiagnosticsScreen(AreaBase):
+    """The Diagnostics operating area."""
+
+    AREA_ID: ClassVar[str] = "diagnostics"
+    AREA_TITLE: ClassVar[str] = "DIAGNOSTICS"
+    CSS_PATH = "diagnostics.tcss"
+
+    def __init__(self) -> None:
+        super().__init__(id="area-diagnostics")
+        self.view = "alarms"
+        self.axis_index = 0
+        self.log_filter = LogFilter()
+        self.log_first = 0
+        self.export_dir = Path.cwd()
+        self.meter = UtilisationMeter()
+        self.trace: TraceSession | None = None
+        self._log_seq = -1
+
+    # -- kernel access (read-only accessors) --------------------------------------------
+    @property
+    def kernel(self) -> Any:
+        """The kernel behind the bridge (only its read-only accessors are used here)."""
+        return self.hmi.bridge.nck
+
+    def _history(self) -> tuple:
+        reader = getattr(self.kernel, "alarm_history", None)
+        return tuple(reader()) if callable(reader) else ()
+
+    # -- layout ---------------------------------------------------------------------------
+    def compose_content(self) -> ComposeResult:
+        """A title line and one window per view."""
+        yield Static("", id="diag-title", markup=False)
+        with ContentSwitcher(id="diag-views", initial="view-alarms"):
+            for view in VIEWS:
+                with Vertical(id=f"view-{view}", classes="diag-view"):
+                    if view == "log":
+                        yield Input(placeholder="number range and/or text, e.g. 10000-19999 limit",
+                                    id="log-filter")
+                    if view == "trace":
+                        yield Static("", id="trace-settings", markup=False)
+                        yield TracePlot(id="trace-plot")
+                    else:
+                        yield Static("", id=f"diag-{view}", classes="diag-body", markup=False)
+
+    def on_mount(self) -> None:
+        """No cursor blink; measure the kernel's compute time from now on."""
+        self.query_one("#log-filter", Input).cursor_blink = False
+        self.meter.attach(self.kernel)
+        machine = getattr(self.kernel, "machine", None)
+        if machine is not None:
+            self.trace = TraceSession(machine)
+        super().on_mount()
+        self._show_view()
+
+    # -- softkeys -----------------------------------------------------------------------------
+    def softkey_menu(self) -> SoftkeyMenu:
+        """Views on the horizontal keys; the view's own keys on the vertical ones."""
+        horizontal = [
+            _view_key("diag.alarms", "Alarm\nlist", "alarms"),
+            _view_key("diag.messages", "Messages", "messages"),
+            _view_key("diag.log", "Alarm\nlog", "log"),
+            _view_key("diag.overview", "Service\noverview", "overview"),
+            _view_key("diag.axis", "Service\naxis", "axis"),
+            _view_key("diag.drive", "Service\ndrive", "drive"),
+            _view_key("diag.trace", "Trace", "trace"),
+            Softkey("diag.more", "More\n▸", "more"),
+        ]
+        return SoftkeyMenu.of(horizontal, self._vertical_keys())
+
+    def _more_menu(self) -> SoftkeyMenu:
+        return SoftkeyMenu.of([
+            _view_key("diag.utilisation", "System\nutilis.", "utilisation"),
+            _view_key("diag.version", "Version", "version"),
+            _view_key("diag.logbook", "Logbook", "logbook"),
+        ], self._vertical_keys())
+
+    def _vertical_keys(self) -> list[Softkey | None]:
+        if self.view == "alarms":
+            return [Softkey("diag.ack", "Acknowl.\nalarm", "acknowledge",
+                            enabled=lambda s: bool(s.status and any(a.clear == "cancel" for a in s.status.alarms)))]
+        if self.view == "log":
+            return [
+                Softkey("diag.log.filter", "Filter", "focus_filter"),
+                Softkey("diag.log.unfilter", "Clear\nfilter", "clear_filter"),
+                Softkey("diag.log.csv", "Export\nCSV", "export_log('csv')"),
+                Softkey("diag.log.text", "Export\ntext", "export_log('text')"),
+                Softkey("diag.log.older", "Older\n▼", "page_log(1)"),
+                Softkey("diag.log.newer", "Newer\n▲", "page_log(-1)"),
+            ]
+        if self.view in ("axis", "drive"):
+            return [Softkey("diag.axis.next", "Axis +", "next_axis(1)"),
+                    Softkey("diag.axis.prev", "Axis −", "next_axis(-1)")]
+        if self.view == "trace":
+            return [
+                Softkey("diag.trace.slot", "Signal\nslot +", "trace_slot"),
+                Softkey("diag.trace.signal", "Select\nsignal", "trace_signal",
+                        enabled=lambda s: s.trace is not None and not s.trace.running),
+                Softkey("diag.trace.trigger", "Trigger", "trace_trigger",
+                        enabled=lambda s: s.trace is not None and not s.trace.running),
+                Softkey("diag.trace.duration", "Duration", "trace_duration",
+                        enabled=lambda s: s.trace is not None and not s.trace.running),
+                Softkey("diag.trace.start", "Start /\nstop", "trace_start",
+                        active=lambda s: s.trace is not None and s.trace.running),
+                Softkey("diag.trace.csv", "Export\nCSV", "trace_export"),
+                Softkey("diag.trace.left", "Cursor\n◀", "trace_cursor(-1)"),
+                Softkey("diag.trace.right", "Cursor\n▶", "trace_cursor(1)"),
+            ]
+        return []
+
+    def menu_recall(self) -> bool:
+        """F10: leave the More level, else go back to the alarm list."""
+        if self.pop_softkeys():
+            return True
+        if self.view != "alarms":
+            self.action_show_view("alarms")
+            return True
+        return False
+
+    # -- actions -----------------------------------------------------------------------------
+    def action_show_view(self, view: str) -> None:
+        """Show ``view``."""
+        self.view = view
+        if self._menu_stack:
+            self._menu_stack[-1] = self._more_menu()
+        self._show_view()
+
+    def action_more(self) -> None:
+        """The second softkey level (utilisation, version, logbook)."""
+        self.push_softkeys(self._more_menu())
+
+    def action_acknowledge(self) -> None:
+        """Acknowledge the alarms with clear criterion CANCEL (as F12)."""
+        self.submit(cmd.CancelAlarms())
+
+    def action_next_axis(self, step: int) -> None:
+        """Axis + / Axis −: the next or previous machine axis (spindles included)."""
+        count = len(self.status.axes) if self.status is not None else 1
+        self.axis_index = (self.axis_index + int(step)) % max(count, 1)
+        self._refresh_view()
+
+    def action_focus_filter(self) -> None:
+        """Put the cursor into the log filter field."""
+        self.query_one("#log-filter", Input).focus()
+
+    def action_clear_filter(self) -> None:
+        """Show every log entry again."""
+        self.query_one("#log-filter", Input).value = ""
+        self.apply_filter("")
+
+    def apply_filter(self, typed: str) -> bool:
+        """Filter the alarm log by ``typed`` (number range and/or text); False if not understood."""
+        try:
+            self.log_filter = parse_filter(typed)
+        except ValueError as exc:
+            self.show_hint(str(exc))
+            return False
+        self.log_first = 0
+        self._log_seq = -1
+        self._refresh_view()
+        return True
+
+    def on_input_submitted(self, message: Input.Submitted) -> None:
+        """Enter in the filter field applies it and gives the focus back."""
+        if message.input.id == "log-filter":
+            if self.apply_filter(message.value):
+                self.set_focus(None)
+
+    def action_page_log(self, direction: int) -> None:
+        """Older ▼ / Newer ▲: scroll the alarm log by a page."""
+        total = len(log_rows(self._history(), self.log_filter))
+        self.log_first = max(0, min(self.log_first + int(direction) * LOG_PAGE, max(total - LOG_PAGE, 0)))
+        self._log_seq = -1
+        self._refresh_view()
+
+    def action_export_log(self, kind: str) -> None:
+        """Write the (filtered) alarm log as ``alarm_log.csv`` or ``alarm_log.txt``."""
+        rows = log_rows(self._history(), self.log_filter)
+        name = "alarm_log.csv" if kind == "csv" else "alarm_log.txt"
+        path = Path(self.export_dir) / name
+        try:
+            path.write_text(log_as_csv(rows) if kind == "csv" else log_as_text(rows), encoding="utf-8")
+        except OSError as exc:
+            self.show_hint(f"Export failed: {exc}")
+            return
+        self.show_hint(f"Alarm log written to {path} ({len(rows)} entries)")
+
+    def action_trace_slot(self) -> None:
+        """Edit the next signal slot."""
+        if self.trace is not None:
+            self.trace.next_slot()
+            self._refresh_view()
+
+    def action_trace_signal(self) -> None:
+        """The next signal for the slot being edited."""
+        if self.trace is not None:
+            self.trace.next_signal()
+            self._refresh_view()
+
+    def action_trace_trigger(self) -> None:
+        """Start now ↔ on NC START."""
+        if self.trace is not None:
+            self.trace.toggle_trigger()
+            self._refresh_view()
+
+    def action_trace_duration(self) -> None:
+        """The next recording duration."""
+        if self.trace is not None:
+            self.trace.next_duration()
+            self._refresh_view()
+
+    def action_trace_start(self) -> None:
+        """Start the trace (armed for NC START or recording now), or stop a running one."""
+        if self.trace is None:
+            return
+        if self.trace.running:
+            self.trace.stop()
+        elif not self.trace.chosen:
+            self.show_hint("Trace: choose at least one signal")
+            return
+        else:
+            self.trace.start(self.kernel)
+            self.query_one(TracePlot).cursor = 0
+        self._refresh_view()
+
+    def action_trace_export(self) -> None:
+        """Write the recorded samples as ``trace.csv``."""
+        if self.trace is None:
+            return
+        try:
+            path = self.trace.export(Path(self.export_dir))
+        except (ValueError, OSError) as exc:
+            self.show_hint(f"Trace export: {exc}")
+            return
+        self.show_hint(f"Trace written to {path}")
+
+    def action_trace_cursor(self, direction: int) -> None:
+        """Move the cursor by a fiftieth of the recording."""
+        plot = self.query_one(TracePlot)
+        plot.move_cursor(int(direction) * max(1, len(plot.times) // 50))
+
+    # -- display ---------------------------------------------------------------------------------
+    def update_status(self, status: NckStatus) -> None:
+        """Refresh the view on display."""
+        self._refresh_view()
+
+    def _show_view(self) -> None:
+        if not self.is_mounted:
+            return
+        self.query_one("#diag-views", ContentSwitcher).current = f"view-{self.view}"
+        self._log_seq = -1
+        self._refresh_view()
+        self.refresh_softkeys()
+
+    def _refresh_view(self) -> None:
+        if not self.is_mounted:
+            return
+        status = self.status
+        show_text(self.query_one("#diag-title", Static), Text(f" {TITLES[self.view]}", style="bold"))
+        if status is None:
+            return
+        handler = getattr(self, f"_render_{self.view}")
+        handler(status)
+
+    def _body(self, view: str) -> Static:
+        return self.query_one(f"#diag-{view}", Static)
+
+    def _render_alarms(self, status: NckStatus) -> None:
+        show_text(self._body("alarms"), alarm_list_text(status.alarms))
+
+    def _render_messages(self, status: NckStatus) -> None:
+        reader = getattr(self.kernel, "alarm_log_since", None)
+        events = tuple(reader(0)) if callable(reader) else ()
+        lines = message_lines(status.channel.message, events, status.alarms)
+        show_text(self._body("messages"), messages_text(lines, events))
+
+    def _render_log(self, status: NckStatus) -> None:
+        if status.alarm_log_seq == self._log_seq:
+            return
+        self._log_seq = status.alarm_log_seq
+        history = self._history()
+        rows = log_rows(history, self.log_filter)
+        total = len([e for e in history if e.category != "message"])
+        show_text(self._body("log"), log_text(rows, self.log_filter, total, self.log_first, LOG_PAGE))
+
+    def _selected_axis(self, status: NckStatus) -> Any:
+        self.axis_index %= max(len(status.axes), 1)
+        return status.axes[self.axis_index] if status.axes else None
+
+    def _render_overview(self, status: NckStatus) -> None:
+        show_text(self._body("overview"), overview_text(status))
+
+    def _render_axis(self, status: NckStatus) -> None:
+        axis = self._selected_axis(status)
+        if axis is not None:
+            kind = "spindle" if axis.kind == "spindle" else "axis"
+            show_text(self._body("axis"), rows_text(
+                f"{kind.capitalize()} {axis.name}  ({self.axis_index + 1} of {len(status.axes)}, Axis +/− to change)",
+                axis_rows(status, axis)))
+
+    def _render_drive(self, status: NckStatus) -> None:
+        axis = self._selected_axis(status)
+        if axis is not None:
+            show_text(self._body("drive"), rows_text(
+                f"Drive of {axis.name}  ({self.axis_index + 1} of {len(status.axes)}, Axis +/− to change)",
+                drive_rows(status, axis)))
+
+    def _render_utilisation(self, status: NckStatus) -> None:
+        kernel = self.kernel
+        ipo = float(getattr(kernel, "ipo_cycle_s", 0.004) or 0.004)
+        filler = getattr(kernel, "buffer_fill", None)
+        buffer = filler() if callable(filler) else (0, 0)
+        rows = utilisation_rows(self.meter, ipo, buffer, int(getattr(kernel, "cycles_done", 0)),
+                                int(getattr(kernel, "blocks_interpreted", 0)))
+        show_text(self._body("utilisation"), rows_text(
+            "Measured on this computer (wall-clock time spent per simulated IPO cycle)", rows))
+
+    def _render_trace(self, status: NckStatus) -> None:
+        if self.trace is None:
+            return
+        show_text(self.query_one("#trace-settings", Static), self.trace.settings_text())
+        plot = self.query_one(TracePlot)
+        recorder = self.trace.recorder
+        if recorder is None:
+            plot.set_data([], [], [], [])
+            return
+        if len(plot.times) == recorder.sample_count and plot.names == list(recorder.settings.signals):
+            return
+        from nck.trace import signal_unit  # noqa: PLC0415
+
+        names = list(recorder.settings.signals)
+        plot.set_data(recorder.times_s, names, [signal_unit(n) for n in names],
+                      [recorder.columns[n] for n in names])
+
+    def _render_version(self, status: NckStatus) -> None:
+        kernel = self.kernel
+        machine = getattr(kernel, "machine", None)
+        rows = [
+            ("Product", "SINUMERIK Operate trainer (828D / 840D sl behaviour)", ""),
+            ("NCK kernel version", str(getattr(nck_package, "__version__", "?")), ""),
+            ("Machine", status.machine_name or "—", ""),
+        ]
+        if machine is not None:
+            axes = ", ".join(f"{a.name} ({a.kind})" for a in machine.axes)
+            rows.append(("Axes", axes, ""))
+            rows.append(("IPO cycle", f"{float(getattr(kernel, 'ipo_cycle_s', 0.0)) * 1000:.1f}", "ms"))
+            rows.append(("Block buffer (MD28060)", str(machine.md_value("MD28060", None, "—")), "blocks"))
+        text = Text(no_wrap=True, end="")
+        text.append(f" {'Component':<28}Version / configuration\n", style="bold")
+        for name, value, unit in rows:
+            text.append(f" {name:<28}{value} {unit}\n")
+        show_text(self._body("version"), text)
+
+    def _render_logbook(self, status: NckStatus) -> None:
+        entries = list(getattr(self.kernel, "logbook", []) or [])
+        text = Text(no_wrap=True, end="")
+        text.append(f" Current access level: {status.access_level}\n", style="bold")
+        text.append(f" {'Time':<12} {'Kind':<8} Change\n", style="bold")
+        if not entries:
+            text.append(" No access-level or machine-data changes since power on.", style="dim")
+        for entry in reversed(entries[-40:]):
+            text.append(f" {clock_text(entry.time_s):<12} {entry.kind:<8} {entry.text}\n")
+        show_text(self._body("logbook"), text)
+
+
+AreaScreen = DiagnosticsScreen

@@ -1,0 +1,219 @@
+"""Alarm list, messages and alarm log of the Diagnostics area: rows, filter, export.
+
+Pure functions over :class:`nck.status.AlarmEntry` / :class:`AlarmEvent`, so
+the views and their tests need no running app. Times are simulated-control
+times since power on (``hh:mm:ss.cc``); entries retained from an earlier power
+on carry a negative ``seq`` (see :mod:`nck.persistence`) and are marked ``PO-``.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass
+from typing import Iterable, Sequence
+
+from rich.text import Text
+
+from nck.status import AlarmEntry, AlarmEvent
+
+CLEAR_SYMBOLS: dict[str, str] = {
+    "power_on": "⏻",  # switch the control off and on
+    "reset": "⟲",  # RESET key
+    "cancel": "✕",  # alarm cancel key (F12)
+    "nc_start": "▶",  # NC START
+    "self": "◌",  # clears itself when the cause goes
+}
+CLEAR_NAMES: dict[str, str] = {
+    "power_on": "POWER ON", "reset": "RESET", "cancel": "CANCEL", "nc_start": "NC START",
+    "self": "self-clearing",
+}
+CATEGORY_STYLES = {"user": "bold yellow", "message": "cyan", "axis": "bold red"}
+
+
+def clock_text(seconds: float | None) -> str:
+    """``hh:mm:ss.cc`` of a simulated-control time; empty for None."""
+    if seconds is None:
+        return ""
+    hundredths = int(round(max(seconds, 0.0) * 100))
+    whole, cc = divmod(hundredths, 100)
+    return f"{whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d}.{cc:02d}"
+
+
+def source_text(entry: AlarmEntry) -> str:
+    """Where the alarm comes from: program position, else the channel/axis in its parameters."""
+    if entry.file:
+        where = entry.file
+        if entry.n is not None:
+            where += f" N{entry.n}"
+        elif entry.line:
+            where += f" L{entry.line}"
+        return where
+    if entry.category == "axis" and len(entry.params) >= 2:
+        return f"channel {entry.params[0]} axis {entry.params[1]}"
+    return "NCK" if entry.category in ("nck", "") else f"channel 1"
+
+
+def alarm_list_rows(alarms: Iterable[AlarmEntry]) -> list[AlarmEntry]:
+    """Active alarms newest first."""
+    return sorted(alarms, key=lambda e: e.seq, reverse=True)
+
+
+def alarm_list_text(alarms: Sequence[AlarmEntry], width: int = 150) -> Text:
+    """The alarm list: ``Time | Clear | Number | Text | Source``, newest first."""
+    text = Text(no_wrap=True, end="")
+    text.append(f" {'Time':<12} {'Del':<4} {'Number':>6}  {'Text':<84} Source\n", style="bold")
+    rows = alarm_list_rows(alarms)
+    if not rows:
+        text.append(" No active alarms.", style="dim")
+        return text
+    for entry in rows:
+        symbol = CLEAR_SYMBOLS.get(entry.clear, "?")
+        text.append(f" {clock_text(entry.came_s):<12} {symbol:<4} ")
+        text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
+        body = entry.text if len(entry.text) <= 84 else entry.text[:83] + "…"
+        text.append(f"  {body:<84} {source_text(entry)}\n")
+    text.append("\n Clear: ")
+    for key in ("cancel", "reset", "nc_start", "power_on", "self"):
+        text.append(f"{CLEAR_SYMBOLS[key]} {CLEAR_NAMES[key]}   ", style="dim")
+    text.append("\n F12 acknowledges CANCEL alarms; RESET clears RESET, CANCEL and NC START alarms.",
+                style="dim")
+    return text
+
+
+@dataclass(frozen=True, slots=True)
+class MessageLine:
+    """One NC or cycle message: when it came, its text, where it came from."""
+
+    time_s: float
+    text: str
+    source: str
+
+
+def message_lines(current: str, events: Iterable[AlarmEvent], user_alarms: Iterable[AlarmEntry]) -> list[MessageLine]:
+    """Active messages: the NC message (MSG) shown now, and pending cycle/user alarms."""
+    lines: list[MessageLine] = []
+    if current:
+        came = 0.0
+        for event in events:
+            if event.kind == "message" and event.entry.text == current:
+                came = event.time_s
+        lines.append(MessageLine(came, current, "NC program (MSG)"))
+    for entry in sorted(user_alarms, key=lambda e: e.seq, reverse=True):
+        if entry.category == "user":
+            lines.append(MessageLine(entry.came_s, f"{entry.number} {entry.text}", source_text(entry)))
+    return lines
+
+
+def messages_text(lines: Sequence[MessageLine], history: Sequence[AlarmEvent]) -> Text:
+    """Active messages, then the recent message history (newest first)."""
+    text = Text(no_wrap=True, end="")
+    text.append(f" {'Time':<12} {'Message':<100} Source\n", style="bold")
+    if not lines:
+        text.append(" No active messages.\n", style="dim")
+    for line in lines:
+        text.append(f" {clock_text(line.time_s):<12} {line.text[:100]:<100} {line.source}\n")
+    shown = [e for e in reversed(history) if e.kind == "message"][:12]
+    if shown:
+        text.append("\n Recent NC messages\n", style="bold")
+        for event in shown:
+            body = event.entry.text or "(message cleared)"
+            text.append(f" {clock_text(event.time_s):<12} {body[:100]}\n",
+                        style=None if event.entry.text else "dim")
+    return text
+
+
+# -- alarm log --------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class LogFilter:
+    """Number range (inclusive) and a text the entry must contain (case-insensitive)."""
+
+    low: int | None = None
+    high: int | None = None
+    text: str = ""
+
+    def matches(self, entry: AlarmEntry) -> bool:
+        """True when ``entry`` passes the filter."""
+        if self.low is not None and entry.number < self.low:
+            return False
+        if self.high is not None and entry.number > self.high:
+            return False
+        return not self.text or self.text.lower() in entry.text.lower()
+
+    def describe(self) -> str:
+        """The filter as the operator typed it (empty when none)."""
+        parts = []
+        if self.low is not None or self.high is not None:
+            parts.append(f"{self.low if self.low is not None else ''}-{self.high if self.high is not None else ''}")
+        if self.text:
+            parts.append(f'"{self.text}"')
+        return " ".join(parts)
+
+
+def parse_filter(typed: str) -> LogFilter:
+    """``10000-19999``, ``10720``, ``-20000``, ``limit``, or ``10000-19999 limit``.
+
+    A leading number or range limits the numbers; the rest is a text to find.
+    Raises ValueError for a range whose ends are reversed.
+    """
+    words = typed.strip().split(maxsplit=1)
+    if not words:
+        return LogFilter()
+    first = words[0]
+    low = high = None
+    rest = typed.strip()
+    head, dash, tail = first.partition("-")
+    if (head.isdigit() or not head) and (tail.isdigit() or not tail) and (head or tail) and (dash or head):
+        low = int(head) if head else None
+        high = int(tail) if tail else (None if dash else low)
+        rest = words[1] if len(words) > 1 else ""
+        if low is not None and high is not None and low > high:
+            raise ValueError(f"number range {first}: the first number must not exceed the second")
+    return LogFilter(low, high, rest.strip())
+
+
+def log_rows(history: Iterable[AlarmEntry], log_filter: LogFilter = LogFilter()) -> list[AlarmEntry]:
+    """Alarm-log entries (no messages) that pass the filter, newest first."""
+    kept = [e for e in history if e.category != "message" and log_filter.matches(e)]
+    return list(reversed(kept))
+
+
+def _earlier(entry: AlarmEntry) -> str:
+    return "PO-" if entry.seq < 0 else ""
+
+
+def log_text(rows: Sequence[AlarmEntry], log_filter: LogFilter, total: int, first: int = 0,
+             count: int = 30) -> Text:
+    """The alarm log window: ``Come | Go | Number | Text``, newest first, a filter line."""
+    text = Text(no_wrap=True, end="")
+    described = log_filter.describe()
+    text.append(f" {len(rows)} of {total} entries" + (f" — filter: {described}" if described else ""),
+                style="dim")
+    text.append("   (PO- = before the last power on)\n", style="dim")
+    text.append(f" {'':<3} {'Come':<12} {'Go':<12} {'Number':>6}  Text\n", style="bold")
+    for entry in rows[first:first + count]:
+        text.append(f" {_earlier(entry):<3} {clock_text(entry.came_s):<12} "
+                    f"{clock_text(entry.went_s) or '—':<12} ")
+        text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
+        text.append(f"  {entry.text[:110]}\n")
+    return text
+
+
+def log_as_csv(rows: Sequence[AlarmEntry]) -> str:
+    """The alarm log as CSV (``earlier,come,go,number,clear,text,source``)."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["earlier_power_on", "come", "go", "number", "clear", "text", "source"])
+    for entry in rows:
+        writer.writerow([int(entry.seq < 0), clock_text(entry.came_s), clock_text(entry.went_s),
+                         entry.number, entry.clear, entry.text, source_text(entry)])
+    return out.getvalue()
+
+
+def log_as_text(rows: Sequence[AlarmEntry]) -> str:
+    """The alarm log as plain text, one entry a line."""
+    lines = ["Alarm log (newest first)", ""]
+    for entry in rows:
+        went = clock_text(entry.went_s) or "pending"
+        lines.append(f"{_earlier(entry):<3} {clock_text(entry.came_s)}  {went:<11}  {entry.number:>6}  {entry.text}")
+    return "\n".join(lines) + "\n"

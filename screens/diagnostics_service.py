@@ -1,0 +1,244 @@
+"""Service screens of the Diagnostics area: overview, axis/spindle, drive, utilisation.
+
+Rows are built from :class:`nck.status.AxisStatus` (service values in
+``extra``, filled from the motion system's axis model) as
+``(name, value, unit)`` triples; a row the motion system does not model shows
+``—``.
+"""
+
+from __future__ import annotations
+
+import time
+from collections import deque
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from rich.text import Text
+
+from nck.status import AxisStatus, NckStatus
+
+CONTROLLER_MODES = {0: "0 position control", 1: "1 speed control", 2: "2 hold", 3: "3 parking",
+                    4: "4 follow-up", 5: "5 braking"}
+DC_LINK_NOMINAL_V = 600.0
+"""The drive model has no DC link: the service drive screen shows the nominal voltage."""
+MOTOR_TEMP_WARN_C = 120.0
+"""Motor temperature warning threshold (MD1602 standard value)."""
+Row = tuple[str, str, str]
+MISSING = "—"
+
+
+def _num(value: float | None, digits: int = 3) -> str:
+    return MISSING if value is None else f"{value:.{digits}f}"
+
+
+def _extra(axis: AxisStatus, name: str) -> float | None:
+    value = axis.extra.get(name)
+    return None if value is None else float(value)
+
+
+def _yes(flag: bool | None) -> str:
+    return MISSING if flag is None else ("yes" if flag else "no")
+
+
+def enables(status: NckStatus, axis: AxisStatus) -> dict[str, bool]:
+    """The enable/state signals of the overview: column name -> on."""
+    ready = status.mode_group_ready and not status.emergency_stop
+    mode = _extra(axis, "controller_mode")
+    follow_up = mode is not None and int(mode) == 4
+    return {
+        "Ctrl enable": ready and not follow_up,
+        "Pulse enable": ready,
+        "Referenced": axis.referenced,
+        "Pos. control": ready and not follow_up,
+        "Exact stop C": bool(_extra(axis, "exact_stop_coarse") if _extra(axis, "exact_stop_coarse") is not None
+                             else abs(axis.following_error) < 0.04),
+        "Exact stop F": bool(_extra(axis, "exact_stop_fine") if _extra(axis, "exact_stop_fine") is not None
+                             else abs(axis.following_error) < 0.01),
+        "Not clamped": not bool(_extra(axis, "clamped") or 0.0),
+    }
+
+
+def overview_text(status: NckStatus) -> Text:
+    """Axes as rows, enable signals as columns (✓ / ✗)."""
+    axes = [a for a in status.axes]
+    columns = list(enables(status, axes[0]).keys()) if axes else []
+    text = Text(no_wrap=True, end="")
+    text.append(f" {'Axis':<8}" + "".join(f"{c:>14}" for c in columns) + f"{'Foll. error mm':>18}\n", style="bold")
+    for axis in axes:
+        text.append(f" {axis.name:<8}")
+        if axis.kind == "spindle":
+            flags = {c: status.mode_group_ready for c in columns}
+        else:
+            flags = enables(status, axis)
+        for name in columns:
+            on = flags[name]
+            text.append(f"{'✓' if on else '✗':>14}", style="green" if on else "bold red")
+        fe = MISSING if axis.kind == "spindle" else f"{axis.following_error:.3f}"
+        text.append(f"{fe:>18}\n")
+    return text
+
+
+def axis_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
+    """The rows of the service screen Axis/spindle (digest part 1 §8.3) for ``axis``."""
+    overrides = status.channel.overrides
+    if axis.kind == "spindle":
+        unit = "deg"
+        return [
+            ("Position actual value MS1 (MCS)", _num(axis.position_mcs), unit),
+            ("Spindle speed setpoint programmed", _num(status.channel.modal.spindle_speed_rpm, 1), "rpm"),
+            ("Spindle speed setpoint current", _num(_extra(axis, "setpoint_rpm"), 1), "rpm"),
+            ("Speed actual value", _num(axis.speed_rpm, 1), "rpm"),
+            ("Override", _num(_extra(axis, "override_pct") or overrides.get("spindle"), 0), "%"),
+            ("Torque", _num(_extra(axis, "torque_nm"), 2), "Nm"),
+            ("Active measuring system", "1", ""),
+            ("Current gear stage", "1", ""),
+            ("Referenced status", "1" if axis.referenced else "0", "bits"),
+        ]
+    unit = "deg" if axis.kind == "rotary" else "mm"
+    rapid = status.channel.modal.gcodes.get(1, "") == "G0" if status.channel.modal.gcodes else False
+    override = overrides.get("rapid" if rapid else "feed", 100.0)
+    mode = _extra(axis, "controller_mode")
+    referenced_bits = (1 if axis.referenced else 0) | (0 if axis.referenced else 2)
+    return [
+        ("Following error", _num(axis.following_error), unit),
+        ("System deviation (control error)", _num(_extra(axis, "control_deviation_mm")), unit),
+        ("Contour deviation", _num(_extra(axis, "contour_deviation_mm")), unit),
+        ("Servo gain factor (calculated)", _num(_extra(axis, "kv_calculated")), "(m/min)/mm"),
+        ("Active measuring system", "1", ""),
+        ("Position actual value MS1 (MCS)", _num(axis.position_mcs), unit),
+        ("Position setpoint", _num(axis.setpoint_mcs), unit),
+        ("Velocity actual value", _num(axis.velocity, 1), f"{unit}/min"),
+        ("Speed setpoint", _num(_extra(axis, "speed_setpoint_pct"), 2), "%"),
+        ("Speed actual value", _num(_extra(axis, "speed_actual_pct"), 2), "%"),
+        ("Override", _num(override, 0), "%"),
+        ("Active servo parameter set", _num(_extra(axis, "servo_parameter_set"), 0), ""),
+        ("Controller mode", CONTROLLER_MODES.get(int(mode), str(mode)) if mode is not None else MISSING, ""),
+        ("Referenced status", f"{referenced_bits}", "bits"),
+        ("Exact stop coarse / fine", f"{_yes(bool(_extra(axis, 'exact_stop_coarse') or 0))} / "
+                                     f"{_yes(bool(_extra(axis, 'exact_stop_fine') or 0))}", ""),
+        ("Clamping active", _yes(bool(_extra(axis, "clamped") or 0)), ""),
+    ]
+
+
+def drive_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
+    """The rows of the service screen Drive (digest part 1 §8.4) for ``axis``."""
+    ready = status.mode_group_ready and not status.emergency_stop
+    temperature = _extra(axis, "motor_temperature_c")
+    current = _extra(axis, "current_pct")
+    if axis.kind == "spindle":
+        setpoint = _extra(axis, "setpoint_rpm")
+        actual = axis.speed_rpm
+    else:
+        setpoint = _extra(axis, "motor_speed_setpoint_rpm")
+        actual = _extra(axis, "motor_speed_actual_rpm")
+    return [
+        ("Drive enable (terminal 64/63)", _yes(ready), ""),
+        ("Pulse enable (terminal 63/48)", _yes(ready), ""),
+        ("Setup mode (terminal 112): drive disabled", "no", ""),
+        ("PLC pulse disable (DBX21.7)", "no", ""),
+        ("Speed controller enable NC: OFF", _yes(not ready), ""),
+        ("Ramp-function generator fast stop not active", _yes(ready), ""),
+        ("DC link below warning limit", "no", ""),
+        ("Pulses enabled (DBX93.7)", _yes(ready), ""),
+        ("Drive ready (DBX93.5)", _yes(ready), ""),
+        ("DC link voltage (nominal)", _num(DC_LINK_NOMINAL_V, 0), "V"),
+        ("Speed setpoint", _num(setpoint, 1), "rpm"),
+        ("Speed actual value", _num(actual, 1), "rpm"),
+        ("Smoothed actual current", _num(current, 1), "%"),
+        ("Motor temperature", _num(temperature, 1), "°C"),
+        ("Warning: motor temperature", _yes(temperature is not None and temperature > MOTOR_TEMP_WARN_C), ""),
+        ("Warning: power section at i²t limit", _yes(current is not None and current > 100.0), ""),
+        ("Setpoint / actual drive parameter set", "1 / 1", ""),
+        ("Operating mode", "main spindle drive" if axis.kind == "spindle" else "feed drive", ""),
+    ]
+
+
+def rows_text(title: str, rows: list[Row]) -> Text:
+    """A ``Name | Value | Unit`` table."""
+    text = Text(no_wrap=True, end="")
+    text.append(f" {title}\n", style="bold")
+    text.append(f" {'Name':<48}{'Value':>22}  Unit\n", style="bold")
+    for name, value, unit in rows:
+        text.append(f" {name:<48}")
+        text.append(f"{value:>22}", style="bold" if value != MISSING else "dim")
+        text.append(f"  {unit}\n")
+    return text
+
+
+# -- system utilisation ----------------------------------------------------------------------
+CLOCK: Callable[[], float] = time.perf_counter
+"""Wall clock of the measurement (tests replace it)."""
+
+
+@dataclass
+class UtilisationMeter:
+    """Measures the kernel's compute time per simulated IPO cycle and blocks per second.
+
+    :meth:`attach` wraps the kernel's ``tick``/``step`` (HMI side, the kernel has
+    no clock): each call is timed and divided by the IPO cycles it ran.
+    """
+
+    window: int = 50
+    samples: deque = field(default_factory=lambda: deque(maxlen=50))  # (wall_s, cycles, blocks)
+    attached: Any = None
+
+    def attach(self, nck: Any) -> None:
+        """Time every ``tick``/``step`` of ``nck`` from now on (once per kernel)."""
+        if self.attached is nck or getattr(nck, "_utilisation_meter", None) is not None:
+            self.attached = nck
+            meter = getattr(nck, "_utilisation_meter", None)
+            if meter is not None and meter is not self:
+                self.samples = meter.samples
+            return
+        self.attached = nck
+        nck._utilisation_meter = self
+        for name in ("tick", "step"):
+            original = getattr(nck, name, None)
+            if callable(original):
+                setattr(nck, name, self._timed(nck, original))
+
+    def _timed(self, nck: Any, original: Callable[[Any], None]) -> Callable[[Any], None]:
+        def timed(arg: Any = 1) -> None:
+            cycles0 = getattr(nck, "cycles_done", 0)
+            blocks0 = getattr(nck, "blocks_interpreted", 0)
+            start = CLOCK()
+            original(arg)
+            cycles = getattr(nck, "cycles_done", 0) - cycles0
+            if cycles > 0:
+                self.samples.append((CLOCK() - start, cycles, getattr(nck, "blocks_interpreted", 0) - blocks0))
+        return timed
+
+    def figures(self, ipo_cycle_s: float) -> dict[str, float]:
+        """Mean compute time per IPO cycle (µs), load (%), blocks per second (wall and simulated)."""
+        wall = sum(s[0] for s in self.samples)
+        cycles = sum(s[1] for s in self.samples)
+        blocks = sum(s[2] for s in self.samples)
+        per_cycle = wall / cycles if cycles else 0.0
+        worst = max((s[0] / s[1] for s in self.samples), default=0.0)
+        return {
+            "cycle_compute_us": per_cycle * 1e6,
+            "cycle_compute_max_us": worst * 1e6,
+            "ipo_load_pct": per_cycle / ipo_cycle_s * 100.0 if ipo_cycle_s > 0 else 0.0,
+            "blocks_per_s": blocks / wall if wall > 0 else 0.0,
+            "blocks_per_sim_s": blocks / (cycles * ipo_cycle_s) if cycles else 0.0,
+            "cycles_measured": float(cycles),
+        }
+
+
+def utilisation_rows(meter: UtilisationMeter, ipo_cycle_s: float, buffer: tuple[int, int],
+                     cycles_total: int, blocks_total: int) -> list[Row]:
+    """The rows of the system utilisation screen (real measured figures)."""
+    figures = meter.figures(ipo_cycle_s)
+    fill, size = buffer
+    return [
+        ("IPO cycle", _num(ipo_cycle_s * 1000.0, 1), "ms"),
+        ("Compute time per IPO cycle (mean)", _num(figures["cycle_compute_us"], 1), "µs"),
+        ("Compute time per IPO cycle (worst tick)", _num(figures["cycle_compute_max_us"], 1), "µs"),
+        ("IPO cycle load", _num(figures["ipo_load_pct"], 2), "%"),
+        ("Interpreter blocks per second (wall clock)", _num(figures["blocks_per_s"], 1), "1/s"),
+        ("Interpreter blocks per second (control time)", _num(figures["blocks_per_sim_s"], 1), "1/s"),
+        ("Block buffer fill", f"{fill} / {size}", "blocks"),
+        ("IPO cycles measured", _num(figures["cycles_measured"], 0), ""),
+        ("IPO cycles since power on", str(cycles_total), ""),
+        ("Blocks interpreted since power on", str(blocks_total), ""),
+    ]

@@ -1,0 +1,101 @@
+"""The trace view's settings and recorder handling (Diagnostics area).
+
+Holds the four signal slots, the trigger and the duration the operator chose,
+starts a :class:`nck.trace.TraceRecorder` on the kernel and exports its CSV.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from rich.text import Text
+
+from nck.trace import MAX_SIGNALS, TraceRecorder, TraceSettings, available_signals, signal_unit
+
+DURATIONS_S = (1.0, 2.0, 5.0, 10.0, 20.0, 60.0)
+TRIGGER_NAMES = {"now": "start now", "nc_start": "on NC START"}
+
+
+class TraceSession:
+    """Signal slots, trigger, duration and the recorder of the last start."""
+
+    def __init__(self, machine: Any) -> None:
+        self.signals = available_signals(machine)
+        first = next((s for s in self.signals if s.endswith(".position")), None)
+        self.slots: list[str | None] = [first, None, None, None][:MAX_SIGNALS]
+        self.slot = 0
+        self.trigger = "now"
+        self.duration_s = 5.0
+        self.recorder: TraceRecorder | None = None
+        self.machine = machine
+
+    @property
+    def chosen(self) -> tuple[str, ...]:
+        """The signals in the slots (empty slots skipped)."""
+        return tuple(s for s in self.slots if s)
+
+    def next_slot(self) -> None:
+        """Edit the next of the four slots."""
+        self.slot = (self.slot + 1) % MAX_SIGNALS
+
+    def next_signal(self) -> None:
+        """Put the next signal (or none) into the slot being edited."""
+        choices: list[str | None] = [None, *self.signals]
+        current = self.slots[self.slot]
+        index = choices.index(current) if current in choices else 0
+        self.slots[self.slot] = choices[(index + 1) % len(choices)]
+
+    def set_signal(self, slot: int, signal: str | None) -> None:
+        """Put ``signal`` into ``slot`` (0…3); raises ValueError for an unknown signal."""
+        if signal is not None and signal not in self.signals:
+            raise ValueError(f"unknown trace signal {signal}")
+        self.slots[slot] = signal
+
+    def toggle_trigger(self) -> None:
+        """Start now ↔ on NC START."""
+        self.trigger = "nc_start" if self.trigger == "now" else "now"
+
+    def next_duration(self) -> None:
+        """The next duration of :data:`DURATIONS_S`."""
+        later = [d for d in DURATIONS_S if d > self.duration_s + 1e-9]
+        self.duration_s = later[0] if later else DURATIONS_S[0]
+
+    @property
+    def running(self) -> bool:
+        """True while the recorder waits for its trigger or records."""
+        return self.recorder is not None and self.recorder.state in ("armed", "recording")
+
+    def start(self, nck: Any) -> TraceRecorder:
+        """Start a new recording on ``nck`` (a running one is stopped first)."""
+        self.stop()
+        self.recorder = TraceRecorder(TraceSettings(self.chosen, self.trigger, self.duration_s), self.machine)
+        self.recorder.attach(nck)
+        return self.recorder
+
+    def stop(self) -> None:
+        """Stop recording; the samples stay."""
+        if self.recorder is not None:
+            self.recorder.detach()
+
+    def export(self, directory: Path) -> Path:
+        """Write the samples as ``trace.csv`` into ``directory``; return the path."""
+        if self.recorder is None or not self.recorder.sample_count:
+            raise ValueError("nothing recorded yet")
+        path = Path(directory) / "trace.csv"
+        path.write_text(self.recorder.to_csv(), encoding="utf-8")
+        return path
+
+    def settings_text(self) -> Text:
+        """The settings line(s) above the plot."""
+        text = Text(no_wrap=True, end="")
+        for index, signal in enumerate(self.slots):
+            marker = "▸" if index == self.slot else " "
+            name = f"{signal} [{signal_unit(signal)}]" if signal else "—"
+            text.append(f" {marker}{index + 1}: ", style="bold" if index == self.slot else None)
+            text.append(f"{name:<28}", style="reverse" if index == self.slot else None)
+        state = self.recorder.state if self.recorder is not None else "idle"
+        samples = self.recorder.sample_count if self.recorder is not None else 0
+        text.append(f"\n Trigger: {TRIGGER_NAMES[self.trigger]}   Duration: {self.duration_s:g} s   "
+                    f"State: {state}   Samples: {samples} (one per IPO cycle)")
+        return text

@@ -1,0 +1,98 @@
+"""The kernel-side trace recorder and the service values, on the real motion system."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck import commands as cmd
+from nck.trace import (
+    AxisTrace, TraceError, TraceRecorder, TraceSettings, available_signals, csv_column, trace_csv,
+)
+from tests.diagnostics.conftest import kernel, kv1_machine, limit_machine
+
+
+def start(nck, program: str) -> None:
+    assert nck.submit(cmd.SelectMode("AUTO")) == cmd.Accepted()
+    assert nck.submit(cmd.SelectProgram(program)) == cmd.Accepted()
+    assert nck.submit(cmd.CycleStart()) == cmd.Accepted()
+
+
+def test_following_error_at_f1000_with_kv1_is_one_mm() -> None:
+    """Kv = 1 (m/min)/mm, no feedforward: 1 m/min gives 1 mm following error (± 2 %)."""
+    nck = kernel(kv1_machine())
+    start(nck, "FEED.MPF")
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] < -99.9, 30.0)  # N10 done
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] > -90.0, 30.0)  # N20 under way
+    nck.tick(0.5)
+    x = nck.status().axes[0]
+    assert x.velocity == pytest.approx(1000.0, rel=0.01)
+    assert x.following_error == pytest.approx(1.0, rel=0.02)
+    assert x.extra["kv_calculated"] == pytest.approx(1.0, rel=0.02)
+
+
+def test_records_one_sample_per_ipo_cycle_for_the_duration() -> None:
+    nck = kernel()
+    recorder = TraceRecorder(TraceSettings(("X.position", "feed_override"), "now", 0.2), nck.machine)
+    recorder.attach(nck)
+    nck.tick(1.0)
+    assert recorder.state == "done"
+    assert recorder.sample_count == round(0.2 / nck.ipo_cycle_s)
+    steps = [b - a for a, b in zip(recorder.times_s, recorder.times_s[1:])]
+    assert all(s == pytest.approx(nck.ipo_cycle_s) for s in steps)
+    assert set(recorder.columns["feed_override"]) == {100.0}
+    assert nck.cycle_listeners == []
+
+
+def test_nc_start_trigger_waits_for_the_program() -> None:
+    nck = kernel()
+    recorder = TraceRecorder(TraceSettings(("X.position", "X.velocity"), "nc_start", 0.5), nck.machine)
+    recorder.attach(nck)
+    nck.tick(0.3)
+    assert recorder.state == "armed" and recorder.sample_count == 0
+    start(nck, "TRACE.MPF")
+    nck.tick(0.1)
+    assert recorder.state == "recording"
+    assert recorder.times_s[0] == pytest.approx(0.3 + nck.ipo_cycle_s)
+    assert max(abs(v) for v in recorder.columns["X.velocity"]) > 0.0
+
+
+def test_settings_are_checked() -> None:
+    machine = limit_machine()
+    with pytest.raises(TraceError, match="at most 4"):
+        TraceRecorder(TraceSettings(("X.position",) * 5), machine)
+    with pytest.raises(TraceError, match="unknown"):
+        TraceRecorder(TraceSettings(("Q.position",)), machine)
+    with pytest.raises(TraceError):
+        TraceRecorder(TraceSettings(("X.position",), "later"), machine)
+    with pytest.raises(TraceError):
+        TraceRecorder(TraceSettings(("X.position",), "now", 0.0), machine)
+    assert "SP.speed" in available_signals(machine)
+    assert "X.following_error" in available_signals(machine)
+
+
+def test_trace_of_x_reproduces_the_axis_trace_of_the_run() -> None:
+    """The trace of X.position equals the X column of the --trace recorder (same run)."""
+    nck = kernel()
+    full = AxisTrace(["X", "Y", "Z"])
+    full.attach(nck)
+    recorder = TraceRecorder(TraceSettings(("X.position",), "nc_start", 30.0), nck.machine)
+    recorder.attach(nck)
+    start(nck, "TRACE.MPF")
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 60.0)
+    recorder.detach()
+    start_index = full.times_s.index(recorder.times_s[0])
+    end = start_index + recorder.sample_count
+    assert full.times_s[start_index:end] == recorder.times_s
+    assert full.columns["X"][start_index:end] == recorder.columns["X.position"]
+    assert min(recorder.columns["X.position"]) == pytest.approx(-50.0, abs=0.05)
+    csv_rows = recorder.to_csv().splitlines()
+    assert csv_rows[0] == "t_s,X"
+    full_rows = full.to_csv().splitlines()
+    assert [r.split(",")[:2] for r in full_rows[start_index + 1:end + 1]] == [r.split(",") for r in csv_rows[1:]]
+
+
+def test_csv_columns_and_format() -> None:
+    assert csv_column("X.position") == "X"
+    assert csv_column("X.velocity") == "X_velocity_mm_min"
+    assert csv_column("feed_override") == "feed_override_pct"
+    assert trace_csv([0.004, 0.008], {"X": [1.0, 2.5]}) == "t_s,X\n0.004000,1.000000\n0.008000,2.500000\n"
