@@ -67,3 +67,10 @@ def test_helix_with_cr_and_inch() -> None:
     assert m.center_mcs == approx({"X": 25.4, "Y": 0.0, "Z": 0.0})
     assert math.isclose(m.feed_mm_min, 10.0)
     assert m.end_wcs["Z"] == pytest.approx(-0.5)
+
+
+def test_polar_in_g18_measures_the_angle_from_z_towards_x() -> None:
+    # G18: abscissa Z, ordinate X. Pole (Z=10, X=0); RP=5 AP=90 -> Z 10, X 5.
+    r = run(lines("N10 G18 G111 Z10 X0", "N20 G0 RP=5 AP=90", "N30 AP=0", "N40 M30"))
+    assert r.end_wcs(20) == approx({"X": 5.0, "Y": 0.0, "Z": 10.0})
+    assert r.end_wcs(30) == approx({"X": 0.0, "Y": 0.0, "Z": 15.0})
