@@ -155,9 +155,35 @@ class SetKeyswitch:
     position: int
 
 
+@dataclass(frozen=True, slots=True)
+class ChangePassword:
+    """Give access level ``level`` (1 … 3) the new password ``password``."""
+
+    level: int
+    password: str
+
+
+@dataclass(frozen=True, slots=True)
+class DeleteToolEdge:
+    """Delete cutting edge ``edge`` of tool ``tool`` (``edge=None``: the whole tool)."""
+
+    tool: int
+    edge: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ClearRParameters:
+    """Set every R parameter to 0."""
+
+
+@dataclass(frozen=True, slots=True)
+class ActivateMachineData:
+    """NEW CONFIG ("Set MD active"): stored machine data of activation cf (and re) take effect."""
+
+
 Command = (
     SelectMode | SelectMachineFunction | SelectIncrement | CycleStart | CycleStop | Reset
     | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
     | CancelAlarms | Jog | StartBlockSearch | WriteData | EnterPassword | DeletePassword
-    | SetKeyswitch
+    | SetKeyswitch | ChangePassword | DeleteToolEdge | ClearRParameters | ActivateMachineData
 )

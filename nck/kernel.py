@@ -423,6 +423,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self._sit = next_state(self._sit, "reset") or self._sit
         if not self._pc["program_test"]:
             self._test_motion = None
+        self._activate_data("reset")  # stored MD of activation re/cf take effect
         return Accepted()
 
     def _emergency_stop(self, command: cmd.EmergencyStop) -> SubmitResult:
@@ -510,6 +511,10 @@ class Nck(ManualControl, ControlSettings, StatusView):
         cmd.SetKeyswitch: "_set_keyswitch",
         cmd.EnterPassword: "_enter_password",
         cmd.DeletePassword: "_delete_password",
+        cmd.ChangePassword: "_change_password",
+        cmd.DeleteToolEdge: "_delete_tool_edge",
+        cmd.ClearRParameters: "_clear_r_parameters",
+        cmd.ActivateMachineData: "_activate_machine_data",
     }
 
     # ------------------------------------------------------------- cycle

@@ -18,13 +18,14 @@ from nck.canon import Motion
 from nck.channel import ACTIVE, RESET
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.interp.api import Interpreter
+from nck.kernel_data import DataWrites
 from nck.motion.instant import InstantMotion
 
 DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
 THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
 
 
-class ControlSettings:
+class ControlSettings(DataWrites):
     """Program control, overrides, data writes, keyswitch and passwords; mixed into ``Nck``."""
 
     machine: Any
@@ -83,6 +84,9 @@ class ControlSettings:
         return Accepted()
 
     def _write_data(self, command: cmd.WriteData) -> SubmitResult:
+        handled = self._write_nc_datum(command)  # protection, MD/SD, tools, frames, GUD
+        if handled is not None:
+            return handled
         name = command.name.strip().upper()
         try:
             if name.startswith("R") and name[1:].isdigit():
@@ -90,9 +94,6 @@ class ControlSettings:
                 if index >= len(self.data.r):
                     return Rejected(f"R parameter {index} does not exist")
                 self.data.r[index] = float(command.value)  # type: ignore[arg-type]
-                return Accepted()
-            if name.startswith("SD") and name[2:].isdigit():
-                self.data.setting_data[name] = command.value
                 return Accepted()
             parts = {"$AC_TOTAL_PARTS": "total", "$AC_ACTUAL_PARTS": "actual",
                      "$AC_SPECIAL_PARTS": "special", "$AC_REQUIRED_PARTS": "required"}
