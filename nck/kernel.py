@@ -45,9 +45,10 @@ from nck.kernel_settings import ControlSettings
 from nck.kernel_status import StatusView
 from nck.machine import MachineConfig, load_machine
 from nck.motion.instant import InstantMotion, instant_motion_factory
+from nck.motion.system import planned_motion_factory
 from nck.ncdata import NcData
 from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, ProgramRun, RunEvent, RunOptions
-from nck.status import AlarmEntry, AlarmEvent, NckStatus
+from nck.status import AlarmEntry, AlarmEvent, LogbookEntry, NckStatus
 
 DEFAULT_IPO_S = 0.004
 ALARM_INTERNAL = 1
@@ -56,6 +57,7 @@ ALARM_START_WITH_ALARM = 10200
 ALARM_START_UNREFERENCED = 10203
 ALARM_CONTINUE_WITH_START = 10208
 MDA_NAME = "MDA"
+_LOGBOOK_COMMANDS = (cmd.WriteData, cmd.SetKeyswitch, cmd.EnterPassword, cmd.DeletePassword)
 
 
 class _NoPrograms:
@@ -90,7 +92,8 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self.data = data if data is not None else NcData()
         self.programs: ProgramSource = programs if programs is not None else _NoPrograms()
         self._interpreter_factory = interpreter_factory or _default_interpreter_factory
-        self.motion = (motion_factory or instant_motion_factory)(self.machine)
+        self.motion = (motion_factory or planned_motion_factory)(self.machine)
+        getattr(self.motion, "attach_setting_data", lambda _data: None)(self.data.setting_data)
         for axis in self.machine.path_axes:
             # MD34210 ENC_REFP_STATE = 2: absolute encoder adjusted (or buffered
             # position) -> referenced at power on without any motion.
@@ -149,6 +152,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self.cycle_listeners: list[Callable[["Nck"], None]] = []
         self.cycles_done = 0  # IPO cycles since power on (system utilisation)
         self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
+        self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
         self._apply_overrides()
 
     # ------------------------------------------------------------------ API
@@ -158,7 +162,12 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if name is None:
             return Rejected(f"unknown command {type(command).__name__}")
         try:
-            return getattr(self, name)(command)
+            logged = isinstance(command, _LOGBOOK_COMMANDS)
+            level_before = self._access_level() if logged else 7
+            result = getattr(self, name)(command)
+            if logged and isinstance(result, Accepted):
+                self._note_in_logbook(command, level_before)
+            return result
         except NcAlarmError as error:
             entry = self._raise(error)
             return Rejected(entry.text, alarm=error.number)
@@ -217,6 +226,22 @@ class Nck(ManualControl, ControlSettings, StatusView):
     def alarm_log_since(self, seq: int) -> tuple[AlarmEvent, ...]:
         """Alarm/message log events newer than ``seq`` (bounded log)."""
         return self.alarms.log_since(seq)
+
+    def _note_in_logbook(self, command: object, level_before: int) -> None:
+        """Logbook (diagnosis): access-level changes and machine/setting data writes."""
+        level = self._access_level()
+        if isinstance(command, cmd.WriteData):
+            name = command.name.upper()
+            if name.startswith(("MD", "SD", "$M", "$S")):
+                self.logbook.append(LogbookEntry(self._time_s, "data", f"{command.name} = {command.value}"))
+            return
+        what = {cmd.SetKeyswitch: "keyswitch", cmd.EnterPassword: "password entered",
+                cmd.DeletePassword: "password deleted"}.get(type(command), "access")
+        if isinstance(command, cmd.SetKeyswitch):
+            what = f"keyswitch position {command.position}"
+        if level != level_before or not isinstance(command, cmd.SetKeyswitch):
+            self.logbook.append(LogbookEntry(
+                self._time_s, "access", f"{what}: access level {level_before} -> {level}"))
 
     def buffer_fill(self) -> tuple[int, int]:
         """Read-only: (items in the motion system's block buffer, its capacity) for the diagnosis."""
@@ -323,7 +348,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
             approach = run.search_approach()
             self._path_motion().resume()
             if approach is not None:
-                run.requeue([replace(approach, start_mcs=self._path_positions(self._path_motion()))])
+                run.requeue([], replace(approach, start_mcs=self._path_positions(self._path_motion())))
             self._transition("program_start")
             return Accepted()
         self._resume_motion(run)
@@ -599,7 +624,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
             if address == "M":
                 self.counters.on_m_function(int(value), bool(self._pc["program_test"]))
         elif isinstance(command, ToolSelect):
-            self._tool = command.tool
+            self._aux["T"] = str(command.tool)  # the programmed (preselected) tool
+            if command.change:
+                self._tool = command.tool  # the active tool after the change
         elif isinstance(command, EdgeSelect):
             self._edge = command.edge
         elif isinstance(command, SpindleCommand):
@@ -657,20 +684,19 @@ class Nck(ManualControl, ControlSettings, StatusView):
         motion.resume()
         if self._parked is None:
             return
-        items: list[Motion | Dwell] = []
+        approach: Motion | None = None
         here = self._path_positions(motion)
         point = self._repos_point or {}
         if any(abs(here.get(axis, 0.0) - value) > 1e-6 for axis, value in point.items()):
             first = next((i for i in self._parked if isinstance(i, Motion)), None) or run.last_motion
             feed = first.feed_mm_min if first is not None and first.kind != "G0" else None
             source = first.source if first is not None else Source(run.name, 0)
-            items.append(Motion(
+            approach = Motion(
                 kind="G0" if feed is None else "G1", source=source, plane="G17",
                 end_wcs={a: v - self._wcs_offset.get(a, 0.0) for a, v in point.items()},
                 end_mcs=dict(point), start_mcs=here, feed_mm_min=feed, exact_stop=True, inserted=True,
-            ))
-        items.extend(self._parked)
-        run.requeue(items)
+            )
+        run.requeue(list(self._parked), approach)
         self._parked = None
 
     def _interpreter(self, kind: str) -> Interpreter:

@@ -179,9 +179,9 @@ class StatusView:
                 base = getter()
             except Exception:  # noqa: BLE001 - display only
                 base = ModalView()
+        # Tool, edge, spindle and auxiliary functions as the main run output them:
+        # the interpreter's own modal state is ahead of the machine (look-ahead).
         return replace(
-            base, tool=base.tool or self._tool, edge=base.edge or self._edge,
-            spindle_speed_rpm=base.spindle_speed_rpm or self._spindle_rpm,
-            spindle_state=self._spindle_state if base.spindle_state == "M5" else base.spindle_state,
-            aux={**dict(base.aux), **self._aux},
+            base, tool=self._tool, edge=self._edge, spindle_speed_rpm=self._spindle_rpm,
+            spindle_state=self._spindle_state, aux=dict(self._aux),
         )

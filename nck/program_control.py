@@ -120,6 +120,12 @@ class ProgramRun:
         self.segments: dict[tuple[str, int], Motion] = {}  # recent segments by (file, line)
         self.pushed: deque[Motion | Dwell] = deque(maxlen=PUSHED_HISTORY)
         self._requeued: deque[Motion | Dwell] = deque()
+        # Main-run bookkeeping: outputs (aux functions, MSG) of a block go out when
+        # the motion pushed before them has been executed, not at interpretation.
+        self._inflight: deque[tuple[str, int]] = deque()  # pushed, not known to be done
+        self._pushed_total = 0
+        self._deferred: deque[tuple[int, RunEvent]] = deque()
+        self._approach: Motion | None = None
         self._transform = transform or (lambda motion: motion)
         self.listener: Callable[[BlockResult], None] | None = None  # sees every interpreted block
         self._pending: BlockResult | None = None
@@ -132,15 +138,20 @@ class ProgramRun:
     def feed(self, motion: MotionSystem, options: RunOptions, budget_s: float) -> list[RunEvent]:
         """Advance the run by one IPO cycle's worth of interpretation."""
         events: list[RunEvent] = []
+        self._release(motion, events)
+        if self._approach is not None:
+            if not motion.can_accept():
+                return events
+            motion.push(self._approach)  # not counted: no output waits for it
+            self._approach = None
         while self._requeued:
             if not motion.can_accept():
                 return events
-            item = self._requeued.popleft()
-            self.pushed.append(item)
-            motion.push(item)
+            self._push(motion, self._requeued.popleft())
         if self.phase in (WAIT_IDLE, WAIT_STOP, WAIT_END):
             if not motion.is_idle():
                 return events
+            self._release(motion, events, everything=True)
             if self.phase == WAIT_STOP:
                 self.phase = STOPPED
                 events.append(RunEvent("stop", self.stop_reason))
@@ -172,7 +183,30 @@ class ProgramRun:
             if not self._emit(motion, options, events):
                 break  # motion buffer full: continue next cycle
             self._block_done(options)
+        self._release(motion, events)
         return events
+
+    def _push(self, motion: MotionSystem, item: Motion | Dwell) -> None:
+        self.pushed.append(item)
+        self._inflight.append((item.source.file, item.source.line))
+        self._pushed_total += 1
+        motion.push(item)
+
+    def _release(self, motion: MotionSystem, events: list[RunEvent], everything: bool = False) -> None:
+        """Hand out deferred outputs whose preceding motion the main run has executed."""
+        if not self._deferred:
+            return
+        current = motion.current_source()
+        if everything or (current is None and motion.is_idle()):
+            self._inflight.clear()
+        elif current is not None:
+            key = (current.file, current.line)
+            if key in self._inflight:
+                while self._inflight and self._inflight[0] != key:
+                    self._inflight.popleft()
+        done = self._pushed_total - len(self._inflight)
+        while self._deferred and self._deferred[0][0] <= done:
+            events.append(self._deferred.popleft()[1])
 
     def _take(self, result: BlockResult) -> None:
         if self.listener is not None:
@@ -200,8 +234,7 @@ class ProgramRun:
                     self.segments[(src.file, src.line)] = command
                     if len(self.segments) > 64:
                         self.segments.pop(next(iter(self.segments)))
-                self.pushed.append(command)
-                motion.push(command)
+                self._push(motion, command)
             elif isinstance(command, StopPoint):
                 kind = command.kind.upper()
                 if kind in ("M0", "M00"):
@@ -214,13 +247,13 @@ class ProgramRun:
             elif isinstance(command, ProgramEnd):
                 self._end_kind = command.kind
             elif isinstance(command, Message):
-                events.append(RunEvent("message", text=command.text, command=command))
+                self._deferred.append((self._pushed_total, RunEvent("message", text=command.text, command=command)))
             elif isinstance(command, UserAlarm):
                 events.append(RunEvent("user_alarm", command=command))
                 if self._stop_after is None:
                     self._stop_after = "alarm"
             else:
-                events.append(RunEvent("output", command=command))
+                self._deferred.append((self._pushed_total, RunEvent("output", command=command)))
             self._index += 1
         return True
 
@@ -272,6 +305,17 @@ class ProgramRun:
         program (mode change, JOG); the first item is cut to start at
         ``position_mcs``. ``current`` None (nothing was executing) gives [].
         """
+        # The executed part of the in-flight list is dropped; the rest is pushed again
+        # on resume, so the deferred outputs keep waiting for the same items.
+        if current is None:
+            self._inflight.clear()
+        else:
+            key = (current.file, current.line)
+            while self._inflight and self._inflight[0] != key:
+                self._inflight.popleft()
+        self._pushed_total -= len(self._inflight)
+        self._inflight.clear()
+        self._approach = None
         items = list(self._requeued)
         if current is not None:
             history = list(self.pushed)
@@ -286,8 +330,10 @@ class ProgramRun:
         self._requeued.clear()
         return items
 
-    def requeue(self, items: list[Motion | Dwell]) -> None:
-        """Push ``items`` (REPOS approach, then the parked remainder) before new blocks."""
+    def requeue(self, items: list[Motion | Dwell], approach: Motion | None = None) -> None:
+        """Push the parked remainder ``items`` before new blocks, led by the REPOS ``approach``."""
+        if approach is not None:
+            self._approach = approach
         self._requeued.extend(items)
 
     @property

@@ -242,3 +242,36 @@ def test_tick_ignores_nonsense_durations() -> None:
         nck.tick(value)
     assert nck.time_s == 0.0
     assert nck.internal_errors == []
+
+
+def test_aux_functions_and_messages_go_out_with_the_main_run() -> None:
+    program = 'N10 G1 X100 F6000\nN20 S1000 M3\nN30 MSG("cutting")\nN40 G1 X0\nN50 M30'
+    nck = make_nck({"P": program})
+    auto_start(nck, "P")
+    nck.tick(0.5)  # N10 still moving, although N20-N40 are already interpreted
+    status = nck.status().channel
+    assert status.modal.spindle_state == "M5" and status.message == ""
+    nck.tick(0.6)
+    status = nck.status().channel
+    assert status.modal.spindle_state == "M3" and status.message == "cutting"
+    assert until_state(nck, "reset", "aborted")
+
+
+def test_outputs_after_a_repos_wait_for_the_remainder() -> None:
+    program = "N10 G1 X100 F6000\nN20 S500 M3\nN30 M30"
+    nck = make_nck({"P": program})
+    auto_start(nck, "P")
+    nck.tick(0.5)
+    nck.submit(c.CycleStop())
+    nck.submit(c.SelectMode("JOG"))
+    nck.submit(c.Jog("Y", 1))
+    nck.tick(0.3)
+    nck.submit(c.Jog("Y", 0))
+    nck.tick(0.1)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.CycleStart())
+    nck.tick(0.2)
+    assert nck.status().channel.modal.spindle_state == "M5"  # N10 not finished yet
+    assert until_state(nck, "reset", "aborted")
+    assert nck.positions_mcs() == pytest.approx({"X": 100.0, "Y": 0.0, "Z": 0.0})
+    assert nck.status().channel.modal.spindle_state == "M3"

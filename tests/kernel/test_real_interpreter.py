@@ -164,3 +164,14 @@ def test_wcs_display_follows_the_executing_block() -> None:
     x_axis = nck.status().axes[0]
     assert x_axis.position_mcs == pytest.approx(30.0)
     assert x_axis.position_wcs == pytest.approx(30.0)  # M30 deleted the programmable frame
+
+
+def test_spindle_and_tool_display_follow_the_main_run() -> None:
+    nck = make({"P.MPF": "N10 G1 X100 F6000\nN20 T2 M6 D1 S800 M3\nN30 G1 X0\nN40 M30"})
+    start(nck, "P.MPF")
+    nck.tick(0.5)
+    modal = nck.status().channel.modal
+    assert (modal.spindle_state, modal.tool) == ("M5", 0)
+    nck.tick(0.7)
+    modal = nck.status().channel.modal
+    assert (modal.spindle_state, modal.spindle_speed_rpm, modal.tool, modal.edge) == ("M3", 800.0, 2, 1)
