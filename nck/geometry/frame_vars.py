@@ -16,6 +16,7 @@ vs G700/G710 rules for stored frames (:mod:`nck.geometry.units`).
 
 from __future__ import annotations
 
+import copy
 from typing import Any
 
 from nck.errors import NcAlarmError
@@ -95,12 +96,14 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     path = interp.builder.path
     if name == "$P_PFRAME":
         axis, comp = _address(interp, name, indices)
+        _guard_active(interp)
         geo = path.state(modal)
         frame = _set_component(geo.frames.programmable, axis, comp, number, path.units(modal).position_mm)
         geo.frames = geo.frames.with_programmable(frame)
         return
     if name == "$P_IFRAME":
         axis, comp = _address(interp, name, indices)
+        _guard_active(interp)
         geo = path.state(modal)
         frame = _set_component(geo.frames.settable, axis, comp, number, path.units(modal).data_mm)
         geo.frames = geo.frames.with_settable(geo.frames.settable_code, frame)
@@ -110,16 +113,59 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
             if len(indices) != 3:
                 _bad(name)
             code = settable_code(_int(indices[0], name))
+            _guard_stored(interp, name, code)
             offset = interp.data.settable_frame(code) if code != "G500" else \
                 interp.data.settable_frames.setdefault("G500", WorkOffset())
             rest = indices[1:]
         else:
+            _guard_stored(interp, name, None)
             offset = interp.data.base_frame
             rest = indices
         axis, comp = _address(interp, name, rest)
         _set_stored(offset, axis, comp, number, path.units(modal).data_mm)
         return
     raise NcAlarmError(17070, name)
+
+
+# --------------------------------------------------------------------------- rollback
+def _journal(interp: Any, undo: Any) -> None:
+    """Let a failing block undo a frame write (the interpreter's journal, kind ``undo``)."""
+    journal = getattr(interp, "_journal", None)
+    if journal is not None:
+        journal.append(("undo", undo, None))
+
+
+def _guard_active(interp: Any) -> None:
+    geo = interp.builder.path.state(interp.modal)
+    frames = geo.frames
+
+    def undo() -> None:
+        geo.frames = frames
+
+    _journal(interp, undo)
+
+
+def _guard_stored(interp: Any, name: str, code: str | None) -> None:
+    data = interp.data
+    if name == "$P_UBFR":
+        old = copy.deepcopy(data.base_frame)
+
+        def undo_base() -> None:
+            data.base_frame = old
+
+        _journal(interp, undo_base)
+        return
+    assert code is not None
+    had = code in data.settable_frames
+    old_offset = copy.deepcopy(data.settable_frames.get(code))
+
+    def undo_settable() -> None:
+        if had:
+            data.settable_frames[code] = old_offset
+        else:
+            data.settable_frames.pop(code, None)
+
+    _journal(interp, undo_settable)
 
 
 # --------------------------------------------------------------------------- whole frames
@@ -153,6 +199,7 @@ def _whole_frame_write(interp: Any, name: str, indices: tuple[Any, ...], value: 
     path = interp.builder.path
     modal = interp.modal
     if name in ("$P_PFRAME", "$P_IFRAME") and not indices:
+        _guard_active(interp)
         geo = path.state(modal)
         if name == "$P_PFRAME":
             geo.frames = geo.frames.with_programmable(frame)
@@ -160,10 +207,12 @@ def _whole_frame_write(interp: Any, name: str, indices: tuple[Any, ...], value: 
             geo.frames = geo.frames.with_settable(geo.frames.settable_code, frame)
         return
     if name == "$P_UBFR" and not indices:
+        _guard_stored(interp, name, None)
         interp.data.base_frame = work_offset_of(frame)
         return
     if name == "$P_UIFR" and len(indices) == 1:
         code = settable_code(_int(indices[0], name))
+        _guard_stored(interp, name, code)
         interp.data.settable_frames[code] = work_offset_of(frame)
         return
     raise NcAlarmError(ALARM_INDEX, name)

@@ -304,6 +304,8 @@ class Interpreter:
                     self.data.gud.pop(key, None)
                 else:
                     self.data.gud[key] = old
+            elif kind == "undo":  # key is a callable that restores what it saved (frame writes)
+                key()
         self._journal = []
         state = self._state
         for frame, saved_frame in frames:

@@ -90,3 +90,17 @@ def test_frame_chain_operator() -> None:
     assert data.settable_frames["G54"].rot == {"Z": pytest.approx(90.0)}
     assert r.end_mcs(20) == approx({"X": 100.0, "Y": 60.0, "Z": 0.0})
     assert r.end_mcs(40) == approx({"X": 95.0, "Y": 50.0, "Z": 0.0})
+
+
+def test_a_failing_block_undoes_its_frame_writes() -> None:
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+
+    data = NcData()
+    interp = Interpreter(load_machine("mill3"), MemorySource({}), data)
+    interp.start_text("U.MPF", "N10 $P_PFRAME[X,TR]=5 $P_UIFR[1,X,TR]=7 $P_UIFR[1,Q,TR]=1\n")
+    with pytest.raises(NcAlarmError):
+        interp.step()
+    assert interp.modal.geometry is None or interp.modal.geometry.frames.programmable.is_identity()
+    assert "X" not in data.settable_frames["G54"].trans
