@@ -703,6 +703,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
         interp = self._interpreters.get(kind)
         if interp is None:
             interp = self._interpreter_factory(self.machine, self.programs, self.data)
+            if hasattr(interp, "position_source"):
+                # Read only after the implicit STOPRE of needs_preprocessing_stop().
+                interp.position_source = self._actual_position  # type: ignore[attr-defined]
             self._apply_skip_levels(interp)
             self._interpreters[kind] = interp
         return interp

@@ -171,6 +171,8 @@ class ProgramRun:
                     break
                 if budget_s <= 0.0 or blocks >= MAX_BLOCKS_PER_CYCLE:
                     break
+                if self._must_wait_for_main_run(motion):
+                    break  # implicit STOPRE: the block reads main-run data ($AA_IM …)
                 try:
                     result = self.interp.step()
                 except NcAlarmError as error:
@@ -207,6 +209,13 @@ class ProgramRun:
         done = self._pushed_total - len(self._inflight)
         while self._deferred and self._deferred[0][0] <= done:
             events.append(self._deferred.popleft()[1])
+
+    def _must_wait_for_main_run(self, motion: MotionSystem) -> bool:
+        """True while the next block needs the main run to catch up first."""
+        needs = getattr(self.interp, "needs_preprocessing_stop", None)
+        if needs is None or not needs():
+            return False
+        return bool(self._deferred) or not motion.is_idle()
 
     def _take(self, result: BlockResult) -> None:
         if self.listener is not None:

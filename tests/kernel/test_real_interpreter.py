@@ -175,3 +175,10 @@ def test_spindle_and_tool_display_follow_the_main_run() -> None:
     nck.tick(0.7)
     modal = nck.status().channel.modal
     assert (modal.spindle_state, modal.spindle_speed_rpm, modal.tool, modal.edge) == ("M3", 800.0, 2, 1)
+
+
+def test_reading_actual_positions_waits_for_the_main_run() -> None:
+    nck = make({"P.MPF": "N10 G1 X12 F600\nN20 R1=$AA_IM[X]\nN30 M30"})
+    start(nck, "P.MPF")
+    assert until_state(nck, "reset", "aborted")
+    assert nck.data.r[1] == pytest.approx(12.0)  # not 0: N20 waited for N10 to finish
