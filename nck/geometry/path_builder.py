@@ -202,10 +202,25 @@ class PathBuilder:
         elif code in ("G110", "G111", "G112"):
             self._pole(code, words, modal, geo, units)
             return flushed
+        elif code in ("G25", "G26"):
+            self._working_area(code, values)
+            return flushed
         else:
-            return flushed  # G25/G26 working-area limits: not geometry
+            return flushed
         geo.frames = frames.with_programmable(prog)
         return flushed
+
+    def _working_area(self, code: str, values: Mapping[str, float]) -> None:
+        """``G25``/``G26``: lower/upper working-area limit per axis (machine coordinates).
+
+        Written to SD43430 WORKAREA_LIMIT_MINUS / SD43420 WORKAREA_LIMIT_PLUS; they act
+        where SD43410/SD43400 enable them (WALIMON).
+        """
+        key = "SD43430" if code == "G25" else "SD43420"
+        table = self.data.setting_data.get(key)
+        table = dict(table) if isinstance(table, Mapping) else {}
+        table.update({axis: float(v) for axis, v in values.items()})
+        self.data.setting_data[key] = table
 
     def _pole(self, code: str, words: Any, modal: Any, geo: GeometryState, units: UnitSystem) -> None:
         pl = self.plane(modal)

@@ -107,3 +107,10 @@ def test_aux_output_order() -> None:
     r = run(lines("N10 G1 X10 F100 M8 H5 S200 M3 T1 D1", "N20 M30"))
     kinds = [type(c).__name__ for c in r.commands if c.source.n == 10]
     assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "AuxFunction", "AuxFunction", "Motion"]
+
+
+def test_g25_g26_write_the_working_area_limits() -> None:
+    data = NcData()
+    run(lines("N10 G25 X-100 Y-50", "N20 G26 X200 Z10", "N30 G70 G26 Y1", "N40 M30"), data)
+    assert data.setting_data["SD43430"] == {"X": -100.0, "Y": -50.0}
+    assert data.setting_data["SD43420"] == pytest.approx({"X": 200.0, "Z": 10.0, "Y": 25.4})
