@@ -215,9 +215,16 @@ class PlannedMotion:
         self.limits.workarea_on = True
 
     def positions_mcs(self) -> Mapping[str, float]:
-        """Actual positions of every path axis (MCS) and the angle of every spindle."""
-        actual = self.servo.actual
-        out = {name: float(actual[i]) for i, name in enumerate(self.names)}
+        """Positions of every path axis (MCS) and the angle of every spindle.
+
+        These are the position-controller setpoints: at standstill the actual
+        value differs from them only by the decaying following error (inside
+        the exact-stop window), so displays and REPOS see exact end points.
+        The actual values, following errors and drive values are in
+        :meth:`axis_states` (service screens).
+        """
+        setpoints = self.servo.x_set
+        out = {name: float(setpoints[i]) for i, name in enumerate(self.names)}
         for name, spindle in self.spindles.items():
             out[name] = spindle.state.angle_deg
         return out
@@ -316,6 +323,10 @@ class PlannedMotion:
             self.cmd = self._saved_for_test.copy()
             self._saved_for_test = None
             self.plan_pos = None
+
+    def attach_setting_data(self, setting_data: Mapping[str, Any]) -> None:
+        """Read the working-area setting data SD43400 … SD43430 live from ``setting_data``."""
+        self.limits.setting_data = setting_data
 
     def set_workarea_monitoring(self, active: bool) -> None:
         """WALIMON / WALIMOF."""
