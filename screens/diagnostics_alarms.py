@@ -18,7 +18,7 @@ from rich.text import Text
 from nck.status import AlarmEntry, AlarmEvent
 
 CLEAR_SYMBOLS: dict[str, str] = {
-    "power_on": "⏻",  # switch the control off and on
+    "power_on": "◉",  # switch the control off and on
     "reset": "⟲",  # RESET key
     "cancel": "✕",  # alarm cancel key (F12)
     "nc_start": "▶",  # NC START
@@ -62,7 +62,7 @@ def alarm_list_rows(alarms: Iterable[AlarmEntry]) -> list[AlarmEntry]:
 def alarm_list_text(alarms: Sequence[AlarmEntry], width: int = 150) -> Text:
     """The alarm list: ``Time | Clear | Number | Text | Source``, newest first."""
     text = Text(no_wrap=True, end="")
-    text.append(f" {'Time':<12} {'Del':<4} {'Number':>6}  {'Text':<84} Source\n", style="bold")
+    text.append(f" {'Time':<12} {'Del':<4} {'Number':>6}  {'Text':<96} Source\n", style="bold")
     rows = alarm_list_rows(alarms)
     if not rows:
         text.append(" No active alarms.", style="dim")
@@ -71,8 +71,8 @@ def alarm_list_text(alarms: Sequence[AlarmEntry], width: int = 150) -> Text:
         symbol = CLEAR_SYMBOLS.get(entry.clear, "?")
         text.append(f" {clock_text(entry.came_s):<12} {symbol:<4} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
-        body = entry.text if len(entry.text) <= 84 else entry.text[:83] + "…"
-        text.append(f"  {body:<84} {source_text(entry)}\n")
+        body = entry.text if len(entry.text) <= 96 else entry.text[:95] + "…"
+        text.append(f"  {body:<96} {source_text(entry)}\n")
     text.append("\n Clear: ")
     for key in ("cancel", "reset", "nc_start", "power_on", "self"):
         text.append(f"{CLEAR_SYMBOLS[key]} {CLEAR_NAMES[key]}   ", style="dim")

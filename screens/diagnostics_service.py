@@ -72,7 +72,8 @@ def overview_text(status: NckStatus) -> Text:
             flags = enables(status, axis)
         for name in columns:
             on = flags[name]
-            text.append(f"{'✓' if on else '✗':>14}", style="green" if on else "bold red")
+            text.append(" " * 13)
+            text.append("✓" if on else "✗", style="green" if on else "bold red")
         fe = MISSING if axis.kind == "spindle" else f"{axis.following_error:.3f}"
         text.append(f"{fe:>18}\n")
     return text
@@ -160,7 +161,8 @@ def rows_text(title: str, rows: list[Row]) -> Text:
     text.append(f" {'Name':<48}{'Value':>22}  Unit\n", style="bold")
     for name, value, unit in rows:
         text.append(f" {name:<48}")
-        text.append(f"{value:>22}", style="bold" if value != MISSING else "dim")
+        text.append(" " * max(22 - len(value), 0))
+        text.append(value, style="bold" if value != MISSING else "dim")
         text.append(f"  {unit}\n")
     return text
 

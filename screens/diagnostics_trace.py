@@ -41,8 +41,9 @@ class TraceSession:
 
     def next_signal(self) -> None:
         """Put the next signal (or none) into the slot being edited."""
-        choices: list[str | None] = [None, *self.signals]
         current = self.slots[self.slot]
+        taken = {s for i, s in enumerate(self.slots) if s and i != self.slot}
+        choices: list[str | None] = [None, *(s for s in self.signals if s not in taken)]
         index = choices.index(current) if current in choices else 0
         self.slots[self.slot] = choices[(index + 1) % len(choices)]
 

@@ -20,6 +20,16 @@ CURVE_STYLES = ("bold green", "bold yellow", "bold cyan", "bold magenta")
 CURSOR_STYLE = "reverse"
 
 
+def format_value(value: float) -> str:
+    """A value for the legend and the read-out: fewer decimals for large magnitudes."""
+    magnitude = abs(value)
+    if magnitude >= 1000:
+        return f"{value:.1f}"
+    if magnitude >= 1:
+        return f"{value:.3f}"
+    return f"{value:.4f}"
+
+
 def value_range(values: Sequence[float]) -> tuple[float, float]:
     """(low, high) of ``values`` with a little room; a flat curve gets ±1 around its value."""
     finite = [v for v in values if math.isfinite(v)]
@@ -108,7 +118,7 @@ class TracePlot(Widget):
             return ""
         parts = [f"t = {self.times[self.cursor]:.3f} s"]
         for name, unit, curve in zip(self.names, self.units, self.curves):
-            parts.append(f"{name} = {curve[self.cursor]:.4f} {unit}")
+            parts.append(f"{name} = {format_value(curve[self.cursor])} {unit}")
         return "   ".join(parts)
 
     def render(self) -> Text:
@@ -120,9 +130,10 @@ class TracePlot(Widget):
             text.append(" No samples yet: choose signals, then start the trace.", style="dim")
             return text
         for index, (name, unit, curve) in enumerate(zip(self.names, self.units, self.curves)):
-            low, high = value_range(curve)
+            finite = [v for v in curve if math.isfinite(v)] or [0.0]
+            low, high = min(finite), max(finite)
             text.append(" ■ ", style=CURVE_STYLES[index])
-            text.append(f"{name} [{unit}] {low:.4g} … {high:.4g}   ")
+            text.append(f"{name} [{unit}] {format_value(low)} … {format_value(high)}   ")
         text.append("\n")
         text.append_text(render_curves(self.times, self.curves, width, height, self.cursor))
         t0, t1 = self.times[0], self.times[-1]
