@@ -506,6 +506,7 @@ class BlockRun:
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
         if program.proc is not None and program.proc.save:
             frame.saved_gcodes = dict(interp.modal.gcodes)  # PROC … SAVE
+            frame.saved_pframe = interp.builder.path.state(interp.modal).frames.programmable
         frame.single_block_off = self.frame.single_block_off or bool(program.proc and program.proc.sblof)
         frame.display_off = self.frame.display_off or bool(program.proc and program.proc.displof)
         self._bind_parameters(program, call, frame)

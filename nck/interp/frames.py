@@ -60,6 +60,7 @@ class Frame:
     for_ends: dict[int, Any] = field(default_factory=dict)
     is_main: bool = False
     saved_gcodes: dict[int, str] | None = None  # PROC … SAVE: G groups restored at the return
+    saved_pframe: Any = None  # PROC … SAVE: the programmable frame restored at the return
     single_block_off: bool = False  # SBLOF active at this level (inherited by calls)
     display_off: bool = False  # DISPLOF: blocks of this level are not displayed
     modal_call: Any = None  # MCALL: the ast.Call made after every motion block of this level

@@ -416,6 +416,9 @@ class Interpreter:
         self._state.frames.pop()
         if frame.saved_gcodes is not None:
             self._state.modal.gcodes = dict(frame.saved_gcodes)
+        if frame.saved_pframe is not None:  # SAVE also restores the programmable frame
+            geo = self.builder.path.state(self._state.modal)
+            geo.frames = geo.frames.with_programmable(frame.saved_pframe)
 
     # ---------------------------------------------------------------- data writes
     def write_r(self, index: Any, value: Any) -> None:

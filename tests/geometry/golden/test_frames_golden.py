@@ -158,3 +158,17 @@ def test_jog_sync_and_reset_recompute_the_wcs_from_the_machine_position() -> Non
     assert interp.modal.position_wcs == approx({"X": 50.0, "Y": 0.0, "Z": -80.0})
     assert interp.builder.wcs_from_mcs(interp.modal, {"X": 50.0, "Y": 0.0, "Z": 20.0}) == approx(
         {"X": 50.0, "Y": 0.0, "Z": -80.0})
+
+
+def test_save_subprogram_restores_the_programmable_frame() -> None:
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+
+    sub = "PROC SHIFTED SAVE\nN10 TRANS X50\nN20 G0 X0\nN30 RET\n"
+    interp = Interpreter(load_machine("mill3"), MemorySource({"SHIFTED.SPF": sub}), mill_data())
+    interp.start_text("M.MPF", "N10 TRANS X5\nN20 SHIFTED\nN30 G0 X0\nN40 M30\n")
+    ends = []
+    while not interp.finished:
+        ends += [c.end_mcs["X"] for c in interp.step().commands if hasattr(c, "end_mcs")]
+    assert ends == [50.0, 5.0]  # inside: TRANS X50; back in the main program: TRANS X5 again
