@@ -16,6 +16,7 @@ from typing import Any, TextIO
 from nck import __version__, canon
 from nck.errors import NcAlarmError
 from nck.headless import alarm_message, check_program, format_alarm, run_program
+from nck.motion.tracefile import start_trace, write_trace_csv
 from nck.interp.sources import DirectorySource, read_text_file
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
@@ -41,7 +42,7 @@ def _build_parser() -> argparse.ArgumentParser:
     _common_options(run)
     run.add_argument("--json", action="store_true", help="print the final state as JSON")
     run.add_argument("--segments", help="write motion segments as JSON lines (- = stdout)")
-    run.add_argument("--trace", help="(not yet implemented: accepted and ignored)")
+    run.add_argument("--trace", help="write the MCS setpoints of every IPO cycle as CSV (t_s, axes)")
     run.add_argument("--timeout", type=float, help="stop after S seconds of simulated time")
     run.add_argument("--realtime", action="store_true", help="(accepted; runs as fast as possible)")
     sub.add_parser("version", help="print the version")
@@ -273,14 +274,26 @@ def _run(options: argparse.Namespace) -> int:
         if segment_out is not None and isinstance(command, canon.Motion):
             segment_out.write(json.dumps(segment_json(command)) + "\n")
 
+    traced: list[Any] = []
+
+    def on_motion(motion: Any) -> None:
+        start_trace(motion)
+        traced.append(motion)
+
     try:
         result = run_program(machine, _source(path, options, env), data, path.name, text=text,
                              timeout_s=options.timeout, on_command=on_command,
-                             dialect=options.dialect)
+                             dialect=options.dialect, on_motion=on_motion if options.trace else None)
     finally:
         if close and segment_out is not None:
             segment_out.close()
         env.finish()
+    if options.trace and traced:
+        try:
+            with open(options.trace, "w", encoding="utf-8") as trace_out:
+                write_trace_csv(traced[-1], trace_out)
+        except OSError as exc:
+            raise CliError(f"cannot write '{options.trace}': {exc.strerror}") from None
     for alarm in result.alarms:
         print(format_alarm(alarm), file=sys.stderr)
     if result.status == "timeout":

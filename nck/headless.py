@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Any, Callable
 
 from nck import canon
 from nck.errors import NcAlarmError
@@ -64,6 +64,7 @@ def run_program(
     dialect: str = "siemens",
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
+    on_motion: Callable[[Any], None] | None = None,
 ) -> RunResult:
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
@@ -78,7 +79,7 @@ def run_program(
     if max_blocks is None:
         return run_on_kernel(machine, programs, data, program_name, timeout_s=timeout_s,
                              on_command=on_command, dialect=dialect, text=text,
-                             skip_levels=skip_levels)
+                             skip_levels=skip_levels, on_motion=on_motion)
     return interpret_only(machine, programs, data, program_name, timeout_s=timeout_s,
                           max_blocks=max_blocks, on_command=on_command, dialect=dialect,
                           text=text, skip_levels=skip_levels)
@@ -110,8 +111,11 @@ def run_on_kernel(
     dialect: str = "siemens",
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
+    on_motion: Callable[[Any], None] | None = None,
 ) -> RunResult:
     """The headless run through :class:`nck.kernel.Nck` (see :func:`run_program`).
+
+    ``on_motion`` receives the kernel's motion system before the start (e.g. to trace it).
 
     M0/M1 stops are continued with NC START at once (nobody is at the machine).
     """
@@ -127,6 +131,8 @@ def run_on_kernel(
         return interp
 
     nck = Nck(machine, data, source, referenced=True, interpreter_factory=factory)
+    if on_motion is not None:
+        on_motion(nck.motion)
     result = RunResult(status="ended")
 
     def on_block(block: object) -> None:
