@@ -45,9 +45,18 @@ from hmi.bridge import NckBridge
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.messages import CommandRejected, NckStatusChanged
-from hmi.startup import build_nck
+from hmi.startup import build_session
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.theme import SINUMERIK_THEME
+
+
+RETAINED_SAVE_PERIOD_S = 5.0
+"""Retained NC data that changed (part counters, alarm log …) is written at least this often."""
+
+RETAINED_COMMANDS = (cmd.WriteData, cmd.SetKeyswitch, cmd.EnterPassword, cmd.DeletePassword,
+                     cmd.ChangePassword, cmd.DeleteToolEdge, cmd.ClearRParameters,
+                     cmd.SetMdaProgram)
+"""Commands that change retained data: the data is saved right after they are accepted."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -152,6 +161,7 @@ class HmiApp(MachineControlPanel, App):
         self.internal_errors: list[str] = []
         self.init_panel()
         self._on_quit = on_quit
+        self.nc_session: Any = None  # hmi.startup.NcDataSession when running on a data directory
         self._program_cache: dict[str, tuple[str, tuple[str, ...]]] = {}
         for area in AREAS:
             self.add_mode(area.id, area_screen_factory(area))
@@ -165,6 +175,8 @@ class HmiApp(MachineControlPanel, App):
         """Connect the kernel and open the Machine area."""
         self.latest_status = self.bridge.status
         self.bridge.attach(self)
+        if self.nc_session is not None and self.bridge.realtime:
+            self.set_interval(RETAINED_SAVE_PERIOD_S, self.save_nc_data, name="nc-data-save")
         self.switch_mode("machine")
 
     # -- kernel ---------------------------------------------------------------------------
@@ -173,7 +185,26 @@ class HmiApp(MachineControlPanel, App):
         result = self.bridge.submit(command)
         if isinstance(result, Accepted) and self.hint:
             self.set_hint("")
+        if isinstance(result, Accepted) and isinstance(command, RETAINED_COMMANDS):
+            self.save_nc_data()
         return result
+
+    def save_nc_data(self) -> None:
+        """Write the retained NC data that changed (no-op without a data directory)."""
+        if self.nc_session is None:
+            return
+        try:
+            self.nc_session.save()
+        except OSError as exc:  # a full or read-only disk: say so, keep running
+            self.set_hint(f"NC data could not be saved: {exc}")
+
+    def power_on_reset(self) -> bool:
+        """Reset (po): save, restart the simulated NCK from the retained data; False without one."""
+        if self.nc_session is None:
+            return False
+        self.bridge.replace_kernel(self.nc_session.power_on())
+        self.bridge.poll(force=True)
+        return True
 
     def on_nck_status_changed(self, message: NckStatusChanged) -> None:
         """Hand a new snapshot to the area screens of the current stack."""
@@ -328,9 +359,13 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
         realtime: advance the kernel from the wall clock (False: tests advance it).
     """
     on_quit = None
+    session = None
     if nck is None:
-        nck, on_quit = build_nck(machine, data_dir, ephemeral, program)
-    return HmiApp(nck, realtime=realtime, on_quit=on_quit)
+        session = build_session(machine, data_dir, ephemeral, program)
+        nck, on_quit = session.nck, session.quit
+    app = HmiApp(nck, realtime=realtime, on_quit=on_quit)
+    app.nc_session = session
+    return app
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -93,6 +93,14 @@ class NckBridge:
                     raise
                 report(exc)
 
+    def replace_kernel(self, nck: NckLike) -> None:
+        """Drive a new kernel (after "Reset (po)"): its snapshots and log start afresh."""
+        self.nck = nck
+        self.ipo_cycle_s = float(getattr(nck, "ipo_cycle_s", self.ipo_cycle_s) or self.ipo_cycle_s)
+        self._last_seq = None
+        self._last_log_seq = 0
+        self._status = nck.status()
+
     # -- kernel access ------------------------------------------------------------------
     @property
     def status(self) -> NckStatus:

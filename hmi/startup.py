@@ -1,4 +1,14 @@
-"""Building the kernel the HMI runs on: machine, NC data directory, NC file system, samples."""
+"""Building the kernel the HMI runs on: machine, NC data directory, retained data, samples.
+
+:class:`NcDataSession` ties the HMI to the retained data of the NC data
+directory (:class:`nck.persistence.Session`): the kernel is built on the
+session's NC data, machine-data store and access control, so tools, offsets,
+R parameters, GUD, setting and machine data, passwords and the keyswitch that
+the operator changes survive a restart. ``save()`` writes what changed (the
+app calls it after data commands, on a timer and on quit); ``power_on()`` is
+"Reset (po)": save, reload from the files (every stored MD becomes active)
+and build a new kernel.
+"""
 
 from __future__ import annotations
 
@@ -9,9 +19,56 @@ from nck import commands as cmd
 from nck.commands import Rejected
 
 
-def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
-              program: str | None = None) -> tuple[Any, Callable[[], None] | None]:
-    """Build the kernel on the NC data directory; return it and the function run on quit.
+class NcDataSession:
+    """The retained NC data of one data directory and the kernel built on it."""
+
+    def __init__(self, session: Any, copy: Any = None) -> None:
+        self.session = session
+        self._copy = copy
+        self.nck = self._build_kernel()
+
+    def _build_kernel(self) -> Any:
+        from nck.kernel import Nck
+
+        nck = Nck(**self.session.kernel_arguments())
+        nck.md_store = self.session.md
+        files = self.session.files
+        files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
+        for alarm in self.session.startup_alarms:
+            nck.raise_alarm(alarm)
+        restore = getattr(self.session, "restore_alarm_log", None)
+        if callable(restore):
+            restore(nck)
+        return nck
+
+    def save(self) -> list[str]:
+        """Write the retained sections that changed (alarm log included); return their names."""
+        if self._copy is not None and getattr(self._copy, "discarded", False):
+            return []
+        store = getattr(self.session, "store_alarm_log", None)
+        if callable(store):
+            store(self.nck)
+        return self.session.save()
+
+    def power_on(self) -> Any:
+        """Reset (po): save, start again from the files, return the new kernel."""
+        self.save()
+        self.session = self.session.power_on()
+        self.nck = self._build_kernel()
+        return self.nck
+
+    def quit(self) -> None:
+        """Save, then remove an ephemeral copy."""
+        try:
+            self.save()
+        finally:
+            if self._copy is not None:
+                self._copy.cleanup()
+
+
+def build_session(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
+                  program: str | None = None) -> NcDataSession:
+    """Open the NC data directory and build the kernel on its retained data.
 
     The NC file system (``nck.storage``) lives in ``<data dir>/nc``; the training
     programs of ``data/programs`` are installed into a fresh directory. With
@@ -19,32 +76,26 @@ def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral
     ``program`` (a local file, imported into MPF, or a program name) is selected
     at start; the HMI still starts in JOG (axes must be referenced first).
     """
-    from nck.kernel import Nck
     from nck.machine import load_machine
     from nck.paths import open_data_dir
-    from nck.resources import data_path
-    from nck.storage import NcFileSystem
+    from nck.persistence import Session
 
     config = load_machine(machine)
     root, copy = open_data_dir(data_dir, ephemeral)
-    files = NcFileSystem(root / "nc")
-    files.install_samples(data_path("programs"))
-    nck = Nck(machine=config, programs=files)
-    files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
+    holder = NcDataSession(Session.open(root, config), copy)
     if program:
         name = program
         local = Path(program)
         if local.is_file():
-            name = files.import_file(local, overwrite=True).name
-        result = nck.submit(cmd.SelectProgram(name))
+            name = holder.session.files.import_file(local, overwrite=True).name
+        result = holder.nck.submit(cmd.SelectProgram(name))
         if isinstance(result, Rejected):
             raise ValueError(f"program {program}: {result.reason}")
+    return holder
 
-    def on_quit() -> None:
-        saver = getattr(nck, "save", None)
-        if callable(saver):
-            saver()
-        if copy is not None:
-            copy.cleanup()
 
-    return nck, on_quit
+def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
+              program: str | None = None) -> tuple[Any, Callable[[], None] | None]:
+    """Build the kernel on the NC data directory; return it and the function run on quit."""
+    holder = build_session(machine, data_dir, ephemeral, program)
+    return holder.nck, holder.quit

@@ -1,0 +1,342 @@
+"""The Parameter area (OFFSET key): tools, wear, work offsets, R variables, user variables, setting data.
+
+Views (horizontal softkeys): tool list, tool wear, work offsets (vertical:
+active chain, overview, details), R variables, user variables (GUD), setting
+data. The selected cell moves with the arrow keys; Enter (or the ``Edit``
+softkey) opens an input field, and the value goes to the kernel as
+``WriteData`` — the kernel checks the access level and the limits, and a
+refusal names the level needed. Cells the current level may not write are
+dimmed. Tools and edges are added with ``$TC_DP`` writes and deleted with
+``DeleteToolEdge``; "Clear all" R parameters asks first (``ClearRParameters``).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, ClassVar
+
+from textual.app import ComposeResult
+from textual.widgets import Static
+
+from nck import commands as cmd
+from nck.commands import Accepted
+from nck.status import NckStatus
+
+from hmi.area import AreaBase, show_text
+from hmi.softkeys import Softkey, SoftkeyMenu
+from screens.parameter_tables import (
+    EDIT_BINDINGS, ConfirmDialog, DataTable, TableCursor, ValueDialog, render_table,
+)
+from screens.parameter_views import (
+    active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,
+    tool_table,
+)
+
+VIEWS = ("tools", "wear", "wo_active", "wo_overview", "wo_details", "r", "gud", "sd")
+DEFAULT_TOOL_TYPE = 120  # end mill
+TABLE_HEIGHT = 36
+
+
+def level_key(name: str) -> str:
+    """Data that share a protection level share this key (one level lookup per table)."""
+    upper = name.upper()
+    if upper.startswith("R"):
+        return "R"
+    if upper.startswith("GUD:"):
+        return "GUD"
+    if upper.startswith("$TC_DP"):
+        return upper.split("[")[0]
+    if upper.startswith("$P_UIFR") or upper.startswith("$P_UBFR"):
+        return upper[:7] + upper[-3:]
+    return upper
+
+
+class ParameterScreen(AreaBase):
+    """The Parameter operating area."""
+
+    AREA_ID: ClassVar[str] = "parameter"
+    AREA_TITLE: ClassVar[str] = "PARAMETER"
+    CSS_PATH = "parameter.tcss"
+    BINDINGS = EDIT_BINDINGS
+
+    def __init__(self) -> None:
+        super().__init__(id="area-parameter")
+        self.view = "tools"
+        self.cursors = {view: TableCursor() for view in VIEWS}
+        self.detail_frame = "G54"
+        self.table: DataTable | None = None
+        self._levels: dict[str, int] = {}
+        self._levels_at = -1
+
+    # -- kernel access (read-only accessors; writes are commands) ----------------------------
+    @property
+    def kernel(self) -> Any:
+        """The kernel behind the bridge."""
+        return self.hmi.bridge.nck
+
+    def level_of(self, name: str) -> int:
+        """The access level writing ``name`` needs (cached per access level)."""
+        if self._levels_at != self.access_level:
+            self._levels = {}
+            self._levels_at = self.access_level
+        key = level_key(name)
+        if key not in self._levels:
+            reader = getattr(self.kernel, "required_level", None)
+            self._levels[key] = int(reader(name)) if callable(reader) else 7
+        return self._levels[key]
+
+    # -- layout -------------------------------------------------------------------------------
+    def compose_content(self) -> ComposeResult:
+        """One window: the table of the view on display."""
+        yield Static("", id="param-table", markup=False)
+
+    def on_mount(self) -> None:
+        """Show the first view."""
+        super().on_mount()
+        self.refresh_table()
+
+    def on_resize(self) -> None:
+        """The table fills the window: draw it again for the new height."""
+        self.call_after_refresh(self.refresh_table)
+
+    # -- softkeys -------------------------------------------------------------------------------
+    def softkey_menu(self) -> SoftkeyMenu:
+        """Views on the horizontal keys, the view's own keys on the vertical ones."""
+        def view_key(key_id: str, label: str, view: str, views: tuple[str, ...] = ()) -> Softkey:
+            shown = views or (view,)
+            return Softkey(key_id, label, f"show_view('{view}')", active=lambda s: s.view in shown)
+
+        horizontal = [
+            view_key("param.tools", "Tool\nlist", "tools"),
+            view_key("param.wear", "Tool\nwear", "wear"),
+            view_key("param.wo", "Work\noffset", "wo_overview", ("wo_active", "wo_overview", "wo_details")),
+            view_key("param.r", "R\nvariables", "r"),
+            view_key("param.gud", "User\nvariables", "gud"),
+            view_key("param.sd", "Setting\ndata", "sd"),
+        ]
+        return SoftkeyMenu.of(horizontal, self._vertical_keys())
+
+    def _vertical_keys(self) -> list[Softkey | None]:
+        edit = Softkey("param.edit", "Edit\n(Enter)", "edit")
+        if self.view == "tools":
+            tool_level = self.level_of("$TC_DP1[1,1]")
+            has_row = lambda s: s.selected_tool() is not None  # noqa: E731
+            return [
+                Softkey("param.tool.new", "New\ntool", "new_tool", level=tool_level),
+                Softkey("param.tool.edge", "New\nedge", "new_edge", level=tool_level, enabled=has_row),
+                Softkey("param.tool.del_edge", "Delete\nedge", "delete_tool(True)", level=tool_level,
+                        enabled=has_row),
+                Softkey("param.tool.del", "Delete\ntool", "delete_tool(False)", level=tool_level,
+                        enabled=has_row),
+                Softkey("param.tool.search", "Search", "search_tool"),
+                None, None, edit,
+            ]
+        if self.view.startswith("wo_"):
+            return [
+                Softkey("param.wo.active", "Active", "show_view('wo_active')",
+                        active=lambda s: s.view == "wo_active"),
+                Softkey("param.wo.overview", "Overview", "show_view('wo_overview')",
+                        active=lambda s: s.view == "wo_overview"),
+                Softkey("param.wo.details", "Details", "frame_details",
+                        active=lambda s: s.view == "wo_details"),
+                None, None, None, None, edit,
+            ]
+        if self.view == "r":
+            clear_level = getattr(self.kernel, "access", None)
+            level = 7
+            if clear_level is not None:
+                from nck.access import Action
+
+                level = clear_level.required(Action.CLEAR_R_PARAMETERS)
+            return [Softkey("param.r.clear", "Clear\nall", "clear_r", level=level),
+                    None, None, None, None, None, None, edit]
+        return [None] * 7 + [edit]
+
+    def menu_recall(self) -> bool:
+        """F10: from the frame details back to the overview, else the softkey level."""
+        if self.pop_softkeys():
+            return True
+        if self.view == "wo_details":
+            self.action_show_view("wo_overview")
+            return True
+        return False
+
+    # -- actions ---------------------------------------------------------------------------------
+    def action_show_view(self, view: str) -> None:
+        """Show ``view``."""
+        self.view = view
+        self.refresh_table()
+        self.refresh_softkeys()
+
+    def action_frame_details(self) -> None:
+        """Details of the frame selected in the overview (toggles back from the details)."""
+        if self.view == "wo_details":
+            self.action_show_view("wo_overview")
+            return
+        if self.view == "wo_overview":
+            row = self.cursors["wo_overview"].row
+            frames = ["BASE"] + frame_names(self.kernel)
+            self.detail_frame = frames[max(0, min(row, len(frames) - 1))]
+        self.cursors["wo_details"] = TableCursor()
+        self.action_show_view("wo_details")
+
+    def action_cursor(self, rows: int, columns: int) -> None:
+        """Arrow keys: move the selected cell."""
+        if self.table is None:
+            return
+        self.cursors[self.view].move(self.table, int(rows), int(columns))
+        self.refresh_table()
+        self.refresh_softkeys()
+
+    def action_edit(self) -> None:
+        """Enter / Edit: an input field for the selected value."""
+        if self.table is None:
+            return
+        cursor = self.cursors[self.view]
+        cell = self.table.cell(cursor.row, cursor.column)
+        if cell is None or not cell.name:
+            self.show_hint("This value cannot be changed here")
+            return
+        if self.access_level > cell.level:
+            self.show_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
+            return
+        name = cell.name
+
+        def write(text: str | None) -> None:
+            if text is not None:
+                self.write(name, text.strip())
+
+        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint), write)
+
+    def write(self, name: str, value: object) -> bool:
+        """Send one ``WriteData``; True when the kernel took it."""
+        result = self.submit(cmd.WriteData(name, value))
+        self.refresh_table()
+        if isinstance(result, Accepted):
+            self.show_hint(f"{name} = {value}")
+            return True
+        return False
+
+    # tools
+    def selected_tool(self) -> tuple[int, int] | None:
+        """(T, D) of the selected row of the tool list, or None."""
+        tools = sorted(self.kernel.data.tools)
+        row = self.cursors[self.view if self.view in ("tools", "wear") else "tools"].row
+        return tools[row] if 0 <= row < len(tools) else None
+
+    def action_new_tool(self) -> None:
+        """New tool: ask for the T number and the tool type; creates edge D1."""
+        def create(text: str | None) -> None:
+            if not text:
+                return
+            parts = text.replace(",", " ").split()
+            try:
+                tool = int(parts[0])
+                kind = int(parts[1]) if len(parts) > 1 else DEFAULT_TOOL_TYPE
+            except ValueError:
+                self.show_hint("New tool: give the T number and optionally the type, e.g. 12 120")
+                return
+            if any(t == tool for t, _ in self.kernel.data.tools):
+                self.show_hint(f"T{tool} exists already")
+                return
+            if self.write(f"$TC_DP1[{tool},1]", kind):
+                self._select_tool(tool, 1)
+
+        self.app.push_screen(ValueDialog("New tool: T number and type", "",
+                                         "e.g. 12 120  (120 end mill, 200 twist drill, 500 roughing tool)"),
+                             create)
+
+    def action_new_edge(self) -> None:
+        """New edge: the next free D of the selected tool, with the tool's type."""
+        selected = self.selected_tool()
+        if selected is None:
+            return
+        tool = selected[0]
+        edges = [d for t, d in self.kernel.data.tools if t == tool]
+        edge = max(edges) + 1
+        kind = self.kernel.data.tools[(tool, 1 if 1 in edges else edges[0])].get(1)
+        if self.write(f"$TC_DP1[{tool},{edge}]", int(kind)):
+            self._select_tool(tool, edge)
+
+    def action_delete_tool(self, edge_only: bool) -> None:
+        """Delete the selected edge (or the whole tool) after asking."""
+        selected = self.selected_tool()
+        if selected is None:
+            return
+        tool, edge = selected
+        what = f"T{tool} D{edge}" if edge_only else f"tool T{tool} with all its edges"
+
+        def delete(yes: bool | None) -> None:
+            if yes:
+                result = self.submit(cmd.DeleteToolEdge(tool, edge if edge_only else None))
+                if isinstance(result, Accepted):
+                    self.show_hint(f"Deleted {what}")
+                self.refresh_table()
+
+        self.app.push_screen(ConfirmDialog(f"Delete {what}?"), delete)
+
+    def action_search_tool(self) -> None:
+        """Search: put the cursor on the first edge of a T number."""
+        def find(text: str | None) -> None:
+            if text:
+                try:
+                    tool = int(text.strip().lstrip("Tt"))
+                except ValueError:
+                    self.show_hint("Search: give a T number")
+                    return
+                if not self._select_tool(tool, None):
+                    self.show_hint(f"T{tool} not found")
+
+        self.app.push_screen(ValueDialog("Search tool: T number"), find)
+
+    def _select_tool(self, tool: int, edge: int | None) -> bool:
+        keys = sorted(self.kernel.data.tools)
+        for index, (t, d) in enumerate(keys):
+            if t == tool and (edge is None or d == edge):
+                self.cursors[self.view].row = index
+                self.refresh_table()
+                return True
+        return False
+
+    # R parameters
+    def action_clear_r(self) -> None:
+        """Clear all R parameters, after asking."""
+        def clear(yes: bool | None) -> None:
+            if yes:
+                if isinstance(self.submit(cmd.ClearRParameters()), Accepted):
+                    self.show_hint("All R parameters are 0")
+                self.refresh_table()
+
+        self.app.push_screen(ConfirmDialog(f"Set all {len(self.kernel.data.r)} R parameters to 0?"), clear)
+
+    # -- display -----------------------------------------------------------------------------------
+    def update_status(self, status: NckStatus) -> None:
+        """A new snapshot: redraw the view (programs change R parameters and tools too)."""
+        self.refresh_table()
+
+    def build_table(self) -> DataTable:
+        """The table of the view on display."""
+        kernel, status, levels = self.kernel, self.status, self.level_of
+        builders: dict[str, Callable[[], DataTable]] = {
+            "tools": lambda: tool_table(kernel, status, levels),
+            "wear": lambda: tool_table(kernel, status, levels, wear=True),
+            "wo_active": lambda: active_chain_table(kernel, status),
+            "wo_overview": lambda: overview_table(kernel, status, levels),
+            "wo_details": lambda: details_table(kernel, self.detail_frame, levels),
+            "r": lambda: r_table(kernel, levels),
+            "gud": lambda: gud_table(kernel, levels),
+            "sd": lambda: setting_table(kernel, levels),
+        }
+        return builders[self.view]()
+
+    def refresh_table(self) -> None:
+        """Rebuild and draw the table of the view on display."""
+        if not self.is_mounted:
+            return
+        self.table = self.build_table()
+        widget = self.query_one("#param-table", Static)
+        height = widget.size.height or TABLE_HEIGHT
+        show_text(widget, render_table(self.table, self.cursors[self.view], height, self.access_level,
+                                       show_cursor=self.view != "wo_active"))
+
+
+AreaScreen = ParameterScreen

@@ -1,0 +1,222 @@
+"""Editable data tables of the Parameter and Setup areas, and their input dialogs.
+
+A :class:`DataTable` is a list of rows of :class:`Cell` s; a cell that names a
+datum (``R10``, ``$TC_DP3[1,1]``, ``MD32000[X]`` …) can be edited: the area
+opens a :class:`ValueDialog` and sends ``WriteData`` to the kernel, which checks
+the access level and the limits. :class:`TableCursor` keeps the selected row
+and column and the first row on display; :func:`render_table` draws a table as
+fixed-width text with the selected cell in inverse video and data the current
+access level may not write dimmed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.screen import ModalScreen
+from textual.widgets import Input, Static
+
+
+EDIT_BINDINGS = [  # the keys of an editable table (screen bindings)
+    Binding("up", "cursor(-1, 0)", "Up", show=False),
+    Binding("down", "cursor(1, 0)", "Down", show=False),
+    Binding("left", "cursor(0, -1)", "Left", show=False),
+    Binding("right", "cursor(0, 1)", "Right", show=False),
+    Binding("pageup", "cursor(-20, 0)", "Page up", show=False),
+    Binding("pagedown", "cursor(20, 0)", "Page down", show=False),
+    Binding("enter", "edit", "Edit", show=False),
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Column:
+    """A table column: heading, width in characters, alignment (``<`` or ``>``)."""
+
+    title: str
+    width: int
+    align: str = ">"
+
+
+@dataclass(frozen=True, slots=True)
+class Cell:
+    """One table cell; ``name`` is the datum it shows when it can be edited.
+
+    ``edit_text`` is what the input field starts with; ``level`` the access
+    level needed to write it (7 = everybody); ``hint`` a line about the value
+    (unit, limits, activation) for the edit dialog.
+    """
+
+    text: str
+    name: str | None = None
+    edit_text: str = ""
+    level: int = 7
+    hint: str = ""
+
+
+@dataclass(slots=True)
+class DataTable:
+    """Rows of cells under column headings, with a title line and a note below."""
+
+    title: str
+    columns: list[Column]
+    rows: list[list[Cell]] = field(default_factory=list)
+    note: str = ""
+
+    def editable_columns(self) -> list[int]:
+        """Indices of the columns that hold at least one editable cell."""
+        return [i for i in range(len(self.columns))
+                if any(i < len(row) and row[i].name for row in self.rows)]
+
+    def cell(self, row: int, column: int) -> Cell | None:
+        """The cell at ``row``/``column`` (None outside the table)."""
+        if 0 <= row < len(self.rows) and 0 <= column < len(self.rows[row]):
+            return self.rows[row][column]
+        return None
+
+
+@dataclass(slots=True)
+class TableCursor:
+    """Selected row and column of a table, and its first row on display."""
+
+    row: int = 0
+    column: int = -1
+    top: int = 0
+
+    def clamp(self, table: DataTable, height: int) -> None:
+        """Keep the cursor inside ``table`` and on display in ``height`` rows."""
+        self.row = max(0, min(self.row, len(table.rows) - 1))
+        editable = table.editable_columns()
+        if editable and self.column not in editable:
+            later = [c for c in editable if c >= self.column]
+            self.column = later[0] if later else editable[-1]
+        height = max(height, 1)
+        if self.row < self.top:
+            self.top = self.row
+        elif self.row >= self.top + height:
+            self.top = self.row - height + 1
+        self.top = max(0, min(self.top, max(len(table.rows) - height, 0)))
+
+    def move(self, table: DataTable, rows: int = 0, columns: int = 0) -> None:
+        """Move by ``rows`` and, among the editable columns, by ``columns``."""
+        self.row += rows
+        editable = table.editable_columns()
+        if columns and editable:
+            index = editable.index(self.column) if self.column in editable else 0
+            self.column = editable[max(0, min(index + columns, len(editable) - 1))]
+
+
+def _fit(text: str, width: int, align: str) -> str:
+    if len(text) > width:
+        text = text[: max(width - 1, 0)] + "…"
+    return text.rjust(width) if align == ">" else text.ljust(width)
+
+
+def render_table(table: DataTable, cursor: TableCursor, height: int, level: int,
+                 show_cursor: bool = True) -> Text:
+    """Draw ``table`` in ``height`` lines (title, heading, rows, note)."""
+    text = Text(no_wrap=True, end="")
+    text.append(f" {table.title}\n", style="bold")
+    heading = " ".join(_fit(c.title, c.width, c.align) for c in table.columns)
+    text.append(f" {heading}\n", style="bold underline")
+    body = max(height - 3, 1)
+    cursor.clamp(table, body)
+    shown = table.rows[cursor.top: cursor.top + body]
+    for offset, row in enumerate(shown):
+        index = cursor.top + offset
+        text.append(" ")
+        for position, (column, cell) in enumerate(zip(table.columns, row)):
+            style = ""
+            if cell.name and level > cell.level:
+                style = "dim"
+            if show_cursor and index == cursor.row and (position == cursor.column or (
+                    cursor.column < 0 and position == 0)):
+                style = "reverse"
+            elif show_cursor and index == cursor.row:
+                style = (style + " bold").strip()
+            text.append(_fit(cell.text, column.width, column.align), style=style)
+            text.append(" ")
+        text.append("\n")
+    if not table.rows:
+        text.append(" (no entries)\n", style="dim")
+    for _ in range(body - max(len(shown), 1)):
+        text.append("\n")
+    more = ""
+    if len(table.rows) > body:
+        more = f"  rows {cursor.top + 1}–{cursor.top + len(shown)} of {len(table.rows)}"
+    text.append(f" {table.note}{more}", style="dim")
+    return text
+
+
+class ValueDialog(ModalScreen[str | None]):
+    """Enter a value (or a password): Enter confirms, F10 or Esc cancels."""
+
+    DEFAULT_CSS = """
+    ValueDialog { align: center middle; }
+    #value-box { width: 72; height: auto; background: $surface; border: thick $primary; padding: 0 1; }
+    #value-title { height: 1; background: $panel; color: $primary; text-style: bold; }
+    #value-hint, #value-keys { height: auto; color: $secondary; }
+    """
+    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
+
+    def __init__(self, title: str, value: str = "", hint: str = "", password: bool = False) -> None:
+        super().__init__(classes="value-dialog")
+        self._title = title
+        self._value = value
+        self._hint = hint
+        self._password = password
+
+    def compose(self) -> ComposeResult:
+        """Title, hint, input field, keys."""
+        with Vertical(id="value-box"):
+            yield Static(self._title, id="value-title", markup=False)
+            if self._hint:
+                yield Static(self._hint, id="value-hint", markup=False)
+            yield Input(self._value, password=self._password, id="value-input")
+            yield Static("Enter confirm   F10 / Esc cancel", id="value-keys")
+
+    def on_mount(self) -> None:
+        """Focus the field; no blinking cursor (stable screenshots)."""
+        field_ = self.query_one(Input)
+        field_.cursor_blink = False
+        field_.focus()
+
+    def on_input_submitted(self, message: Input.Submitted) -> None:
+        """Enter: return the text."""
+        message.stop()
+        self.dismiss(message.value)
+
+    def action_cancel(self) -> None:
+        """Close without a value."""
+        self.dismiss(None)
+
+
+class ConfirmDialog(ModalScreen[bool]):
+    """A yes/no question: ``Y`` or Enter confirms, ``N``, F10 or Esc cancels."""
+
+    DEFAULT_CSS = """
+    ConfirmDialog { align: center middle; }
+    #confirm-box { width: 64; height: auto; background: $surface; border: thick $warning; padding: 0 1; }
+    #confirm-keys { color: $secondary; }
+    """
+    BINDINGS = [
+        Binding("y,enter", "answer(True)", "Yes", show=False),
+        Binding("n,escape", "answer(False)", "No", show=False),
+    ]
+
+    def __init__(self, question: str) -> None:
+        super().__init__(classes="confirm-dialog")
+        self._question = question
+
+    def compose(self) -> ComposeResult:
+        """The question and the keys."""
+        with Vertical(id="confirm-box"):
+            yield Static(self._question, id="confirm-question", markup=False)
+            yield Static("Y / Enter: yes     N / F10 / Esc: no", id="confirm-keys")
+
+    def action_answer(self, yes: bool) -> None:
+        """Close with the answer."""
+        self.dismiss(bool(yes))

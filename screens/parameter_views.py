@@ -1,0 +1,277 @@
+"""The tables of the Parameter area, built from the kernel's NC data (read-only).
+
+Each ``*_table`` function returns a :class:`~screens.parameter_tables.DataTable`
+whose editable cells name the datum for ``WriteData``: ``$TC_DP<n>[t,d]``,
+``$P_UIFR[n,axis,comp]``, ``$P_UBFR[axis,comp]``, ``R<n>``, ``GUD:<name>``,
+``SD…``. ``levels(name)`` returns the access level a write needs (from the
+kernel), so cells the operator may not change are shown dimmed.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from nck.status import NckStatus
+
+from screens.parameter_tables import Cell, Column, DataTable
+
+LevelOf = Callable[[str], int]
+
+TOOL_TYPES = {
+    100: "Milling tool", 110: "Ball end mill", 111: "Ball end mill (conical)", 120: "End mill",
+    121: "End mill with corner rounding", 130: "Angle head cutter", 140: "Face mill",
+    145: "Thread cutter", 150: "Side mill", 155: "Bevel cutter", 200: "Twist drill",
+    205: "Solid drill", 210: "Boring bar", 220: "Centre drill", 230: "Countersink",
+    231: "Counterbore", 240: "Tap", 250: "Reamer", 500: "Roughing tool", 510: "Finishing tool",
+    520: "Plunge cutter", 530: "Parting tool", 540: "Threading tool", 550: "Button tool",
+    560: "Rotary drill", 580: "3D turning tool", 700: "Slotting saw", 710: "3D probe",
+    711: "Edge probe", 725: "Calibrating tool", 730: "Stop", 900: "Auxiliary tool",
+}
+TOOL_GEOMETRY = ((1, "Type", 6), (3, "Length 1", 10), (4, "Length 2", 10), (5, "Length 3", 10),
+                 (6, "Radius", 10), (2, "Pos", 4))
+TOOL_WEAR = ((12, "ΔLength 1", 11), (13, "ΔLength 2", 11), (14, "ΔLength 3", 11), (15, "ΔRadius", 11))
+FRAME_COMPONENTS = (("TR", "Translation"), ("FI", "Fine"), ("RT", "Rotation"), ("SC", "Scale"),
+                    ("MI", "Mirror"))
+SETTING_DATA = (
+    ("JOG", "SD41110", None), ("JOG", "SD41010", None), ("JOG", "SD41200", None),
+    ("Spindle", "SD43210", "spindle"), ("Spindle", "SD43220", "spindle"),
+    ("Spindle", "SD43230", "spindle"),
+    ("Work area", "SD43400", "linear"), ("Work area", "SD43420", "linear"),
+    ("Work area", "SD43410", "linear"), ("Work area", "SD43430", "linear"),
+    ("Dry run", "SD42100", None), ("Dry run", "SD42101", None),
+)
+
+
+def number_text(value: float, places: int = 3) -> str:
+    """A value as the lists show it (fixed decimals, no ``-0.000``)."""
+    text = f"{float(value):.{places}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
+def edit_text(value: Any) -> str:
+    """The start text of an input field for ``value``."""
+    if isinstance(value, bool):
+        return "TRUE" if value else "FALSE"
+    if isinstance(value, float):
+        return f"{value:.6f}".rstrip("0").rstrip(".") or "0"
+    return str(value)
+
+
+def _datum(name: str, text: str, value: Any, levels: LevelOf, hint: str = "") -> Cell:
+    return Cell(text, name, edit_text(value), levels(name), hint)
+
+
+def path_axes(nck: Any) -> list[str]:
+    """Names of the machine's linear and rotary axes (no spindles)."""
+    return [a.name for a in nck.machine.axes if a.kind != "spindle"]
+
+
+def tool_table(nck: Any, status: NckStatus | None, levels: LevelOf, wear: bool = False) -> DataTable:
+    """The tool list (geometry) or tool wear list: one row per cutting edge."""
+    fields = TOOL_WEAR if wear else TOOL_GEOMETRY
+    columns = [Column("", 1, "<"), Column("T", 6), Column("D", 3), Column("Tool type", 18, "<")]
+    columns += [Column(title, width) for _, title, width in fields]
+    active = (status.channel.modal.tool, status.channel.modal.edge) if status is not None else (0, 0)
+    rows = []
+    for (tool, edge), data in sorted(nck.data.tools.items()):
+        kind = int(data.get(1))
+        row = [Cell("▶" if (tool, edge) == active else ""), Cell(str(tool)), Cell(str(edge)),
+               Cell(TOOL_TYPES.get(kind, f"type {kind}" if kind else "—"))]
+        for param, title, _ in fields:
+            value = data.get(param)
+            shown = str(int(value)) if param in (1, 2) else number_text(value)
+            unit = "" if param in (1, 2) else " mm"
+            row.append(_datum(f"$TC_DP{param}[{tool},{edge}]", shown, value, levels,
+                              f"T{tool} D{edge} {title}{unit}"))
+        rows.append(row)
+    if wear:
+        title = "Tool wear  (ΔLength / ΔRadius are added to the geometry values)"
+    else:
+        title = "Tool list  (lengths and radius in mm; Pos = cutting edge position)"
+    note = "↑↓←→ select   Enter edit" + ("" if wear else "   ▶ active tool/edge")
+    return DataTable(title, columns, rows, note)
+
+
+def frame_names(nck: Any) -> list[str]:
+    """The settable frames in the NC data: G54…G57, then G505… in order."""
+    def order(name: str) -> int:
+        number = int(name[1:])
+        return number if number < 100 else number - 400
+    return sorted(nck.data.settable_frames, key=order)
+
+
+def frame_index(name: str) -> int:
+    """``$P_UIFR`` index of a settable frame name (G54 → 1, G505 → 5)."""
+    number = int(name[1:])
+    return number - 53 if 54 <= number <= 57 else number - 500
+
+
+def frame_var(frame: str, axis: str, comp: str) -> str:
+    """The ``WriteData`` name of one frame component (``BASE`` = base frame)."""
+    if frame == "BASE":
+        return f"$P_UBFR[{axis},{comp}]"
+    return f"$P_UIFR[{frame_index(frame)},{axis},{comp}]"
+
+
+def _offset(nck: Any, frame: str) -> Any:
+    return nck.data.base_frame if frame == "BASE" else nck.data.settable_frames.get(frame)
+
+
+def overview_table(nck: Any, status: NckStatus | None, levels: LevelOf) -> DataTable:
+    """Work offsets: base frame and every settable frame, translation and rotation per axis."""
+    axes = path_axes(nck)
+    geometry = [a for a in axes if a in ("X", "Y", "Z")]
+    columns = [Column("", 1, "<"), Column("Work offset", 12, "<")]
+    columns += [Column(f"{a} [mm]", 11) for a in axes]
+    columns += [Column(f"Rot {a} [°]", 10) for a in geometry]
+    active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
+    rows = []
+    for frame in ["BASE"] + frame_names(nck):
+        offset = _offset(nck, frame)
+        label = "Base frame" if frame == "BASE" else frame
+        row = [Cell("▶" if frame == active else ""), Cell(label)]
+        for axis in axes:
+            value = float(offset.trans.get(axis, 0.0))
+            row.append(_datum(frame_var(frame, axis, "TR"), number_text(value), value, levels,
+                              f"{label} {axis} translation in mm (active at the next selection of the frame)"))
+        for axis in geometry:
+            value = float(offset.rot.get(axis, 0.0))
+            row.append(_datum(frame_var(frame, axis, "RT"), number_text(value), value, levels,
+                              f"{label} rotation about {axis} in degrees (-360 … 360)"))
+        rows.append(row)
+    return DataTable("Work offsets — overview  (changes take effect when the frame is next selected)",
+                     columns, rows, "↑↓←→ select   Enter edit   Details: all components of the frame")
+
+
+def details_table(nck: Any, frame: str, levels: LevelOf) -> DataTable:
+    """One frame in full: translation, fine offset, rotation, scale and mirror per axis."""
+    label = "Base frame" if frame == "BASE" else frame
+    offset = _offset(nck, frame)
+    columns = [Column("Axis", 6, "<"), Column("Translation", 12), Column("Fine", 10),
+               Column("Rotation [°]", 13), Column("Scale", 9), Column("Mirror", 7)]
+    rows = []
+    for axis in path_axes(nck):
+        row = [Cell(axis)]
+        for comp, title in FRAME_COMPONENTS:
+            if comp == "MI":
+                value: Any = bool(offset.mirror.get(axis, False))
+                row.append(Cell("yes" if value else "no", frame_var(frame, axis, comp),
+                                "1" if value else "0", levels(frame_var(frame, axis, comp)),
+                                f"{label} {axis} mirror: 1 on, 0 off"))
+                continue
+            table = {"TR": offset.trans, "FI": offset.fine, "RT": offset.rot, "SC": offset.scale}[comp]
+            value = float(table.get(axis, 1.0 if comp == "SC" else 0.0))
+            places = 5 if comp == "SC" else 3
+            row.append(_datum(frame_var(frame, axis, comp), number_text(value, places), value, levels,
+                              f"{label} {axis} {title.lower()}"))
+        rows.append(row)
+    return DataTable(f"Work offset {label} — details", columns, rows,
+                     "Enter edit   Details again / F10: back to the overview")
+
+
+def active_chain_table(nck: Any, status: NckStatus | None) -> DataTable:
+    """The active frame chain: base frame, active settable frame, and the total offset."""
+    axes = path_axes(nck)
+    columns = [Column("Frame", 30, "<")] + [Column(f"{a} [mm]", 11) for a in axes]
+    active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
+    rows = []
+    base = nck.data.base_frame
+    rows.append([Cell("Base frame")] + [Cell(number_text(base.trans.get(a, 0.0))) for a in axes])
+    settable = nck.data.settable_frames.get(active) if active != "G500" else None
+    label = f"Settable frame {active}" + ("" if settable is not None else " (zero)")
+    rows.append([Cell(label)] + [
+        Cell(number_text((settable.trans.get(a, 0.0) + settable.fine.get(a, 0.0)) if settable else 0.0))
+        for a in axes])
+    rows.append([Cell("Programmable frame")] + [Cell("(program)") for _ in axes])
+    if status is not None:
+        by_name = {a.name: a for a in status.axes}
+        rows.append([Cell("Total (MCS − WCS, with tool)")] + [
+            Cell(number_text(by_name[a].position_mcs - by_name[a].position_wcs) if a in by_name else "")
+            for a in axes])
+    return DataTable(f"Active work offset chain  (active settable frame: {active})", columns, rows,
+                     "Rotations, scale and mirror: see Overview / Details")
+
+
+def r_table(nck: Any, levels: LevelOf) -> DataTable:
+    """The R parameters with their values."""
+    columns = [Column("R parameter", 12, "<"), Column("Value", 20)]
+    rows = []
+    for index, value in enumerate(nck.data.r):
+        rows.append([Cell(f"R{index}"), _datum(f"R{index}", number_text(value, 5), value, levels,
+                                               f"R{index} (REAL)")])
+    return DataTable("R variables", columns, rows,
+                     "Enter edit   Clear all: every R parameter to 0 (asks first)")
+
+
+def _type_name(value: Any) -> str:
+    if isinstance(value, bool):
+        return "BOOL"
+    if isinstance(value, int):
+        return "INT"
+    if isinstance(value, float):
+        return "REAL"
+    if isinstance(value, str):
+        return "STRING"
+    return type(value).__name__.upper()
+
+
+def _value_text(value: Any) -> str:
+    if isinstance(value, bool):
+        return "TRUE" if value else "FALSE"
+    if isinstance(value, float):
+        return number_text(value, 5)
+    return str(value)
+
+
+def gud_table(nck: Any, levels: LevelOf) -> DataTable:
+    """The global user variables (GUD) with their types; arrays one row per element."""
+    columns = [Column("Name", 24, "<"), Column("Type", 12, "<"), Column("Value", 24)]
+    rows = []
+    for name, value in sorted(nck.data.gud.items()):
+        if isinstance(value, list):
+            for index, item in enumerate(value):
+                rows.append([Cell(f"{name}[{index}]"), Cell(f"{_type_name(item)}[{len(value)}]"),
+                             _datum(f"GUD:{name}[{index}]", _value_text(item), item, levels,
+                                    f"{name}[{index}] ({_type_name(item)})")])
+        else:
+            rows.append([Cell(name), Cell(_type_name(value)),
+                         _datum(f"GUD:{name}", _value_text(value), value, levels,
+                                f"{name} ({_type_name(value)})")])
+    return DataTable("User variables — global user data (GUD, defined with DEF NCK/CHAN)",
+                     columns, rows, "Enter edit   Local user data (LUD) exist only while their program runs")
+
+
+def setting_table(nck: Any, levels: LevelOf) -> DataTable:
+    """Setting data: JOG, spindle limits, working area limits with enables, dry run."""
+    store = nck.machine_data
+    columns = [Column("Group", 10, "<"), Column("Number", 8, "<"), Column("Name", 30, "<"),
+               Column("Axis", 5, "<"), Column("Value", 14), Column("Unit", 8, "<")]
+    spindles = [a.name for a in nck.machine.axes if a.kind == "spindle"]
+    linear = [a.name for a in nck.machine.axes if a.kind == "linear"]
+    rows = []
+    for group, key, axes_kind in SETTING_DATA:
+        definition = store.catalog.get(key)
+        if definition is None:
+            continue
+        targets: list[str | None] = [None]
+        if axes_kind == "spindle":
+            targets = list(spindles)
+        elif axes_kind == "linear":
+            targets = list(linear)
+        for axis in targets:
+            name = f"{key}[{axis}]" if axis else key
+            value = store.value(name)
+            if definition.type == "bool":
+                shown = "on" if value else "off"
+            elif definition.type == "real":
+                shown = number_text(value)
+            else:
+                shown = str(value)
+            limits = ""
+            if definition.min is not None and definition.max is not None:
+                limits = f", {definition.min:g} … {definition.max:g}"
+            hint = f"{definition.identifier}: {definition.title} ({definition.unit or definition.type}{limits})"
+            rows.append([Cell(group), Cell(key), Cell(definition.name), Cell(axis or ""),
+                         _datum(name, shown, value, levels, hint), Cell(definition.unit)])
+    return DataTable("Setting data  (take effect at once)", columns, rows,
+                     "Enter edit   Work area limits act when their enable is on (G25/G26, WALIMON)")

@@ -1,0 +1,368 @@
+"""The Setup area: machine data lists, NEW CONFIG and Reset (po), passwords, access level, control time.
+
+Machine data lists (horizontal softkeys): general (1xxxx), channel (2xxxx),
+axis (3xxxx; ``Axis +`` / ``Axis −``), display (9xxx): number, identifier,
+value, unit, activation (po / re / cf / so), the level a write needs, and ``*``
+for a stored value that is not active yet. ``Search`` filters by number or
+name. Enter edits the selected value through ``WriteData`` (the kernel checks
+level, type and limits). ``Set MD active (cf)`` sends ``ActivateMachineData``;
+``Reset (po)`` restarts the simulated NCK from the retained data so that
+power-on data take effect. The ``Password`` view shows the access level and
+offers set / change / delete password, and the date and time of the control.
+"""
+
+from __future__ import annotations
+
+from datetime import datetime, timedelta
+from typing import Any, Callable, ClassVar
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.widgets import Input, Static
+
+from nck import commands as cmd
+from nck.commands import Accepted
+from nck.status import NckStatus
+
+from hmi.area import AreaBase, show_text
+from hmi.softkeys import Softkey, SoftkeyMenu
+from screens.parameter_tables import (
+    EDIT_BINDINGS, Cell, Column, ConfirmDialog, DataTable, TableCursor, ValueDialog, render_table,
+)
+
+MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",
+            "axis": "Axis machine data", "display": "Display machine data"}
+ACTIVATION_TEXT = {"so": "immediately", "re": "at RESET", "cf": "at NEW CONFIG (Set MD active) or RESET",
+                   "po": "at POWER ON (Reset (po))"}
+LEVEL_NAMES = {0: "System", 1: "Manufacturer", 2: "Service", 3: "User"}
+TABLE_HEIGHT = 34
+
+wall_clock: Callable[[], datetime] = datetime.now
+"""The computer's clock: the control's date at power on (tests replace it)."""
+
+
+def level_text(level: int) -> str:
+    """``"3 — User (password)"``, ``"7 — keyswitch position 0"``."""
+    if level in LEVEL_NAMES:
+        how = "password" if level else "system"
+        return f"{level} — {LEVEL_NAMES[level]} ({how})"
+    return f"{level} — keyswitch position {7 - level}"
+
+
+def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) -> DataTable:
+    """One machine-data list as an editable table."""
+    columns = [Column("Number", 7, "<"), Column("Name", 30, "<"), Column("Value", 30),
+               Column("Unit", 8, "<"), Column("Act", 3, "<"), Column("Lvl", 3), Column("", 1, "<")]
+    rows = []
+    for row in store.rows("md", scope, axis=axis, search=search or None, level=level):
+        d = row.ref.definition
+        if d.array:
+            hint = (f"{d.identifier}: {d.title}. Array of {d.array}: give index and value, e.g. 0 5 "
+                    f"(takes effect {ACTIVATION_TEXT[d.activation]})")
+            edit = "0 "
+        else:
+            edit = row.value_text if d.type != "bool" else ("1" if store.value(row.ref) else "0")
+            limits = f", {d.min:g} … {d.max:g}" if d.min is not None and d.max is not None else ""
+            hint = (f"{d.identifier}: {d.title} ({d.unit or d.type}{limits}); takes effect "
+                    f"{ACTIVATION_TEXT[d.activation]}")
+        rows.append([Cell(str(d.number)), Cell(d.name),
+                     Cell(row.value_text, row.ref.text, edit, row.write_level, hint),
+                     Cell(row.unit), Cell(row.activation), Cell(str(row.write_level)),
+                     Cell("*" if row.pending else "")])
+    title = MD_VIEWS[scope] + (f" — axis {axis}" if axis else "")
+    if search:
+        title += f"  (search: {search})"
+    return DataTable(title, columns, rows,
+                     "Enter edit   * stored, not active yet   Act: po power on, re reset, cf new config, so at once")
+
+
+class SetupScreen(AreaBase):
+    """The Setup operating area."""
+
+    AREA_ID: ClassVar[str] = "setup"
+    AREA_TITLE: ClassVar[str] = "SETUP"
+    CSS_PATH = "setup.tcss"
+    BINDINGS = EDIT_BINDINGS
+    AUTO_FOCUS = ""  # the arrow keys move in the list until Search puts the cursor in the field
+
+    def __init__(self) -> None:
+        super().__init__(id="area-setup")
+        self.view = "general"
+        self.axis_index = 0
+        self.search = ""
+        self.cursors = {view: TableCursor() for view in MD_VIEWS}
+        self.table: DataTable | None = None
+        self.power_on_at = wall_clock()
+
+    @property
+    def kernel(self) -> Any:
+        """The kernel behind the bridge (read-only accessors; writes are commands)."""
+        return self.hmi.bridge.nck
+
+    @property
+    def axis(self) -> str:
+        """The axis whose axis machine data are listed."""
+        names = [a.name for a in self.kernel.machine.axes]
+        return names[self.axis_index % len(names)]
+
+    # -- layout -------------------------------------------------------------------------------
+    def compose_content(self) -> ComposeResult:
+        """Search field and MD table, or the access window."""
+        yield Input(placeholder="search by number or name, Enter applies (empty: all)", id="md-search")
+        yield Static("", id="setup-table", markup=False)
+        yield Static("", id="setup-access", markup=False)
+
+    def on_mount(self) -> None:
+        """No blinking cursor; show the first list."""
+        self.query_one("#md-search", Input).cursor_blink = False
+        super().on_mount()
+        self.action_show_view(self.view)
+
+    def on_resize(self) -> None:
+        """Draw the table again for the new height."""
+        self.call_after_refresh(self.refresh_view)
+
+    # -- softkeys ---------------------------------------------------------------------------------
+    def softkey_menu(self) -> SoftkeyMenu:
+        """Lists and the password view on the horizontal keys, their own keys on the vertical ones."""
+        def view_key(key_id: str, label: str, view: str) -> Softkey:
+            return Softkey(key_id, label, f"show_view('{view}')", active=lambda s: s.view == view)
+
+        horizontal = [
+            view_key("setup.general", "General\nMD", "general"),
+            view_key("setup.channel", "Channel\nMD", "channel"),
+            view_key("setup.axis", "Axis\nMD", "axis"),
+            view_key("setup.display", "Display\nMD", "display"),
+            None,
+            view_key("setup.password", "Password", "password"),
+            Softkey("setup.new_config", "Set MD\nactive (cf)", "new_config",
+                    enabled=lambda s: s.status is not None and s.status.channel.channel_state == "reset"),
+            Softkey("setup.power_on", "Reset\n(po)", "power_on"),
+        ]
+        return SoftkeyMenu.of(horizontal, self._vertical_keys())
+
+    def _vertical_keys(self) -> list[Softkey | None]:
+        if self.view == "password":
+            return [
+                Softkey("setup.pw.set", "Set\npassword", "set_password"),
+                Softkey("setup.pw.change", "Change\npassword", "change_password", level=3),
+                Softkey("setup.pw.delete", "Delete\npassword", "delete_password"),
+            ]
+        keys: list[Softkey | None] = [
+            Softkey("setup.search", "Search", "focus_search"),
+            Softkey("setup.search.clear", "Show\nall", "clear_search", enabled=lambda s: bool(s.search)),
+        ]
+        if self.view == "axis":
+            keys += [Softkey("setup.axis.next", "Axis +", "next_axis(1)"),
+                     Softkey("setup.axis.prev", "Axis −", "next_axis(-1)")]
+        else:
+            keys += [None, None]
+        return keys + [None, None, None, Softkey("setup.edit", "Edit\n(Enter)", "edit")]
+
+    # -- actions -----------------------------------------------------------------------------------
+    def action_show_view(self, view: str) -> None:
+        """Show a machine-data list or the password window."""
+        self.view = view
+        if self.is_mounted:
+            table_view = view in MD_VIEWS
+            self.query_one("#md-search").display = table_view
+            self.query_one("#setup-table").display = table_view
+            self.query_one("#setup-access").display = not table_view
+        self.refresh_view()
+        self.refresh_softkeys()
+
+    def action_next_axis(self, step: int) -> None:
+        """Axis + / Axis −."""
+        self.axis_index = (self.axis_index + int(step)) % max(len(self.kernel.machine.axes), 1)
+        self.cursors["axis"] = TableCursor()
+        self.refresh_view()
+
+    def action_focus_search(self) -> None:
+        """Put the cursor into the search field."""
+        self.query_one("#md-search", Input).focus()
+
+    def action_clear_search(self) -> None:
+        """Show every datum of the list again."""
+        self.query_one("#md-search", Input).value = ""
+        self.apply_search("")
+
+    def apply_search(self, text: str) -> None:
+        """Filter the lists by number or part of the name."""
+        self.search = text.strip()
+        self.cursors = {view: TableCursor() for view in MD_VIEWS}
+        self.refresh_view()
+        self.refresh_softkeys()
+
+    def on_input_submitted(self, message: Input.Submitted) -> None:
+        """Enter in the search field applies it and gives the focus back."""
+        if message.input.id == "md-search":
+            message.stop()
+            self.apply_search(message.value)
+            self.set_focus(None)
+
+    def action_cursor(self, rows: int, columns: int) -> None:
+        """Arrow keys: move the selected row."""
+        if self.table is not None and self.view in MD_VIEWS:
+            self.cursors[self.view].move(self.table, int(rows), int(columns))
+            self.refresh_view()
+
+    def action_edit(self) -> None:
+        """Enter / Edit: an input field for the selected machine datum."""
+        if self.table is None or self.view not in MD_VIEWS:
+            return
+        cursor = self.cursors[self.view]
+        cell = self.table.cell(cursor.row, cursor.column)
+        if cell is None or not cell.name:
+            return
+        if self.access_level > cell.level:
+            self.show_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
+            return
+        name = cell.name
+        definition = self.kernel.machine_data.resolve(name).definition
+
+        def write(text: str | None) -> None:
+            if text is None:
+                return
+            target, value = name, text.strip()
+            if definition.array:
+                parts = value.split(None, 1)
+                if len(parts) != 2 or not parts[0].isdigit():
+                    self.show_hint(f"{name} is an array: give index and value, e.g. 0 5")
+                    return
+                index, value = parts
+                axis = f",{name.split('[')[1].rstrip(']')}" if "[" in name else ""
+                target = f"{definition.key}[{index}{axis}]"
+            result = self.submit(cmd.WriteData(target, value))
+            if isinstance(result, Accepted):
+                self.show_hint(f"{target} = {value}: takes effect {ACTIVATION_TEXT[definition.activation]}")
+            self.refresh_view()
+
+        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint), write)
+
+    def action_new_config(self) -> None:
+        """Set MD active (cf): stored machine data of activation cf and re take effect."""
+        pending = list(self.kernel.machine_data.pending())
+        if isinstance(self.submit(cmd.ActivateMachineData()), Accepted):
+            self.show_hint("Machine data active" + (f": {', '.join(pending)}" if pending else ""))
+        self.refresh_view()
+
+    def action_power_on(self) -> None:
+        """Reset (po): restart the simulated NCK after asking."""
+        def restart(yes: bool | None) -> None:
+            if not yes:
+                return
+            if self.hmi.power_on_reset():
+                self.power_on_at = wall_clock()
+                self.show_hint("NCK restarted (power on): every stored machine datum is active")
+            else:
+                self.show_hint("Reset (po) needs the NC data directory (the kernel runs without one)")
+            self.refresh_view()
+
+        self.app.push_screen(ConfirmDialog(
+            "Restart the NCK (power off/on)? Programs are aborted; axes must be referenced again."), restart)
+
+    def action_set_password(self) -> None:
+        """Set password: a level 1–3 password raises the access level."""
+        def enter(text: str | None) -> None:
+            if text:
+                if isinstance(self.submit(cmd.EnterPassword(text)), Accepted):
+                    self.show_hint(f"Access level {level_text(self.hmi.bridge.status.access_level)}")
+                self.refresh_view()
+
+        self.app.push_screen(ValueDialog("Set password", "", "at most 8 characters", password=True), enter)
+
+    def action_change_password(self) -> None:
+        """Change password: level, new password, the same again."""
+        def ask_new(level_text_: str | None) -> None:
+            if not level_text_:
+                return
+            if level_text_.strip() not in ("1", "2", "3"):
+                self.show_hint("Change password: levels 1, 2 and 3 have passwords")
+                return
+            level = int(level_text_)
+
+            def ask_again(first: str | None) -> None:
+                if not first:
+                    return
+
+                def confirm(second: str | None) -> None:
+                    if second is None:
+                        return
+                    if second != first:
+                        self.show_hint("The two entries differ: password not changed")
+                        return
+                    if isinstance(self.submit(cmd.ChangePassword(level, first)), Accepted):
+                        self.show_hint(f"New password for level {level} stored")
+                    self.refresh_view()
+
+                self.app.push_screen(ValueDialog("Repeat the new password", "", password=True), confirm)
+
+            self.app.push_screen(ValueDialog(f"New password for level {level}", "",
+                                             "at most 8 characters", password=True), ask_again)
+
+        current = self.access_level if self.access_level in (1, 2, 3) else 3
+        self.app.push_screen(ValueDialog("Change password of level (1–3)", str(current)), ask_new)
+
+    def action_delete_password(self) -> None:
+        """Delete password: back to the keyswitch level."""
+        if isinstance(self.submit(cmd.DeletePassword()), Accepted):
+            self.show_hint(f"Password deleted: access level {level_text(self.hmi.bridge.status.access_level)}")
+        self.refresh_view()
+
+    # -- display -------------------------------------------------------------------------------------
+    def update_status(self, status: NckStatus) -> None:
+        """A new snapshot: the access window follows the level and the time."""
+        self.refresh_view()
+
+    def refresh_view(self) -> None:
+        """Draw the list or the access window."""
+        if not self.is_mounted:
+            return
+        if self.view in MD_VIEWS:
+            axis = self.axis if self.view == "axis" else None
+            self.table = md_table(self.kernel.machine_data, self.view, axis, self.search, self.access_level)
+            widget = self.query_one("#setup-table", Static)
+            height = widget.size.height or TABLE_HEIGHT
+            show_text(widget, render_table(self.table, self.cursors[self.view], height, self.access_level))
+        else:
+            show_text(self.query_one("#setup-access", Static), self.access_text())
+
+    def access_text(self) -> Text:
+        """Access level, keyswitch, password state, pending MD, and the control's date and time."""
+        status = self.status
+        level = status.access_level if status is not None else 7
+        access = getattr(self.kernel, "_access", None)
+        state = getattr(access, "state", None)
+        keyswitch = status.keyswitch_position if status is not None else None
+        if keyswitch is None and state is not None:
+            keyswitch = state.keyswitch_position
+        password = getattr(state, "password_level", None)
+        text = Text(no_wrap=True, end="")
+        text.append(" Access level\n", style="bold underline")
+        text.append(f"   Current access level   {level_text(level)}\n", style="bold")
+        if keyswitch is not None:
+            text.append(f"   Keyswitch position     {keyswitch}  (level {7 - keyswitch})\n")
+        text.append("   Password               "
+                    + (f"set (level {password}, {LEVEL_NAMES[password]})" if password else "none") + "\n")
+        text.append("   A password overrides the keyswitch until it is deleted, also over power off/on.\n",
+                    style="dim")
+        text.append("\n Protection levels\n", style="bold underline")
+        for number in range(8):
+            how = ("system" if number == 0 else "password" if number <= 3
+                   else f"keyswitch position {7 - number}")
+            name = LEVEL_NAMES.get(number, "")
+            text.append(f"   {number}  {name:<14}{how}\n", style="bold" if number == level else "")
+        text.append("\n Machine data\n", style="bold underline")
+        pending = self.kernel.machine_data.pending()
+        text.append("   Stored, not active yet " + (", ".join(pending) if pending else "none") + "\n")
+        text.append("\n Date and time of the control\n", style="bold underline")
+        seconds = status.time_s if status is not None else 0.0
+        moment = self.power_on_at + timedelta(seconds=seconds)
+        text.append(f"   Date / time            {moment:%Y-%m-%d %H:%M:%S}\n")
+        whole = int(seconds)
+        text.append(f"   Since power on         {whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d}"
+                    " (simulated control time)\n")
+        return text
+
+
+AreaScreen = SetupScreen
