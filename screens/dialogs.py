@@ -1,4 +1,4 @@
-"""Shared modal dialogs: key help (F11), program selection, and a simple choice list.
+"""Shared modal dialogs: key help (F11), a choice list (program selection …), a value input.
 
 Each dialog returns its result with ``dismiss()``; F10 (MENU RECALL) closes
 any dialog without a result.
@@ -14,7 +14,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical, VerticalScroll
 from textual.screen import ModalScreen
-from textual.widgets import OptionList, Static
+from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from hmi.keymap import Keymap
@@ -108,4 +108,37 @@ class ChoiceDialog(ModalScreen[str | None]):
 
     def action_cancel(self) -> None:
         """Close without a choice."""
+        self.dismiss(None)
+
+
+class ValueDialog(ModalScreen[str | None]):
+    """Enter one value (Enter confirms, F10 or Escape cancels); returns the text typed."""
+
+    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
+
+    def __init__(self, title: str, initial: str = "", hint: str = "") -> None:
+        super().__init__(classes="value-dialog")
+        self._title = title
+        self._initial = initial
+        self._hint = hint
+
+    def compose(self) -> ComposeResult:
+        """Title, field and the key hint."""
+        with Vertical(id="value-box"):
+            yield Static(self._title, id="value-title")
+            yield Input(self._initial, id="value-input")
+            yield Static(self._hint or "Enter confirm   F10 cancel", id="value-keys")
+
+    def on_mount(self) -> None:
+        """The field has the focus, its text selected for overtyping."""
+        field = self.query_one(Input)
+        field.cursor_blink = False
+        field.focus()
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Enter: return the value."""
+        self.dismiss(event.value.strip())
+
+    def action_cancel(self) -> None:
+        """Close without a value."""
         self.dismiss(None)

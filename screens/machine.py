@@ -151,6 +151,11 @@ class MachineScreen(AreaBase):
         if view == "search":
             return [Softkey("search.start", "Start\nsearch", "start_search",
                             enabled=lambda s: s._reset_state())]
+        if view == "times":
+            return [
+                Softkey("times.reset_parts", "Reset\npart count", "set_counter('$AC_ACTUAL_PARTS', 0)"),
+                Softkey("times.required", "Required\nparts …", "enter_required_parts"),
+            ]
         if view == "view-mda":
             return [Softkey("mda.delete", "Delete\nblocks", "clear_mda",
                             enabled=lambda s: s._reset_state())]
@@ -244,6 +249,28 @@ class MachineScreen(AreaBase):
         """Enter in the search field starts the search."""
         if event.input.id == "search-input":
             self.action_start_search()
+
+    def action_set_counter(self, name: str, value: int) -> None:
+        """Write a part counter (``$AC_ACTUAL_PARTS`` …)."""
+        self.submit(cmd.WriteData(name, value))
+
+    def action_enter_required_parts(self) -> None:
+        """Ask for the number of parts required ($AC_REQUIRED_PARTS)."""
+        from screens.dialogs import ValueDialog
+
+        current = self.status.channel.parts_required if self.status else 0
+
+        def write(text: str | None) -> None:
+            if text is None:
+                return
+            try:
+                value = int(text)
+            except ValueError:
+                self.show_hint(f"Required parts: {text!r} is not a whole number")
+                return
+            self.submit(cmd.WriteData("$AC_REQUIRED_PARTS", value))
+
+        self.app.push_screen(ValueDialog("Required parts ($AC_REQUIRED_PARTS)", str(current)), write)
 
     def action_clear_mda(self) -> None:
         """Delete the MDA blocks."""

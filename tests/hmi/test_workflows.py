@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from nck import commands as c
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
@@ -321,8 +322,6 @@ async def test_emergency_stop_and_reset(programs: DirectoryPrograms) -> None:
 
 async def test_keyswitch_cycles_under_a_password(programs: DirectoryPrograms) -> None:
     """With a password set (level 2) the keyswitch still turns 0 → 1 → 2 …; deleting it shows the switch's level."""
-    from nck import commands as c
-
     app = real_app(programs)
     async with app.run_test(size=SIZE) as pilot:
         app.submit(c.EnterPassword("EVENING"))
@@ -330,3 +329,20 @@ async def test_keyswitch_cycles_under_a_password(programs: DirectoryPrograms) ->
         app.submit(c.DeletePassword())
         await pilot.pause()
         assert app.bridge.status.access_level == 5
+
+
+async def test_times_counter_softkeys_write_part_counters(programs: DirectoryPrograms) -> None:
+    """Times/Counter: ⇧F2 asks for the required parts (written to the kernel), ⇧F1 resets the part count."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("f6", "shift+f2")
+        await pilot.pause()
+        assert app.focused is app.screen.query_one("#value-input")
+        await pilot.press("2", "5", "enter")  # the old value is selected: typing replaces it
+        await pilot.pause()
+        assert app.bridge.status.channel.parts_required == 25
+        assert "Required parts           25" in text_of(app, "#times-table")
+        app.submit(c.WriteData("$AC_ACTUAL_PARTS", 7))
+        await pilot.press("shift+f1")
+        await pilot.pause()
+        assert app.bridge.status.channel.part_count == 0
