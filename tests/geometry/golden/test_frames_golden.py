@@ -172,3 +172,25 @@ def test_save_subprogram_restores_the_programmable_frame() -> None:
     while not interp.finished:
         ends += [c.end_mcs["X"] for c in interp.step().commands if hasattr(c, "end_mcs")]
     assert ends == [50.0, 5.0]  # inside: TRANS X50; back in the main program: TRANS X5 again
+
+
+def test_arc_points_follow_tilted_and_mirrored_arcs() -> None:
+    import math as _m
+
+    from nck.geometry.arc_mcs import arc_points_mcs
+
+    r = run(lines("N10 ROT X45", "N20 G0 X10 Y0 Z0", "N30 G3 X0 Y10 I-10 F100",
+                  "N40 MIRROR X0", "N50 G0 X10 Y0", "N60 G2 X0 Y-10 I-10 Z-3 TURN=1", "N70 M30"))
+    tilted = arc_points_mcs(r.block(30)[0], 8)
+    # Every point is 10 from the centre (origin) and lies in the tilted plane y = z.
+    for p in tilted:
+        assert _m.sqrt(p["X"] ** 2 + p["Y"] ** 2 + p["Z"] ** 2) == pytest.approx(10.0, abs=1e-9)
+        assert p["Y"] == pytest.approx(p["Z"], abs=1e-9)
+    # Half way round a quarter circle: 45° -> (7.071, 7.071·cos45, 7.071·sin45).
+    assert tilted[4] == approx({"X": 10 / _m.sqrt(2), "Y": 5.0, "Z": 5.0})
+    helix = arc_points_mcs(r.block(60)[0], 20)
+    assert helix[0] == approx(r.block(60)[0].start_mcs)
+    assert helix[-1] == approx(r.block(60)[0].end_mcs)
+    # A quarter plus one turn: the point at 4/5 of the sweep is back at the start angle, Z -2.4.
+    start = r.block(60)[0].start_mcs
+    assert helix[16]["X"] == pytest.approx(start["X"], abs=1e-9)
