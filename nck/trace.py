@@ -7,8 +7,8 @@ simulated control's, never a wall clock. Signals are named ``<axis>.<quantity>``
 =====================  ============================================  =======
 signal                 what                                          unit
 =====================  ============================================  =======
-``X.position``         actual position (MCS) as displayed            mm/deg
-``X.setpoint``         position setpoint from the interpolator       mm/deg
+``X.position``         position (MCS) as displayed and in ``--trace``  mm/deg
+``X.actual``           actual position of the measuring system (MCS)  mm/deg
 ``X.velocity``         actual velocity                               mm/min
 ``X.following_error``  setpoint − actual position                    mm
 ``S1.speed``           actual spindle speed                          rpm
@@ -32,7 +32,7 @@ MAX_SIGNALS = 4
 TRIGGERS = ("now", "nc_start")
 AXIS_QUANTITIES: dict[str, str] = {
     "position": "mm",
-    "setpoint": "mm",
+    "actual": "mm",
     "velocity": "mm/min",
     "following_error": "mm",
 }
@@ -128,13 +128,13 @@ def _reader(signal: str) -> Callable[[Any, dict[str, Any]], float]:
                 return float(state.actual_rpm)
             return float(nck._spindle_rpm) if nck._spindle_state in ("M3", "M4") else 0.0
         return spindle_speed
-    field_name = {"setpoint": "position_setpoint_mm", "velocity": "velocity_actual_mm_min",
+    field_name = {"actual": "position_actual_mm", "velocity": "velocity_actual_mm_min",
                   "following_error": "following_error_mm"}[quantity]
 
     def from_state(nck: Any, cache: dict[str, Any]) -> float:
         state = states(nck, cache).get(axis)
-        if state is None:  # a motion system without a servo model: setpoint = actual, no lag
-            return float(positions(nck, cache).get(axis, 0.0)) if quantity == "setpoint" else 0.0
+        if state is None:  # a motion system without a servo model: actual = displayed, no lag
+            return float(positions(nck, cache).get(axis, 0.0)) if quantity == "actual" else 0.0
         return float(getattr(state, field_name))
 
     return from_state
@@ -223,11 +223,11 @@ class TraceRecorder:
 
 
 def trace_csv(times_s: Sequence[float], columns: dict[str, Sequence[float]]) -> str:
-    """CSV: a header ``t_s,<columns…>``, then one row per sample (6 decimals)."""
+    """CSV: a header ``t_s,<columns…>``, then one row per sample (time in ms steps, values 6 decimals)."""
     lines = [",".join(["t_s", *columns])]
     values = list(columns.values())
     for index, t in enumerate(times_s):
-        row = [f"{t:.6f}"] + [f"{column[index]:.6f}" for column in values]
+        row = [f"{t:.3f}"] + [f"{column[index]:.6f}" for column in values]
         lines.append(",".join(row))
     return "\n".join(lines) + "\n"
 

@@ -357,6 +357,7 @@ class DiagnosticsScreen(AreaBase):
 
     def _render_utilisation(self, status: NckStatus) -> None:
         kernel = self.kernel
+        self.meter.attach(kernel)  # a new kernel after "Reset (po)" is measured too
         ipo = float(getattr(kernel, "ipo_cycle_s", 0.004) or 0.004)
         filler = getattr(kernel, "buffer_fill", None)
         buffer = filler() if callable(filler) else (0, 0)

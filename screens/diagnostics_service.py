@@ -106,7 +106,8 @@ def axis_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
         ("Contour deviation", _num(_extra(axis, "contour_deviation_mm")), unit),
         ("Servo gain factor (calculated)", _num(_extra(axis, "kv_calculated")), "(m/min)/mm"),
         ("Active measuring system", "1", ""),
-        ("Position actual value MS1 (MCS)", _num(axis.position_mcs), unit),
+        ("Position actual value MS1 (MCS)", _num(_extra(axis, "position_actual_mm")
+                                                 if "position_actual_mm" in axis.extra else axis.position_mcs), unit),
         ("Position setpoint", _num(axis.setpoint_mcs), unit),
         ("Velocity actual value", _num(axis.velocity, 1), f"{unit}/min"),
         ("Speed setpoint", _num(_extra(axis, "speed_setpoint_pct"), 2), "%"),

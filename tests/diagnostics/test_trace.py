@@ -95,4 +95,4 @@ def test_csv_columns_and_format() -> None:
     assert csv_column("X.position") == "X"
     assert csv_column("X.velocity") == "X_velocity_mm_min"
     assert csv_column("feed_override") == "feed_override_pct"
-    assert trace_csv([0.004, 0.008], {"X": [1.0, 2.5]}) == "t_s,X\n0.004000,1.000000\n0.008000,2.500000\n"
+    assert trace_csv([0.004, 0.008], {"X": [1.0, 2.5]}) == "t_s,X\n0.004,1.000000\n0.008,2.500000\n"
