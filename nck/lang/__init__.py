@@ -23,7 +23,8 @@ What the language covers:
 * Flow: GOTOF/GOTOB/GOTO/GOTOC/GOTOS, IF/ELSE/ENDIF, WHILE, FOR…TO, LOOP,
   REPEAT…UNTIL, CASE…OF…DEFAULT, REPEAT/REPEATB section repetition;
   subprograms by name or ``L…`` with ``P`` passes, ``PROC`` parameters by value
-  and ``VAR`` reference, ``SAVE``, ``EXTERN``, ``MCALL``, ``CALL``; M17/RET/M2/M30.
+  and ``VAR`` reference, ``SAVE``, ``EXTERN``, ``MCALL``, ``CALL``; M17/RET/M2/M30;
+  the drilling cycles CYCLE81/82/83 are NC programs in ``data/cycles``.
 
 Every error is an :class:`nck.errors.NcAlarmError` with its SINUMERIK number.
 """
