@@ -1,0 +1,121 @@
+"""The pure parts of the Diagnostics views: alarm rows, filter, export, service rows, plot."""
+
+from __future__ import annotations
+
+import csv
+import io
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from nck.persistence import ALARM_LOG_LIMIT, Session, alarm_entry_from_dict
+from nck.status import AlarmEntry
+from hmi.widgets.plot import format_value, render_curves, value_range
+from screens.diagnostics_alarms import (
+    LogFilter, alarm_list_rows, clock_text, log_as_csv, log_rows, parse_filter, source_text,
+)
+from screens.diagnostics_service import UtilisationMeter
+
+
+def entry(seq: int, number: int, text: str = "text", **kwargs) -> AlarmEntry:
+    values = dict(category="axis", clear="reset", came_s=float(seq))
+    values.update(kwargs)
+    return AlarmEntry(seq=seq, number=number, text=text, **values)
+
+
+def test_clock_text() -> None:
+    assert clock_text(0.0) == "00:00:00.00"
+    assert clock_text(3725.456) == "01:02:05.46"
+    assert clock_text(None) == ""
+
+
+def test_alarm_list_newest_first_and_sources() -> None:
+    rows = alarm_list_rows([entry(1, 10720, file="P.MPF", n=10), entry(3, 10621, params=("1", "X", "+")),
+                            entry(2, 3000, category="nck")])
+    assert [r.number for r in rows] == [10621, 3000, 10720]
+    assert source_text(rows[0]) == "channel 1 axis X"
+    assert source_text(rows[1]) == "NCK"
+    assert source_text(rows[2]) == "P.MPF N10"
+
+
+@pytest.mark.parametrize("typed, expected", [
+    ("", LogFilter()),
+    ("10720", LogFilter(10720, 10720, "")),
+    ("10000-19999", LogFilter(10000, 19999, "")),
+    ("-20000", LogFilter(None, 20000, "")),
+    ("20000-", LogFilter(20000, None, "")),
+    ("10000-19999 limit switch", LogFilter(10000, 19999, "limit switch")),
+    ("limit", LogFilter(None, None, "limit")),
+    ("G17-plane", LogFilter(None, None, "G17-plane")),
+])
+def test_parse_filter(typed: str, expected: LogFilter) -> None:
+    assert parse_filter(typed) == expected
+
+
+def test_reversed_range_is_refused() -> None:
+    with pytest.raises(ValueError):
+        parse_filter("30000-20000")
+
+
+@settings(max_examples=60, deadline=None)
+@given(numbers=st.lists(st.integers(1, 99999), max_size=30), low=st.integers(1, 99999), span=st.integers(0, 50000))
+def test_filter_keeps_exactly_the_range(numbers: list[int], low: int, span: int) -> None:
+    history = [entry(i + 1, n) for i, n in enumerate(numbers)]
+    rows = log_rows(history, parse_filter(f"{low}-{low + span}"))
+    assert [r.number for r in rows] == [n for n in reversed(numbers) if low <= n <= low + span]
+
+
+def test_log_rows_skip_messages_and_csv_export() -> None:
+    history = [entry(1, 10720, went_s=2.5), entry(2, 0, category="message"), entry(-1, 3000, clear="reset")]
+    rows = log_rows(history)
+    assert [r.number for r in rows] == [3000, 10720]
+    table = list(csv.reader(io.StringIO(log_as_csv(rows))))
+    assert table[1][:4] == ["1", "00:00:00.00", "", "3000"]  # retained from an earlier power on
+    assert table[2][:5] == ["0", "00:00:01.00", "00:00:02.50", "10720", "reset"]
+
+
+def test_retained_alarm_log_is_bounded_oldest_dropped(tmp_path) -> None:
+    session = Session.open(tmp_path, install_samples=False)
+    session.record_alarms(entry(i + 1, 10000 + i) for i in range(ALARM_LOG_LIMIT + 20))
+    session.save()
+    again = Session.open(tmp_path, install_samples=False)
+    kept = [alarm_entry_from_dict(d) for d in again.alarm_log]
+    assert len(kept) == ALARM_LOG_LIMIT
+    assert kept[0].number == 10020 and kept[-1].number == 10000 + ALARM_LOG_LIMIT + 19
+
+
+def test_utilisation_meter_divides_by_the_cycles_run(monkeypatch) -> None:
+    from screens import diagnostics_service
+
+    readings = iter([0.0, 0.010, 1.0, 1.004])
+    monkeypatch.setattr(diagnostics_service, "CLOCK", lambda: next(readings))
+
+    class Kernel:
+        cycles_done = 0
+        blocks_interpreted = 0
+
+        def tick(self, dt_s: float) -> None:
+            self.cycles_done += round(dt_s / 0.004)
+            self.blocks_interpreted += 5
+
+        def step(self, n: int = 1) -> None:
+            self.cycles_done += n
+
+    kernel = Kernel()
+    meter = UtilisationMeter()
+    meter.attach(kernel)
+    kernel.tick(0.04)  # 10 cycles in 10 ms
+    kernel.tick(0.016)  # 4 cycles in 4 ms
+    figures = meter.figures(0.004)
+    assert figures["cycle_compute_us"] == pytest.approx(1000.0)
+    assert figures["ipo_load_pct"] == pytest.approx(25.0)
+    assert figures["blocks_per_s"] == pytest.approx(10 / 0.014)
+
+
+def test_plot_helpers() -> None:
+    assert value_range([2.0, 2.0]) == pytest.approx((1.9, 2.1))
+    assert format_value(12345.678) == "12345.7" and format_value(-0.01234) == "-0.0123"
+    text = render_curves([0.0, 1.0, 2.0], [[0.0, 1.0, 0.0]], 20, 4, cursor=1).plain
+    lines = text.splitlines()
+    assert len(lines) == 4 and all(len(line) == 20 for line in lines)
+    assert any(ch not in " │" for ch in text)
