@@ -92,6 +92,9 @@ def main(argv: list[str] | None = None) -> int:
     except MachineFileError as exc:
         print(f"nck: {exc}", file=sys.stderr)
         return 2
+    except Exception as exc:  # noqa: BLE001 - a bug must still not show a traceback to the user
+        print(f"ALARM 1 - - Internal error: {type(exc).__name__}: {exc}", file=sys.stderr)
+        return 1
 
 
 # ----------------------------------------------------------------------------- helpers
