@@ -81,6 +81,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         self._journaled_hash = ""
         self._mark_anchor: tuple[int, int] | None = None
         self._restore_offered = False
+        self._loading = False
         self._leave_asked = False
 
     # -- layout ------------------------------------------------------------------------------
@@ -229,6 +230,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         self._journaled_hash = ""
         self.files.last_program = self.program
         editor = self.editor
+        self._loading = True  # the Changed message of load_text is not an edit
         editor.load_text(decoded)
         editor.set_error_marks([])
         self._update_read_only()
@@ -451,6 +453,9 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         """Text changed: mark modified, schedule a check."""
         if self.program is None:
             return
+        if self._loading:
+            self._loading = False
+            return
         self._dirty = True
         self._update_title()
         self.schedule_check()
@@ -462,6 +467,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             if selection.start == selection.end and selection.end != self._mark_anchor:
                 self.editor.selection = Selection(self._mark_anchor, selection.end)
         self._show_cursor_message()
+        self._update_title()
 
     def _show_cursor_message(self) -> None:
         if not self._ready:
@@ -486,7 +492,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             title.update("No program open — Program manager (Alt+N): select a program and press Open")
             return
         flags = []
-        if self.is_modified() or self._dirty and self.editor.text != self.saved_text:
+        if self._dirty:  # cheap on every cursor move; is_modified() compares the text
             flags.append("modified")
         if self.read_only_reason:
             flags.append(f"read-only: {self.read_only_reason}")
