@@ -7,11 +7,12 @@ from pathlib import Path
 import pytest
 
 from nck import commands as cmd
+from nck.cli import main as cli_main
 from nck.trace import AxisTrace
 from hmi.widgets.header import AreaHeader
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics import DiagnosticsScreen
-from tests.diagnostics.conftest import SIZE, app_on, kernel, kv1_machine, power_off, power_on
+from tests.diagnostics.conftest import PROGRAMS, SIZE, app_on, kernel, kv1_machine, power_off, power_on
 
 
 def body(app, view: str) -> str:
@@ -154,7 +155,7 @@ async def test_service_axis_shows_one_mm_following_error_at_f1000_with_kv1() -> 
         assert screen.axis_index == 1
 
 
-async def test_trace_of_x_on_the_screen_reproduces_the_axis_trace(tmp_path: Path) -> None:
+async def test_trace_of_x_on_the_screen_reproduces_nck_run_trace(tmp_path: Path) -> None:
     nck = kernel()
     full = AxisTrace(["X", "Y", "Z"])
     full.attach(nck)
@@ -182,6 +183,18 @@ async def test_trace_of_x_on_the_screen_reproduces_the_axis_trace(tmp_path: Path
         await pilot.press("shift+f6")
         await pilot.pause()
     exported = (tmp_path / "trace.csv").read_text().splitlines()
+    # the same program through the headless command line: nck run --trace
+    program = tmp_path / "TRACE.MPF"
+    program.write_text(PROGRAMS["TRACE.MPF"])
+    assert cli_main(["run", str(program), "--trace", str(tmp_path / "cli.csv")]) == 0
+    cli_rows = (tmp_path / "cli.csv").read_text().splitlines()
+    assert cli_rows[0].split(",")[:2] == exported[0].split(",")
+    compared = min(len(cli_rows), len(exported))
+    assert compared > 0.9 * len(cli_rows)
+    for ours, theirs in zip(exported[1:compared], cli_rows[1:compared]):
+        t_ours, x_ours = (float(v) for v in ours.split(","))
+        t_theirs, x_theirs = (float(v) for v in theirs.split(",")[:2])
+        assert t_ours == pytest.approx(t_theirs, abs=1e-9) and x_ours == pytest.approx(x_theirs, abs=1e-6)
     reference = full.to_csv().splitlines()
     first = reference.index(next(r for r in reference if r.startswith(exported[1].split(",")[0] + ",")))
     assert exported[0] == "t_s,X"
@@ -214,3 +227,36 @@ async def test_every_view_renders_and_softkeys_switch(tmp_path: Path) -> None:
         await pilot.press("f10", "f10")
         await pilot.pause()
         assert screen.view == "alarms"
+
+
+async def test_alarm_log_survives_a_restart_of_the_app_on_its_data_dir(tmp_path: Path) -> None:
+    """``hmi --data-dir``: a 10720 in AUTO is in the log after quitting and starting again."""
+    from hmi.app import make_app
+
+    program = tmp_path / "OVER.MPF"
+    program.write_text("N10 G90 G1 X600 F2000\nN20 M30\n")  # X's plus limit is 500 mm
+    data_dir = tmp_path / "data"
+    app = make_app(data_dir=str(data_dir), program=str(program), realtime=False)
+    nck = app.bridge.nck
+    for axis in nck.machine.path_axes:
+        nck.motion.set_referenced(axis, True)
+    async with app.run_test(size=SIZE) as pilot:
+        app.submit(cmd.SelectMode("AUTO"))
+        app.submit(cmd.CycleStart())
+        await advance(pilot, 0.5)
+        await open_diagnostics(pilot)
+        assert "10720" in header_alarm(app) and "10720" in body(app, "alarms")
+        await pilot.press(key_for(app, "reset"))
+        await pilot.pause()
+        assert "No active alarms" in body(app, "alarms")
+        await pilot.press(key_for(app, "quit_hmi"))
+    app = make_app(data_dir=str(data_dir), realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_diagnostics(pilot)
+        assert "No active alarms" in body(app, "alarms")
+        await pilot.press("f3")
+        await pilot.pause()
+        log = body(app, "log")
+        line = next(row for row in log.splitlines() if "10720" in row)
+        assert line.split()[0] == "PO-" and "would pass software limit switch" in line
+        assert line.split()[2] != "—"  # it went (RESET) before the restart
