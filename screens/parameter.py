@@ -62,6 +62,7 @@ class ParameterScreen(AreaBase):
         super().__init__(id="area-parameter")
         self.view = "tools"
         self.cursors = {view: TableCursor() for view in VIEWS}
+        self.cursors["wear"] = self.cursors["tools"]  # the same edge selected in both lists
         self.detail_frame = "G54"
         self.table: DataTable | None = None
         self._levels: dict[str, int] = {}
@@ -194,10 +195,10 @@ class ParameterScreen(AreaBase):
         cursor = self.cursors[self.view]
         cell = self.table.cell(cursor.row, cursor.column)
         if cell is None or not cell.name:
-            self.show_hint("This value cannot be changed here")
+            self.hmi.set_hint("This value cannot be changed here")
             return
         if self.access_level > cell.level:
-            self.show_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
+            self.hmi.set_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
             return
         name = cell.name
 
@@ -212,7 +213,7 @@ class ParameterScreen(AreaBase):
         result = self.submit(cmd.WriteData(name, value))
         self.refresh_table()
         if isinstance(result, Accepted):
-            self.show_hint(f"{name} = {value}")
+            self.hmi.set_hint(f"{name} = {value}")
             return True
         return False
 
@@ -233,10 +234,10 @@ class ParameterScreen(AreaBase):
                 tool = int(parts[0])
                 kind = int(parts[1]) if len(parts) > 1 else DEFAULT_TOOL_TYPE
             except ValueError:
-                self.show_hint("New tool: give the T number and optionally the type, e.g. 12 120")
+                self.hmi.set_hint("New tool: give the T number and optionally the type, e.g. 12 120")
                 return
             if any(t == tool for t, _ in self.kernel.data.tools):
-                self.show_hint(f"T{tool} exists already")
+                self.hmi.set_hint(f"T{tool} exists already")
                 return
             if self.write(f"$TC_DP1[{tool},1]", kind):
                 self._select_tool(tool, 1)
@@ -269,7 +270,7 @@ class ParameterScreen(AreaBase):
             if yes:
                 result = self.submit(cmd.DeleteToolEdge(tool, edge if edge_only else None))
                 if isinstance(result, Accepted):
-                    self.show_hint(f"Deleted {what}")
+                    self.hmi.set_hint(f"Deleted {what}")
                 self.refresh_table()
 
         self.app.push_screen(ConfirmDialog(f"Delete {what}?"), delete)
@@ -281,10 +282,10 @@ class ParameterScreen(AreaBase):
                 try:
                     tool = int(text.strip().lstrip("Tt"))
                 except ValueError:
-                    self.show_hint("Search: give a T number")
+                    self.hmi.set_hint("Search: give a T number")
                     return
                 if not self._select_tool(tool, None):
-                    self.show_hint(f"T{tool} not found")
+                    self.hmi.set_hint(f"T{tool} not found")
 
         self.app.push_screen(ValueDialog("Search tool: T number"), find)
 
@@ -303,7 +304,7 @@ class ParameterScreen(AreaBase):
         def clear(yes: bool | None) -> None:
             if yes:
                 if isinstance(self.submit(cmd.ClearRParameters()), Accepted):
-                    self.show_hint("All R parameters are 0")
+                    self.hmi.set_hint("All R parameters are 0")
                 self.refresh_table()
 
         self.app.push_screen(ConfirmDialog(f"Set all {len(self.kernel.data.r)} R parameters to 0?"), clear)

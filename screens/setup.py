@@ -215,7 +215,7 @@ class SetupScreen(AreaBase):
         if cell is None or not cell.name:
             return
         if self.access_level > cell.level:
-            self.show_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
+            self.hmi.set_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
             return
         name = cell.name
         definition = self.kernel.machine_data.resolve(name).definition
@@ -227,14 +227,14 @@ class SetupScreen(AreaBase):
             if definition.array:
                 parts = value.split(None, 1)
                 if len(parts) != 2 or not parts[0].isdigit():
-                    self.show_hint(f"{name} is an array: give index and value, e.g. 0 5")
+                    self.hmi.set_hint(f"{name} is an array: give index and value, e.g. 0 5")
                     return
                 index, value = parts
                 axis = f",{name.split('[')[1].rstrip(']')}" if "[" in name else ""
                 target = f"{definition.key}[{index}{axis}]"
             result = self.submit(cmd.WriteData(target, value))
             if isinstance(result, Accepted):
-                self.show_hint(f"{target} = {value}: takes effect {ACTIVATION_TEXT[definition.activation]}")
+                self.hmi.set_hint(f"{target} = {value}: takes effect {ACTIVATION_TEXT[definition.activation]}")
             self.refresh_view()
 
         self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint), write)
@@ -243,7 +243,7 @@ class SetupScreen(AreaBase):
         """Set MD active (cf): stored machine data of activation cf and re take effect."""
         pending = list(self.kernel.machine_data.pending())
         if isinstance(self.submit(cmd.ActivateMachineData()), Accepted):
-            self.show_hint("Machine data active" + (f": {', '.join(pending)}" if pending else ""))
+            self.hmi.set_hint("Machine data active" + (f": {', '.join(pending)}" if pending else ""))
         self.refresh_view()
 
     def action_power_on(self) -> None:
@@ -253,9 +253,9 @@ class SetupScreen(AreaBase):
                 return
             if self.hmi.power_on_reset():
                 self.power_on_at = wall_clock()
-                self.show_hint("NCK restarted (power on): every stored machine datum is active")
+                self.hmi.set_hint("NCK restarted (power on): every stored machine datum is active")
             else:
-                self.show_hint("Reset (po) needs the NC data directory (the kernel runs without one)")
+                self.hmi.set_hint("Reset (po) needs the NC data directory (the kernel runs without one)")
             self.refresh_view()
 
         self.app.push_screen(ConfirmDialog(
@@ -266,7 +266,7 @@ class SetupScreen(AreaBase):
         def enter(text: str | None) -> None:
             if text:
                 if isinstance(self.submit(cmd.EnterPassword(text)), Accepted):
-                    self.show_hint(f"Access level {level_text(self.hmi.bridge.status.access_level)}")
+                    self.hmi.set_hint(f"Access level {level_text(self.hmi.bridge.status.access_level)}")
                 self.refresh_view()
 
         self.app.push_screen(ValueDialog("Set password", "", "at most 8 characters", password=True), enter)
@@ -277,7 +277,7 @@ class SetupScreen(AreaBase):
             if not level_text_:
                 return
             if level_text_.strip() not in ("1", "2", "3"):
-                self.show_hint("Change password: levels 1, 2 and 3 have passwords")
+                self.hmi.set_hint("Change password: levels 1, 2 and 3 have passwords")
                 return
             level = int(level_text_)
 
@@ -289,10 +289,10 @@ class SetupScreen(AreaBase):
                     if second is None:
                         return
                     if second != first:
-                        self.show_hint("The two entries differ: password not changed")
+                        self.hmi.set_hint("The two entries differ: password not changed")
                         return
                     if isinstance(self.submit(cmd.ChangePassword(level, first)), Accepted):
-                        self.show_hint(f"New password for level {level} stored")
+                        self.hmi.set_hint(f"New password for level {level} stored")
                     self.refresh_view()
 
                 self.app.push_screen(ValueDialog("Repeat the new password", "", password=True), confirm)
@@ -306,7 +306,7 @@ class SetupScreen(AreaBase):
     def action_delete_password(self) -> None:
         """Delete password: back to the keyswitch level."""
         if isinstance(self.submit(cmd.DeletePassword()), Accepted):
-            self.show_hint(f"Password deleted: access level {level_text(self.hmi.bridge.status.access_level)}")
+            self.hmi.set_hint(f"Password deleted: access level {level_text(self.hmi.bridge.status.access_level)}")
         self.refresh_view()
 
     # -- display -------------------------------------------------------------------------------------
