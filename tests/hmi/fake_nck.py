@@ -12,6 +12,8 @@ import re
 from dataclasses import replace
 
 from nck import commands as c
+from nck.machine import load_machine
+from nck.ncdata import NcData
 from nck.status import AlarmEntry, AxisStatus, BlockView, ChannelStatus, ModalView, NckStatus
 
 SAMPLE_PROGRAM = [
@@ -67,6 +69,8 @@ class FakeNck:
         self.message = ""
         self.repos_offsets: dict[str, float] = {}
         self.submitted: list[object] = []
+        self.data = NcData()  # the real Nck exposes its NC data (the Parameter area reads it)
+        self.machine = load_machine()
 
     # -- facade -------------------------------------------------------------------------
     def status(self) -> NckStatus:

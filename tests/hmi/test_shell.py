@@ -63,8 +63,11 @@ def test_softkey_needs_level_and_state() -> None:
     assert menu.find("b") == "v1" and menu.slot("h1") is key and menu.slot("h8") is None
 
 
-async def test_area_keys_switch_operating_areas(fake_app: HmiApp) -> None:
-    """Alt+M/O/P/N/A/S show one screen stack per area; each area screen is an AreaBase."""
+async def test_area_keys_switch_operating_areas() -> None:
+    """Alt+M/O/P/N/A/S show one screen stack per area (on the real kernel); each is an AreaBase."""
+    from nck.kernel import Nck
+
+    fake_app = HmiApp(Nck(), realtime=False)
     async with fake_app.run_test(size=SIZE) as pilot:
         keys = {"parameter": "alt+o", "program": "alt+p", "program_manager": "alt+n",
                 "diagnostics": "alt+a", "setup": "alt+s", "machine": "alt+m"}
