@@ -65,7 +65,22 @@ class Limits:
     def check_segment(self, segment: Segment, referenced: list[bool]) -> tuple[int, str, str] | None:
         """First violation of a segment: (alarm number, axis name, ``+``/``-``), or None."""
         if segment.arc is None:
-            points = segment.end[None, :]
+            for i in np.flatnonzero(segment.delta):
+                if not referenced[i]:
+                    continue
+                value = float(segment.end[i])
+                minus, plus = self.software(i)
+                w_minus, w_plus = self.workarea(i) if self.setting_data else (-math.inf, math.inf)
+                name = self.axes[i].name
+                if value > plus + EDGE_MM:
+                    return ALARM_SW_LIMIT_AUTO, name, "+"
+                if value < minus - EDGE_MM:
+                    return ALARM_SW_LIMIT_AUTO, name, "-"
+                if value > w_plus + EDGE_MM:
+                    return ALARM_WORKAREA_AUTO, name, "+"
+                if value < w_minus - EDGE_MM:
+                    return ALARM_WORKAREA_AUTO, name, "-"
+            return None
         else:
             points = segment.positions(np.linspace(0.0, segment.length, 65))
         low = points.min(axis=0)

@@ -33,10 +33,14 @@ class Segment:
     length: float
     arc: tuple[int, int, float, float, float, float, float, float] | None = None
 
+    def __post_init__(self) -> None:
+        self.delta = self.end - self.start
+        self._tangents: dict[bool, np.ndarray] = {}
+
     def positions(self, s: np.ndarray) -> np.ndarray:
         """Positions at path distances ``s`` (shape ``(len(s), n_axes)``)."""
-        lam = np.clip(s / self.length, 0.0, 1.0) if self.length > 0 else np.ones_like(s)
-        out = self.start[None, :] + lam[:, None] * (self.end - self.start)[None, :]
+        lam = np.minimum(np.maximum(s * (1.0 / self.length), 0.0), 1.0) if self.length > 0 else np.ones_like(s)
+        out = self.start + lam[:, None] * self.delta
         if self.arc is not None:
             i1, i2, c1, c2, r0, r1, th0, sweep = self.arc
             theta = th0 + lam * sweep
@@ -67,9 +71,17 @@ class Segment:
 
     def tangent(self, at_end: bool) -> np.ndarray:
         """Unit tangent at the start or the end."""
-        first, _ = self._derivatives(1.0 if at_end else 0.0)
-        norm = float(np.linalg.norm(first))
-        return first / norm if norm > 0 else first
+        cached = self._tangents.get(at_end)
+        if cached is not None:
+            return cached
+        if self.arc is None:
+            first = self.delta / self.length
+        else:
+            first, _ = self._derivatives(1.0 if at_end else 0.0)
+        norm = math.sqrt(float(first @ first))
+        result = first / norm if norm > 0 else first
+        self._tangents[at_end] = result
+        return result
 
     def curvature(self, at_end: bool) -> np.ndarray:
         """Curvature vector d²p/ds² at the start or the end (zero for lines)."""
@@ -78,7 +90,7 @@ class Segment:
 
     def max_direction_share(self) -> np.ndarray:
         """Upper bound of |dp_k/ds| over the segment, per axis."""
-        share = np.abs(self.end - self.start) / self.length
+        share = np.abs(self.delta) / self.length
         if self.arc is not None:
             i1, i2, _c1, _c2, r0, r1, _th0, sweep = self.arc
             bound = (abs(r1 - r0) + max(r0, r1) * abs(sweep)) / self.length
@@ -97,9 +109,10 @@ class Segment:
 def line(start: np.ndarray, end: np.ndarray, linear_mask: np.ndarray) -> Segment:
     """A straight segment; its length counts the linear axes (rotary-only moves in degrees)."""
     delta = end - start
-    length = float(np.linalg.norm(delta[linear_mask]))
+    lin = delta[linear_mask]
+    length = math.sqrt(float(lin @ lin))
     if length <= MIN_LENGTH_MM:
-        length = float(np.linalg.norm(delta))
+        length = math.sqrt(float(delta @ delta))
     return Segment(start=start.copy(), end=end.copy(), length=length)
 
 

@@ -27,6 +27,36 @@ from nck.motion.profile import reach_up
 SHORT_BLOCK_FACTOR = 0.9
 
 
+class AxisArrays:
+    """Per-axis limits as numpy arrays (built once per machine, for vectorised planning)."""
+
+    def __init__(self, params: MotionParams) -> None:
+        axes = params.axes
+        T = params.ipo_cycle_s
+        self.vmax = np.array([a.max_velo_mm_s for a in axes])
+        self.amax = np.array([a.max_accel_mm_s2 for a in axes])
+        self.jmax = np.array([a.max_jerk_mm_s3 for a in axes])
+        self.g0_accel = np.array([a.g0_accel_factor for a in axes])
+        self.g0_jerk = np.array([a.g0_jerk_factor for a in axes])
+        self.soft_accel = np.array([a.soft_accel_factor for a in axes])
+        reserve = np.array([a.accel_ovl_factor - 1.0 for a in axes])
+        self.corner_brisk = reserve * self.amax * T
+        self.corner_soft = reserve * self.jmax * T * T
+        self.curvature_soft = reserve * self.jmax * T
+
+
+_ARRAYS: dict[int, tuple[MotionParams, AxisArrays]] = {}
+
+
+def axis_arrays(params: MotionParams) -> AxisArrays:
+    """The (cached) arrays of ``params``."""
+    entry = _ARRAYS.get(id(params))
+    if entry is None or entry[0] is not params:
+        entry = (params, AxisArrays(params))
+        _ARRAYS[id(params)] = entry
+    return entry[1]
+
+
 @dataclass
 class PlannedSegment:
     """A segment with its dynamic limits and its place in the look-ahead chain."""
@@ -91,20 +121,21 @@ def plan_segment(
     share = segment.max_direction_share()
     moved = share > 1e-12
     axes = params.axes
-    v_cap = math.inf
-    a_lin = math.inf
-    j_lin = math.inf
-    for k in np.flatnonzero(moved):
-        axis = axes[k]
-        factor_a = axis.g0_accel_factor if rapid else 1.0
-        if soft:
-            factor_a *= axis.soft_accel_factor
-        factor_j = axis.g0_jerk_factor if rapid else 1.0
-        v_cap = min(v_cap, axis.max_velo_mm_s / share[k])
-        a_lin = min(a_lin, axis.max_accel_mm_s2 * factor_a / share[k])
-        j_lin = min(j_lin, axis.max_jerk_mm_s3 * factor_j / share[k])
-    if not math.isfinite(v_cap):
+    arrays = axis_arrays(params)
+    if not moved.any():
         v_cap, a_lin, j_lin = 0.0, 1.0, 1.0
+    else:
+        inv = 1.0 / share[moved]
+        accel = arrays.amax[moved]
+        jerk_ax = arrays.jmax[moved]
+        if rapid:
+            accel = accel * arrays.g0_accel[moved]
+            jerk_ax = jerk_ax * arrays.g0_jerk[moved]
+        if soft:
+            accel = accel * arrays.soft_accel[moved]
+        v_cap = float(np.min(arrays.vmax[moved] * inv))
+        a_lin = float(np.min(accel * inv))
+        j_lin = float(np.min(jerk_ax * inv))
     accel = a_lin
     jerk: float | None = j_lin if soft else None
     if segment.arc is not None:
@@ -132,25 +163,21 @@ def junction_limit(params: MotionParams, prev: PlannedSegment, nxt: PlannedSegme
     """Highest velocity at the transition from ``prev`` to ``nxt`` in continuous-path mode."""
     if prev.exact_stop or (prev.jerk is None) != (nxt.jerk is None):
         return 0.0
-    T = params.ipo_cycle_s
+    arrays = axis_arrays(params)
     t1 = prev.segment.tangent(True)
     t2 = nxt.segment.tangent(False)
     jump = np.abs(t2 - t1)
     soft = nxt.jerk is not None
     limit = math.inf
-    for k, axis in enumerate(params.axes):
-        reserve = axis.accel_ovl_factor - 1.0
-        allowed = reserve * (axis.max_jerk_mm_s3 * T * T if soft else axis.max_accel_mm_s2 * T)
-        if jump[k] > 1e-12:
-            limit = min(limit, allowed / jump[k])
-    if soft:
-        k1 = prev.segment.curvature(True)
-        k2 = nxt.segment.curvature(False)
-        dk = np.abs(k2 - k1)
-        for k, axis in enumerate(params.axes):
-            if dk[k] > 1e-12:
-                allowed = (axis.accel_ovl_factor - 1.0) * axis.max_jerk_mm_s3 * T
-                limit = min(limit, math.sqrt(allowed / dk[k]))
+    bent = jump > 1e-12
+    if bent.any():
+        allowed = arrays.corner_soft if soft else arrays.corner_brisk
+        limit = float(np.min(allowed[bent] / jump[bent]))
+    if soft and (prev.segment.arc is not None or nxt.segment.arc is not None):
+        dk = np.abs(nxt.segment.curvature(False) - prev.segment.curvature(True))
+        curved = dk > 1e-12
+        if curved.any():
+            limit = min(limit, float(np.min(np.sqrt(arrays.curvature_soft[curved] / dk[curved]))))
     return max(limit, 0.0)
 
 

@@ -39,9 +39,9 @@ class Profile:
 
     def sample(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Return distance, velocity and acceleration at times ``t`` (clipped to the profile)."""
-        t = np.clip(t, 0.0, self.duration_s)
+        t = np.minimum(np.maximum(t, 0.0), self.duration_s)
         idx = np.searchsorted(self.t0, t, side="right") - 1
-        idx = np.clip(idx, 0, len(self.t0) - 1)
+        np.maximum(idx, 0, out=idx)
         dt = t - self.t0[idx]
         j = self.j[idx]
         a = self.a0[idx]

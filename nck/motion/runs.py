@@ -32,8 +32,11 @@ class PathRun:
     exit_target: float = 0.0
 
     def __post_init__(self) -> None:
-        remaining = [self.chain[0].segment.length - self.s_begin]
-        remaining += [seg.segment.length for seg in self.chain[1:]]
+        first = self.chain[0].segment.length - self.s_begin
+        if len(self.chain) == 1:
+            self._offsets = np.array([0.0, first])
+            return
+        remaining = [first] + [seg.segment.length for seg in self.chain[1:]]
         self._offsets = np.concatenate([[0.0], np.cumsum(remaining)])
 
     @property

@@ -140,6 +140,9 @@ class ServoBank:
             "still": np.array([a.standstill_tol_mm for a in axes]),
             "clamp": np.array([a.clamp_tol_mm for a in axes]),
         }
+        self._has_ctrlout_time = any(a.ctrlout_limit_time_s > 0.0 for a in axes)
+        self._speed_pct_per_mm_s = self._rpm_per_mm_s / self._rated_rpm * 100.0
+        self._cycle_decay = np.exp(-ipo_cycle_s / np.array([max(a.thermal_time_s, 1e-6) for a in axes]))
         self._mech = {
             "mass": np.array([a.mass_kg for a in axes]),
             "friction": np.array([a.friction_n for a in axes]),
@@ -228,6 +231,8 @@ class ServoBank:
         m = setpoints.shape[0]
         if m == 0:
             return setpoints.copy(), None
+        if m == 1 and self._simple():
+            return self._process_one(setpoints[0])
         T = self.T
         prev = np.vstack([self.x_set[None, :], setpoints])
         v = np.diff(prev, axis=0) / T
@@ -261,6 +266,66 @@ class ServoBank:
         for fault in self.faults:
             fault.push_mm = 0.0
         return actual[:last], trip
+
+    def _simple(self) -> bool:
+        """True when the one-cycle fast path applies (no faults, no delayed speed limit)."""
+        if self._has_ctrlout_time:
+            return False
+        return not any(f.active or f.push_mm for f in self.faults)
+
+    def _process_one(self, x: np.ndarray) -> tuple[np.ndarray, Trip | None]:
+        """One IPO cycle without faults: the same model and monitors as :meth:`process`."""
+        T = self.T
+        lim = self._limits
+        v = (x - self.x_set) / T
+        e_model = self.alpha * self.e_model + self.b * v
+        if self.follow_up:
+            e_model = np.zeros_like(e_model)
+            dev = np.zeros_like(e_model)
+        else:
+            dev = (self.e - self.e_model) * self.alpha
+        e = e_model + dev
+        actual = x - e
+        v_act = (actual - (self.x_set - self.e)) / T
+        v_cmd = self.kv * e + self._ffw_net * v
+        moving = np.abs(v) > MOVING_MM_S
+        abs_e = np.abs(e)
+        fine = (abs_e <= lim["fine"]) & ~moving
+        since = np.where(moving, 0, self.stop_cycles + 1)
+        reached = ~moving & (self.fine_since_stop | fine)
+        trip = None
+        if not self.follow_up and self.monitoring:
+            t_since = since * T
+            tol = np.where(self.clamped, lim["clamp"], lim["still"])
+            bad = ~moving & reached & (t_since >= lim["still_delay"]) & (abs_e > tol)
+            checks = (
+                (np.abs(dev) > lim["contour"], 25050),
+                (np.abs(v_cmd) * self._speed_pct_per_mm_s > lim["ctrlout"], 25060),
+                (np.abs(v_act) > lim["velo"], 25030),
+                (~moving & ~reached & (t_since > lim["pos_time"]), 25080),
+                (bad & self.clamped, 26000),
+                (bad & ~self.clamped, 25040),
+            )
+            for mask, number in checks:
+                if mask.any():
+                    trip = Trip(0, number, self.axes[int(np.argmax(mask))].name)
+                    break
+            self.stop_cycles = np.where(moving, 0, self.stop_cycles + 1)
+            self.fine_since_stop = np.where(moving, False, self.fine_since_stop | fine)
+        a = (v - self.v_set) / T
+        self.x_set = x.copy()
+        self.v_set = v
+        self.a_set = a
+        self.e = e
+        self.e_model = e_model
+        self.v_act = v_act
+        self.v_cmd = v_cmd
+        mech = self._mech
+        torque = (mech["mass"] * a / 1000.0 + mech["friction"] * np.sign(v_act) + mech["gravity"]) * mech["torque_per_n"]
+        self.torque = torque
+        target = AMBIENT_C + mech["temp_rise"] * (torque / mech["rated_torque"]) ** 2
+        self.temperature = target + (self.temperature - target) * self._cycle_decay
+        return actual[None, :], trip
 
     def _monitor(self, v: np.ndarray, v_act: np.ndarray, v_cmd: np.ndarray, e: np.ndarray, dev: np.ndarray) -> Trip | None:
         """Evaluate every monitor on the block, all axes at once; return the earliest trip."""

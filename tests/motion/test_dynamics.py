@@ -288,3 +288,35 @@ def test_velocity_acceleration_jerk_never_exceed_machine_data(program) -> None:
     if soft:
         assert np.all(np.abs(j) <= JMAX * OVL * (1 + 1e-6) + 1e-1)
     assert np.allclose(rows[-1], pos, atol=1e-9)
+
+
+def test_result_does_not_depend_on_the_step_size() -> None:
+    program = [move("G1", 4000.0, X=30.0), move("G1", 4000.0, X=30.0, Y=20.0),
+               move("G2", 3000.0, X=50.0, Y=40.0, center={"X": 50.0, "Y": 20.0}), move("G0", Z=50.0)]
+
+    def run(step: float) -> np.ndarray:
+        m = motion()
+        for item in program:
+            m.push(item)
+        for _ in range(int(round(4.0 / step))):
+            m.advance(step)
+        return m.trace()[1]
+
+    per_cycle = run(0.004)
+    blocks = run(0.5)
+    assert per_cycle.shape == blocks.shape
+    assert np.allclose(per_cycle, blocks, atol=1e-9)
+
+
+def test_fast_one_cycle_servo_path_matches_the_block_path() -> None:
+    def states(step: float) -> dict:
+        m = motion(MD32620={"X": 0}, MD32200={"X": 1.0})
+        m.push(move("G1", 3000.0, X=20.0))
+        for _ in range(int(round(2.0 / step))):
+            m.advance(step)
+        return m.axis_states()["X"]
+
+    a, b = states(0.004), states(0.4)
+    assert a.following_error_mm == pytest.approx(b.following_error_mm, abs=1e-12)
+    assert a.motor_temperature_c == pytest.approx(b.motor_temperature_c, abs=1e-6)
+    assert a.torque_nm == pytest.approx(b.torque_nm, abs=1e-9)
