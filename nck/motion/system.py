@@ -110,6 +110,8 @@ class PlannedMotion:
         self.plan_pos = end
         if segment is None:
             return
+        if item.gcodes:
+            self.limits.workarea_on = item.gcodes.get(28, "WALIMON") != "WALIMOF"
         violation = self.limits.check_segment(segment, self.referenced)
         if violation is not None:
             number, axis, sign = violation
