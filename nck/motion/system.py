@@ -110,8 +110,8 @@ class PlannedMotion:
         self.plan_pos = end
         if segment is None:
             return
-        if item.gcodes:
-            self.limits.workarea_on = item.gcodes.get(28, "WALIMON") != "WALIMOF"
+        if item.gcodes and 28 in item.gcodes:
+            self.limits.workarea_on = item.gcodes[28] != "WALIMOF"
         violation = self.limits.check_segment(segment, self.referenced)
         if violation is not None:
             number, axis, sign = violation
