@@ -139,7 +139,7 @@ class ParameterScreen(AreaBase):
                         active=lambda s: s.view == "wo_overview"),
                 Softkey("param.wo.details", "Details", "frame_details",
                         active=lambda s: s.view == "wo_details"),
-                None, None, None, None, edit,
+                None, None, None, None, None if self.view == "wo_active" else edit,
             ]
         if self.view == "r":
             clear_level = getattr(self.kernel, "access", None)

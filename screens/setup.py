@@ -354,7 +354,7 @@ class SetupScreen(AreaBase):
             text.append(f"   {number}  {name:<14}{how}\n", style="bold" if number == level else "")
         text.append("\n Machine data\n", style="bold underline")
         pending = self.kernel.machine_data.pending()
-        text.append("   Stored, not active yet " + (", ".join(pending) if pending else "none") + "\n")
+        text.append("   Stored, not active     " + (", ".join(pending) if pending else "none") + "\n")
         text.append("\n Date and time of the control\n", style="bold underline")
         seconds = status.time_s if status is not None else 0.0
         moment = self.power_on_at + timedelta(seconds=seconds)
