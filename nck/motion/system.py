@@ -203,12 +203,15 @@ class PlannedMotion:
         self.exact_wait = None
         self.repos_pending = False
         self.hold_point = None
+        self.plan_pos = None
         if self.run is not None and self.run.state()[1] > 1e-9:
             self._brake_path("abort")
+            run = self.run
+            assert run is not None
+            self.plan_pos = run.positions(np.array([run.profile.length]))[0]
         else:
             self.run = None
         self.la.clear()
-        self.plan_pos = None
         self.jog.stop_all(abort_reference=True)
         self.servo.reset()
         self.cmd = self.servo.x_set.copy()
@@ -265,6 +268,19 @@ class PlannedMotion:
         self._alarms = []
         self.jog.alarms = []
         return out
+
+    def cycles_until_block_change(self) -> int:
+        """IPO cycles the current segment or dwell surely still runs (≥ 1).
+
+        A caller with nothing else to do per cycle (the headless run) may
+        advance this many cycles at once; the motion is the same as cycle by
+        cycle, only computed as one numpy block.
+        """
+        if self.jog.runs or self.run is None:
+            return max(self.wait_cycles, 1)
+        run = self.run
+        left = int((run.profile.duration_s - run.tau) / self.T)
+        return max(left, 1)
 
     # --------------------------------------------------------------- JogControl
     def jog_continuous(self, axis: str, direction: int, velocity_mm_min: float) -> None:
@@ -390,7 +406,7 @@ class PlannedMotion:
         )
 
     def _plan_start(self) -> np.ndarray:
-        if self.plan_pos is None or (self.run is None and not self.la.items):
+        if self.plan_pos is None or (self.run is None and not self.la.items and not self.wait_cycles):
             self.plan_pos = self.cmd.copy()
         return self.plan_pos.copy()
 

@@ -320,3 +320,20 @@ def test_fast_one_cycle_servo_path_matches_the_block_path() -> None:
     assert a.following_error_mm == pytest.approx(b.following_error_mm, abs=1e-12)
     assert a.motor_temperature_c == pytest.approx(b.motor_temperature_c, abs=1e-6)
     assert a.torque_nm == pytest.approx(b.torque_nm, abs=1e-9)
+
+
+def test_reset_brakes_and_a_new_program_starts_from_the_stop_point() -> None:
+    m = motion()
+    m.push(move("G1", 6000.0, X=100.0))
+    m.push(move("G1", 6000.0, X=100.0, Y=100.0))
+    m.advance(0.5)
+    m.abort()
+    assert not m.is_idle()  # braking on the ramp
+    m.push(move("G1", 2000.0, Z=-10.0))
+    run_to_idle(m)
+    _rows, v, _a, _j = derivatives(m)
+    assert np.abs(v).max() <= 100.0 + 1e-9  # no jump anywhere
+    pos = m.positions_mcs()
+    assert pos["Y"] == pytest.approx(0.0)
+    assert 20.0 < pos["X"] < 100.0
+    assert pos["Z"] == pytest.approx(-10.0)
