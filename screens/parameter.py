@@ -24,7 +24,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from screens.parameter_tables import (
-    EDIT_BINDINGS, ConfirmDialog, DataTable, TableCursor, ValueDialog, render_table,
+    EDIT_BINDINGS, Column, ConfirmDialog, DataTable, TableCursor, ValueDialog, render_table,
 )
 from screens.parameter_views import (
     active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,
@@ -314,8 +314,26 @@ class ParameterScreen(AreaBase):
         """A new snapshot: redraw the view (programs change R parameters and tools too)."""
         self.refresh_table()
 
+    def read_refused(self) -> DataTable | None:
+        """A table saying which level reading the view's data needs, when the current one does not suffice."""
+        access = getattr(self.kernel, "access", None) if getattr(self.kernel, "protected", False) else None
+        read = {"tools": "READ_TOOL", "wear": "READ_TOOL", "gud": "READ_USER_DATA"}.get(self.view)
+        if access is None or read is None:
+            return None
+        from nck.access import Action
+
+        needed = access.required(Action[read])
+        if self.access_level <= needed:
+            return None
+        what = "tool offsets" if read == "READ_TOOL" else "user variables"
+        return DataTable(f"Reading {what} needs access level {needed} (current level {self.access_level})",
+                         [Column("", 1)], [], "Set a password or turn the keyswitch (Setup area)")
+
     def build_table(self) -> DataTable:
         """The table of the view on display."""
+        refused = self.read_refused()
+        if refused is not None:
+            return refused
         kernel, status, levels = self.kernel, self.status, self.level_of
         builders: dict[str, Callable[[], DataTable]] = {
             "tools": lambda: tool_table(kernel, status, levels),

@@ -227,3 +227,40 @@ async def test_password_change_and_delete(tmp_path: Path) -> None:
         assert isinstance(app.submit(c.EnterPassword("CUSTOMER")), c.Rejected)
         await enter_password(pilot, "MYPASS")
         assert app.bridge.status.access_level == 3
+
+
+async def test_reading_tools_needs_the_read_level(tmp_path: Path) -> None:
+    app = trainer(tmp_path)
+    fill(app)
+    async with app.run_test(size=SIZE) as pilot:
+        await enter_password(pilot, "EVENING")
+        app.submit(c.WriteData("MD9200", 5))  # USER_CLASS_READ_TOA, takes effect at once
+        app.submit(c.DeletePassword())
+        await pilot.press("alt+o", "f1")
+        await pilot.pause()
+        text = app.screen.query_one("#param-table").render().plain
+        assert "Reading tool offsets needs access level 5" in text and "Twist drill" not in text
+        await pilot.press("alt+t", "alt+t", "f1")
+        await pilot.pause()
+        assert "Twist drill" in app.screen.query_one("#param-table").render().plain
+
+
+async def test_a_truncated_data_file_at_start_gives_the_alarm_and_the_backup(tmp_path: Path) -> None:
+    app = trainer(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+t", "alt+t", "alt+t")  # level 4
+        app.submit(c.WriteData("$TC_DP3[3,1]", 50))
+        app.submit(c.WriteData("$TC_DP3[3,1]", 60))  # the second save keeps the first as backup
+        app.submit(c.WriteData("R2", 7))
+        await pilot.press("ctrl+q")
+    tools_file = tmp_path / "retained" / "tools.json"
+    tools_file.write_bytes(tools_file.read_bytes()[:40])
+    again = trainer(tmp_path)
+    async with again.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        alarms = again.bridge.status.alarms
+        assert [a.number for a in alarms] == [4065] and "tools.json" in alarms[0].text
+        data = again.bridge.nck.data
+        assert data.tools[(3, 1)].get(3) == 50.0  # the backup generation
+        assert data.r[2] == 7.0  # nothing else lost
+        assert list((tmp_path / "retained").glob("tools.json.bad-*"))
