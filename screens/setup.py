@@ -93,6 +93,7 @@ class SetupScreen(AreaBase):
         self.cursors = {view: TableCursor() for view in MD_VIEWS}
         self.table: DataTable | None = None
         self.power_on_at = wall_clock()
+        self._drawn_key: tuple = ()
 
     @property
     def kernel(self) -> Any:
@@ -311,7 +312,17 @@ class SetupScreen(AreaBase):
 
     # -- display -------------------------------------------------------------------------------------
     def update_status(self, status: NckStatus) -> None:
-        """A new snapshot: the access window follows the level and the time."""
+        """A new snapshot: the access window follows the level and the time; a list is
+        drawn again only when the level changed (its values change through this screen's
+        commands, which redraw it themselves)."""
+        key = (status.access_level, status.channel.channel_state, status.alarm_log_seq)
+        if self.view == "password" or key != self._drawn_key:
+            self._drawn_key = key
+            self.refresh_view()
+
+    def on_screen_resume(self) -> None:
+        """Back in the area: the lists may have changed meanwhile (RESET activates MD)."""
+        super().on_screen_resume()
         self.refresh_view()
 
     def refresh_view(self) -> None:
