@@ -97,13 +97,20 @@ def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
     return None
 
 
-def iter_syntax_alarms(text: str) -> Iterator[CheckAlarm]:
-    """Yield a syntax alarm for every line the block parser refuses (pass 1)."""
+def iter_syntax_alarms(
+    text: str, should_stop: Callable[[], bool] | None = None
+) -> Iterator[CheckAlarm]:
+    """Yield a syntax alarm for every line the block parser refuses (pass 1).
+
+    ``should_stop`` is polled every 16 lines; True ends the pass early.
+    """
     try:
         import nck.lang.parser  # noqa: F401
     except ImportError:  # the language is not there: nothing to check line by line
         return
     for index, line in enumerate(text.split("\n"), start=1):
+        if should_stop is not None and index % 16 == 0 and should_stop():
+            return
         if not line.strip():
             continue
         problem = _line_problem(line)
@@ -226,12 +233,10 @@ def iter_check(
     would stop at the first one anyway).
     """
     syntax_lines: set[int | None] = set()
-    for count, alarm in enumerate(iter_syntax_alarms(text)):
+    for alarm in iter_syntax_alarms(text, should_stop):
         syntax_lines.add(alarm.line)
         yield alarm
-        if should_stop is not None and count % 64 == 0 and should_stop():
-            return
-    if syntax_lines:
+    if syntax_lines or (should_stop is not None and should_stop()):
         return
     structure = list(iter_structure_alarms(name, text))
     yield from structure

@@ -9,6 +9,7 @@ collected motions.
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +26,27 @@ CHECK_DEBOUNCE_S = 0.4
 
 STREAM_BATCH = 50
 """Check results are handed to the screen in batches of this many alarms."""
+
+
+class _Breather:
+    """Called often from a worker thread: every few milliseconds of work it sleeps briefly.
+
+    Python threads share one interpreter lock; a busy checker would otherwise
+    keep the screen waiting for it on every message. Sleeping hands the lock
+    over, so keys stay responsive while a large program is checked.
+    """
+
+    WORK_S = 0.004
+    REST_S = 0.002
+
+    def __init__(self) -> None:
+        self._since = time.perf_counter()
+
+    def __call__(self) -> None:
+        now = time.perf_counter()
+        if now - self._since >= self.WORK_S:
+            time.sleep(self.REST_S)
+            self._since = time.perf_counter()
 
 
 class CheckAndSimulation:
@@ -94,7 +116,13 @@ class CheckAndSimulation:
         from nck.check import iter_check
 
         worker = get_current_worker()
-        stale = lambda: worker.is_cancelled or generation != self._generation  # noqa: E731
+
+        pause = _Breather()
+
+        def stale() -> bool:
+            pause()
+            return worker.is_cancelled or generation != self._generation
+
         batch: list[ErrorMark] = []
         name = Path(program).name
         try:
@@ -158,8 +186,13 @@ class CheckAndSimulation:
 
         worker = get_current_worker()
         try:
-            result = run_text(Path(program).name, text, programs=programs,
-                              should_stop=lambda: worker.is_cancelled)
+            pause = _Breather()
+
+            def cancelled() -> bool:
+                pause()
+                return worker.is_cancelled
+
+            result = run_text(Path(program).name, text, programs=programs, should_stop=cancelled)
             pieces = path_from_motions(result.motions)
         except Exception as exc:  # never crash the screen
             self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
