@@ -19,6 +19,10 @@ from nck import commands as cmd
 from nck.commands import Rejected
 
 
+PART_COUNTERS = ("TOTAL_PARTS", "REQUIRED_PARTS", "ACTUAL_PARTS", "SPECIAL_PARTS")
+"""Workpiece counters ``$AC_…`` that are retained (REQUIRED first: it bounds nothing but is set before ACTUAL)."""
+
+
 class NcDataSession:
     """The retained NC data of one data directory and the kernel built on it."""
 
@@ -39,12 +43,29 @@ class NcDataSession:
         restore = getattr(self.session, "restore_alarm_log", None)
         if callable(restore):
             restore(nck)
+        data = self.session.ncdata
+        for key in PART_COUNTERS:  # the kernel keeps them itself: hand it the retained values
+            if key in data.part_counters:
+                nck.submit(cmd.WriteData(f"$AC_{key}", int(data.part_counters[key])))
+        if data.mda_program:
+            nck.submit(cmd.SetMdaProgram(data.mda_program))
         return nck
+
+    def _collect(self) -> None:
+        """Copy what the kernel keeps itself (part counters, MDA buffer) into the NC data."""
+        channel = self.nck.status().channel
+        data = self.session.ncdata
+        data.part_counters = {
+            "TOTAL_PARTS": int(channel.parts_total), "REQUIRED_PARTS": int(channel.parts_required),
+            "ACTUAL_PARTS": int(channel.part_count), "SPECIAL_PARTS": int(channel.parts_special),
+        }
+        data.mda_program = channel.mda_text
 
     def save(self) -> list[str]:
         """Write the retained sections that changed (alarm log included); return their names."""
         if self._copy is not None and getattr(self._copy, "discarded", False):
             return []
+        self._collect()
         store = getattr(self.session, "store_alarm_log", None)
         if callable(store):
             store(self.nck)

@@ -264,3 +264,17 @@ async def test_a_truncated_data_file_at_start_gives_the_alarm_and_the_backup(tmp
         assert data.tools[(3, 1)].get(3) == 50.0  # the backup generation
         assert data.r[2] == 7.0  # nothing else lost
         assert list((tmp_path / "retained").glob("tools.json.bad-*"))
+
+
+async def test_mda_buffer_and_part_counters_survive_a_restart(tmp_path: Path) -> None:
+    app = trainer(tmp_path)
+    async with app.run_test(size=SIZE):
+        app.submit(c.SetMdaProgram("G0 X10\nM30"))
+        app.submit(c.WriteData("$AC_TOTAL_PARTS", 17))
+        app.submit(c.WriteData("$AC_REQUIRED_PARTS", 40))
+    app.action_quit_hmi()
+    again = trainer(tmp_path)
+    async with again.run_test(size=SIZE):
+        channel = again.bridge.status.channel
+        assert channel.mda_text == "G0 X10\nM30"
+        assert (channel.parts_total, channel.parts_required) == (17, 40)
