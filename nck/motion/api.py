@@ -97,3 +97,30 @@ class JogControl(Protocol):
         an interrupted increment with a new ``jog_increment``); ``hold()`` and
         ``resume()`` act on the path only, and JOG must work while a path is held.
         """
+
+
+class MotionExtensions(Protocol):
+    """Optional extras of the planned motion (:class:`nck.motion.system.PlannedMotion`).
+
+    Callers use them through ``getattr`` so that the stand-in keeps working.
+    """
+
+    @property
+    def ipo_cycle_s(self) -> float:
+        """The interpolation cycle (MD10050 × MD10070) in seconds."""
+
+    def axis_states(self) -> Mapping[str, object]:
+        """Service-screen values per path axis (``nck.motion.servo.AxisState``)."""
+
+    def drain_cleared_alarms(self) -> list[int]:
+        """Numbers of self-clearing alarms (10621, 10631) whose cause went since the last call."""
+
+    def attach_setting_data(self, setting_data: Mapping[str, object]) -> None:
+        """Read the working-area setting data (SD43400 … SD43430) live from this mapping."""
+
+    def cycles_until_block_change(self) -> int:
+        """IPO cycles the current segment or dwell surely still runs; advancing that many at
+        once gives the same motion as cycle by cycle (numpy per block)."""
+
+    def enable_trace(self) -> None:
+        """Record every IPO-cycle setpoint from now on (``nck run --trace``)."""
