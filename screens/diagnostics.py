@@ -21,6 +21,7 @@ from textual.widgets import ContentSwitcher, Input, Static
 import nck as nck_package
 from nck import commands as cmd
 from nck.status import NckStatus
+from nck.trace import TraceError
 
 from hmi.area import AreaBase, show_text
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -268,8 +269,15 @@ class DiagnosticsScreen(AreaBase):
         elif not self.trace.chosen:
             self.show_hint("Trace: choose at least one signal")
             return
+        elif not hasattr(self.kernel, "cycle_listeners"):
+            self.show_hint("Trace: this kernel cannot be traced")
+            return
         else:
-            self.trace.start(self.kernel)
+            try:
+                self.trace.start(self.kernel)
+            except TraceError as exc:
+                self.show_hint(f"Trace: {exc}")
+                return
             self.query_one(TracePlot).cursor = 0
         self._refresh_view()
 
