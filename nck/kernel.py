@@ -87,11 +87,13 @@ class Nck(ManualControl, ControlSettings, StatusView):
         referenced: bool = False,
         interpreter_factory: Callable[[MachineConfig, ProgramSource, NcData], Interpreter] | None = None,
         access: AccessControl | None = None,
+        batch_cycles: int = 16,
     ) -> None:
         self.machine = machine or load_machine()
         self.data = data if data is not None else NcData()
         self.programs: ProgramSource = programs if programs is not None else _NoPrograms()
         self._interpreter_factory = interpreter_factory or _default_interpreter_factory
+        self.batch_cycles = max(1, int(batch_cycles))  # see step()
         self.motion = (motion_factory or planned_motion_factory)(self.machine)
         getattr(self.motion, "attach_setting_data", lambda _data: None)(self.data.setting_data)
         for axis in self.machine.path_axes:
@@ -189,10 +191,19 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self.step(cycles)
 
     def step(self, n_ipo_cycles: int = 1) -> None:
-        """Advance simulated time by ``n_ipo_cycles`` IPO cycles."""
-        for _ in range(max(0, int(n_ipo_cycles))):
+        """Advance simulated time by ``n_ipo_cycles`` IPO cycles.
+
+        While nothing in the channel needs attention every cycle (buffer full,
+        waiting for the motion to finish, nothing running) up to
+        ``batch_cycles`` cycles are handed to the motion system at once; cycle
+        listeners (traces) always get every cycle.
+        """
+        remaining = max(0, int(n_ipo_cycles))
+        while remaining > 0:
+            cycles = self._batch_size(remaining)
+            remaining -= cycles
             try:
-                self._cycle()
+                self._cycle(cycles)
             except NcAlarmError as error:
                 self._raise(error)
             except Exception as exc:  # noqa: BLE001
@@ -200,12 +211,15 @@ class Nck(ManualControl, ControlSettings, StatusView):
                 self._internal_reset()
 
     def run_until(self, predicate: Callable[["Nck"], bool], max_s: float) -> bool:
-        """Advance cycle by cycle until ``predicate(self)`` holds; False on timeout."""
+        """Advance until ``predicate(self)`` holds (checked between steps); False on timeout."""
         cycles = int(max_s / self._ipo_s + 0.5)
-        for _ in range(cycles):
+        done = 0
+        while done < cycles:
             if predicate(self):
                 return True
-            self.step(1)
+            step = self._batch_size(cycles - done)
+            self.step(step)
+            done += step
         return predicate(self)
 
     @property
@@ -543,15 +557,26 @@ class Nck(ManualControl, ControlSettings, StatusView):
     }
 
     # ------------------------------------------------------------- cycle
-    def _cycle(self) -> None:
-        self._time_s += self._ipo_s
+    def _batch_size(self, remaining: int) -> int:
+        """How many IPO cycles may run as one motion step now (1 = cycle by cycle)."""
+        if self.batch_cycles <= 1 or self.cycle_listeners or remaining <= 1:
+            return 1
+        run = self._overlay or self._run
+        if run is not None and self._sit.channel == ACTIVE and not self._jogging:
+            if run.wants_every_cycle(self._path_motion()):
+                return 1
+        return min(remaining, self.batch_cycles)
+
+    def _cycle(self, cycles: int = 1) -> None:
+        dt_s = self._ipo_s * cycles
+        self._time_s += dt_s
         run = self._overlay or self._run
         if run is not None and self._sit.channel == ACTIVE and not self._jogging:
             events = run.feed(self._path_motion(), self._run_options(), self._ipo_s)
             self._handle_events(run, events)
-        self.motion.advance(self._ipo_s)
+        self.motion.advance(dt_s)
         if self._test_motion is not None:
-            self._test_motion.advance(self._ipo_s)
+            self._test_motion.advance(dt_s)
         for error in self.motion.drain_alarms():
             self._motion_alarm(error)
         cleared = getattr(self.motion, "drain_cleared_alarms", None)
@@ -567,8 +592,8 @@ class Nck(ManualControl, ControlSettings, StatusView):
             self._sit.mode == "AUTO" and self._sit.channel == ACTIVE
             and self._sit.program == RUNNING and self._run is not None and self._run.kind == "AUTO"
         ):
-            self.runtime.run(self._ipo_s)
-        self.cycles_done += 1
+            self.runtime.run(dt_s)
+        self.cycles_done += cycles
         for listener in self.cycle_listeners:
             listener(self)
 

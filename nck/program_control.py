@@ -210,6 +210,14 @@ class ProgramRun:
         while self._deferred and self._deferred[0][0] <= done:
             events.append(self._deferred.popleft()[1])
 
+    def wants_every_cycle(self, motion: MotionSystem) -> bool:
+        """True while the run must be fed cycle by cycle (it can push more motion now)."""
+        if self._approach is not None or self._requeued:
+            return True
+        if self.phase != FEEDING or not motion.can_accept():
+            return False
+        return not self._must_wait_for_main_run(motion)
+
     def _must_wait_for_main_run(self, motion: MotionSystem) -> bool:
         """True while the next block needs the main run to catch up first."""
         needs = getattr(self.interp, "needs_preprocessing_stop", None)

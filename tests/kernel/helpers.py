@@ -14,6 +14,7 @@ def make_nck(programs: dict[str, str] | None = None, referenced: bool = True,
     """An Nck with the fake interpreter, the instant motion stand-in (exact times and
     positions) and an in-memory program store."""
     kwargs.setdefault("motion_factory", instant_motion_factory)
+    kwargs.setdefault("batch_cycles", 1)  # exact cycle-by-cycle timing
     return Nck(machine=machine or load_machine(), programs=MemoryPrograms(programs),
                referenced=referenced, interpreter_factory=fake_factory, **kwargs)
 

@@ -12,7 +12,8 @@ from tests.kernel.helpers import states, until_state
 
 
 def make(programs: dict[str, str]) -> Nck:
-    return Nck(programs=MemorySource(programs), referenced=True, motion_factory=instant_motion_factory)
+    return Nck(programs=MemorySource(programs), referenced=True, motion_factory=instant_motion_factory,
+               batch_cycles=1)
 
 
 def start(nck: Nck, name: str) -> None:
