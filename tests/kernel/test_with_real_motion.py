@@ -114,3 +114,23 @@ def test_spindle_jog_and_program_spindle_speed_on_the_planned_motion() -> None:
     spindle = next(a for a in nck.status().axes if a.kind == "spindle")
     assert spindle.speed_rpm == pytest.approx(1000.0, rel=0.01)
     assert until_state(nck, "reset", "aborted", 10.0)
+
+
+def test_batched_cycles_give_the_same_result_as_single_cycles(factory) -> None:
+    program = "N10 G0 X20 Y10\nN20 G1 X60 F2000\nN30 M0\nN40 G1 Y40\nN50 R1=$AA_IM[Y]\nN60 M30"
+    results = []
+    for batch in (1, 16):
+        nck = Nck(programs=MemorySource({"P.MPF": program}), referenced=True,
+                  motion_factory=factory, batch_cycles=batch)
+        nck.submit(c.SelectMode("AUTO"))
+        nck.submit(c.SelectProgram("P.MPF"))
+        nck.submit(c.CycleStart())
+        assert until_state(nck, "interrupted", "stopped", 30.0)
+        nck.submit(c.CycleStart())
+        assert until_state(nck, "reset", "aborted", 30.0)
+        results.append((nck.positions_mcs(), nck.data.r[1], nck.time_s, nck.status().channel.parts_total))
+    (pos1, r1, t1, parts1), (pos16, r16, t16, parts16) = results
+    assert pos16 == pytest.approx(pos1, abs=1e-6)
+    assert r16 == pytest.approx(r1) == pytest.approx(40.0, abs=1e-3)
+    assert t16 == pytest.approx(t1, abs=0.2)  # stops are noticed at most a batch later
+    assert parts1 == parts16 == 1
