@@ -13,8 +13,10 @@ One mode group with one channel. The channel's states follow the transition
 table of :mod:`nck.channel`; a running program is a
 :class:`nck.program_control.ProgramRun`; alarms live in
 :class:`nck.alarms.AlarmServer`. Motion is reached only through the
-protocols of :mod:`nck.motion.api`; ``motion_factory`` defaults to the
-stand-in :mod:`nck.motion.instant`.
+protocols of :mod:`nck.motion.api` (plus optional extensions found with
+``getattr``); ``motion_factory`` defaults to the planned motion system of
+:mod:`nck.motion.system`; :mod:`nck.motion.instant` is a simple stand-in
+(straight lines at constant speed) used by tests and for program test.
 
 Any exception other than :class:`NcAlarmError` inside ``submit``/``tick``
 becomes alarm 1 "internal error"; its traceback is kept in
@@ -57,7 +59,8 @@ ALARM_START_WITH_ALARM = 10200
 ALARM_START_UNREFERENCED = 10203
 ALARM_CONTINUE_WITH_START = 10208
 MDA_NAME = "MDA"
-_LOGBOOK_COMMANDS = (cmd.WriteData, cmd.SetKeyswitch, cmd.EnterPassword, cmd.DeletePassword)
+_LOGBOOK_COMMANDS = (cmd.WriteData, cmd.SetKeyswitch, cmd.EnterPassword, cmd.DeletePassword,
+                     cmd.ChangePassword, cmd.ActivateMachineData)
 
 
 class _NoPrograms:
@@ -248,6 +251,13 @@ class Nck(ManualControl, ControlSettings, StatusView):
             name = command.name.upper()
             if name.startswith(("MD", "SD", "$M", "$S")):
                 self.logbook.append(LogbookEntry(self._time_s, "data", f"{command.name} = {command.value}"))
+            return
+        if isinstance(command, cmd.ActivateMachineData):
+            self.logbook.append(LogbookEntry(self._time_s, "data", "machine data activated (NEW CONFIG)"))
+            return
+        if isinstance(command, cmd.ChangePassword):
+            self.logbook.append(LogbookEntry(self._time_s, "access",
+                                             f"password of access level {command.level} changed"))
             return
         what = {cmd.SetKeyswitch: "keyswitch", cmd.EnterPassword: "password entered",
                 cmd.DeletePassword: "password deleted"}.get(type(command), "access")
