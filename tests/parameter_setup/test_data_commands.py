@@ -156,3 +156,15 @@ def test_bare_kernel_is_unprotected() -> None:
     assert nck.submit(c.WriteData("$P_UIFR[1,X,TR]", 3)) == c.Accepted()
     assert nck.submit(c.WriteData("SD42100", 2000.0)) == c.Accepted()
     assert nck.data.setting_data["SD42100"] == 2000.0
+
+
+def test_a_work_offset_written_by_command_acts_when_g54_is_selected(session: Session) -> None:
+    nck = kernel(session, referenced=True)
+    nck.submit(c.EnterPassword("CUSTOMER"))
+    assert nck.submit(c.WriteData("$P_UIFR[1,X,TR]", 10)) == c.Accepted()
+    assert nck.submit(c.WriteData("$TC_DP3[2,1]", 0)) == c.Accepted()
+    nck.submit(c.SelectMode("MDA"))
+    nck.submit(c.SetMdaProgram("G54 G0 X5 Y0 Z0"))
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.status().channel.channel_state == "reset", 30.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(15.0)
