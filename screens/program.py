@@ -44,6 +44,16 @@ from screens.program_files import ProgramFiles, decode_program
 from screens.program_runs import CheckAndSimulation
 
 
+def edit_level() -> int:
+    """The access level that may edit programs (``data/access.toml``, 7 when unknown)."""
+    try:
+        from nck.access import Action, required_level
+
+        return required_level(Action.EDIT_PROGRAM)
+    except (ImportError, KeyError, ValueError):
+        return 7
+
+
 def _is_executing(status: NckStatus | None, program: str | None) -> bool:
     """True when ``program`` is the selected program and the channel is not in reset."""
     if status is None or program is None:
@@ -424,6 +434,8 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             reason = "program is being executed"
         elif self.files.is_in_use(self.program):
             reason = "program is in use (selected)"
+        elif self.access_level > edit_level():
+            reason = f"editing needs access level {edit_level()}"
         changed = reason != self.read_only_reason
         self.read_only_reason = reason
         if self._ready:

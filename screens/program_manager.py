@@ -36,8 +36,24 @@ from nck.storage import ProgramEntry
 
 from screens.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 
-PROGRAM_SELECTION_LEVEL = 6
-"""Selecting a program for execution needs keyswitch position 1 (level 6) or better."""
+def _level(action: str, fallback: int) -> int:
+    """The access level an action needs (``data/access.toml``), or ``fallback``."""
+    try:
+        from nck.access import Action, required_level
+
+        return required_level(Action(action))
+    except (ImportError, KeyError, ValueError):
+        return fallback
+
+
+def selection_level() -> int:
+    """Level that may select a program for execution (keyswitch 1 = level 6 by default)."""
+    return _level("select_program", 6)
+
+
+def edit_level() -> int:
+    """Level that may create, change or delete programs."""
+    return _level("edit_program", 4)
 
 
 class PromptDialog(ModalScreen[str | None]):
@@ -182,18 +198,18 @@ class ProgramManagerScreen(AreaBase):
         on_entry = lambda s: s.current_entry() is not None  # noqa: E731
         return SoftkeyMenu.of(
             [
-                Softkey("pm.execute", "Execute", "execute", level=PROGRAM_SELECTION_LEVEL,
+                Softkey("pm.execute", "Execute", "execute", level=selection_level(),
                         enabled=lambda s: s.current_entry() is not None and s.current_entry().kind == "MPF"),
-                Softkey("pm.new", "New", "new"),
+                Softkey("pm.new", "New", "new", level=edit_level()),
                 Softkey("pm.open", "Open", "open", enabled=on_entry),
                 Softkey("pm.copy", "Copy", "copy", enabled=on_program),
-                Softkey("pm.paste", "Paste", "paste", enabled=lambda s: s._clipboard is not None),
-                Softkey("pm.rename", "Rename", "rename", enabled=on_program),
-                Softkey("pm.delete", "Delete", "delete", enabled=on_entry),
+                Softkey("pm.paste", "Paste", "paste", level=edit_level(), enabled=lambda s: s._clipboard is not None),
+                Softkey("pm.rename", "Rename", "rename", level=edit_level(), enabled=on_program),
+                Softkey("pm.delete", "Delete", "delete", level=edit_level(), enabled=on_entry),
                 Softkey("pm.search", "Search", "search"),
             ],
             [
-                Softkey("pm.import", "Import", "import_file"),
+                Softkey("pm.import", "Import", "import_file", level=edit_level()),
                 Softkey("pm.export", "Export", "export_file", enabled=on_program),
                 None,
                 Softkey("pm.dir_mpf", "Part\nprograms", "show_directory('MPF')",

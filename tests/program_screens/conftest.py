@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pytest
 
+from nck.commands import SetKeyswitch
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
@@ -31,13 +32,15 @@ def nc_files(root: Path) -> NcFileSystem:
     return NcFileSystem(root)
 
 
-def make_program_app(root: Path, referenced: bool = True) -> HmiApp:
+def make_program_app(root: Path, referenced: bool = True, keyswitch: int = 3) -> HmiApp:
     """The HMI on a real kernel whose programs live in the NC file system ``root``.
 
     As in the app, the selected program counts as in use for the file system.
+    The keyswitch starts in position 3 (level 4: programs may be edited and selected).
     """
     files = nc_files(root)
     nck = Nck(programs=files, referenced=referenced)
+    nck.submit(SetKeyswitch(keyswitch))
     files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
     return HmiApp(nck, realtime=False)
 

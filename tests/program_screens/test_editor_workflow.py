@@ -40,7 +40,6 @@ async def test_create_fix_save_select_and_run(data_dir: Path) -> None:
         saved = (data_dir / "MPF" / "TRAIN1.MPF").read_text()
         assert "N10 G0 X10 Y5" in saved and "N20 M30" in saved
         assert not screen.is_modified()
-        await pilot.press("alt+t")  # keyswitch 1: program selection allowed
         await pilot.press("f6")  # Execute: AUTO, select, Machine area
         await pilot.pause()
         status = app.bridge.status
@@ -171,7 +170,7 @@ async def test_running_program_is_read_only(data_dir: Path) -> None:
     (data_dir / "MPF" / "HOLD.MPF").write_text("N10 G0 X5\nN20 M0\nN30 M30\n")
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("alt+t", "alt+n")
+        await pilot.press("alt+n")
         await pilot.pause()
         await pilot.press("down", "f1")  # HOLD.MPF (second row), Execute
         await pilot.pause()
@@ -292,7 +291,7 @@ async def test_simulation_marks_the_current_block_in_auto(data_dir: Path) -> Non
     """While the program runs in AUTO (single block), the simulation marks the executing block."""
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("alt+t", "alt+n", "f1")  # keyswitch 1, Execute DEMO.MPF → Machine area
+        await pilot.press("alt+n", "f1")  # Execute DEMO.MPF → Machine area
         await pilot.pause()
         assert app.current_mode == "machine"
         await pilot.press("alt+k", "alt+g", "alt+g", "alt+g")  # single block: three blocks

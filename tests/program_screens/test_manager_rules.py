@@ -85,7 +85,6 @@ async def test_program_being_executed_cannot_be_renamed_or_deleted(data_dir: Pat
     (data_dir / "MPF" / "DEMO.MPF").write_text("N10 G0 X5\nN20 M0\nN30 M30\n")
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("alt+t")  # keyswitch 1: selection allowed
         await open_manager(pilot)
         await pilot.press("f1")  # Execute
         await pilot.pause()
@@ -144,3 +143,24 @@ async def test_workpiece_folder(data_dir: Path) -> None:
         await pilot.pause()
         assert app.screen.directory == "WKS/SHAFT.WPD"
         assert listed(app) == ["SHAFT.MPF"]
+
+
+async def test_keyswitch_0_may_not_edit(data_dir: Path) -> None:
+    """At keyswitch 0 (level 7) New is refused and the editor opens the program read-only."""
+    app = make_program_app(data_dir, keyswitch=0)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_manager(pilot)
+        await pilot.press("f2")  # New needs level 4
+        await pilot.pause()
+        assert "needs access level 4" in hint(app)
+        assert type(app.screen).__name__ == "ProgramManagerScreen"
+        await pilot.press("f3")  # Open is allowed: reading needs level 7
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "MPF/DEMO.MPF"
+        assert screen.editor.read_only
+        assert screen.read_only_reason == "editing needs access level 4"
+        await pilot.press("alt+t", "alt+t", "alt+t")  # keyswitch 3: level 4
+        await pilot.pause()
+        await pilot.pause()
+        assert not screen.editor.read_only

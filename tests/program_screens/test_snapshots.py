@@ -37,7 +37,7 @@ def test_program_manager(snap_compare, pinned: Path) -> None:
     app = make_program_app(pinned)
 
     async def run_before(pilot) -> None:
-        await pilot.press("alt+t", "alt+n", "down", "f1")  # select POCKET.MPF
+        await pilot.press("alt+n", "down", "f1")  # select POCKET.MPF
         await pilot.pause()
         await pilot.press("alt+n")
         await pilot.pause()
