@@ -604,7 +604,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         ):
             self.runtime.run(dt_s)
         self.cycles_done += cycles
-        for listener in self.cycle_listeners:
+        for listener in tuple(self.cycle_listeners):  # a listener may remove itself
             listener(self)
 
     def _count_block(self, block: Any) -> None:

@@ -155,7 +155,7 @@ class TraceRecorder:
         self.columns: dict[str, list[float]] = {name: [] for name in settings.signals}
         self._readers = [(name, _reader(name)) for name in settings.signals]
         self._start_s = 0.0
-        self._was_active = False
+        self._was_active = (False, False)
         self._nck: Any = None
 
     # -- attaching -------------------------------------------------------------------
@@ -183,9 +183,12 @@ class TraceRecorder:
 
     # -- sampling ----------------------------------------------------------------------
     @staticmethod
-    def _active(nck: Any) -> bool:
+    def _active(nck: Any) -> tuple[bool, bool]:
+        """(channel active, program not aborted) in AUTOMATIC or MDA."""
         situation = nck.situation
-        return situation.channel == "active" and situation.mode in ("AUTO", "MDA")
+        program_mode = situation.mode in ("AUTO", "MDA")
+        return (program_mode and situation.channel == "active",
+                program_mode and situation.program != "aborted")
 
     def _begin(self, nck: Any) -> None:
         self.state = "recording"
@@ -193,8 +196,11 @@ class TraceRecorder:
 
     def _on_cycle(self, nck: Any) -> None:
         if self.state == "armed":
+            # NC START: the channel became active, or a program left "aborted" (an
+            # alarm may stop it again within its very first cycle).
             active = self._active(nck)
-            if active and not self._was_active:
+            was_active = self._was_active
+            if (active[0] and not was_active[0]) or (active[1] and not was_active[1]):
                 self._begin(nck)
                 self._start_s -= float(nck.ipo_cycle_s)  # the starting cycle is the first sample
             self._was_active = active

@@ -96,3 +96,41 @@ def test_csv_columns_and_format() -> None:
     assert csv_column("X.velocity") == "X_velocity_mm_min"
     assert csv_column("feed_override") == "feed_override_pct"
     assert trace_csv([0.004, 0.008], {"X": [1.0, 2.5]}) == "t_s,X\n0.004,1.000000\n0.008,2.500000\n"
+
+
+def test_logbook_records_access_level_and_machine_data_changes() -> None:
+    nck = kernel()
+    assert nck.submit(cmd.EnterPassword("EVENING")) == cmd.Accepted()
+    assert nck.submit(cmd.WriteData("MD32000[X]", 5000)) == cmd.Accepted()
+    assert nck.submit(cmd.WriteData("R1", 5)) == cmd.Accepted()  # not a machine datum: not logged
+    assert nck.submit(cmd.ActivateMachineData()) == cmd.Accepted()
+    assert nck.submit(cmd.DeletePassword()) == cmd.Accepted()
+    assert isinstance(nck.submit(cmd.EnterPassword("wrong")), cmd.Rejected)  # refused: not logged
+    assert [(e.kind, e.text) for e in nck.logbook] == [
+        ("access", "password entered: access level 7 -> 2"),
+        ("data", "MD32000[X] = 5000"),
+        ("data", "machine data activated (NEW CONFIG)"),
+        ("access", "password deleted: access level 2 -> 7"),
+    ]
+    assert all("EVENING" not in e.text for e in nck.logbook)
+
+
+def test_nc_start_trigger_fires_when_an_alarm_stops_the_program_at_once() -> None:
+    nck = kernel()
+    recorder = TraceRecorder(TraceSettings(("X.position",), "nc_start", 0.1), nck.machine)
+    recorder.attach(nck)
+    nck.tick(0.1)
+    start(nck, "LIMIT.MPF")  # X20 is beyond the +5 mm limit: 10720 in the first cycles
+    nck.tick(0.2)
+    assert any(a.number == 10720 for a in nck.status().alarms)
+    assert recorder.state == "done" and recorder.sample_count == 25
+
+
+def test_a_finished_recorder_does_not_hide_the_next_listener() -> None:
+    nck = kernel()
+    short = TraceRecorder(TraceSettings(("X.position",), "now", 0.004), nck.machine)
+    short.attach(nck)
+    full = AxisTrace(["X"])
+    full.attach(nck)
+    nck.tick(0.04)
+    assert short.sample_count == 1 and len(full.times_s) == 10
