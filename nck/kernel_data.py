@@ -156,7 +156,8 @@ class DataWrites:
 
     def _write_machine_datum(self, name: str, value: Any) -> SubmitResult:
         result = self.machine_data.write(name, value, level=self._write_level())
-        if result.active_now and result.ref.definition.kind == "md":
+        definition = result.ref.definition
+        if result.active_now and definition.kind == "md" and definition.scope != "display":
             self._adopt_active_machine()
         return Accepted()
 
@@ -278,7 +279,12 @@ class DataWrites:
         return changed
 
     def _adopt_active_machine(self) -> None:
-        """Use the store's active machine: new interpreters, a motion system with its values."""
+        """Use the store's active machine: new interpreters, a motion system with its values.
+
+        Only in channel reset with the axes at rest; otherwise the next RESET / NEW CONFIG does it.
+        """
+        if self._sit.channel != "reset":  # type: ignore[attr-defined]
+            return  # a stopped program keeps its data; the RESET that ends it adopts the new one
         machine = self.machine_data.active_machine()
         if machine.md == self.machine.md:  # type: ignore[attr-defined]
             return

@@ -168,3 +168,29 @@ def test_a_work_offset_written_by_command_acts_when_g54_is_selected(session: Ses
     assert nck.submit(c.CycleStart()) == c.Accepted()
     assert nck.run_until(lambda k: k.status().channel.channel_state == "reset", 30.0)
     assert nck.positions_mcs()["X"] == pytest.approx(15.0)
+
+
+def test_md_written_while_a_program_is_stopped_waits_for_the_reset(session: Session) -> None:
+    session.files.create("PART.MPF", "N10 G1 X50 F600\nN20 M30\n")
+    nck = kernel(session, referenced=True)
+    nck.submit(c.EnterPassword("EVENING"))
+    nck.submit(c.SelectMode("AUTO"))
+    assert nck.submit(c.SelectProgram("PART.MPF")) == c.Accepted()
+    nck.submit(c.CycleStart())
+    nck.run_until(lambda k: k.positions_mcs()["X"] > 1.0, 10.0)
+    nck.submit(c.CycleStop())
+    nck.step(200)
+    assert nck.submit(c.WriteData("MD32200[0,X]", 3)) == c.Accepted()  # POSCTRL_GAIN, so
+    assert isinstance(nck.submit(c.ActivateMachineData()), c.Rejected)  # not while interrupted
+    assert gain(nck) != 3
+    nck.submit(c.CycleStart())  # the stopped program goes on
+    assert nck.run_until(lambda k: k.status().channel.channel_state == "reset", 30.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(50.0, abs=1e-3)
+    nck.submit(c.Reset())
+    assert gain(nck) == 3
+
+
+def gain(nck: Nck) -> float:
+    """MD32200[0,X] as the kernel's machine has it."""
+    value = nck.machine.md_value("MD32200", "X", None)
+    return value[0] if isinstance(value, list) else value
