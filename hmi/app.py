@@ -33,6 +33,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
+from textual import events
 from textual.app import App
 from textual.screen import Screen
 
@@ -178,6 +179,17 @@ class HmiApp(MachineControlPanel, App):
         if self.nc_session is not None and self.bridge.realtime:
             self.set_interval(RETAINED_SAVE_PERIOD_S, self.save_nc_data, name="nc-data-save")
         self.switch_mode("machine")
+
+    def on_cursor_position(self, event: events.CursorPosition) -> None:
+        """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3).
+
+        Terminals send Shift+F3 as ``ESC [1;2R``, which Textual's parser reads as a cursor
+        position report (row 1, column 2). The HMI never asks for a cursor position in
+        full-screen mode, so such a report can only be the key.
+        """
+        if (event.x, event.y) == (1, 0):
+            event.stop()
+            self.post_message(events.Key("shift+f3", None))
 
     # -- kernel ---------------------------------------------------------------------------
     def submit(self, command: Any) -> SubmitResult:
