@@ -37,7 +37,7 @@ class NcDataSession:
         nck = Nck(**self.session.kernel_arguments())
         nck.md_store = self.session.md
         files = self.session.files
-        files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
+        files.in_use_check = lambda: programs_in_execution(nck.status())
         for alarm in self.session.startup_alarms:
             nck.raise_alarm(alarm)
         restore = getattr(self.session, "restore_alarm_log", None)
@@ -120,3 +120,15 @@ def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral
     """Build the kernel on the NC data directory; return it and the function run on quit."""
     holder = build_session(machine, data_dir, ephemeral, program)
     return holder.nck, holder.quit
+
+
+def programs_in_execution(status: Any) -> list[str]:
+    """The programs that may not be edited, renamed or deleted: the one being executed.
+
+    A program that is only selected (channel in reset, program aborted) stays editable, as on
+    the control; once started it is in use until RESET or program end.
+    """
+    channel = status.channel
+    if channel.selected_program and channel.program_state != "aborted":
+        return [channel.selected_program]
+    return []

@@ -10,6 +10,7 @@ from nck.commands import SetKeyswitch
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
+from hmi.startup import programs_in_execution
 from nck.storage import NcFileSystem
 
 SIZE = (160, 48)
@@ -35,13 +36,13 @@ def nc_files(root: Path) -> NcFileSystem:
 def make_program_app(root: Path, referenced: bool = True, keyswitch: int = 3) -> HmiApp:
     """The HMI on a real kernel whose programs live in the NC file system ``root``.
 
-    As in the app, the selected program counts as in use for the file system.
+    As in the app, the program being executed counts as in use for the file system.
     The keyswitch starts in position 3 (level 4: programs may be edited and selected).
     """
     files = nc_files(root)
     nck = Nck(programs=files, referenced=referenced)
     nck.submit(SetKeyswitch(keyswitch))
-    files.in_use_check = lambda: [p for p in [nck.status().channel.selected_program] if p]
+    files.in_use_check = lambda: programs_in_execution(nck.status())
     return HmiApp(nck, realtime=False)
 
 

@@ -189,12 +189,17 @@ async def test_running_program_is_read_only(data_dir: Path) -> None:
         await pilot.press("x")
         assert screen.editor.text.startswith("N10 G0 X5")
         assert screen.read_only_reason == "program is being executed"
-        await pilot.press("alt+q")  # RESET: no longer executed, but still the selected program
+        await pilot.press("alt+q")  # RESET: still selected, no longer executed
         app.bridge.advance(0.1)
         await pilot.pause()
         await pilot.pause()
-        assert screen.read_only_reason == "program is in use (selected)"
-        assert screen.editor.read_only
+        assert app.bridge.status.channel.channel_state == "reset"
+        await pilot.press("f10")  # close the read-only view and open it again
+        await pilot.pause()
+        await pilot.press("alt+n", "f3")
+        await pilot.pause()
+        assert app.screen.program == "MPF/HOLD.MPF"
+        assert not app.screen.editor.read_only  # a selected program in reset may be fixed
 
 
 async def test_search_replace_renumber_undo(data_dir: Path) -> None:
