@@ -102,8 +102,22 @@ class DataWrites:
         if self.protected:
             self._access.require(action, what)  # type: ignore[attr-defined]
 
+    @property
+    def access_state(self) -> Any:
+        """Keyswitch position and password state (``nck.access.AccessState``), None when unprotected."""
+        return self._access.state if self.protected else None  # type: ignore[attr-defined]
+
+    def action_level(self, action: Action | str) -> int:
+        """The protection level ``action`` (an Action or its name, ``"READ_TOOL"``) needs;
+        7 when unprotected. Creates nothing."""
+        if isinstance(action, str):
+            action = Action[action.strip().upper()]
+        return self._access.required(action) if self.protected else 7  # type: ignore[attr-defined]
+
     def required_level(self, name: str) -> int:
         """The protection level writing the datum ``name`` needs (7 when unprotected)."""
+        if not self.protected:
+            return 7
         upper = name.strip().upper()
         try:
             if upper.startswith(("MD", "SD", "$M", "$S")):

@@ -85,6 +85,11 @@ class ParameterScreen(AreaBase):
             self._levels[key] = int(reader(name)) if callable(reader) else 7
         return self._levels[key]
 
+    def action_level(self, action_name: str) -> int:
+        """The level a protected function (``nck.access.Action`` name) needs; 7 if unknown."""
+        reader = getattr(self.kernel, "action_level", None)
+        return int(reader(action_name)) if callable(reader) else 7
+
     # -- layout -------------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
         """One window: the table of the view on display."""
@@ -142,12 +147,7 @@ class ParameterScreen(AreaBase):
                 None, None, None, None, None if self.view == "wo_active" else edit,
             ]
         if self.view == "r":
-            clear_level = getattr(self.kernel, "access", None)
-            level = 7
-            if clear_level is not None:
-                from nck.access import Action
-
-                level = clear_level.required(Action.CLEAR_R_PARAMETERS)
+            level = self.action_level("CLEAR_R_PARAMETERS")
             return [Softkey("param.r.clear", "Clear\nall", "clear_r", level=level),
                     None, None, None, None, None, None, edit]
         return [None] * 7 + [edit]
@@ -316,13 +316,10 @@ class ParameterScreen(AreaBase):
 
     def read_refused(self) -> DataTable | None:
         """A table saying which level reading the view's data needs, when the current one does not suffice."""
-        access = getattr(self.kernel, "access", None) if getattr(self.kernel, "protected", False) else None
         read = {"tools": "READ_TOOL", "wear": "READ_TOOL", "gud": "READ_USER_DATA"}.get(self.view)
-        if access is None or read is None:
+        if read is None:
             return None
-        from nck.access import Action
-
-        needed = access.required(Action[read])
+        needed = self.action_level(read)
         if self.access_level <= needed:
             return None
         what = "tool offsets" if read == "READ_TOOL" else "user variables"

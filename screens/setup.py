@@ -342,8 +342,7 @@ class SetupScreen(AreaBase):
         """Access level, keyswitch, password state, pending MD, and the control's date and time."""
         status = self.status
         level = status.access_level if status is not None else 7
-        access = getattr(self.kernel, "_access", None)
-        state = getattr(access, "state", None)
+        state = getattr(self.kernel, "access_state", None)
         keyswitch = status.keyswitch_position if status is not None else None
         if keyswitch is None and state is not None:
             keyswitch = state.keyswitch_position
