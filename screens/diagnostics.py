@@ -15,6 +15,7 @@ from typing import Any, ClassVar
 
 from rich.text import Text
 from textual.app import ComposeResult
+from textual.binding import Binding
 from textual.containers import Vertical
 from textual.widgets import ContentSwitcher, Input, Static
 
@@ -56,6 +57,14 @@ class DiagnosticsScreen(AreaBase):
     AREA_ID: ClassVar[str] = "diagnostics"
     AREA_TITLE: ClassVar[str] = "DIAGNOSTICS"
     CSS_PATH = "diagnostics.tcss"
+    AUTO_FOCUS = None  # the filter field takes the keys only after the Filter softkey
+    BINDINGS: ClassVar[list[Binding]] = [
+        Binding("left", "arrow(-1)", "Trace cursor left", show=False),
+        Binding("right", "arrow(1)", "Trace cursor right", show=False),
+        Binding("pagedown", "page(1)", "Older log entries", show=False),
+        Binding("pageup", "page(-1)", "Newer log entries", show=False),
+    ]
+    """Cursor keys move the trace cursor, page keys scroll the alarm log (not over the filter field)."""
 
     def __init__(self) -> None:
         super().__init__(id="area-diagnostics")
@@ -292,6 +301,17 @@ class DiagnosticsScreen(AreaBase):
             return
         self.show_hint(f"Trace written to {path}")
 
+    def action_arrow(self, direction: int) -> None:
+        """Left/Right in the trace view: move the cursor by a hundredth of the recording."""
+        if self.view == "trace":
+            plot = self.query_one(TracePlot)
+            plot.move_cursor(int(direction) * max(1, len(plot.times) // 100))
+
+    def action_page(self, direction: int) -> None:
+        """Page Down/Up in the alarm log: older/newer entries."""
+        if self.view == "log":
+            self.action_page_log(direction)
+
     def action_trace_cursor(self, direction: int) -> None:
         """Move the cursor by a fiftieth of the recording."""
         plot = self.query_one(TracePlot)
@@ -306,6 +326,7 @@ class DiagnosticsScreen(AreaBase):
         if not self.is_mounted:
             return
         self.query_one("#diag-views", ContentSwitcher).current = f"view-{self.view}"
+        self.set_focus(None)
         self._log_seq = -1
         self._refresh_view()
         self.refresh_softkeys()

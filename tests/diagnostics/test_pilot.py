@@ -179,6 +179,9 @@ async def test_trace_of_x_on_the_screen_reproduces_nck_run_trace(tmp_path: Path)
         await pilot.press("shift+f8")
         await pilot.pause()
         assert plot.cursor > 0 and plot.readout().startswith(f"t = {recorder.times_s[plot.cursor]:.3f} s")
+        before = plot.cursor
+        await pilot.press("right", "right", "left")
+        assert plot.cursor == before + max(1, recorder.sample_count // 100)
         screen.export_dir = tmp_path
         await pilot.press("shift+f6")
         await pilot.pause()
