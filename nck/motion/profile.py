@@ -220,6 +220,12 @@ def build_profile(
         return builder.build(length)
     d1 = ramp_distance(v0, peak, accel, jerk)
     d3 = ramp_distance(peak, v_end, accel, jerk)
+    if v0 > v_max and d1 + d3 > rest * (1.0 + 1e-9) + 1e-12:
+        # Above the new limit and too close to the end for two ramps: brake straight to
+        # the end velocity (feasible, see above) and cruise at it.
+        peak = v_end
+        d1 = ramp_distance(v0, peak, accel, jerk)
+        d3 = 0.0
     builder.ramp(peak, accel, jerk)
     builder.cruise(rest - d1 - d3)
     builder.ramp(v_end, accel, jerk)

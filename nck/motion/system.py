@@ -458,6 +458,11 @@ class PlannedMotion:
             return
         exit_v = min(seg.exit_limit, vmax)
         profile = build_profile(seg.remaining, v, exit_v, vmax, seg.accel, seg.jerk, a_start=a)
+        if profile.v_end > exit_v + 1e-6 and profile.v_end > run.profile.v_end + 1e-6:
+            # Too late to brake harder within this segment: keep the running profile
+            # (its end velocity is safe); the new limits apply from the next segment.
+            seg.done_s = run.s_begin
+            return
         self.run = PathRun([seg], seg.done_s, profile, tau=0.0, kind="segment", exit_target=exit_v)
 
     def _brake_path(self, kind: str) -> None:
@@ -537,6 +542,8 @@ class PlannedMotion:
                 self.wait_cycles = 1
             return False
         self.v_path = 0.0
+        end_s = min(run.profile.length, float(run._offsets[-1]))
+        self.cmd = run.positions(np.array([end_s]))[0]
         if run.kind == "abort":
             return False
         index, local = run.split_end()

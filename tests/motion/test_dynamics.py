@@ -337,3 +337,30 @@ def test_reset_brakes_and_a_new_program_starts_from_the_stop_point() -> None:
     assert pos["Y"] == pytest.approx(0.0)
     assert 20.0 < pos["X"] < 100.0
     assert pos["Z"] == pytest.approx(-10.0)
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    soft=st.booleans(), t_stop=st.integers(10, 370), hold=st.booleans(),
+    first=st.floats(20, 120), t_change=st.integers(10, 250), second=st.floats(0, 120),
+)
+def test_stop_and_override_changes_keep_limits_and_reach_the_end(soft, t_stop, hold, first, t_change, second) -> None:
+    m = motion()
+    m.push(move("G1", 12000.0, soft=soft, X=100.0))
+    m.push(move("G1", 12000.0, soft=soft, X=100.0, Y=80.0))
+    m.advance(t_stop * m.ipo_cycle_s)
+    if hold:
+        m.hold()
+        m.advance(1.0)
+    m.set_overrides(first, 100.0)
+    m.resume()
+    m.advance(t_change * m.ipo_cycle_s)
+    m.set_overrides(second, 100.0)
+    m.advance(0.5)
+    m.set_overrides(100.0, 100.0)
+    run_to_idle(m)
+    rows, _v, a, j = derivatives(m)
+    assert np.allclose(rows[-1], [100.0, 80.0, 0.0], atol=1e-9)
+    assert np.all(np.abs(a) <= AMAX * OVL * (1 + 1e-6) + 1e-3)
+    if soft:
+        assert np.all(np.abs(j) <= JMAX * OVL * (1 + 1e-6) + 1e-1)
