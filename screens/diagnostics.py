@@ -396,6 +396,10 @@ class DiagnosticsScreen(AreaBase):
             "Measured on this computer (wall-clock time spent per simulated IPO cycle)", rows))
 
     def _render_trace(self, status: NckStatus) -> None:
+        machine = getattr(self.kernel, "machine", None)
+        if machine is not None and (self.trace is None or self.trace.machine is not machine) and not (
+                self.trace is not None and self.trace.running):
+            self.trace = TraceSession(machine)  # a new kernel (Reset (po)) may have other axes
         if self.trace is None:
             return
         show_text(self.query_one("#trace-settings", Static), self.trace.settings_text())
