@@ -15,16 +15,15 @@ from __future__ import annotations
 from typing import Any, Callable, ClassVar
 
 from textual.app import ComposeResult
-from textual.widgets import Static
 
 from nck import commands as cmd
 from nck.commands import Accepted
 from nck.status import NckStatus
 
-from hmi.area import AreaBase, show_text
+from hmi.area import AreaBase
 from hmi.softkeys import Softkey, SoftkeyMenu
 from screens.parameter_tables import (
-    EDIT_BINDINGS, Column, ConfirmDialog, DataTable, TableCursor, ValueDialog, render_table,
+    EDIT_BINDINGS, Column, ConfirmDialog, DataTable, TableCursor, TableWindow, ValueDialog,
 )
 from screens.parameter_views import (
     active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,
@@ -33,7 +32,6 @@ from screens.parameter_views import (
 
 VIEWS = ("tools", "wear", "wo_active", "wo_overview", "wo_details", "r", "gud", "sd")
 DEFAULT_TOOL_TYPE = 120  # end mill
-TABLE_HEIGHT = 36
 
 
 def level_key(name: str) -> str:
@@ -93,16 +91,12 @@ class ParameterScreen(AreaBase):
     # -- layout -------------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
         """One window: the table of the view on display."""
-        yield Static("", id="param-table", markup=False)
+        yield TableWindow(id="param-table")
 
     def on_mount(self) -> None:
         """Show the first view."""
         super().on_mount()
         self.refresh_table()
-
-    def on_resize(self) -> None:
-        """The table fills the window: draw it again for the new height."""
-        self.call_after_refresh(self.refresh_table)
 
     # -- softkeys -------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
@@ -349,10 +343,8 @@ class ParameterScreen(AreaBase):
         if not self.is_mounted:
             return
         self.table = self.build_table()
-        widget = self.query_one("#param-table", Static)
-        height = widget.size.height or TABLE_HEIGHT
-        show_text(widget, render_table(self.table, self.cursors[self.view], height, self.access_level,
-                                       show_cursor=self.view != "wo_active"))
+        self.query_one("#param-table", TableWindow).show(
+            self.table, self.cursors[self.view], self.access_level, show_cursor=self.view != "wo_active")
 
 
 AreaScreen = ParameterScreen

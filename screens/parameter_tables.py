@@ -18,6 +18,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
 from textual.screen import ModalScreen
+from textual.widget import Widget
 from textual.widgets import Input, Static
 
 
@@ -146,9 +147,33 @@ def render_table(table: DataTable, cursor: TableCursor, height: int, level: int,
         text.append("\n")
     more = ""
     if len(table.rows) > body:
-        more = f"  rows {cursor.top + 1}–{cursor.top + len(shown)} of {len(table.rows)}"
-    text.append(f" {table.note}{more}", style="dim")
+        more = f"rows {cursor.top + 1}–{cursor.top + len(shown)} of {len(table.rows)}   "
+    text.append(f" {more}{table.note}", style="dim")
     return text
+
+
+class TableWindow(Widget):
+    """A window that draws a :class:`DataTable` in whatever height it has."""
+
+    DEFAULT_CSS = """
+    TableWindow { height: 1fr; text-wrap: nowrap; text-overflow: clip; }
+    """
+
+    def __init__(self, id: str | None = None) -> None:  # noqa: A002
+        super().__init__(id=id)
+        self._model: tuple[DataTable, TableCursor, int, bool] | None = None
+
+    def show(self, table: DataTable, cursor: TableCursor, level: int, show_cursor: bool = True) -> None:
+        """Draw ``table`` with ``cursor`` for access level ``level`` (at the next repaint)."""
+        self._model = (table, cursor, level, show_cursor)
+        self.refresh()
+
+    def render(self) -> Text:
+        """The table in the window's current height."""
+        if self._model is None:
+            return Text("")
+        table, cursor, level, show_cursor = self._model
+        return render_table(table, cursor, self.size.height or 30, level, show_cursor)
 
 
 class ValueDialog(ModalScreen[str | None]):

@@ -27,7 +27,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from screens.parameter_tables import (
-    EDIT_BINDINGS, Cell, Column, ConfirmDialog, DataTable, TableCursor, ValueDialog, render_table,
+    EDIT_BINDINGS, Cell, Column, ConfirmDialog, DataTable, TableCursor, TableWindow, ValueDialog,
 )
 
 MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",
@@ -35,7 +35,6 @@ MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data"
 ACTIVATION_TEXT = {"so": "immediately", "re": "at RESET", "cf": "at NEW CONFIG (Set MD active) or RESET",
                    "po": "at POWER ON (Reset (po))"}
 LEVEL_NAMES = {0: "System", 1: "Manufacturer", 2: "Service", 3: "User"}
-TABLE_HEIGHT = 34
 
 wall_clock: Callable[[], datetime] = datetime.now
 """The computer's clock: the control's date at power on (tests replace it)."""
@@ -110,7 +109,7 @@ class SetupScreen(AreaBase):
     def compose_content(self) -> ComposeResult:
         """Search field and MD table, or the access window."""
         yield Input(placeholder="search by number or name, Enter applies (empty: all)", id="md-search")
-        yield Static("", id="setup-table", markup=False)
+        yield TableWindow(id="setup-table")
         yield Static("", id="setup-access", markup=False)
 
     def on_mount(self) -> None:
@@ -118,10 +117,6 @@ class SetupScreen(AreaBase):
         self.query_one("#md-search", Input).cursor_blink = False
         super().on_mount()
         self.action_show_view(self.view)
-
-    def on_resize(self) -> None:
-        """Draw the table again for the new height."""
-        self.call_after_refresh(self.refresh_view)
 
     # -- softkeys ---------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
@@ -332,9 +327,8 @@ class SetupScreen(AreaBase):
         if self.view in MD_VIEWS:
             axis = self.axis if self.view == "axis" else None
             self.table = md_table(self.kernel.machine_data, self.view, axis, self.search, self.access_level)
-            widget = self.query_one("#setup-table", Static)
-            height = widget.size.height or TABLE_HEIGHT
-            show_text(widget, render_table(self.table, self.cursors[self.view], height, self.access_level))
+            self.query_one("#setup-table", TableWindow).show(self.table, self.cursors[self.view],
+                                                             self.access_level)
         else:
             show_text(self.query_one("#setup-access", Static), self.access_text())
 
