@@ -322,6 +322,8 @@ class ParameterScreen(AreaBase):
 
     def build_table(self) -> DataTable:
         """The table of the view on display."""
+        if not hasattr(self.kernel, "data") or not hasattr(self.kernel, "machine_data"):
+            return DataTable("This kernel offers no NC data", [Column("", 1)], [])
         refused = self.read_refused()
         if refused is not None:
             return refused

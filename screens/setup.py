@@ -237,7 +237,8 @@ class SetupScreen(AreaBase):
 
     def action_new_config(self) -> None:
         """Set MD active (cf): stored machine data of activation cf and re take effect."""
-        pending = list(self.kernel.machine_data.pending())
+        store = getattr(self.kernel, "machine_data", None)
+        pending = list(store.pending()) if store is not None else []
         if isinstance(self.submit(cmd.ActivateMachineData()), Accepted):
             self.hmi.set_hint("Machine data active" + (f": {', '.join(pending)}" if pending else ""))
         self.refresh_view()
@@ -324,6 +325,10 @@ class SetupScreen(AreaBase):
         """Draw the list or the access window."""
         if not self.is_mounted:
             return
+        if not hasattr(self.kernel, "machine_data"):
+            self.table = DataTable("This kernel offers no machine data", [Column("", 1)], [])
+            self.query_one("#setup-table", TableWindow).show(self.table, TableCursor(), self.access_level)
+            return
         if self.view in MD_VIEWS:
             axis = self.axis if self.view == "axis" else None
             self.table = md_table(self.kernel.machine_data, self.view, axis, self.search, self.access_level)
@@ -357,7 +362,8 @@ class SetupScreen(AreaBase):
             name = LEVEL_NAMES.get(number, "")
             text.append(f"   {number}  {name:<14}{how}\n", style="bold" if number == level else "")
         text.append("\n Machine data\n", style="bold underline")
-        pending = self.kernel.machine_data.pending()
+        store = getattr(self.kernel, "machine_data", None)
+        pending = store.pending() if store is not None else []
         text.append("   Stored, not active     " + (", ".join(pending) if pending else "none") + "\n")
         text.append("\n Date and time of the control\n", style="bold underline")
         seconds = status.time_s if status is not None else 0.0

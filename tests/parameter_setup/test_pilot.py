@@ -278,3 +278,15 @@ async def test_mda_buffer_and_part_counters_survive_a_restart(tmp_path: Path) ->
         channel = again.bridge.status.channel
         assert channel.mda_text == "G0 X10\nM30"
         assert (channel.parts_total, channel.parts_required) == (17, 40)
+
+
+async def test_areas_on_a_kernel_without_nc_data_do_not_break() -> None:
+    from hmi.app import HmiApp
+    from tests.hmi.fake_nck import FakeNck
+
+    app = HmiApp(FakeNck(), realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+o", "f4", "enter", "alt+s", "f3", "enter", "f7", "f6", "f8", "y")
+        await pilot.pause()
+        assert "needs the NC data directory" in app.hint
+        assert app.internal_errors == []
