@@ -408,8 +408,12 @@ class DiagnosticsScreen(AreaBase):
         if recorder is None:
             plot.set_data([], [], [], [])
             return
-        if len(plot.times) == recorder.sample_count and plot.names == list(recorder.settings.signals):
+        same_signals = plot.names == list(recorder.settings.signals)
+        if same_signals and len(plot.times) == recorder.sample_count:
             return
+        grown = recorder.sample_count - len(plot.times)
+        if same_signals and recorder.state == "recording" and 0 < grown < max(25, len(plot.times) // 200):
+            return  # while recording, redraw the curves in steps (the refresh budget)
         from nck.trace import signal_unit  # noqa: PLC0415
 
         names = list(recorder.settings.signals)
