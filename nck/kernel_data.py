@@ -39,8 +39,8 @@ from typing import Any
 from nck import commands as cmd
 from nck.access import AccessDenied, AccessError, Action, action_for_write
 from nck.commands import Accepted, Rejected, SubmitResult
-from nck.machine_data import DataError, MachineDataStore, catalog
-from nck.ncdata import SETTABLE_FRAME_NAMES, ToolEdge, WorkOffset
+from nck.machine_data import DataError, MachineDataStore
+from nck.ncdata import ToolEdge, WorkOffset
 
 TOOL_PARAM_COUNT = 25
 TOOL_VALUE_LIMIT_MM = 100_000.0
@@ -342,21 +342,4 @@ def _like(current: Any, value: Any, name: str) -> Any:
     raise ValueError(f"{name} cannot be written here")
 
 
-def user_data_type(value: Any) -> str:
-    """The NC type name of a GUD value (``REAL``, ``INT``, ``BOOL``, ``STRING``, ``…[n]``)."""
-    if isinstance(value, list):
-        inner = user_data_type(value[0]) if value else "REAL"
-        return f"{inner}[{len(value)}]"
-    if isinstance(value, bool):
-        return "BOOL"
-    if isinstance(value, int):
-        return "INT"
-    if isinstance(value, float):
-        return "REAL"
-    if isinstance(value, str):
-        return "STRING"
-    return type(value).__name__.upper()
-
-
-__all__ = ["DataWrites", "settable_frame_index", "settable_frame_name", "user_data_type", "catalog",
-           "SETTABLE_FRAME_NAMES"]
+__all__ = ["DataWrites", "settable_frame_index", "settable_frame_name"]
