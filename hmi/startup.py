@@ -85,6 +85,13 @@ class NcDataSession:
         finally:
             if self._copy is not None:
                 self._copy.cleanup()
+            self.release_lock()
+
+    def release_lock(self) -> None:
+        """Give the NC data directory free for another HMI (see :mod:`nck.datalock`)."""
+        lock = getattr(self, "data_lock", None)
+        if lock is not None:
+            lock.release()
 
 
 def build_session(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
@@ -98,12 +105,31 @@ def build_session(machine: str | None = None, data_dir: str | None = None, ephem
     at start; the HMI still starts in JOG (axes must be referenced first).
     """
     from nck.machine import load_machine
+    from nck.datalock import lock_data_dir
     from nck.paths import open_data_dir
     from nck.persistence import Session
 
     config = load_machine(machine)
     root, copy = open_data_dir(data_dir, ephemeral)
-    holder = NcDataSession(Session.open(root, config), copy)
+    # One process per data directory: a second HMI gets a clear message (DataDirInUse), not torn data.
+    lock = lock_data_dir(root) if copy is None else None
+    try:
+        holder = NcDataSession(Session.open(root, config), copy)
+    except BaseException:
+        if lock is not None:
+            lock.release()
+        raise
+    holder.data_lock = lock
+    try:
+        _select_at_start(holder, program)
+    except BaseException:
+        holder.release_lock()
+        raise
+    return holder
+
+
+def _select_at_start(holder: NcDataSession, program: str | None) -> None:
+    """Select ``program`` (a local file is imported first) for the start in AUTOMATIC."""
     if program:
         name = program
         local = Path(program)
@@ -112,7 +138,6 @@ def build_session(machine: str | None = None, data_dir: str | None = None, ephem
         result = holder.nck.submit(cmd.SelectProgram(name))
         if isinstance(result, Rejected):
             raise ValueError(f"program {program}: {result.reason}")
-    return holder
 
 
 def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,

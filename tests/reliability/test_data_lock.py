@@ -1,0 +1,95 @@
+"""Concurrent use: two HMI processes on one NC data directory — a lock and a clear message."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from hmi.app import main as hmi_main
+from hmi.startup import build_session
+from nck.datalock import DataDirInUse, lock_data_dir
+
+ROOT = Path(__file__).resolve().parents[2]
+
+HOLDER = """
+import sys
+from hmi.startup import build_session
+holder = build_session(data_dir=sys.argv[1])
+print("ready", flush=True)
+sys.stdin.readline()
+holder.quit()
+print("quit", flush=True)
+"""
+
+
+def _start_holder(data_dir: Path) -> subprocess.Popen[str]:
+    proc = subprocess.Popen([sys.executable, "-c", HOLDER, str(data_dir)], cwd=ROOT, text=True,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout is not None
+    assert proc.stdout.readline().strip() == "ready", proc.stderr.read() if proc.stderr else ""
+    return proc
+
+
+def test_second_lock_in_the_same_directory_is_refused_with_the_holder(tmp_path: Path) -> None:
+    first = lock_data_dir(tmp_path)
+    with pytest.raises(DataDirInUse) as refused:
+        lock_data_dir(tmp_path)
+    assert str(tmp_path) in str(refused.value) and str(os.getpid()) in str(refused.value)
+    first.release()
+    first.release()  # twice is harmless
+    with lock_data_dir(tmp_path) as again:
+        assert again.held
+    assert not again.held
+
+
+def test_a_second_hmi_process_gets_a_clear_message_and_changes_nothing(tmp_path: Path, capsys) -> None:
+    data_dir = tmp_path / "data"
+    holder = _start_holder(data_dir)
+    try:
+        before = {p: p.read_bytes() for p in data_dir.rglob("*") if p.is_file() and p.name != ".lock"}
+        with pytest.raises(DataDirInUse):
+            build_session(data_dir=str(data_dir))
+        assert hmi_main(["--data-dir", str(data_dir)]) == 2
+        message = capsys.readouterr().err
+        assert "in use by process" in message and str(holder.pid) in message and str(data_dir) in message
+        assert "Traceback" not in message
+        after = {p: p.read_bytes() for p in data_dir.rglob("*") if p.is_file() and p.name != ".lock"}
+        assert after == before
+    finally:
+        assert holder.stdin is not None
+        holder.stdin.write("\n")
+        holder.stdin.flush()
+        holder.wait(timeout=30)
+    assert holder.returncode == 0
+    session = build_session(data_dir=str(data_dir))  # free again after the first one quit
+    session.quit()
+
+
+def test_a_killed_hmi_leaves_no_stale_lock(tmp_path: Path) -> None:
+    holder = _start_holder(tmp_path)
+    with pytest.raises(DataDirInUse):
+        lock_data_dir(tmp_path)
+    holder.send_signal(signal.SIGKILL)
+    holder.wait(timeout=30)
+    with lock_data_dir(tmp_path) as lock:
+        assert lock.held
+
+
+def test_ephemeral_copy_needs_no_lock(tmp_path: Path) -> None:
+    with lock_data_dir(tmp_path):
+        session = build_session(data_dir=str(tmp_path), ephemeral=True)
+        session.quit()
+
+
+def test_a_quit_session_frees_the_directory(tmp_path: Path) -> None:
+    first = build_session(data_dir=str(tmp_path))
+    with pytest.raises(DataDirInUse):
+        build_session(data_dir=str(tmp_path))
+    first.quit()
+    second = build_session(data_dir=str(tmp_path))
+    second.quit()
