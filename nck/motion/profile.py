@@ -221,11 +221,19 @@ def build_profile(
     d1 = ramp_distance(v0, peak, accel, jerk)
     d3 = ramp_distance(peak, v_end, accel, jerk)
     if v0 > v_max and d1 + d3 > rest * (1.0 + 1e-9) + 1e-12:
-        # Above the new limit and too close to the end for two ramps: brake straight to
-        # the end velocity (feasible, see above) and cruise at it.
-        peak = v_end
+        # Above the new limit and too close to the end to get down to it: cruise at the
+        # lowest velocity from which the end velocity is still reached (between the
+        # limit and the current velocity; the current one is feasible, see above).
+        lo, hi = peak, v0
+        for _ in range(50):
+            mid = (lo + hi) / 2.0
+            if ramp_distance(v0, mid, accel, jerk) + ramp_distance(mid, v_end, accel, jerk) <= rest:
+                hi = mid
+            else:
+                lo = mid
+        peak = hi
         d1 = ramp_distance(v0, peak, accel, jerk)
-        d3 = 0.0
+        d3 = ramp_distance(peak, v_end, accel, jerk)
     builder.ramp(peak, accel, jerk)
     builder.cruise(rest - d1 - d3)
     builder.ramp(v_end, accel, jerk)
