@@ -119,7 +119,7 @@ class _Builder:
         arr = np.array(self.rows, dtype=float)
         return Profile(
             t0=arr[:, 0], s0=arr[:, 1], v0=arr[:, 2], a0=arr[:, 3], j=arr[:, 4],
-            duration_s=self.t, length=length, v_end=max(self.v, 0.0),
+            duration_s=self.t, length=min(length, self.s + 1e-9), v_end=max(self.v, 0.0),
         )
 
 

@@ -528,6 +528,13 @@ class PlannedMotion:
         self.run = None
         if run.kind == "segment":
             seg = run.chain[0]
+            reached = run.s_begin + run.profile.length
+            if reached < seg.segment.length - 1e-6 and run.profile.length > 1e-9:
+                # The profile stopped short of the end (should not happen): continue from there.
+                seg.done_s = reached
+                self.cmd = seg.segment.positions(np.array([reached]))[0]
+                self.v_path = run.profile.v_end
+                return False
             if self.la.items and self.la.items[0] is seg:
                 self.la.pop_front()
             self.cmd = seg.segment.end.copy()
