@@ -101,7 +101,7 @@ def main(argv: list[str] | None = None) -> int:
 def _machine(options: argparse.Namespace) -> MachineConfig:
     from nck.resources import data_path
 
-    if not data_path("gcode", f"{options.dialect}.toml").is_file():
+    if not data_path("gcode", f"{options.dialect.replace('-', '_')}.toml").is_file():
         raise CliError(f"language mode '{options.dialect}' is not available yet")
     return load_machine(options.machine)
 

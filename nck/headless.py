@@ -257,7 +257,7 @@ def check_program(machine: MachineConfig, programs: ProgramSource, name: str, te
     """
     from nck.interp.program import load_program
 
-    found = load_program(name, text).problems()
+    found = load_program(name, text, dialect).problems()
     if found:
         return found
     outcome = run_program(machine, programs, data or NcData(), name, text=text,

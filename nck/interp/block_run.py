@@ -616,6 +616,6 @@ def _program_cache(interp: Interpreter, name: str, text: str) -> Program:
     if program is None:
         if len(cache) > 64:
             cache.clear()
-        program = load_program(name, text)
+        program = load_program(name, text, getattr(interp, "dialect", "siemens"))
         cache[key] = program
     return program

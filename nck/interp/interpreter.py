@@ -91,7 +91,7 @@ class Interpreter:
         self.programs = programs
         self.data = data
         self.dialect = dialect
-        self.table = gtable(dialect)
+        self.table = gtable("siemens" if dialect in ("iso-m", "iso-t") else dialect)
         self.builder = MotionBuilder(machine, data)
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
@@ -122,7 +122,7 @@ class Interpreter:
 
     def start_text(self, name: str, text: str) -> None:
         """Load a program given as text (MDA buffer) under ``name``."""
-        program = load_program(name, text)
+        program = load_program(name, text, self.dialect, main=True)
         main = Frame(program=program, is_main=True)
         self._state.frames = [main]
         self._state.finished = False

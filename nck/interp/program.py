@@ -119,8 +119,18 @@ def _located(alarm: NcAlarmError, name: str, line: int, n: int | None) -> NcAlar
     return alarm.located(name, line, n)
 
 
-def load_program(name: str, text: str) -> Program:
-    """Parse ``text`` into a :class:`Program` called ``name`` (never raises)."""
+def load_program(name: str, text: str, dialect: str = "siemens", main: bool = False) -> Program:
+    """Parse ``text`` into a :class:`Program` called ``name`` (never raises).
+
+    In an ISO ``dialect`` (or a Siemens text that switches with G291) the
+    lines are first translated by :mod:`nck.iso.translate`.
+    """
+    from nck.iso.loader import iso_lines, wants_iso
+    if wants_iso(text, dialect):
+        program = Program(name=name, lines=iso_lines(name, text, dialect, _located, _guess_n, main))
+        _index(program)
+        _check_jumps(program)
+        return program
     lines: list[Line] = []
     raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
     if raw_lines and raw_lines[-1] == "":

@@ -1,0 +1,48 @@
+"""Build the interpreter's program lines from an ISO text (hook for ``load_program``)."""
+
+from __future__ import annotations
+
+import re
+from typing import Callable
+
+from nck.errors import NcAlarmError
+from nck.iso import is_iso
+from nck.iso.translate import translate
+
+_SWITCH_TO_ISO = re.compile(r"(?<![A-Z0-9_])G291(?![0-9])", re.IGNORECASE)
+_PROC_FIRST = re.compile(r"^\s*(N\d+\s+)?PROC\b", re.IGNORECASE)
+
+
+def wants_iso(text: str, dialect: str) -> bool:
+    """True if ``text`` must go through the ISO translator.
+
+    ISO mode translates every program except Siemens ones whose first line is
+    ``PROC`` (cycles, macros written in Siemens); Siemens mode translates a
+    program that switches to ISO with G291.
+    """
+    if is_iso(dialect):
+        first = next((line for line in text.splitlines() if line.strip()), "")
+        return not _PROC_FIRST.match(first)
+    return bool(_SWITCH_TO_ISO.search(text))
+
+
+def iso_lines(name: str, text: str, dialect: str,
+              located: Callable[[NcAlarmError, str, int, int | None], NcAlarmError],
+              guess_n: Callable[[str], int | None], main: bool = False) -> list:
+    """The program's :class:`~nck.interp.program.Line` list, one or more per ISO line."""
+    from nck.interp.program import Line
+    from nck.lang.parser import parse_block
+
+    lines: list = []
+    for iso_line in translate(text, dialect if is_iso(dialect) else "iso-m",
+                              start_in_iso=is_iso(dialect), main=main and is_iso(dialect)):
+        number, raw = iso_line.number, iso_line.text
+        if iso_line.error is not None:
+            lines.append(Line(number, raw, None, located(iso_line.error, name, number, guess_n(raw))))
+            continue
+        for block_text in iso_line.blocks or [""]:
+            try:
+                lines.append(Line(number, raw or block_text, parse_block(block_text, number)))
+            except NcAlarmError as alarm:
+                lines.append(Line(number, raw, None, located(alarm, name, number, guess_n(raw))))
+    return lines

@@ -1,0 +1,325 @@
+"""Translate ISO M/T program text into Siemens-mode blocks, line by line.
+
+:func:`translate` returns one :class:`IsoLine` per source line: the Siemens
+blocks it stands for (often one, several for fixed cycles, none for comments)
+or the alarm the line raises when it is executed. The translation is static
+and in line order; it tracks the modal state that changes how words are read
+(G90/G91, G94/G95, group 1, the active drilling cycle, G290/G291).
+
+Mapping onto the Siemens machinery: G20/G21 → G700/G710, G02/G03 R → CR=,
+G04 X/U/P → G4 F (seconds), G43/G44 H → D (tool length via the edge), G49 → D0,
+G52 → TRANS, G92 → ATRANS so the current position reads the programmed value,
+G92.1 → TRANS (clears G52 and G92), G10 L2 Pn → ``$P_UIFR[n]`` (G54…G59),
+G53 stays non-modal machine coordinates, G61 → G60, M98 → subprogram call
+``O<nnnn>`` with a repeat count, M99 → M17. Decimal point (MD 10884/10886):
+pocket-calculator notation by default; in standard notation a value without
+a point is counted in increments (IS-B 0.001 mm, IS-C 0.0001 mm).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nck.errors import NcAlarmError
+from nck.iso import cycles
+from nck.iso.lexing import Word, split_words
+
+LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
+AXES = ("X", "Y", "Z")
+
+
+@dataclass(frozen=True)
+class IsoSettings:
+    """Decimal point rules: MD 10884 (pocket calculator) and MD 10886 (IS-C)."""
+
+    pocket_calculator: bool = True
+    increment_system_c: bool = False
+
+    @property
+    def increment_mm(self) -> float:
+        """Value of one increment for a number written without a point."""
+        return 0.0001 if self.increment_system_c else 0.001
+
+
+@dataclass
+class IsoLine:
+    """The Siemens blocks of one ISO source line, or the alarm it raises."""
+
+    number: int
+    text: str
+    blocks: list[str] = field(default_factory=list)
+    error: NcAlarmError | None = None
+
+
+@dataclass
+class _Modal:
+    iso: bool = True
+    absolute: bool = True
+    per_rev: bool = False
+    motion: str = "G0"
+    cycle: cycles.CycleState = field(default_factory=cycles.CycleState)
+
+
+_SIMPLE_G = {
+    "G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2",
+    "G3": "G3", "G03": "G3", "G17": "G17", "G18": "G18", "G19": "G19",
+    "G40": "G40", "G41": "G41", "G42": "G42", "G54": "G54", "G55": "G55",
+    "G56": "G56", "G57": "G57", "G58": "G58", "G59": "G59", "G61": "G60",
+    "G64": "G64", "G9": "G9", "G09": "G9", "G90": "G90", "G91": "G91",
+    "G94": "G94", "G95": "G95", "G20": "G700", "G21": "G710", "G70": "G700",
+    "G71": "G710", "G53": "G53",
+}
+_SUPPORTED_OTHER = {"G4", "G04", "G10", "G28", "G43", "G44", "G49", "G52", "G80", "G92",
+                    "G92.1", "G98", "G99", "G290", "G291", "G15", "G50", "G50.1", "G67",
+                    "G69", "G97", "G23", "G13.1"}
+
+
+def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = None,
+              start_in_iso: bool = True, main: bool = False) -> list[IsoLine]:
+    """Translate a whole ISO program (see module docstring).
+
+    A ``main`` program started in ISO mode begins with the ISO reset motion
+    G00 (the Siemens reset value of group 1 is G1).
+    """
+    settings = settings or IsoSettings()
+    modal = _Modal(iso=start_in_iso)
+    raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    if raw_lines and raw_lines[-1] == "":
+        raw_lines.pop()
+    out: list[IsoLine] = []
+    for number, raw in enumerate(raw_lines, start=1):
+        line = IsoLine(number, raw)
+        try:
+            line.blocks = _translate_line(raw, modal, settings)
+        except NcAlarmError as alarm:
+            line.error = alarm
+        out.append(line)
+    if any(cycles.INITIAL_Z in block for line in out for block in line.blocks):
+        out.insert(0, IsoLine(1, "", [cycles.DECLARATION]))
+    if main and start_in_iso:
+        first = 1 if out and out[0].blocks[:1] == [cycles.DECLARATION] else 0
+        out.insert(first, IsoLine(1, "", ["G0"]))
+    return out
+
+
+def _switch_word(raw: str) -> str | None:
+    upper = raw.upper()
+    for code in ("G291", "G290"):
+        if code in upper:
+            return code
+    return None
+
+
+def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]:
+    if not modal.iso:
+        switch = _switch_word(raw)
+        if switch == "G291":
+            modal.iso = True
+            rest = raw.upper().replace("G291", "")
+            return [rest] if rest.strip() else []
+        return [raw]
+    stripped = raw.strip()
+    if not stripped or stripped.startswith("%"):
+        return []
+    skip, words = split_words(raw)
+    if words and words[0].letter == "O":
+        words = words[1:]  # program number
+    if not words:
+        return []
+    prefix = "" if skip is None else ("/" if skip == 0 else f"/{skip}")
+    blocks = _translate_words(words, modal, settings)
+    if prefix and blocks:
+        blocks = [f"{prefix} {block}" for block in blocks]
+    return blocks
+
+
+def _value(word: Word, settings: IsoSettings, modal: _Modal) -> float:
+    if word.has_point or settings.pocket_calculator:
+        return word.value
+    if word.letter == "F":
+        return word.value * (0.01 if modal.per_rev else 1.0)
+    if word.letter in LENGTH_LETTERS or word.letter in (",R", ",C"):
+        return word.value * settings.increment_mm
+    return word.value
+
+
+def _fmt(value: float) -> str:
+    return cycles._fmt(value)
+
+
+def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) -> list[str]:
+    gcodes: list[str] = []
+    addresses: dict[str, Word] = {}
+    others: list[Word] = []
+    for word in words:
+        if word.letter == "G":
+            gcodes.append(_g_name(word))
+        elif word.letter in addresses and word.letter not in ("M",):
+            raise NcAlarmError(12000, word.letter)
+        elif word.letter == "M":
+            others.append(word)
+        else:
+            addresses[word.letter] = word
+    if "G290" in gcodes:
+        modal.iso = False
+        gcodes.remove("G290")
+    if "G291" in gcodes:
+        gcodes.remove("G291")
+    if "G94" in gcodes:
+        modal.per_rev = False
+    if "G95" in gcodes:
+        modal.per_rev = True
+    values = {letter: _value(word, settings, modal) for letter, word in addresses.items()}
+    number = f"N{int(values.pop('N'))} " if "N" in values else ""
+    for code in gcodes:
+        if code not in _SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
+            raise NcAlarmError(12470, code)
+    # modal bookkeeping
+    for code in gcodes:
+        if code in ("G90",):
+            modal.absolute = True
+        elif code == "G91":
+            modal.absolute = False
+        elif code in ("G98", "G99"):
+            modal.cycle.return_to_r = code == "G99"
+    ms = [word for word in others]
+    if any(int(w.value) == 98 for w in ms):
+        return [number + _subprogram_call(values)]
+    if any(int(w.value) == 99 for w in ms):
+        return [number + "M17"]
+    if any(code in ("G4", "G04") for code in gcodes):
+        return [number + _dwell(addresses, values, settings)]
+    if "G10" in gcodes:
+        return [number + block for block in _g10(values)] or ([number] if number else [])
+    if "G92.1" in gcodes:
+        return [number + "TRANS"]
+    if "G92" in gcodes:
+        moved = [a for a in AXES if a in values]
+        if not moved:
+            return [number] if number else []
+        parts = " ".join(f"{a}=$P_EP[{a}]-({_fmt(values[a])})" for a in moved)
+        return [number + "ATRANS " + parts]
+    if "G52" in gcodes:
+        parts = " ".join(f"{a}{_fmt(values[a])}" for a in AXES if a in values)
+        return [number + ("TRANS " + parts).strip()]
+    if "G28" in gcodes:
+        moved = [a for a in AXES if a in values]
+        blocks = [number + "G0 " + " ".join(f"{a}{_fmt(values[a])}" for a in moved)] if moved else []
+        blocks.append("G74 " + " ".join(f"{a}1=0" for a in (moved or list(AXES))))
+        return blocks
+    siemens_g: list[str] = []
+    cycle_code = None
+    for code in gcodes:
+        if code in _SIMPLE_G:
+            siemens_g.append(_SIMPLE_G[code])
+            if _SIMPLE_G[code] in ("G0", "G1", "G2", "G3"):
+                modal.motion = _SIMPLE_G[code]
+                modal.cycle.code = None
+        elif code == "G80":
+            modal.cycle.code = None
+            siemens_g.append(modal.motion)
+        elif _cycle_code(code) is not None:
+            cycle_code = _cycle_code(code)
+        elif code in ("G43", "G44") and "H" in values:
+            values["D"] = values.pop("H")
+        elif code == "G49":
+            values.setdefault("D", 0)
+    if cycle_code is not None:
+        if modal.cycle.code is None:
+            modal.cycle.initial_captured = False
+            modal.cycle.params = {}
+        modal.cycle.code = cycle_code
+    if modal.cycle.code is not None and (cycle_code is not None or any(
+            a in values for a in ("X", "Y", "Z", "R"))):
+        return _cycle_block(number, siemens_g, values, modal, settings)
+    return [_plain_block(number, siemens_g, values, others, modal)]
+
+
+def _cycle_code(code: str) -> int | None:
+    if code.startswith("G") and code[1:].isdigit() and int(code[1:]) in cycles.CYCLE_CODES:
+        return int(code[1:])
+    return None
+
+
+def _g_name(word: Word) -> str:
+    text = word.text
+    if "." in text:
+        whole, _, sub = text.partition(".")
+        whole = str(int(whole)) if whole else "0"
+        if sub.strip("0") == "":
+            return f"G{int(whole):02d}" if int(whole) < 10 else f"G{whole}"
+        return f"G{int(whole)}.{sub.rstrip('0')}"
+    number = int(text)
+    return f"G{number:02d}" if number < 10 else f"G{number}"
+
+
+def _plain_block(number: str, siemens_g: list[str], values: dict[str, float],
+                 others: list[Word], modal: _Modal) -> str:
+    parts = list(siemens_g)
+    for letter in ("X", "Y", "Z", "U", "V", "W", "A", "B", "C", "I", "J", "K"):
+        if letter in values:
+            parts.append(f"{letter}{_fmt(values[letter])}")
+    if "R" in values:
+        parts.append(f"CR={_fmt(values['R'])}")
+    if ",R" in values:
+        parts.append(f"RND={_fmt(values[',R'])}")
+    if ",C" in values:
+        parts.append(f"CHF={_fmt(values[',C'])}")
+    for letter in ("F", "S", "T", "D"):
+        if letter in values:
+            value = values[letter]
+            parts.append(f"{letter}{_fmt(value) if letter == 'F' else int(value)}")
+    for word in others:
+        parts.append(f"M{int(word.value)}")
+    return (number + " ".join(parts)).rstrip()
+
+
+def _cycle_block(number: str, siemens_g: list[str], values: dict[str, float], modal: _Modal,
+                 settings: IsoSettings) -> list[str]:
+    state = modal.cycle
+    for letter in ("Z", "R", "Q", "P", "K"):
+        if letter in values:
+            state.params[letter] = values[letter]
+    if "P" in values:
+        state.params["P"] = values["P"] / 1000.0  # dwell in ms
+    repeat = int(values.get("K", 1))
+    feed = _fmt(values["F"]) if "F" in values else None
+    hole = [f"{a}{_fmt(values[a])}" for a in ("X", "Y") if a in values]
+    blocks = cycles.expand(state, modal.absolute, hole, feed, repeat) if repeat > 0 else []
+    head = " ".join(siemens_g)
+    if head or number:
+        blocks.insert(0, (number + head).strip())
+    return blocks
+
+
+def _dwell(addresses: dict[str, Word], values: dict[str, float], settings: IsoSettings) -> str:
+    if "P" in values:
+        seconds = values["P"] / 1000.0
+    else:
+        word = addresses.get("X") or addresses.get("U")
+        if word is None:
+            raise NcAlarmError(12080, "G04")
+        seconds = word.value if (word.has_point or settings.pocket_calculator) else word.value * 0.001
+    return f"G4 F{_fmt(seconds)}"
+
+
+def _g10(values: dict[str, float]) -> list[str]:
+    mode = int(values.get("L", 0))
+    slot = int(values.get("P", 0))
+    if mode == 2 and 1 <= slot <= 6:
+        return [f"$P_UIFR[{slot}, {a}, TR]={_fmt(values[a])}" for a in AXES if a in values]
+    if mode == 20 and slot >= 1:
+        return [f"$P_UIFR[{slot + 6}, {a}, TR]={_fmt(values[a])}" for a in AXES if a in values]
+    raise NcAlarmError(12080, f"G10 L{mode}")
+
+
+def _subprogram_call(values: dict[str, float]) -> str:
+    if "P" not in values:
+        raise NcAlarmError(12080, "M98")
+    p_value = int(values["P"])
+    count = int(values.get("L", 1))
+    if p_value > 9999:
+        count = p_value // 10000
+        p_value %= 10000
+    name = f"O{p_value:04d}"
+    return name if count == 1 else f"{name} P{count}"

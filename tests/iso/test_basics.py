@@ -1,0 +1,162 @@
+"""ISO M: activation, lexing, decimal point, coordinates, zero offsets, dwell."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck.iso.lexing import split_words, strip_comments
+from nck.iso.translate import IsoSettings, translate
+from tests.iso.conftest import ends, run_iso
+
+
+def test_iso_program_starts_in_g00():
+    result = run_iso("X10. Y5.\nM30\n")
+    assert result.status == "ended", result.alarms
+    assert result.segments[0].kind == "G0"
+    assert ends(result)[0][1]["X"] == 10.0
+
+
+def test_same_text_in_siemens_mode_differs():
+    """The program-level G00 start is ISO only (Siemens resets to G1 and needs F)."""
+    from nck.headless import interpret_only
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    result = interpret_only(load_machine(None), MemorySource(), NcData(), "T.MPF",
+                            text="X10 Y5\nM30\n", max_blocks=1000)
+    assert result.status == "alarm"
+
+
+def test_nested_comments_hide_words():
+    assert strip_comments("N15 (c(c) X100) Y100").split() == ["N15", "Y100"]
+    result = run_iso("N15 (a(b) X100) Y100\nM30\n")
+    assert ends(result) == [(1, {"X": 0.0, "Y": 100.0, "Z": 0.0})]
+
+
+def test_comment_then_words_both_run():
+    result = run_iso("N10 (c(c)) X100 Y100\nM30\n")
+    assert ends(result)[0][1] == {"X": 100.0, "Y": 100.0, "Z": 0.0}
+
+
+def test_slash_in_comment_is_ignored():
+    result = run_iso("X100. ( /3 ) Y100\nM30\n", skip_levels=frozenset({3}))
+    assert ends(result)[0][1] == {"X": 100.0, "Y": 100.0, "Z": 0.0}
+
+
+def test_mid_block_skip_discards_rest_when_level_active():
+    skip, words = split_words("N5 G00 X100. /3 YY100", frozenset({3}))
+    assert [w.letter for w in words] == ["N", "G", "X"]
+
+
+def test_mid_block_skip_off_reads_garbage_as_syntax_error():
+    result = run_iso("N5 G00 X100. /3 YY100\nM30\n")
+    assert result.status == "alarm" and result.alarms[0].number == 12080
+
+
+@pytest.mark.parametrize("text", ["/0 X1", "/10 X1"])
+def test_skip_level_out_of_range_is_14060(text):
+    result = run_iso(text + "\nM30\n")
+    assert result.alarms[0].number == 14060
+
+
+def test_block_skip_at_start_skips_block():
+    result = run_iso("/1 X50.\nY7.\nM30\n", skip_levels=frozenset({1}))
+    assert ends(result) == [(2, {"X": 0.0, "Y": 7.0, "Z": 0.0})]
+
+
+@pytest.mark.parametrize("text", ["N10 WAIT", "N15 G91 G500", "R1=5"])
+def test_siemens_syntax_in_iso_mode_is_12080_or_unknown_g(text):
+    result = run_iso(text + "\nM30\n")
+    assert result.status == "alarm"
+    assert result.alarms[0].number in (12080, 12470)
+
+
+def test_program_number_line_is_ignored():
+    result = run_iso("O0012 (part)\nG91 X1.\nM30\n")
+    assert ends(result)[0][1]["X"] == 1.0
+
+
+def _first_x(text: str, settings: IsoSettings) -> str:
+    return translate(text, settings=settings)[0].blocks[0]
+
+
+def test_decimal_point_rules():
+    standard = IsoSettings(pocket_calculator=False)
+    assert _first_x("G90 G01 X1000 Y2000. F100", standard) == "G90 G1 X1 Y2000 F100"
+    is_c = IsoSettings(pocket_calculator=False, increment_system_c=True)
+    assert _first_x("G90 G01 X1000 Y2000. F100", is_c) == "G90 G1 X0.1 Y2000 F100"
+    assert _first_x("G90 G01 X1000 Y2000. F100", IsoSettings()) == "G90 G1 X1000 Y2000 F100"
+    assert _first_x("G95 F20", standard) == "G95 F0.2"
+    assert _first_x("G94 F100", standard) == "G94 F100"
+
+
+def test_dwell_units():
+    standard = IsoSettings(pocket_calculator=False)
+    assert _first_x("G04 X1000", standard) == "G4 F1"
+    assert _first_x("G04 X1.", standard) == "G4 F1"
+    assert _first_x("G04 P1000", standard) == "G4 F1"
+    assert _first_x("G04 P1000", IsoSettings()) == "G4 F1"
+
+
+def test_inch_metric_map_to_g700_g710():
+    assert _first_x("G20 X1.", IsoSettings()) == "G700 X1"
+    assert _first_x("G21", IsoSettings()) == "G710"
+
+
+def test_arc_with_radius_and_centre():
+    result = run_iso("G17 G90 G0 X0 Y0\nG02 X20. Y0 R10. F100\nG03 X0 Y0 I-10. J0\nM30\n")
+    assert result.status == "ended", result.alarms
+    arcs = result.segments[1:]
+    assert [a.kind for a in arcs] == ["G2", "G3"]
+    assert round(arcs[0].center_wcs["X"], 3) == 10.0
+    assert round(arcs[1].center_wcs["X"], 3) == 10.0
+
+
+def test_incremental_g91():
+    result = run_iso("G91 G01 X10. F100\nX10.\nM30\n")
+    assert [e[1]["X"] for e in ends(result)] == [10.0, 20.0]
+
+
+def test_e2_zero_offsets_g10_g54_g92_g921():
+    text = ("N10 G10 L2 P1 X10 Y10\nN20 G0 X100 Y100\nN30 G54 X100 Y100\nN40 G92 X50 Y50\n"
+            "N50 G0 X100 Y100\nN60 G92.1 X0 Y0\nN70 X150. Y150.\nM30\n")
+    result = run_iso(text)
+    assert result.status == "ended", result.alarms
+    wcs, mcs = ends(result), ends(result, "mcs")
+    assert mcs[0][1]["X"] == 100.0 and wcs[0][1]["X"] == 100.0
+    assert mcs[1][1]["X"] == 110.0 and wcs[1][1]["X"] == 100.0
+    assert mcs[2][1]["X"] == 160.0 and wcs[2][1]["X"] == 100.0
+    # after G92.1 the WCS falls back to G54: WCS 150 is MCS 160 again
+    assert wcs[3][1]["X"] == 150.0 and mcs[3][1]["X"] == 160.0
+
+
+def test_e2_first_part_g92_preset():
+    text = "N10 G0 X100 Y100\nN20 G92 X10 Y10\nN30 G0 X50 Y50\nN40 G92.1 X0 Y0\nN50 X140. Y140.\nM30\n"
+    result = run_iso(text)
+    mcs, wcs = ends(result, "mcs"), ends(result)
+    assert mcs[1][1]["X"] == 140.0 and wcs[1][1]["X"] == 50.0
+    assert wcs[2][1]["X"] == 140.0 and mcs[2][1]["X"] == 140.0
+
+
+def test_g52_local_offset():
+    result = run_iso("G52 X5. Y5.\nG0 X10. Y10.\nM30\n")
+    assert ends(result, "mcs")[0][1]["X"] == 15.0
+
+
+def test_g290_switches_to_siemens_and_g291_back():
+    text = "G91\nG290\nR1=5\nG291\nG01 X1. F100\nM30\n"
+    result = run_iso(text)
+    assert result.status == "ended", result.alarms
+    assert ends(result)[0][1]["X"] == 1.0
+
+
+def test_siemens_program_switches_with_g291():
+    from nck.headless import interpret_only
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    text = "G1 X1 F100\nG291\nG00 X5.\nG290\nR1=2\nM30\n"
+    result = interpret_only(load_machine(None), MemorySource(), NcData(), "T.MPF", text=text,
+                            max_blocks=1000)
+    assert result.status == "ended", result.alarms
+    assert [m.kind for m in result.segments] == ["G1", "G0"]
