@@ -128,6 +128,9 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
         return []
     prefix = "" if skip is None else ("/" if skip == 0 else f"/{skip}")
     blocks = _translate_words(words, modal, settings)
+    if words[0].letter == "N":  # NC-inserted blocks carry the ISO block number
+        label = f"N{int(words[0].value)}"
+        blocks = [b if b.startswith(label + " ") or b == label else f"{label} {b}" for b in blocks]
     if prefix and blocks:
         blocks = [f"{prefix} {block}" for block in blocks]
     return blocks
@@ -184,7 +187,8 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
             modal.cycle.return_to_r = code == "G99"
     ms = [word for word in others]
     if any(int(w.value) == 98 for w in ms):
-        return [number + _subprogram_call(values)]
+        calls = _subprogram_call(values)
+        return [number + call for call in calls] if calls else ([number] if number else [])
     if any(int(w.value) == 99 for w in ms):
         return [number + "M17"]
     if any(code in ("G4", "G04") for code in gcodes):
@@ -313,7 +317,8 @@ def _g10(values: dict[str, float]) -> list[str]:
     raise NcAlarmError(12080, f"G10 L{mode}")
 
 
-def _subprogram_call(values: dict[str, float]) -> str:
+def _subprogram_call(values: dict[str, float]) -> list[str]:
+    """``M98 P<count><nnnn>`` or ``M98 P<nnnn> L<count>``: one CALL per repetition."""
     if "P" not in values:
         raise NcAlarmError(12080, "M98")
     p_value = int(values["P"])
@@ -321,5 +326,4 @@ def _subprogram_call(values: dict[str, float]) -> str:
     if p_value > 9999:
         count = p_value // 10000
         p_value %= 10000
-    name = f"O{p_value:04d}"
-    return name if count == 1 else f"{name} P{count}"
+    return [f'CALL "O{p_value:04d}"'] * count
