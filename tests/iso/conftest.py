@@ -13,7 +13,7 @@ def run_iso(text: str, subprograms: dict[str, str] | None = None, dialect: str =
     """Run ``text`` as TEST.MPF in ``dialect``; returns the RunResult."""
     source = MemorySource(subprograms or {})
     return interpret_only(load_machine(None), source, NcData(), "TEST.MPF", text=text,
-                          timeout_s=60.0, max_blocks=100_000, dialect=dialect,
+                          timeout_s=100_000.0, max_blocks=100_000, dialect=dialect,
                           skip_levels=skip_levels)
 
 
