@@ -9,6 +9,7 @@ finally applies jumps, subprogram calls and program/subprogram ends.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any
 
 from nck import canon
@@ -28,6 +29,7 @@ if TYPE_CHECKING:
 
 MAX_PROGRAM_LEVELS = 16  # main program + 15 subprogram levels (alarm 14012 beyond)
 MAX_PASSES = 9999
+MAX_ARRAY_ELEMENTS = 1_000_000  # one array's elements (each dimension <= 65535); 17020 beyond
 PROGRAM_CONTROL_M = {0: "M0", 1: "M1", 2: "M2", 17: "M17", 30: "M30"}
 MODE_WORDS = frozenset(("I", "J", "K", "RP", "AP"))  # non-axis words that take AC()/IC()
 
@@ -343,6 +345,8 @@ class BlockRun:
                 if size != int(size) or not 1 <= int(size) <= 65535:
                     raise NcAlarmError(17020, name)
                 dims.append(int(size))
+            if math.prod(dims) > MAX_ARRAY_ELEMENTS:  # every dimension allowed, the whole too big
+                raise NcAlarmError(17020, name)
             cell = Cell.create(name, stmt.type, tuple(dims), lower, upper, stmt.string_len)
             if decl.init is not None:
                 values = [self.eval(e) for e in decl.init]
