@@ -173,6 +173,9 @@ class StatusView:
     def _modal_view(self, run: ProgramRun | None) -> ModalView:
         base = ModalView()
         interp = run.interp if run is not None else self._interpreters.get("AUTO")
+        if interp is None:
+            # Power on: no program has run yet, but the control shows the reset G codes.
+            interp = self._interpreter("AUTO")  # type: ignore[attr-defined]
         getter = getattr(interp, "modal_view", None) if interp is not None else None
         if getter is not None:
             try:

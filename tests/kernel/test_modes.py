@@ -275,3 +275,11 @@ def test_outputs_after_a_repos_wait_for_the_remainder() -> None:
     assert until_state(nck, "reset", "aborted")
     assert nck.positions_mcs() == pytest.approx({"X": 100.0, "Y": 0.0, "Z": 0.0})
     assert nck.status().channel.modal.spindle_state == "M3"
+
+
+def test_power_on_status_shows_the_reset_g_codes() -> None:
+    # Before any program ran, the G-function display shows the reset state of the groups.
+    from nck.kernel import Nck
+
+    gcodes = Nck().status().channel.modal.gcodes
+    assert gcodes[6] == "G17" and gcodes[8] == "G500" and gcodes[14] == "G90" and gcodes[15] == "G94"
