@@ -61,6 +61,7 @@ class ModalView:
     tool_name: str = ""  # name of the active tool when it has one (T="CUTTER_10")
     tool_length_mm: float = 0.0  # length 1 of the active edge (geometry + wear), for the T,F,S window
     tool_radius_mm: float = 0.0  # radius of the active edge (geometry + wear)
+    iso_gcodes: Mapping[int, str] = field(default_factory=dict)  # ISO group → code; empty in Siemens mode
 
 
 @dataclass(frozen=True, slots=True)

@@ -312,7 +312,7 @@ class MachineScreen(AreaBase):
         selected_axis = self.hmi.selected_axis
         self.query_one(PositionWindow).show(status, self.show_mcs, selected_axis)
         self.query_one(TfsWindow).show(status)
-        self.query_one(GFunctionsLine).show(channel.modal.gcodes)
+        self.query_one(GFunctionsLine).show(channel.modal.gcodes, getattr(channel.modal, "iso_gcodes", None))
         view_id = f"view-{self.view}" if self.view else MAIN_VIEWS.get(channel.mode, "view-jog")
         switcher = self.query_one(ContentSwitcher)
         if switcher.current != view_id:
@@ -329,7 +329,7 @@ class MachineScreen(AreaBase):
                        if channel.selected_program else None)
             self.query_one("#auto-blocks", BlockWindow).show(channel, program)
         elif view_id == "view-gfunc":
-            self.query_one(GFunctionsTable).show(channel.modal.gcodes)
+            self.query_one(GFunctionsTable).show(channel.modal.gcodes, getattr(channel.modal, "iso_gcodes", None))
         elif view_id == "view-aux":
             show_text(self.query_one("#aux-table", Static), self._aux_text(status))
         elif view_id == "view-progctl":

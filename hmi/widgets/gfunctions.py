@@ -25,17 +25,17 @@ def group_meanings() -> dict[int, str]:
     return {int(g["number"]): str(g.get("meaning", "")) for g in table.get("group", [])}
 
 
-def main_groups_line(gcodes: Mapping[int, str]) -> Text:
+def main_groups_line(gcodes: Mapping[int, str], groups: tuple[int, ...] = MAIN_GROUPS) -> Text:
     """The main groups' active codes in one line."""
     text = Text(" G functions  ", style="bold")
-    for group in MAIN_GROUPS:
+    for group in groups:
         text.append(f"{gcodes.get(group, '—'):<8}")
     return text
 
 
-def all_groups_table(gcodes: Mapping[int, str]) -> Table:
+def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | None = None) -> Table:
     """Every group with its number, active code and meaning, in two columns."""
-    meanings = group_meanings()
+    meanings = group_meanings() if meanings is None else meanings
     numbers = sorted(set(meanings) | set(gcodes))
     half = (len(numbers) + 1) // 2
     table = Table(expand=True, box=None, padding=(0, 1), show_edge=False)
@@ -61,12 +61,16 @@ class GFunctionsLine(Static):
         super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
         self._key: object = None
 
-    def show(self, gcodes: Mapping[int, str]) -> None:
-        """Redraw when the active codes changed."""
-        key = tuple(sorted(gcodes.items()))
+    def show(self, gcodes: Mapping[int, str], iso_gcodes: Mapping[int, str] | None = None) -> None:
+        """Redraw when the active codes changed (ISO groups while ISO mode is active)."""
+        key = tuple(sorted((iso_gcodes or gcodes).items()))
         if key != self._key:
             self._key = key
-            self.update(main_groups_line(gcodes), layout=False)
+            if iso_gcodes:
+                from nck.iso.display import ISO_MAIN_GROUPS_M
+                self.update(main_groups_line(iso_gcodes, ISO_MAIN_GROUPS_M), layout=False)
+            else:
+                self.update(main_groups_line(gcodes), layout=False)
 
 
 class GFunctionsTable(Static):
@@ -76,9 +80,15 @@ class GFunctionsTable(Static):
         super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
         self._key: object = None
 
-    def show(self, gcodes: Mapping[int, str]) -> None:
-        """Redraw when the active codes changed."""
-        key = tuple(sorted(gcodes.items()))
+    def show(self, gcodes: Mapping[int, str], iso_gcodes: Mapping[int, str] | None = None) -> None:
+        """Redraw when the active codes changed (the ISO table while ISO mode is active)."""
+        key = tuple(sorted((iso_gcodes or gcodes).items()))
         if key != self._key:
             self._key = key
-            self.update(all_groups_table(gcodes), layout=False)
+            if iso_gcodes:
+                from nck.iso.display import iso_table
+                meanings = iso_table("iso-t" if 16 in iso_gcodes and 8 not in iso_gcodes
+                                     else "iso-m")[1]
+                self.update(all_groups_table(iso_gcodes, meanings), layout=False)
+            else:
+                self.update(all_groups_table(gcodes), layout=False)

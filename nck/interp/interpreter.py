@@ -147,6 +147,7 @@ class Interpreter:
             spindle_speed_rpm=modal.spindle_speed_rpm,
             spindle_state=modal.spindle_state,
             aux=dict(modal.aux),
+            iso_gcodes=_iso_view(modal.gcodes, self.dialect),
         )
 
     def r(self, index: int) -> float:
@@ -505,6 +506,14 @@ _MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Case, ast.SectionRepeat, a
 
 
 _MAIN_RUN_PREFIXES = ("$A", "$V", "$$")
+
+
+def _iso_view(gcodes: Mapping[int, str], dialect: str) -> dict[int, str]:
+    """ISO codes for the G-group display while ISO mode (G291) is active, else empty."""
+    if gcodes.get(47) != "G291":
+        return {}
+    from nck.iso.display import iso_gcodes
+    return iso_gcodes(gcodes, "iso-t" if dialect == "iso-t" else "iso-m")
 
 
 def _reads_main_run_data(block: ast.Block) -> bool:

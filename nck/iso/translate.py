@@ -98,7 +98,8 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
         out.insert(0, IsoLine(1, "", [cycles.DECLARATION]))
     if main and start_in_iso:
         first = 1 if out and out[0].blocks[:1] == [cycles.DECLARATION] else 0
-        out.insert(first, IsoLine(1, "", ["G0"]))
+        start = "G0 G291 G18 G95" if dialect == "iso-t" else "G0 G291"
+        out.insert(first, IsoLine(1, "", [start]))
     return out
 
 
@@ -114,9 +115,7 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
     if not modal.iso:
         switch = _switch_word(raw)
         if switch == "G291":
-            modal.iso = True
-            rest = raw.upper().replace("G291", "")
-            return [rest] if rest.strip() else []
+            modal.iso = True  # the Siemens block itself selects G291 (group 47)
         return [raw]
     stripped = raw.strip()
     if not stripped or stripped.startswith("%"):
@@ -128,6 +127,8 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
         return []
     prefix = "" if skip is None else ("/" if skip == 0 else f"/{skip}")
     blocks = _translate_words(words, modal, settings)
+    if not modal.iso:
+        blocks.append("G290")  # back to Siemens mode after this block
     if words[0].letter == "N":  # NC-inserted blocks carry the ISO block number
         label = f"N{int(words[0].value)}"
         blocks = [b if b.startswith(label + " ") or b == label else f"{label} {b}" for b in blocks]

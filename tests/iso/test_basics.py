@@ -160,3 +160,48 @@ def test_siemens_program_switches_with_g291():
                             max_blocks=1000)
     assert result.status == "ended", result.alarms
     assert [m.kind for m in result.segments] == ["G1", "G0"]
+
+
+def _step_views(text: str, dialect: str = "iso-m"):
+    """(source line, iso_gcodes, Siemens gcodes) after every block, stepping the interpreter."""
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect)
+    interp.start_text("T.MPF", text)
+    views = []
+    while not interp.finished:
+        result = interp.step()
+        view = interp.modal_view()
+        views.append((result.source.line, dict(view.iso_gcodes), dict(view.gcodes)))
+    return views
+
+
+def test_g_group_display_shows_iso_codes_in_iso_mode():
+    views = _step_views("G91 G01 X1. F100\nG290\nG1 X1\nG291\nG00 X2.\nM30\n")
+    by_line = {line: (iso, siemens) for line, iso, siemens in views}
+    iso, siemens = by_line[1]
+    assert iso[1] == "G01" and iso[3] == "G91" and iso[2] == "G17" and iso[31] == "G291"
+    assert iso[8] == "G49" and iso[9] == "G80"
+    # after G290 the Siemens table is shown, with the shared G91
+    iso, siemens = by_line[3]
+    assert iso == {} and siemens[14] == "G91" and siemens[47] == "G290"
+    iso, _ = by_line[5]
+    assert iso[1] == "G00" and iso[3] == "G91"
+
+
+def test_iso_t_defaults_in_display():
+    views = _step_views("G00 X1.\nM30\n", "iso-t")
+    iso = views[0][1]
+    assert iso[16] == "G18" and iso[31] == "G291"
+
+
+def test_hmi_g_functions_line_lists_iso_groups():
+    from hmi.widgets.gfunctions import all_groups_table, main_groups_line
+    from nck.iso.display import ISO_MAIN_GROUPS_M, iso_gcodes, iso_table
+    view = iso_gcodes({1: "G1", 6: "G17", 14: "G91", 15: "G94", 13: "G710", 7: "G41", 8: "G55"})
+    line = main_groups_line(view, ISO_MAIN_GROUPS_M).plain.split()
+    assert line[2:] == ["G01", "G17", "G91", "G94", "G21", "G41", "G49", "G55"]
+    table = all_groups_table(view, iso_table("iso-m")[1])
+    assert table.row_count > 5
