@@ -90,7 +90,8 @@ class Interpreter:
         self.machine = machine
         self.programs = programs
         self.data = data
-        self.dialect = dialect
+        from nck.iso import dialect_for
+        self.dialect = dialect_for(dialect, machine)  # ISO modes carry MD 10884/10886
         self.table = gtable("siemens" if dialect in ("iso-m", "iso-t") else dialect)
         self.builder = MotionBuilder(machine, data)
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")

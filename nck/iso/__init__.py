@@ -14,3 +14,26 @@ ISO_DIALECTS = ("iso-m", "iso-t")
 def is_iso(dialect: str) -> bool:
     """True for the ISO language modes (``iso-m``, ``iso-t``)."""
     return dialect in ISO_DIALECTS
+
+
+class DialectName(str):
+    """A dialect name (``"iso-m"``) that also carries the ISO decimal-point settings.
+
+    It compares and hashes like the plain name, so code that only looks at the
+    name is unaffected; the program loader reads :attr:`iso_settings`.
+    """
+
+    iso_settings: object = None
+
+
+def dialect_for(dialect: str, machine: object) -> str:
+    """``dialect`` with the machine's MD 10884/10886 attached (ISO modes only)."""
+    if not is_iso(dialect):
+        return dialect
+    from nck.iso.translate import IsoSettings
+    md_value = getattr(machine, "md_value", None)
+    pocket = md_value("MD10884", None, True) if md_value else True
+    is_c = md_value("MD10886", None, 0) if md_value else 0
+    named = DialectName(dialect)
+    named.iso_settings = IsoSettings(pocket_calculator=bool(pocket), increment_system_c=bool(is_c))
+    return named

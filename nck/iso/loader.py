@@ -34,7 +34,8 @@ def iso_lines(name: str, text: str, dialect: str,
     from nck.lang.parser import parse_block
 
     lines: list = []
-    for iso_line in translate(text, dialect if is_iso(dialect) else "iso-m",
+    settings = getattr(dialect, "iso_settings", None)
+    for iso_line in translate(text, str(dialect) if is_iso(dialect) else "iso-m", settings,
                               start_in_iso=is_iso(dialect), main=main and is_iso(dialect)):
         number, raw = iso_line.number, iso_line.text
         if iso_line.error is not None:

@@ -205,3 +205,26 @@ def test_hmi_g_functions_line_lists_iso_groups():
     assert line[2:] == ["G01", "G17", "G91", "G94", "G21", "G41", "G49", "G55"]
     table = all_groups_table(view, iso_table("iso-m")[1])
     assert table.row_count > 5
+
+
+@pytest.mark.parametrize("md, expected_x", [({}, 100.0), ({"MD10884": False}, 0.1),
+                                            ({"MD10884": False, "MD10886": 1}, 0.01)])
+def test_machine_data_choose_decimal_point_notation(md, expected_x):
+    from nck.headless import interpret_only
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    machine = load_machine(None)
+    machine.md.update(md)
+    result = interpret_only(machine, MemorySource(), NcData(), "T.MPF", dialect="iso-m",
+                            text="G90 G01 X100 Y20. F100\nM30\n", max_blocks=1000)
+    assert result.status == "ended", result.alarms
+    assert ends(result)[0][1] == {"X": expected_x, "Y": 20.0, "Z": 0.0}
+
+
+def test_cli_runs_iso_dialect(tmp_path, capsys):
+    from nck.cli import main
+    program = tmp_path / "ISO1.MPF"
+    program.write_text("G91 G01 X5. F200\nM30\n")
+    assert main(["run", str(program), "--dialect", "iso-m", "--segments", "-"]) == 0
+    assert '"X": 5.0' in capsys.readouterr().out
