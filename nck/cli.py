@@ -127,9 +127,12 @@ def _source(path: Path, options: argparse.Namespace, env: "_Environment | None" 
 class _Environment:
     """Machine, NC data and (with ``--data-dir``) the retained-data session of one command.
 
-    Without ``--data-dir`` every run starts from fresh NC data (nothing is read
-    or written); with it the data directory is loaded (a temporary copy with
-    ``--ephemeral``) and, unless ephemeral, saved again after the run.
+    With ``--data-dir`` the data directory is loaded (a temporary copy with
+    ``--ephemeral``) and, unless ephemeral, saved again after the run. Without it the
+    user's NC data directory (the HMI's) is read if it exists — offsets, tools, machine
+    data and programs set up there apply — but a headless command never writes it back:
+    it works on a temporary copy, so checking a program cannot change the trainee's
+    set-up. With no user data directory every command starts from fresh NC data.
     """
 
     def __init__(self, options: argparse.Namespace) -> None:
@@ -137,19 +140,26 @@ class _Environment:
         self.session: Any = None
         self._ephemeral: Any = None
         self.data = NcData()
-        if options.data_dir:
+        data_dir, ephemeral = options.data_dir, options.ephemeral
+        if not data_dir:
+            from nck.paths import default_data_dir
+
+            default = default_data_dir()
+            if default.is_dir():
+                data_dir, ephemeral = str(default), True
+        if data_dir:
             from nck.paths import EphemeralDataDir, resolve_data_dir
             from nck.persistence import Session
 
             try:
-                if options.ephemeral:
-                    self._ephemeral = EphemeralDataDir(options.data_dir)
+                if ephemeral:
+                    self._ephemeral = EphemeralDataDir(data_dir)
                     directory = self._ephemeral.path
                 else:
-                    directory = resolve_data_dir(options.data_dir)
+                    directory = resolve_data_dir(data_dir)
                 self.session = Session.open(directory, self.machine)
             except OSError as exc:
-                raise CliError(f"NC data directory '{options.data_dir}': {exc}") from None
+                raise CliError(f"NC data directory '{data_dir}': {exc}") from None
             for alarm in self.session.startup_alarms:
                 print(format_alarm(alarm), file=sys.stderr)
             self.machine = self.session.active_machine()

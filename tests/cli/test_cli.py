@@ -171,3 +171,27 @@ def test_check_finds_jumps_without_destination_on_paths_not_taken(
     assert [(line.split()[1], line.split()[2]) for line in err] == [("14080", "J.MPF:2"), ("14080", "J.MPF:3")]
     ok = write(tmp_path, "S.MPF", 'DEF STRING[8] DEST="END"\nGOTOF DEST\nEND: M30\n')
     assert main(["check", str(ok)]) == 0
+
+
+def test_run_reads_the_user_data_dir_but_never_writes_it(tmp_path, monkeypatch) -> None:
+    # Without --data-dir, `nck run` uses the user's NC data on a temporary copy: R5 retained
+    # there is read, and the program's own write of R5 is not saved back.
+    import json
+    import subprocess
+    import sys
+
+    user_dir = tmp_path / "user-ncdata"
+    program = tmp_path / "R.MPF"
+    program.write_text("R1=R5*2\nR5=99\nM30\n")
+    monkeypatch.setenv("NCK_DATA_DIR", str(user_dir))
+
+    def run(*extra: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, "-m", "nck", "run", str(program), "--json", *extra],
+                              capture_output=True, text=True, check=False)
+
+    setup = run("--data-dir", str(user_dir))  # explicit data dir: R5 = 99 is saved there
+    assert setup.returncode == 0, setup.stderr
+    for _ in range(2):
+        result = run()
+        assert result.returncode == 0, result.stderr
+        assert json.loads(result.stdout)["r"]["1"] == 198.0
