@@ -1,0 +1,89 @@
+"""Hostile keys: a monkey sends random panel keys and printable characters across all areas.
+
+The HMI runs on a real kernel over a real NC data directory (every area has its
+data). After each burst the app must still run, neither the app nor the kernel
+may have logged an internal error, and the kernel's status snapshot must be
+consistent (known modes and states, finite positions, alarms well formed).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import string
+from pathlib import Path
+
+import pytest
+
+from hmi.app import make_app
+from hmi.keymap import default_keymap
+from tests.hmi.conftest import SIZE
+
+MODES = {"JOG", "MDA", "AUTO"}
+CHANNEL_STATES = {"reset", "active", "interrupted"}
+PROGRAM_STATES = {"aborted", "running", "stopped", "interrupted", "waiting"}
+EXTRA_KEYS = ["enter", "escape", "tab", "shift+tab", "up", "down", "left", "right", "pageup", "pagedown",
+              "home", "end", "backspace", "delete", "insert", "space", "ctrl+u", "ctrl+c", "ctrl+v",
+              "ctrl+z", "ctrl+s", "ctrl+f"]
+PROGRAM = "N10 G90 G0 X10 Y10 Z5\nN20 G1 X30 F2000\nN30 M0\nN40 Y30\nLBL: R1=R1+1\nGOTOB LBL\nM30\n"
+
+
+def monkey_keys() -> list[str]:
+    """Every key of the keymap (quitting excluded), editing keys, and printable characters."""
+    keys = [k.strip() for b in default_keymap().bindings if "quit" not in b.id
+            for k in b.keys.split(",")]
+    keys = [k for k in keys if k and "ctrl+q" not in k]
+    printable = [c for c in string.ascii_letters + string.digits + "=+-*/()[].,;:\"'$_ <>"]
+    names = {" ": "space"}
+    return keys * 3 + EXTRA_KEYS + [names.get(c, c) for c in printable]
+
+
+def assert_consistent(app) -> None:
+    """The app runs, nothing internal failed, the kernel snapshot makes sense."""
+    assert app.is_running
+    assert app.internal_errors == [], app.internal_errors[0]
+    nck = app.bridge.nck
+    assert nck.internal_errors == [], nck.internal_errors[0]
+    status = nck.status()
+    channel = status.channel
+    assert channel.mode in MODES
+    assert channel.channel_state in CHANNEL_STATES
+    assert channel.program_state in PROGRAM_STATES
+    for axis in status.axes:
+        assert math.isfinite(axis.position_mcs) and math.isfinite(axis.position_wcs), axis
+    for alarm in status.alarms:
+        assert isinstance(alarm.number, int) and alarm.number > 0 and alarm.text
+
+
+async def run_monkey(tmp_path: Path, seed: int, bursts: int, burst_keys: int) -> int:
+    """Send ``bursts`` x ``burst_keys`` random keys; return how many were sent."""
+    program = tmp_path / "MONKEY.MPF"
+    program.write_text(PROGRAM)
+    app = make_app(data_dir=str(tmp_path / "data"), program=str(program), realtime=False)
+    keys = monkey_keys()
+    rng = random.Random(seed)
+    sent = 0
+    async with app.run_test(size=SIZE) as pilot:
+        for _ in range(bursts):
+            for _ in range(burst_keys):
+                await pilot.press(rng.choice(keys))
+                sent += 1
+                if rng.random() < 0.2:
+                    app.bridge.advance(rng.choice([0.0, 0.05, 0.5]))
+            await pilot.pause()
+            assert_consistent(app)
+        assert_consistent(app)
+    app.nc_session.quit()
+    return sent
+
+
+async def test_monkey_short(tmp_path: Path) -> None:
+    """120 keys in three bursts (the long version runs under ``make fuzz``)."""
+    assert await run_monkey(tmp_path, 11, bursts=3, burst_keys=40) == 120
+
+
+@pytest.mark.fuzz
+@pytest.mark.parametrize("seed", range(20))
+async def test_monkey_long(seed: int, tmp_path: Path) -> None:
+    """20 seeds x 1,000 keys = 20,000 keys."""
+    assert await run_monkey(tmp_path, 1000 + seed, bursts=20, burst_keys=50) == 1000
