@@ -182,16 +182,16 @@ def test_run_reads_the_user_data_dir_but_never_writes_it(tmp_path, monkeypatch) 
 
     user_dir = tmp_path / "user-ncdata"
     program = tmp_path / "R.MPF"
-    program.write_text("R1=R5*2\nR5=99\nM30\n")
+    program.write_text("R1=R5*2\nR5=R5+1\nM30\n")
     monkeypatch.setenv("NCK_DATA_DIR", str(user_dir))
 
     def run(*extra: str) -> subprocess.CompletedProcess[str]:
         return subprocess.run([sys.executable, "-m", "nck", "run", str(program), "--json", *extra],
                               capture_output=True, text=True, check=False)
 
-    setup = run("--data-dir", str(user_dir))  # explicit data dir: R5 = 99 is saved there
+    setup = run("--data-dir", str(user_dir), "--set", "R5=7")  # explicit: R5 = 8 is saved
     assert setup.returncode == 0, setup.stderr
     for _ in range(2):
         result = run()
         assert result.returncode == 0, result.stderr
-        assert json.loads(result.stdout)["r"]["1"] == 198.0
+        assert json.loads(result.stdout)["r"]["1"] == 16.0  # 18 on the second run if written back
