@@ -1,0 +1,172 @@
+"""The benchmark suite of ``make bench``: figures, targets, peers, ratios → bench/results.md.
+
+Every child process is measured on its own (wall time, CPU, peak RSS via
+``wait4``). Peers run alternately with ours and the medians are compared, so
+machine noise hits both sides alike. Throughput is blocks per wall second of the
+whole command (start-up included, as a user experiences it).
+"""
+
+from __future__ import annotations
+
+import datetime
+import json
+import os
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from bench.contour import contour_program
+from bench.measure import ChildRun, alternate, environment_note, median, run_child
+from bench.peers import ensure_ncgi, ensure_rs274, nck_check_command, nck_run_command
+from bench.programs import CAM_BLOCKS, write_cam_program
+
+RESULTS = Path(__file__).with_name("results.md")
+
+
+@dataclass
+class Row:
+    """One line of the results table."""
+
+    figure: str
+    value: str
+    target: str
+    peer: str = ""
+    ratio: str = ""
+    met: str = ""
+
+
+def _blocks_per_s(runs: list[ChildRun], blocks: int) -> float:
+    return blocks / median([r.wall_s for r in runs])
+
+
+def interpreter_rows(program: Path, repeats: int, notes: list[str]) -> list[Row]:
+    """``nck check`` vs ``rs274 -g`` vs nc-gcode-interpreter on the same file, alternating."""
+    commands = {"nck": nck_check_command() + [str(program)]}
+    rs274, rs_note = ensure_rs274()
+    ncgi, ncgi_note = ensure_ncgi()
+    if rs274 is not None:
+        commands["rs274"] = rs274 + [str(program), os.devnull]
+    else:
+        notes.append(rs_note)
+    if ncgi is not None:
+        commands["ncgi"] = ncgi + [str(program)]
+    else:
+        notes.append(ncgi_note)
+    runs = alternate(commands, repeats)
+    for name, name_runs in runs.items():
+        bad = [r for r in name_runs if r.returncode != 0]
+        if bad:
+            notes.append(f"{name} exited {bad[0].returncode}: {bad[0].stderr.strip()[-300:]}")
+    ours = _blocks_per_s(runs["nck"], CAM_BLOCKS)
+    rows = [Row(f"nck check, {CAM_BLOCKS:,} G1 blocks", f"{ours:,.0f} blocks/s",
+                "≥ 0.5× rs274, > nc-gcode-interpreter")]
+    if "rs274" in runs:
+        theirs = _blocks_per_s(runs["rs274"], CAM_BLOCKS)
+        ratio = ours / theirs
+        rows.append(Row("  vs LinuxCNC rs274 -g", f"{theirs:,.0f} blocks/s", "ratio ≥ 0.5",
+                        rs_note, f"{ratio:.3f}×", "yes" if ratio >= 0.5 else "NO"))
+    if "ncgi" in runs:
+        theirs = _blocks_per_s(runs["ncgi"], CAM_BLOCKS)
+        ratio = ours / theirs
+        rows.append(Row("  vs nc-gcode-interpreter", f"{theirs:,.0f} blocks/s", "ratio > 1",
+                        ncgi_note, f"{ratio:.3f}×", "yes" if ratio > 1.0 else "NO"))
+    cpu = median([r.cpu_s for r in runs["nck"]])
+    rows.append(Row("  nck check CPU time", f"{cpu:.2f} s", "", "", "", ""))
+    return rows
+
+
+def _machine_time(run: ChildRun) -> float:
+    try:
+        return float(json.loads(run.stdout)["machine_time_s"])
+    except (ValueError, KeyError, TypeError):
+        return float("nan")
+
+
+def simulation_rows(folder: Path, program: Path, notes: list[str], big: bool) -> list[Row]:
+    """``nck run`` of the 2,000-block G64 contour and of the long program: machine/wall, RSS."""
+    data_dir = folder / "data"
+    data_dir.mkdir(exist_ok=True)
+    contour = folder / "CONTOUR.MPF"
+    contour.write_text(contour_program(2000, 40.0))
+    rows = []
+    runs = [run_child(nck_run_command(data_dir) + [str(contour)]) for _ in range(3)]
+    ratio = median([_machine_time(r) / r.wall_s for r in runs])
+    rows.append(Row("nck run, 2,000-block G64 contour", f"{ratio:,.0f}× real time",
+                    "≥ 300× (aim 1,000×)", "", "", "yes" if ratio >= 300 else "NO"))
+    for run in runs[:1]:
+        if run.returncode != 0:
+            notes.append(f"nck run contour exited {run.returncode}: {run.stderr.strip()[-300:]}")
+    if not big:
+        notes.append(f"nck run on the {CAM_BLOCKS:,}-block program skipped (BENCH_QUICK)")
+        return rows
+    run = run_child(nck_run_command(data_dir) + [str(program)], timeout_s=1500.0)
+    if run.returncode != 0:
+        notes.append(f"nck run {CAM_BLOCKS:,} blocks exited {run.returncode}: {run.stderr.strip()[-300:]}")
+    machine = _machine_time(run)
+    rows.append(Row(f"nck run, {CAM_BLOCKS:,} G1 blocks", f"{machine / run.wall_s:,.0f}× real time",
+                    "≥ 300×", "", f"{machine:,.0f} s machine / {run.wall_s:,.1f} s wall",
+                    "yes" if machine / run.wall_s >= 300 else "NO"))
+    rows.append(Row(f"peak RSS, nck run {CAM_BLOCKS:,} blocks", f"{run.peak_rss_mb:,.0f} MB",
+                    "< 300 MB", "", "", "yes" if run.peak_rss_mb < 300 else "NO"))
+    return rows
+
+
+def hmi_rows(program: Path | None, notes: list[str]) -> list[Row]:
+    """HMI start-to-first-frame, refresh CPU, key latency (Pilot), and RSS with the long program."""
+    rows: list[Row] = []
+    probe = run_child([sys.executable, "-m", "bench.hmi_probe", f"{time.time():.6f}"])
+    try:
+        hmi = json.loads(probe.stdout.strip().splitlines()[-1])
+    except (ValueError, IndexError):
+        notes.append(f"HMI probe failed: {probe.stderr.strip()[-400:]}")
+        return rows
+    rows.append(Row("HMI start to first frame", f"{hmi['first_frame_s'] * 1000:,.0f} ms", "< 1,000 ms",
+                    "", "", "yes" if hmi["first_frame_s"] < 1.0 else "NO"))
+    rows.append(Row("HMI CPU per refresh (program running)",
+                    f"median {hmi['refresh_cpu_ms_median']:.1f} ms, p95 {hmi['refresh_cpu_ms_p95']:.1f} ms",
+                    "< 15 ms", "", "", "yes" if hmi["refresh_cpu_ms_median"] < 15 else "NO"))
+    rows.append(Row("HMI key to repaint (Pilot, running)",
+                    f"median {hmi['key_latency_ms_median']:.0f} ms, p95 {hmi['key_latency_ms_p95']:.0f} ms",
+                    "p95 < 50 ms", "", "", "yes" if hmi["key_latency_ms_p95"] < 50 else "NO"))
+    if program is not None:
+        big = run_child([sys.executable, "-m", "bench.hmi_probe", f"{time.time():.6f}",
+                         "--program", str(program)], timeout_s=900.0)
+        if big.returncode == 0:
+            rows.append(Row(f"peak RSS, HMI with {CAM_BLOCKS:,}-block program selected in AUTO",
+                            f"{big.peak_rss_mb:,.0f} MB", "< 300 MB", "", "",
+                            "yes" if big.peak_rss_mb < 300 else "NO"))
+        else:
+            notes.append(f"HMI with the long program: exit {big.returncode}: {big.stderr.strip()[-300:]}")
+    return rows
+
+
+def format_table(rows: list[Row]) -> str:
+    """A Markdown table of the rows."""
+    head = "| figure | value | target | peer | ratio / detail | met |\n|---|---|---|---|---|---|\n"
+    return head + "".join(f"| {r.figure} | {r.value} | {r.target} | {r.peer} | {r.ratio} | {r.met} |\n"
+                          for r in rows)
+
+
+def run_suite() -> str:
+    """Run everything, print the table and write bench/results.md; return the Markdown."""
+    quick = bool(os.environ.get("BENCH_QUICK"))
+    repeats = int(os.environ.get("BENCH_REPEATS", "1" if quick else "3"))
+    notes: list[str] = []
+    rows: list[Row] = []
+    started = time.perf_counter()
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        program = write_cam_program(folder)
+        rows += interpreter_rows(program, repeats, notes)
+        print(format_table(rows), flush=True)
+        rows += simulation_rows(folder, program, notes, big=not quick)
+        rows += hmi_rows(None if quick else program, notes)
+    stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    text = (f"# Benchmark results\n\n{stamp} on {environment_note()}; "
+            f"{repeats} alternating run(s) per interpreter, medians; suite took "
+            f"{time.perf_counter() - started:,.0f} s.\n\n" + format_table(rows))
+    if notes:
+        text += "\nNotes:\n\n" + "".join(f"- {n}\n" for n in notes)
+    return text
