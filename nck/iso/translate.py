@@ -57,6 +57,8 @@ class _Modal:
     absolute: bool = True
     per_rev: bool = False
     motion: str = "G0"
+    turning: bool = False  # ISO T: T<tool><offset>
+    main: bool = False  # M99 restarts a main program
     cycle: cycles.CycleState = field(default_factory=cycles.CycleState)
 
 
@@ -69,7 +71,7 @@ _SIMPLE_G = {
     "G94": "G94", "G95": "G95", "G20": "G700", "G21": "G710", "G70": "G700",
     "G71": "G710", "G53": "G53",
 }
-_SUPPORTED_OTHER = {"G4", "G04", "G10", "G28", "G43", "G44", "G49", "G52", "G80", "G92",
+_SUPPORTED_OTHER = {"G54.1", "G4", "G04", "G10", "G28", "G43", "G44", "G49", "G52", "G80", "G92",
                     "G92.1", "G98", "G99", "G290", "G291", "G15", "G50", "G50.1", "G67",
                     "G69", "G97", "G23", "G13.1"}
 
@@ -82,7 +84,7 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
     G00 (the Siemens reset value of group 1 is G1).
     """
     settings = settings or IsoSettings()
-    modal = _Modal(iso=start_in_iso)
+    modal = _Modal(iso=start_in_iso, turning=dialect == "iso-t", main=main)
     raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
     if raw_lines and raw_lines[-1] == "":
         raw_lines.pop()
@@ -191,7 +193,16 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         calls = _subprogram_call(values)
         return [number + call for call in calls] if calls else ([number] if number else [])
     if any(int(w.value) == 99 for w in ms):
-        return [number + "M17"]
+        if "P" in values:
+            raise NcAlarmError(12080, "M99 P")  # return to a block number: not supported
+        return [number + ("GOTOS" if modal.main else "M17")]
+    if "G54.1" in gcodes or ("G54" in gcodes and "P" in values):
+        if "P" not in values:
+            raise NcAlarmError(12080, "G54.1")
+        slot = int(values.pop("P"))
+        if not 1 <= slot <= 48:
+            raise NcAlarmError(12080, f"G54 P{slot}")
+        gcodes = [c for c in gcodes if c not in ("G54", "G54.1")] + [f"G{506 + slot}"]
     if any(code in ("G4", "G04") for code in gcodes):
         return [number + _dwell(addresses, values, settings)]
     if "G10" in gcodes:
@@ -214,8 +225,17 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         return blocks
     siemens_g: list[str] = []
     cycle_code = None
+    if "G53" in gcodes and not modal.absolute:
+        for axis in AXES:  # incremental values in a G53 block are skipped
+            values.pop(axis, None)
+    if modal.turning and "T" in values:  # MD 10888 = 2: two tool digits, then the offset
+        digits = addresses["T"].text.lstrip("+")
+        if len(digits) > 2:
+            values["T"], values["D"] = int(digits[:2]), int(digits[2:])
     for code in gcodes:
-        if code in _SIMPLE_G:
+        if code.startswith("G5") and code[1:].isdigit() and int(code[1:]) > 500:
+            siemens_g.append(code)
+        elif code in _SIMPLE_G:
             siemens_g.append(_SIMPLE_G[code])
             if _SIMPLE_G[code] in ("G0", "G1", "G2", "G3"):
                 modal.motion = _SIMPLE_G[code]

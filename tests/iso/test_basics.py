@@ -228,3 +228,37 @@ def test_cli_runs_iso_dialect(tmp_path, capsys):
     program.write_text("G91 G01 X5. F200\nM30\n")
     assert main(["run", str(program), "--dialect", "iso-m", "--segments", "-"]) == 0
     assert '"X": 5.0' in capsys.readouterr().out
+
+
+def test_g54_1_needs_p_and_g54_p_selects_extended_offset():
+    assert run_iso("G54.1 X1.\nM30\n").alarms[0].number == 12080
+    assert translate("G54 P1 X1.")[0].blocks == ["G507 X1"]
+    assert translate("G54.1 P2 X1.")[0].blocks == ["G508 X1"]
+
+
+def test_g53_incremental_values_are_skipped():
+    result = run_iso("G0 X5.\nG53 G91 X10.\nM30\n")
+    assert [e[1]["X"] for e in ends(result)] == [5.0]
+
+
+def test_feed_and_arc_guards():
+    assert run_iso("G02 X10. Y10. F100\nM30\n").status == "alarm"
+    result = run_iso("G94 G01 X10. F100\nG95 X20.\nM30\n")
+    assert result.alarms[0].number == 10860
+
+
+def test_m99_in_main_program_restarts_it():
+    from nck.headless import interpret_only
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    result = interpret_only(load_machine(None), MemorySource(), NcData(), "T.MPF", dialect="iso-m",
+                            text="G91 G01 X1. F100\nM99\n", max_blocks=40)
+    assert result.status != "ended"
+    assert len(result.segments) > 3
+
+
+@pytest.mark.parametrize("word, expected", [("T0102", "T1 D2"), ("T1234", "T12 D34"),
+                                            ("T123", "T12 D3")])
+def test_iso_t_tool_word_splits_tool_and_offset(word, expected):
+    assert translate(word, "iso-t")[0].blocks == [expected]
