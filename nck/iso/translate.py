@@ -344,7 +344,8 @@ def _subprogram_call(values: dict[str, float]) -> list[str]:
         raise NcAlarmError(12080, "M98")
     p_value = int(values["P"])
     count = int(values.get("L", 1))
-    if p_value > 9999:
-        count = p_value // 10000
+    if p_value > 9999:  # P<count><nnnn>; an explicit L takes precedence over the count digits
+        if "L" not in values:
+            count = p_value // 10000
         p_value %= 10000
     return [f'CALL "O{p_value:04d}"'] * count

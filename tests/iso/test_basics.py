@@ -262,3 +262,12 @@ def test_m99_in_main_program_restarts_it():
                                             ("T123", "T12 D3")])
 def test_iso_t_tool_word_splits_tool_and_offset(word, expected):
     assert translate(word, "iso-t")[0].blocks == [expected]
+
+
+def test_e1_language_switch_keeps_modal_state():
+    text = ("N5  G00 X100. Y100.\nN10 G90           ;ISO G90\nN15 G290         ;Siemens\n"
+            "N20 G91\nN25 G291\nN30 G291\nM30\n")
+    views = {line: (iso, siemens) for line, iso, siemens in _step_views(text)}
+    assert views[3][0] == {} and views[3][1][14] == "G90"
+    assert views[4][1][14] == "G91"
+    assert views[5][0][3] == "G91" and views[6][0][3] == "G91"

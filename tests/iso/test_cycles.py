@@ -108,3 +108,11 @@ def test_m98_with_l_count():
     sub = "G91 G01 X1. F100\nM99\n"
     result = run_iso("M98 P55 L4\nM30\n", {"O0055": sub})
     assert len(result.segments) == 4
+
+
+def test_m98_l_takes_precedence_over_count_digits():
+    sub = "G91 G01 X1. F100\nM99\n"
+    result = run_iso("M98 P30077 L2\nM30\n", {"O0077": sub})
+    assert result.status == "ended", result.alarms
+    assert len(result.segments) == 2
+
