@@ -221,7 +221,9 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     if "G28" in gcodes:
         moved = [a for a in AXES if a in values]
         blocks = [number + "G0 " + " ".join(f"{a}{_fmt(values[a])}" for a in moved)] if moved else []
-        blocks.append("G74 " + " ".join(f"{a}1=0" for a in (moved or list(AXES))))
+        blocks.append("G74 " + " ".join(f"{a}0" for a in (moved or list(AXES))))
+        if modal.motion != "G0":
+            blocks.append(modal.motion)  # G28 is non-modal: group 1 stays as it was
         return blocks
     siemens_g: list[str] = []
     cycle_code = None

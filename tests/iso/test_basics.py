@@ -271,3 +271,10 @@ def test_e1_language_switch_keeps_modal_state():
     assert views[3][0] == {} and views[3][1][14] == "G90"
     assert views[4][1][14] == "G91"
     assert views[5][0][3] == "G91" and views[6][0][3] == "G91"
+
+
+def test_g28_goes_via_intermediate_point_to_reference():
+    result = run_iso("G0 X10. Y10. Z10.\nG28 Z20.\nM30\n")
+    assert result.status == "ended", result.alarms
+    assert [e[1]["Z"] for e in ends(result, "mcs")] == [10.0, 20.0, 0.0]
+    assert ends(result, "mcs")[-1][1]["X"] == 10.0
