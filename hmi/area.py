@@ -208,6 +208,14 @@ class AreaBase(Screen):
                 line._last_text = text  # type: ignore[attr-defined]
                 line.update(text, layout=False)
 
+    def say(self, text: str) -> None:
+        """Write ``text`` on the dialog line and keep it when the area is shown again."""
+        setter = getattr(self.hmi, "set_hint", None)
+        if callable(setter):
+            setter(text)
+        else:
+            self.show_hint(text)
+
     def on_mount(self) -> None:
         """Show what is known as soon as the screen exists."""
         self.show_status(self.hmi.latest_status)

@@ -156,14 +156,6 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         """True once the windows exist (``is_mounted`` is still False inside ``on_mount``)."""
         return bool(self.query("#prog-editor"))
 
-    def say(self, text: str) -> None:
-        """Write ``text`` on the dialog line (kept when the area is shown again)."""
-        setter = getattr(self.hmi, "set_hint", None)
-        if callable(setter):
-            setter(text)
-        else:
-            self.show_hint(text)
-
     # -- softkeys ------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
         """Top level: Edit, Search, Renumber, Save, Simulation, Execute, Close."""

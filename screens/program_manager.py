@@ -183,14 +183,6 @@ class ProgramManagerScreen(AreaBase):
         """True once the windows exist (``is_mounted`` is still False inside ``on_mount``)."""
         return bool(self.query("#pm-list"))
 
-    def say(self, text: str) -> None:
-        """Write ``text`` on the dialog line (kept when the area is shown again)."""
-        setter = getattr(self.hmi, "set_hint", None)
-        if callable(setter):
-            setter(text)
-        else:
-            self.show_hint(text)
-
     # -- softkeys ------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
         """Execute, New, Open, Copy, Paste, Rename, Delete, Search / Import, Export, directories."""
