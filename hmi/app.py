@@ -299,6 +299,10 @@ class HmiApp(MachineControlPanel, App):
     # -- operator panel ---------------------------------------------------------------------
     def action_switch_area(self, area_id: str) -> None:
         """Area key: show the operating area ``area_id``."""
+        from screens.dialogs import HelpScreen
+
+        if isinstance(self.screen, HelpScreen):  # the help overlay belongs to the area being left
+            self.screen.dismiss(None)
         area = self.area_screen
         if area is not None:
             area.clear_softkey_levels()
@@ -341,6 +345,8 @@ class HmiApp(MachineControlPanel, App):
         if isinstance(self.screen, HelpScreen):
             self.screen.dismiss(None)
             return
+        if any(isinstance(node, HelpScreen) for node in self.children):
+            return  # another area's help is still being closed: its id "help" is taken until then
         area = self.area_screen
         menu = area.current_menu() if area is not None else SoftkeyMenu.of()
         self.push_screen(HelpScreen(self.keymap, menu))

@@ -87,3 +87,23 @@ async def test_monkey_short(tmp_path: Path) -> None:
 async def test_monkey_long(seed: int, tmp_path: Path) -> None:
     """20 seeds x 1,000 keys = 20,000 keys."""
     assert await run_monkey(tmp_path, 1000 + seed, bursts=20, burst_keys=50) == 1000
+
+
+async def test_help_opened_again_after_an_area_switch(tmp_path: Path) -> None:
+    """Found by the monkey: F11, an area key, F11 again raised DuplicateIds('help')."""
+    from screens.dialogs import HelpScreen
+
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False)
+    keys = {b.id: b.keys.split(",")[0].strip() for b in default_keymap().bindings}
+    async with app.run_test(size=SIZE) as pilot:
+        for area in ("area.program_manager", "area.machine", "area.diagnostics"):
+            await pilot.press(keys["help"])
+            await pilot.pause()
+            assert isinstance(app.screen, HelpScreen)
+            await pilot.press(keys[area])
+            await pilot.pause()
+            assert not isinstance(app.screen, HelpScreen)
+        await pilot.press(keys["help"], keys["area.machine"], keys["help"])
+        await pilot.pause()
+        assert_consistent(app)
+    app.nc_session.quit()
