@@ -33,6 +33,7 @@ from nck.machine_data import (
     UnknownDataError,
     format_value,
 )
+from nck.datalock import DataDirInUse, lock_data_dir
 from nck.paths import open_data_dir
 from nck.persistence import Session
 from nck.resources import alarm_text
@@ -98,12 +99,20 @@ def run(argv: list[str], out: TextIO, err: TextIO) -> int:
     except OSError as exc:
         print(f"nck md: data directory {options.data_dir}: {exc.strerror}", file=err)
         return 2
+    lock = None
     try:
+        if ephemeral is None:  # an HMI working on this directory would overwrite what we write
+            lock = lock_data_dir(data_dir)
         return _run(options, machine, data_dir, out, err)
+    except DataDirInUse as exc:
+        print(f"nck md: {exc}", file=err)
+        return 2
     except OSError as exc:
         print(f"nck md: data directory {data_dir}: {exc.strerror or exc}", file=err)
         return 2
     finally:
+        if lock is not None:
+            lock.release()
         if ephemeral is not None:
             ephemeral.cleanup()
 

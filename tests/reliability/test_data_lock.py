@@ -93,3 +93,22 @@ def test_a_quit_session_frees_the_directory(tmp_path: Path) -> None:
     first.quit()
     second = build_session(data_dir=str(tmp_path))
     second.quit()
+
+
+def test_nck_md_refuses_a_directory_an_hmi_works_on(tmp_path: Path) -> None:
+    import io
+
+    from nck.cli_md import run as md_run
+
+    holder = _start_holder(tmp_path)
+    try:
+        err = io.StringIO()
+        code = md_run(["--data-dir", str(tmp_path), "--password", "EVENING", "MD32000[X]=5000"],
+                      io.StringIO(), err)
+        assert code == 2 and "in use by process" in err.getvalue()
+    finally:
+        holder.send_signal(signal.SIGKILL)
+        holder.wait(timeout=30)
+    out = io.StringIO()
+    assert md_run(["--data-dir", str(tmp_path), "MD32000[X]"], out, io.StringIO()) == 0
+    assert "30000" in out.getvalue()
