@@ -14,6 +14,13 @@ G53 stays non-modal machine coordinates, G61 → G60, M98 → subprogram call
 ``O<nnnn>`` with a repeat count, M99 → M17. Decimal point (MD 10884/10886):
 pocket-calculator notation by default; in standard notation a value without
 a point is counted in increments (IS-B 0.001 mm, IS-C 0.0001 mm).
+
+Not modelled (yet): a ``/n`` in the middle of a block is resolved at load time
+as if level n were off; SD 42440 = 0 (an offset change is not traversed with
+G91: the Siemens interpreter keeps the programmed WCS point); M30 in an ISO
+subprogram ends only the subprogram; M99 P<n>; G10 L10–L13 tool data; G65/G66
+macros; ISO T turning cycles; G68/G51/G16; the cycle group (9) in the G-group
+display always shows G80.
 """
 
 from __future__ import annotations
