@@ -9,11 +9,15 @@ the interpreter snapshots the whole object before each block.
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field
 from typing import Any
 
 from nck.lang.gcodes import GTable
 from nck.machine import MachineConfig
+
+
+_ATOMIC = frozenset({str, int, float, bool, type(None)})
 
 
 @dataclass
@@ -54,6 +58,25 @@ class ModalState:
             state.position_wcs[axis] = 0.0
             state.position_mcs[axis] = 0.0
         return state
+
+    def __deepcopy__(self, memo: dict) -> "ModalState":
+        """The per-block snapshot, fast: dicts of plain values are copied flat.
+
+        Equivalent to a generic deep copy (keys and plain values are immutable);
+        anything else (the geometry state, added fields) is deep-copied as usual.
+        """
+        new = copy.copy(self)
+        fields = new.__dict__
+        for name, value in self.__dict__.items():
+            kind = type(value)
+            if kind in _ATOMIC:
+                continue
+            if kind is dict:
+                fields[name] = {key: item if type(item) in _ATOMIC else copy.deepcopy(item, memo)
+                                for key, item in value.items()}
+            else:
+                fields[name] = copy.deepcopy(value, memo)
+        return new
 
     def reset(self, machine: MachineConfig, table: GTable) -> None:
         """RESET / program end: G groups to their reset members, F deleted.

@@ -131,6 +131,28 @@ def load_program(name: str, text: str, dialect: str = "siemens", main: bool = Fa
         _index(program)
         _check_jumps(program)
         return program
+    key = (name, dialect, text)
+    cached = _RECENT.get(key)
+    if cached is not None:
+        return cached
+    program = _load_siemens(name, text)
+    try:  # the HMI checks in a worker thread: tolerate a concurrent eviction
+        while len(_RECENT) >= _RECENT_SIZE:
+            _RECENT.pop(next(iter(_RECENT)), None)
+    except (RuntimeError, StopIteration):
+        pass
+    _RECENT[key] = program
+    return program
+
+
+_RECENT: dict[tuple[str, str, str], Program] = {}
+_RECENT_SIZE = 4
+"""Programs loaded last, by (name, dialect, text): a check followed by its run, or a
+subprogram called again, is parsed once. Loaded programs are immutable (the
+per-line caches are derived from the parsed block), so sharing them is safe."""
+
+
+def _load_siemens(name: str, text: str) -> Program:
     lines: list[Line] = []
     raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
     if raw_lines and raw_lines[-1] == "":
