@@ -139,6 +139,7 @@ class _Environment:
         self.machine = _machine(options)
         self.session: Any = None
         self._ephemeral: Any = None
+        self._lock: Any = None  # nck.datalock: no HMI may work on the same directory meanwhile
         self.data = NcData()
         data_dir, ephemeral = options.data_dir, options.ephemeral
         if not data_dir:
@@ -148,6 +149,7 @@ class _Environment:
             if default.is_dir():
                 data_dir, ephemeral = str(default), True
         if data_dir:
+            from nck.datalock import DataDirInUse, lock_data_dir
             from nck.paths import EphemeralDataDir, resolve_data_dir
             from nck.persistence import Session
 
@@ -157,9 +159,14 @@ class _Environment:
                     directory = self._ephemeral.path
                 else:
                     directory = resolve_data_dir(data_dir)
+                    self._lock = lock_data_dir(directory)
                 self.session = Session.open(directory, self.machine)
             except OSError as exc:
+                self._release()
                 raise CliError(f"NC data directory '{data_dir}': {exc}") from None
+            except DataDirInUse as exc:  # another HMI or nck command works there
+                self._release()
+                raise CliError(str(exc)) from None
             for alarm in self.session.startup_alarms:
                 print(format_alarm(alarm), file=sys.stderr)
             self.machine = self.session.active_machine()
@@ -175,10 +182,18 @@ class _Environment:
 
     def finish(self, save: bool = True) -> None:
         """Write the retained data back (not for ephemeral copies); clean up."""
-        if self.session is not None and save and self._ephemeral is None:
-            self.session.save()
+        try:
+            if self.session is not None and save and self._ephemeral is None:
+                self.session.save()
+        finally:
+            self._release()
         if self._ephemeral is not None:
             self._ephemeral.cleanup()
+
+    def _release(self) -> None:
+        if self._lock is not None:
+            self._lock.release()
+            self._lock = None
 
 
 def _apply_settings(settings: list[str], machine: MachineConfig, data: NcData) -> None:

@@ -112,3 +112,22 @@ def test_nck_md_refuses_a_directory_an_hmi_works_on(tmp_path: Path) -> None:
     out = io.StringIO()
     assert md_run(["--data-dir", str(tmp_path), "MD32000[X]"], out, io.StringIO()) == 0
     assert "30000" in out.getvalue()
+
+
+def test_nck_run_with_the_data_dir_of_a_running_hmi_is_refused(tmp_path: Path, capsys) -> None:
+    from nck.cli import main as nck_main
+
+    program = tmp_path / "P.MPF"
+    program.write_text("R1=1\nM30\n")
+    data_dir = tmp_path / "data"
+    holder = _start_holder(data_dir)
+    try:
+        assert nck_main(["run", "--data-dir", str(data_dir), str(program)]) == 2
+        assert "in use by process" in capsys.readouterr().err
+        assert nck_main(["run", "--data-dir", str(data_dir), "--ephemeral", str(program)]) == 0
+    finally:
+        holder.send_signal(signal.SIGKILL)
+        holder.wait(timeout=30)
+    assert nck_main(["run", "--data-dir", str(data_dir), str(program)]) == 0
+    with lock_data_dir(data_dir):  # and nck released it again
+        pass
