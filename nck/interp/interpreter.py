@@ -197,7 +197,7 @@ class Interpreter:
         if line.block is None:
             return False
         if line.main_run_read is None:
-            line.main_run_read = _reads_main_run_data(line.block)
+            line.main_run_read = "$" in line.text and _reads_main_run_data(line.block)
         return line.main_run_read
 
     def current_source(self) -> canon.Source | None:
@@ -358,7 +358,7 @@ class Interpreter:
         if index in program.structure_errors:
             raise _clone(program.structure_errors[index])
         if line.main_run_read is None:
-            line.main_run_read = _reads_main_run_data(block)
+            line.main_run_read = "$" in line.text and _reads_main_run_data(block)
         run = BlockRun(self, frame, index, source)
         commands = run.execute(block)
         return BlockResult(
@@ -518,7 +518,10 @@ def _iso_view(gcodes: Mapping[int, str], dialect: str) -> dict[int, str]:
 
 
 def _reads_main_run_data(block: ast.Block) -> bool:
-    """True if any expression of the block names a main-run variable."""
+    """True if any expression of the block names a main-run variable.
+
+    Callers skip it for lines without ``$`` (every such name starts with one).
+    """
     found = False
 
     def visit(node: object) -> None:

@@ -14,6 +14,7 @@ Any character that cannot start a token raises alarm 12080 (syntax error).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from nck.errors import NcAlarmError
@@ -123,10 +124,79 @@ def tokenize(code: str) -> list[Token]:
     """
     if len(code) > MAX_BLOCK_CHARS:
         raise NcAlarmError(12540)
+    if '"' not in code and "'" not in code:
+        text = code.translate(_ASCII_UPPER)
+        fast = _tokenize_plain(text)
+        if fast is not None:
+            return fast
+        return _tokenize_slow(code, text)
+    return _tokenize_slow(code, _upper_outside_strings(code))
+
+
+# The common tokens of a block without strings, in the order the slow lexer
+# decides them: an address word (letter + number) before a name.
+_NUMBER_RE = r"[0-9]+(?:\.[0-9]*)?|\.[0-9]+"
+_PLAIN_TOKEN = re.compile(
+    r"(?P<ws>[ \t\r\f\v]+)"
+    rf"|(?P<addr>[A-Z])(?P<anum>{_NUMBER_RE})"
+    rf"|(?P<num>{_NUMBER_RE})"
+    r"|(?P<name>[A-Z_$][A-Z0-9_$]*)"
+    r"|(?P<op>==|<>|<=|>=|<<|[-+*/=<>()\[\],:])"
+)
+
+
+def _plain_number(mantissa: str) -> float | int | None:
+    """The value of a number without exponent, or None when the slow path must decide."""
+    if len(mantissa) > 20:
+        return None
+    return float(mantissa) if "." in mantissa else int(mantissa)
+
+
+def _tokenize_plain(text: str) -> list[Token] | None:
+    """Tokens of an upper-cased block without strings, or None for anything unusual.
+
+    Gives exactly the tokens of :func:`_tokenize_slow`; numbers with an ``EX``
+    exponent, over-long numbers and characters that are not tokens go to the
+    slow path (which also raises the alarms).
+    """
+    tokens: list[Token] = []
+    append = tokens.append
+    match = _PLAIN_TOKEN.match
+    pos = 0
+    n = len(text)
+    while pos < n:
+        found = match(text, pos)
+        if found is None:
+            return None
+        kind = found.lastgroup
+        end = found.end()
+        if kind == "anum":
+            digits = found.group("anum")
+            value = _plain_number(digits)
+            if value is None or text.startswith("EX", end):
+                return None
+            append(Token(ADDR, text[pos], None, pos))
+            append(Token(NUMBER, digits, value, pos + 1))
+        elif kind == "num":
+            digits = found.group("num")
+            value = _plain_number(digits)
+            if value is None or text.startswith("EX", end):
+                return None
+            append(Token(NUMBER, digits, value, pos))
+        elif kind == "name":
+            append(Token(NAME, found.group("name"), None, pos))
+        elif kind == "op":
+            append(Token(OP, found.group("op"), None, pos))
+        pos = end
+    append(Token(EOL, "", None, n))
+    return tokens
+
+
+def _tokenize_slow(code: str, text: str) -> list[Token]:
+    """The character-by-character lexer (strings, radix constants, exponents, errors)."""
     tokens: list[Token] = []
     pos = 0
     n = len(code)
-    text = _upper_outside_strings(code)
     while pos < n:
         ch = text[pos]
         if ch in " \t\r\f\v":
