@@ -15,6 +15,9 @@ from bench.suite import RESULTS, run_suite
 def main() -> int:
     """Run every benchmark; exit code 0."""
     text = run_suite()
+    analysis = RESULTS.with_name("analysis.md")
+    if analysis.exists():  # the hand-written profile notes travel with every table
+        text += "\n" + analysis.read_text(encoding="utf-8")
     print(text)
     RESULTS.write_text(text, encoding="utf-8")
     print(f"written to {RESULTS}")

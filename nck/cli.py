@@ -311,7 +311,8 @@ def _run(options: argparse.Namespace) -> int:
     try:
         result = run_program(machine, _source(path, options, env), data, path.name, text=text,
                              timeout_s=options.timeout, on_command=on_command,
-                             dialect=options.dialect, on_motion=on_motion if options.trace else None)
+                             dialect=options.dialect, on_motion=on_motion if options.trace else None,
+                             keep_commands=False)
     finally:
         if close and segment_out is not None:
             segment_out.close()

@@ -65,11 +65,14 @@ def run_program(
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
     on_motion: Callable[[Any], None] | None = None,
+    keep_commands: bool = True,
 ) -> RunResult:
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
     ``text`` runs the given text under ``program_name`` instead of reading it.
-    ``on_command`` sees every canonical command as it is produced.
+    ``on_command`` sees every canonical command as it is produced;
+    ``keep_commands=False`` does not collect them in ``RunResult.commands``
+    (long programs: memory stays flat).
 
     With ``max_blocks`` (``nck check``) the interpreter is driven directly and
     no time is simulated; otherwise the run goes through the kernel
@@ -79,10 +82,11 @@ def run_program(
     if max_blocks is None:
         return run_on_kernel(machine, programs, data, program_name, timeout_s=timeout_s,
                              on_command=on_command, dialect=dialect, text=text,
-                             skip_levels=skip_levels, on_motion=on_motion)
+                             skip_levels=skip_levels, on_motion=on_motion,
+                             keep_commands=keep_commands)
     return interpret_only(machine, programs, data, program_name, timeout_s=timeout_s,
                           max_blocks=max_blocks, on_command=on_command, dialect=dialect,
-                          text=text, skip_levels=skip_levels)
+                          text=text, skip_levels=skip_levels, keep_commands=keep_commands)
 
 
 class _TextOverlay:
@@ -112,6 +116,7 @@ def run_on_kernel(
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
     on_motion: Callable[[Any], None] | None = None,
+    keep_commands: bool = True,
 ) -> RunResult:
     """The headless run through :class:`nck.kernel.Nck` (see :func:`run_program`).
 
@@ -138,7 +143,8 @@ def run_on_kernel(
     def on_block(block: object) -> None:
         result.blocks += 1
         for command in getattr(block, "commands", ()):
-            result.commands.append(command)
+            if keep_commands:
+                result.commands.append(command)
             if on_command is not None:
                 on_command(command)
 
@@ -192,6 +198,7 @@ def interpret_only(
     dialect: str = "siemens",
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
+    keep_commands: bool = True,
 ) -> RunResult:
     """Interpret ``program_name`` without the kernel (``nck check``): each segment is
     placed at its end point; ``machine_time_s`` is the blocks' cost plus a
@@ -224,7 +231,8 @@ def interpret_only(
         clock += block.cost_s
         stop = False
         for command in block.commands:
-            result.commands.append(command)
+            if keep_commands:
+                result.commands.append(command)
             if on_command is not None:
                 on_command(command)
             if isinstance(command, canon.Motion):
@@ -261,7 +269,7 @@ def check_program(machine: MachineConfig, programs: ProgramSource, name: str, te
     if found:
         return found
     outcome = run_program(machine, programs, data or NcData(), name, text=text,
-                          max_blocks=max_blocks, dialect=dialect)
+                          max_blocks=max_blocks, dialect=dialect, keep_commands=False)
     return list(outcome.alarms)
 
 
