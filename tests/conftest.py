@@ -10,3 +10,12 @@ from pathlib import Path
 # directory that does not exist so every test starts from fresh NC data, whatever the
 # machine running the suite has set up. Subprocesses inherit the variable.
 os.environ["NCK_DATA_DIR"] = str(Path(tempfile.gettempdir()) / f"nck-tests-no-data-{os.getpid()}")
+
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture(autouse=True)
+def _run_in_a_temporary_directory(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Exports (programs, alarm log, trace CSV) go to the current directory: keep them out of the tree."""
+    monkeypatch.chdir(tmp_path)
