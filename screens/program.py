@@ -176,8 +176,8 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
                 Softkey("program.close", "Close", "close", enabled=has_program),
             ],
             [
-                # VSK3 (Shift+F3) is left to non-essential keys: Textual reads its escape
-                # sequence as a cursor position report, so it never arrives as a key.
+                # VSK3 (Shift+F3) carries nothing essential; terminals send it like a cursor
+                # position report, which HmiApp.on_cursor_position turns back into the key.
                 Softkey("program.next_error", "Next\nerror", "next_error", enabled=has_program),
                 Softkey("program.start", "Start of\nprogram", "cursor_start", enabled=has_program),
                 Softkey("program.check", "Check\nnow", "check_now", enabled=has_program),

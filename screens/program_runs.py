@@ -81,7 +81,7 @@ class CheckAndSimulation:
             [
                 Softkey("sim.pan_up", "Pan ↑", "sim_pan(0, 1)"),
                 Softkey("sim.pan_down", "Pan ↓", "sim_pan(0, -1)"),
-                None,  # VSK3: Shift+F3 never arrives as a key (see screens/program.py)
+                None,  # VSK3 free
                 Softkey("sim.pan_left", "Pan ←", "sim_pan(-1, 0)"),
                 Softkey("sim.pan_right", "Pan →", "sim_pan(1, 0)"),
             ],

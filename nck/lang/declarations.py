@@ -191,16 +191,19 @@ class DeclarationParser(TokenParser):
             self.expect_op(")")
             return tuple(params)
 
-    def _proc(self) -> ast.Proc:
-        self.advance()
+    def _subprogram_name(self) -> str:
+        """The name after PROC / EXTERN: an identifier or ``L<number>``."""
         tok = self.tok
         if tok.kind == ADDR and tok.text == "L":
             self.advance()
-            name = "L" + self.advance().text
-        elif tok.kind == NAME and tok.text not in RESERVED:
-            name = self.advance().text
-        else:
-            raise syntax_error(tok)
+            return "L" + self.advance().text
+        if tok.kind == NAME and tok.text not in RESERVED:
+            return self.advance().text
+        raise syntax_error(tok)
+
+    def _proc(self) -> ast.Proc:
+        self.advance()
+        name = self._subprogram_name()
         params = self._param_list(with_name=True)
         attributes: set[str] = set()
         while self.tok.kind == NAME and self.tok.text in ("SAVE", "DISPLOF", "SBLOF", "DISPLON", "ACTBLOCNO"):
@@ -212,14 +215,7 @@ class DeclarationParser(TokenParser):
 
     def _extern(self) -> ast.Extern:
         self.advance()
-        tok = self.tok
-        if tok.kind == ADDR and tok.text == "L":
-            self.advance()
-            name = "L" + self.advance().text
-        elif tok.kind == NAME and tok.text not in RESERVED:
-            name = self.advance().text
-        else:
-            raise syntax_error(tok)
+        name = self._subprogram_name()
         params = self._param_list(with_name=False)
         if not self.at_end():
             raise syntax_error(self.tok)
