@@ -21,6 +21,7 @@ from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, jour
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
 from nck.interp.values import Axis, Cell, convert, to_bool, to_number, to_string
+from nck.iso import subprograms
 from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES
 
@@ -55,6 +56,7 @@ class BlockRun:
         self.repeat: ast.SectionRepeat | None = None
         self.goto_start = False
         self.mcall_set = False
+        self.ret_target: tuple[str, int] | None = None  # RET("N40"[, 1]) (ISO M99 P40)
 
     def eval(self, expr: ast.Expr) -> Any:
         return evaluate(expr, self.scope)
@@ -108,10 +110,13 @@ class BlockRun:
         interp = self.interp
         if self.call is not None:
             raise NcAlarmError(12080, self.end_kind)
-        if self.frame.is_main:
-            interp._program_end()
+        if self.frame.is_main or subprograms.ends_whole_program(interp, self.end_kind):
+            interp._program_end()  # (ISO mode: M30 in a subprogram ends the whole program)
             return [canon.ProgramEnd(self.source, self.end_kind or "M30")]
+        subprograms.prepare_return(self.frame, self.ret_target)
         interp._return_from(self.frame)
+        if self.ret_target is not None:
+            subprograms.resume_caller(interp, *self.ret_target)
         return []
 
     # ------------------------------------------------------------ statements
@@ -578,6 +583,7 @@ class BlockRun:
             self.late.append(canon.StopPoint(self.source, "STOPRE"))
         elif name == "RET":
             self.end_kind = "RET"
+            self.ret_target = subprograms.return_target(self.eval, stmt.args)
         elif name == "CALL":
             # indirect call: CALL "NAME" / CALL <string variable>
             target = to_string(self.eval(stmt.args[0])).strip().upper()  # type: ignore[arg-type]

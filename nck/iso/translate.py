@@ -28,8 +28,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from nck.errors import NcAlarmError
-from nck.iso import cycles
+from nck.iso import cycles, subprograms, turning
 from nck.iso.lexing import Word, split_words
+from nck.iso import frames as iso_frames
 
 LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
 AXES = ("X", "Y", "Z")
@@ -41,6 +42,8 @@ class IsoSettings:
 
     pocket_calculator: bool = True
     increment_system_c: bool = False
+    gcode_system: int = 0  # ISO T code system, MD 10881: 0 B, 1 A
+    tool_digits: int = 2  # ISO T digits of the tool number in T, MD 10888
 
     @property
     def increment_mm(self) -> float:
@@ -67,6 +70,8 @@ class _Modal:
     turning: bool = False  # ISO T: T<tool><offset>
     main: bool = False  # M99 restarts a main program
     cycle: cycles.CycleState = field(default_factory=cycles.CycleState)
+    lathe: object = None  # ISO T: nck.iso.turning.LatheState
+    frames: iso_frames.FrameTracker = field(default_factory=iso_frames.FrameTracker)
 
 
 _SIMPLE_G = {
@@ -81,6 +86,7 @@ _SIMPLE_G = {
 _SUPPORTED_OTHER = {"G54.1", "G4", "G04", "G10", "G28", "G43", "G44", "G49", "G52", "G80", "G92",
                     "G92.1", "G98", "G99", "G290", "G291", "G15", "G50", "G50.1", "G67",
                     "G69", "G97", "G23", "G13.1"}
+_SUPPORTED_OTHER |= {"G68", "G51", "G51.1", "G16"}  # nck.iso.frames
 
 
 def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = None,
@@ -95,19 +101,25 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
     raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
     if raw_lines and raw_lines[-1] == "":
         raw_lines.pop()
+    if modal.turning:
+        turning.attach(modal, raw_lines, settings)
     out: list[IsoLine] = []
     for number, raw in enumerate(raw_lines, start=1):
         line = IsoLine(number, raw)
+        if modal.lathe is not None:
+            turning.before_line(modal, number - 1)
         try:
             line.blocks = _translate_line(raw, modal, settings)
         except NcAlarmError as alarm:
             line.error = alarm
+        if modal.lathe is not None:
+            turning.after_line(modal, line)
         out.append(line)
     if any(cycles.INITIAL_Z in block for line in out for block in line.blocks):
         out.insert(0, IsoLine(1, "", [cycles.DECLARATION]))
     if main and start_in_iso:
         first = 1 if out and out[0].blocks[:1] == [cycles.DECLARATION] else 0
-        start = "G0 G291 G18 G95" if dialect == "iso-t" else "G0 G291"
+        start = turning.START_BLOCK if dialect == "iso-t" else "G0 G291"
         out.insert(first, IsoLine(1, "", [start]))
     return out
 
@@ -135,7 +147,10 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
     if not words:
         return []
     prefix = "" if skip is None else ("/" if skip == 0 else f"/{skip}")
-    blocks = _translate_words(words, modal, settings)
+    if modal.lathe is not None:
+        blocks = turning.translate_words(words, modal, settings, _translate_words)
+    else:
+        blocks = _translate_words(words, modal, settings)
     if not modal.iso:
         blocks.append("G290")  # back to Siemens mode after this block
     if words[0].letter == "N":  # NC-inserted blocks carry the ISO block number
@@ -187,6 +202,10 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     for code in gcodes:
         if code not in _SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
             raise NcAlarmError(12470, code)
+    framing = iso_frames.frame_codes(words, gcodes, values, modal.frames, modal.absolute,
+                                     modal.turning)  # G68/G51/G51.1/G16 …
+    if framing.done:
+        return [number + block for block in framing.blocks] or ([number] if number else [])
     # modal bookkeeping
     for code in gcodes:
         if code in ("G90",):
@@ -197,12 +216,9 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
             modal.cycle.return_to_r = code == "G99"
     ms = [word for word in others]
     if any(int(w.value) == 98 for w in ms):
-        calls = _subprogram_call(values)
-        return [number + call for call in calls] if calls else ([number] if number else [])
+        return [number + subprograms.call_block(values)]
     if any(int(w.value) == 99 for w in ms):
-        if "P" in values:
-            raise NcAlarmError(12080, "M99 P")  # return to a block number: not supported
-        return [number + ("GOTOS" if modal.main else "M17")]
+        return [number + subprograms.return_block(values, modal.main)]
     if "G54.1" in gcodes or ("G54" in gcodes and "P" in values):
         if "P" not in values:
             raise NcAlarmError(12080, "G54.1")
@@ -215,7 +231,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     if "G10" in gcodes:
         return [number + block for block in _g10(values)] or ([number] if number else [])
     if "G92.1" in gcodes:
-        return [number + "TRANS"]
+        return [number + iso_frames.trans_block({})]
     if "G92" in gcodes:
         moved = [a for a in AXES if a in values]
         if not moved:
@@ -223,8 +239,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         parts = " ".join(f"{a}=$P_EP[{a}]-({_fmt(values[a])})" for a in moved)
         return [number + "ATRANS " + parts]
     if "G52" in gcodes:
-        parts = " ".join(f"{a}{_fmt(values[a])}" for a in AXES if a in values)
-        return [number + ("TRANS " + parts).strip()]
+        return [number + iso_frames.trans_block(values)]
     if "G28" in gcodes:
         moved = [a for a in AXES if a in values]
         blocks = [number + "G0 " + " ".join(f"{a}{_fmt(values[a])}" for a in moved)] if moved else []
@@ -239,8 +254,9 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
             values.pop(axis, None)
     if modal.turning and "T" in values:  # MD 10888 = 2: two tool digits, then the offset
         digits = addresses["T"].text.lstrip("+")
-        if len(digits) > 2:
-            values["T"], values["D"] = int(digits[:2]), int(digits[2:])
+        tool_digits = settings.tool_digits
+        if len(digits) > tool_digits:
+            values["T"], values["D"] = int(digits[:tool_digits]), int(digits[tool_digits:])
     for code in gcodes:
         if code.startswith("G5") and code[1:].isdigit() and int(code[1:]) > 500:
             siemens_g.append(code)
@@ -266,7 +282,9 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     if modal.cycle.code is not None and (cycle_code is not None or any(
             a in values for a in ("X", "Y", "Z", "R"))):
         return _cycle_block(number, siemens_g, values, modal, settings)
-    return [_plain_block(number, siemens_g, values, others, modal)]
+    poles, polar = iso_frames.polar_words(words, values, siemens_g, modal.frames, modal.turning)
+    block = _plain_block(number, siemens_g, values, others, modal)
+    return framing.blocks + poles + [(block + " " + polar).strip()]
 
 
 def _cycle_code(code: str) -> int | None:
@@ -345,16 +363,3 @@ def _g10(values: dict[str, float]) -> list[str]:
     if mode == 20 and slot >= 1:
         return [f"$P_UIFR[{slot + 6}, {a}, TR]={_fmt(values[a])}" for a in AXES if a in values]
     raise NcAlarmError(12080, f"G10 L{mode}")
-
-
-def _subprogram_call(values: dict[str, float]) -> list[str]:
-    """``M98 P<count><nnnn>`` or ``M98 P<nnnn> L<count>``: one CALL per repetition."""
-    if "P" not in values:
-        raise NcAlarmError(12080, "M98")
-    p_value = int(values["P"])
-    count = int(values.get("L", 1))
-    if p_value > 9999:  # P<count><nnnn>; an explicit L takes precedence over the count digits
-        if "L" not in values:
-            count = p_value // 10000
-        p_value %= 10000
-    return [f'CALL "O{p_value:04d}"'] * count
