@@ -148,6 +148,10 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
     if name in frame_vars.NAMES:  # $P_UIFR[n,ax,TR], $P_PFRAME[ax,RT], …
         frame_vars.write(ctx, name, indices, value)
         return
+    if name.startswith("$P_ISOFR_"):  # ISO G68/G51/G51.1/G52 frames (nck.iso.frames)
+        from nck.iso import frames as iso_frames
+        iso_frames.write(ctx, name, indices, value)
+        return
     match = _TC_DP.match(name)
     if match:
         param, tool, edge = _tool_address(name, match, indices)
