@@ -35,8 +35,10 @@ def dialect_for(dialect: str, machine: object) -> str:
     pocket = md_value("MD10884", None, True) if md_value else True
     is_c = md_value("MD10886", None, 0) if md_value else 0
     named = DialectName(dialect)
+    mask = md_value("MD20734", None, 0) if md_value else 0  # EXTERN_FUNCTION_MASK
     system = md_value("MD10881", None, 0) if md_value else 0
     digits = md_value("MD10888", None, 2) if md_value else 2
     named.iso_settings = IsoSettings(pocket_calculator=bool(pocket), increment_system_c=bool(is_c),
-                                     gcode_system=int(system or 0), tool_digits=int(digits or 2))
+                                     gcode_system=int(system or 0), tool_digits=int(digits or 2),
+                                     function_mask=int(mask or 0))
     return named

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 from nck.errors import NcAlarmError
 from nck.iso import cycles, subprograms, turning
 from nck.iso.lexing import Word, split_words
+from nck.iso import dwell as iso_dwell
 from nck.iso import frames as iso_frames
 
 LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
@@ -42,6 +43,7 @@ class IsoSettings:
 
     pocket_calculator: bool = True
     increment_system_c: bool = False
+    function_mask: int = 0  # MD 20734 EXTERN_FUNCTION_MASK (bit 2: G04 in revolutions under G95)
     gcode_system: int = 0  # ISO T code system, MD 10881: 0 B, 1 A
     tool_digits: int = 2  # ISO T digits of the tool number in T, MD 10888
 
@@ -227,7 +229,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
             raise NcAlarmError(12080, f"G54 P{slot}")
         gcodes = [c for c in gcodes if c not in ("G54", "G54.1")] + [f"G{506 + slot}"]
     if any(code in ("G4", "G04") for code in gcodes):
-        return [number + _dwell(addresses, values, settings)]
+        return [number + iso_dwell.block(addresses, settings, modal.per_rev)]
     if "G10" in gcodes:
         return [number + block for block in _g10(values)] or ([number] if number else [])
     if "G92.1" in gcodes:
@@ -342,17 +344,6 @@ def _cycle_block(number: str, siemens_g: list[str], values: dict[str, float], mo
     if head or number:
         blocks.insert(0, (number + head).strip())
     return blocks
-
-
-def _dwell(addresses: dict[str, Word], values: dict[str, float], settings: IsoSettings) -> str:
-    if "P" in values:
-        seconds = values["P"] / 1000.0
-    else:
-        word = addresses.get("X") or addresses.get("U")
-        if word is None:
-            raise NcAlarmError(12080, "G04")
-        seconds = word.value if (word.has_point or settings.pocket_calculator) else word.value * 0.001
-    return f"G4 F{_fmt(seconds)}"
 
 
 def _g10(values: dict[str, float]) -> list[str]:
