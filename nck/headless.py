@@ -166,7 +166,8 @@ def run_on_kernel(
     while True:
         elapsed = nck.time_s
         budget = KERNEL_CHUNK_S if timeout_s is None else min(KERNEL_CHUNK_S, timeout_s - elapsed)
-        if budget <= 0.0 or not nck.run_until(lambda k: k.situation.channel != "active", budget):
+        if budget <= 0.0 or not nck.run_until(lambda k: k.situation.channel != "active", budget,
+                                              max_batch_cycles=nck.batch_cycles):
             if timeout_s is not None and nck.time_s >= timeout_s - 1e-9:
                 result.status = "timeout"
                 break

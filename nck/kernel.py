@@ -53,6 +53,8 @@ from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, ProgramRun, R
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry, NckStatus
 
 DEFAULT_IPO_S = 0.004
+DEFAULT_BATCH_CYCLES = 2500  # IPO cycles per motion step at most (10 s at 4 ms)
+LEGACY_BATCH_CYCLES = 16  # per step for motion systems without block events (stand-in, JOG)
 ALARM_INTERNAL = 1
 ALARM_EMERGENCY_STOP = 3000
 ALARM_START_WITH_ALARM = 10200
@@ -90,13 +92,14 @@ class Nck(ManualControl, ControlSettings, StatusView):
         referenced: bool = False,
         interpreter_factory: Callable[[MachineConfig, ProgramSource, NcData], Interpreter] | None = None,
         access: AccessControl | None = None,
-        batch_cycles: int = 16,
+        batch_cycles: int = DEFAULT_BATCH_CYCLES,
     ) -> None:
         self.machine = machine or load_machine()
         self.data = data if data is not None else NcData()
         self.programs: ProgramSource = programs if programs is not None else _NoPrograms()
         self._interpreter_factory = interpreter_factory or _default_interpreter_factory
         self.batch_cycles = max(1, int(batch_cycles))  # see step()
+        self._cycles_in_step = 1
         self.motion = (motion_factory or planned_motion_factory)(self.machine)
         getattr(self.motion, "attach_setting_data", lambda _data: None)(self.data.setting_data)
         for axis in self.machine.path_axes:
@@ -198,32 +201,44 @@ class Nck(ManualControl, ControlSettings, StatusView):
 
         While nothing in the channel needs attention every cycle (buffer full,
         waiting for the motion to finish, nothing running) up to
-        ``batch_cycles`` cycles are handed to the motion system at once; cycle
-        listeners (traces) always get every cycle.
+        ``batch_cycles`` cycles are handed to the motion system at once. The
+        planned motion ends such a batch with the cycle of the next block
+        event (segment end, dwell end, alarm, axes at rest), so a batched run
+        is the same as a cycle-by-cycle one; cycle listeners (traces) always
+        get every cycle.
         """
         remaining = max(0, int(n_ipo_cycles))
         while remaining > 0:
-            cycles = self._batch_size(remaining)
-            remaining -= cycles
-            try:
-                self._cycle(cycles)
-            except NcAlarmError as error:
-                self._raise(error)
-            except Exception as exc:  # noqa: BLE001
-                self._internal_error(exc)
-                self._internal_reset()
+            remaining -= self._guarded_cycle(remaining)
 
-    def run_until(self, predicate: Callable[["Nck"], bool], max_s: float) -> bool:
-        """Advance until ``predicate(self)`` holds (checked between steps); False on timeout."""
+    def run_until(self, predicate: Callable[["Nck"], bool], max_s: float,
+                  max_batch_cycles: int = LEGACY_BATCH_CYCLES) -> bool:
+        """Advance until ``predicate(self)`` holds (checked between steps); False on timeout.
+
+        Steps are at most ``max_batch_cycles`` cycles long (a predicate on
+        positions sees them that finely); a predicate on the channel state may
+        pass ``batch_cycles``: state changes always end a step.
+        """
         cycles = int(max_s / self._ipo_s + 0.5)
+        step = max(1, int(max_batch_cycles))
         done = 0
         while done < cycles:
             if predicate(self):
                 return True
-            step = self._batch_size(cycles - done)
-            self.step(step)
-            done += step
+            done += self._guarded_cycle(min(cycles - done, step))
         return predicate(self)
+
+    def _guarded_cycle(self, limit: int) -> int:
+        """One kernel step of 1 … ``limit`` IPO cycles; returns the cycles run (never raises)."""
+        self._cycles_in_step = 1
+        try:
+            self._cycle(limit)
+        except NcAlarmError as error:
+            self._raise(error)
+        except Exception as exc:  # noqa: BLE001
+            self._internal_error(exc)
+            self._internal_reset()
+        return max(1, min(self._cycles_in_step, limit))
 
     @property
     def ipo_cycle_s(self) -> float:
@@ -567,24 +582,50 @@ class Nck(ManualControl, ControlSettings, StatusView):
     }
 
     # ------------------------------------------------------------- cycle
-    def _batch_size(self, remaining: int) -> int:
-        """How many IPO cycles may run as one motion step now (1 = cycle by cycle)."""
-        if self.batch_cycles <= 1 or self.cycle_listeners or remaining <= 1:
+    def _batch_size(self, limit: int, fed: bool) -> int:
+        """How many IPO cycles may run as one motion step now (1 = cycle by cycle).
+
+        Called after the run was fed for the first cycle; ``fed`` is False when
+        that feed produced events (the channel reacts at once, as cycle by cycle).
+        """
+        if self.batch_cycles <= 1 or self.cycle_listeners or limit <= 1 or not fed:
             return 1
         run = self._overlay or self._run
         if run is not None and self._sit.channel == ACTIVE and not self._jogging:
             if run.wants_every_cycle(self._path_motion()):
                 return 1
-        return min(remaining, self.batch_cycles)
+        cycles = min(limit, self.batch_cycles)
+        if not self._event_batching():
+            # Motion without block events: batches stay short (noticed up to a batch late).
+            cycles = min(cycles, LEGACY_BATCH_CYCLES)
+        return cycles
 
-    def _cycle(self, cycles: int = 1) -> None:
-        dt_s = self._ipo_s * cycles
-        self._time_s += dt_s
+    def _event_batching(self) -> bool:
+        """True when the motion ends its batches at block events (planned motion, no JOG)."""
+        return (
+            self._test_motion is None and not self._jogging
+            and getattr(self.motion, "advance_cycles", None) is not None
+            and not self.motion.jog_active()
+        )
+
+    def _cycle(self, limit: int = 1) -> None:
+        """One kernel step: feed the run for the first cycle, then move 1 … ``limit`` cycles."""
+        self._time_s += self._ipo_s
         run = self._overlay or self._run
+        fed = True
         if run is not None and self._sit.channel == ACTIVE and not self._jogging:
             events = run.feed(self._path_motion(), self._run_options(), self._ipo_s)
-            self._handle_events(run, events)
-        self.motion.advance(dt_s)
+            if events:
+                fed = False
+                self._handle_events(run, events)
+        cycles = self._batch_size(limit, fed)
+        if cycles > 1 and self._event_batching():
+            cycles = self.motion.advance_cycles(cycles)
+        else:
+            self.motion.advance(self._ipo_s * cycles)
+        self._cycles_in_step = cycles
+        dt_s = self._ipo_s * cycles
+        self._time_s += dt_s - self._ipo_s
         if self._test_motion is not None:
             self._test_motion.advance(dt_s)
         for error in self.motion.drain_alarms():

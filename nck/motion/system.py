@@ -136,8 +136,26 @@ class PlannedMotion:
         if n <= 0:
             return
         self._fraction -= n
-        for spindle in self.spindles.values():
-            spindle.advance(n * self.T)
+        self._run_cycles(n, stop_at_event=False)
+
+    def advance_cycles(self, n_cycles: int) -> int:
+        """Advance at most ``n_cycles`` IPO cycles; stop after the first block event.
+
+        A block event is a cycle after which a program run or the kernel may
+        act differently than before it: a segment or dwell ends (the buffer
+        gains room, the current block changes), an exact-stop or dwell wait
+        ends, a buffered alarm or a monitoring trip is raised, or the axes
+        come to rest (``is_idle`` turns true). Returns the cycles advanced
+        (≥ 1). Calling this repeatedly, with the caller's per-cycle work done
+        between calls, gives the same motion, trace and alarms (in the same
+        cycle) as calling ``advance`` with one IPO cycle at a time. While JOG
+        moves an axis it advances all ``n_cycles`` (like ``advance``).
+        """
+        n = max(1, int(n_cycles))
+        return self._run_cycles(n, stop_at_event=not self.jog.runs)
+
+    def _run_cycles(self, n: int, stop_at_event: bool) -> int:
+        """The IPO cycles of :meth:`advance` / :meth:`advance_cycles`; returns the cycles run."""
         for i, delta in self.jog.take_shifts().items():
             self.servo.x_set[i] += delta
             self.cmd[i] += delta
@@ -145,12 +163,14 @@ class PlannedMotion:
             self.servo.idle(n)
             self._record(np.repeat(self.cmd[None, :], n, axis=0))
             self._tick(n)
-            return
+            self._advance_spindles(n)
+            return n
         columns = self.jog.fill(n, self.cmd.copy())
         rows = np.empty((n, len(self.names)))
         k = 0
-        while k < n:
-            k_end, sync = self._path_fill(rows, k, n)
+        limit = n
+        while k < limit:
+            k_end, sync, limit = self._path_fill(rows, k, limit, stop_at_event)
             for i, col in columns.items():
                 rows[k:k_end, i] = col[k:k_end]
             actual, trip = self.servo.process(rows[k:k_end])
@@ -163,9 +183,22 @@ class PlannedMotion:
             if trip is not None:
                 self._on_trip(trip)
                 columns = {}
+                if stop_at_event:
+                    limit = k
                 continue
             if sync:
+                waiting = self.exact_wait is not None
                 self._check_exact_stop()
+                if stop_at_event and waiting and self.exact_wait is None:
+                    limit = max(k, 1)  # the exact stop is reached: the next block may start
+        if k == 0:  # a trip in the very first cycle still took that cycle
+            k = 1
+        self._advance_spindles(k)
+        return k
+
+    def _advance_spindles(self, cycles: int) -> None:
+        for spindle in self.spindles.values():
+            spindle.advance(cycles * self.T)
 
     def is_idle(self) -> bool:
         """True when nothing is buffered or moving and every axis is in its coarse window."""
@@ -485,8 +518,13 @@ class PlannedMotion:
             chain = list(run.chain)
         self.run = PathRun(chain, s_begin, profile, tau=0.0, kind=kind)
 
-    def _path_fill(self, rows: np.ndarray, k: int, n: int) -> tuple[int, bool]:
-        """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop."""
+    def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
+        """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.
+
+        Returns the next row, whether an exact-stop check is due, and the row
+        limit: with ``stop_at_event`` it shrinks to end with the cycle of the
+        first block event (see :meth:`advance_cycles`).
+        """
         T = self.T
         while k < n:
             if self.wait_cycles > 0:
@@ -494,14 +532,24 @@ class PlannedMotion:
                 rows[k:k + m] = self.cmd
                 self.wait_cycles -= m
                 k += m
-                if self.wait_cycles == 0 and self.exact_wait is not None:
-                    return k, True
+                if self.wait_cycles == 0:
+                    if stop_at_event:
+                        n = k  # the dwell or the wait for the window ends in this cycle
+                    if self.exact_wait is not None:
+                        return k, True, n
                 continue
             if self.exact_wait is not None:
-                return k, True
-            if self.run is None and not self._start_next(0.0):
-                rows[k:n] = self.cmd
-                return n, False
+                return k, True, n
+            if self.run is None:
+                buffered = len(self.la.items)
+                started = self._start_next(0.0)
+                if stop_at_event and len(self.la.items) != buffered:
+                    n = k + 1  # a dwell or an alarm left the buffer in this cycle
+                if not started:
+                    if stop_at_event and not self.la.items:
+                        n = min(n, k + self._cycles_to_idle(k))
+                    rows[k:n] = self.cmd
+                    return n, False, n
             if self.run is None:
                 continue
             run = self.run
@@ -516,12 +564,32 @@ class PlannedMotion:
                 k += m
             if m == room:
                 break
+            if stop_at_event:
+                n = k + 1  # the run ends within this cycle
             carry = run.tau - run.profile.duration_s
             if self._finish_run(run):
-                return k, True
+                return k, True, n
             if self.run is None and not self.held and not self.faulted:
                 self._start_next(carry)
-        return k, False
+        return k, False, n
+
+    def _cycles_to_idle(self, k: int) -> int:
+        """Cycles of standstill setpoints until :meth:`is_idle` may turn true (≥ 1).
+
+        Used to end a batch where the axes come to rest; a prediction one
+        cycle short of the computed value, so the batch never runs past it.
+        """
+        if k > 0 or self.jog.runs:
+            return 1
+        if self.is_idle():
+            return 1 << 30  # already at rest: nothing left to notice
+        servo = self.servo
+        if np.any(np.abs(servo.v_set) > 1e-9):
+            return 1
+        cycles = servo.cycles_to_window(np.arange(len(self.names)), self._coarse)
+        if cycles is None:
+            return 1 << 30  # a fault keeps the axis out of its window: never idle
+        return max(cycles - 1, 1)
 
     def _finish_run(self, run: PathRun) -> bool:
         """Book-keeping at the end of a run; True when an exact-stop wait begins."""
