@@ -112,6 +112,7 @@ class LatheState:
 def attach(modal: Any, lines: list[str], settings: Any) -> None:
     """Give the translator's modal state ``modal`` the ISO T state for program ``lines``."""
     modal.lathe = LatheState(list(lines), system_a=getattr(settings, "gcode_system", 0) == 1)
+    modal.per_rev = True  # ISO T resets to G95 (feed per revolution)
 
 
 def before_line(modal: Any, index: int) -> None:

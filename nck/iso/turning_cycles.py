@@ -98,7 +98,9 @@ def roughing_passes(profile: Sequence[Element], start: tuple[float, float], dept
         if (first[1] - level) * sign <= EPS:
             break
         end = crossing(profile, level)
-        if end is not None and abs(end - a0) > EPS:
+        if end is None:  # beyond the contour on the start side: cut to the contour's end
+            end = profile[-1].end[0]
+        if abs(end - a0) > EPS:
             passes.append(RoughingPass(level, end))
     return passes
 
@@ -185,7 +187,7 @@ def peck_cycle(start_zx: tuple[float, float], end_zx: tuple[float, float], peck:
     a0, b0 = (xa / 2.0, za) if facing else (za, xa / 2.0)
     a_end, b_end = (xe / 2.0, ze) if facing else (ze, xe / 2.0)
     blocks: list[str] = []
-    columns = peck_levels(b0, b_end, shift) if abs(b_end - b0) > EPS else [b0]
+    columns = [b0] + (peck_levels(b0, b_end, shift) if abs(b_end - b0) > EPS else [])
     if abs(b_end - b0) > EPS and shift <= 0:
         raise NcAlarmError(ALARM_NO_INFEED, "P" if not along_x else "Q")
     sign = 1.0 if a_end > a0 else -1.0
