@@ -190,6 +190,9 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     if op == "TRANS":
         trans = {axis: float(v) * mm for axis, v in zip(GEO, args) if float(v)}
         fine = {}
+    elif op == "SYNC":
+        _sync(interp, geo)
+        return
     elif op == "ROT":
         state = _rotate(interp, geo, state, args, number, mm)
     elif op == "ROTOFF":
@@ -212,6 +215,30 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     else:
         raise NcAlarmError(17070, name)
     _install(interp, geo, state, trans, fine)
+
+
+def _sync(interp: Any, geo: Any) -> None:
+    """SD 42440 = 0: after a zero-offset change the programmed position is the actual one.
+
+    An incremental move then starts from where the tool is, seen in the new
+    system, so the offset change is not travelled (with SD 42440 = 1, the
+    default, the Siemens rule applies: the programmed WCS point is kept).
+    """
+    if bool(interp.data.setting_data.get("SD42440", True)):
+        return
+    path, modal = interp.builder.path, interp.modal
+    old_frames, old_wcs = geo.frames, dict(geo.wcs_mm)
+    old_view = dict(modal.position_wcs)
+    path.sync_position(modal, dict(modal.position_mcs))
+
+    def undo() -> None:
+        geo.frames = old_frames
+        geo.wcs_mm = old_wcs
+        modal.position_wcs = old_view
+
+    journal = getattr(interp, "_journal", None)
+    if journal is not None:
+        journal.append(("undo", undo, None))
 
 
 def _axis(args: list[Any], name: str) -> str:
@@ -309,8 +336,24 @@ class FrameBlocks:
 
     blocks: list[str] = field(default_factory=list)
     done: bool = False
+    selects_offset: bool = False  # G54…G59 / G54.1: a settable zero offset is selected
+
+    def head(self, siemens_g: list[str], absolute: bool, has_words: bool) -> list[str]:
+        """Blocks before the motion: the frame operations, and for an offset selection its
+        G codes followed by :data:`SYNC` (``siemens_g`` is emptied then).
+
+        A selection in a G90 block with axis words stays one block (the programmed
+        axes go to their new WCS position either way)."""
+        if not self.selects_offset or not siemens_g or (absolute and has_words):
+            return self.blocks
+        head = " ".join(siemens_g)
+        siemens_g.clear()
+        return self.blocks + [head, SYNC]
 
 
+SYNC = f"{PREFIX}SYNC=0"
+"""After a zero-offset change: SD 42440 = 0 takes the actual position as the programmed one."""
+_OFFSET_SELECTIONS = {"G54", "G55", "G56", "G57", "G58", "G59", "G54.1"}
 _ALONE_G68 = {"G68", "G90", "G91", "G17", "G18", "G19"}
 _ALONE_MIRROR = {"G51.1", "G50.1", "G90", "G91"}
 
@@ -343,7 +386,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
     for code in gcodes:
         if code in ("G17", "G18", "G19"):
             tracker.plane = code
-    out = FrameBlocks()
+    out = FrameBlocks(selects_offset=bool(_OFFSET_SELECTIONS.intersection(gcodes)))
     present = set(gcodes) & {"G68", "G69", "G51", "G50", "G51.1", "G50.1", "G15", "G16"}
     if not present:
         return out
@@ -353,9 +396,9 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         tracker.polar = True
         tracker.polar_fresh = True
     if "G69" in present:
-        out.blocks.append(f"{PREFIX}ROTOFF=0")
+        out.blocks.extend([f"{PREFIX}ROTOFF=0", SYNC])
     if "G50" in present:
-        out.blocks.append(f"{PREFIX}SCALEOFF=0")
+        out.blocks.extend([f"{PREFIX}SCALEOFF=0", SYNC])
     raw = {word.letter: word.value for word in words}
     if "G68" in present:
         _alone(words, gcodes, _ALONE_G68, "XYZIJKR", "G68")
@@ -371,7 +414,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         head = " ".join(g for g in gcodes if g != "G68")
         if head:
             out.blocks.append(head)
-        out.blocks.append(f"{PREFIX}ROT[{', '.join(args)}]={_fmt(values.get('R', 0.0))}")
+        out.blocks.extend([f"{PREFIX}ROT[{', '.join(args)}]={_fmt(values.get('R', 0.0))}", SYNC])
         out.done = True
         return out
     if "G51.1" in present or "G50.1" in present:
@@ -382,8 +425,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
             parts = [f"{PREFIX}MIRROR[{axis}]={_fmt(values[axis])}" for axis in axes]
         else:
             parts = [f"{PREFIX}MIRROROFF[{axis}]=0" for axis in axes] or [f"{PREFIX}MIRROROFF=0"]
-        if parts:
-            out.blocks.append(" ".join(parts))
+        out.blocks.extend([" ".join(parts), SYNC])
         out.done = True
         return out
     if "G51" in present:
@@ -391,7 +433,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         if "P" in raw:
             mask |= 8
         args = [str(mask)] + [_fmt(raw.get(letter, 0.0)) for letter in "IJK"]
-        out.blocks.append(f"{PREFIX}SCALE[{', '.join(args)}]={_fmt(raw.get('P', 0.0))}")
+        out.blocks.extend([f"{PREFIX}SCALE[{', '.join(args)}]={_fmt(raw.get('P', 0.0))}", SYNC])
         for letter in ("X", "Y", "Z", "I", "J", "K", "P"):  # X/Y/Z: no centre (workpiece zero)
             values.pop(letter, None)
     gcodes[:] = [g for g in gcodes if g not in present]
@@ -400,9 +442,10 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
     return out
 
 
-def trans_block(values: dict[str, float]) -> str:
-    """G52 (``values`` = its offsets) or G92.1 (empty): the ``$P_ISOFR_TRANS`` assignment."""
-    return f"{PREFIX}TRANS[{', '.join(_fmt(values.get(axis, 0.0)) for axis in GEO)}]=0"
+def trans_blocks(number: str, values: dict[str, float]) -> list[str]:
+    """G52 (``values`` = its offsets) or G92.1 (empty): ``$P_ISOFR_TRANS``, then :data:`SYNC`."""
+    offsets = ", ".join(_fmt(values.get(axis, 0.0)) for axis in GEO)
+    return [f"{number}{PREFIX}TRANS[{offsets}]=0", SYNC]
 
 
 def polar_words(words: list[Any], values: dict[str, float], siemens_g: list[str],
@@ -450,3 +493,8 @@ def polar_words(words: list[Any], values: dict[str, float], siemens_g: list[str]
         extra.append("AP=AC(0)")
     tracker.polar_fresh = False
     return [pole], " ".join(extra)
+
+
+def trans_block(values: dict[str, float]) -> str:
+    """The ``$P_ISOFR_TRANS`` assignment alone (older form of :func:`trans_blocks`)."""
+    return trans_blocks("", values)[0]

@@ -80,7 +80,7 @@ _SIMPLE_G = {
     "G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2",
     "G3": "G3", "G03": "G3", "G17": "G17", "G18": "G18", "G19": "G19",
     "G40": "G40", "G41": "G41", "G42": "G42", "G54": "G54", "G55": "G55",
-    "G56": "G56", "G57": "G57", "G58": "G58", "G59": "G59", "G61": "G60",
+    "G56": "G56", "G57": "G57", "G58": "G505", "G59": "G506", "G61": "G60",
     "G64": "G64", "G9": "G9", "G09": "G9", "G90": "G90", "G91": "G91",
     "G94": "G94", "G95": "G95", "G20": "G700", "G21": "G710", "G70": "G700",
     "G71": "G710", "G53": "G53",
@@ -233,7 +233,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     if "G10" in gcodes:
         return [number + block for block in _g10(values)] or ([number] if number else [])
     if "G92.1" in gcodes:
-        return [number + iso_frames.trans_block({})]
+        return iso_frames.trans_blocks(number, {})
     if "G92" in gcodes:
         moved = [a for a in AXES if a in values]
         if not moved:
@@ -241,7 +241,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         parts = " ".join(f"{a}=$P_EP[{a}]-({_fmt(values[a])})" for a in moved)
         return [number + "ATRANS " + parts]
     if "G52" in gcodes:
-        return [number + iso_frames.trans_block(values)]
+        return iso_frames.trans_blocks(number, values)
     if "G28" in gcodes:
         moved = [a for a in AXES if a in values]
         blocks = [number + "G0 " + " ".join(f"{a}{_fmt(values[a])}" for a in moved)] if moved else []
@@ -285,8 +285,9 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
             a in values for a in ("X", "Y", "Z", "R"))):
         return _cycle_block(number, siemens_g, values, modal, settings)
     poles, polar = iso_frames.polar_words(words, values, siemens_g, modal.frames, modal.turning)
-    block = _plain_block(number, siemens_g, values, others, modal)
-    return framing.blocks + poles + [(block + " " + polar).strip()]
+    head = framing.head(siemens_g, modal.absolute, any(a in values for a in AXES))  # SD 42440
+    block = (_plain_block(number, siemens_g, values, others, modal) + " " + polar).strip()
+    return head + poles + ([block] if block else [])
 
 
 def _cycle_code(code: str) -> int | None:

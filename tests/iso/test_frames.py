@@ -232,7 +232,33 @@ def test_siemens_mode_sees_the_shared_mirror_frame():
 
 def test_translation_of_frame_blocks():
     lines = translate("N10 G68 X1. Y2. R30.\nN20 G69 G01 X1.\nN30 G51.1 X5.\nG16 X10. Y30.")
-    assert lines[0].blocks == ["N10 $P_ISOFR_ROT[19, 1, 2, 0, 0, 0, 0]=30"]
-    assert lines[1].blocks == ["N20 $P_ISOFR_ROTOFF=0", "N20 G1 X1"]
-    assert lines[2].blocks == ["N30 $P_ISOFR_MIRROR[X]=5"]
+    sync = "$P_ISOFR_SYNC=0"
+    assert lines[0].blocks == ["N10 $P_ISOFR_ROT[19, 1, 2, 0, 0, 0, 0]=30", f"N10 {sync}"]
+    assert lines[1].blocks == ["N20 $P_ISOFR_ROTOFF=0", f"N20 {sync}", "N20 G1 X1"]
+    assert lines[2].blocks == ["N30 $P_ISOFR_MIRROR[X]=5", f"N30 {sync}"]
     assert lines[3].blocks == ["G111 X0 Y0", "RP=AC(10) AP=AC(30)"]
+
+
+# ------------------------------------------------------------------ SD 42440 (offset change in G91)
+@pytest.mark.parametrize("change", ["G10 L2 P2 X5. Y5. Z1.\nG55", "G52 X5. Y5. Z1.",
+                                    "G10 L2 P2 X5. Y5. Z1.\nG55 G91 X1.\nG90 X-4."])
+def test_sd42440_0_offset_change_not_travelled_in_g91(change):
+    text = f"G0 X0 Y0 Z20.\n{change}\nG91 G1 X1. F100\nM30\n"
+    result = _run_with_md(text, {}, setting_data={"SD42440": False})
+    assert result.status == "ended", result.alarms
+    twice = "G91 X1." in change
+    assert ends(result)[-1][1] == {"X": -3.0 if twice else -4.0, "Y": -5.0, "Z": 19.0}
+    assert ends(result, "mcs")[-1][1] == {"X": 2.0 if twice else 1.0, "Y": 0.0,
+                                          "Z": 20.0}
+
+
+def test_sd42440_1_keeps_the_programmed_point():
+    text = "G0 X0 Y0 Z20.\nG52 X5. Y5. Z1.\nG91 G1 X1. F100\nM30\n"
+    result = _run_with_md(text, {}, setting_data={"SD42440": True})
+    assert ends(result)[-1][1] == {"X": 1.0, "Y": 0.0, "Z": 20.0}
+
+
+def test_g58_g59_select_settable_offsets_5_and_6():
+    text = "G10 L2 P5 X7.\nG10 L2 P6 X9.\nG58\nG0 X0\nG59\nX0\nM30\n"
+    result = run_iso(text)
+    assert [p["X"] for _line, p in ends(result, "mcs")] == [7.0, 9.0]
