@@ -21,7 +21,7 @@ from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, jour
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
 from nck.interp.values import Axis, Cell, convert, to_bool, to_number, to_string
-from nck.iso import subprograms
+from nck.iso import macros, subprograms
 from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES
 
@@ -513,6 +513,7 @@ class BlockRun:
         name, text = found
         program = _program_cache(interp, name, text)
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
+        macros.bind_call(self.frame, frame, call)  # ISO G65/G66 arguments ($C_…)
         if program.proc is not None and program.proc.save:
             frame.saved_gcodes = dict(interp.modal.gcodes)  # PROC … SAVE
             frame.saved_pframe = interp.builder.path.state(interp.modal).frames.programmable

@@ -96,6 +96,9 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     """Read system variable ``name`` with evaluated ``indices``."""
     if name in frame_vars.NAMES:  # frames and $AA_IW (WCS through frames and tool length)
         return frame_vars.read(ctx, name, indices)
+    if name.startswith("$C_"):  # ISO G65/G66 macro arguments (nck.iso.macros)
+        from nck.iso import macros as iso_macros
+        return iso_macros.read(ctx, name, indices)
     modal = ctx.modal
     if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
         axis = _axis_arg(ctx, name, indices)
@@ -147,6 +150,10 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
     """Write system variable ``name`` (only tool data is writable for now)."""
     if name in frame_vars.NAMES:  # $P_UIFR[n,ax,TR], $P_PFRAME[ax,RT], …
         frame_vars.write(ctx, name, indices, value)
+        return
+    if name.startswith("$C_"):  # ISO G65/G66 macro arguments (nck.iso.macros)
+        from nck.iso import macros as iso_macros
+        iso_macros.write(ctx, name, indices, value)
         return
     if name.startswith("$P_ISOFR_"):  # ISO G68/G51/G51.1/G52 frames (nck.iso.frames)
         from nck.iso import frames as iso_frames

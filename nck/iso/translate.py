@@ -31,6 +31,7 @@ from nck.errors import NcAlarmError
 from nck.iso import cycles, subprograms, turning
 from nck.iso.lexing import Word, split_words
 from nck.iso import dwell as iso_dwell
+from nck.iso import macros as iso_macros
 from nck.iso import frames as iso_frames
 
 LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
@@ -178,6 +179,9 @@ def _fmt(value: float) -> str:
 
 
 def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) -> list[str]:
+    macro = iso_macros.macro_block(words, modal, settings)  # G65/G66/G67/G05
+    if macro is not None:
+        return macro
     gcodes: list[str] = []
     addresses: dict[str, Word] = {}
     others: list[Word] = []

@@ -1,0 +1,293 @@
+"""ISO macros: ``G65`` (call), ``G66`` / ``G67`` (modal call), ``G05 P…`` and the ``$C_…`` arguments.
+
+Translation (:func:`macro_block`, called by :mod:`nck.iso.translate` for blocks
+with G65, G66, G67 or G05):
+
+* ``G65 P10 L3 X150. F55`` → ``$C_X=150 $C_X_PROG=1 $C_F=55 … CALL "O0010" P3``:
+  every address but P and L is an argument, nothing moves. The values are
+  the numbers as written (``$C_TYP_PROG`` tells REAL from INTEGER, one bit
+  per letter A = bit 0 … Z = bit 25); ``$C_<a>_PROG`` is 1, or 3 for an
+  axis address under G91; ``$C_ALL_PROG`` / ``$C_INC_PROG`` are the bit
+  maps. I, J and K may come up to ten times: ``$C_I[n]``, ``$C_I_NUM``,
+  ``$C_I_ORDER[n]`` (the I/J/K set each value belongs to).
+* ``G66 P10 X5.`` stores the arguments with a modal call (``$C_MCALL``):
+  the macro runs after every later block of this level that moves an axis
+  (the Siemens MCALL rule), not in the G66 block and not after blocks
+  without motion. ``G67`` (or a new G66) cancels it.
+* ``G05 P<prog> L<n>`` calls the program ``<prog>`` as written (no padding);
+  G05 without P, ``P0``/``P1`` and G05.1 call CYCLE305 with the block's
+  addresses in ``$C_…``.
+* Only one call per block: M98, G65, G66 and G05 together raise 12722, and
+  so does G05 while a fixed cycle is modal.
+
+A macro whose first line is ``PROC`` runs in Siemens mode, any other in ISO
+mode (decided by :func:`nck.iso.loader.wants_iso`).
+
+Interpreter side: the ``$C_…`` writes of a translated block collect in the
+calling level (:class:`MacroState` on the interpreter's frame, field
+``iso_macro``); :func:`bind_call` hands them to the called level, where
+:func:`read` serves them (system-variable hook in :mod:`nck.interp.sysvars`).
+Unprogrammed arguments read 0.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Any
+
+from nck.errors import NcAlarmError
+from nck.iso.lexing import Word
+
+if TYPE_CHECKING:
+    from nck.interp.frames import Frame
+    from nck.iso.translate import IsoSettings
+
+ALARM_TOO_MANY_CALLS = 12722
+MAX_IJK = 10
+MAX_PASSES = 9999
+AXIS_LETTERS = frozenset("XYZUVWABC")
+NOT_ARGUMENTS = frozenset("PLNOG")
+EIGHT_DIGIT_PROGRAMS_BIT = 1 << 6  # MD 20734 bit 6
+MCALL_NAME = "$C_MCALL"  # internal: sets the G66 modal call (empty string cancels)
+MCALL_PASSES = "$C_MCALL_PASSES"  # internal: passes of each G66 call (L)
+ISO_MODE_GROUP = 47
+
+_READABLE = re.compile(r"^\$C_(?:[A-Z]|[A-Z]_PROG|[IJK]_NUM|[IJK]_ORDER|ALL_PROG|INC_PROG|TYP_PROG)$")
+_ARRAYS = re.compile(r"^\$C_(?:[IJK]|[IJK]_ORDER)$")
+
+
+# ============================================================================ translation
+def _names(words: list[Word]) -> list[str]:
+    from nck.iso.translate import _g_name
+
+    return [_g_name(w) for w in words if w.letter == "G"]
+
+
+def _is_g05(code: str) -> bool:
+    return code in ("G05", "G5.1")
+
+
+def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[str] | None:
+    """The Siemens blocks of a G65/G66/G67/G05 block, or None for any other block."""
+    gcodes = _names(words)
+    calls = [c for c in gcodes if c in ("G65", "G66") or _is_g05(c)]
+    if not calls and "G67" not in gcodes:
+        return None
+    if len(calls) + sum(1 for w in words if w.letter == "M" and w.value == 98) > 1:
+        raise NcAlarmError(ALARM_TOO_MANY_CALLS)  # one call, macro or substitution per block
+    number = ""
+    if words and words[0].letter == "N":
+        number = f"N{int(words[0].value)} "
+    if "G67" in gcodes and not calls:
+        from nck.iso.translate import _translate_words
+
+        rest = [w for w in words if not (w.letter == "G" and w.value == 67)]
+        blocks = [number + f'{MCALL_NAME}=""']
+        if any(w.letter != "N" for w in rest):
+            blocks += _translate_words(rest, modal, settings)
+        return blocks
+    if "G67" in gcodes:
+        raise NcAlarmError(12080, "G67")
+    call = calls[0]
+    if _is_g05(call):
+        if getattr(getattr(modal, "cycle", None), "code", None) is not None:
+            raise NcAlarmError(ALARM_TOO_MANY_CALLS)  # G05 while a fixed cycle is modal
+        return _g05(words, modal, settings, number)
+    return _g65_g66(words, call, modal, settings, number)
+
+
+def _whole(word: Word, what: str) -> int:
+    """P, L, O, N take integers only."""
+    if word.has_point or word.value != int(word.value) or word.value < 0:
+        raise NcAlarmError(12080, f"{what}{word.text}")
+    return int(word.value)
+
+
+def _program_name(word: Word | None, settings: IsoSettings, code: str) -> str:
+    if word is None:
+        raise NcAlarmError(12080, code)
+    number = _whole(word, "P")
+    digits = len(word.text.lstrip("+"))
+    limit = 8 if settings.function_mask & EIGHT_DIGIT_PROGRAMS_BIT else 4
+    if digits > limit:
+        raise NcAlarmError(12080, f"P{word.text}")
+    return f"O{number:04d}"
+
+
+def _passes(words: list[Word]) -> int:
+    found = [w for w in words if w.letter == "L"]
+    if not found:
+        return 1
+    passes = _whole(found[-1], "L")
+    if not 1 <= passes <= MAX_PASSES:
+        raise NcAlarmError(14013)
+    return passes
+
+
+def argument_writes(words: list[Word], incremental: bool) -> list[str]:
+    """``$C_…`` assignments for every argument word of a call block."""
+    from nck.iso.translate import _fmt
+
+    writes: list[str] = []
+    seen: set[str] = set()
+    all_bits = inc_bits = typ_bits = 0
+    ijk: dict[str, list[tuple[float, int]]] = {"I": [], "J": [], "K": []}
+    set_number, last = 1, -1
+    for word in words:
+        letter = word.letter
+        if letter in NOT_ARGUMENTS or len(letter) != 1:
+            continue
+        bit = 1 << (ord(letter) - ord("A"))
+        all_bits |= bit
+        if letter in ijk:
+            position = "IJK".index(letter)
+            if position <= last:
+                set_number += 1
+            last = position
+            ijk[letter].append((word.value, set_number))
+            if len(ijk[letter]) > MAX_IJK:
+                raise NcAlarmError(12080, letter)
+            continue
+        if letter in seen:
+            raise NcAlarmError(12000, letter)
+        seen.add(letter)
+        prog = 1
+        if incremental and letter in AXIS_LETTERS:
+            inc_bits |= bit
+            prog = 3
+        if word.has_point:
+            typ_bits |= bit
+        writes.append(f"$C_{letter}={_fmt(word.value)} $C_{letter}_PROG={prog}")
+    for letter, entries in ijk.items():
+        if not entries:
+            continue
+        writes.append(f"$C_{letter}_NUM={len(entries)} $C_{letter}_PROG=1")
+        for index, (value, set_no) in enumerate(entries):
+            writes.append(f"$C_{letter}[{index}]={_fmt(value)} $C_{letter}_ORDER[{index}]={set_no}")
+    writes.append(f"$C_ALL_PROG={all_bits} $C_INC_PROG={inc_bits} $C_TYP_PROG={typ_bits}")
+    return writes
+
+
+def _g65_g66(words: list[Word], call: str, modal: Any, settings: IsoSettings, number: str) -> list[str]:
+    from nck.iso.translate import _SIMPLE_G
+
+    prefix: list[str] = []
+    for code in _names(words):
+        if code == call:
+            continue
+        if code not in _SIMPLE_G:
+            raise NcAlarmError(12080, code)
+        prefix.append(_SIMPLE_G[code])
+        if code == "G90":
+            modal.absolute = True
+        elif code == "G91":
+            modal.absolute = False
+    p_words = [w for w in words if w.letter == "P"]
+    name = _program_name(p_words[-1] if p_words else None, settings, call)
+    passes = _passes(words)
+    writes = " ".join(argument_writes(words, not modal.absolute))
+    blocks = [number + " ".join(prefix)] if prefix else []
+    if call == "G65":
+        tail = f' CALL "{name}"' + (f" P{passes}" if passes > 1 else "")
+        return blocks + [f"{number}{writes}{tail}"]
+    return blocks + [f'{number}{writes} {MCALL_PASSES}={passes} {MCALL_NAME}="{name}"']
+
+
+def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> list[str]:
+    p_words = [w for w in words if w.letter == "P"]
+    codes = _names(words)
+    program = None
+    if "G05" in codes and p_words and _whole(p_words[-1], "P") > 1:
+        program = p_words[-1].text.lstrip("+")
+    if program is None:  # HSC / reserved forms: the shell cycle with every address in $C_
+        writes = " ".join(argument_writes([w for w in words if w.letter != "G"], not modal.absolute))
+        return [f'{number}{writes} CALL "CYCLE305"']
+    if len(program) > 10:
+        raise NcAlarmError(12080, f"P{program}")
+    passes = _passes(words)
+    return [f'{number}CALL "{program}"' + (f" P{passes}" if passes > 1 else "")]
+
+
+# ============================================================================ interpreter
+@dataclass(frozen=True)
+class MacroState:
+    """The ``$C_…`` data of one program level (immutable: replaced on change).
+
+    ``args``: what this level reads (given by its caller); ``pending``: written
+    by the current block for the call it makes; ``modal_args`` / ``modal_call``
+    / ``modal_passes``: the G66 modal call of this level.
+    """
+
+    args: dict[tuple[str, tuple], Any] = field(default_factory=dict)
+    pending: dict[tuple[str, tuple], Any] | None = None
+    modal_args: dict[tuple[str, tuple], Any] | None = None
+    modal_call: Any = None
+    modal_passes: int = 1
+
+
+def _state(frame: Frame) -> MacroState:
+    return getattr(frame, "iso_macro", None) or MacroState()
+
+
+def _key(name: str, indices: tuple[Any, ...]) -> tuple[str, tuple]:
+    if _ARRAYS.match(name):
+        if len(indices) > 1:
+            raise NcAlarmError(17020, name)
+        index = int(indices[0]) if indices else 0
+        if index != (indices[0] if indices else 0) or not 0 <= index < MAX_IJK:
+            raise NcAlarmError(17020, name)
+        return name, (index,)
+    if indices:
+        raise NcAlarmError(12550, name)
+    return name, ()
+
+
+def read(ctx: Any, name: str, indices: tuple[Any, ...]) -> Any:
+    """Value of ``$C_…`` at the current program level (0 when not programmed)."""
+    if not (_READABLE.match(name) or _ARRAYS.match(name)):
+        raise NcAlarmError(12550, name)
+    key = _key(name, indices)
+    frames = ctx._state.frames
+    if not frames:
+        return 0
+    return _state(frames[-1]).args.get(key, 0)
+
+
+def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
+    """Collect a ``$C_…`` argument for the next call (translated ISO blocks only)."""
+    frames = ctx._state.frames
+    if not frames or ctx.modal.gcodes.get(ISO_MODE_GROUP) != "G291":
+        raise NcAlarmError(17070, name)  # read-only in Siemens mode
+    frame = frames[-1]
+    state = _state(frame)
+    pending = dict(state.pending or {})
+    if name == MCALL_NAME:
+        from nck.lang import ast
+
+        target = str(value).strip().upper()
+        passes = int(pending.pop((MCALL_PASSES, ()), 1))
+        call = ast.Call(target, ()) if target else None
+        frame.modal_call = call
+        frame.iso_macro = replace(state, pending=None, modal_call=call, modal_passes=passes,
+                                  modal_args=pending if call is not None else None)
+        return
+    if name != MCALL_PASSES and not (_READABLE.match(name) or _ARRAYS.match(name)):
+        raise NcAlarmError(12550, name)
+    key = _key(name, indices) if name != MCALL_PASSES else (name, ())
+    pending[key] = value
+    frame.iso_macro = replace(state, pending=pending)
+
+
+def bind_call(caller: Frame, callee: Frame, call: Any) -> None:
+    """Give the called level its ``$C_…`` arguments (G65 pending ones or the G66 modal set)."""
+    state = getattr(caller, "iso_macro", None)
+    if state is None:
+        return
+    if call is not None and call is state.modal_call:
+        callee.iso_macro = MacroState(args=dict(state.modal_args or {}))
+        callee.passes_left = state.modal_passes - 1
+        return
+    if state.pending is not None:
+        callee.iso_macro = MacroState(args=state.pending)
+        caller.iso_macro = replace(state, pending=None)

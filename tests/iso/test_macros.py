@@ -1,0 +1,146 @@
+"""ISO macros (section 9 item 14): G65 arguments in $C_…, L passes, G66/G67 modal calls,
+PROC macros in Siemens mode, one call per block (12722), G05 P program calls."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck.iso.translate import translate
+
+from tests.iso.conftest import ends, run_iso
+
+# an ISO-mode macro reads its arguments in a Siemens section (the manual's pattern)
+READER = ("G290\nR1=$C_X R2=$C_F R3=$C_S R4=$C_X_PROG R5=R5+1 R6=$C_Z_PROG R7=$C_Y\n"
+          "R8=$AA_IM[X]\nG291\nM99\n")
+
+
+def _r(result, *numbers):
+    return [result.interpreter.r(n) for n in numbers]
+
+
+def test_g65_passes_arguments_and_does_not_move():
+    main = "N10 G00 X1. Y2.\nN30 G65 P10 F55 X150. Y100. S2000\nN40 X50.\nM30\n"
+    result = run_iso(main, {"O0010": READER})
+    assert result.status == "ended", result.alarms
+    assert ends(result) == [(1, {"X": 1.0, "Y": 2.0, "Z": 0.0}), (3, {"X": 50.0, "Y": 2.0, "Z": 0.0})]
+    assert _r(result, 1, 2, 3, 4, 5, 6, 7, 8) == [150.0, 55.0, 2000.0, 1.0, 1.0, 0.0, 100.0, 1.0]
+
+
+@pytest.mark.parametrize("block, passes", [("G65 P10 X1.", 1), ("G65 P10 L3 X1.", 3),
+                                           ("G65 L2 P0010 X1.", 2)])
+def test_g65_l_is_the_number_of_passes(block, passes):
+    result = run_iso(block + "\nM30\n", {"O0010": READER})
+    assert result.status == "ended", result.alarms
+    assert _r(result, 5) == [float(passes)]
+
+
+def test_g65_incremental_axis_argument_and_typ_prog():
+    mac = "G290\nR1=$C_X_PROG R2=$C_F_PROG R3=$C_TYP_PROG R4=$C_ALL_PROG R5=$C_INC_PROG\nG291\nM99\n"
+    result = run_iso("G91 G65 P10 X5 F20. A1.\nM30\n", {"O0010": mac})
+    assert result.status == "ended", result.alarms
+    bit = {letter: 1 << (ord(letter) - ord("A")) for letter in "AFX"}
+    assert _r(result, 1, 2) == [3.0, 1.0]
+    assert _r(result, 3) == [float(bit["F"] | bit["A"])]  # X5 is an INTEGER
+    assert _r(result, 4, 5) == [float(bit["A"] | bit["F"] | bit["X"]), float(bit["A"] | bit["X"])]
+
+
+def test_g65_ijk_arrays_and_order():
+    mac = ("G290\nR1=$C_I[0] R2=$C_I[1] R3=$C_I_ORDER[1] R4=$C_J_NUM R5=$C_J[1] R6=$C_K_NUM\n"
+           "R7=$C_K[2] R8=$C_K_ORDER[2] R9=$C_J_ORDER[1]\nG291\nM99\n")
+    result = run_iso("N5 G65 P10 I10 J10 K30 J22 K55 I44 K33\nM30\n", {"O0010": mac})
+    assert result.status == "ended", result.alarms
+    assert _r(result, 1, 2, 3, 4, 5, 6, 7, 8, 9) == [10.0, 44.0, 3.0, 2.0, 22.0, 3.0, 33.0, 3.0, 2.0]
+
+
+def test_arguments_are_local_to_the_called_level():
+    mac = "G290\nR1=$C_X\nG291\nM99\n"
+    after = "G290\nR2=$C_X\nG291\nM30\n"
+    result = run_iso("G65 P10 X7.\n" + after, {"O0010": mac})
+    assert result.status == "ended", result.alarms
+    assert _r(result, 1, 2) == [7.0, 0.0]
+
+
+def test_g66_calls_after_every_motion_block_only():
+    main = ("N10 G66 P10 X5.\nN20 G00 X50.\nN30 M03 S100\nN40 Y10.\nN50 G67\nN60 X0\nM30\n")
+    result = run_iso(main, {"O0010": READER})
+    assert result.status == "ended", result.alarms
+    assert [line for line, _ in ends(result)] == [2, 4, 6]
+    assert _r(result, 5) == [2.0]  # after N20 and N40, not after N10, N30 or N60
+    assert _r(result, 1, 8) == [5.0, 50.0]  # the G66 arguments; called after the move
+
+
+def test_new_g66_replaces_the_modal_call():
+    main = "G66 P10 X1.\nG00 X1.\nG66 P11 X2.\nG00 X2.\nG67\nM30\n"
+    other = "G290\nR9=R9+1 R10=$C_X\nG291\nM99\n"
+    result = run_iso(main, {"O0010": READER, "O0011": other})
+    assert result.status == "ended", result.alarms
+    assert _r(result, 5, 9, 10) == [1.0, 1.0, 2.0]
+
+
+def test_g66_l_passes_per_call():
+    result = run_iso("G66 P10 L2 X5.\nG00 X1.\nG67\nM30\n", {"O0010": READER})
+    assert result.status == "ended", result.alarms
+    assert _r(result, 5) == [2.0]
+
+
+def test_proc_macro_runs_in_siemens_mode():
+    proc = "PROC MAC10\nDEF REAL XA\nXA=$C_X+1\nG1 X=XA F100\nR6=$C_F\nM17\n"
+    result = run_iso("G65 P10 X4. F200\nG00 Y1.\nM30\n", {"O0010": proc})
+    assert result.status == "ended", result.alarms
+    assert [point["X"] for _, point in ends(result)] == [5.0, 5.0]
+    assert _r(result, 6) == [200.0]
+
+
+def test_macro_without_proc_runs_in_iso_mode():
+    iso = "G00 X5. (an ISO comment)\nM99\n"
+    result = run_iso("G65 P10 X4.\nM30\n", {"O0010": iso})
+    assert result.status == "ended", result.alarms
+    siemens_only = "G00 X5.\nDEF REAL A\nM99\n"
+    result = run_iso("G65 P10 X4.\nM30\n", {"O0010": siemens_only})
+    assert result.alarms[0].number == 12080
+
+
+@pytest.mark.parametrize("block", ["G05 P1 M98 P21", "G65 P10 M98 P21", "G05 P3 G65 P10"])
+def test_two_calls_in_one_block_raise_12722(block):
+    result = run_iso(block + "\nM30\n", {"O0010": READER, "O0021": "M99\n"})
+    assert result.status == "alarm"
+    assert result.alarms[0].number == 12722
+
+
+def test_g05_p_calls_program_unpadded():
+    result = run_iso("G05 P10123 L3\nM30\n", {"10123": "G91 G01 X1. F10\nM99\n"})
+    assert result.status == "ended", result.alarms
+    assert [point["X"] for _, point in ends(result)] == [1.0, 2.0, 3.0]
+
+
+def test_g05_hsc_form_calls_cycle305():
+    result = run_iso("G05 P1 X1.\nM30\n")
+    assert result.alarms[0].number == 14011  # CYCLE305 is not part of this control
+
+
+def test_g65_without_p_or_with_five_digits_is_rejected():
+    assert run_iso("G65 X1.\nM30\n").alarms[0].number == 12080
+    assert run_iso("G65 P12345\nM30\n").alarms[0].number == 12080
+    assert run_iso("G65 P10.\nM30\n").alarms[0].number == 12080
+
+
+def test_macro_program_missing_raises_14011():
+    assert run_iso("G65 P77\nM30\n").alarms[0].number == 14011
+
+
+def test_c_variables_are_read_only_in_siemens_mode():
+    from nck.headless import interpret_only
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    result = interpret_only(load_machine(None), MemorySource(), NcData(), "T.MPF",
+                            text="$C_X=5\nM30\n", max_blocks=10)
+    assert result.alarms[0].number == 17070
+
+
+def test_translation_of_a_g65_block():
+    (line,) = translate("N30 G65 P10 F55 X150.")
+    assert len(line.blocks) == 1
+    block = line.blocks[0]
+    assert block.startswith("N30 ") and block.endswith('CALL "O0010"')
+    assert "$C_F=55" in block and "$C_X=150" in block
