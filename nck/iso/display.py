@@ -22,6 +22,8 @@ _UNITS = {"G70": "G20", "G700": "G20", "G71": "G21", "G710": "G21"}
 _ZERO_OFFSET = {"G54": "G54", "G55": "G55", "G56": "G56", "G57": "G57", "G505": "G58",
                 "G506": "G59"}
 _EXACT_STOP = {"G60": "G61", "G64": "G64"}
+_CUTTING_SPEED = {"G96": ("G95", "G96"), "G961": ("G94", "G96"), "G97": ("G95", "G97"),
+                  "G971": ("G94", "G97")}
 
 
 @functools.cache
@@ -47,6 +49,8 @@ def iso_gcodes(siemens: Mapping[int, str], dialect: str = "iso-m") -> dict[int, 
         view[3] = siemens[14]
     if siemens.get(15) in ("G94", "G95"):
         view[5] = siemens[15]
+    elif siemens.get(15) in _CUTTING_SPEED:  # Siemens group 15 = ISO feed type + G96/G97
+        view[5], view[2 if turning else 13] = _CUTTING_SPEED[siemens[15]]
     if siemens.get(13) in _UNITS:
         view[6] = _UNITS[siemens[13]]
     if siemens.get(7) in ("G40", "G41", "G42"):

@@ -208,13 +208,17 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         else:
             prefix.append("G97" if per_rev else "G971")
         modal.per_rev = per_rev
-        dropped = {"G94", "G95", "G96", "G97", "G32", "G33"}
+        dropped = {"G94", "G95", "G96", "G97", "G32", "G33", "G77", "G78", "G79"}
     else:
-        dropped = {"G96", "G97", "G32", "G33"}
+        dropped = {"G96", "G97", "G32", "G33", "G77", "G78", "G79"}
     keep = [w for w in body if not (w.letter == "G" and _g(w) in dropped)]
+    suffix = ""
     if lathe.thread:
         prefix.append("G33")
         modal.motion = "G33"
+        start_angle = next((w for w in keep if w.letter == "Q"), None)
+        if start_angle is not None:  # Q: start angle in 0.001 degrees (an integer)
+            suffix = f" SF={_fmt(start_angle.value / 1000.0)}"
         keep = _thread_words(keep, lathe, settings, value)
     keep = _incremental_words(keep, modal, absolute_before, value)
     relative = modal.absolute and any(w.letter == "G" and w.text == "91" for w in keep)
@@ -222,9 +226,9 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     if relative:  # U/W with an unknown position: one block in G91, then G90 again
         modal.absolute = True
         blocks.append("G90")
-    if prefix:
+    if prefix or suffix:
         head = " ".join(prefix)
-        blocks = [f"{head} {blocks[0]}".strip()] + blocks[1:] if blocks else [head]
+        blocks = [f"{head} {blocks[0]}{suffix}".strip()] + blocks[1:] if blocks else [head + suffix]
     _track(body, codes, modal, absolute_before, value)
     return blocks
 

@@ -183,6 +183,7 @@ def test_g77_single_cycle_is_modal_and_returns_to_its_start():
 
 
 def test_g78_thread_single_cycle_and_g79_facing():
+    assert run_lathe("G00 X30. Z3.\nG78\nM30\n").segments[-1].end_wcs["X"] == 30.0  # no axes
     result = run_lathe("G00 X30. Z3.\nG78 X19. Z-15. F1.5\nX18.5\nM30\n")
     assert result.status == "ended", result.alarms
     threads = [m for m in result.segments if m.kind == "G33"]
@@ -236,3 +237,29 @@ def test_g92_x_z_sets_the_coordinate_system():
                                           ("G00 X20. Z2.\nG71 P10 Q99\nN10 X1.\nM30\n", 14080)])
 def test_cycle_alarms(text, number):
     assert run_lathe(text).alarms[0].number == number
+
+
+def test_g33_q_is_the_start_angle_and_the_lead_stays_modal():
+    lines = translate("G00 X20. Z5.\nG33 Z-20. F1.5 Q180000\nZ-30.\nG01 X30.", "iso-t")
+    assert [line.blocks for line in lines][1:] == [["G33 Z-20 K1.5 SF=180"], ["G33 Z-30"],
+                                                  ["G1 X30"]]
+    result = run_lathe("G00 X20. Z5.\nG33 Z-20. F1.5 Q180000\nZ-30.\nG01 X30. F0.1\nM30\n")
+    assert result.status == "ended", result.alarms
+    assert [(m.kind, m.lead_mm) for m in result.segments[1:3]] == [("G33", 1.5), ("G33", 1.5)]
+
+
+def test_system_a_g50_x_z_sets_the_coordinate_system():
+    result = run_lathe("G00 X40. Z10.\nG50 X100. Z50.\nG00 X90. Z40.\nM30\n", {"MD10881": 1})
+    assert result.status == "ended", result.alarms
+    assert (round(result.segments[-1].end_mcs["X"], 3), round(result.segments[-1].end_mcs["Z"], 3)) \
+        == (15.0, 0.0)
+
+
+def test_g96_is_shown_in_iso_t_group_2_with_the_feed_type_in_group_5():
+    from nck.iso.display import iso_gcodes
+    result = run_lathe("G50 S3000\nG00 X50. Z2.\nG96 S100 M03\nG01 Z-10. F0.2\nG98 G97 S500\n"
+                       "G01 Z-20. F100.\nM30\n", {"MD10881": 1})
+    assert result.status == "ended", result.alarms
+    views = [iso_gcodes(m.gcodes, "iso-t") for m in result.segments]
+    assert (views[1][2], views[1][5]) == ("G96", "G95")
+    assert (views[2][2], views[2][5]) == ("G97", "G94")
