@@ -15,12 +15,22 @@ G53 stays non-modal machine coordinates, G61 → G60, M98 → subprogram call
 pocket-calculator notation by default; in standard notation a value without
 a point is counted in increments (IS-B 0.001 mm, IS-C 0.0001 mm).
 
+ISO T (:mod:`nck.iso.turning`): X as a diameter (DIAMON), U/W incremental,
+code systems B and A (MD 10881), T<tool><offset> (MD 10888), G10 P tool offsets
+of the active tool, G92 S (A: G50 S) → LIMS, G96/G97 → G96/G961/G97/G971, G32/G33
+F → lead K, G70–G76 and G77–G79 (A: G90/G92/G94) as NC-inserted blocks.
+
 Not modelled (yet): a ``/n`` in the middle of a block is resolved at load time
 as if level n were off; SD 42440 = 0 (an offset change is not traversed with
 G91: the Siemens interpreter keeps the programmed WCS point); M30 in an ISO
 subprogram ends only the subprogram; M99 P<n>; G10 L10–L13 tool data; G65/G66
-macros; ISO T turning cycles; G68/G51/G16; the cycle group (9) in the G-group
+macros; G68/G51/G16; the cycle group (9) in the G-group
 display always shows G80.
+ISO T not modelled: system C; G34; the G76 chamfer (pull-out) and the G74/G75
+relief at the bottom; contours with pockets (G71/G72 type II); tool nose radius
+compensation inside the cycles; G10 P creating a missing offset; a cycle start
+point that is not known from the program text (after G28, M98, Siemens blocks:
+61607).
 """
 
 from __future__ import annotations
