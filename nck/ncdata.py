@@ -19,6 +19,7 @@ class ToolEdge:
 
     Index 1 is the tool type, 2 the cutting edge position, 3–5 the lengths 1–3,
     6 the radius, 12–14 length wear, 15 radius wear (numbering of the manual).
+    Key 0 holds the ISO H number ``$TC_DPH`` (0 = not linked; nck.iso.tool_offsets).
     """
 
     params: dict[int, float] = field(default_factory=dict)

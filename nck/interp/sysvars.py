@@ -99,6 +99,9 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     if name.startswith("$C_"):  # ISO G65/G66 macro arguments (nck.iso.macros)
         from nck.iso import macros as iso_macros
         return iso_macros.read(ctx, name, indices)
+    if name.startswith(("$TC_DPH", "$TC_ISOH_")):  # ISO H numbers (nck.iso.tool_offsets)
+        from nck.iso import tool_offsets as iso_tools
+        return iso_tools.read(ctx, name, indices)
     modal = ctx.modal
     if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
         axis = _axis_arg(ctx, name, indices)
@@ -154,6 +157,10 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
     if name.startswith("$C_"):  # ISO G65/G66 macro arguments (nck.iso.macros)
         from nck.iso import macros as iso_macros
         iso_macros.write(ctx, name, indices, value)
+        return
+    if name.startswith(("$TC_DPH", "$TC_ISOH_")):  # ISO H numbers (nck.iso.tool_offsets)
+        from nck.iso import tool_offsets as iso_tools
+        iso_tools.write(ctx, name, indices, value)
         return
     if name.startswith("$P_ISOFR_"):  # ISO G68/G51/G51.1/G52 frames (nck.iso.frames)
         from nck.iso import frames as iso_frames

@@ -42,6 +42,7 @@ from nck.iso import cycles, subprograms, turning
 from nck.iso.lexing import Word, split_words
 from nck.iso import dwell as iso_dwell
 from nck.iso import macros as iso_macros
+from nck.iso import tool_offsets as iso_tools
 from nck.iso import frames as iso_frames
 
 LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
@@ -245,6 +246,9 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     if any(code in ("G4", "G04") for code in gcodes):
         return [number + iso_dwell.block(addresses, settings, modal.per_rev)]
     if "G10" in gcodes:
+        tool_data = None if modal.turning else iso_tools.g10_blocks(values, modal.absolute)
+        if tool_data is not None:  # ISO M G10 L10–L13: tool offsets by H number
+            return [number + block for block in tool_data]
         return [number + block for block in _g10(values)] or ([number] if number else [])
     if "G92.1" in gcodes:
         return iso_frames.trans_blocks(number, {})
@@ -253,7 +257,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         if not moved:
             return [number] if number else []
         parts = " ".join(f"{a}=$P_EP[{a}]-({_fmt(values[a])})" for a in moved)
-        return [number + "ATRANS " + parts]
+        return [number + "ATRANS " + parts, iso_frames.PRESET]
     if "G52" in gcodes:
         return iso_frames.trans_blocks(number, values)
     if "G28" in gcodes:
@@ -273,6 +277,8 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         tool_digits = settings.tool_digits
         if len(digits) > tool_digits:
             values["T"], values["D"] = int(digits[:tool_digits]), int(digits[tool_digits:])
+    if not modal.turning:  # ISO M: H/D numbers select edges through $TC_DPH
+        iso_tools.address_offsets(gcodes, values)
     for code in gcodes:
         if code.startswith("G5") and code[1:].isdigit() and int(code[1:]) > 500:
             siemens_g.append(code)
@@ -337,6 +343,9 @@ def _plain_block(number: str, siemens_g: list[str], values: dict[str, float],
     for letter in ("F", "S", "T", "D"):
         if letter in values:
             value = values[letter]
+            if isinstance(value, str):  # D=<edge lookup> (nck.iso.tool_offsets)
+                parts.append(f"{letter}{value}")
+                continue
             parts.append(f"{letter}{_fmt(value) if letter == 'F' else int(value)}")
     for word in others:
         parts.append(f"M{int(word.value)}")
