@@ -92,6 +92,7 @@ def roughing_passes(profile: Sequence[Element], start: tuple[float, float], dept
         raise NcAlarmError(ALARM_NO_INFEED, "U")
     a0, b0 = start
     sign = 1.0 if first[1] > b0 else -1.0
+    along = profile[-1].end[0] - profile[0].start[0]  # the contour's direction along a
     passes: list[RoughingPass] = []
     for k in range(1, MAX_PASSES):
         level = b0 + sign * k * depth
@@ -100,8 +101,8 @@ def roughing_passes(profile: Sequence[Element], start: tuple[float, float], dept
         end = crossing(profile, level)
         if end is None:  # beyond the contour on the start side: cut to the contour's end
             end = profile[-1].end[0]
-        if abs(end - a0) > EPS:
-            passes.append(RoughingPass(level, end))
+        if (end - a0) * along > EPS or (abs(along) <= EPS and abs(end - a0) > EPS):
+            passes.append(RoughingPass(level, end))  # (a cut backward from A cuts nothing)
     return passes
 
 
