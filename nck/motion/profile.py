@@ -51,6 +51,15 @@ class Profile:
         acc = a + j * dt
         return np.minimum(s, self.length), vel, acc
 
+    def distances(self, t: np.ndarray) -> np.ndarray:
+        """Distance only at times ``t`` (the interpolator's hot path; same formula as :meth:`sample`)."""
+        t = np.minimum(np.maximum(t, 0.0), self.duration_s)
+        idx = np.searchsorted(self.t0, t, side="right") - 1
+        np.maximum(idx, 0, out=idx)
+        dt = t - self.t0[idx]
+        s = self.s0[idx] + self.v0[idx] * dt + self.a0[idx] * dt * dt / 2.0 + self.j[idx] * dt**3 / 6.0
+        return np.minimum(s, self.length)
+
     def state_at(self, t: float) -> tuple[float, float, float]:
         """Distance, velocity and acceleration at one instant."""
         s, v, a = self.sample(np.array([t]))

@@ -554,11 +554,10 @@ class PlannedMotion:
                 continue
             run = self.run
             room = n - k
-            taus = run.tau + T * np.arange(1, room + 1)
-            m = int(np.searchsorted(taus, run.profile.duration_s + 1e-12, side="right"))
+            m = _samples_within(run.tau, T, run.profile.duration_s + 1e-12, room)
             if m:
-                s = run.profile.sample(taus[:m])[0]
-                rows[k:k + m] = run.positions(s)
+                taus = run.tau + T * np.arange(1, m + 1)
+                rows[k:k + m] = run.positions(run.profile.distances(taus))
                 run.tau = float(taus[m - 1])
                 self.cmd = rows[k + m - 1].copy()
                 k += m
@@ -680,6 +679,21 @@ class PlannedMotion:
         self.wait_cycles = 0
         self.exact_wait = None
         self.jog.runs.clear()
+
+
+def _samples_within(tau: float, T: float, end: float, room: int) -> int:
+    """How many of ``tau + T*1``, ``tau + T*2``, … ``tau + T*room`` are ≤ ``end``.
+
+    The same count as a search over those sample times, without building them.
+    """
+    if room <= 0 or tau + T > end:
+        return 0
+    m = min(room, max(1, int((end - tau) / T)))
+    while m < room and tau + T * (m + 1) <= end:
+        m += 1
+    while m > 1 and tau + T * m > end:
+        m -= 1
+    return m
 
 
 def planned_motion_factory(machine: MachineConfig) -> PlannedMotion:
