@@ -22,8 +22,12 @@ run time:
   (mask bits 1/2/4 I/J/K, 8 P); ``$P_ISOFR_SCALEOFF=0`` — G50;
 * ``$P_ISOFR_MIRROR[axis]=position`` — G51.1; ``$P_ISOFR_MIRROROFF[axis]=0``
   (no index: every axis) — G50.1;
-* ``$P_ISOFR_TRANS[x, y, z]=0`` — G52 / G92.1: replaces the translation of the
-  programmable frame (like ``TRANS``) but keeps the ISO rotation, scale and mirror.
+* ``$P_ISOFR_TRANS[mask, x, y, z]=0`` — G52: replaces the coarse translation of the
+  programmed axes (mask bits 1/2/4), keeps the G92 preset (booked as fine translation by
+  ``ATRANS``) and the ISO rotation, scale and mirror; ``$P_ISOFR_TRANSOFF=0`` — G92.1:
+  clears G52 and G92;
+* ``$P_ISOFR_SYNC=0`` / ``$P_ISOFR_PRESET=0`` — after an offset change with SD 42440 = 0,
+  and after G92 always: the programmed position becomes the actual one.
 
 Rules (ISO dialects manual §2.2.11–2.2.12): 2D G68 rotates about the applicate
 of the active plane; a missing pivot coordinate is the current position, R
@@ -187,11 +191,16 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     mm = path.units(modal).position_mm
     state = _state(geo)
     trans, fine = _base(geo, state)
-    if op == "TRANS":
-        trans = {axis: float(v) * mm for axis, v in zip(GEO, args) if float(v)}
-        fine = {}
-    elif op == "SYNC":
-        _sync(interp, geo)
+    if op == "TRANS":  # G52: the programmed axes; G92 (fine) and other axes stay
+        if len(args) != 4:
+            raise NcAlarmError(17020, name)
+        for i, axis in enumerate(GEO):
+            if int(args[0]) & (1 << i):
+                trans[axis] = float(args[1 + i]) * mm
+    elif op == "TRANSOFF":  # G92.1: G52 and G92 go
+        trans, fine = {}, {}
+    elif op in ("SYNC", "PRESET"):
+        _sync(interp, geo, always=op == "PRESET")
         return
     elif op == "ROT":
         state = _rotate(interp, geo, state, args, number, mm)
@@ -217,14 +226,15 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     _install(interp, geo, state, trans, fine)
 
 
-def _sync(interp: Any, geo: Any) -> None:
+def _sync(interp: Any, geo: Any, always: bool = False) -> None:
     """SD 42440 = 0: after a zero-offset change the programmed position is the actual one.
 
     An incremental move then starts from where the tool is, seen in the new
     system, so the offset change is not travelled (with SD 42440 = 1, the
     default, the Siemens rule applies: the programmed WCS point is kept).
+    ``always``: after G92 the axes it does not name also read their actual position.
     """
-    if bool(interp.data.setting_data.get("SD42440", True)):
+    if not always and bool(interp.data.setting_data.get("SD42440", True)):
         return
     path, modal = interp.builder.path, interp.modal
     old_frames, old_wcs = geo.frames, dict(geo.wcs_mm)
@@ -353,6 +363,8 @@ class FrameBlocks:
 
 SYNC = f"{PREFIX}SYNC=0"
 """After a zero-offset change: SD 42440 = 0 takes the actual position as the programmed one."""
+PRESET = f"{PREFIX}PRESET=0"
+"""After G92: the programmed position of every axis is the actual one (regardless of SD 42440)."""
 _OFFSET_SELECTIONS = {"G54", "G55", "G56", "G57", "G58", "G59", "G54.1"}
 _ALONE_G68 = {"G68", "G90", "G91", "G17", "G18", "G19"}
 _ALONE_MIRROR = {"G51.1", "G50.1", "G90", "G91"}
@@ -443,9 +455,12 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
 
 
 def trans_blocks(number: str, values: dict[str, float]) -> list[str]:
-    """G52 (``values`` = its offsets) or G92.1 (empty): ``$P_ISOFR_TRANS``, then :data:`SYNC`."""
+    """G52 (``values`` = its offsets) or G92.1 (no axis values), then :data:`SYNC`."""
+    mask = sum(1 << i for i, axis in enumerate(GEO) if axis in values)
+    if not mask:
+        return [f"{number}{PREFIX}TRANSOFF=0", SYNC]
     offsets = ", ".join(_fmt(values.get(axis, 0.0)) for axis in GEO)
-    return [f"{number}{PREFIX}TRANS[{offsets}]=0", SYNC]
+    return [f"{number}{PREFIX}TRANS[{mask}, {offsets}]=0", SYNC]
 
 
 def polar_words(words: list[Any], values: dict[str, float], siemens_g: list[str],
