@@ -53,7 +53,9 @@ ALARM_BLOCK_NOT_FOUND = 14080  # jump destination (contour block P/Q) not found
 START_BLOCK = "G0 G291 G18 G95 DIAMON"
 """Reset motion, plane G18, feed per revolution and diameter programming of an ISO T main program."""
 
-_SYSTEM_A = {"G90": "G77", "G92": "G78", "G94": "G79", "G50": "G92", "G98": "G94", "G99": "G95"}
+_SYSTEM_A = {"G90": "G77", "G92": "G78", "G94": "G79", "G50": "G92", "G98": "G94", "G99": "G95",
+             "G50.3": "G92.1"}
+_NOT_IN_SYSTEM_B = {"G50", "G51"}  # ISO M scaling; in ISO T only system A knows G50 (preset)
 _GROUP_1 = {"G00", "G01", "G02", "G03", "G0", "G1", "G2", "G3"}
 _THREAD = {"G32", "G33"}
 _CYCLES = {f"G{n}" for n in range(70, 77)}
@@ -157,14 +159,21 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     """Siemens blocks of one ISO T block; ``common`` is the shared ISO translation."""
     lathe: LatheState = modal.lathe
     if lathe.system_a:
-        words = [Word("G", _SYSTEM_A[_g(w)][1:], float(_SYSTEM_A[_g(w)][1:]), False)
+        words = [Word("G", _SYSTEM_A[_g(w)][1:], float(_SYSTEM_A[_g(w)][1:]), "." in _SYSTEM_A[_g(w)])
                  if w.letter == "G" and _g(w) in _SYSTEM_A else w for w in words]
+    else:
+        for word in words:
+            if word.letter == "G" and _g(word) in _NOT_IN_SYSTEM_B:
+                raise NcAlarmError(12470, _g(word))
     number = [w for w in words if w.letter == "N"]
     body = [w for w in words if w.letter != "N"]
     codes = [_g(w) for w in body if w.letter == "G"]
     address = {w.letter: w for w in body if w.letter not in ("G", "M")}
     if len(address) != len([w for w in body if w.letter not in ("G", "M")]):
         raise NcAlarmError(12000, "address")
+    tool = address.get("T")
+    if tool is not None and (tool.has_point or tool.value < 0):
+        raise NcAlarmError(12080, f"T{tool.text}")  # T<tool><offset> is a plain integer
     from nck.iso.translate import _value
 
     def value(word: Word) -> float:
@@ -220,12 +229,14 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         if start_angle is not None:  # Q: start angle in 0.001 degrees (an integer)
             suffix = f" SF={_fmt(start_angle.value / 1000.0)}"
         keep = _thread_words(keep, lathe, settings, value)
+    relative = modal.absolute and lathe.position is None and any(w.letter in "UW" for w in keep)
     keep = _incremental_words(keep, modal, absolute_before, value)
-    relative = modal.absolute and any(w.letter == "G" and w.text == "91" for w in keep)
-    blocks = common(keep, modal, settings) if keep else []
-    if relative:  # U/W with an unknown position: one block in G91, then G90 again
+    if relative:  # U/W with an unknown position: the block in G91, then G90 again
+        modal.absolute = False
+        blocks = ["G91"] + (common(keep, modal, settings) if keep else []) + ["G90"]
         modal.absolute = True
-        blocks.append("G90")
+    else:
+        blocks = common(keep, modal, settings) if keep else []
     if prefix or suffix:
         head = " ".join(prefix)
         blocks = [f"{head} {blocks[0]}{suffix}".strip()] + blocks[1:] if blocks else [head + suffix]
@@ -261,9 +272,8 @@ def _incremental_words(words: list[Word], modal: Any, absolute_before: bool,
     if lathe.position is None:
         if any(w.letter in "XZ" for w in words):
             raise NcAlarmError(ALARM_ABS_AND_INC, "U/W")
-        words = [Word(pairs[w.letter], w.text, w.value, w.has_point) if w.letter in "UW" else w
-                 for w in words]
-        return [Word("G", "91", 91.0, False)] + words
+        return [Word(pairs[w.letter], w.text, w.value, w.has_point) if w.letter in "UW" else w
+                for w in words]
     z, x = lathe.position
     out = []
     for w in words:

@@ -263,3 +263,22 @@ def test_g96_is_shown_in_iso_t_group_2_with_the_feed_type_in_group_5():
     views = [iso_gcodes(m.gcodes, "iso-t") for m in result.segments]
     assert (views[1][2], views[1][5]) == ("G96", "G95")
     assert (views[2][2], views[2][5]) == ("G97", "G94")
+
+
+def test_g28_u0_w0_and_incremental_moves_after_it():
+    result = run_lathe("G00 X20. Z30.\nG28 U0. W0.\nG00 U10. W-5.\nG00 X40. Z10.\nG28 U10. W0\nM30\n")
+    assert result.status == "ended", result.alarms
+    assert points(result) == [("G0", 20.0, 30.0), ("G0", 20.0, 30.0), ("G0", 0.0, 0.0),
+                              ("G0", 10.0, -5.0), ("G0", 40.0, 10.0), ("G0", 50.0, 10.0),
+                              ("G0", 0.0, 0.0)]
+
+
+def test_g50_is_not_an_iso_t_code_in_system_b():
+    result = run_lathe("G50 S2000\nM30\n")
+    assert result.alarms[0].number == 12470
+    assert translate("G50.3 P0", "iso-t", _system_a())[0].blocks == translate("G92.1", "iso-t")[0].blocks
+
+
+def _system_a():
+    from nck.iso.translate import IsoSettings
+    return IsoSettings(gcode_system=1)

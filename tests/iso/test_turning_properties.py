@@ -70,3 +70,30 @@ def test_g71_passes_stay_outside_the_shifted_contour(r0, steps, depth, margin, d
         assert ends_on_contour or abs(z_end - contour[-1][0]) < 1e-6
     last = cycle[-1].end_wcs
     assert (round(last["X"], 6), round(last["Z"], 6)) == (round(2 * top, 6), 2.0)
+
+
+WORDS = st.sampled_from(["G00", "G01", "G02", "G03", "G32", "G70", "G71", "G72", "G73", "G74",
+                         "G75", "G76", "G77", "G78", "G79", "G90", "G91", "G92", "G96", "G97",
+                         "G10", "G28", "M03", "M98"])
+ADDRESSES = st.sampled_from(list("XZUWPQRFSTIK"))
+NUMBERS = st.sampled_from(["0", "1", "10", "-5.", "2.5", "100", "0.001", "012060", "-0.4"])
+
+
+@st.composite
+def _programs(draw):
+    lines = []
+    for number in range(1, draw(st.integers(1, 8)) + 1):
+        words = [f"N{number * 10}"] + [draw(WORDS) for _ in range(draw(st.integers(0, 2)))]
+        words += [draw(ADDRESSES) + draw(NUMBERS) for _ in range(draw(st.integers(0, 4)))]
+        lines.append(" ".join(words))
+    return "G00 X50. Z5.\n" + "\n".join(lines) + "\nM30\n"
+
+
+@settings(max_examples=60, deadline=None)
+@given(text=_programs(), system=st.sampled_from([0, 1]))
+def test_random_iso_t_programs_raise_only_nc_alarms(text, system):
+    """No traceback: every problem in a random ISO T program is an NC alarm of its line."""
+    from nck.errors import NcAlarmError
+    result = run_lathe(text, {"MD10881": system})
+    assert result.status in ("ended", "alarm", "timeout")
+    assert all(isinstance(alarm, NcAlarmError) for alarm in result.alarms)
