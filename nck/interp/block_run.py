@@ -513,7 +513,7 @@ class BlockRun:
         name, text = found
         program = _program_cache(interp, name, text)
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
-        macros.bind_call(self.frame, frame, call)  # ISO G65/G66 arguments ($C_…)
+        macros.bind_call(self.frame, frame, call, interp.modal)  # ISO: $C_… arguments, PROC → G290
         if program.proc is not None and program.proc.save:
             frame.saved_gcodes = dict(interp.modal.gcodes)  # PROC … SAVE
             frame.saved_pframe = interp.builder.path.state(interp.modal).frames.programmable

@@ -421,6 +421,9 @@ class Interpreter:
         if frame.saved_pframe is not None:  # SAVE also restores the programmable frame
             geo = self.builder.path.state(self._state.modal)
             geo.frames = geo.frames.with_programmable(frame.saved_pframe)
+        if frame.iso_macro is not None:  # ISO: back to G291 after a Siemens-mode (PROC) program
+            from nck.iso.macros import after_return
+            after_return(self._state.modal, frame)
 
     # ---------------------------------------------------------------- data writes
     def write_r(self, index: Any, value: Any) -> None:

@@ -224,6 +224,7 @@ class MacroState:
     modal_args: dict[tuple[str, tuple], Any] | None = None
     modal_call: Any = None
     modal_passes: int = 1
+    back_to_iso: bool = False  # a PROC program called from ISO mode: G291 again on return
 
 
 def _state(frame: Frame) -> MacroState:
@@ -279,15 +280,31 @@ def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     frame.iso_macro = replace(state, pending=pending)
 
 
-def bind_call(caller: Frame, callee: Frame, call: Any) -> None:
-    """Give the called level its ``$C_…`` arguments (G65 pending ones or the G66 modal set)."""
+def bind_call(caller: Frame, callee: Frame, call: Any, modal: Any = None) -> None:
+    """Give the called level its ``$C_…`` arguments (G65 pending ones or the G66 modal set).
+
+    A program whose first line is ``PROC`` called from ISO mode runs in
+    Siemens mode: G290 until it returns (:func:`after_return`).
+    """
+    if modal is not None and callee.program.proc is not None \
+            and modal.gcodes.get(ISO_MODE_GROUP) == "G291":
+        modal.gcodes[ISO_MODE_GROUP] = "G290"
+        callee.iso_macro = MacroState(back_to_iso=True)
     state = getattr(caller, "iso_macro", None)
     if state is None:
         return
+    back = bool(callee.iso_macro and callee.iso_macro.back_to_iso)
     if call is not None and call is state.modal_call:
-        callee.iso_macro = MacroState(args=dict(state.modal_args or {}))
+        callee.iso_macro = MacroState(args=dict(state.modal_args or {}), back_to_iso=back)
         callee.passes_left = state.modal_passes - 1
         return
     if state.pending is not None:
-        callee.iso_macro = MacroState(args=state.pending)
+        callee.iso_macro = MacroState(args=state.pending, back_to_iso=back)
         caller.iso_macro = replace(state, pending=None)
+
+
+def after_return(modal: Any, frame: Frame) -> None:
+    """Back to ISO mode after a Siemens-mode (PROC) program called from ISO mode."""
+    state = getattr(frame, "iso_macro", None)
+    if state is not None and state.back_to_iso:
+        modal.gcodes[ISO_MODE_GROUP] = "G291"

@@ -144,3 +144,38 @@ def test_translation_of_a_g65_block():
     block = line.blocks[0]
     assert block.startswith("N30 ") and block.endswith('CALL "O0010"')
     assert "$C_F=55" in block and "$C_X=150" in block
+
+
+def _modes_per_block(text: str, programs: dict[str, str]) -> list[tuple[str, str]]:
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    interp = Interpreter(load_machine(None), MemorySource(programs), NcData(), dialect="iso-m")
+    interp.start_text("T.MPF", text)
+    seen = []  # (program of the next block, language mode it runs in)
+    while not interp.finished:
+        seen.append((interp.current_source().file, interp.modal.gcodes.get(47)))
+        interp.step()
+    return seen
+
+
+def test_proc_macro_switches_to_siemens_mode_and_back():
+    proc = "PROC MAC10\nR1=1\nM17\n"
+    seen = _modes_per_block("G65 P10 X1.\nG00 X1.\nM30\n", {"O0010": proc})
+    assert {mode for name, mode in seen if name == "O0010"} == {"G290"}
+    assert seen[-2:] == [("T.MPF", "G291")] * 2  # the blocks after the macro: ISO mode again
+
+
+def test_iso_macro_stays_in_iso_mode_and_c_writes_need_iso_mode():
+    seen = _modes_per_block("G65 P10 X1.\nM30\n", {"O0010": "G00 X1.\nM99\n"})
+    assert {mode for name, mode in seen if name == "O0010"} == {"G291"}
+    # in a Siemens-mode macro $C_… stays read-only (a further G65 needs G291 first)
+    result = run_iso("G65 P10 X1.\nM30\n", {"O0010": "PROC MAC10\n$C_X=3\nM17\n"})
+    assert result.alarms[0].number == 17070
+
+
+def test_m98_of_a_proc_program_also_switches_and_returns_at_end_of_file():
+    seen = _modes_per_block("M98 P21\nG00 X1.\nM30\n", {"O0021": "PROC SUB21\nR2=1\n"})
+    assert {mode for name, mode in seen if name == "O0021"} == {"G290"}
+    assert seen[-2:] == [("T.MPF", "G291")] * 2
