@@ -7,11 +7,15 @@ and in line order; it tracks the modal state that changes how words are read
 (G90/G91, G94/G95, group 1, the active drilling cycle, G290/G291).
 
 Mapping onto the Siemens machinery: G20/G21 → G700/G710, G02/G03 R → CR=,
-G04 X/U/P → G4 F (seconds), G43/G44 H → D (tool length via the edge), G49 → D0,
+G04 X/U/P → G4 F (seconds; G4 S revolutions under G95 with MD 20734 bit 2,
+:mod:`nck.iso.dwell`), G43/G44 H and D → the active tool's edge with that
+``$TC_DPH`` H number, G10 L10–L13 → its offsets (:mod:`nck.iso.tool_offsets`), G49 → D0,
 G52 → TRANS, G92 → ATRANS so the current position reads the programmed value,
 G92.1 → TRANS (clears G52 and G92), G10 L2 Pn → ``$P_UIFR[n]`` (G54…G59),
-G53 stays non-modal machine coordinates, G61 → G60, M98 → subprogram call
-``O<nnnn>`` with a repeat count, M99 → M17. Decimal point (MD 10884/10886):
+G53 stays non-modal machine coordinates, G61 → G60, M98 → ``CALL "O<nnnn>" P<count>``,
+M99 → M17 (main program: restart), M99 P<n> → RET to N<n> of the caller, M30 in an
+ISO subprogram ends the program (:mod:`nck.iso.subprograms`); G65/G66/G67/G05 →
+``$C_…`` arguments + CALL / modal call (:mod:`nck.iso.macros`). Decimal point (MD 10884/10886):
 pocket-calculator notation by default; in standard notation a value without
 a point is counted in increments (IS-B 0.001 mm, IS-C 0.0001 mm).
 
@@ -22,9 +26,12 @@ F → lead K, G70–G76 and G77–G79 (A: G90/G92/G94) as NC-inserted blocks.
 
 Not modelled (yet): a ``/n`` in the middle of a block is resolved at load time
 as if level n were off; SD 42440 = 0 (an offset change is not traversed with
-G91: the Siemens interpreter keeps the programmed WCS point); M30 in an ISO
-subprogram ends only the subprogram; M99 P<n>; G10 L10–L13 tool data; G65/G66
-macros; G68/G51/G16; the cycle group (9) in the G-group
+G91: the Siemens interpreter keeps the programmed WCS point); G68/G51/G16; M98 with
+8-digit program numbers (MD 20734 bit 6); M/G-code macros (MD 10814–10817);
+``$P_ISO_STACK``; G44 applies the length like G43; MD 20380 length modes B/C; a
+G10 offset change acts at once (manual: at the next T/H/D); a PROC macro must be
+named like a Siemens program (``PROC 0010`` is not accepted); groups 8 (G43/G49)
+and 12 (G66/G67) in the G-group display show their reset codes; the cycle group (9) in the G-group
 display always shows G80.
 ISO T not modelled: system C; G34; the G76 chamfer (pull-out) and the G74/G75
 relief at the bottom; contours with pockets (G71/G72 type II); tool nose radius
