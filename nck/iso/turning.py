@@ -165,7 +165,6 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         for word in words:
             if word.letter == "G" and _g(word) in _NOT_IN_SYSTEM_B:
                 raise NcAlarmError(12470, _g(word))
-    number = [w for w in words if w.letter == "N"]
     body = [w for w in words if w.letter != "N"]
     codes = [_g(w) for w in body if w.letter == "G"]
     address = {w.letter: w for w in body if w.letter not in ("G", "M")}
@@ -179,7 +178,6 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     def value(word: Word) -> float:
         return _value(word, settings, modal)
 
-    absolute_before = modal.absolute
     for code in codes:
         if code == "G90":
             modal.absolute = True
@@ -187,7 +185,7 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
             modal.absolute = False
     cycle = next((c for c in codes if c in _CYCLES), None)
     if cycle is not None:
-        return _run_cycle(int(cycle[1:]), address, modal, settings, value, number)
+        return _run_cycle(int(cycle[1:]), address, modal, settings, value)
     if "G10" in codes and "L" not in address:
         return _tool_offset(address, modal, value)
     if "G92" in codes:
@@ -228,9 +226,9 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         start_angle = next((w for w in keep if w.letter == "Q"), None)
         if start_angle is not None:  # Q: start angle in 0.001 degrees (an integer)
             suffix = f" SF={_fmt(start_angle.value / 1000.0)}"
-        keep = _thread_words(keep, lathe, settings, value)
+        keep = _thread_words(keep, lathe, settings)
     relative = modal.absolute and lathe.position is None and any(w.letter in "UW" for w in keep)
-    keep = _incremental_words(keep, modal, absolute_before, value)
+    keep = _incremental_words(keep, modal, value)
     if relative:  # U/W with an unknown position: the block in G91, then G90 again
         modal.absolute = False
         blocks = ["G91"] + (common(keep, modal, settings) if keep else []) + ["G90"]
@@ -240,24 +238,28 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     if prefix or suffix:
         head = " ".join(prefix)
         blocks = [f"{head} {blocks[0]}{suffix}".strip()] + blocks[1:] if blocks else [head + suffix]
-    _track(body, codes, modal, absolute_before, value)
+    _track(body, codes, modal, value)
     return blocks
 
 
-def _thread_words(words: list[Word], lathe: LatheState, settings: Any,
-                  value: Callable[[Word], float]) -> list[Word]:
-    """F → lead (K, or I for a face thread without Z), Q → start angle (taken out)."""
+def _thread_words(words: list[Word], lathe: LatheState, settings: Any) -> list[Word]:
+    """F → lead: K along Z, I for a thread mostly along X (face); Q (start angle) taken out."""
     out = [w for w in words if w.letter not in ("F", "Q")]
     feed = next((w for w in words if w.letter == "F"), None)
     if feed is not None:
         lead = _raw_number(feed, settings, 0.0001)
-        has_z = any(w.letter in "ZW" for w in words)
-        out.append(Word("K" if has_z or not any(w.letter in "XU" for w in words) else "I",
-                        _fmt(lead), lead, True))
+        got = {w.letter: w.value for w in words}
+        along_x = not ("Z" in got or "W" in got) and ("X" in got or "U" in got)
+        if lathe.position is not None and ("Z" in got or "W" in got) and ("X" in got or "U" in got):
+            z, x = lathe.position
+            dz = got["W"] if "W" in got else got["Z"] - z
+            dr = (got["U"] if "U" in got else got["X"] - x) / 2.0
+            along_x = abs(dr) > abs(dz)
+        out.append(Word("I" if along_x else "K", _fmt(lead), lead, True))
     return out
 
 
-def _incremental_words(words: list[Word], modal: Any, absolute_before: bool,
+def _incremental_words(words: list[Word], modal: Any,
                        value: Callable[[Word], float]) -> list[Word]:
     """U/W (incremental X/Z) as X/Z: absolute when the position is known, else a G91 block."""
     if not any(w.letter in "UW" for w in words):
@@ -288,7 +290,7 @@ def _incremental_words(words: list[Word], modal: Any, absolute_before: bool,
     return out
 
 
-def _track(body: list[Word], codes: list[str], modal: Any, absolute_before: bool,
+def _track(body: list[Word], codes: list[str], modal: Any,
            value: Callable[[Word], float]) -> None:
     """Programmed position after a plain block (unknown after G28, M98, G53, G290)."""
     lathe: LatheState = modal.lathe
@@ -345,7 +347,8 @@ def _restore_motion(modal: Any) -> list[str]:
 
 
 def _run_cycle(code: int, address: dict[str, Word], modal: Any, settings: Any,
-               value: Callable[[Word], float], number: list[Word]) -> list[str]:
+               value: Callable[[Word], float]) -> list[str]:
+    """A G70–G76 block: a settings block stores values, a run block expands the cycle."""
     lathe: LatheState = modal.lathe
     stored = lathe.settings.setdefault(code, {})
     feed = value(address["F"]) if "F" in address else None
@@ -434,7 +437,7 @@ def _contour_cycle(code: int, address: dict[str, Word], modal: Any, settings: An
     blocks_words = _contour_words(lathe, first, last)
     za, xa = start
     elements = read_contour(blocks_words, (za, xa / 2.0), modal.absolute, value)
-    approach = _approach_count(blocks_words[0], elements)
+    approach = 1 if elements and any(w.letter in "XZUW" for w in blocks_words[0]) else 0
     profile = elements[approach:]
     approach_end = elements[approach - 1].end if approach else (za, xa / 2.0)
     du = value(address["U"]) if "U" in address else 0.0
@@ -455,11 +458,6 @@ def _contour_cycle(code: int, address: dict[str, Word], modal: Any, settings: An
         saved.cycle = copy.deepcopy(modal.cycle)
         lathe.pending[last] = (label, saved)
     return blocks
-
-
-def _approach_count(first_block: list[Word], elements: list[Any]) -> int:
-    """1 if the first contour block moves (the approach A → A'), else 0."""
-    return 1 if elements and any(w.letter in "XZUW" for w in first_block) else 0
 
 
 def _finishing(address: dict[str, Word], modal: Any, settings: Any) -> list[str]:

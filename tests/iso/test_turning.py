@@ -282,3 +282,12 @@ def test_g50_is_not_an_iso_t_code_in_system_b():
 def _system_a():
     from nck.iso.translate import IsoSettings
     return IsoSettings(gcode_system=1)
+
+
+def test_face_thread_takes_its_lead_along_x():
+    assert translate("G00 X60. Z0\nG32 X20. F2.", "iso-t")[1].blocks == ["G33 X20 I2"]
+    assert translate("G00 X60. Z0\nG32 X20. Z-1. F2.", "iso-t")[1].blocks == ["G33 X20 Z-1 I2"]
+    assert translate("G00 X20. Z0\nG32 X22. Z-30. F2.", "iso-t")[1].blocks == ["G33 X22 Z-30 K2"]
+    result = run_lathe("G00 X60. Z0\nG32 X20. F2.\nM30\n")
+    assert result.status == "ended", result.alarms
+    assert result.segments[1].kind == "G33" and result.segments[1].lead_mm == 2.0
