@@ -73,7 +73,7 @@ def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[st
     gcodes = _names(words)
     calls = [c for c in gcodes if c in ("G65", "G66") or _is_g05(c)]
     if not calls and "G67" not in gcodes:
-        return None
+        return _m98_with_words(words, modal, settings)
     if len(calls) + sum(1 for w in words if w.letter == "M" and w.value == 98) > 1:
         raise NcAlarmError(ALARM_TOO_MANY_CALLS)  # one call, macro or substitution per block
     number = ""
@@ -192,6 +192,26 @@ def _g65_g66(words: list[Word], call: str, modal: Any, settings: IsoSettings, nu
         tail = f' CALL "{name}"' + (f" P{passes}" if passes > 1 else "")
         return blocks + [f"{number}{writes}{tail}"]
     return blocks + [f'{number}{writes} {MCALL_PASSES}={passes} {MCALL_NAME}="{name}"']
+
+
+def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings) -> list[str] | None:
+    """``M98 P… X10. A1.``: the other words run first, then the call; they also reach
+    the subprogram as ``$C_…`` (None: a plain M98 block or no M98 at all)."""
+    m98 = [w for w in words if w.letter == "M" and w.value == 98]
+    if not m98:
+        return None
+    rest = [w for w in words if w.letter not in ("P", "L") and w is not m98[0]]
+    if not any(w.letter != "N" for w in rest):
+        return None
+    from nck.iso.subprograms import call_block
+    from nck.iso.translate import _translate_words
+
+    number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
+    blocks = _translate_words(rest, modal, settings)
+    arguments = [w for w in rest if w.letter not in ("N", "M", "G")]
+    writes = " ".join(argument_writes(arguments, not modal.absolute)) + " " if arguments else ""
+    call = call_block({w.letter: w.value for w in words if w.letter in ("P", "L")})
+    return blocks + [f"{number}{writes}{call}"]
 
 
 def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> list[str]:

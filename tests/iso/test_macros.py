@@ -179,3 +179,39 @@ def test_m98_of_a_proc_program_also_switches_and_returns_at_end_of_file():
     seen = _modes_per_block("M98 P21\nG00 X1.\nM30\n", {"O0021": "PROC SUB21\nR2=1\n"})
     assert {mode for name, mode in seen if name == "O0021"} == {"G290"}
     assert seen[-2:] == [("T.MPF", "G291")] * 2
+
+
+# ---------------------------------------------------------------- the manual's examples, rebuilt
+MAIN_M10 = ("N10 M3 S1000 F1000\nN20 X100. Y50. Z33.\nN30 G65 P10 F55 X150. Y100. S2000\n"
+            "N40 X50.\nN200 M30\n")
+
+
+def test_manual_macro_in_siemens_mode():
+    macro = ("PROC MAC10\nN10 DEF REAL X_AXIS, Y_AXIS, SPEED, FEEDRATE\n"
+             "N15 X_AXIS=$C_X Y_AXIS=$C_Y SPEED=$C_S FEEDRATE=$C_F\n"
+             "N20 G01 F=FEEDRATE G95 S=SPEED\nN25 X=X_AXIS Y=Y_AXIS\nN80 M17\n")
+    result = run_iso(MAIN_M10, {"O0010": macro})
+    assert result.status == "ended", result.alarms
+    assert ends(result) == [(2, {"X": 100.0, "Y": 50.0, "Z": 33.0}),
+                            (5, {"X": 150.0, "Y": 100.0, "Z": 33.0}),
+                            (4, {"X": 50.0, "Y": 100.0, "Z": 33.0})]
+    feed_move = result.segments[1]
+    assert feed_move.kind == "G1" and feed_move.source.file == "O0010"
+
+
+def test_manual_macro_in_iso_mode_with_a_siemens_section():
+    macro = ("G290\nN15 R10=$C_X R11=$C_Y R12=$C_S\nN20 G01 F=$C_F S=$C_S\n"
+             "N10 G1 X=$C_X Y=$C_Y\nG291\nN15 M3 G54\nN80 M99\n")
+    result = run_iso(MAIN_M10, {"O0010": macro})
+    assert result.status == "ended", result.alarms
+    assert [point for _, point in ends(result)][1:] == [{"X": 150.0, "Y": 100.0, "Z": 33.0},
+                                                        {"X": 50.0, "Y": 100.0, "Z": 33.0}]
+    assert [result.interpreter.r(n) for n in (10, 11, 12)] == [150.0, 100.0, 2000.0]
+
+
+def test_manual_typ_prog_of_m98_arguments():
+    sub = "G290\nR1=$C_TYP_PROG R2=$C_X R3=$C_Y\nG291\nM99\n"
+    result = run_iso("M98 P21 Y100. X100\nM30\n", {"O0021": sub})
+    assert result.status == "ended", result.alarms
+    assert [result.interpreter.r(n) for n in (1, 2, 3)] == [float(1 << 24), 100.0, 100.0]
+    assert ends(result) == [(1, {"X": 100.0, "Y": 100.0, "Z": 0.0})]  # the words move first

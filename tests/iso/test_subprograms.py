@@ -106,3 +106,20 @@ def test_m98_m99_not_output_to_plc():
     values = {(c.address, int(c.value)) for c in aux}
     assert ("M", 8) in values
     assert not {("M", 98), ("M", 99)} & values
+
+
+def test_manual_repeat_count_examples():
+    """N20 M98 P20123 twice, N40 M98 P55 L4 four times, N60 M98 P30077 L2 twice."""
+    main = "N20 M98 P20123\nN40 M98 P55 L4\nN60 M98 P30077 L2\nM30\n"
+    subs = {f"O{n:04d}": f"G91 G01 X{n}. F1000\nM99\n" for n in (123, 55, 77)}
+    result = run_iso(main, subs)
+    assert result.status == "ended", result.alarms
+    steps = [(m.source.file, round(m.end_mcs["X"] - m.start_mcs["X"], 3)) for m in result.segments]
+    assert steps == [("O0123", 123.0)] * 2 + [("O0055", 55.0)] * 4 + [("O0077", 77.0)] * 2
+
+
+def test_m98_block_words_move_before_the_call():
+    result = run_iso("G00 X0\nM98 P21 X10.\nM30\n", {"O0021": "G00 Y5.\nM99\n"})
+    assert result.status == "ended", result.alarms
+    assert [point for _, point in ends(result)][1:] == [{"X": 10.0, "Y": 0.0, "Z": 0.0},
+                                                        {"X": 10.0, "Y": 5.0, "Z": 0.0}]
