@@ -20,6 +20,7 @@ test: $(STAMP)
 
 fuzz: $(STAMP)
 	$(BIN)/python -m pytest -q -m fuzz -p no:cacheprovider
+	ISO_RS274_PROGRAMS=600 $(BIN)/python -m pytest -q -n 2 -p no:cacheprovider tests/iso/test_rs274_diff.py
 
 bench: $(STAMP)
 	$(BIN)/python -m bench

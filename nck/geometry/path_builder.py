@@ -102,11 +102,11 @@ class PathBuilder:
         offset = self.data.settable_frames.get(code)
         if offset is None:
             return Frame(geometry_axes=self.geo_axes)
-        return frame_from_work_offset(offset, self.geo_axes, self.units(modal).data_mm)
+        return frame_from_work_offset(offset, self.geo_axes, self.units(modal).basic_mm)
 
     def _base_frame(self, modal: Any) -> Frame:
         offset: WorkOffset = self.data.base_frame
-        return frame_from_work_offset(offset, self.geo_axes, self.units(modal).data_mm)
+        return frame_from_work_offset(offset, self.geo_axes, self.units(modal).basic_mm)
 
     def units(self, modal: Any) -> UnitSystem:
         """The active inch/metric code (G group 13) against the basic system."""

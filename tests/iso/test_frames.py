@@ -262,3 +262,10 @@ def test_g58_g59_select_settable_offsets_5_and_6():
     text = "G10 L2 P5 X7.\nG10 L2 P6 X9.\nG58\nG0 X0\nG59\nX0\nM30\n"
     result = run_iso(text)
     assert [p["X"] for _line, p in ends(result, "mcs")] == [7.0, 9.0]
+
+
+def test_inch_program_selects_offsets_stored_in_mm():
+    """A settable offset is kept in the basic system (mm); G20 must not convert it twice."""
+    text = "G20\nG10 L2 P2 X1.\nG55\nG0 X0\nM30\n"
+    result = run_iso(text)
+    assert ends(result, "mcs")[0][1]["X"] == 25.4
