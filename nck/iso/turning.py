@@ -206,6 +206,8 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     elif any(c in _GROUP_1 for c in codes):
         lathe.thread = False
     speed_codes = {"G96", "G97"} & set(codes)
+    if "G96" in speed_codes and "P" in address:
+        raise NcAlarmError(12080, "G96 P")  # only the transverse axis of MD 20100 (P0)
     if speed_codes or (lathe.css and {"G94", "G95"} & set(codes)):
         # Siemens group 15 holds both: G96/G961 (constant cutting speed), G97/G971
         lathe.css = "G96" in speed_codes or (lathe.css and "G97" not in speed_codes)
@@ -227,8 +229,11 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         if start_angle is not None:  # Q: start angle in 0.001 degrees (an integer)
             suffix = f" SF={_fmt(start_angle.value / 1000.0)}"
         keep = _thread_words(keep, lathe, settings)
-    relative = modal.absolute and lathe.position is None and any(w.letter in "UW" for w in keep)
-    keep = _incremental_words(keep, modal, value)
+    dwell = bool({"G04", "G4"} & set(codes))  # G04 U is a time, not an axis
+    relative = (not dwell and modal.absolute and lathe.position is None
+                and any(w.letter in "UW" for w in keep))
+    if not dwell:
+        keep = _incremental_words(keep, modal, value)
     if relative:  # U/W with an unknown position: the block in G91, then G90 again
         modal.absolute = False
         blocks = ["G91"] + (common(keep, modal, settings) if keep else []) + ["G90"]

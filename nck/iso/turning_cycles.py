@@ -118,6 +118,7 @@ def stock_removal(profile: Sequence[Element], start_zx: tuple[float, float], dep
         raise NcAlarmError(ALARM_BAD_VALUE, "P")
     moved = [e.moved(dw, du / 2.0) for e in profile]
     cycle = [e.swapped() for e in moved] if facing else moved
+    _check_monotonic(cycle)
     za, xa = start_zx
     a0, b0 = _point(facing, za, xa / 2.0)  # (z, r) -> cycle coords is the same swap
     first = cycle[0].start
@@ -133,6 +134,14 @@ def stock_removal(profile: Sequence[Element], start_zx: tuple[float, float], dep
     blocks.extend(fmt_elements(moved, _feed(feed)))
     blocks.extend(_back_to(start_zx, facing))
     return blocks
+
+
+def _check_monotonic(cycle: Sequence[Element]) -> None:
+    """G71/G72 (type I) need a contour that never turns back along the cut axis (61812)."""
+    points = [cycle[0].start[0]] + [e.end[0] for e in cycle]
+    steps = [b - a for a, b in zip(points, points[1:]) if abs(b - a) > EPS]
+    if steps and not (all(s > 0 for s in steps) or all(s < 0 for s in steps)):
+        raise NcAlarmError(ALARM_BAD_VALUE, "Q")
 
 
 def _back_to(start_zx: tuple[float, float], facing: bool) -> list[str]:

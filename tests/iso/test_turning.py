@@ -291,3 +291,13 @@ def test_face_thread_takes_its_lead_along_x():
     result = run_lathe("G00 X60. Z0\nG32 X20. F2.\nM30\n")
     assert result.status == "ended", result.alarms
     assert result.segments[1].kind == "G33" and result.segments[1].lead_mm == 2.0
+
+
+def test_g04_u_is_a_dwell_time_and_g96_p_raises():
+    assert translate("G00 X20. Z5.\nG04 U1.5", "iso-t")[1].blocks == ["G4 F1.5"]
+    assert run_lathe("G00 X20. Z5.\nG96 P1 S100\nM30\n").alarms[0].number == 12080
+
+
+def test_g71_contour_turning_back_along_z_raises():
+    text = ("G00 X50. Z2.\nG71 P10 Q30 F0.2\nN10 G00 X20.\nN20 G01 Z-20.\nN30 X30. Z-10.\nM30\n")
+    assert run_lathe(text).alarms[0].number == 61812
