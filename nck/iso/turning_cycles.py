@@ -42,6 +42,7 @@ from nck.iso.turning_contour import EPS, Element, crossing, fmt_elements
 ALARM_PITCH = 61001  # thread lead (pitch) wrong
 ALARM_NO_INFEED = 61610  # no infeed depth programmed
 ALARM_BAD_VALUE = 61812  # value(s) incorrectly specified in the external cycle call
+ALARM_START_POINT = 61607  # starting point not outside the machining area
 MAX_PASSES = 10_000
 
 
@@ -123,6 +124,10 @@ def stock_removal(profile: Sequence[Element], start_zx: tuple[float, float], dep
     a0, b0 = _point(facing, za, xa / 2.0)  # (z, r) -> cycle coords is the same swap
     first = cycle[0].start
     infeed_sign = 1.0 if first[1] > b0 else -1.0
+    levels = [p[1] for e in ([x.swapped() for x in profile] if facing else profile)
+              for p in (e.start, e.end)]
+    if (b0 - max(levels) if infeed_sign < 0 else min(levels) - b0) < -EPS:
+        raise NcAlarmError(ALARM_START_POINT, "A")  # the start point lies inside the contour
     blocks: list[str] = []
     for step in roughing_passes(cycle, (a0, b0), depth, first):
         cut_sign = 1.0 if step.cut_end > a0 else -1.0

@@ -301,3 +301,9 @@ def test_g04_u_is_a_dwell_time_and_g96_p_raises():
 def test_g71_contour_turning_back_along_z_raises():
     text = ("G00 X50. Z2.\nG71 P10 Q30 F0.2\nN10 G00 X20.\nN20 G01 Z-20.\nN30 X30. Z-10.\nM30\n")
     assert run_lathe(text).alarms[0].number == 61812
+
+
+def test_g71_start_point_inside_the_contour_raises():
+    text = ("G00 X30. Z2.\nG71 P10 Q30 F0.2\nN10 G00 X20.\nN20 G01 Z-20.\nN30 X52. Z-30.\nM30\n")
+    assert run_lathe(text).alarms[0].number == 61607
+    assert run_lathe(text.replace("X30. Z2.", "X52. Z2.")).status == "ended"
