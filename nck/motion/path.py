@@ -109,10 +109,10 @@ class Segment:
 def line(start: np.ndarray, end: np.ndarray, linear_mask: np.ndarray) -> Segment:
     """A straight segment; its length counts the linear axes (rotary-only moves in degrees)."""
     delta = end - start
-    lin = delta[linear_mask]
-    length = math.sqrt(float(lin @ lin))
+    # math.hypot scales internally: no overflow for huge coordinates (1EX300).
+    length = math.hypot(*delta[linear_mask].tolist())
     if length <= MIN_LENGTH_MM:
-        length = math.sqrt(float(delta @ delta))
+        length = math.hypot(*delta.tolist())
     return Segment(start=start.copy(), end=end.copy(), length=length)
 
 
@@ -148,7 +148,7 @@ def arc(
     other_mask = linear_mask.copy()
     other_mask[i1] = False
     other_mask[i2] = False
-    length = math.sqrt(planar * planar + float(np.sum(other[other_mask] ** 2)))
+    length = math.hypot(planar, *other[other_mask].tolist())
     if r0 <= MIN_LENGTH_MM or length <= MIN_LENGTH_MM:
         return line(start, end, linear_mask)
     return Segment(

@@ -81,7 +81,10 @@ class _Builder:
             return
         self.rows.append((self.t, self.s, self.v, self.a, jerk))
         d = duration
-        self.s += self.v * d + self.a * d * d / 2.0 + jerk * d**3 / 6.0
+        if jerk == 0.0 and self.a == 0.0:
+            self.s += self.v * d  # cruise (no powers of d: huge distances stay finite)
+        else:
+            self.s += self.v * d + self.a * d * d / 2.0 + jerk * d**3 / 6.0
         self.v += self.a * d + jerk * d * d / 2.0
         self.a += jerk * d
         self.t += d

@@ -2,9 +2,10 @@
 
 The speed follows its setpoint with the acceleration of MD35200; the setpoint
 is clamped to the gear-stage limits (MD35130/MD35140) and the chuck limit
-MD35100. M19/SPOS stop the spindle and orient it (the orientation itself is
-not interpolated). Everything is closed-form per call, independent of the
-number of IPO cycles.
+MD35100 without an alarm: like the interface signals DB31 DBX83.1/83.2, the
+state says when the setpoint was limited or raised. M19/SPOS stop the spindle
+and orient it (the orientation itself is not interpolated). Everything is
+closed-form per call, independent of the number of IPO cycles.
 """
 
 from __future__ import annotations
@@ -30,6 +31,8 @@ class SpindleState:
     torque_nm: float = 0.0
     temperature_c: float = AMBIENT_C
     jog_direction: int = 0
+    setpoint_limited: bool = False  # DB31 DBX83.1: the requested speed was clamped to a maximum
+    setpoint_increased: bool = False  # DB31 DBX83.2: the requested speed was raised to a minimum
 
 
 class Spindle:
@@ -44,7 +47,8 @@ class Spindle:
         """M3/M4/M5/M19 and S: set the speed setpoint (or orient the spindle)."""
         st = self.state
         if speed_rpm is not None:
-            st.programmed_rpm = abs(float(speed_rpm))
+            rpm = abs(float(speed_rpm))
+            st.programmed_rpm = rpm if rpm == rpm else 0.0  # NaN: no speed
         if state in ("M3", "M4", "M5"):
             st.state = state
         elif state in ("M19", "SPOS"):
@@ -82,9 +86,13 @@ class Spindle:
         else:
             target = 0.0
         upper = min(p.max_rpm, p.gear_max_rpm)
-        magnitude = min(abs(target), upper)
+        requested = abs(target)
+        magnitude = min(requested, upper)
         if magnitude > 0.0:
             magnitude = max(magnitude, p.gear_min_rpm)
+        # The speed is clamped without an alarm; only the interface signals report it.
+        st.setpoint_limited = requested > upper
+        st.setpoint_increased = 0.0 < requested < magnitude
         st.setpoint_rpm = math.copysign(magnitude, target) if target else 0.0
 
     def advance(self, dt_s: float) -> None:

@@ -28,6 +28,9 @@ from nck.motion.servo import AxisState, ServoBank
 from nck.motion.spindle import Spindle
 
 RECHECK_CYCLES = 25
+ALARM_VALUE_RANGE = 12160  # a target position that is not a finite number or out of range
+MAX_DWELL_S = 1e9  # longer dwells are cut here (an infinite dwell would overflow the cycle count)
+POSITION_RANGE_MM = 1e9  # far beyond the value range of any axis (±999 999.999 mm at MD10200 = 1000)
 
 
 class PlannedMotion:
@@ -106,6 +109,9 @@ class PlannedMotion:
         for name, value in item.end_mcs.items():
             if name in self.index:
                 end[self.index[name]] = float(value)
+                if not math.isfinite(end[self.index[name]]):
+                    self._value_range_alarm(item, name)  # an infinite or undefined position
+                    return
         segment = self._segment(item, start, end)
         self.plan_pos = end
         if segment is None:
@@ -118,6 +124,12 @@ class PlannedMotion:
             alarm = NcAlarmError(number, axis, sign, file=item.source.file, line=item.source.line, n=item.source.n)
             self.la.append(AlarmItem(alarm, item.source))
             return
+        outside = _outside_position_range(segment, item)
+        if outside is not None:
+            # Not caught by a limit switch (axis not referenced): beyond any position the
+            # control can represent, where the path arithmetic loses its precision.
+            self._value_range_alarm(item, outside)
+            return
         rapid = item.kind == "G0"
         feed = None if rapid else self._effective_feed(item)
         soft = item.gcodes.get(21, "BRISK") == "SOFT" if item.gcodes else False
@@ -128,6 +140,10 @@ class PlannedMotion:
         )
         self.la.append(planned)
         self._replan_if_exit_changed()
+
+    def _value_range_alarm(self, item: Motion, axis: str) -> None:
+        alarm = NcAlarmError(ALARM_VALUE_RANGE, axis, file=item.source.file, line=item.source.line, n=item.source.n)
+        self.la.append(AlarmItem(alarm, item.source))
 
     def advance(self, dt_s: float) -> None:
         """Advance by ``dt_s`` (rounded to whole IPO cycles, remainders carried)."""
@@ -643,7 +659,7 @@ class PlannedMotion:
             return False
         if isinstance(head, DwellItem):
             self.la.pop_front()
-            self.wait_cycles = int(round(head.seconds / self.T))
+            self.wait_cycles = int(round(min(head.seconds, MAX_DWELL_S) / self.T))
             self.wait_source = head.source
             self.v_path = 0.0
             return True
@@ -681,6 +697,20 @@ class PlannedMotion:
         self.jog.runs.clear()
 
 
+def _outside_position_range(segment: Segment, item: Motion) -> str | None:
+    """The first axis (or centre) of ``segment`` beyond :data:`POSITION_RANGE_MM`, else None."""
+    if float(np.max(np.abs(segment.end))) <= POSITION_RANGE_MM and (
+            segment.arc is None or max(abs(segment.arc[2]), abs(segment.arc[3])) <= POSITION_RANGE_MM):
+        return None
+    for name, value in item.end_mcs.items():
+        if abs(float(value)) > POSITION_RANGE_MM:
+            return name
+    for name, value in (item.center_mcs or {}).items():
+        if abs(float(value)) > POSITION_RANGE_MM:
+            return name
+    return next(iter(item.end_mcs), "")
+
+
 def _samples_within(tau: float, T: float, end: float, room: int) -> int:
     """How many of ``tau + T*1``, ``tau + T*2``, … ``tau + T*room`` are ≤ ``end``.
 
@@ -688,7 +718,8 @@ def _samples_within(tau: float, T: float, end: float, room: int) -> int:
     """
     if room <= 0 or tau + T > end:
         return 0
-    m = min(room, max(1, int((end - tau) / T)))
+    estimate = (end - tau) / T
+    m = room if not estimate < room else max(1, int(estimate))  # also for inf (huge moves)
     while m < room and tau + T * (m + 1) <= end:
         m += 1
     while m > 1 and tau + T * m > end:
