@@ -40,5 +40,12 @@ def dialect_for(dialect: str, machine: object) -> str:
     digits = md_value("MD10888", None, 2) if md_value else 2
     named.iso_settings = IsoSettings(pocket_calculator=bool(pocket), increment_system_c=bool(is_c),
                                      gcode_system=int(system or 0), tool_digits=int(digits or 2),
-                                     function_mask=int(mask or 0))
+                                     function_mask=int(mask or 0),
+                                     start_unit=_start_unit(md_value))
     return named
+
+
+def _start_unit(md_value: object) -> str:
+    """MD 20154[5]: the inch/metric code an ISO main program starts with."""
+    from nck.iso.switching import start_unit
+    return start_unit(md_value("MD20154", None, None)) if callable(md_value) else ""

@@ -10,8 +10,12 @@ Mapping onto the Siemens machinery: G20/G21 → G700/G710, G02/G03 R → CR=,
 G04 X/U/P → G4 F (seconds; G4 S revolutions under G95 with MD 20734 bit 2,
 :mod:`nck.iso.dwell`), G43/G44 H and D → the active tool's edge with that
 ``$TC_DPH`` H number, G10 L10–L13 → its offsets (:mod:`nck.iso.tool_offsets`), G49 → D0,
-G52 → TRANS, G92 → ATRANS so the current position reads the programmed value,
-G92.1 → TRANS (clears G52 and G92), G10 L2 Pn → ``$P_UIFR[n]`` (G54…G59),
+G52 → programmable coarse offset, G92 → ATRANS so every axis reads its current position,
+G92.1 → clears G52 and G92, G10 L2 Pn → ``$P_UIFR[n]`` (G54…G59, G58/G59 = G505/G506),
+G68/G69, G51/G50, G51.1/G50.1 → programmable frame, G16/G15 → G110/G111 pole with RP/AP,
+SD 42440 = 0 after offset changes (:mod:`nck.iso.frames`); Siemens IF/WHILE/FOR/GOTO/CALL
+lines pass unchanged, Siemens-only G codes → 12080, MD 20734 bit 3, MD 20154[5] start unit
+(:mod:`nck.iso.switching`),
 G53 stays non-modal machine coordinates, G61 → G60, M98 → ``CALL "O<nnnn>" P<count>``,
 M99 → M17 (main program: restart), M99 P<n> → RET to N<n> of the caller, M30 in an
 ISO subprogram ends the program (:mod:`nck.iso.subprograms`); G65/G66/G67/G05 →
@@ -25,14 +29,16 @@ of the active tool, G92 S (A: G50 S) → LIMS, G96/G97 → G96/G961/G97/G971, G3
 F → lead K, G70–G76 and G77–G79 (A: G90/G92/G94) as NC-inserted blocks.
 
 Not modelled (yet): a ``/n`` in the middle of a block is resolved at load time
-as if level n were off; SD 42440 = 0 (an offset change is not traversed with
-G91: the Siemens interpreter keeps the programmed WCS point); G68/G51/G16; M98 with
+as if level n were off; M98 with
 8-digit program numbers (MD 20734 bit 6); M/G-code macros (MD 10814–10817);
 ``$P_ISO_STACK``; G44 applies the length like G43; MD 20380 length modes B/C; a
 G10 offset change acts at once (manual: at the next T/H/D); a PROC macro must be
 named like a Siemens program (``PROC 0010`` is not accepted); groups 8 (G43/G49)
 and 12 (G66/G67) in the G-group display show their reset codes; the cycle group (9) in the G-group
-display always shows G80.
+display always shows G80; groups 11/16/17/22 (G51/G68/G16/G51.1) show their reset codes;
+G68/G51.1 act in the programmable frame, not in channel base frames 1–3; mirroring of
+non-geometry axes; polar coordinates in drilling cycles; ``$P_AP``; a Siemens
+REPEAT with ISO block numbers.
 ISO T not modelled: system C; G34; the G76 chamfer (pull-out) and the G74/G75
 relief at the bottom; contours with pockets (G71/G72 type II); tool nose radius
 compensation inside the cycles; G10 P creating a missing offset; a cycle start
@@ -51,6 +57,7 @@ from nck.iso import dwell as iso_dwell
 from nck.iso import macros as iso_macros
 from nck.iso import tool_offsets as iso_tools
 from nck.iso import frames as iso_frames
+from nck.iso import switching
 
 LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
 AXES = ("X", "Y", "Z")
@@ -65,6 +72,7 @@ class IsoSettings:
     function_mask: int = 0  # MD 20734 EXTERN_FUNCTION_MASK (bit 2: G04 in revolutions under G95)
     gcode_system: int = 0  # ISO T code system, MD 10881: 0 B, 1 A
     tool_digits: int = 2  # ISO T digits of the tool number in T, MD 10888
+    start_unit: str = ""  # G700/G710 from MD 20154[5] (ISO group 6 reset), "" = table reset
 
     @property
     def increment_mm(self) -> float:
@@ -132,7 +140,10 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
         try:
             line.blocks = _translate_line(raw, modal, settings)
         except NcAlarmError as alarm:
-            line.error = alarm
+            if switching.pass_to_siemens(alarm, settings.function_mask):
+                line.blocks = [raw]  # MD 20734 bit 3: the Siemens translator gets the block
+            else:
+                line.error = alarm
         if modal.lathe is not None:
             turning.after_line(modal, line)
         out.append(line)
@@ -141,6 +152,7 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
     if main and start_in_iso:
         first = 1 if out and out[0].blocks[:1] == [cycles.DECLARATION] else 0
         start = turning.START_BLOCK if dialect == "iso-t" else "G0 G291"
+        start = f"{start} {settings.start_unit}".strip()
         out.insert(first, IsoLine(1, "", [start]))
     return out
 
@@ -162,6 +174,8 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
     stripped = raw.strip()
     if not stripped or stripped.startswith("%"):
         return []
+    if switching.siemens_statement(raw):  # IF/WHILE/GOTOF/CALL … run as Siemens blocks
+        return [raw]
     skip, words = split_words(raw)
     if words and words[0].letter == "O":
         words = words[1:]  # program number
@@ -225,7 +239,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     number = f"N{int(values.pop('N'))} " if "N" in values else ""
     for code in gcodes:
         if code not in _SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
-            raise NcAlarmError(12470, code)
+            raise switching.unknown_g(code)  # 12080 for a Siemens-only G code, else 12470
     framing = iso_frames.frame_codes(words, gcodes, values, modal.frames, modal.absolute,
                                      modal.turning)  # G68/G51/G51.1/G16 …
     if framing.done:

@@ -1,0 +1,97 @@
+"""Language switch and mixing (section 9 item 3): shared modal state over G290/G291, foreign
+syntax → 12080, Siemens control structures and calls accepted in ISO mode, MD 20734 bit 3,
+and the ISO start-up unit (MD 20154[5])."""
+
+from __future__ import annotations
+
+import pytest
+
+from nck.headless import interpret_only
+from nck.interp.sources import MemorySource
+from nck.iso.switching import siemens_statement
+from nck.machine import load_machine
+from nck.ncdata import NcData
+from tests.iso.conftest import ends, run_iso
+
+
+def _run(text: str, md: dict | None = None, subprograms: dict[str, str] | None = None):
+    machine = load_machine(None)
+    machine.md.update(md or {})
+    return interpret_only(machine, MemorySource(subprograms or {}), NcData(), "TEST.MPF",
+                          text=text, max_blocks=10_000, dialect="iso-m")
+
+
+@pytest.mark.parametrize("text, shown", [("N10 WAIT", "WAIT"), ("N15 G91 G500", "G500")])
+def test_siemens_syntax_in_iso_mode_is_12080(text, shown):
+    result = run_iso("N5 G291\n" + text + "\nM30\n")
+    assert result.status == "alarm"
+    alarm = result.alarms[0]
+    assert alarm.number == 12080
+    assert shown in " ".join(str(p) for p in alarm.params)
+
+
+def test_g_code_unknown_to_both_languages_is_12470():
+    assert run_iso("G123 X1.\nM30\n").alarms[0].number == 12470
+
+
+def test_if_goto_and_labels_run_in_iso_mode():
+    text = ("N5 G90 G01 X1. F100\nN10 IF $P_EP[X]>0 GOTOF SKIP\nN15 X50.\nSKIP:\n"
+            "N20 Y2.\nM30\n")
+    result = run_iso(text)
+    assert result.status == "ended", result.alarms
+    assert [p["X"] for _line, p in ends(result)] == [1.0, 1.0]
+
+
+def test_while_and_for_loops_run_in_iso_mode():
+    text = "N5 G91 G01 F100\nN10 FOR R1=1 TO 3\nN15 X1.\nN20 ENDFOR\nWHILE $P_EP[Y]<2\nY1.\nENDWHILE\nM30\n"
+    result = run_iso(text)
+    assert result.status == "ended", result.alarms
+    assert ends(result)[-1][1] == {"X": 3.0, "Y": 2.0, "Z": 0.0}
+
+
+def test_if_else_endif_in_iso_mode():
+    text = "IF 1==2\nX5.\nELSE\nX7.\nENDIF\nM30\n"
+    result = run_iso(text)
+    assert [p["X"] for _line, p in ends(result)] == [7.0]
+
+
+def test_call_runs_a_siemens_subprogram_in_iso_mode():
+    sub = "PROC SHAFT\nG1 X4 F100\nM17\n"
+    result = _run('N10 CALL "SHAFT"\nN20 G00 Y3.\nM30\n', subprograms={"SHAFT": sub})
+    assert result.status == "ended", result.alarms
+    assert [(p["X"], p["Y"]) for _line, p in ends(result)] == [(4.0, 0.0), (4.0, 3.0)]
+
+
+def test_iso_words_are_not_taken_for_siemens_statements():
+    assert not siemens_statement("N10 G01 X1. F100")
+    assert not siemens_statement("O0012 (part)")
+    assert siemens_statement("N10 IF R1==1 GOTOF END")
+    assert siemens_statement("/1 N5 CALL \"A\"")
+    assert siemens_statement("END:")
+
+
+def test_md20734_bit3_hands_rejected_blocks_to_siemens():
+    text = "N5 G291\nN10 R1=4\nN15 G91 G500\nN20 X1. Y1.\nM30\n"
+    assert _run(text).alarms[0].number == 12080
+    result = _run(text, {"MD20734": 8})
+    assert result.status == "ended", result.alarms
+    assert ends(result)[-1][1] == {"X": 1.0, "Y": 1.0, "Z": 0.0}
+    # G91 from the Siemens block N15 is active in the ISO block N20
+    result = _run("G0 X5.\nN15 G91 G500\nN20 X1.\nM30\n", {"MD20734": 8})
+    assert ends(result)[-1][1]["X"] == 6.0
+
+
+def test_language_switch_keeps_tool_offsets_and_frames():
+    text = "G52 X10.\nG290\nG0 X0\nG291\nG00 X5.\nM30\n"
+    result = run_iso(text)
+    assert result.status == "ended", result.alarms
+    assert [p["X"] for _line, p in ends(result, "mcs")] == [10.0, 15.0]
+
+
+@pytest.mark.parametrize("value, x_mm", [(1, 25.4), (2, 1.0), (0, 1.0)])
+def test_iso_start_unit_from_md20154(value, x_mm):
+    reset_values = [0] * 31
+    reset_values[5] = value
+    result = _run("G01 X1. F100\nM30\n", {"MD20154": reset_values})
+    assert result.status == "ended", result.alarms
+    assert ends(result, "mcs")[0][1]["X"] == x_mm
