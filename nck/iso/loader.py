@@ -8,6 +8,7 @@ from typing import Callable
 from nck.errors import NcAlarmError
 from nck.iso import is_iso
 from nck.iso.translate import translate
+from nck.iso.skipping import AlarmBlock
 
 _SWITCH_TO_ISO = re.compile(r"(?<![A-Z0-9_])G291(?![0-9])", re.IGNORECASE)
 _PROC_FIRST = re.compile(r"^\s*(N\d+\s+)?PROC\b", re.IGNORECASE)
@@ -42,6 +43,10 @@ def iso_lines(name: str, text: str, dialect: str,
             lines.append(Line(number, raw, None, located(iso_line.error, name, number, guess_n(raw))))
             continue
         for block_text in iso_line.blocks or [""]:
+            if isinstance(block_text, AlarmBlock):  # mid-block /n: the alarm of the whole block
+                lines.append(Line(number, raw, None, located(block_text.alarm, name, number,
+                                                             guess_n(raw))))
+                continue
             try:
                 lines.append(Line(number, raw or block_text, parse_block(block_text, number)))
             except NcAlarmError as alarm:

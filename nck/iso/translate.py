@@ -28,8 +28,10 @@ code systems B and A (MD 10881), T<tool><offset> (MD 10888), G10 P tool offsets
 of the active tool, G92 S (A: G50 S) → LIMS, G96/G97 → G96/G961/G97/G971, G32/G33
 F → lead K, G70–G76 and G77–G79 (A: G90/G92/G94) as NC-inserted blocks.
 
-Not modelled (yet): a ``/n`` in the middle of a block is resolved at load time
-as if level n were off; M98 with
+A ``/n`` in the middle of a block is decided at run time (:mod:`nck.iso.skipping`).
+
+Not modelled (yet): a second mid-block ``/n`` in a block is resolved as if its level were
+off; M98 with
 8-digit program numbers (MD 20734 bit 6); M/G-code macros (MD 10814–10817);
 ``$P_ISO_STACK``; G44 applies the length like G43; MD 20380 length modes B/C; a
 G10 offset change acts at once (manual: at the next T/H/D); a PROC macro must be
@@ -57,7 +59,7 @@ from nck.iso import dwell as iso_dwell
 from nck.iso import macros as iso_macros
 from nck.iso import tool_offsets as iso_tools
 from nck.iso import frames as iso_frames
-from nck.iso import switching
+from nck.iso import skipping, switching
 
 LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
 AXES = ("X", "Y", "Z")
@@ -138,7 +140,9 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
         if modal.lathe is not None:
             turning.before_line(modal, number - 1)
         try:
-            line.blocks = _translate_line(raw, modal, settings)
+            expanded = skipping.expand(raw, number, modal, lambda text, state: _translate_line(
+                text, state, settings)) if modal.iso else None  # mid-block /n at run time
+            line.blocks = expanded if expanded is not None else _translate_line(raw, modal, settings)
         except NcAlarmError as alarm:
             if switching.pass_to_siemens(alarm, settings.function_mask):
                 line.blocks = [raw]  # MD 20734 bit 3: the Siemens translator gets the block
