@@ -26,6 +26,7 @@ run time:
   programmed axes (mask bits 1/2/4), keeps the G92 preset (booked as fine translation by
   ``ATRANS``) and the ISO rotation, scale and mirror; ``$P_ISOFR_TRANSOFF=0`` — G92.1:
   clears G52 and G92;
+* ``$P_ISOFR_POLAROFF=0`` — G15: pole, polar radius and angle are deleted;
 * ``$P_ISOFR_SYNC=0`` / ``$P_ISOFR_PRESET=0`` — after an offset change with SD 42440 = 0,
   and after G92 always: the programmed position becomes the actual one.
 
@@ -202,6 +203,9 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     elif op in ("SYNC", "PRESET"):
         _sync(interp, geo, always=op == "PRESET")
         return
+    elif op == "POLAROFF":  # G15 deletes pole, polar radius and angle
+        _polar_off(interp, geo)
+        return
     elif op == "ROT":
         state = _rotate(interp, geo, state, args, number, mm)
     elif op == "ROTOFF":
@@ -245,6 +249,20 @@ def _sync(interp: Any, geo: Any, always: bool = False) -> None:
         geo.frames = old_frames
         geo.wcs_mm = old_wcs
         modal.position_wcs = old_view
+
+    journal = getattr(interp, "_journal", None)
+    if journal is not None:
+        journal.append(("undo", undo, None))
+
+
+def _polar_off(interp: Any, geo: Any) -> None:
+    from nck.geometry.polar import PolarState
+
+    old = geo.polar
+    geo.polar = PolarState()
+
+    def undo() -> None:
+        geo.polar = old
 
     journal = getattr(interp, "_journal", None)
     if journal is not None:
@@ -404,6 +422,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         return out
     if "G15" in present:
         tracker.polar = False
+        out.blocks.append(f"{PREFIX}POLAROFF=0")
     if "G16" in present:
         tracker.polar = True
         tracker.polar_fresh = True

@@ -269,3 +269,11 @@ def test_inch_program_selects_offsets_stored_in_mm():
     text = "G20\nG10 L2 P2 X1.\nG55\nG0 X0\nM30\n"
     result = run_iso(text)
     assert ends(result, "mcs")[0][1]["X"] == 25.4
+
+
+def test_g15_deletes_pole_radius_and_angle_at_run_time():
+    """Even a Siemens polar move after G15 starts from a fresh pole (the origin), RP 0, AP 0."""
+    text = "G90 G16 X10. Y90.\nG15\nG290\nG0 RP=5\nM30\n"
+    result = run_iso(text)
+    assert result.status == "ended", result.alarms
+    assert _xy(result)[-1] == (4, 5.0, 0.0)
