@@ -53,6 +53,20 @@ class Segment:
                 out[at_end] = self.end
         return out
 
+    def position_at(self, s: float) -> np.ndarray:
+        """The position at one path distance ``s`` (as :meth:`positions`, one row, fewer steps)."""
+        lam = min(max(s * (1.0 / self.length), 0.0), 1.0) if self.length > 0 else 1.0
+        out = self.start + lam * self.delta
+        if self.arc is not None:
+            if lam >= 1.0:
+                return self.end.copy()  # pinned, as in :meth:`positions`
+            i1, i2, c1, c2, r0, r1, th0, sweep = self.arc
+            theta = th0 + lam * sweep
+            radius = r0 + lam * (r1 - r0)
+            out[i1] = c1 + radius * math.cos(theta)
+            out[i2] = c2 + radius * math.sin(theta)
+        return out
+
     def _derivatives(self, lam: float) -> tuple[np.ndarray, np.ndarray]:
         """d/ds and d²/ds² of the position at ``lam`` (fraction of the length)."""
         first = (self.end - self.start) / self.length

@@ -60,6 +60,21 @@ class Profile:
         s = self.s0[idx] + self.v0[idx] * dt + self.a0[idx] * dt * dt / 2.0 + self.j[idx] * dt**3 / 6.0
         return np.minimum(s, self.length)
 
+    def distance_at(self, t: float) -> float:
+        """Distance at one time ``t`` with Python floats (same formula as :meth:`distances`)."""
+        t = min(max(t, 0.0), self.duration_s)
+        t0 = self.t0
+        i = len(t0) - 1
+        while i > 0 and float(t0[i]) > t:
+            i -= 1
+        dt = t - float(t0[i])
+        a = float(self.a0[i])
+        j = float(self.j[i])
+        s = float(self.s0[i]) + float(self.v0[i]) * dt
+        if a != 0.0 or j != 0.0:
+            s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
+        return min(s, self.length)
+
     def state_at(self, t: float) -> tuple[float, float, float]:
         """Distance, velocity and acceleration at one instant."""
         s, v, a = self.sample(np.array([t]))

@@ -175,6 +175,12 @@ class ServoBank:
         self._torque_friction = mech["friction"] * mech["torque_per_n"]
         self._torque_gravity = mech["gravity"] * mech["torque_per_n"]
         self._inv_rated_torque = 1.0 / mech["rated_torque"]
+        self._zero_cycles = np.zeros(n, dtype=np.int64)
+        self._no_fine = np.zeros(n, dtype=bool)
+        rows = np.arange(self._fast_rows + 1, dtype=float)
+        rows[0] = 1.0
+        self._temp_rise_per_m = mech["temp_rise"][None, :] / rows[:, None]
+        self._decay_pow = np.power(self._cycle_decay[None, :], np.arange(self._fast_rows + 1, dtype=float)[:, None])
         self._small_e = np.minimum(self._limits["fine"], np.minimum(self._limits["still"], self._limits["clamp"]))
 
     # -- state ---------------------------------------------------------------
@@ -218,7 +224,7 @@ class ServoBank:
         self.v_act[:] = 0.0
         self.v_cmd[:] = 0.0
         self.a_set[:] = 0.0
-        self.stop_cycles += n
+        self.stop_cycles = self.stop_cycles + n
         mech = self._mech
         self.torque = mech["gravity"] * mech["torque_per_n"]
         load = (self.torque / mech["rated_torque"]) ** 2
@@ -306,18 +312,25 @@ class ServoBank:
         m = x.shape[0]
         inv_t = self._inv_t
         lim = self._limits
-        dev0 = self.e - self.e_model
-        if (np.abs(dev0) * self.alpha > lim["contour"]).any():
-            return None  # the contour deviation only decays: its first cycle is its largest
         v = np.empty_like(x)
         np.subtract(x[0], self.x_set, out=v[0])
         np.subtract(x[1:], x[:-1], out=v[1:])
         v *= inv_t
         powers = self._powers[:m]
         # e_model[k] = alpha^k (e_model0 + sum_j<=k b v[j] alpha^-j)
-        e_model = powers * (self.e_model + np.cumsum(v * self._b_inv_powers[:m], axis=0))
-        e = e_model + dev0 * powers
-        v_cmd = self.kv * e + self._ffw_net * v
+        acc = np.cumsum(v * self._b_inv_powers[:m], axis=0)
+        acc += self.e_model
+        e_model = acc
+        e_model *= powers
+        dev0 = self.e - self.e_model
+        if dev0.any():
+            if (np.abs(dev0) * self.alpha > lim["contour"]).any():
+                return None  # the contour deviation only decays: its first cycle is its largest
+            e = e_model + dev0 * powers
+        else:
+            e = e_model
+        v_cmd = self.kv * e
+        v_cmd += self._ffw_net * v
         if (np.abs(v_cmd) > self._ctrlout_mm_s).any():
             return None
         actual = x - e
@@ -328,31 +341,37 @@ class ServoBank:
         if (np.abs(v_act) > lim["velo"]).any():
             return None
         stopped = np.abs(v) <= MOVING_MM_S
-        if (stopped & (np.abs(e) > self._small_e)).any():
-            return None  # a stopped axis outside its windows: the standstill monitors decide
-        # Standstill book-keeping; every stopped cycle is inside the fine window here.
-        cols = self._cols
-        last = m - 1 - np.argmax(~stopped[::-1], axis=0)
-        any_move = ~stopped[last, cols]
-        fine_after = last < m - 1
-        self.stop_cycles = np.where(any_move, m - 1 - last, self.stop_cycles + m)
-        self.fine_since_stop = np.where(any_move, fine_after, self.fine_since_stop | fine_after)
+        if stopped.any():
+            if (stopped & (np.abs(e) > self._small_e)).any():
+                return None  # a stopped axis outside its windows: the standstill monitors decide
+            # Standstill book-keeping; every stopped cycle is inside the fine window here.
+            last = m - 1 - np.argmax(~stopped[::-1], axis=0)
+            any_move = ~stopped[last, self._cols]
+            fine_after = last < m - 1
+            self.stop_cycles = np.where(any_move, m - 1 - last, self.stop_cycles + m)
+            self.fine_since_stop = np.where(any_move, fine_after, self.fine_since_stop | fine_after)
+        else:
+            self.stop_cycles = self._zero_cycles
+            self.fine_since_stop = self._no_fine
         # Drive values: torque from acceleration, friction and weight; motor temperature.
         dv = np.empty_like(v)
         np.subtract(v[0], self.v_set, out=dv[0])
         np.subtract(v[1:], v[:-1], out=dv[1:])
-        torque = self._torque_per_dv * dv + self._torque_friction * np.sign(v_act) + self._torque_gravity
-        load = self._ones[:m] @ np.square(torque * self._inv_rated_torque) * (1.0 / m)
-        target = AMBIENT_C + self._mech["temp_rise"] * load
-        self.temperature = target + (self.temperature - target) * np.power(self._cycle_decay, m)
-        self.torque = torque[-1].copy()
+        torque = self._torque_per_dv * dv
+        torque += self._torque_friction * np.sign(v_act)
+        torque += self._torque_gravity
+        load = self._ones[:m] @ np.square(torque * self._inv_rated_torque)
+        target = AMBIENT_C + self._temp_rise_per_m[m] * load if m < len(self._temp_rise_per_m) else (
+            AMBIENT_C + self._mech["temp_rise"] * load / m)
+        self.temperature = target + (self.temperature - target) * self._decay_pow[m]
+        self.torque = torque[-1]
         self.a_set = dv[-1] * inv_t
         self.x_set = x[-1].copy()
-        self.v_set = v[-1].copy()
-        self.e = e[-1].copy()
-        self.e_model = e_model[-1].copy()
-        self.v_act = v_act[-1].copy()
-        self.v_cmd = v_cmd[-1].copy()
+        self.v_set = v[-1]
+        self.e = e[-1].copy()  # (e may be e_model itself: two separate arrays)
+        self.e_model = e_model[-1]
+        self.v_act = v_act[-1]
+        self.v_cmd = v_cmd[-1]
         return actual
 
     def _simple(self) -> bool:

@@ -571,7 +571,15 @@ class PlannedMotion:
             run = self.run
             room = n - k
             m = _samples_within(run.tau, T, run.profile.duration_s + 1e-12, room)
-            if m:
+            if m == 1 and len(run.chain) == 1:
+                # One sample (the first cycle of the next block): scalar arithmetic.
+                tau = run.tau + T
+                point = run.chain[0].segment.position_at(run.s_begin + run.profile.distance_at(tau))
+                rows[k] = point
+                run.tau = tau
+                self.cmd = point
+                k += 1
+            elif m:
                 taus = run.tau + T * np.arange(1, m + 1)
                 rows[k:k + m] = run.positions(run.profile.distances(taus))
                 run.tau = float(taus[m - 1])
@@ -698,17 +706,15 @@ class PlannedMotion:
 
 
 def _outside_position_range(segment: Segment, item: Motion) -> str | None:
-    """The first axis (or centre) of ``segment`` beyond :data:`POSITION_RANGE_MM`, else None."""
-    if float(np.max(np.abs(segment.end))) <= POSITION_RANGE_MM and (
-            segment.arc is None or max(abs(segment.arc[2]), abs(segment.arc[3])) <= POSITION_RANGE_MM):
-        return None
+    """The first axis (or centre) of ``item`` beyond :data:`POSITION_RANGE_MM`, else None."""
     for name, value in item.end_mcs.items():
         if abs(float(value)) > POSITION_RANGE_MM:
             return name
-    for name, value in (item.center_mcs or {}).items():
-        if abs(float(value)) > POSITION_RANGE_MM:
-            return name
-    return next(iter(item.end_mcs), "")
+    if segment.arc is not None:
+        for name, value in (item.center_mcs or {}).items():
+            if abs(float(value)) > POSITION_RANGE_MM:
+                return name
+    return None
 
 
 def _samples_within(tau: float, T: float, end: float, room: int) -> int:
