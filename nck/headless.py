@@ -217,11 +217,20 @@ def interpret_only(
         result.alarms.append(alarm.located(program_name, None, None))
         return result
     clock = 0.0
+    batches = not keep_commands and on_command is None  # nobody needs the motions: plain runs in one go
     while not interp.finished:
         if (timeout_s is not None and clock >= timeout_s) or (
                 max_blocks is not None and result.blocks >= max_blocks):
             result.status = "timeout"
             break
+        if batches:
+            left = max_blocks - result.blocks if max_blocks is not None else PLAIN_BATCH_ANY
+            batch = interp.plain_batch(left)
+            if batch is not None:
+                count, clock = batch_clock(machine, batch, clock, timeout_s)
+                batch.commit(count)
+                result.blocks += count
+                continue
         try:
             block = interp.step()
         except NcAlarmError as alarm:
@@ -250,6 +259,52 @@ def interpret_only(
             break
     result.machine_time_s = clock
     return result
+
+
+PLAIN_BATCH_ANY = 1 << 62  # no block budget
+
+
+def batch_clock(machine: MachineConfig, batch: Any, clock: float,
+                timeout_s: float | None) -> tuple[int, float]:
+    """How many blocks of a plain batch run before ``timeout_s``, and the clock after them.
+
+    The same sums as the block-by-block loop, in the same order: per block its
+    cost, then its segment's time (:func:`segment_time_s`).
+    """
+    import numpy as np
+
+    from nck.interp.interpreter import BLOCK_COST_S
+
+    steps = np.zeros((batch.blocks, 2))
+    steps[:, 0] = BLOCK_COST_S
+    steps[batch.motion_line, 1] = segment_times_s(machine, batch.axes, batch.deltas_mm, batch.feed_mm_min)
+    running = np.cumsum(np.concatenate(([clock], steps.ravel())))
+    count = batch.blocks
+    if timeout_s is not None:
+        before = running[0:-1:2]  # the clock before each block
+        late = np.flatnonzero(before >= timeout_s)
+        if late.size:
+            count = int(late[0])
+    return count, float(running[2 * count])
+
+
+def segment_times_s(machine: MachineConfig, axes: tuple[str, ...], deltas_mm: Any, feed_mm_min: Any) -> Any:
+    """:func:`segment_time_s` of many segments (rows of ``deltas_mm``; NaN feed = rapid)."""
+    import numpy as np
+
+    squares = deltas_mm[:, 0] * deltas_mm[:, 0] if len(axes) else np.zeros(len(feed_mm_min))
+    for i in range(1, len(axes)):
+        squares = squares + deltas_mm[:, i] * deltas_mm[:, i]
+    rapid = np.isnan(feed_mm_min)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        times = np.sqrt(squares) / feed_mm_min * 60.0
+    if rapid.any():
+        slowest = np.zeros(len(feed_mm_min))
+        for i, axis in enumerate(axes):
+            velocity = machine.md_value("MD32000", axis, DEFAULT_RAPID_MM_MIN) or DEFAULT_RAPID_MM_MIN
+            slowest = np.maximum(slowest, np.abs(deltas_mm[:, i]) / float(velocity) * 60.0)
+        times = np.where(rapid, slowest, times)
+    return times
 
 
 CHECK_BLOCK_BUDGET = 200_000  # blocks a check may interpret before it stops quietly

@@ -101,6 +101,7 @@ class Interpreter:
         self._state = _State(modal=ModalState.initial(machine, self.table))
         self._journal: list[tuple[str, Any, Any]] = []
         self._skip_run: tuple[int, bool] | None = None
+        self.fast_path = True  # plain_batch may plan runs of plain blocks (False: general path only)
 
     # ================================================================== public API
     @property
@@ -255,6 +256,18 @@ class Interpreter:
         finally:
             self.flags["search"] = False
         return SearchResult(False, blocks, tuple(collected), dict(self._state.modal.position_wcs))
+
+    def plain_batch(self, max_blocks: int) -> Any:
+        """The next run of plain blocks planned as one batch (:mod:`nck.interp.plain_run`), or None.
+
+        Nothing changes until the caller commits the first *k* blocks
+        (``batch.commit(k)``); None means: interpret the next block with :meth:`step`.
+        """
+        if not self.fast_path:
+            return None
+        from nck.interp.plain_run import plan
+
+        return plan(self, max_blocks)
 
     # ================================================================== internals
     def _snapshot(self) -> tuple:

@@ -1,19 +1,31 @@
-"""A loaded program: parsed lines, labels, block numbers, control-structure matching.
+"""A loaded program: its lines, labels, block numbers, control-structure matching.
 
-Each source line is parsed once at load time. A line that fails to parse keeps
-its alarm, raised only when execution reaches the line (and reported by
-``nck check``). Control structures (IF/ELSE/ENDIF, WHILE, FOR, LOOP, REPEAT)
-are matched statically; a mismatch is an alarm attached to the offending line.
+A Siemens program is scanned once at load time: every line is checked (plain
+motion blocks by one pattern, :mod:`nck.lang.plain`; the rest by the parser),
+but only what the run needs is kept — the text, a line-start checkpoint every
+64 lines (:class:`~nck.interp.program_text.TextLines`), the alarms of lines
+that do not parse, labels, control-structure partners and the runs of plain
+lines. Lines are parsed again when execution reaches them (bounded cache), so
+the memory of a program does not grow with its length beyond its text. A line
+that fails to parse keeps its alarm, raised only when execution reaches the
+line (and reported by ``nck check``). Control structures (IF/ELSE/ENDIF,
+WHILE, FOR, LOOP, REPEAT) are matched statically; a mismatch is an alarm
+attached to the offending line.
 """
 
 from __future__ import annotations
 
+import bisect
+from array import array
 from dataclasses import dataclass, field
+from typing import Any, Sequence
 
 from nck.errors import NcAlarmError
+from nck.interp.program_text import CACHE_LINES, CHECKPOINT_LINES, TextLines
 from nck.lang import ast
 from nck.lang.gcodes import gtable
 from nck.lang.parser import parse_block
+from nck.lang.plain import NOT_PLAIN_LINE, has_statements, match_plain
 
 MAX_STRUCTURE_DEPTH = 16  # nesting depth of control structures per program level
 
@@ -52,7 +64,7 @@ class Program:
     """
 
     name: str
-    lines: list[Line]
+    lines: Sequence[Line]
     labels: dict[str, int] = field(default_factory=dict)
     numbers: dict[int, list[int]] = field(default_factory=dict)
     partner: dict[int, int] = field(default_factory=dict)
@@ -60,6 +72,8 @@ class Program:
     structure_errors: dict[int, NcAlarmError] = field(default_factory=dict)
     jump_warnings: dict[int, NcAlarmError] = field(default_factory=dict)
     proc: ast.Proc | None = None
+    plain_starts: array | None = None  # scanned programs: first line of every run of plain lines
+    plain_stops: array | None = None  # … and the line after its last one
 
     def __deepcopy__(self, memo: dict) -> "Program":
         """Programs are immutable once loaded: snapshots share them."""
@@ -67,15 +81,30 @@ class Program:
 
     def problems(self) -> list[NcAlarmError]:
         """Every static problem (parse errors and structure errors), in line order."""
-        found: list[tuple[int, NcAlarmError]] = []
+        if isinstance(self.lines, TextLines):
+            found = dict(self.jump_warnings)
+            found.update(self.structure_errors)
+            found.update(self.lines.errors)
+            return [found[index] for index in sorted(found)]
+        result: list[tuple[int, NcAlarmError]] = []
         for index, line in enumerate(self.lines):
             if line.error is not None:
-                found.append((index, line.error))
+                result.append((index, line.error))
             elif index in self.structure_errors:
-                found.append((index, self.structure_errors[index]))
+                result.append((index, self.structure_errors[index]))
             elif index in self.jump_warnings:
-                found.append((index, self.jump_warnings[index]))
-        return [alarm for _, alarm in found]
+                result.append((index, self.jump_warnings[index]))
+        return [alarm for _, alarm in result]
+
+    def plain_run_end(self, index: int) -> int:
+        """End (exclusive) of the run of plain lines that contains line ``index``; ``index`` if none."""
+        starts, stops = self.plain_starts, self.plain_stops
+        if not starts or stops is None:
+            return index
+        position = bisect.bisect_right(starts, index) - 1
+        if position >= 0 and index < stops[position]:
+            return stops[position]
+        return index
 
     def find_label(self, label: str, start: int, direction: str) -> int | None:
         """Index of the line carrying ``label`` searched from ``start``.
@@ -88,7 +117,30 @@ class Program:
 
     def find_number(self, number: int, start: int, direction: str) -> int | None:
         """Index of the line with block number ``number`` searched like find_label."""
+        if isinstance(self.lines, TextLines):
+            return _search(self._numbered().get(number, ()), start, direction)
         return _search(self.numbers.get(number, ()), start, direction)
+
+    def _numbered(self) -> dict[int, list[int]]:
+        """Block number → line indices of a scanned program (built on the first jump to a number)."""
+        cache = self.__dict__.get("_numbers_all")
+        if cache is None:
+            cache = {}
+            lines = self.lines
+            assert isinstance(lines, TextLines)
+            for index in range(len(lines)):
+                if index in lines.errors:
+                    continue
+                raw = lines.raw(index)
+                found = match_plain(raw)
+                if found is not None:
+                    number = int(found.group(1)) if found.group(1) is not None else None
+                else:
+                    number = parse_block(raw, index + 1).number
+                if number is not None:
+                    cache.setdefault(number, []).append(index)
+            self.__dict__["_numbers_all"] = cache
+        return cache
 
     @property
     def labels_all(self) -> dict[str, list[int]]:
@@ -120,21 +172,24 @@ def _located(alarm: NcAlarmError, name: str, line: int, n: int | None) -> NcAlar
 
 
 def load_program(name: str, text: str, dialect: str = "siemens", main: bool = False) -> Program:
-    """Parse ``text`` into a :class:`Program` called ``name`` (never raises).
+    """Scan ``text`` into a :class:`Program` called ``name`` (never raises).
 
     In an ISO ``dialect`` (or a Siemens text that switches with G291) the
-    lines are first translated by :mod:`nck.iso.translate`.
+    lines are first translated by :mod:`nck.iso.translate` (and kept parsed).
     """
+    from nck.iso import is_iso
     from nck.iso.loader import iso_lines, wants_iso
-    if wants_iso(text, dialect):
-        program = Program(name=name, lines=iso_lines(name, text, dialect, _located, _guess_n, main))
-        _index(program)
-        _check_jumps(program)
-        return program
     key = (name, dialect, text)
     cached = _RECENT.get(key)
     if cached is not None:
         return cached
+    if (is_iso(dialect) or "G291" in text or "g291" in text) and wants_iso(text, dialect):  # to ISO
+        program = Program(name=name, lines=iso_lines(name, text, dialect, _located, _guess_n, main))
+        indexer = _Indexer(program)
+        for index, line in enumerate(program.lines):
+            indexer.add(index, line.number, line.block)
+        indexer.finish()
+        return program
     program = _load_siemens(name, text)
     try:  # the HMI checks in a worker thread: tolerate a concurrent eviction
         while len(_RECENT) >= _RECENT_SIZE:
@@ -148,25 +203,79 @@ def load_program(name: str, text: str, dialect: str = "siemens", main: bool = Fa
 _RECENT: dict[tuple[str, str, str], Program] = {}
 _RECENT_SIZE = 4
 """Programs loaded last, by (name, dialect, text): a check followed by its run, or a
-subprogram called again, is parsed once. Loaded programs are immutable (the
+subprogram called again, is scanned once. Loaded programs are immutable (the
 per-line caches are derived from the parsed block), so sharing them is safe."""
 
 
 def _load_siemens(name: str, text: str) -> Program:
-    lines: list[Line] = []
-    raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
-    if raw_lines and raw_lines[-1] == "":
-        raw_lines.pop()
-    for number, raw in enumerate(raw_lines, start=1):
+    """One pass over the text: plain lines by pattern, the others parsed and indexed."""
+    if "\r" in text:
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    count = text.count("\n") + (0 if not text or text.endswith("\n") else 1)
+    lines = TextLines(text, count, line_checkpoints(text), {})
+    program = Program(name=name, lines=lines, plain_starts=array("q"), plain_stops=array("q"))
+    indexer = _Indexer(program)
+    errors = lines.errors
+    starts, stops = program.plain_starts, program.plain_stops
+    assert starts is not None and stops is not None
+    index = 0  # line index of the current match
+    counted_to = 0
+    next_plain = 0  # first line after the last non-plain line
+    for found in NOT_PLAIN_LINE.finditer(text):
+        begin = found.start()
+        index += text.count("\n", counted_to, begin)
+        counted_to = begin
+        if index > next_plain:
+            starts.append(next_plain)
+            stops.append(index)
+        next_plain = index + 1
+        raw = found.group()
         try:
-            block = parse_block(raw, number)
-            lines.append(Line(number, raw, block))
+            block = parse_block(raw, index + 1)
         except NcAlarmError as alarm:
-            lines.append(Line(number, raw, None, _located(alarm, name, number, _guess_n(raw))))
-    program = Program(name=name, lines=lines)
-    _index(program)
-    _check_jumps(program)
+            errors[index] = _located(alarm, name, index + 1, _guess_n(raw))
+            indexer.add(index, index + 1, None)
+        else:
+            indexer.add(index, index + 1, block)
+            if index < CACHE_LINES:
+                lines.remember(index, Line(index + 1, raw, block))
+    if count > next_plain:
+        starts.append(next_plain)
+        stops.append(count)
+    indexer.finish()
     return program
+
+
+
+
+def line_checkpoints(text: str) -> array:
+    """Offsets of the starts of lines 0, 64, 128, … of ``text``."""
+    step = CHECKPOINT_LINES
+    if text.isascii() and len(text) > 4096:
+        import numpy as np
+
+        found = array("q", [0])
+        seen = 0  # line ends before the window
+        window = 1 << 20
+        for begin in range(0, len(text), window):
+            ends = np.flatnonzero(np.frombuffer(text[begin:begin + window].encode("ascii"), dtype=np.uint8) == 10)
+            first = (-seen - 1) % step  # index in ``ends`` of the end of line 64k - 1
+            found.extend((ends[first::step] + (begin + 1)).tolist())
+            seen += ends.size
+        if found[-1] >= len(text) and len(found) > 1:  # a start after the final line end: no line
+            found.pop()
+        return found
+    found = array("q")
+    position, index, size = 0, 0, len(text)
+    while True:
+        if not index % step:
+            found.append(position)
+        end = text.find("\n", position)
+        if end < 0 or end + 1 >= size:
+            break
+        position = end + 1
+        index += 1
+    return found
 
 
 def _guess_n(raw: str) -> int | None:
@@ -184,82 +293,119 @@ def _guess_n(raw: str) -> int | None:
     return None
 
 
-def _index(program: Program) -> None:
-    stack: list[tuple[str, int]] = []
-    for index, line in enumerate(program.lines):
-        block = line.block
+class _Indexer:
+    """Labels, block numbers, control-structure partners and static alarms, line by line."""
+
+    def __init__(self, program: Program) -> None:
+        self.program = program
+        self.stack: list[tuple[str, int]] = []
+        self.first_code: int | None = None  # first line with statements (or a parse error)
+        self.variables: set[str] = set()  # names DEFined anywhere (GOTOF <variable>)
+        self.gotos: list[tuple[int, int, int | None, list[ast.Goto]]] = []
+        self.labels_all: dict[str, list[int]] = {}
+        self.numbered = not isinstance(program.lines, TextLines)
+
+    def add(self, index: int, line_number: int, block: ast.Block | None) -> None:
+        """Index one line (``block`` None: the line did not parse)."""
+        program = self.program
         if block is None:
-            continue
+            if self.first_code is None:
+                self.first_code = index
+            return
+        if self.first_code is None and block.statements:
+            self.first_code = index
         if block.label:
+            self.labels_all.setdefault(block.label, []).append(index)
             if block.label in program.labels:
                 program.structure_errors[index] = NcAlarmError(12450, block.label).located(
-                    program.name, line.number, block.number)
+                    program.name, line_number, block.number)
             else:
                 program.labels[block.label] = index
-        if block.number is not None:
+        if block.number is not None and self.numbered:
             program.numbers.setdefault(block.number, []).append(index)
         gcode_problem = _check_gcodes(block)
         if gcode_problem is not None:
-            program.structure_errors[index] = gcode_problem.located(program.name, line.number, block.number)
+            program.structure_errors[index] = gcode_problem.located(program.name, line_number, block.number)
+        gotos: list[ast.Goto] = []
         for stmt in block.statements:
+            if isinstance(stmt, ast.Def):
+                self.variables.update(decl.name for decl in stmt.names)
+            elif isinstance(stmt, ast.Goto):
+                gotos.append(stmt)
+            elif isinstance(stmt, ast.IfGoto):
+                gotos.append(stmt.goto)
+            elif isinstance(stmt, ast.Case):
+                gotos.extend([g for _, g in stmt.branches] + ([stmt.default] if stmt.default else []))
             if isinstance(stmt, ast.Proc):
-                if index == _first_code_line(program, index):
+                if self.first_code is None or index <= self.first_code:
+                    self.first_code = self._first_plain_code(index)
+                if self.first_code is None or index <= self.first_code:
                     program.proc = stmt
                 else:
                     program.structure_errors[index] = NcAlarmError(14500).located(
-                        program.name, line.number, block.number)
+                        program.name, line_number, block.number)
             if not isinstance(stmt, ast.Control):
                 continue
-            kind = stmt.kind
-            if kind in _OPENERS:
-                stack.append((kind, index))
-                if len(stack) > MAX_STRUCTURE_DEPTH:
-                    program.structure_errors[index] = NcAlarmError(12641).located(
-                        program.name, line.number, block.number)
-            elif kind == "ELSE":
-                if not stack or stack[-1][0] != "IF" or stack[-1][1] in program.else_of:
-                    program.structure_errors[index] = NcAlarmError(12640).located(
-                        program.name, line.number, block.number)
-                else:
-                    program.else_of[stack[-1][1]] = index
-            elif kind in _CLOSERS:
-                if not stack or stack[-1][0] != _CLOSERS[kind]:
-                    program.structure_errors[index] = NcAlarmError(12640).located(
-                        program.name, line.number, block.number)
-                    continue
-                _, opener = stack.pop()
-                program.partner[opener] = index
-                program.partner[index] = opener
-                if opener in program.else_of:
-                    program.partner[program.else_of[opener]] = index
-    for kind, index in stack:
-        line = program.lines[index]
-        program.structure_errors.setdefault(index, NcAlarmError(12640).located(
-            program.name, line.number, line.block.number if line.block else None))
+            self._control(stmt.kind, index, line_number, block)
+        if gotos:
+            self.gotos.append((index, line_number, block.number, gotos))
 
+    def _first_plain_code(self, upto: int) -> int | None:
+        """First line before ``upto`` with statements among the plain lines a scan skipped."""
+        lines = self.program.lines
+        if not isinstance(lines, TextLines):
+            return self.first_code
+        for index in range(min(upto, self.first_code if self.first_code is not None else upto)):
+            found = match_plain(lines.raw(index))
+            if found is not None and has_statements(found):
+                return index
+        return self.first_code
 
-def _check_jumps(program: Program) -> None:
-    """Jumps to labels or block numbers that cannot be found in their direction.
+    def _control(self, kind: str, index: int, line_number: int, block: ast.Block) -> None:
+        program, stack = self.program, self.stack
+        if kind in _OPENERS:
+            stack.append((kind, index))
+            if len(stack) > MAX_STRUCTURE_DEPTH:
+                program.structure_errors[index] = NcAlarmError(12641).located(
+                    program.name, line_number, block.number)
+        elif kind == "ELSE":
+            if not stack or stack[-1][0] != "IF" or stack[-1][1] in program.else_of:
+                program.structure_errors[index] = NcAlarmError(12640).located(
+                    program.name, line_number, block.number)
+            else:
+                program.else_of[stack[-1][1]] = index
+        elif kind in _CLOSERS:
+            if not stack or stack[-1][0] != _CLOSERS[kind]:
+                program.structure_errors[index] = NcAlarmError(12640).located(
+                    program.name, line_number, block.number)
+                return
+            _, opener = stack.pop()
+            program.partner[opener] = index
+            program.partner[index] = opener
+            if opener in program.else_of:
+                program.partner[program.else_of[opener]] = index
 
-    Found for ``nck check`` only (``jump_warnings``): at run time the jump
-    itself raises 14080 when it is taken. A target name that is also a
-    variable DEFined in the program (``GOTOF <string variable>``) is skipped.
-    """
-    variables = {decl.name for line in program.lines if line.block is not None
-                 for stmt in line.block.statements if isinstance(stmt, ast.Def) for decl in stmt.names}
-    for index, line in enumerate(program.lines):
-        if line.block is None:
-            continue
-        for stmt in line.block.statements:
-            gotos: list[ast.Goto] = []
-            if isinstance(stmt, ast.Goto):
-                gotos = [stmt]
-            elif isinstance(stmt, ast.IfGoto):
-                gotos = [stmt.goto]
-            elif isinstance(stmt, ast.Case):
-                gotos = [g for _, g in stmt.branches] + ([stmt.default] if stmt.default else [])
+    def finish(self) -> None:
+        """Unclosed structures, then jumps whose target cannot be found."""
+        program = self.program
+        for _kind, index in self.stack:
+            line = program.lines[index]
+            program.structure_errors.setdefault(index, NcAlarmError(12640).located(
+                program.name, line.number, line.block.number if line.block else None))
+        object.__setattr__(program, "_labels_all", self.labels_all)
+        self._check_jumps()
+
+    def _check_jumps(self) -> None:
+        """Jumps to labels or block numbers that cannot be found in their direction.
+
+        Found for ``nck check`` only (``jump_warnings``): at run time the jump
+        itself raises 14080 when it is taken. A target name that is also a
+        variable DEFined in the program (``GOTOF <string variable>``) is skipped.
+        """
+        program = self.program
+        for index, line_number, number, gotos in self.gotos:
             for goto in gotos:
-                if goto.kind == "GOTOC" or goto.expr is not None or goto.label in variables:
+                if goto.kind == "GOTOC" or goto.expr is not None or goto.label in self.variables:
                     continue
                 direction = {"GOTOF": "F", "GOTOB": "B", "GOTO": "FB"}[goto.kind]
                 if goto.number is not None:
@@ -268,7 +414,7 @@ def _check_jumps(program: Program) -> None:
                     found = program.find_label(goto.label or "", index, direction)
                 if found is None:
                     program.jump_warnings.setdefault(index, NcAlarmError(14080, goto.target_text).located(
-                        program.name, line.number, line.block.number))
+                        program.name, line_number, number))
 
 
 def _check_gcodes(block: ast.Block) -> NcAlarmError | None:
@@ -284,12 +430,3 @@ def _check_gcodes(block: ast.Block) -> NcAlarmError | None:
                 return NcAlarmError(12060, number)
             seen[number] = stmt.code
     return None
-
-
-def _first_code_line(program: Program, upto: int) -> int:
-    """Index of the first line up to ``upto`` that has statements."""
-    for index in range(upto + 1):
-        block = program.lines[index].block
-        if block is None or block.statements:
-            return index
-    return upto

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
 import tracemalloc
 
 import pytest
@@ -99,9 +101,26 @@ def _load_peak_bytes(lines: int) -> int:
     return peak
 
 
-@pytest.mark.xfail(reason="load_program parses every block of a program before it runs "
-                          "(nck/interp/program.py): memory grows ~0.8 KB per line, not streamed",
-                   strict=False)
 def test_program_memory_does_not_grow_with_its_length() -> None:
     small, large = _load_peak_bytes(2_000), _load_peak_bytes(8_000)
     assert large < 2 * small
+
+
+def test_a_million_line_program_is_scanned_not_kept_as_syntax_trees() -> None:
+    """A 1,000,000-line program costs its text plus a small index (measured in a fresh process)."""
+    script = (
+        "import resource, sys\n"
+        "from nck.interp.program import load_program\n"
+        "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+        "text = ''.join(f'N{i} G1 X{i % 100}.5 Y-{i % 7} F500\\n' for i in range(1_000_000)) + 'R1=R1+1\\nM30\\n'\n"
+        "program = load_program('MILLION.MPF', text, 'siemens', main=True)\n"
+        "assert len(program.lines) == 1_000_002 and program.lines[999_999].block.number == 999_999\n"
+        "assert not program.problems() and program.plain_run_end(0) == 1_000_000\n"
+        "grown = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base\n"
+        "print(grown, len(text))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    grown_kb, text_chars = (int(v) for v in done.stdout.split())
+    # the text itself (~33 MB) is needed; parsed syntax trees would add ~800 MB
+    assert grown_kb * 1024 < text_chars + 40_000_000

@@ -1,0 +1,113 @@
+"""A program's lines kept as text: parsed on demand, with a bounded cache.
+
+A long program (a CAM file of a million lines) must not become a million
+syntax trees. :class:`TextLines` keeps the program text and a line-start
+checkpoint every :data:`CHECKPOINT_LINES` lines; ``lines[i]`` finds line *i*
+from the checkpoint before it and parses it when it is asked for. Parsed lines
+are kept in a small cache (:data:`CACHE_LINES`), so a loop over a few hundred
+lines is parsed once, and the interpreter's per-line caches (``touches_modal``
+…) live as long as the line stays in the cache. Parsing is deterministic, so a
+line parsed again is the same line.
+
+Lines that failed to parse at load time keep their alarm (``errors``); they are
+not parsed again.
+"""
+
+from __future__ import annotations
+
+from array import array
+from typing import TYPE_CHECKING, Iterator
+
+from nck.errors import NcAlarmError
+from nck.lang.parser import parse_block
+
+if TYPE_CHECKING:
+    from nck.interp.program import Line
+
+CHECKPOINT_LINES = 64
+"""A line-start offset is kept for every this many lines."""
+
+CACHE_LINES = 1024
+"""Parsed lines kept per program."""
+
+
+class TextLines:
+    """The lines of a program text as a read-only sequence of :class:`~nck.interp.program.Line`.
+
+    ``text`` has its line ends normalised to ``\\n``. ``count`` is the number of
+    lines (a last empty line after the final line end does not count).
+    """
+
+    def __init__(self, text: str, count: int, checkpoints: array, errors: dict[int, NcAlarmError]) -> None:
+        self.text = text
+        self.count = count
+        self.checkpoints = checkpoints
+        self.errors = errors
+        self._cache: dict[int, Line] = {}
+        self._cursor = (0, 0)  # (line index, offset of its start): sequential access is O(1)
+
+    def __len__(self) -> int:
+        return self.count
+
+    def __iter__(self) -> Iterator[Line]:
+        for index in range(self.count):
+            yield self[index]
+
+    def __getitem__(self, index: int) -> Line:
+        if index < 0:
+            index += self.count
+        if not 0 <= index < self.count:
+            raise IndexError(index)
+        found = self._cache.get(index)
+        if found is not None:
+            return found
+        from nck.interp.program import Line
+
+        raw = self.raw(index)
+        error = self.errors.get(index)
+        if error is not None:
+            line = Line(index + 1, raw, None, error)
+        else:
+            try:
+                line = Line(index + 1, raw, parse_block(raw, index + 1))
+            except NcAlarmError as alarm:  # cannot happen for a line that parsed at load time
+                line = Line(index + 1, raw, None, alarm)
+        self.remember(index, line)
+        return line
+
+    def remember(self, index: int, line: Line) -> None:
+        """Keep a parsed line in the cache (the oldest one goes when it is full)."""
+        cache = self._cache
+        try:  # the HMI checks in a worker thread: tolerate a concurrent eviction
+            while len(cache) >= CACHE_LINES:
+                cache.pop(next(iter(cache)), None)
+        except (RuntimeError, StopIteration):
+            pass
+        cache[index] = line
+
+    # ------------------------------------------------------------------ text access
+    def start(self, index: int) -> int:
+        """Offset in ``text`` where line ``index`` starts (``index == count``: the end)."""
+        last, offset = self._cursor
+        if not last <= index < last + CHECKPOINT_LINES:
+            last = (index // CHECKPOINT_LINES) * CHECKPOINT_LINES
+            offset = self.checkpoints[index // CHECKPOINT_LINES] if last < self.count else len(self.text)
+        find = self.text.find
+        while last < index:
+            found = find("\n", offset)
+            offset = len(self.text) + 1 if found < 0 else found + 1
+            last += 1
+        self._cursor = (index, offset)
+        return offset
+
+    def raw(self, index: int) -> str:
+        """The source text of line ``index`` (without its line end)."""
+        begin = self.start(index)
+        end = self.text.find("\n", begin)
+        return self.text[begin:] if end < 0 else self.text[begin:end]
+
+    def chunk(self, first: int, stop: int) -> str:
+        """The text of lines ``first`` … ``stop - 1`` (line ends included except the last one's)."""
+        begin = self.start(first)
+        end = self.start(stop) - 1 if stop < self.count else len(self.text)
+        return self.text[begin:end]

@@ -1,0 +1,89 @@
+"""Plain motion blocks: one compiled pattern instead of the parser.
+
+A *plain* block is the bread and butter of CAM output::
+
+    [N<digits>] [G0|G1|G00|G01] [G90|G91] [X<v>] [Y<v>] [Z<v>] [F<v>] [; comment]
+
+with upper-case letters, the words in this order (the two G words in either
+order), whitespace between words optional, plain numbers (sign only on
+axis values, at most 9 digits before and after the point) and nothing else.
+Such a line is always valid for the block parser and means exactly: the G
+words, the axis words X/Y/Z with constant values, the feed word F. Everything
+else (lower case, ``X=…``, expressions, exponents, other addresses, a different
+word order) is simply *not plain* and goes through the lexer and parser, which
+decide and raise the alarms; so a plain match never changes what a line means.
+
+The values follow the parser's rules exactly: an unsigned mantissa without a
+point is an integer, a sign is applied as ``-1 * value`` (so ``X-0`` is +0.0
+while ``X-0.0`` is -0.0), and the axis value is then converted to float.
+"""
+
+from __future__ import annotations
+
+import re
+
+_NUM = r"(?:[0-9]{1,9}(?:\.[0-9]{0,9})?|\.[0-9]{1,9})"
+_WS = r"[ \t]*"
+_MOTION = r"(G0?[01])"
+_DISTANCE = r"(G9[01])"
+
+PLAIN_PATTERN = (
+    rf"{_WS}(?:N([0-9]{{1,9}}){_WS})?"
+    rf"(?:{_MOTION}{_WS}(?:{_DISTANCE}{_WS})?|{_DISTANCE}{_WS}(?:{_MOTION}{_WS})?)?"
+    rf"(?:X([+-]?{_NUM}){_WS})?"
+    rf"(?:Y([+-]?{_NUM}){_WS})?"
+    rf"(?:Z([+-]?{_NUM}){_WS})?"
+    rf"(?:F({_NUM}){_WS})?"
+    r"(?:;.*)?"
+)
+"""One plain line; groups: 1 N, 2 motion G, 3 distance G, 4 distance G, 5 motion G
+(one G of each group at most, in either order), 6 X, 7 Y, 8 Z, 9 F."""
+
+PLAIN_LINE = re.compile(PLAIN_PATTERN)
+"""Full-match this against one line."""
+
+PLAIN_LINES = re.compile(rf"^{PLAIN_PATTERN}$", re.MULTILINE)
+"""The same for every line of a text chunk (``findall`` → one tuple per plain line, '' for absent)."""
+
+NOT_PLAIN_LINE = re.compile("^(?!" + re.sub(r"\((?!\?)", "(?:", PLAIN_PATTERN) + "$).+$", re.MULTILINE)
+"""``finditer`` over a text → every line that is *not* plain (a plain line is never matched,
+so a scan allocates nothing for them)."""
+
+PLAIN_WORDS = re.compile(
+    r"^[ \t]*(?:N[0-9]+[ \t]*)?([^XYZF;\n]*)(?:X([^ \tYZF;\n]+))?[ \t]*(?:Y([^ \tZF;\n]+))?"
+    r"[ \t]*(?:Z([^ \tF;\n]+))?[ \t]*(?:F([^ \t;\n]+))?.*$",
+    re.MULTILINE,
+)
+"""Words of lines *known* to be plain (three times faster than :data:`PLAIN_LINES`):
+``findall`` → per line (G words, X, Y, Z, F), '' for absent."""
+
+G_CODES = {"G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G90": "G90", "G91": "G91"}
+"""Normalised G codes of a plain line."""
+
+
+def match_plain(line: str) -> re.Match[str] | None:
+    """The match of a plain line, or None."""
+    return PLAIN_LINE.fullmatch(line)
+
+
+def is_plain(line: str) -> bool:
+    """True if ``line`` is a plain block (valid without the parser)."""
+    return PLAIN_LINE.fullmatch(line) is not None
+
+
+def axis_value(text: str) -> float:
+    """The float an axis word's text (``-12.5``, ``7``, ``+.5``) means to the interpreter."""
+    negative = text[:1] == "-"
+    mantissa = text[1:] if text[:1] in "+-" else text
+    value: float | int = float(mantissa) if "." in mantissa else int(mantissa)
+    return float(-1 * value if negative else value)
+
+
+def feed_value(text: str) -> float:
+    """The float of an F word's text (no sign)."""
+    return float(float(text) if "." in text else int(text))
+
+
+def has_statements(found: re.Match[str]) -> bool:
+    """True if the plain line has any word besides its block number."""
+    return any(found.group(i) is not None for i in range(2, 10))

@@ -1,0 +1,174 @@
+"""The plain-block fast path of ``nck check`` is the general interpreter, only faster.
+
+Every program runs twice through :func:`nck.headless.interpret_only`: once
+block by block (``keep_commands=True`` switches the batches off) and once with
+runs of plain blocks planned as batches (:mod:`nck.interp.plain_run`). Status,
+block count, machine time (bit for bit), alarms with their line and block
+number, and the modal state afterwards must be identical.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nck.headless import interpret_only
+from nck.interp import plain_run
+from nck.interp import program as program_module
+from nck.interp.sources import MemorySource
+from nck.lang.plain import is_plain
+from nck.lang.parser import parse_block
+from nck.machine import load_machine
+from nck.ncdata import NcData
+
+MACHINE = load_machine()
+
+
+def _run(text: str, fast: bool, **limits: Any) -> dict[str, Any]:
+    program_module._RECENT.clear()
+    result = interpret_only(MACHINE, MemorySource(), NcData(), "PLAIN.MPF", text=text,
+                            keep_commands=not fast, **limits)
+    interp = result.interpreter
+    assert interp is not None
+    modal = interp.modal
+    geo = modal.geometry
+    return {
+        "status": result.status,
+        "blocks": result.blocks,
+        "machine_time_s": result.machine_time_s,
+        "alarms": [(a.number, a.file, a.line, a.n, a.params) for a in result.alarms],
+        "gcodes": dict(modal.gcodes),
+        "position_wcs": dict(modal.position_wcs),
+        "position_mcs": dict(modal.position_mcs),
+        "feed": modal.feed,
+        "geometry": None if geo is None else (dict(geo.wcs_mm), geo.tangent),
+        "state": (interp._state.blocks, interp._state.finished,
+                  [(f.pc, f.def_open) for f in interp._state.frames]),
+    }
+
+
+def _same(text: str, **limits: Any) -> dict[str, Any]:
+    general, fast = _run(text, False, **limits), _run(text, True, **limits)
+    assert fast == general, text
+    return fast
+
+
+# ----------------------------------------------------------------------------- programs
+def _number(draw: Any, signed: bool) -> str:
+    whole = draw(st.integers(0, 2000))
+    style = draw(st.sampled_from(["int", "dec", "dec", "dot", "lead", "zero"]))
+    text = {"int": f"{whole}", "dec": f"{whole}.{draw(st.integers(0, 999)):03d}", "dot": f"{whole}.",
+            "lead": f".{draw(st.integers(0, 99))}", "zero": draw(st.sampled_from(["0", "0.0", "00.000"]))}[style]
+    if signed:
+        text = draw(st.sampled_from(["", "", "-", "+"])) + text
+    return text
+
+
+@st.composite
+def plain_lines(draw: Any) -> str:
+    words: list[str] = []
+    if draw(st.booleans()):
+        words.append(f"N{draw(st.integers(0, 99999))}")
+    gwords = []
+    if draw(st.integers(0, 3)) == 0:
+        gwords.append(draw(st.sampled_from(["G0", "G1", "G00", "G01"])))
+    if draw(st.integers(0, 8)) == 0:
+        gwords.append(draw(st.sampled_from(["G90", "G91"])))
+    words += draw(st.permutations(gwords))
+    for axis in "XYZ":
+        if draw(st.integers(0, 4)):
+            words.append(axis + _number(draw, True))
+    if draw(st.integers(0, 12)) == 0:
+        words.append("F" + draw(st.sampled_from(["0", "100", "2500.5", ".5", "0.0"])))
+    separator = draw(st.sampled_from([" ", " ", "\t", ""]))
+    line = separator.join(words)
+    if draw(st.integers(0, 15)) == 0:
+        line += " ;cut X" + _number(draw, True)
+    return line
+
+
+SETUP = [
+    "G90", "G91", "G0", "G1", "F1000", "G1 F200", "G70", "G71", "G700", "G54", "G500",
+    "TRANS X10 Y-5.5 Z0.25", "ATRANS Z3", "SCALE X2 Y2", "SCALE X0.5", "MIRROR X0", "ROT Z30",
+    "$TC_DP1[1,1]=120\n$TC_DP3[1,1]=50.5\nT1 D1 M6", "G17", "G19", "G64", "G60", "G95 F0.1 S100 M3",
+    "G94", "G41 G1 X0 Y0 F100", "RNDM=1", "R1=0", "M3 S1000",
+]
+MIXED = [
+    "R1=R1+1", "G2 X10 Y0 CR=5", "G1 X=R1", "CHF=0.5", "G40", "G4 F0.1", "M1", "G17 G1 X1", "MSG(\"HI\")",
+    "G1 X1 X2", "G0 G1 X1", "X1..5", "G1 F-1 X1", "g1 x5", "G91 G1 X1", "G90", "M30", "T2", "D0",
+    "IF R1>3 GOTOF DONE", "DONE:", "GOTOB START", "START:", "G91 X1", "SUPA G0 Z0", "G53 X5",
+]
+
+
+@st.composite
+def programs(draw: Any) -> str:
+    lines = draw(st.lists(st.sampled_from(SETUP), max_size=4))
+    body = draw(st.lists(st.one_of(plain_lines(), plain_lines(), plain_lines(), st.sampled_from(MIXED)),
+                         min_size=1, max_size=60))
+    lines += body
+    if draw(st.booleans()):
+        lines.append("M30")
+    return "\n".join(lines) + draw(st.sampled_from(["", "\n"]))
+
+
+# ----------------------------------------------------------------------------- properties
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs())
+def test_fast_path_gives_the_general_result(text: str) -> None:
+    _same(text)
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs(), st.integers(1, 80), st.floats(0.0005, 3.0))
+def test_fast_path_stops_at_the_same_block_budget_and_time(text: str, blocks: int, timeout: float) -> None:
+    _same(text, max_blocks=blocks)
+    _same(text, timeout_s=timeout)
+
+
+@settings(max_examples=200, deadline=None)
+@given(plain_lines())
+def test_a_plain_line_is_valid_for_the_parser(line: str) -> None:
+    assert is_plain(line)
+    block = parse_block(line, 1)
+    assert block.skip_level is None and block.label is None
+
+
+# ----------------------------------------------------------------------------- examples
+def _cam(lines: int, g91: bool = False) -> str:
+    body = [f"N{10 * i} G1 X{i * 0.25:.3f} Y{-(i % 7) * 1.5:.3f} Z{(i % 3) - 1}" for i in range(lines)]
+    return "\n".join(["G91 G17 G64 F3000" if g91 else "G90 G17 G64 F3000", *body, "M30"]) + "\n"
+
+
+def test_a_cam_program_runs_in_batches(monkeypatch: pytest.MonkeyPatch) -> None:
+    committed: list[int] = []
+    original = plain_run.PlainBatch.commit
+
+    def spy(self: plain_run.PlainBatch, count: int) -> None:
+        committed.append(count)
+        original(self, count)
+
+    monkeypatch.setattr(plain_run.PlainBatch, "commit", spy)
+    result = _same(_cam(3000))
+    assert result["status"] == "ended" and result["blocks"] == 3002
+    assert sum(committed) >= 2999  # everything but the header and M30
+
+
+@pytest.mark.parametrize("g91", [False, True])
+def test_cam_program_with_offsets_tool_and_inch(g91: bool) -> None:
+    header = "$TC_DP1[1,1]=120\n$TC_DP3[1,1]=42.125\nT1 D1 M6\nTRANS X12.5 Y-3 Z100\nG70\n"
+    _same(header + _cam(500, g91), max_blocks=400)
+
+
+def test_alarms_inside_a_run_are_found_at_their_line() -> None:
+    text = "G1 X1 F100\nG1 X2\nG1 X3 F0\nG1 X4\n"
+    result = _same(text)
+    assert [(a[0], a[2]) for a in result["alarms"]] == [(14800, 3)]
+    text = "G0 X1\nG0 X2\nG1 X3\n"
+    assert [(a[0], a[2]) for a in _same(text)["alarms"]] == [(10860, 3)]
+
+
+def test_negative_zero_and_number_forms() -> None:
+    _same("G1 F100\nX-0 Y-0.0 Z+0\nX5. Y.5 Z-.5\nX-0\nG91 X-0.0\nX1 Y-0\n", max_blocks=6)
