@@ -45,6 +45,7 @@ from hmi.area import AreaBase
 from hmi.bridge import NckBridge
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
+from hmi.program_lines import ProgramLines
 from hmi.messages import CommandRejected, NckStatusChanged
 from hmi.startup import build_session
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -163,13 +164,36 @@ class HmiApp(MachineControlPanel, App):
         self.init_panel()
         self._on_quit = on_quit
         self.nc_session: Any = None  # hmi.startup.NcDataSession when running on a data directory
-        self._program_cache: dict[str, tuple[str, tuple[str, ...]]] = {}
+        self._program_cache: dict[str, ProgramLines] = {}
+        self._held_updates = 0
         for area in AREAS:
             self.add_mode(area.id, area_screen_factory(area))
 
     def get_theme_variable_defaults(self) -> dict[str, str]:
         """The HMI's own colour variables (``$softkey-background`` …), from the theme."""
         return dict(SINUMERIK_THEME.variables)
+
+    # -- repaint hold on area switches ------------------------------------------------------
+    def delay_update(self, delay: float = 0.05) -> None:
+        """Hold repaints while an area switch is under way (Textual calls this in ``switch_mode``).
+
+        Textual holds them for a fixed 50 ms to hide the transition; here the hold
+        ends as soon as the new area has taken the newest status
+        (:meth:`release_held_update`, called from ``AreaBase.on_screen_resume``),
+        with ``delay`` only as the fallback for screens that never call it.
+        """
+        self._begin_batch()
+        self._held_updates += 1
+        self.set_timer(delay, self.release_held_update, name="delay_update")
+
+    def release_held_update(self) -> None:
+        """End one repaint hold of :meth:`delay_update` (no-op when none is held)."""
+        if self._held_updates <= 0:
+            return
+        self._held_updates -= 1
+        self._end_batch()
+        if not self._batch_count:
+            self.screen.refresh()
 
     # -- start ---------------------------------------------------------------------------
     def on_mount(self) -> None:
@@ -221,6 +245,8 @@ class HmiApp(MachineControlPanel, App):
     def on_nck_status_changed(self, message: NckStatusChanged) -> None:
         """Hand a new snapshot to the area screens of the current stack."""
         self.latest_status = message.status
+        if not self.is_running:  # shutting down: the screens are being taken apart
+            return
         for screen in self.screen_stack:
             if isinstance(screen, AreaBase):
                 try:
@@ -246,6 +272,8 @@ class HmiApp(MachineControlPanel, App):
     def set_hint(self, text: str) -> None:
         """Write the dialog line of the current area (and remember it for other areas)."""
         self.hint = text
+        if not self.is_running:
+            return
         for screen in self.screen_stack:
             if isinstance(screen, AreaBase):
                 screen.show_hint(text)
@@ -277,8 +305,11 @@ class HmiApp(MachineControlPanel, App):
                     return []
         return []
 
-    def program_text(self, name: str) -> tuple[str, tuple[str, ...]] | None:
-        """``(display name, lines)`` of a part program from the kernel's program source, or None."""
+    def program_text(self, name: str) -> ProgramLines | None:
+        """The lines of a part program from the kernel's program source, or None.
+
+        The last program read is kept (the block window asks at every refresh).
+        """
         cached = self._program_cache.get(name)
         if cached is not None:
             return cached
@@ -292,7 +323,7 @@ class HmiApp(MachineControlPanel, App):
                 found = None
         if found is None:
             return None
-        result = (str(found[0]), tuple(str(found[1]).splitlines()))
+        result = ProgramLines(str(found[0]), str(found[1]))
         self._program_cache = {name: result}
         return result
 

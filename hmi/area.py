@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, ClassVar
 
+from textual import events
 from textual.actions import parse as parse_action
 from textual.app import ComposeResult
 from textual.containers import Container, Horizontal
@@ -221,7 +222,19 @@ class AreaBase(Screen):
         self.show_status(self.hmi.latest_status)
         self.show_hint(self.hmi.hint)
 
-    def on_screen_resume(self) -> None:
-        """Coming back to the area (area key): show the newest snapshot at once."""
+    def on_screen_resume(self, event: events.ScreenResume | None = None) -> None:
+        """Coming back to the area (area key): show the newest snapshot at once.
+
+        Textual calls this with the event (subclasses that extend it call it
+        without). The area's styles need no fresh cascade: nothing restyles a
+        hidden area except its own class changes, which Textual applies as they
+        happen; skipping the whole-screen restyle makes an area key much faster.
+        Once the area shows the newest snapshot the app may repaint.
+        """
         self.show_status(self.hmi.latest_status)
         self.show_hint(self.hmi.hint)
+        if event is not None:
+            event.refresh_styles = False
+            release = getattr(self.app, "release_held_update", None)
+            if callable(release):
+                release()

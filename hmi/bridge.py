@@ -79,6 +79,14 @@ class NckBridge:
             target.set_interval(REFRESH_PERIOD_S, self._on_timer, name="nck-bridge")
         self.poll(force=True)
 
+    def start_realtime(self) -> None:
+        """Start advancing the kernel with the wall clock now (after a test set the scene)."""
+        if self._target is None or self.realtime:
+            return
+        self.realtime = True
+        self._last_wall = self._clock()
+        self._target.set_interval(REFRESH_PERIOD_S, self._on_timer, name="nck-bridge")
+
     def _on_timer(self) -> None:
         now = self._clock()
         last = self._last_wall if self._last_wall is not None else now

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from typing import Sequence
+
 from rich.text import Text
 from textual.widgets import Static
 
 from nck.status import BlockView, ChannelStatus
+
+from hmi.program_lines import ProgramLines
 
 BEFORE = 3
 """Blocks shown before the current one."""
@@ -13,10 +17,8 @@ BEFORE = 3
 
 def block_lines(blocks: tuple[BlockView, ...], current: BlockView | None, height: int) -> Text:
     """Render ``height`` lines of ``blocks`` around ``current`` (highlighted)."""
-    text = Text()
     if not blocks:
-        text.append(" (no program)\n", style="dim")
-        return text
+        return _window_text((), None)
     index = 0
     if current is not None:
         for i, block in enumerate(blocks):
@@ -24,9 +26,18 @@ def block_lines(blocks: tuple[BlockView, ...], current: BlockView | None, height
                 index = i
                 break
     start = max(0, min(index - BEFORE, len(blocks) - height))
-    for i in range(start, min(len(blocks), start + height)):
-        block = blocks[i]
-        if current is not None and i == index:
+    shown = blocks[start:start + height]
+    return _window_text(shown, index - start if current is not None else None)
+
+
+def _window_text(shown: Sequence[BlockView], highlight: int | None) -> Text:
+    """The block window's text: ``shown`` with the block at ``highlight`` marked."""
+    text = Text()
+    if not shown:
+        text.append(" (no program)\n", style="dim")
+        return text
+    for i, block in enumerate(shown):
+        if i == highlight:
             text.append(f"▶{block.text}".ljust(120)[:120] + "\n", style="bold black on #f39200")
         else:
             text.append(f" {block.text}\n")
@@ -37,10 +48,22 @@ def _same_file(a: str, b: str) -> bool:
     return a.replace("\\", "/").rsplit("/", 1)[-1].upper() == b.replace("\\", "/").rsplit("/", 1)[-1].upper()
 
 
-def program_views(name: str, lines: tuple[str, ...]) -> tuple[BlockView, ...]:
+def program_views(name: str, lines: Sequence[str]) -> tuple[BlockView, ...]:
     """The lines of a program text as block views (blank lines left out)."""
     return tuple(BlockView(name, number, text.rstrip())
                  for number, text in enumerate(lines, start=1) if text.strip())
+
+
+def program_window(program: ProgramLines, current: BlockView | None, height: int) -> Text:
+    """Render ``height`` blocks of ``program`` around ``current`` (as :func:`block_lines` would).
+
+    Only the lines on display are looked at, so a program of hundreds of
+    thousands of lines costs no more per refresh than a short one.
+    """
+    shown, position = program.blocks_around(current.line if current is not None else None,
+                                            BEFORE, height)
+    views = [BlockView(program.name, index + 1, program[index].rstrip()) for index in shown]
+    return _window_text(views, position if current is not None else None)
 
 
 class BlockWindow(Static):
@@ -56,14 +79,17 @@ class BlockWindow(Static):
         self.height_lines = height_lines
         self._key: object = None
 
-    def show(self, channel: ChannelStatus, program: tuple[str, tuple[str, ...]] | None = None) -> None:
+    def show(self, channel: ChannelStatus, program: ProgramLines | None = None) -> None:
         """Redraw when the program or the current block changed."""
         current = channel.current_block
-        blocks = channel.blocks
-        if program is not None and (current is None or _same_file(current.file, program[0])):
-            blocks = program_views(*program)
-        key = (blocks, current, self.height_lines)
+        if program is not None and (current is None or _same_file(current.file, program.name)):
+            key: object = (id(program), current, self.height_lines)
+            if key != self._key:
+                self._key = key
+                self.update(program_window(program, current, self.height_lines), layout=False)
+            return
+        key = (channel.blocks, current, self.height_lines)
         if key == self._key:
             return
         self._key = key
-        self.update(block_lines(blocks, current, self.height_lines), layout=False)
+        self.update(block_lines(channel.blocks, current, self.height_lines), layout=False)
