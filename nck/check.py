@@ -87,7 +87,10 @@ def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
     The cache makes re-checking an edited program cost only the changed lines.
     """
     from nck.lang.parser import parse_block
+    from nck.lang.plain import is_plain
 
+    if is_plain(line):  # plain motion blocks are valid without the parser
+        return None
     try:
         parse_block(line, 1)
     except NcAlarmError as error:

@@ -172,3 +172,22 @@ def test_alarms_inside_a_run_are_found_at_their_line() -> None:
 
 def test_negative_zero_and_number_forms() -> None:
     _same("G1 F100\nX-0 Y-0.0 Z+0\nX5. Y.5 Z-.5\nX-0\nG91 X-0.0\nX1 Y-0\n", max_blocks=6)
+
+
+def test_the_editor_check_skips_the_parser_for_plain_lines(monkeypatch: pytest.MonkeyPatch) -> None:
+    from nck import check
+
+    parsed: list[str] = []
+    import nck.lang.parser as parser_module
+
+    original = parser_module.parse_block
+
+    def spy(text: str, line: int = 1) -> Any:
+        parsed.append(text)
+        return original(text, line)
+
+    monkeypatch.setattr(parser_module, "parse_block", spy)
+    check._line_problem.cache_clear()
+    alarms = list(check.iter_syntax_alarms("G1 X1 Y2 F100\nN20 G0 Z-5\nX1..5\nR1=2\n"))
+    assert [(a.number, a.line) for a in alarms] == [(12080, 3)]
+    assert parsed == ["X1..5", "R1=2"]
