@@ -56,6 +56,8 @@ START_BLOCK = "G0 G291 G18 G95 DIAMON"
 _SYSTEM_A = {"G90": "G77", "G92": "G78", "G94": "G79", "G50": "G92", "G98": "G94", "G99": "G95",
              "G50.3": "G92.1"}
 _NOT_IN_SYSTEM_B = {"G50", "G51"}  # ISO M scaling; in ISO T only system A knows G50 (preset)
+_RESTORED = ("iso", "absolute", "per_rev", "motion", "cycle")
+"""Translator state put back at the end of a contour that G71–G73 jumped over."""
 _GROUP_1 = {"G00", "G01", "G02", "G03", "G0", "G1", "G2", "G3"}
 _THREAD = {"G32", "G33"}
 _CYCLES = {f"G{n}" for n in range(70, 77)}
@@ -130,11 +132,9 @@ def after_line(modal: Any, line: Any) -> None:
         return
     label, saved = pending
     line.blocks = list(line.blocks) + [f"{label}:"]
-    for name, value in vars(saved).items():
-        if name != "lathe":
-            setattr(modal, name, value)
-    lathe.position = saved.lathe.position
-    lathe.single, lathe.thread = saved.lathe.single, saved.lathe.thread
+    for name in _RESTORED:
+        setattr(modal, name, saved[name])
+    lathe.position, lathe.single, lathe.thread, lathe.css = saved["lathe"]
 
 
 def _g(word: Word) -> str:
@@ -457,10 +457,8 @@ def _contour_cycle(code: int, address: dict[str, Word], modal: Any, settings: An
         lathe.labels += 1
         label = f"ISO_CONTOUR_END_{lathe.labels}"
         blocks.append(f"GOTOF {label}")
-        saved = copy.copy(modal)
-        saved.lathe = copy.copy(lathe)
-        saved.lathe.position = start
-        saved.cycle = copy.deepcopy(modal.cycle)
+        saved = {name: copy.deepcopy(getattr(modal, name)) for name in _RESTORED}
+        saved["lathe"] = (start, lathe.single, lathe.thread, lathe.css)
         lathe.pending[last] = (label, saved)
     return blocks
 

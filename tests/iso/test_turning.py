@@ -307,3 +307,13 @@ def test_g71_start_point_inside_the_contour_raises():
     text = ("G00 X30. Z2.\nG71 P10 Q30 F0.2\nN10 G00 X20.\nN20 G01 Z-20.\nN30 X52. Z-30.\nM30\n")
     assert run_lathe(text).alarms[0].number == 61607
     assert run_lathe(text.replace("X30. Z2.", "X52. Z2.")).status == "ended"
+
+
+def test_after_a_jumped_contour_the_translator_is_back_at_the_cycle_start():
+    # the contour ends in G91 somewhere else; the program continues from A in G90
+    text = ("G00 X50. Z2.\nG71 P10 Q30 F0.2\nN10 G00 X20.\nN20 G01 Z-20.\nN30 G91 X10. W-5.\n"
+            "N40 G00 U10. W3.\nN50 Z10.\nM30\n")
+    result = run_lathe(text)
+    assert result.status == "ended", result.alarms
+    assert points(result, 7) == [("G0", 60.0, 5.0)]
+    assert points(result, 8) == [("G0", 60.0, 10.0)]
