@@ -315,5 +315,5 @@ def test_after_a_jumped_contour_the_translator_is_back_at_the_cycle_start():
             "N40 G00 U10. W3.\nN50 Z10.\nM30\n")
     result = run_lathe(text)
     assert result.status == "ended", result.alarms
-    assert points(result, 7) == [("G0", 60.0, 5.0)]
-    assert points(result, 8) == [("G0", 60.0, 10.0)]
+    assert points(result, 6) == [("G0", 60.0, 5.0)]
+    assert points(result, 7) == [("G0", 60.0, 10.0)]
