@@ -41,8 +41,8 @@ display always shows G80; groups 11/16/17/22 (G51/G68/G16/G51.1) show their rese
 G68/G51.1 act in the programmable frame, not in channel base frames 1–3; mirroring of
 non-geometry axes; polar coordinates in drilling cycles; ``$P_AP``; a Siemens
 REPEAT with ISO block numbers.
-ISO T not modelled: system C; G34; the G76 chamfer (pull-out) and the G74/G75
-relief at the bottom; contours with pockets (G71/G72 type II); tool nose radius
+ISO T not modelled: system C; G34; the G74/G75 relief at the bottom; the ISO
+group-1 display of G77–G79; contours with pockets (G71/G72 type II); tool nose radius
 compensation inside the cycles; G10 P creating a missing offset; a cycle start
 point that is not known from the program text (after G28, M98, Siemens blocks:
 61607).

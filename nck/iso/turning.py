@@ -384,7 +384,8 @@ def _run_cycle(code: int, address: dict[str, Word], modal: Any, settings: Any,
         taper = value(address["R"]) if "R" in address else 0.0
         lead = _raw_number(address["F"], settings, 0.0001) if "F" in address else 0.0
         blocks = tc.multi_thread(start, end, taper, height, first, stored["minimum"],
-                                 stored["allowance"], int(stored["finish"]), stored["angle"], lead)
+                                 stored["allowance"], int(stored["finish"]), stored["angle"], lead,
+                                 stored["chamfer"])
     if extra and blocks:
         blocks.insert(0, " ".join(extra))
     lathe.position = start

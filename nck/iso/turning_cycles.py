@@ -22,8 +22,9 @@ choices:
 * G76 multi-pass threading: cut depths ``Δd·√n`` (at least ``Δdmin`` more each
   pass) down to ``k − d``, then the finishing depth ``k`` ``m`` times; with a
   tool angle the infeed follows one flank (start and end Z move back by
-  ``depth·tan(angle/2)``). Each pass: rapid to depth, G33 to the end, rapid out
-  to the start X, rapid back to the start Z.
+  ``depth·tan(angle/2)``). Each pass: rapid to depth, G33 to the end (with a
+  run-out ``rr`` the last ``rr/10`` leads at 45°), rapid out to the start X,
+  rapid back to the start Z.
 * G77/G78/G79 single cycles (system A: G90/G92/G94): rapid in, cut (G1, G33
   for G78), feed (G78: rapid) out, rapid back; ``R`` is the taper (radius
   difference for G77/G78, Z difference for G79).
@@ -241,8 +242,13 @@ def thread_depths(height: float, first: float, minimum: float, allowance: float)
 
 def multi_thread(start_zx: tuple[float, float], end_zx: tuple[float, float], taper_r: float,
                  height: float, first: float, minimum: float, allowance: float,
-                 finish_passes: int, angle_deg: float, lead: float) -> list[str]:
-    """G76 blocks (external thread if the start X is above the end X, else internal)."""
+                 finish_passes: int, angle_deg: float, lead: float,
+                 chamfer_tenths: float = 0.0) -> list[str]:
+    """G76 blocks (external thread if the start X is above the end X, else internal).
+
+    ``chamfer_tenths`` (P digits rr) is the thread run-out in 0.1 leads: the last
+    ``rr/10 · lead`` of every pass leaves the thread at 45° (a second G33 block).
+    """
     if lead <= 0:
         raise NcAlarmError(ALARM_PITCH, "F")
     za, xa = start_zx
@@ -253,12 +259,18 @@ def multi_thread(start_zx: tuple[float, float], end_zx: tuple[float, float], tap
     depths += [height] * max(finish_passes, 1)
     travel = 1.0 if ze > za else -1.0
     flank = math.tan(math.radians(angle_deg) / 2.0)
+    run_out = chamfer_tenths / 10.0 * lead
     blocks: list[str] = []
     for depth in depths:
         shift = -travel * depth * flank
         cut_r = root_r + outward * (height - depth)
         blocks.append(f"G0 {_x(2 * (cut_r + taper_r))} {_z(za + shift)}")
-        blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift)} K{_fmt(lead)}")
+        if run_out > EPS:
+            blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift - travel * run_out)} K{_fmt(lead)}")
+            blocks.append(f"G33 {_x(2 * (cut_r + outward * run_out))} {_z(ze + shift)} "
+                          f"K{_fmt(lead)}")
+        else:
+            blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift)} K{_fmt(lead)}")
         blocks.append(f"G0 {_x(xa)}")
         blocks.append(f"G0 {_z(za)}")
     return blocks

@@ -317,3 +317,14 @@ def test_after_a_jumped_contour_the_translator_is_back_at_the_cycle_start():
     assert result.status == "ended", result.alarms
     assert points(result, 6) == [("G0", 60.0, 5.0)]
     assert points(result, 7) == [("G0", 60.0, 10.0)]
+
+
+def test_g76_run_out_leaves_the_thread_at_45_degrees():
+    # P01 10 00: one finishing pass, run-out 1.0 lead (= 2 mm at F2), tool angle 0
+    text = "G00 X24. Z5.\nG76 P011000 Q50 R0\nG76 X18. Z-20. P1000 Q1000 F2.\nM30\n"
+    result = run_lathe(text)
+    assert result.status == "ended", result.alarms
+    threads = [(round(m.end_wcs["X"], 3), round(m.end_wcs["Z"], 3), m.lead_mm)
+               for m in result.segments if m.kind == "G33"]
+    # one rough pass at the full height, one finishing pass: each G33 to Z-18, then out to Z-20
+    assert threads == [(18.0, -18.0, 2.0), (22.0, -20.0, 2.0)] * 2
