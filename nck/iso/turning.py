@@ -25,7 +25,9 @@ What is handled here:
   between the call and the contour end are jumped over); G70 runs the contour
   and continues after its own block. Settings blocks (``G71 U R``, ``G72 W R``,
   ``G73 U W R``, ``G74 R``, ``G76 P Q R``) move nothing and keep their values
-  for later calls of the same cycle.
+  for later calls of the same cycle. In G74–G76, P and Q written without a
+  decimal point count µm whatever MD 10884 says (the Fanuc formats); G76
+  ``P<mm><rr><aa>`` holds finishing passes, run-out (0.1 leads) and tool angle.
 
 The cycle start point A is the position the translator tracks from the
 program text (programmed X/Z since the last preset or absolute move); when it
