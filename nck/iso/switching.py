@@ -38,6 +38,11 @@ _HEAD = re.compile(r"^\s*(?:/\d?\s*)?(?:N\d+\s*)?([A-Z_][A-Z0-9_]*)(\s*:)?", re.
 def siemens_statement(raw: str) -> bool:
     """True if the ISO-mode line ``raw`` is a Siemens control structure, branch, jump label
     or CALL/MCALL/PCALL that runs unchanged."""
+    head = raw.lstrip(" \t/0123456789")
+    if head[:1] in ("N", "n"):
+        head = head[1:].lstrip(" \t0123456789")
+    if not (head[:2].isalpha() or head[:1] == "_"):
+        return False  # ISO address words: one letter, then a number
     match = _HEAD.match(raw)
     if not match:
         return False
