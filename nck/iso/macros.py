@@ -15,8 +15,9 @@ with G65, G66, G67 or G05):
   (the Siemens MCALL rule), not in the G66 block and not after blocks
   without motion. ``G67`` (or a new G66) cancels it.
 * ``G05 P<prog> L<n>`` calls the program ``<prog>`` as written (no padding);
-  G05 without P, ``P0``/``P1`` and G05.1 call CYCLE305 with the block's
-  addresses in ``$C_…``.
+  G05 without P, ``P0``/``P1`` and G05.1 would call CYCLE305, which this
+  control does not have: they are skipped without an alarm. The block's
+  other words run as usual.
 * Only one call per block: M98, G65, G66 and G05 together raise 12722, and
   so does G05 while a fixed cycle is modal.
 
@@ -215,18 +216,25 @@ def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings) -> lis
 
 
 def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> list[str]:
+    """G05 P<prog> L<n> calls ``<prog>`` (not padded); the other forms (no P, P0/P1,
+    G05.1) would call CYCLE305, which this control does not have: skipped without an
+    alarm. Every other word of the block runs first, as in any block."""
+    from nck.iso.translate import _translate_words
+
     p_words = [w for w in words if w.letter == "P"]
     codes = _names(words)
     program = None
     if "G05" in codes and p_words and _whole(p_words[-1], "P") > 1:
         program = p_words[-1].text.lstrip("+")
-    if program is None:  # HSC / reserved forms: the shell cycle with every address in $C_
-        writes = " ".join(argument_writes([w for w in words if w.letter != "G"], not modal.absolute))
-        return [f'{number}{writes} CALL "CYCLE305"']
+    rest = [w for w in words if w.letter not in ("P", "L")
+            and not (w.letter == "G" and _is_g05(_names([w])[0]))]
+    blocks = _translate_words(rest, modal, settings) if any(w.letter != "N" for w in rest) else []
+    if program is None:
+        return blocks or ([number.strip()] if number else [])
     if len(program) > 10:
         raise NcAlarmError(12080, f"P{program}")
     passes = _passes(words)
-    return [f'{number}CALL "{program}"' + (f" P{passes}" if passes > 1 else "")]
+    return blocks + [f'{number}CALL "{program}"' + (f" P{passes}" if passes > 1 else "")]
 
 
 # ============================================================================ interpreter

@@ -113,9 +113,18 @@ def test_g05_p_calls_program_unpadded():
     assert [point["X"] for _, point in ends(result)] == [1.0, 2.0, 3.0]
 
 
-def test_g05_hsc_form_calls_cycle305():
-    result = run_iso("G05 P1 X1.\nM30\n")
-    assert result.alarms[0].number == 14011  # CYCLE305 is not part of this control
+@pytest.mark.parametrize("block", ["G05 X1.", "G05 P1 X1.", "G05 P0 X1.", "G05.1 P1 X1."])
+def test_g05_hsc_forms_are_skipped_and_the_words_run(block):
+    result = run_iso(block + "\nM30\n")  # CYCLE305 is not part of this control
+    assert result.status == "ended", result.alarms
+    assert ends(result) == [(1, {"X": 1.0, "Y": 0.0, "Z": 0.0})]
+
+
+def test_g05_p_call_runs_the_block_words_first():
+    result = run_iso("G05 P10123 Y2.\nM30\n", {"10123": "G00 X1.\nM99\n"})
+    assert result.status == "ended", result.alarms
+    assert [point for _, point in ends(result)] == [{"X": 0.0, "Y": 2.0, "Z": 0.0},
+                                                    {"X": 1.0, "Y": 2.0, "Z": 0.0}]
 
 
 def test_g65_without_p_or_with_five_digits_is_rejected():
