@@ -149,7 +149,7 @@ class Interpreter:
             spindle_speed_rpm=modal.spindle_speed_rpm,
             spindle_state=modal.spindle_state,
             aux=dict(modal.aux),
-            iso_gcodes=_iso_view(modal.gcodes, self.dialect),
+            iso_gcodes=_iso_view(modal.gcodes, self.dialect, modal.geometry),
         )
 
     def r(self, index: int) -> float:
@@ -525,12 +525,16 @@ _MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Case, ast.SectionRepeat, a
 _MAIN_RUN_PREFIXES = ("$A", "$V", "$$")
 
 
-def _iso_view(gcodes: Mapping[int, str], dialect: str) -> dict[int, str]:
+def _iso_view(gcodes: Mapping[int, str], dialect: str, geometry: Any = None) -> dict[int, str]:
     """ISO codes for the G-group display while ISO mode (G291) is active, else empty."""
     if gcodes.get(47) != "G291":
         return {}
     from nck.iso.display import iso_gcodes
-    return iso_gcodes(gcodes, "iso-t" if dialect == "iso-t" else "iso-m")
+    view = iso_gcodes(gcodes, "iso-t" if dialect == "iso-t" else "iso-m")
+    if dialect != "iso-t":  # ISO M frame groups 11/16/17/22 from the geometry state
+        from nck.iso.frames import display_codes
+        view.update(display_codes(geometry))
+    return view
 
 
 def _reads_main_run_data(block: ast.Block) -> bool:

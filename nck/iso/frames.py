@@ -27,6 +27,7 @@ run time:
   ``ATRANS``) and the ISO rotation, scale and mirror; ``$P_ISOFR_TRANSOFF=0`` — G92.1:
   clears G52 and G92;
 * ``$P_ISOFR_POLAROFF=0`` — G15: pole, polar radius and angle are deleted;
+  ``$P_ISOFR_POLARON=0`` — G16 (for the G-group display, :func:`display_codes`);
 * ``$P_ISOFR_SYNC=0`` / ``$P_ISOFR_PRESET=0`` — after an offset change with SD 42440 = 0,
   and after G92 always: the programmed position becomes the actual one.
 
@@ -206,6 +207,9 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     elif op == "POLAROFF":  # G15 deletes pole, polar radius and angle
         _polar_off(interp, geo)
         return
+    elif op == "POLARON":  # G16: only for the G-group display
+        _set_polar_flag(interp, geo, True)
+        return
     elif op == "ROT":
         state = _rotate(interp, geo, state, args, number, mm)
     elif op == "ROTOFF":
@@ -260,6 +264,7 @@ def _polar_off(interp: Any, geo: Any) -> None:
 
     old = geo.polar
     geo.polar = PolarState()
+    _set_polar_flag(interp, geo, False)
 
     def undo() -> None:
         geo.polar = old
@@ -267,6 +272,29 @@ def _polar_off(interp: Any, geo: Any) -> None:
     journal = getattr(interp, "_journal", None)
     if journal is not None:
         journal.append(("undo", undo, None))
+
+
+def _set_polar_flag(interp: Any, geo: Any, on: bool) -> None:
+    old = getattr(geo, "iso_polar", False)
+    geo.iso_polar = on
+
+    def undo() -> None:
+        geo.iso_polar = old
+
+    journal = getattr(interp, "_journal", None)
+    if journal is not None:
+        journal.append(("undo", undo, None))
+
+
+def display_codes(geo: Any) -> dict[int, str]:
+    """ISO M groups 11, 16, 17 and 22 (G51/G50, G68/G69, G16/G15, G51.1/G50.1) for the
+    G-group display, from the geometry state ``geo`` (None: the reset codes)."""
+    if geo is None:
+        return {11: "G50", 16: "G69", 17: "G15", 22: "G50.1"}
+    state = _state(geo)
+    polar = bool(getattr(geo, "iso_polar", False)) and geo.polar.pole is not None
+    return {11: "G51" if state.scale else "G50", 16: "G68" if state.rotations else "G69",
+            17: "G16" if polar else "G15", 22: "G51.1" if state.mirror_mm else "G50.1"}
 
 
 def _axis(args: list[Any], name: str) -> str:
@@ -426,6 +454,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
     if "G16" in present:
         tracker.polar = True
         tracker.polar_fresh = True
+        out.blocks.append(f"{PREFIX}POLARON=0")
     if "G69" in present:
         out.blocks.extend([f"{PREFIX}ROTOFF=0", SYNC])
     if "G50" in present:

@@ -236,7 +236,7 @@ def test_translation_of_frame_blocks():
     assert lines[0].blocks == ["N10 $P_ISOFR_ROT[19, 1, 2, 0, 0, 0, 0]=30", f"N10 {sync}"]
     assert lines[1].blocks == ["N20 $P_ISOFR_ROTOFF=0", f"N20 {sync}", "N20 G1 X1"]
     assert lines[2].blocks == ["N30 $P_ISOFR_MIRROR[X]=5", f"N30 {sync}"]
-    assert lines[3].blocks == ["G111 X0 Y0", "RP=AC(10) AP=AC(30)"]
+    assert lines[3].blocks == ["$P_ISOFR_POLARON=0", "G111 X0 Y0", "RP=AC(10) AP=AC(30)"]
 
 
 # ------------------------------------------------------------------ SD 42440 (offset change in G91)
@@ -277,3 +277,24 @@ def test_g15_deletes_pole_radius_and_angle_at_run_time():
     result = run_iso(text)
     assert result.status == "ended", result.alarms
     assert _xy(result)[-1] == (4, 5.0, 0.0)
+
+
+def _views(text: str) -> dict[int, dict[int, str]]:
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect="iso-m")
+    interp.start_text("T.MPF", text)
+    views = {}
+    while not interp.finished:
+        line = interp.step().source.line
+        views[line] = dict(interp.modal_view().iso_gcodes)
+    return views
+
+
+def test_g_group_display_shows_active_iso_frames():
+    text = "G68 X0 Y0 R30.\nG51 P2000\nG51.1 X5.\nG16 X10. Y0\nG15 G69\nG50 X0\nG50.1 X0\nM30\n"
+    views = _views(text)
+    assert views[1][16] == "G68" and views[1][11] == "G50"
+    assert views[2][11] == "G51"
+    assert views[3][22] == "G51.1"
+    assert views[4][17] == "G16"
+    assert views[5][17] == "G15" and views[5][16] == "G69" and views[5][11] == "G51"
+    assert views[7] [22] == "G50.1" and views[7][11] == "G50"
