@@ -37,7 +37,7 @@ off; M98 with
 G10 offset change acts at once (manual: at the next T/H/D); a PROC macro must be
 named like a Siemens program (``PROC 0010`` is not accepted); groups 8 (G43/G49)
 and 12 (G66/G67) in the G-group display show their reset codes; the cycle group (9) in the G-group
-display always shows G80; groups 11/16/17/22 (G51/G68/G16/G51.1) show their reset codes;
+display always shows G80;
 G68/G51.1 act in the programmable frame, not in channel base frames 1–3; mirroring of
 non-geometry axes; polar coordinates in drilling cycles; ``$P_AP``; a Siemens
 REPEAT with ISO block numbers.
