@@ -65,6 +65,7 @@ from nck.geometry.frames import Frame, _as_matrix3, axis_rotation
 ALARM_SYNTAX = 12080
 ALARM_LIMITS = 12560
 ALARM_SCALE_ZERO = 18309
+ALARM_UNKNOWN_G = 12470
 PREFIX = "$P_ISOFR_"
 GEO = ("X", "Y", "Z")
 _PLANE_AXES = {"G17": ("X", "Y", "Z"), "G18": ("Z", "X", "Y"), "G19": ("Y", "Z", "X")}
@@ -441,6 +442,11 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
     their block and 12560 for a 3D G68 with a zero vector.
     """
     tracker.start_absolute = absolute
+    if turning:  # ISO T: G68/G69 is the double turret, no G51/G51.1/G16 (not modelled)
+        for code in gcodes:
+            if code in ("G68", "G51", "G51.1", "G16"):
+                raise NcAlarmError(ALARM_UNKNOWN_G, code)
+        return FrameBlocks()
     for code in gcodes:
         if code in ("G17", "G18", "G19"):
             tracker.plane = code

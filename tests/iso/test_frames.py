@@ -298,3 +298,9 @@ def test_g_group_display_shows_active_iso_frames():
     assert views[4][17] == "G16"
     assert views[5][17] == "G15" and views[5][16] == "G69" and views[5][11] == "G51"
     assert views[7] [22] == "G50.1" and views[7][11] == "G50"
+
+
+@pytest.mark.parametrize("code", ["G68", "G51 P2000", "G51.1 X1.", "G16 X1. Z0"])
+def test_iso_t_has_no_milling_frames(code):
+    line = translate(code, "iso-t")[0]
+    assert line.error is not None and line.error.number == 12470
