@@ -102,6 +102,9 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     if name.startswith(("$TC_DPH", "$TC_ISOH_")):  # ISO H numbers (nck.iso.tool_offsets)
         from nck.iso import tool_offsets as iso_tools
         return iso_tools.read(ctx, name, indices)
+    if name == "$P_EXTGG":  # active ISO G code per ISO group (nck.iso.display)
+        from nck.iso import display as iso_display
+        return iso_display.read_extgg(ctx, indices)
     modal = ctx.modal
     if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
         axis = _axis_arg(ctx, name, indices)

@@ -61,3 +61,37 @@ def iso_gcodes(siemens: Mapping[int, str], dialect: str = "iso-m") -> dict[int, 
         view[15] = _EXACT_STOP[siemens[10]]
     view[31] = "G291"
     return view
+
+
+@functools.cache
+def iso_members(dialect: str) -> dict[int, tuple[str, ...]]:
+    """ISO group → its codes in value order (position + 1 = ``$P_EXTGG`` value)."""
+    table = load_toml("gcode", f"{dialect.replace('-', '_')}.toml")
+    return {int(g["number"]): tuple(str(c) for c in g.get("members", ())) for g in table["group"]}
+
+
+def extgg(siemens: Mapping[int, str], dialect: str, group: int, geometry: object = None) -> int:
+    """``$P_EXTGG[group]``: the value of the active ISO code of ``group`` (0 = none), in either
+    language mode (the modal state is shared)."""
+    turning = dialect == "iso-t"
+    view = iso_gcodes(siemens, "iso-t" if turning else "iso-m")
+    if siemens.get(47) != "G291":
+        view[31] = "G290"
+    if not turning:
+        from nck.iso.frames import display_codes
+        view.update(display_codes(geometry))
+    members = iso_members("iso-t" if turning else "iso-m").get(group, ())
+    code = view.get(group)
+    return members.index(code) + 1 if code in members else 0
+
+
+def read_extgg(ctx: object, indices: tuple) -> int:
+    """System-variable hook: ``$P_EXTGG[n]`` for the interpreter ``ctx``."""
+    from nck.errors import NcAlarmError
+    from nck.interp.values import to_number
+
+    if len(indices) != 1:
+        raise NcAlarmError(17020, "$P_EXTGG")
+    modal = ctx.modal  # type: ignore[attr-defined]
+    return extgg(modal.gcodes, str(getattr(ctx, "dialect", "iso-m")),
+                 int(to_number(indices[0], "$P_EXTGG")), modal.geometry)

@@ -95,3 +95,20 @@ def test_iso_start_unit_from_md20154(value, x_mm):
     result = _run("G01 X1. F100\nM30\n", {"MD20154": reset_values})
     assert result.status == "ended", result.alarms
     assert ends(result, "mcs")[0][1]["X"] == x_mm
+
+
+def test_p_extgg_shows_iso_values_in_both_modes():
+    """E1 (``$P_EXTGG[3]`` = 2 after G91 in Siemens mode) and the ISO M start-up values."""
+    data = NcData()
+    text = ("N5 G00 X100. Y100.\nN10 G90\nN15 G290\nR1=$P_EXTGG[1] R2=$P_EXTGG[2] R3=$P_EXTGG[3]\n"
+            "R5=$P_EXTGG[5] R11=$P_EXTGG[11] R16=$P_EXTGG[16] R31=$P_EXTGG[31]\nN20 G91\n"
+            "R30=$P_EXTGG[3]\nN25 G291\nN30 G68 X0 Y0 R10.\nIF $P_EXTGG[31]==2 GOTOF ISO\nX1.\n"
+            "ISO:\nG290\nR40=$P_EXTGG[3] R41=$P_EXTGG[16]\nM30\n")
+    result = interpret_only(load_machine(None), MemorySource(), data, "TEST.MPF", text=text,
+                            max_blocks=1000, dialect="iso-m")
+    assert result.status == "ended", result.alarms
+    r = data.r
+    assert (r[1], r[2], r[3], r[5], r[11], r[16], r[31]) == (1, 1, 1, 1, 1, 2, 1)  # G00 G17 G90
+    assert r[30] == 2 and r[40] == 2  # G94 G50 G69 G290; G91 over the switch
+    assert r[41] == 1  # G68
+    assert len(result.segments) == 1  # the IF saw G291 (value 2) and jumped over X1.
