@@ -66,6 +66,7 @@ ALARM_SYNTAX = 12080
 ALARM_LIMITS = 12560
 ALARM_SCALE_ZERO = 18309
 ALARM_UNKNOWN_G = 12470
+ALARM_CYCLE_POLAR = 61814
 PREFIX = "$P_ISOFR_"
 GEO = ("X", "Y", "Z")
 _PLANE_AXES = {"G17": ("X", "Y", "Z"), "G18": ("Z", "X", "Y"), "G19": ("Y", "Z", "X")}
@@ -562,6 +563,12 @@ def polar_words(words: list[Any], values: dict[str, float], siemens_g: list[str]
         extra.append("AP=AC(0)")
     tracker.polar_fresh = False
     return [pole], " ".join(extra)
+
+
+def check_cycle(tracker: FrameTracker, code: int | None) -> None:
+    """A drilling cycle under G16 raises 61814 (the cycles here take Cartesian hole positions)."""
+    if tracker.polar:
+        raise NcAlarmError(ALARM_CYCLE_POLAR, f"G{code}")
 
 
 def trans_block(values: dict[str, float]) -> str:

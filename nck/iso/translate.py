@@ -328,6 +328,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         modal.cycle.code = cycle_code
     if modal.cycle.code is not None and (cycle_code is not None or any(
             a in values for a in ("X", "Y", "Z", "R"))):
+        iso_frames.check_cycle(modal.frames, modal.cycle.code)  # 61814 under G16
         return _cycle_block(number, siemens_g, values, modal, settings)
     poles, polar = iso_frames.polar_words(words, values, siemens_g, modal.frames, modal.turning)
     head = framing.head(siemens_g, modal.absolute, any(a in values for a in AXES))  # SD 42440
