@@ -49,6 +49,9 @@ produced: a RESET, a Siemens ``TRANS``/``ROT`` … after G290 discard it.
 :class:`FrameTracker` and :func:`frame_codes` / :func:`polar_words` are the
 translate-time half: they turn the ISO words into the blocks above, and
 polar coordinates G16/G15 into Siemens poles (G110/G111) with ``RP``/``AP``.
+Not modelled: G02/G03 with R or I/J under G16 (the Siemens polar circle runs
+about the pole, so such a block raises 14040); drilling cycles under G16 raise
+61814; ISO T's G68/G69 (double turret).
 """
 
 from __future__ import annotations
