@@ -41,8 +41,15 @@ def dialect_for(dialect: str, machine: object) -> str:
     named.iso_settings = IsoSettings(pocket_calculator=bool(pocket), increment_system_c=bool(is_c),
                                      gcode_system=int(system or 0), tool_digits=int(digits or 2),
                                      function_mask=int(mask or 0),
-                                     start_unit=_start_unit(md_value))
+                                     start_unit=_start_unit(md_value),
+                                     **_macro_tables(md_value))
     return named
+
+
+def _macro_tables(md_value: object) -> dict:
+    """MD 10814–10817: the M- and G-code macros of ISO mode (nck.iso.macros)."""
+    from nck.iso.macros import substitution_tables
+    return substitution_tables(md_value)
 
 
 def _start_unit(md_value: object) -> str:

@@ -18,8 +18,14 @@ with G65, G66, G67 or G05):
   G05 without P, ``P0``/``P1`` and G05.1 would call CYCLE305, which this
   control does not have: they are skipped without an alarm. The block's
   other words run as usual.
-* Only one call per block: M98, G65, G66 and G05 together raise 12722, and
-  so does G05 while a fixed cycle is modal.
+* M-code macros (MD 10814/10815) and G-code macros (MD 10816/10817): the M
+  or G word calls its program like G65 (arguments in ``$C_…``, L passes,
+  ``$C_G`` = the G number; the block's other G codes run first). While an
+  M/G-code macro runs (at any level below it) the words act as plain M and G
+  functions; a G that exists only as a macro then raises 12470. Fixed M
+  functions (M0–M5, M17, M19, M30, M40–M45, M96–M99) are never replaced.
+* Only one call per block: M98, G65, G66, G05 and M/G-code macros together
+  raise 12722, and so does G05 while a fixed cycle is modal.
 
 A macro whose first line is ``PROC`` runs in Siemens mode, any other in ISO
 mode (decided by :func:`nck.iso.loader.wants_iso`).
@@ -53,6 +59,9 @@ EIGHT_DIGIT_PROGRAMS_BIT = 1 << 6  # MD 20734 bit 6
 MCALL_NAME = "$C_MCALL"  # internal: sets the G66 modal call (empty string cancels)
 MCALL_PASSES = "$C_MCALL_PASSES"  # internal: passes of each G66 call (L)
 ISO_MODE_GROUP = 47
+SUBST_CALL = "$C_SUBST_CALL"  # internal write: this call is an M/G-code macro
+SUBST_ACTIVE = "$C_SUBST_ACTIVE"  # internal read: 1 while an M/G-code macro runs
+FIXED_M = frozenset({0, 1, 2, 3, 4, 5, 17, 19, 30, 40, 41, 42, 43, 44, 45, 96, 97, 98, 99})
 
 _READABLE = re.compile(r"^\$C_(?:[A-Z]|[A-Z]_PROG|[IJK]_NUM|[IJK]_ORDER|ALL_PROG|INC_PROG|TYP_PROG)$")
 _ARRAYS = re.compile(r"^\$C_(?:[IJK]|[IJK]_ORDER)$")
@@ -73,6 +82,11 @@ def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[st
     """The Siemens blocks of a G65/G66/G67/G05 block, or None for any other block."""
     gcodes = _names(words)
     calls = [c for c in gcodes if c in ("G65", "G66") or _is_g05(c)]
+    substitution = _substitution(words, gcodes, modal, settings)
+    if substitution is not None:
+        if calls or any(w.letter == "M" and w.value == 98 for w in words):
+            raise NcAlarmError(ALARM_TOO_MANY_CALLS)
+        return _substituted(words, substitution, modal, settings)
     if not calls and "G67" not in gcodes:
         return _m98_with_words(words, modal, settings)
     if len(calls) + sum(1 for w in words if w.letter == "M" and w.value == 98) > 1:
@@ -195,6 +209,86 @@ def _g65_g66(words: list[Word], call: str, modal: Any, settings: IsoSettings, nu
     return blocks + [f'{number}{writes} {MCALL_PASSES}={passes} {MCALL_NAME}="{name}"']
 
 
+def substitution_tables(md_value: Any) -> dict[str, tuple]:
+    """IsoSettings fields from MD 10814/10815 (M-code macros) and MD 10816/10817 (G-code
+    macros). Entries without a name, and fixed M functions (M0–M5, M17, M19, M30,
+    M40–M45, M96–M99), are left out."""
+    def listed(key: str) -> list:
+        value = md_value(key, None, None) if md_value else None
+        if value is None:
+            return []
+        return list(value) if isinstance(value, (list, tuple)) else [value]
+
+    m_macros = tuple((int(n), str(name).strip().upper())
+                     for n, name in zip(listed("MD10814"), listed("MD10815"))
+                     if str(name).strip() and int(n) >= 0 and int(n) not in FIXED_M)
+    g_macros = tuple((_g_text(n), str(name).strip().upper())
+                     for n, name in zip(listed("MD10816"), listed("MD10817"))
+                     if str(name).strip() and float(n) > 0)
+    return {"m_macros": m_macros, "g_macros": g_macros}
+
+
+def _g_text(number: Any) -> str:
+    """The G name as the translator spells it: 21 → G21, 5 → G05, 12.3 → G12.3."""
+    value = float(number)
+    if value == int(value):
+        whole = int(value)
+        return f"G{whole:02d}" if whole < 10 else f"G{whole}"
+    whole_text, _, sub = f"{value:.4f}".rstrip("0").partition(".")
+    return f"G{int(whole_text)}.{sub}"
+
+
+def _substitution(words: list[Word], gcodes: list[str], modal: Any,
+                  settings: IsoSettings) -> tuple[str, Word, str] | None:
+    """(kind "M"/"G", the word, macro program) of an M/G-code macro in the block, or None."""
+    if getattr(modal, "no_substitution", False):
+        return None
+    m_table = dict(getattr(settings, "m_macros", ()) or ())
+    g_table = dict(getattr(settings, "g_macros", ()) or ())
+    if not m_table and not g_table:
+        return None
+    found: list[tuple[str, Word, str]] = []
+    for word in words:
+        if word.letter == "M" and word.value == int(word.value) and int(word.value) in m_table:
+            found.append(("M", word, m_table[int(word.value)]))
+        elif word.letter == "G":
+            name = _names([word])[0]
+            if name in g_table:
+                found.append(("G", word, g_table[name]))
+    if len(found) > 1:
+        raise NcAlarmError(ALARM_TOO_MANY_CALLS)
+    return found[0] if found else None
+
+
+def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: Any,
+                 settings: IsoSettings) -> list[str]:
+    """An M/G-code macro call; inside a running M/G-code macro the word acts as a plain
+    M or G function instead (a G that exists only as a macro then raises 12470)."""
+    from nck.iso.translate import _translate_words
+
+    kind, word, program = substitution
+    number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
+    other_g = [w for w in words if w.letter == "G" and w is not word]
+    head = _translate_words(other_g, modal, settings) if other_g else []
+    arguments = [w for w in words if w.letter not in ("N", "G") and w is not word]
+    writes = " ".join(argument_writes(arguments, not modal.absolute))
+    if kind == "G":
+        writes += f" $C_G={_names([word])[0][1:]}"
+    passes = _passes(words)
+    call = f'{number}{writes} {SUBST_CALL}=1 CALL "{program}"' + (f" P{passes}" if passes > 1 else "")
+    modal.no_substitution = True
+    try:
+        plain = _translate_words(words, modal, settings)
+    except NcAlarmError as alarm:  # a G code that exists only as a macro: 12470 at run time
+        if alarm.number != 12470 or kind != "G":
+            raise
+        plain = [number + _names([word])[0]]
+    finally:
+        modal.no_substitution = False
+    return ([f"{number}IF {SUBST_ACTIVE}==0"] + head + [call] + [f"{number}ELSE"] + plain
+            + [f"{number}ENDIF"])
+
+
 def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings) -> list[str] | None:
     """``M98 P… X10. A1.``: the other words run first, then the call; they also reach
     the subprogram as ``$C_…`` (None: a plain M98 block or no M98 at all)."""
@@ -253,6 +347,7 @@ class MacroState:
     modal_call: Any = None
     modal_passes: int = 1
     back_to_iso: bool = False  # a PROC program called from ISO mode: G291 again on return
+    substitution: bool = False  # this level runs an M/G-code macro (no substitution inside)
 
 
 def _state(frame: Frame) -> MacroState:
@@ -274,10 +369,13 @@ def _key(name: str, indices: tuple[Any, ...]) -> tuple[str, tuple]:
 
 def read(ctx: Any, name: str, indices: tuple[Any, ...]) -> Any:
     """Value of ``$C_…`` at the current program level (0 when not programmed)."""
+    frames = ctx._state.frames
+    if name == SUBST_ACTIVE:
+        return int(any(getattr(f, "iso_macro", None) is not None and f.iso_macro.substitution
+                       for f in frames))
     if not (_READABLE.match(name) or _ARRAYS.match(name)):
         raise NcAlarmError(12550, name)
     key = _key(name, indices)
-    frames = ctx._state.frames
     if not frames:
         return 0
     return _state(frames[-1]).args.get(key, 0)
@@ -301,9 +399,10 @@ def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
         frame.iso_macro = replace(state, pending=None, modal_call=call, modal_passes=passes,
                                   modal_args=pending if call is not None else None)
         return
-    if name != MCALL_PASSES and not (_READABLE.match(name) or _ARRAYS.match(name)):
+    internal = name in (MCALL_PASSES, SUBST_CALL)
+    if not internal and not (_READABLE.match(name) or _ARRAYS.match(name)):
         raise NcAlarmError(12550, name)
-    key = _key(name, indices) if name != MCALL_PASSES else (name, ())
+    key = (name, ()) if internal else _key(name, indices)
     pending[key] = value
     frame.iso_macro = replace(state, pending=pending)
 
@@ -327,7 +426,9 @@ def bind_call(caller: Frame, callee: Frame, call: Any, modal: Any = None) -> Non
         callee.passes_left = state.modal_passes - 1
         return
     if state.pending is not None:
-        callee.iso_macro = MacroState(args=state.pending, back_to_iso=back)
+        args = dict(state.pending)
+        substitution = bool(args.pop((SUBST_CALL, ()), 0))
+        callee.iso_macro = MacroState(args=args, back_to_iso=back, substitution=substitution)
         caller.iso_macro = replace(state, pending=None)
 
 

@@ -19,7 +19,8 @@ lines pass unchanged, Siemens-only G codes → 12080, MD 20734 bit 3, MD 20154[5
 G53 stays non-modal machine coordinates, G61 → G60, M98 → ``CALL "O<nnnn>" P<count>``,
 M99 → M17 (main program: restart), M99 P<n> → RET to N<n> of the caller, M30 in an
 ISO subprogram ends the program (:mod:`nck.iso.subprograms`); G65/G66/G67/G05 →
-``$C_…`` arguments + CALL / modal call (:mod:`nck.iso.macros`). Decimal point (MD 10884/10886):
+``$C_…`` arguments + CALL / modal call, M/G-code macros of MD 10814–10817
+(:mod:`nck.iso.macros`). Decimal point (MD 10884/10886):
 pocket-calculator notation by default; in standard notation a value without
 a point is counted in increments (IS-B 0.001 mm, IS-C 0.0001 mm).
 
@@ -32,7 +33,7 @@ A ``/n`` in the middle of a block is decided at run time (:mod:`nck.iso.skipping
 
 Not modelled (yet): a second mid-block ``/n`` in a block is resolved as if its level were
 off; M98 with
-8-digit program numbers (MD 20734 bit 6); M/G-code macros (MD 10814–10817);
+8-digit program numbers (MD 20734 bit 6); MD alarm 4150 for a macro on a fixed M;
 ``$P_ISO_STACK``; G44 applies the length like G43; MD 20380 length modes B/C; a
 G10 offset change acts at once (manual: at the next T/H/D); a PROC macro must be
 named like a Siemens program (``PROC 0010`` is not accepted); groups 8 (G43/G49)
@@ -75,6 +76,8 @@ class IsoSettings:
     gcode_system: int = 0  # ISO T code system, MD 10881: 0 B, 1 A
     tool_digits: int = 2  # ISO T digits of the tool number in T, MD 10888
     start_unit: str = ""  # G700/G710 from MD 20154[5] (ISO group 6 reset), "" = table reset
+    m_macros: tuple[tuple[int, str], ...] = ()  # MD 10814/10815: M number → macro program
+    g_macros: tuple[tuple[str, str], ...] = ()  # MD 10816/10817: G code → macro program
 
     @property
     def increment_mm(self) -> float:

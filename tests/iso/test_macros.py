@@ -224,3 +224,72 @@ def test_manual_typ_prog_of_m98_arguments():
     assert result.status == "ended", result.alarms
     assert [result.interpreter.r(n) for n in (1, 2, 3)] == [float(1 << 24), 100.0, 100.0]
     assert ends(result) == [(1, {"X": 100.0, "Y": 100.0, "Z": 0.0})]  # the words move first
+
+
+# ---------------------------------------------------------------- M- and G-code macros (MD 10814–10817)
+MACRO_MD = {"MD10814": [101, 6, 30], "MD10815": ["M101_MACRO", "M6_MACRO", "M30_MACRO"],
+            "MD10816": [21, 123, 421], "MD10817": ["G21_MACRO", "G123_MACRO", "G123_MACRO"]}
+
+
+def _run_md(text: str, programs: dict[str, str]):
+    from nck.headless import interpret_only
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    machine = load_machine(None)
+    machine.md.update(MACRO_MD)
+    return interpret_only(machine, MemorySource(programs), NcData(), "T.MPF", dialect="iso-m",
+                          text=text, max_blocks=2000)
+
+
+def test_m_code_macro_gets_arguments_and_its_own_m_stays_an_m_function():
+    from nck import canon
+    m6 = "G290\nR10=R10+11.11 R1=$C_X_PROG R2=$C_V\nG291\nM6\nM99\n"
+    result = _run_md("T2\nN10 M6 X10. V20.\nM30\n", {"M6_MACRO": m6})
+    assert result.status == "ended", result.alarms
+    assert ends(result) == []  # X and V are arguments, not moves
+    assert [result.interpreter.r(n) for n in (1, 2, 10)] == [1.0, 20.0, 11.11]
+    changes = [c for c in result.commands if isinstance(c, canon.ToolSelect) and c.change]
+    assert [(c.source.file, c.tool) for c in changes] == [("M6_MACRO", 2)]  # M6 inside: no recursion
+
+
+def test_m_code_macro_l_passes_and_fixed_m_functions_are_never_replaced():
+    counter = "G290\nR5=R5+1\nG291\nM99\n"
+    result = _run_md("M101 L3\nM30\n", {"M101_MACRO": counter, "M30_MACRO": counter})
+    assert result.status == "ended", result.alarms
+    assert result.interpreter.r(5) == 3.0  # and M30 ended the program (M30 is fixed)
+
+
+def test_g_code_macro_runs_other_g_codes_first_and_sets_c_g():
+    g123 = "G290\nR3=$C_G R4=$C_X R6=$P_GG[1]\nG291\nG21 X100.\nM99\n"
+    result = _run_md("G94 F500\nN100 G1 G123 X10. Y20. G90\nM30\n", {"G123_MACRO": g123})
+    assert result.status == "ended", result.alarms
+    assert [result.interpreter.r(n) for n in (3, 4)] == [123.0, 10.0]
+    assert result.interpreter.r(6) == 2.0  # G1 (position 2 in group 1) was active in the macro
+    assert ends(result) == [(4, {"X": 100.0, "Y": 0.0, "Z": 0.0})]  # G21 inside: metric, no call
+    assert result.segments[0].source.file == "G123_MACRO"
+
+
+def test_two_g_codes_on_one_macro_and_decimal_c_g():
+    result = _run_md("N100 G421 X10.\nM30\n", {"G123_MACRO": "G290\nR3=$C_G\nG291\nM99\n"})
+    assert result.status == "ended", result.alarms
+    assert result.interpreter.r(3) == 421.0
+
+
+def test_macro_only_g_code_inside_a_macro_raises_12470():
+    g123 = "G290\nR3=1\nG291\nG123\nM99\n"
+    result = _run_md("G123 X1.\nM30\n", {"G123_MACRO": g123})
+    assert result.alarms[0].number == 12470
+    assert result.alarms[0].file == "G123_MACRO"
+
+
+@pytest.mark.parametrize("block", ["M6 M101", "G123 M6", "M6 M98 P21", "G65 P10 M101"])
+def test_two_substitutions_or_calls_in_one_block_raise_12722(block):
+    result = _run_md(block + "\nM30\n", {})
+    assert result.alarms[0].number == 12722
+
+
+def test_without_the_machine_data_m6_is_a_plain_m_function():
+    result = run_iso("T2 M6\nM30\n")
+    assert result.status == "ended", result.alarms
+    assert result.interpreter.modal.tool == 2
