@@ -100,6 +100,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self._interpreter_factory = interpreter_factory or _default_interpreter_factory
         self.batch_cycles = max(1, int(batch_cycles))  # see step()
         self._cycles_in_step = 1
+        self._prefed: tuple[ProgramRun, list[RunEvent]] | None = None  # see _feed_between_cycles
         self.motion = (motion_factory or planned_motion_factory)(self.machine)
         getattr(self.motion, "attach_setting_data", lambda _data: None)(self.data.setting_data)
         for axis in self.machine.path_axes:
@@ -230,15 +231,23 @@ class Nck(ManualControl, ControlSettings, StatusView):
 
     def _guarded_cycle(self, limit: int) -> int:
         """One kernel step of 1 … ``limit`` IPO cycles; returns the cycles run (never raises)."""
-        self._cycles_in_step = 1
-        try:
-            self._cycle(limit)
-        except NcAlarmError as error:
-            self._raise(error)
-        except Exception as exc:  # noqa: BLE001
-            self._internal_error(exc)
-            self._internal_reset()
-        return max(1, min(self._cycles_in_step, limit))
+        done = 0
+        while True:
+            self._cycles_in_step = 1
+            try:
+                self._cycle(limit - done)
+            except NcAlarmError as error:
+                self._prefed = None
+                self._raise(error)
+            except Exception as exc:  # noqa: BLE001
+                self._prefed = None
+                self._internal_error(exc)
+                self._internal_reset()
+            done += max(1, min(self._cycles_in_step, limit - done))
+            # A feed done inside the motion step belongs to the next cycle: run that
+            # cycle now, so nobody sees the kernel between the feed and its cycle.
+            if self._prefed is None or done >= limit:
+                return done
 
     @property
     def ipo_cycle_s(self) -> float:
@@ -613,14 +622,19 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self._time_s += self._ipo_s
         run = self._overlay or self._run
         fed = True
-        if run is not None and self._sit.channel == ACTIVE and not self._jogging:
+        prefed, self._prefed = self._prefed, None
+        if prefed is not None:
+            # The run was already fed for this cycle inside the last motion step.
+            fed = False
+            self._handle_events(prefed[0], prefed[1])
+        elif run is not None and self._sit.channel == ACTIVE and not self._jogging:
             events = run.feed(self._path_motion(), self._run_options(), self._ipo_s)
             if events:
                 fed = False
                 self._handle_events(run, events)
         cycles = self._batch_size(limit, fed)
         if cycles > 1 and self._event_batching():
-            cycles = self.motion.advance_cycles(cycles)
+            cycles = self.motion.advance_cycles(cycles, self._feed_between_cycles)
         else:
             self.motion.advance(self._ipo_s * cycles)
         self._cycles_in_step = cycles
@@ -647,6 +661,26 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self.cycles_done += cycles
         for listener in tuple(self.cycle_listeners):  # a listener may remove itself
             listener(self)
+
+    def _feed_between_cycles(self, cycles_done: int) -> int:
+        """Called by the motion at a block event inside a step: the per-cycle work of the
+        next cycle that must happen before its motion (feeding the run).
+
+        Returns how many more cycles the step may run (0: end the step here).
+        Events of the feed are kept for the next step, which handles them
+        first, as the cycle-by-cycle kernel does before that cycle's motion.
+        """
+        run = self._overlay or self._run
+        if run is None or self._sit.channel != ACTIVE or self._jogging or self._test_motion is not None:
+            return 0
+        motion = self._path_motion()
+        events = run.feed(motion, self._run_options(), self._ipo_s)
+        if events:
+            self._prefed = (run, events)
+            return 0
+        if run.wants_every_cycle(motion):
+            return 1
+        return self.batch_cycles
 
     def _count_block(self, block: Any) -> None:
         """Every interpreted block: count it, then tell the optional block listener."""

@@ -10,7 +10,7 @@ optional trace of the setpoints.
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 import numpy as np
 
@@ -154,7 +154,7 @@ class PlannedMotion:
         self._fraction -= n
         self._run_cycles(n, stop_at_event=False)
 
-    def advance_cycles(self, n_cycles: int) -> int:
+    def advance_cycles(self, n_cycles: int, on_block_event: Callable[[int], int] | None = None) -> int:
         """Advance at most ``n_cycles`` IPO cycles; stop after the first block event.
 
         A block event is a cycle after which a program run or the kernel may
@@ -166,11 +166,18 @@ class PlannedMotion:
         between calls, gives the same motion, trace and alarms (in the same
         cycle) as calling ``advance`` with one IPO cycle at a time. While JOG
         moves an axis it advances all ``n_cycles`` (like ``advance``).
+
+        ``on_block_event(cycles_done)``, when given, is called at such a stop
+        instead (not after alarms): the caller does its per-cycle work for
+        the next cycle there (feeding the program) and answers how many more
+        cycles may run before it must be asked again (0 = stop now).
         """
         n = max(1, int(n_cycles))
-        return self._run_cycles(n, stop_at_event=not self.jog.runs)
+        if self.jog.runs:
+            return self._run_cycles(n, stop_at_event=False)
+        return self._run_cycles(n, stop_at_event=True, on_block_event=on_block_event)
 
-    def _run_cycles(self, n: int, stop_at_event: bool) -> int:
+    def _run_cycles(self, n: int, stop_at_event: bool, on_block_event: Callable[[int], int] | None = None) -> int:
         """The IPO cycles of :meth:`advance` / :meth:`advance_cycles`; returns the cycles run."""
         for i, delta in self.jog.take_shifts().items():
             self.servo.x_set[i] += delta
@@ -184,6 +191,7 @@ class PlannedMotion:
         columns = self.jog.fill(n, self.cmd.copy())
         rows = np.empty((n, len(self.names)))
         k = 0
+        spun = 0  # cycles the spindles have been advanced by
         limit = n
         while k < limit:
             k_end, sync, limit = self._path_fill(rows, k, limit, stop_at_event)
@@ -207,9 +215,16 @@ class PlannedMotion:
                 self._check_exact_stop()
                 if stop_at_event and waiting and self.exact_wait is None:
                     limit = max(k, 1)  # the exact stop is reached: the next block may start
+            if (on_block_event is not None and k == limit and 0 < k < n
+                    and not self._alarms and not self.jog.alarms and not self.faulted):
+                self._advance_spindles(k - spun)  # the caller may read the spindle speeds
+                spun = k
+                allowed = on_block_event(k)
+                if allowed > 0:
+                    limit = min(n, k + allowed)
         if k == 0:  # a trip in the very first cycle still took that cycle
             k = 1
-        self._advance_spindles(k)
+        self._advance_spindles(k - spun)
         return k
 
     def _advance_spindles(self, cycles: int) -> None:
