@@ -44,6 +44,7 @@ from nck.interp.evaluator import evaluate
 from nck.interp.frames import Binding, Frame, GudRef, VariableScope
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import MotionBuilder
+from nck.interp.plain_run import step_plain
 from nck.interp.program import load_program
 from nck.interp.values import convert, to_number
 from nck.lang import ast
@@ -85,6 +86,9 @@ class SearchResult:
 class Interpreter:
     """Interprets Siemens-mode part programs block by block (see module docstring)."""
 
+    fast_path = True
+    """Plain motion blocks take the fast path (:mod:`nck.interp.plain_run`); False: general path only."""
+
     def __init__(self, machine: MachineConfig, programs: ProgramSource, data: NcData,
                  dialect: str = "siemens") -> None:
         self.machine = machine
@@ -101,7 +105,6 @@ class Interpreter:
         self._state = _State(modal=ModalState.initial(machine, self.table))
         self._journal: list[tuple[str, Any, Any]] = []
         self._skip_run: tuple[int, bool] | None = None
-        self.fast_path = True  # plain_batch may plan runs of plain blocks (False: general path only)
 
     # ================================================================== public API
     @property
@@ -219,6 +222,12 @@ class Interpreter:
         """Interpret the next block; raise NcAlarmError on failure (state unchanged)."""
         if self._state.finished:
             return BlockResult(source=canon.Source("", 0, None), text="", finished=True)
+        if self.fast_path and self._state.frames:
+            fast = step_plain(self)  # a plain motion block: same result without parser and snapshot
+            if fast is not None:
+                self._journal = []
+                self._state.blocks += 1
+                return fast
         saved = self._snapshot()
         self._journal = []
         try:

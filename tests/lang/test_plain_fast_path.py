@@ -1,10 +1,12 @@
 """The plain-block fast path of ``nck check`` is the general interpreter, only faster.
 
-Every program runs twice through :func:`nck.headless.interpret_only`: once
-block by block (``keep_commands=True`` switches the batches off) and once with
-runs of plain blocks planned as batches (:mod:`nck.interp.plain_run`). Status,
-block count, machine time (bit for bit), alarms with their line and block
-number, and the modal state afterwards must be identical.
+Every program runs twice through :func:`nck.headless.interpret_only`: once on
+the general path (``Interpreter.fast_path`` off) and once with runs of plain
+blocks planned as batches (:mod:`nck.interp.plain_run`). Status, block count,
+machine time (bit for bit), alarms with their line and block number, and the
+modal state afterwards must be identical. Block by block (the kernel's and the
+editor's way), the plain-block step must give the same block results — the
+same canonical motions — as the general path.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from hypothesis import strategies as st
 from nck.headless import interpret_only
 from nck.interp import plain_run
 from nck.interp import program as program_module
+from nck.interp.interpreter import Interpreter
 from nck.interp.sources import MemorySource
 from nck.lang.plain import is_plain
 from nck.lang.parser import parse_block
@@ -29,8 +32,12 @@ MACHINE = load_machine()
 
 def _run(text: str, fast: bool, **limits: Any) -> dict[str, Any]:
     program_module._RECENT.clear()
-    result = interpret_only(MACHINE, MemorySource(), NcData(), "PLAIN.MPF", text=text,
-                            keep_commands=not fast, **limits)
+    Interpreter.fast_path = fast
+    try:
+        result = interpret_only(MACHINE, MemorySource(), NcData(), "PLAIN.MPF", text=text,
+                                keep_commands=not fast, **limits)
+    finally:
+        Interpreter.fast_path = True
     interp = result.interpreter
     assert interp is not None
     modal = interp.modal
@@ -126,6 +133,50 @@ def test_fast_path_gives_the_general_result(text: str) -> None:
 def test_fast_path_stops_at_the_same_block_budget_and_time(text: str, blocks: int, timeout: float) -> None:
     _same(text, max_blocks=blocks)
     _same(text, timeout_s=timeout)
+
+
+def _steps(text: str, fast: bool) -> tuple[list[Any], list[Any], dict[str, Any]]:
+    program_module._RECENT.clear()
+    data = NcData()
+    interp = Interpreter(MACHINE, MemorySource(), data)
+    interp.fast_path = fast
+    interp.start_text("PLAIN.MPF", text)
+    results: list[Any] = []
+    alarms: list[Any] = []
+    for _ in range(200):
+        if interp.finished:
+            break
+        try:
+            results.append(interp.step())
+        except Exception as alarm:  # noqa: BLE001 - NC alarms, compared below
+            alarms.append((getattr(alarm, "number", repr(alarm)), getattr(alarm, "line", None)))
+            break
+    modal = interp.modal
+    geo = modal.geometry
+    state = {"gcodes": dict(modal.gcodes), "wcs": dict(modal.position_wcs), "mcs": dict(modal.position_mcs),
+             "feed": modal.feed, "geo": None if geo is None else (dict(geo.wcs_mm), geo.tangent),
+             "blocks": interp._state.blocks, "frames": [(f.pc, f.def_open) for f in interp._state.frames]}
+    return results, alarms, state
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs())
+def test_plain_steps_give_the_general_block_results(text: str) -> None:
+    assert _steps(text, True) == _steps(text, False), text
+
+
+def test_plain_steps_are_taken_in_a_cam_program(monkeypatch: pytest.MonkeyPatch) -> None:
+    taken: list[int] = []
+    original = plain_run.step_plain
+
+    def spy(interp: Interpreter) -> Any:
+        found = original(interp)
+        taken.append(found is not None)
+        return found
+
+    monkeypatch.setattr("nck.interp.interpreter.step_plain", spy)
+    results, alarms, _ = _steps(_cam(150), True)
+    assert not alarms and len(results) == 152 and sum(taken) >= 148
 
 
 @settings(max_examples=200, deadline=None)
