@@ -44,7 +44,7 @@ from nck.interp.evaluator import evaluate
 from nck.interp.frames import Binding, Frame, GudRef, VariableScope
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import MotionBuilder
-from nck.interp.plain_run import step_plain
+from nck.interp.plain_step import step_plain
 from nck.interp.program import load_program
 from nck.interp.values import convert, to_number
 from nck.lang import ast

@@ -18,7 +18,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nck.headless import interpret_only
-from nck.interp import plain_run
+from nck.interp import plain_run, plain_step
 from nck.interp import program as program_module
 from nck.interp.interpreter import Interpreter
 from nck.interp.sources import MemorySource
@@ -167,7 +167,7 @@ def test_plain_steps_give_the_general_block_results(text: str) -> None:
 
 def test_plain_steps_are_taken_in_a_cam_program(monkeypatch: pytest.MonkeyPatch) -> None:
     taken: list[int] = []
-    original = plain_run.step_plain
+    original = plain_step.step_plain
 
     def spy(interp: Interpreter) -> Any:
         found = original(interp)

@@ -1,0 +1,155 @@
+"""When plain blocks may take the fast path, and the constants they need.
+
+The modal state is *simple* for plain blocks (:mod:`nck.lang.plain`) when the
+motion type is G0/G1, the distance mode G90/G91, the feed type G94, radius
+compensation off (G40, nothing buffered), no chamfer or rounding pending or
+modal, the settable frame current, and the frame chain maps every geometry
+axis on its own (see :func:`axis_affine`). Then a plain block only moves the
+programmed point: :mod:`nck.interp.plain_run` (batches) and
+:mod:`nck.interp.plain_step` (one block) compute it without the general path.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from nck.errors import NcAlarmError
+from nck.geometry.path_builder import _couples_axes
+from nck.geometry.trc_canon import STAGE_ATTRIBUTE
+from nck.geometry.units import UnitSystem
+
+if TYPE_CHECKING:
+    from nck.interp.interpreter import Interpreter
+
+GEOMETRY = ("X", "Y", "Z")
+BLOCK_COST_S = 0.001  # the interpreter's cost of one block (nck.interp.interpreter.BLOCK_COST_S)
+
+
+@dataclass
+class Setup:
+    """The constants of a simple modal state for plain blocks."""
+
+    absolute: bool
+    kind: int
+    feed: float
+    position_mm: float
+    feed_mm: float
+    diameter: tuple[bool, bool, bool]
+    scale: tuple[float, float, float]
+    offset: tuple[float, float, float]
+    tool: tuple[float, float, float]
+    wcs: tuple[float, float, float]
+    mcs: dict[str, float]  # the modal MCS position (read only)
+    axes: tuple[str, ...]
+    diameter_on: bool
+
+
+@dataclass(frozen=True)
+class MachineAxes:
+    """What the fast path needs of the machine (fixed for an interpreter)."""
+
+    usable: bool  # X, Y, Z are the linear geometry axes and path axes
+    axes: tuple[str, ...]  # path axes
+    linear: tuple[bool, ...]  # per path axis: a linear axis (mm) or not (degrees)
+    diameter: tuple[bool, ...]  # per path axis: programmed in diameter under DIAMON
+
+
+def machine_axes(interp: Interpreter) -> MachineAxes:
+    cached = interp.__dict__.get("_plain_machine")
+    if cached is None:
+        path = interp.builder.path
+        axes = tuple(path.path_axes)
+        usable = path.geo_axes == GEOMETRY and all(a in axes for a in GEOMETRY) \
+            and all(path.kinds.get(a, "linear") == "linear" for a in GEOMETRY)
+        cached = MachineAxes(usable, axes, tuple(path.kinds.get(a, "linear") == "linear" for a in axes),
+                          tuple(a in path.diameter_axes for a in axes))
+        interp.__dict__["_plain_machine"] = cached
+    return cached
+
+
+def simple_setup(interp: Interpreter) -> Setup | None:
+    """The constants of the batch when the modal state is simple, else None."""
+    if interp.dialect != "siemens":
+        return None
+    machine = machine_axes(interp)
+    if not machine.usable:
+        return None
+    modal = interp.modal
+    geo = modal.geometry
+    gcodes = modal.gcodes
+    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm:
+        return None
+    kind, distance = gcodes.get(1), gcodes.get(14)
+    if kind not in ("G0", "G1") or distance not in ("G90", "G91") or gcodes.get(7, "G40") != "G40":
+        return None
+    if gcodes.get(15, "G94") != "G94" or geo.feed_type != "G94" or geo.frames.settable_code != gcodes.get(8, "G500"):
+        return None
+    stage = getattr(geo, STAGE_ATTRIBUTE, None)
+    if stage is None or stage.compensator.active:
+        return None
+    affine = axis_affine(geo.frames.transform())
+    if affine is None:
+        return None
+    path = interp.builder.path
+    try:
+        tool = path.tool_vector(modal)
+    except NcAlarmError:
+        return None
+    units = _units(interp, gcodes.get(13, "G71"))
+    diameter_on = gcodes.get(29) == "DIAMON"
+    return Setup(
+        absolute=distance == "G90",
+        kind=1 if kind == "G1" else 0,
+        feed=float(modal.feed),
+        position_mm=units[0],
+        feed_mm=units[1],
+        diameter=tuple(diameter_on and a in path.diameter_axes for a in GEOMETRY),  # type: ignore[arg-type]
+        scale=affine[0],
+        offset=affine[1],
+        tool=(float(tool.get("X", 0.0)), float(tool.get("Y", 0.0)), float(tool.get("Z", 0.0))),
+        wcs=(float(geo.wcs_mm.get("X", 0.0)), float(geo.wcs_mm.get("Y", 0.0)), float(geo.wcs_mm.get("Z", 0.0))),
+        mcs=modal.position_mcs,
+        axes=machine.axes,
+        diameter_on=diameter_on,
+    )
+
+
+def _units(interp: Interpreter, code: str) -> tuple[float, float]:
+    """(position_mm, feed_mm) of G group 13 member ``code`` (cached per interpreter)."""
+    table = interp.__dict__.setdefault("_plain_units", {})
+    found = table.get(code)
+    if found is None:
+        units = UnitSystem(code, basic_metric=interp.builder.path.basic_metric)
+        found = table[code] = (units.position_mm, units.feed_mm)
+    return found
+
+
+def axis_affine(transform: Any) -> tuple[tuple[float, float, float], tuple[float, float, float]] | None:
+    """(scale, offset) per geometry axis of a frame that maps every axis on its own, else None.
+
+    Only exactly diagonal matrices, and per axis a scale of ±1 or no offset:
+    then ``matrix @ point`` is ``point_i * m_ii + t_i`` bit for bit, whatever
+    the order of the sum. Cached on the (immutable) transform.
+    """
+    cached = transform.__dict__.get("_plain_affine", False)
+    if cached is not False:
+        return cached
+    matrix = transform.matrix
+    linear = matrix[:3, :3]
+    found: Any = None
+    if not (_couples_axes(transform) or np.count_nonzero(linear - np.diag(np.diag(linear)))
+            or np.count_nonzero(matrix[3] - (0.0, 0.0, 0.0, 1.0))):
+        scale = (float(matrix[0, 0]), float(matrix[1, 1]), float(matrix[2, 2]))
+        offset = (float(matrix[0, 3]), float(matrix[1, 3]), float(matrix[2, 3]))
+        if all(abs(scale[i]) == 1.0 or offset[i] == 0.0 for i in range(3)):
+            found = (scale, offset)
+    transform.__dict__["_plain_affine"] = found
+    return found
+
+
+def r_round(value: float) -> float:
+    """The path builder's rounding (9 decimals, no negative zero)."""
+    return round(float(value), 9) + 0.0
