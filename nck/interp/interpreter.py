@@ -195,8 +195,8 @@ class Interpreter:
         if self._state.finished or not self._state.frames:
             return False
         frame = self._state.frames[-1]
-        if frame.pc >= len(frame.program.lines):
-            return False
+        if frame.pc >= len(frame.program.lines) or frame.program.plain_run_end(frame.pc) > frame.pc:
+            return False  # (a plain block reads no variables: no need to parse it here)
         line = frame.program.lines[frame.pc]
         if line.block is None:
             return False

@@ -242,3 +242,22 @@ def test_the_editor_check_skips_the_parser_for_plain_lines(monkeypatch: pytest.M
     alarms = list(check.iter_syntax_alarms("G1 X1 Y2 F100\nN20 G0 Z-5\nX1..5\nR1=2\n"))
     assert [(a.number, a.line) for a in alarms] == [(12080, 3)]
     assert parsed == ["X1..5", "R1=2"]
+
+
+def test_the_kernel_run_is_the_same_with_plain_steps() -> None:
+    """``nck run``'s way (the kernel asks for one block at a time): identical segments and time."""
+    from nck.headless import run_on_kernel
+
+    text = "G90 G17 G64 F2000\n" + "\n".join(
+        f"G1 X{(i % 40) * 0.5:.3f} Y{(i // 40) * 0.25:.3f} Z{-(i % 5) * 0.1:.2f}" for i in range(300)) + "\nM30\n"
+    outcomes = []
+    for fast in (False, True):
+        program_module._RECENT.clear()
+        Interpreter.fast_path = fast
+        try:
+            result = run_on_kernel(MACHINE, MemorySource(), NcData(), "K.MPF", text=text, timeout_s=120.0)
+        finally:
+            Interpreter.fast_path = True
+        outcomes.append((result.status, result.blocks, result.machine_time_s, result.segments))
+    assert outcomes[0] == outcomes[1]
+    assert outcomes[1][0] == "ended" and len(outcomes[1][3]) == 300
