@@ -12,6 +12,7 @@ from nck.iso.skipping import AlarmBlock
 
 _SWITCH_TO_ISO = re.compile(r"(?<![A-Z0-9_])G291(?![0-9])", re.IGNORECASE)
 _PROC_FIRST = re.compile(r"^\s*(N\d+\s+)?PROC\b", re.IGNORECASE)
+_NUMBERED_PROC = re.compile(r"^(\s*(?:N\d+\s+)?PROC\s+)O?(\d+)\b", re.IGNORECASE)
 
 
 def wants_iso(text: str, dialect: str) -> bool:
@@ -23,7 +24,7 @@ def wants_iso(text: str, dialect: str) -> bool:
     """
     if is_iso(dialect):
         first = next((line for line in text.splitlines() if line.strip()), "")
-        return not _PROC_FIRST.match(first)
+        return not _PROC_FIRST.match(first) or bool(_NUMBERED_PROC.match(first))
     return bool(_SWITCH_TO_ISO.search(text))
 
 
@@ -35,6 +36,8 @@ def iso_lines(name: str, text: str, dialect: str,
     from nck.lang.parser import parse_block
 
     lines: list = []
+    if is_iso(dialect) and _numbered_proc_lines(text, name, located, guess_n, lines):
+        return lines
     settings = getattr(dialect, "iso_settings", None)
     for iso_line in translate(text, str(dialect) if is_iso(dialect) else "iso-m", settings,
                               start_in_iso=is_iso(dialect), main=main and is_iso(dialect)):
@@ -52,3 +55,26 @@ def iso_lines(name: str, text: str, dialect: str,
             except NcAlarmError as alarm:
                 lines.append(Line(number, raw, None, located(alarm, name, number, guess_n(raw))))
     return lines
+
+
+def _numbered_proc_lines(text: str, name: str, located: Callable, guess_n: Callable,
+                         lines: list) -> bool:
+    """A Siemens-mode macro headed ``PROC 0010`` (the manual's form; Siemens names may not
+    start with a digit): its lines are parsed as Siemens blocks, the PROC name read as
+    ``_N_0010``. Returns False (nothing added) for any other program."""
+    from nck.interp.program import Line
+    from nck.lang.parser import parse_block
+
+    raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    if raw_lines and raw_lines[-1] == "":
+        raw_lines.pop()
+    first = next((i for i, line in enumerate(raw_lines) if line.strip()), None)
+    if first is None or not _NUMBERED_PROC.match(raw_lines[first]):
+        return False
+    for number, raw in enumerate(raw_lines, start=1):
+        block_text = _NUMBERED_PROC.sub(r"\1_N_\2", raw) if number == first + 1 else raw
+        try:
+            lines.append(Line(number, raw, parse_block(block_text, number)))
+        except NcAlarmError as alarm:
+            lines.append(Line(number, raw, None, located(alarm, name, number, guess_n(raw))))
+    return True

@@ -293,3 +293,12 @@ def test_without_the_machine_data_m6_is_a_plain_m_function():
     result = run_iso("T2 M6\nM30\n")
     assert result.status == "ended", result.alarms
     assert result.interpreter.modal.tool == 2
+
+
+@pytest.mark.parametrize("head", ["PROC 0010", "PROC O0010", "N5 PROC 0010"])
+def test_proc_with_the_program_number_as_name_runs_in_siemens_mode(head):
+    macro = head + "\nDEF REAL XA\nXA=$C_X*2\nG1 X=XA F100\nM17\n"
+    result = run_iso("G65 P10 X4.\nM30\n", {"O0010": macro})
+    assert result.status == "ended", result.alarms
+    assert ends(result) == [(4, {"X": 8.0, "Y": 0.0, "Z": 0.0})]
+    assert result.segments[0].source.file == "O0010"
