@@ -26,6 +26,7 @@ from nck.motion.params import AxisParams
 
 AMBIENT_C = 25.0
 MOVING_MM_S = 1e-6
+SMALL_ROWS = 6  # blocks up to this many cycles go through the Python-float path
 FAST_ROWS = 2500  # longest block of the fast path (fewer when alpha^-k would grow past e^200)
 
 
@@ -181,6 +182,16 @@ class ServoBank:
         rows[0] = 1.0
         self._temp_rise_per_m = mech["temp_rise"][None, :] / rows[:, None]
         self._decay_pow = np.power(self._cycle_decay[None, :], np.arange(self._fast_rows + 1, dtype=float)[:, None])
+        # Per-axis constants of the small-block path, as Python floats.
+        self._small_limits = [
+            (float(self.alpha[i]), float(self.b[i]), float(self.kv[i]), float(self._ffw_net[i]),
+             float(self._limits["contour"][i]), float(self._ctrlout_mm_s[i]), float(self._limits["velo"][i]),
+             float(self._limits["fine"][i]), float(self._limits["pos_time"][i]),
+             float(self._limits["still_delay"][i]), float(self._limits["still"][i]), float(self._limits["clamp"][i]),
+             float(self._torque_per_dv[i]), float(self._torque_friction[i]), float(self._torque_gravity[i]),
+             float(self._inv_rated_torque[i]), float(mech["temp_rise"][i]), float(self._cycle_decay[i]))
+            for i in range(n)
+        ]
         self._small_e = np.minimum(self._limits["fine"], np.minimum(self._limits["still"], self._limits["clamp"]))
 
     # -- state ---------------------------------------------------------------
@@ -262,7 +273,7 @@ class ServoBank:
         if m == 1 and self._simple():
             return self._process_one(setpoints[0])
         if self.monitoring and not self.follow_up and m <= self._fast_rows and self._simple():
-            fast = self._process_fast(setpoints)
+            fast = self._process_small(setpoints) if m <= SMALL_ROWS else self._process_fast(setpoints)
             if fast is not None:
                 return fast, None
         T = self.T
@@ -298,6 +309,88 @@ class ServoBank:
         for fault in self.faults:
             fault.push_mm = 0.0
         return actual[:last], trip
+
+    def _process_small(self, x: np.ndarray) -> np.ndarray | None:
+        """A few cycles without faults, cycle by cycle in Python floats (cheaper than numpy here).
+
+        The same recurrence and monitors as :meth:`_process_one`; when a
+        monitor would respond, None is returned with nothing changed and the
+        caller runs the full model, which locates the responding cycle.
+        """
+        T = self.T
+        inv_t = self._inv_t
+        m, n = x.shape
+        rows = x.tolist()
+        lim = self._small_limits
+        x_set = self.x_set.tolist()
+        v_set = self.v_set.tolist()
+        e = self.e.tolist()
+        e_model = self.e_model.tolist()
+        stop_cycles = self.stop_cycles.tolist()
+        fine_since = self.fine_since_stop.tolist()
+        clamped = self.clamped.tolist()
+        temperature = self.temperature.tolist()
+        actual_rows = []
+        a = v_act = v_cmd = torque = v_set
+        for row in rows:
+            out = [0.0] * n
+            v_row = [0.0] * n
+            a_row = [0.0] * n
+            v_act_row = [0.0] * n
+            v_cmd_row = [0.0] * n
+            torque_row = [0.0] * n
+            for i in range(n):
+                (alpha, b, kv, ffw_net, contour, ctrlout, velo, fine_lim, pos_time, still_delay, still, clamp,
+                 mass_dv, friction, gravity, inv_rated, temp_rise, decay) = lim[i]
+                xi = row[i]
+                v = (xi - x_set[i]) * inv_t
+                em = alpha * e_model[i] + b * v
+                dev = (e[i] - e_model[i]) * alpha
+                ei = em + dev
+                act = xi - ei
+                va = (act - (x_set[i] - e[i])) * inv_t
+                vc = kv * ei + ffw_net * v
+                moving = abs(v) > MOVING_MM_S
+                abs_e = abs(ei)
+                fine = abs_e <= fine_lim and not moving
+                since_s = 0.0 if moving else (stop_cycles[i] + 1) * T
+                reached = not moving and (fine_since[i] or fine)
+                if (abs(dev) > contour or abs(vc) > ctrlout or abs(va) > velo
+                        or (not moving and not reached and since_s > pos_time)
+                        or (not moving and reached and since_s >= still_delay
+                            and abs_e > (clamp if clamped[i] else still))):
+                    return None  # a monitor responds: the full model decides where
+                stop_cycles[i] = 0 if moving else stop_cycles[i] + 1
+                fine_since[i] = False if moving else (fine_since[i] or fine)
+                acc = (v - v_set[i]) * inv_t
+                tq = mass_dv * acc * T + friction * (1.0 if va > 0 else -1.0 if va < 0 else 0.0) + gravity
+                target = AMBIENT_C + temp_rise * (tq * inv_rated) ** 2
+                temperature[i] = target + (temperature[i] - target) * decay
+                x_set[i] = xi
+                v_set_i = v
+                e[i] = ei
+                e_model[i] = em
+                out[i] = act
+                v_row[i] = v_set_i
+                a_row[i] = acc
+                v_act_row[i] = va
+                v_cmd_row[i] = vc
+                torque_row[i] = tq
+            v_set = v_row
+            a, v_act, v_cmd, torque = a_row, v_act_row, v_cmd_row, torque_row
+            actual_rows.append(out)
+        self.x_set = np.array(x_set)
+        self.v_set = np.array(v_set)
+        self.a_set = np.array(a)
+        self.e = np.array(e)
+        self.e_model = np.array(e_model)
+        self.v_act = np.array(v_act)
+        self.v_cmd = np.array(v_cmd)
+        self.torque = np.array(torque)
+        self.temperature = np.array(temperature)
+        self.stop_cycles = np.array(stop_cycles, dtype=np.int64)
+        self.fine_since_stop = np.array(fine_since, dtype=bool)
+        return np.array(actual_rows)
 
     def _process_fast(self, x: np.ndarray) -> np.ndarray | None:
         """The common block (no faults, monitors on): the model of :meth:`process`, cheaper.

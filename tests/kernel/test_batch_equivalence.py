@@ -117,6 +117,21 @@ def test_mixed_program_batched_equals_cycle_by_cycle() -> None:
     assert max(batched["sizes"]) > 20
 
 
+def test_short_cam_blocks_batched_equal_cycle_by_cycle() -> None:
+    """0.5 mm chords at F3000: two or three IPO cycles per block (the Python-float servo path)."""
+    lines = ["N1 G90 G17 G64 G1 F3000"]
+    for k in range(150):
+        angle = k * 0.01
+        lines.append(f"G1 X{50.0 * math.cos(angle):.3f} Y{50.0 * math.sin(angle):.3f} Z{-(k % 10) * 0.01:.3f}")
+    lines.append("M30")
+    program = "\n".join(lines) + "\n"
+    single = _run(program, 1)
+    batched = _run(program, 2500)
+    assert single["state"] == ("reset", "aborted") and single["alarms"] == []
+    _assert_same(single, batched)
+    assert batched["steps"] < single["cycles"] / 10
+
+
 def test_feed_override_between_steps_gives_the_same_run() -> None:
     def slower(nck: Nck) -> None:
         assert isinstance(nck.submit(c.SetOverride("feed", 40.0)), c.Accepted)

@@ -364,3 +364,27 @@ def test_stop_and_override_changes_keep_limits_and_reach_the_end(soft, t_stop, h
     assert np.all(np.abs(a) <= AMAX * OVL * (1 + 1e-6) + 1e-3)
     if soft:
         assert np.all(np.abs(j) <= JMAX * OVL * (1 + 1e-6) + 1e-1)
+
+
+def test_small_block_servo_path_equals_cycle_by_cycle() -> None:
+    """The Python-float path for short blocks gives the per-cycle model's state."""
+    import copy
+
+    from nck.motion.servo import SMALL_ROWS
+
+    rng = np.random.default_rng(5)
+    base = motion().servo
+    for _ in range(20):
+        m = int(rng.integers(2, SMALL_ROWS + 1))
+        start = rng.uniform(-0.05, 0.05, size=3)
+        rows = start + np.cumsum(rng.uniform(-0.2, 0.2, size=(m, 3)), axis=0)
+        small = copy.deepcopy(base)
+        single = copy.deepcopy(base)
+        out = small._process_small(rows)
+        assert out is not None
+        for row in rows:
+            single._process_one(row)
+        for name in ("x_set", "v_set", "e", "e_model", "v_act", "v_cmd", "stop_cycles", "fine_since_stop"):
+            np.testing.assert_allclose(getattr(small, name), getattr(single, name), rtol=0, atol=1e-12)
+        np.testing.assert_allclose(small.temperature, single.temperature, rtol=1e-12)
+        base = small
