@@ -5,7 +5,8 @@ per screen refresh while a program runs, keypress-to-repaint latency while it
 runs (keys sent with Textual's Pilot, the kernel advancing on the bridge's
 real-time clock, latency up to the first frame of the new screen), and the peak
 RSS. With ``--program FILE`` that program is
-selected in AUTO before the measurements (memory with a large program).
+imported into an NC file system, selected in AUTO and opened in the Program
+area's editor before the measurements (memory with a large program).
 """
 
 from __future__ import annotations
@@ -13,7 +14,6 @@ from __future__ import annotations
 import asyncio
 import json
 import resource
-import shutil
 import statistics
 import sys
 import tempfile
@@ -29,6 +29,20 @@ SHORT_PROGRAM = ("N10 G90 G0 X0 Y0 Z10\n"
 def _percentile(values: list[float], fraction: float) -> float:
     ordered = sorted(values)
     return ordered[min(len(ordered) - 1, int(round(fraction * (len(ordered) - 1))))]
+
+
+async def _open_in_editor(app: Any, pilot: Any, path: str) -> None:
+    """Open ``path`` in the Program area's editor (as Program manager → Open does), back to Machine."""
+    from screens.program_files import ProgramFiles
+
+    ProgramFiles.of_app(app).request_open(path)
+    await pilot.press("alt+p")
+    await pilot.pause()
+    opened = getattr(app.screen, "program", None)
+    if opened != path:
+        raise RuntimeError(f"the editor did not open {path} (shows {opened})")
+    await pilot.press("alt+m")
+    await pilot.pause()
 
 
 async def _key_latencies(app: Any, pilot: Any, presses: int = 40) -> tuple[list[float], list[float]]:
@@ -56,7 +70,7 @@ async def _key_latencies(app: Any, pilot: Any, presses: int = 40) -> tuple[list[
     latency: list[float] = []
     roundtrip: list[float] = []
     for k in range(presses):
-        key = "alt+o" if k % 2 == 0 else "alt+m"  # Program and Machine: a full area switch
+        key = "alt+o" if k % 2 == 0 else "alt+m"  # Parameter and Machine: a full area switch
         await pilot.pause(0.06)  # let a timer tick fall anywhere relative to the key
         frames.clear()
         t0 = time.perf_counter()
@@ -80,13 +94,18 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
 
     folder = Path(tempfile.mkdtemp())
     name = "BENCH.MPF"
-    if program is not None:
-        shutil.copy(program, folder / program.name.upper())
-        name = program.name.upper()
+    programs: Any
+    if program is not None:  # in the NC file system, so that the editor can open it too
+        from nck.storage import NcFileSystem
+
+        programs = NcFileSystem(folder / "nc")
+        name = programs.import_file(program).path.rpartition("/")[2]
     else:
         (folder / name).write_text(SHORT_PROGRAM)
-    nck = Nck(programs=DirectoryPrograms([folder]), referenced=True)
+        programs = DirectoryPrograms([folder])
+    nck = Nck(programs=programs, referenced=True)
     app = HmiApp(nck, realtime=False)
+    app.freeze_gc_at_start = True  # as ``hmi`` (hmi.app.main) does
     first_frame: list[float] = []
     out: dict[str, float | str] = {}
     async with app.run_test(size=(160, 48)) as pilot:
@@ -98,6 +117,8 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
         nck.submit(c.SelectProgram(name))
         nck.submit(c.CycleStart())
         await pilot.pause()
+        if program is not None:
+            await _open_in_editor(app, pilot, f"MPF/{name}")
         refresh_cpu: list[float] = []
         for _ in range(60):
             nck.tick(0.05)

@@ -18,9 +18,9 @@ kernel's check (``nck.check``), never by this module.
 from __future__ import annotations
 
 import re
-from itertools import repeat
 from dataclasses import dataclass
-from typing import Iterable, Mapping
+from collections.abc import Sequence
+from typing import Any, Callable, Iterable, Mapping
 
 from rich.segment import Segment
 from rich.style import Style
@@ -29,6 +29,7 @@ from textual.binding import Binding
 from textual.document._document import Document
 from textual.document._document_navigator import DocumentNavigator
 from textual.document._wrapped_document import WrappedDocument
+from textual.document._document import Location
 from textual.document._edit import Edit, EditResult
 from textual.expand_tabs import get_tab_widths
 from textual.geometry import Size
@@ -260,18 +261,96 @@ class ErrorMark:
         return f"{self.number} {self.text}"
 
 
+class _NcDocument(Document):
+    """``Document`` that joins its lines into ``text`` once per change, not at every call.
+
+    ``TextArea`` asks for the whole text while rendering each line (to decide on
+    a placeholder) and the screen compares it with the saved text; on a
+    200,000-line program every join costs milliseconds.
+    """
+
+    def __init__(self, text: str) -> None:
+        super().__init__(text)
+        self._joined: str | None = None
+
+    @property
+    def text(self) -> str:
+        """The document text (joined once per change)."""
+        if self._joined is None:
+            self._joined = self._newline.join(self._lines)
+        return self._joined
+
+    def replace_range(self, start: Location, end: Location, text: str) -> EditResult:
+        """Edit the text (see ``Document.replace_range``); the joined text is made again."""
+        self._joined = None
+        return super().replace_range(start, end, text)
+
+
+class _IdentityRows(Sequence):
+    """Row table of an unwrapped document, where display row ``i`` is line ``i``.
+
+    ``WrappedDocument`` keeps a tuple and a list per line to map rows to lines
+    and back (about 150 bytes a line). Without soft wrap the mapping is the
+    identity, so the table only needs its length; ``make`` builds the entry of
+    a row when asked.
+    """
+
+    def __init__(self, count: int, make: Callable[[int], Any]) -> None:
+        self._count = count
+        self._make = make
+
+    def __len__(self) -> int:
+        return self._count
+
+    def __getitem__(self, index: Any) -> Any:
+        if isinstance(index, slice):
+            return [self._make(row) for row in range(*index.indices(self._count))]
+        if index < 0:
+            index += self._count
+        if not 0 <= index < self._count:
+            raise IndexError(index)
+        return self._make(index)
+
+
+def _row_info(row: int) -> tuple[int, int]:
+    return (row, 0)
+
+
+def _row_offsets(row: int) -> list[int]:
+    return [row]
+
+
+_NO_BREAKS: list[int] = []
+_ONE_SECTION = [0]
+# Shared inner lists: WrappedDocument only ever replaces them, never mutates them.
+
+
+def _tab_widths(line: str, size: int) -> list[int]:
+    if not line:
+        return _NO_BREAKS
+    if "\t" in line:
+        return [width for _, width in get_tab_widths(line, size)]
+    return _ONE_SECTION
+
+
 class _CountedWrappedDocument(WrappedDocument):
-    """``WrappedDocument`` whose height is the length of its offset table.
+    """``WrappedDocument`` that keeps no per-line row tables when nothing is wrapped.
 
     Textual sums the wrap offsets of every line for each rendered line; on a
-    200,000-line program that costs a fifth of a second per line. The offset
-    table already has one entry per display row, so its length is the height.
+    200,000-line program that costs a fifth of a second per line. The row table
+    has one entry per display row, so its length is the height. Without soft
+    wrap (the NC editor never wraps) the row tables are :class:`_IdentityRows`
+    and an edit only updates the tab widths of the lines it touched.
     """
 
     @property
     def height(self) -> int:
         """The number of display rows."""
         return len(self._offset_to_line_info)
+
+    def _identity_rows(self, count: int) -> None:
+        self._offset_to_line_info = _IdentityRows(count, _row_info)  # type: ignore[assignment]
+        self._line_index_to_offsets = _IdentityRows(count, _row_offsets)  # type: ignore[assignment]
 
     def wrap(self, width: int, tab_width: int | None = None) -> None:
         """Without soft wrap every line is one row: build the tables directly (fast path)."""
@@ -280,7 +359,8 @@ class _CountedWrappedDocument(WrappedDocument):
             return
         lines = self.document.lines
         unchanged_tabs = not tab_width or tab_width == self._tab_width
-        if self._width == 0 and unchanged_tabs and len(self._offset_to_line_info) == len(lines) and lines:
+        if (self._width == 0 and unchanged_tabs and isinstance(self._offset_to_line_info, _IdentityRows)
+                and len(self._offset_to_line_info) == len(lines) and lines):
             # Already unwrapped, and every edit since went through wrap_range, which keeps
             # the tables current: a resize needs no new tables.
             return
@@ -289,19 +369,38 @@ class _CountedWrappedDocument(WrappedDocument):
             self._tab_width = tab_width
         count = len(lines)
         size = self._tab_width
-        # The inner lists are shared: WrappedDocument only ever replaces them, never mutates.
-        no_breaks: list[int] = []
-        one_section = [0]
-        self._wrap_offsets = [no_breaks] * count
-        self._offset_to_line_info = list(zip(range(count), repeat(0)))
-        self._line_index_to_offsets = [[index] for index in range(count)]
-        tab_widths = [one_section] * count
-        for index, line in enumerate(lines):
-            if not line:
-                tab_widths[index] = no_breaks
-            elif "\t" in line:
-                tab_widths[index] = [w for _, w in get_tab_widths(line, size)]
-        self._tab_width_cache = tab_widths
+        self._wrap_offsets = [_NO_BREAKS] * count
+        self._identity_rows(count)
+        self._tab_width_cache = [_tab_widths(line, size) for line in lines]
+
+    def wrap_range(self, start: Location, old_end: Location, new_end: Location) -> None:
+        """After an edit: without soft wrap only the edited lines' tab widths change."""
+        if self._width or not isinstance(self._offset_to_line_info, _IdentityRows):
+            super().wrap_range(start, old_end, new_end)
+            return
+        lines = self.document.lines
+        old_count = len(self._tab_width_cache)
+        top = max(0, min(start[0], old_end[0], old_count - 1, len(lines) - 1))
+        old_bottom = max(top, min(max(start[0], old_end[0]), old_count - 1))
+        new_bottom = max(top, min(max(start[0], new_end[0]), len(lines) - 1))
+        size = self._tab_width
+        edited = [_tab_widths(line, size) for line in lines[top:new_bottom + 1]]
+        self._tab_width_cache[top:old_bottom + 1] = edited
+        self._wrap_offsets[top:old_bottom + 1] = [_NO_BREAKS] * len(edited)
+        self._identity_rows(len(lines))
+
+
+def widest_line_cells(lines: Iterable[str], tab_width: int) -> int:
+    """Cells of the widest line (tabs expanded); plain ASCII lines are measured by length."""
+    widest = 0
+    for line in lines:
+        if line.isascii() and "\t" not in line and line.isprintable():
+            width = len(line)
+        else:
+            width = cell_len(line.expandtabs(tab_width))
+        if width > widest:
+            widest = width
+    return widest
 
 
 class NcEditor(TextArea):
@@ -332,7 +431,7 @@ class NcEditor(TextArea):
     def _set_document(self, text: str, language: str | None) -> None:
         """Build a plain-text document (NC colours come from :meth:`get_line`) with fast wrapping."""
         self._highlight_query = None
-        self.document = Document(text)
+        self.document = _NcDocument(text)
         self.wrapped_document = _CountedWrappedDocument(self.document, tab_width=self.indent_width)
         self._max_line_cells: int | None = None
         self.navigator = DocumentNavigator(self.wrapped_document)
@@ -354,7 +453,7 @@ class NcEditor(TextArea):
             super()._refresh_size()
             return
         if getattr(self, "_max_line_cells", None) is None:
-            self._max_line_cells = self.document.get_size(self.indent_width).width
+            self._max_line_cells = widest_line_cells(self.document.lines, self.indent_width)
         row = min(self.cursor_location[0], self.document.line_count - 1)
         width = max(self._max_line_cells, self._line_cells(row) if row >= 0 else 0)
         self._max_line_cells = width
