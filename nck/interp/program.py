@@ -222,14 +222,16 @@ def _load_siemens(name: str, text: str) -> Program:
     counted_to = 0
     next_plain = 0  # first line after the last non-plain line
     for found in NOT_PLAIN_LINE.finditer(text):
-        begin = found.start()
+        raw = found.group(1)
+        if not raw:
+            break  # the end of the text (a non-plain line is never empty)
+        begin = found.start(1)
         index += text.count("\n", counted_to, begin)
         counted_to = begin
         if index > next_plain:
             starts.append(next_plain)
             stops.append(index)
         next_plain = index + 1
-        raw = found.group()
         try:
             block = parse_block(raw, index + 1)
         except NcAlarmError as alarm:

@@ -45,9 +45,13 @@ PLAIN_LINE = re.compile(PLAIN_PATTERN)
 PLAIN_LINES = re.compile(rf"^{PLAIN_PATTERN}$", re.MULTILINE)
 """The same for every line of a text chunk (``findall`` → one tuple per plain line, '' for absent)."""
 
-NOT_PLAIN_LINE = re.compile("^(?!" + re.sub(r"\((?!\?)", "(?:", PLAIN_PATTERN) + "$).+$", re.MULTILINE)
-"""``finditer`` over a text → every line that is *not* plain (a plain line is never matched,
-so a scan allocates nothing for them)."""
+_BARE = re.sub(r"\((?!\?)", "(?:", PLAIN_PATTERN)
+
+NOT_PLAIN_LINE = re.compile(rf"(?:{_BARE}(?:\n|\Z))*+([^\n]*)")
+"""``finditer`` over a whole text (from its start) → per match, group 1 is the next line that
+is *not* plain ('' at the end of the text). Every match starts at a line start (or at the line
+end of the previous non-plain line) and skips the plain lines before it in one go, so a scan
+allocates nothing for plain lines."""
 
 PLAIN_WORDS = re.compile(
     r"^[ \t]*(?:N[0-9]+[ \t]*)?([^XYZF;\n]*)(?:X([^ \tYZF;\n]+))?[ \t]*(?:Y([^ \tZF;\n]+))?"
