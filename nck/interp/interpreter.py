@@ -144,6 +144,10 @@ class Interpreter:
     def modal_view(self) -> ModalView:
         """The modal state a display needs."""
         modal = self._state.modal
+        iso = _iso_view(modal.gcodes, self.dialect, modal.geometry)
+        if iso:  # ISO groups 8 (G43/G49) and 12 (G66/G67)
+            from nck.iso.macros import display_codes
+            iso.update(display_codes(self._state.frames, modal, self.dialect == "iso-t"))
         return ModalView(
             gcodes=dict(modal.gcodes),
             tool=modal.tool,
@@ -152,7 +156,7 @@ class Interpreter:
             spindle_speed_rpm=modal.spindle_speed_rpm,
             spindle_state=modal.spindle_state,
             aux=dict(modal.aux),
-            iso_gcodes=_iso_view(modal.gcodes, self.dialect, modal.geometry),
+            iso_gcodes=iso,
         )
 
     def r(self, index: int) -> float:

@@ -437,3 +437,16 @@ def after_return(modal: Any, frame: Frame) -> None:
     state = getattr(frame, "iso_macro", None)
     if state is not None and state.back_to_iso:
         modal.gcodes[ISO_MODE_GROUP] = "G291"
+
+
+def display_codes(frames: list[Frame], modal: Any, turning: bool) -> dict[int, str]:
+    """ISO groups the Siemens G groups cannot show: 12 (G66 while a modal macro call of
+    any level is active, else G67) and, in ISO M, 8 (G43 while a tool edge, and with it
+    the length compensation, is active, else G49; G44 is shown as G43)."""
+    modal_macro = any(
+        getattr(f, "iso_macro", None) is not None and f.iso_macro.modal_call is not None
+        and f.iso_macro.modal_call is f.modal_call for f in frames)
+    codes = {12: "G66" if modal_macro else "G67"}
+    if not turning:
+        codes[8] = "G43" if getattr(modal, "edge", 0) else "G49"
+    return codes

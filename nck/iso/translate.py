@@ -35,8 +35,8 @@ Not modelled (yet): a second mid-block ``/n`` in a block is resolved as if its l
 off; M98 with
 8-digit program numbers (MD 20734 bit 6); MD alarm 4150 for a macro on a fixed M;
 ``$P_ISO_STACK``; G44 applies the length like G43; MD 20380 length modes B/C; a
-G10 offset change acts at once (manual: at the next T/H/D); groups 8 (G43/G49)
-and 12 (G66/G67) in the G-group display show their reset codes; the cycle group (9) in the G-group
+G10 offset change acts at once (manual: at the next T/H/D); the G-group display
+shows G43 for G44 (group 8 follows the active edge); the cycle group (9) in the G-group
 display always shows G80;
 G68/G51.1 act in the programmable frame, not in channel base frames 1–3; mirroring of
 non-geometry axes; polar coordinates in drilling cycles; ``$P_AP``; a Siemens

@@ -302,3 +302,32 @@ def test_proc_with_the_program_number_as_name_runs_in_siemens_mode(head):
     assert result.status == "ended", result.alarms
     assert ends(result) == [(4, {"X": 8.0, "Y": 0.0, "Z": 0.0})]
     assert result.segments[0].source.file == "O0010"
+
+
+def _iso_views(text: str, programs: dict[str, str], **md) -> list[tuple[str, int, dict[int, str]]]:
+    from nck.interp.interpreter import Interpreter
+    from nck.interp.sources import MemorySource
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+    machine = load_machine(None)
+    machine.md.update(md)
+    interp = Interpreter(machine, MemorySource(programs), NcData(), dialect="iso-m")
+    interp.start_text("T.MPF", text)
+    views = []
+    while not interp.finished:
+        source = interp.current_source()
+        interp.step()
+        views.append((source.file, source.line, interp.modal_view().iso_gcodes))
+    return views
+
+
+def test_g_group_display_shows_g66_and_g43():
+    text = ("G290\n$TC_DP1[2,1]=120 $TC_DP3[2,1]=10\nG291\nT2\nG43 H1 Z0\nG66 P10 X1.\n"
+            "G00 X5.\nG67\nG49 Z0\nM30\n")
+    views = {(f, line): view for f, line, view in _iso_views(text, {"O0010": "M99\n"},
+                                                              MD22550=0, MD20270=0)}
+    main = {line: view for (f, line), view in views.items() if f == "T.MPF"}
+    assert main[4][8] == "G49" and main[5][8] == "G43"
+    assert main[5][12] == "G67" and main[6][12] == "G66" and main[7][12] == "G66"
+    assert views[("O0010", 1)][12] == "G66"  # still shown while the macro runs
+    assert main[8][12] == "G67" and main[9][8] == "G49"
