@@ -51,6 +51,7 @@ class MachineScreen(AreaBase):
     AREA_ID: ClassVar[str] = "machine"
     AREA_TITLE: ClassVar[str] = "MACHINE"
     CSS_PATH = "machine.tcss"
+    AUTO_FOCUS = None  # focus follows the view (_focus_for); Textual's auto focus only fought it
 
     def __init__(self) -> None:
         super().__init__(id="area-machine")
