@@ -671,8 +671,10 @@ class Nck(ManualControl, ControlSettings, StatusView):
         first, as the cycle-by-cycle kernel does before that cycle's motion.
         """
         run = self._overlay or self._run
-        if run is None or self._sit.channel != ACTIVE or self._jogging or self._test_motion is not None:
+        if self._jogging or self._test_motion is not None:
             return 0
+        if run is None or self._sit.channel != ACTIVE:
+            return self.batch_cycles  # nothing is fed: the cycles may run on
         motion = self._path_motion()
         events = run.feed(motion, self._run_options(), self._ipo_s)
         if events:

@@ -182,12 +182,30 @@ class PlannedMotion:
         for i, delta in self.jog.take_shifts().items():
             self.servo.x_set[i] += delta
             self.cmd[i] += delta
-        if self._quiet():
-            self.servo.idle(n)
-            self._record(np.repeat(self.cmd[None, :], n, axis=0))
-            self._tick(n)
-            self._advance_spindles(n)
-            return n
+        done = 0
+        while self._quiet():
+            # At rest: whole stretches at once; a caller that feeds between cycles is
+            # asked after the first cycle (a run may have just reached its end).
+            stretch = n - done if on_block_event is None or done > 0 else 1
+            self.servo.idle(stretch)
+            self._record(np.repeat(self.cmd[None, :], stretch, axis=0))
+            self._tick(stretch)
+            self._advance_spindles(stretch)
+            done += stretch
+            if done >= n or on_block_event is None:
+                return done
+            allowed = on_block_event(done)
+            if allowed <= 0:
+                return done
+            if allowed < n - done:
+                n = done + allowed
+        if done:
+            return done + self._run_moving(n - done, stop_at_event, on_block_event, done)
+        return self._run_moving(n, stop_at_event, on_block_event, 0)
+
+    def _run_moving(self, n: int, stop_at_event: bool, on_block_event: Callable[[int], int] | None,
+                    offset: int) -> int:
+        """The cycles of :meth:`_run_cycles` once something moves (``offset`` cycles already run)."""
         columns = self.jog.fill(n, self.cmd.copy())
         rows = np.empty((n, len(self.names)))
         k = 0
@@ -219,7 +237,7 @@ class PlannedMotion:
                     and not self._alarms and not self.jog.alarms and not self.faulted):
                 self._advance_spindles(k - spun)  # the caller may read the spindle speeds
                 spun = k
-                allowed = on_block_event(k)
+                allowed = on_block_event(offset + k)
                 if allowed > 0:
                     limit = min(n, k + allowed)
         if k == 0:  # a trip in the very first cycle still took that cycle

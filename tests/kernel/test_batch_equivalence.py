@@ -188,3 +188,44 @@ def test_monitor_without_fault_trips_in_the_same_cycle() -> None:
     assert batched["cycles"] == single["cycles"]
     assert batched["x"] == pytest.approx(single["x"], abs=1e-9)
     np.testing.assert_allclose(batched["rows"], single["rows"], rtol=0, atol=1e-9)
+
+
+def _golden_cases() -> list[str]:
+    from tests.reliability.harness import golden_programs
+
+    return sorted(golden_programs())
+
+
+@pytest.mark.parametrize("case", _golden_cases())
+def test_golden_program_batched_equals_cycle_by_cycle(case: str) -> None:
+    """Every golden program: same end time, state, alarms and R parameters batched or not."""
+    from tests.reliability.harness import golden_programs, golden_subprograms
+
+    text = golden_programs()[case]
+    sources = dict(golden_subprograms())
+    sources["P.MPF"] = text
+    results = []
+    for batch in (1, 2500):
+        nck = Nck(programs=MemorySource(sources), referenced=True, batch_cycles=batch)
+        nck.motion.enable_trace()
+        nck.submit(c.SelectMode("AUTO"))
+        nck.submit(c.SelectProgram("P.MPF"))
+        nck.submit(c.CycleStart())
+        nck.run_until(lambda k: k.situation.channel != "active", 30.0, max_batch_cycles=nck.batch_cycles)
+        times, rows = nck.motion.trace()
+        results.append({
+            "cycles": nck.cycles_done,
+            "state": (nck.situation.channel, nck.situation.program),
+            "alarms": [(e.number, round(e.came_s / nck.ipo_cycle_s)) for e in nck.alarm_history()],
+            "r": dict(nck.data.r) if hasattr(nck.data.r, "items") else list(nck.data.r),
+            "rows": rows,
+            "blocks": nck.blocks_interpreted,
+        })
+    single, batched = results
+    assert batched["cycles"] == single["cycles"]
+    assert batched["state"] == single["state"]
+    assert batched["alarms"] == single["alarms"]
+    assert batched["blocks"] == single["blocks"]
+    assert batched["r"] == single["r"]
+    assert batched["rows"].shape == single["rows"].shape
+    np.testing.assert_allclose(batched["rows"], single["rows"], rtol=0, atol=1e-9)
