@@ -107,20 +107,24 @@ def test_program_memory_does_not_grow_with_its_length() -> None:
 
 
 def test_a_million_line_program_is_scanned_not_kept_as_syntax_trees() -> None:
-    """A 1,000,000-line program costs its text plus a small index (measured in a fresh process)."""
+    """Loading a 1,000,000-line program adds a small index to its text (measured in a fresh process).
+
+    The text is built in chunks before the baseline is taken; parsed syntax trees
+    (one per line) would add ~800 MB.
+    """
     script = (
-        "import resource, sys\n"
+        "import resource\n"
         "from nck.interp.program import load_program\n"
+        "chunks = [''.join(f'N{i} G1 X{i % 100}.5 Y-{i % 7} F500\\n' for i in range(k, k + 10_000))\n"
+        "          for k in range(0, 1_000_000, 10_000)]\n"
+        "text = ''.join(chunks) + 'R1=R1+1\\nM30\\n'\n"
+        "del chunks\n"
         "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
-        "text = ''.join(f'N{i} G1 X{i % 100}.5 Y-{i % 7} F500\\n' for i in range(1_000_000)) + 'R1=R1+1\\nM30\\n'\n"
         "program = load_program('MILLION.MPF', text, 'siemens', main=True)\n"
         "assert len(program.lines) == 1_000_002 and program.lines[999_999].block.number == 999_999\n"
         "assert not program.problems() and program.plain_run_end(0) == 1_000_000\n"
-        "grown = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base\n"
-        "print(grown, len(text))\n"
+        "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base)\n"
     )
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
-    grown_kb, text_chars = (int(v) for v in done.stdout.split())
-    # the text itself (~33 MB) is needed; parsed syntax trees would add ~800 MB
-    assert grown_kb * 1024 < text_chars + 40_000_000
+    assert int(done.stdout) * 1024 < 40_000_000
