@@ -203,7 +203,12 @@ def interpret_only(
 ) -> RunResult:
     """Interpret ``program_name`` without the kernel (``nck check``): each segment is
     placed at its end point; ``machine_time_s`` is the blocks' cost plus a
-    feed-based estimate of each segment."""
+    feed-based estimate of each segment.
+
+    When nobody consumes the canonical commands (``keep_commands=False`` and no
+    ``on_command``), runs of plain motion blocks are interpreted as batches
+    (:meth:`Interpreter.plain_batch`, :func:`batch_clock`) with the same result.
+    """
     interp = Interpreter(machine, programs, data, dialect=dialect)
     interp.skip_levels = frozenset(skip_levels)
     result = RunResult(status="ended", interpreter=interp)

@@ -16,6 +16,11 @@ alarm restores both, so a failed block changes nothing.
 Every interpreted block costs :data:`BLOCK_COST_S` of simulated time, so that
 an endless loop without motion still advances the clock and ends at a timeout.
 
+Plain motion blocks (``G1 X… Y… Z…``, :mod:`nck.lang.plain`) under a simple
+modal state take a fast path with the same result (:mod:`nck.interp.plain_step`;
+:meth:`plain_batch` plans a whole run of them for ``nck check``);
+:attr:`fast_path` switches both off.
+
 Program-control hooks for the channel: :attr:`skip_levels` (active ``/n``
 levels), :attr:`position_source` (actual positions for ``$AA_IM``),
 :attr:`flags` (``search``, ``test``, ``dry_run`` for ``$P_…``) and
