@@ -112,6 +112,9 @@ def _move(interp: Interpreter, setup: Setup, source: canon.Source, kind: int,
     modal.position_wcs = _wcs_view(interp, setup, end)
     modal.position_mcs = dict(end_mcs)
     gcodes = modal.gcodes
+    shared = interp.__dict__.get("_plain_gcodes")
+    if shared != gcodes:  # consecutive motions share one (read-only) copy of the G codes
+        shared = interp.__dict__["_plain_gcodes"] = dict(gcodes)
     rapid = kind == 0
     return canon.Motion(
         kind="G1" if kind else "G0", source=source, plane=gcodes.get(6, "G17"),
@@ -119,7 +122,7 @@ def _move(interp: Interpreter, setup: Setup, source: canon.Source, kind: int,
         feed=None if rapid else modal.feed,
         feed_mm_min=None if rapid else modal.feed * setup.feed_mm,
         exact_stop=gcodes.get(10, "G60") == "G60", exact_stop_window=gcodes.get(12, "G601"),
-        gcodes=dict(gcodes),
+        gcodes=shared,
     )
 
 
