@@ -51,9 +51,11 @@ class Program:
 
     Attributes:
         name: display name (``PART1.MPF``).
-        lines: every source line in order.
+        lines: every source line in order (a Siemens text: :class:`TextLines`, parsed on
+            demand; an ISO text: the list of translated lines).
         labels: label → line index (first definition).
-        numbers: block number → line indices.
+        numbers: block number → line indices (ISO lists; a scanned text indexes its
+            numbers on the first :meth:`find_number`).
         partner: for control-structure lines: the index of the matching line
             (IF → ENDIF, ELSE → ENDIF, WHILE ↔ ENDWHILE, FOR ↔ ENDFOR,
             LOOP ↔ ENDLOOP, REPEAT ↔ UNTIL, ENDIF → IF).
@@ -61,6 +63,7 @@ class Program:
         structure_errors: line index → alarm (mismatched or too deep structures,
             duplicate labels).
         proc: the PROC statement of the first block, if any.
+        plain_starts, plain_stops: the runs of plain lines of a scanned text.
     """
 
     name: str
