@@ -7,7 +7,7 @@ in the MCS, millimetres (degrees for rotary axes), seconds.
 
 from __future__ import annotations
 
-from typing import Mapping, Protocol
+from typing import Callable, Mapping, Protocol
 
 from nck.canon import Dwell, Motion, Source
 from nck.errors import NcAlarmError
@@ -121,6 +121,12 @@ class MotionExtensions(Protocol):
     def cycles_until_block_change(self) -> int:
         """IPO cycles the current segment or dwell surely still runs; advancing that many at
         once gives the same motion as cycle by cycle (numpy per block)."""
+
+    def advance_cycles(self, n_cycles: int, on_block_event: Callable[[int], int] | None = None) -> int:
+        """Advance at most ``n_cycles`` IPO cycles, ending the step with the cycle of the next
+        block event; at an event ``on_block_event(cycles_done)`` may do the caller's per-cycle
+        work and answer how many more cycles may run (0 = stop). Returns the cycles run; the
+        result is the same as one cycle per call (the kernel's batched steps)."""
 
     def enable_trace(self) -> None:
         """Record every IPO-cycle setpoint from now on (``nck run --trace``)."""
