@@ -23,9 +23,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from nck.motion.params import AxisParams
+from nck.motion.servo_paths import AMBIENT_C, MOVING_MM_S, process_fast, process_small
 
-AMBIENT_C = 25.0
-MOVING_MM_S = 1e-6
+__all__ = ["AMBIENT_C", "MOVING_MM_S", "AxisState", "Fault", "ServoBank", "Trip", "first_order"]
 SMALL_ROWS = 6  # blocks up to this many cycles go through the Python-float path
 FAST_ROWS = 2500  # longest block of the fast path (fewer when alpha^-k would grow past e^200)
 
@@ -273,7 +273,7 @@ class ServoBank:
         if m == 1 and self._simple():
             return self._process_one(setpoints[0])
         if self.monitoring and not self.follow_up and m <= self._fast_rows and self._simple():
-            fast = self._process_small(setpoints) if m <= SMALL_ROWS else self._process_fast(setpoints)
+            fast = process_small(self, setpoints) if m <= SMALL_ROWS else process_fast(self, setpoints)
             if fast is not None:
                 return fast, None
         T = self.T
@@ -309,163 +309,6 @@ class ServoBank:
         for fault in self.faults:
             fault.push_mm = 0.0
         return actual[:last], trip
-
-    def _process_small(self, x: np.ndarray) -> np.ndarray | None:
-        """A few cycles without faults, cycle by cycle in Python floats (cheaper than numpy here).
-
-        The same recurrence and monitors as :meth:`_process_one`; when a
-        monitor would respond, None is returned with nothing changed and the
-        caller runs the full model, which locates the responding cycle.
-        """
-        T = self.T
-        inv_t = self._inv_t
-        m, n = x.shape
-        rows = x.tolist()
-        lim = self._small_limits
-        x_set = self.x_set.tolist()
-        v_set = self.v_set.tolist()
-        e = self.e.tolist()
-        e_model = self.e_model.tolist()
-        stop_cycles = self.stop_cycles.tolist()
-        fine_since = self.fine_since_stop.tolist()
-        clamped = self.clamped.tolist()
-        temperature = self.temperature.tolist()
-        actual_rows = []
-        a = v_act = v_cmd = torque = v_set
-        for row in rows:
-            out = [0.0] * n
-            v_row = [0.0] * n
-            a_row = [0.0] * n
-            v_act_row = [0.0] * n
-            v_cmd_row = [0.0] * n
-            torque_row = [0.0] * n
-            for i in range(n):
-                (alpha, b, kv, ffw_net, contour, ctrlout, velo, fine_lim, pos_time, still_delay, still, clamp,
-                 mass_dv, friction, gravity, inv_rated, temp_rise, decay) = lim[i]
-                xi = row[i]
-                v = (xi - x_set[i]) * inv_t
-                em = alpha * e_model[i] + b * v
-                dev = (e[i] - e_model[i]) * alpha
-                ei = em + dev
-                act = xi - ei
-                va = (act - (x_set[i] - e[i])) * inv_t
-                vc = kv * ei + ffw_net * v
-                moving = abs(v) > MOVING_MM_S
-                abs_e = abs(ei)
-                fine = abs_e <= fine_lim and not moving
-                since_s = 0.0 if moving else (stop_cycles[i] + 1) * T
-                reached = not moving and (fine_since[i] or fine)
-                if (abs(dev) > contour or abs(vc) > ctrlout or abs(va) > velo
-                        or (not moving and not reached and since_s > pos_time)
-                        or (not moving and reached and since_s >= still_delay
-                            and abs_e > (clamp if clamped[i] else still))):
-                    return None  # a monitor responds: the full model decides where
-                stop_cycles[i] = 0 if moving else stop_cycles[i] + 1
-                fine_since[i] = False if moving else (fine_since[i] or fine)
-                acc = (v - v_set[i]) * inv_t
-                tq = mass_dv * acc * T + friction * (1.0 if va > 0 else -1.0 if va < 0 else 0.0) + gravity
-                target = AMBIENT_C + temp_rise * (tq * inv_rated) ** 2
-                temperature[i] = target + (temperature[i] - target) * decay
-                x_set[i] = xi
-                v_set_i = v
-                e[i] = ei
-                e_model[i] = em
-                out[i] = act
-                v_row[i] = v_set_i
-                a_row[i] = acc
-                v_act_row[i] = va
-                v_cmd_row[i] = vc
-                torque_row[i] = tq
-            v_set = v_row
-            a, v_act, v_cmd, torque = a_row, v_act_row, v_cmd_row, torque_row
-            actual_rows.append(out)
-        self.x_set = np.array(x_set)
-        self.v_set = np.array(v_set)
-        self.a_set = np.array(a)
-        self.e = np.array(e)
-        self.e_model = np.array(e_model)
-        self.v_act = np.array(v_act)
-        self.v_cmd = np.array(v_cmd)
-        self.torque = np.array(torque)
-        self.temperature = np.array(temperature)
-        self.stop_cycles = np.array(stop_cycles, dtype=np.int64)
-        self.fine_since_stop = np.array(fine_since, dtype=bool)
-        return np.array(actual_rows)
-
-    def _process_fast(self, x: np.ndarray) -> np.ndarray | None:
-        """The common block (no faults, monitors on): the model of :meth:`process`, cheaper.
-
-        The monitors are checked through bounds that prove no monitor can
-        respond anywhere in the block: every value below its limit, and every
-        stopped axis inside its fine window and its standstill tolerances (so
-        neither positioning nor zero-speed monitoring can respond). When a
-        bound fails, None is returned with nothing changed and the caller runs
-        the full model, which locates the responding cycle.
-        """
-        m = x.shape[0]
-        inv_t = self._inv_t
-        lim = self._limits
-        v = np.empty_like(x)
-        np.subtract(x[0], self.x_set, out=v[0])
-        np.subtract(x[1:], x[:-1], out=v[1:])
-        v *= inv_t
-        powers = self._powers[:m]
-        # e_model[k] = alpha^k (e_model0 + sum_j<=k b v[j] alpha^-j)
-        acc = np.cumsum(v * self._b_inv_powers[:m], axis=0)
-        acc += self.e_model
-        e_model = acc
-        e_model *= powers
-        dev0 = self.e - self.e_model
-        if dev0.any():
-            if (np.abs(dev0) * self.alpha > lim["contour"]).any():
-                return None  # the contour deviation only decays: its first cycle is its largest
-            e = e_model + dev0 * powers
-        else:
-            e = e_model
-        v_cmd = self.kv * e
-        v_cmd += self._ffw_net * v
-        if (np.abs(v_cmd) > self._ctrlout_mm_s).any():
-            return None
-        actual = x - e
-        v_act = np.empty_like(x)
-        np.subtract(actual[0], self.x_set - self.e, out=v_act[0])
-        np.subtract(actual[1:], actual[:-1], out=v_act[1:])
-        v_act *= inv_t
-        if (np.abs(v_act) > lim["velo"]).any():
-            return None
-        stopped = np.abs(v) <= MOVING_MM_S
-        if stopped.any():
-            if (stopped & (np.abs(e) > self._small_e)).any():
-                return None  # a stopped axis outside its windows: the standstill monitors decide
-            # Standstill book-keeping; every stopped cycle is inside the fine window here.
-            last = m - 1 - np.argmax(~stopped[::-1], axis=0)
-            any_move = ~stopped[last, self._cols]
-            fine_after = last < m - 1
-            self.stop_cycles = np.where(any_move, m - 1 - last, self.stop_cycles + m)
-            self.fine_since_stop = np.where(any_move, fine_after, self.fine_since_stop | fine_after)
-        else:
-            self.stop_cycles = self._zero_cycles
-            self.fine_since_stop = self._no_fine
-        # Drive values: torque from acceleration, friction and weight; motor temperature.
-        dv = np.empty_like(v)
-        np.subtract(v[0], self.v_set, out=dv[0])
-        np.subtract(v[1:], v[:-1], out=dv[1:])
-        torque = self._torque_per_dv * dv
-        torque += self._torque_friction * np.sign(v_act)
-        torque += self._torque_gravity
-        load = self._ones[:m] @ np.square(torque * self._inv_rated_torque)
-        target = AMBIENT_C + self._temp_rise_per_m[m] * load if m < len(self._temp_rise_per_m) else (
-            AMBIENT_C + self._mech["temp_rise"] * load / m)
-        self.temperature = target + (self.temperature - target) * self._decay_pow[m]
-        self.torque = torque[-1]
-        self.a_set = dv[-1] * inv_t
-        self.x_set = x[-1].copy()
-        self.v_set = v[-1]
-        self.e = e[-1].copy()  # (e may be e_model itself: two separate arrays)
-        self.e_model = e_model[-1]
-        self.v_act = v_act[-1]
-        self.v_cmd = v_cmd[-1]
-        return actual
 
     def _simple(self) -> bool:
         """True when the one-cycle fast path applies (no faults, no delayed speed limit)."""

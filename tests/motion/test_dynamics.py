@@ -371,6 +371,7 @@ def test_small_block_servo_path_equals_cycle_by_cycle() -> None:
     import copy
 
     from nck.motion.servo import SMALL_ROWS
+    from nck.motion.servo_paths import process_small
 
     rng = np.random.default_rng(5)
     base = motion().servo
@@ -380,7 +381,7 @@ def test_small_block_servo_path_equals_cycle_by_cycle() -> None:
         rows = start + np.cumsum(rng.uniform(-0.2, 0.2, size=(m, 3)), axis=0)
         small = copy.deepcopy(base)
         single = copy.deepcopy(base)
-        out = small._process_small(rows)
+        out = process_small(small, rows)
         assert out is not None
         for row in rows:
             single._process_one(row)

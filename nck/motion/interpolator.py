@@ -1,0 +1,220 @@
+"""The interpolator of :class:`nck.motion.system.PlannedMotion`: setpoints per IPO cycle.
+
+:class:`PathInterpolator` is a mixin of the planned motion system. It fills
+rows of path setpoints (one per IPO cycle) from the running profile, finishes
+a segment and starts the next one inside a cycle (the rest of the cycle goes
+to the next segment), waits for dwells and exact-stop windows, and — for the
+kernel's batched steps — shortens a fill to end with the cycle of the next
+block event (see :meth:`PlannedMotion.advance_cycles`).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from nck.errors import NcAlarmError
+from nck.motion.planner import AlarmItem, DwellItem
+from nck.motion.profile import build_profile
+from nck.motion.runs import PathRun
+
+RECHECK_CYCLES = 25
+MAX_DWELL_S = 1e9  # longer dwells are cut here (an infinite dwell would overflow the cycle count)
+
+
+class PathInterpolator:
+    """Setpoint generation of the planned motion (state lives in :class:`PlannedMotion`)."""
+
+    # Provided by PlannedMotion.
+    T: float
+    la: Any
+    run: PathRun | None
+    servo: Any
+    jog: Any
+
+    def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
+        """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.
+
+        Returns the next row, whether an exact-stop check is due, and the row
+        limit: with ``stop_at_event`` it shrinks to end with the cycle of the
+        first block event (see :meth:`advance_cycles`).
+        """
+        T = self.T
+        while k < n:
+            if self.wait_cycles > 0:
+                m = min(self.wait_cycles, n - k)
+                rows[k:k + m] = self.cmd
+                self.wait_cycles -= m
+                k += m
+                if self.wait_cycles == 0:
+                    if stop_at_event:
+                        n = k  # the dwell or the wait for the window ends in this cycle
+                    if self.exact_wait is not None:
+                        return k, True, n
+                continue
+            if self.exact_wait is not None:
+                return k, True, n
+            if self.run is None:
+                buffered = len(self.la.items)
+                started = self._start_next(0.0)
+                if stop_at_event and len(self.la.items) != buffered:
+                    n = k + 1  # a dwell or an alarm left the buffer in this cycle
+                if not started:
+                    if stop_at_event and not self.la.items:
+                        n = min(n, k + self._cycles_to_idle(k))
+                    rows[k:n] = self.cmd
+                    return n, False, n
+            if self.run is None:
+                continue
+            run = self.run
+            room = n - k
+            m = _samples_within(run.tau, T, run.profile.duration_s + 1e-12, room)
+            if m == 1 and len(run.chain) == 1:
+                # One sample (the first cycle of the next block): scalar arithmetic.
+                tau = run.tau + T
+                point = run.chain[0].segment.position_at(run.s_begin + run.profile.distance_at(tau))
+                rows[k] = point
+                run.tau = tau
+                self.cmd = point
+                k += 1
+            elif m:
+                taus = run.tau + T * np.arange(1, m + 1)
+                rows[k:k + m] = run.positions(run.profile.distances(taus))
+                run.tau = float(taus[m - 1])
+                self.cmd = rows[k + m - 1].copy()
+                k += m
+            if m == room:
+                break
+            if stop_at_event:
+                n = k + 1  # the run ends within this cycle
+            carry = run.tau - run.profile.duration_s
+            if self._finish_run(run):
+                return k, True, n
+            if self.run is None and not self.held and not self.faulted:
+                self._start_next(carry)
+        return k, False, n
+
+    def _cycles_to_idle(self, k: int) -> int:
+        """Cycles of standstill setpoints until :meth:`is_idle` may turn true (≥ 1).
+
+        Used to end a batch where the axes come to rest; a prediction one
+        cycle short of the computed value, so the batch never runs past it.
+        """
+        if k > 0 or self.jog.runs:
+            return 1
+        if self.is_idle():
+            return 1 << 30  # already at rest: nothing left to notice
+        servo = self.servo
+        if np.any(np.abs(servo.v_set) > 1e-9):
+            return 1
+        cycles = servo.cycles_to_window(np.arange(len(self.names)), self._coarse)
+        if cycles is None:
+            return 1 << 30  # a fault keeps the axis out of its window: never idle
+        return max(cycles - 1, 1)
+
+    def _finish_run(self, run: PathRun) -> bool:
+        """Book-keeping at the end of a run; True when an exact-stop wait begins."""
+        self.run = None
+        if run.kind == "segment":
+            seg = run.chain[0]
+            reached = run.s_begin + run.profile.length
+            if reached < seg.segment.length - 1e-6 and run.profile.length > 1e-9:
+                # The profile stopped short of the end (should not happen): continue from there.
+                seg.done_s = reached
+                self.cmd = seg.segment.positions(np.array([reached]))[0]
+                self.v_path = run.profile.v_end
+                return False
+            if self.la.items and self.la.items[0] is seg:
+                self.la.pop_front()
+            self.cmd = seg.segment.end.copy()
+            self.v_path = run.profile.v_end
+            self._last_source = seg.source
+            if seg.exact_stop and seg.window != "G603":
+                window = self._coarse if seg.window == "G602" else self._fine
+                self.exact_wait = (np.flatnonzero(seg.moved), window)
+                self.wait_source = seg.source
+                self.v_path = 0.0
+                # Output the end point once, then check the window.
+                self.wait_cycles = 1
+            return False
+        self.v_path = 0.0
+        end_s = min(run.profile.length, float(run._offsets[-1]))
+        self.cmd = run.positions(np.array([end_s]))[0]
+        if run.kind == "abort":
+            return False
+        index, local = run.split_end()
+        for _ in range(index):
+            if self.la.items and self.la.items[0] is not run.chain[index]:
+                self.la.pop_front()
+        seg = run.chain[index]
+        seg.done_s = local
+        if seg.remaining <= 1e-9 and self.la.items and self.la.items[0] is seg:
+            self.la.pop_front()
+        self.hold_point = self.cmd.copy()
+        return False
+
+    def _start_next(self, carry: float) -> bool:
+        """Begin the next buffered item; False when nothing can start."""
+        if self.held or self.faulted or not self.la.items:
+            return False
+        head = self.la.items[0]
+        if isinstance(head, AlarmItem):
+            self.la.pop_front()
+            self._alarms.append(head.alarm)
+            self.faulted = True
+            return False
+        if isinstance(head, DwellItem):
+            self.la.pop_front()
+            self.wait_cycles = int(round(min(head.seconds, MAX_DWELL_S) / self.T))
+            self.wait_source = head.source
+            self.v_path = 0.0
+            return True
+        vmax = self.la.v_max(head)
+        if vmax <= 1e-9:
+            self.v_path = 0.0
+            return False
+        exit_v = min(head.exit_limit, vmax)
+        profile = build_profile(head.remaining, self.v_path, exit_v, vmax, head.accel, head.jerk)
+        self.run = PathRun([head], head.done_s, profile, tau=carry, kind="segment", exit_target=exit_v)
+        return True
+
+    def _check_exact_stop(self) -> None:
+        if self.exact_wait is None or self.wait_cycles:
+            return
+        indices, window = self.exact_wait
+        cycles = self.servo.cycles_to_window(indices, window)
+        if cycles == 0:
+            self.exact_wait = None
+        else:
+            self.wait_cycles = RECHECK_CYCLES if cycles is None else cycles
+
+    def _on_trip(self, trip: Any) -> None:
+        source = self.current_source()
+        file = source.file if source else None
+        line_no = source.line if source else None
+        n = source.n if source else None
+        self._alarms.append(NcAlarmError(trip.number, trip.axis, file=file, line=line_no, n=n))
+        self.servo.enter_follow_up()
+        self.cmd = self.servo.x_set.copy()
+        self.run = None
+        self.faulted = True
+        self.wait_cycles = 0
+        self.exact_wait = None
+        self.jog.runs.clear()
+
+
+def _samples_within(tau: float, T: float, end: float, room: int) -> int:
+    """How many of ``tau + T*1``, ``tau + T*2``, … ``tau + T*room`` are ≤ ``end``.
+
+    The same count as a search over those sample times, without building them.
+    """
+    if room <= 0 or tau + T > end:
+        return 0
+    estimate = (end - tau) / T
+    m = room if not estimate < room else max(1, int(estimate))  # also for inf (huge moves)
+    while m < room and tau + T * (m + 1) <= end:
+        m += 1
+    while m > 1 and tau + T * m > end:
+        m -= 1
+    return m
