@@ -13,10 +13,10 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical, VerticalScroll
-from textual.screen import ModalScreen
 from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
+from hmi.dialog import AreaDialog
 from hmi.keymap import Keymap
 from hmi.softkeys import SoftkeyMenu
 
@@ -43,7 +43,7 @@ def help_table(keymap: Keymap, menu: SoftkeyMenu) -> Table:
     return table
 
 
-class HelpScreen(ModalScreen[None]):
+class HelpScreen(AreaDialog[None]):
     """F11: the keys in force (current softkeys and the whole panel)."""
 
     BINDINGS = [Binding("escape", "dismiss_help", "Close", show=False)]
@@ -68,7 +68,7 @@ class HelpScreen(ModalScreen[None]):
         self.dismiss(None)
 
 
-class ChoiceDialog(ModalScreen[str | None]):
+class ChoiceDialog(AreaDialog[str | None]):
     """Choose one entry of a list with the arrow keys and Enter (F10 cancels)."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
@@ -111,7 +111,7 @@ class ChoiceDialog(ModalScreen[str | None]):
         self.dismiss(None)
 
 
-class ValueDialog(ModalScreen[str | None]):
+class ValueDialog(AreaDialog[str | None]):
     """Enter one value (Enter confirms, F10 or Escape cancels); returns the text typed."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]

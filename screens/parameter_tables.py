@@ -17,9 +17,10 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
-from textual.screen import ModalScreen
 from textual.widget import Widget
 from textual.widgets import Input, Static
+
+from hmi.dialog import AreaDialog
 
 
 EDIT_BINDINGS = [  # the keys of an editable table (screen bindings)
@@ -176,7 +177,7 @@ class TableWindow(Widget):
         return render_table(table, cursor, self.size.height or 30, level, show_cursor)
 
 
-class ValueDialog(ModalScreen[str | None]):
+class ValueDialog(AreaDialog[str | None]):
     """Enter a value (or a password): Enter confirms, F10 or Esc cancels."""
 
     DEFAULT_CSS = """
@@ -219,7 +220,7 @@ class ValueDialog(ModalScreen[str | None]):
         self.dismiss(None)
 
 
-class ConfirmDialog(ModalScreen[bool]):
+class ConfirmDialog(AreaDialog[bool]):
     """A yes/no question: ``Y`` or Enter confirms, ``N``, F10 or Esc cancels."""
 
     DEFAULT_CSS = """

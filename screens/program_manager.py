@@ -23,7 +23,6 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
-from textual.screen import ModalScreen
 from textual.widgets import DataTable, Input, Static, Tree
 
 from nck import commands as cmd
@@ -31,6 +30,7 @@ from nck.commands import Rejected
 from nck.status import NckStatus
 
 from hmi.area import AreaBase
+from hmi.dialog import AreaDialog
 from hmi.softkeys import Softkey, SoftkeyMenu
 from nck.storage import ProgramEntry
 
@@ -56,7 +56,7 @@ def edit_level() -> int:
     return _level("edit_program", 4)
 
 
-class PromptDialog(ModalScreen[str | None]):
+class PromptDialog(AreaDialog[str | None]):
     """Ask for one line of text (a name, a path, a search text); Enter confirms, F10/Esc cancels."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]

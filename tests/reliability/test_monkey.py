@@ -8,6 +8,7 @@ consistent (known modes and states, finite positions, alarms well formed).
 
 from __future__ import annotations
 
+import asyncio
 import math
 import random
 import string
@@ -130,4 +131,44 @@ async def test_help_opened_again_after_an_area_switch(tmp_path: Path) -> None:
         await pilot.press(keys["help"], keys["area.machine"], keys["help"])
         await pilot.pause()
         assert_consistent(app)
+    app.nc_session.quit()
+
+
+async def test_enter_then_an_area_key_leaves_the_dialog_in_its_area(tmp_path: Path) -> None:
+    """Found by the fast monkey: Enter in a dialog, then an area key before the dialog saw
+    its Input.Submitted, popped the new area's only screen (ScreenStackError).
+
+    The area key follows the Enter after a varying number of event-loop turns, so that
+    it lands before, between and after the steps of the dialog's Enter handling.
+    """
+    from screens.program_manager import PromptDialog
+
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False)
+    keys = {b.id: b.keys.split(",")[0].strip() for b in default_keymap().bindings}
+    async with app.run_test(size=SIZE) as pilot:
+        for turns in range(10):
+            await pilot.press(keys["area.program_manager"])
+            await pilot.pause()
+            results: list[object] = []
+            dialog = PromptDialog("Name")
+            app.push_screen(dialog, results.append)
+            await pilot.pause()
+            for key in ("enter", keys["area.diagnostics"]):
+                event = key_event(key)
+                event.set_sender(app)
+                app.post_message(event)
+                for _ in range(turns):
+                    await asyncio.sleep(0)
+            await pilot.pause()
+            assert app.current_mode == "diagnostics"
+            assert_consistent(app)
+            await pilot.press(keys["area.program_manager"])
+            await pilot.pause()
+            if results:  # the dialog had closed before the area key came
+                assert results == [""] and app.screen is not dialog
+            else:  # it waited in its area, unanswered, and still works
+                assert app.screen is dialog
+                await pilot.press("enter")
+                await pilot.pause()
+                assert results == [""] and app.screen is not dialog
     app.nc_session.quit()
