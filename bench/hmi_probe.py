@@ -33,8 +33,11 @@ def _percentile(values: list[float], fraction: float) -> float:
     return ordered[min(len(ordered) - 1, int(round(fraction * (len(ordered) - 1))))]
 
 
-async def _open_in_editor(app: Any, pilot: Any, path: str) -> None:
-    """Open ``path`` in the Program area's editor (as Program manager → Open does), back to Machine."""
+async def _open_in_editor(app: Any, pilot: Any, path: str) -> Any:
+    """Open ``path`` in the Program area's editor (as Program manager → Open does), back to Machine.
+
+    Returns the Program area's screen (its check of the text runs on in a worker thread).
+    """
     from screens.program_files import ProgramFiles
 
     ProgramFiles.of_app(app).request_open(path)
@@ -43,8 +46,18 @@ async def _open_in_editor(app: Any, pilot: Any, path: str) -> None:
     opened = getattr(app.screen, "program", None)
     if opened != path:
         raise RuntimeError(f"the editor did not open {path} (shows {opened})")
+    editor_screen = app.screen
     await pilot.press("alt+m")
     await pilot.pause()
+    return editor_screen
+
+
+async def _wait_for_check(editor_screen: Any, pilot: Any, limit_s: float = 600.0) -> float:
+    """Wait until the editor's check of the whole text is done (its memory counts); seconds waited."""
+    started = time.perf_counter()
+    while getattr(editor_screen, "_check_running", False) and time.perf_counter() - started < limit_s:
+        await pilot.pause(0.5)
+    return time.perf_counter() - started
 
 
 async def _key_latencies(app: Any, pilot: Any, presses: int = 40) -> tuple[list[float], list[float]]:
@@ -119,8 +132,9 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
         nck.submit(c.SelectProgram(name))
         nck.submit(c.CycleStart())
         await pilot.pause()
+        editor_screen = None
         if program is not None:
-            await _open_in_editor(app, pilot, f"MPF/{name}")
+            editor_screen = await _open_in_editor(app, pilot, f"MPF/{name}")
         refresh_cpu: list[float] = []
         for _ in range(60):
             nck.tick(0.05)
@@ -129,6 +143,9 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
             await pilot.pause()
             refresh_cpu.append(time.thread_time() - t0)
         latency, roundtrip = await _key_latencies(app, pilot)
+        if editor_screen is not None:
+            out["editor_check_wait_s"] = await _wait_for_check(editor_screen, pilot)
+            out["editor_check_done"] = str(not getattr(editor_screen, "_check_running", False))
         out["program_state"] = str(app.bridge.status.channel.program_state)
     out["first_frame_s"] = first_frame[0] - spawn_epoch if first_frame else float("nan")
     out["refresh_cpu_ms_median"] = statistics.median(refresh_cpu) * 1000.0
