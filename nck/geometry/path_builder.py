@@ -580,8 +580,8 @@ def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[
 def _end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:
     if isinstance(element, Arc):
         return element.tangent_at(1.0)
-    d = np.subtract(element.end, element.start)
-    n = float(np.linalg.norm(d))
-    if n < 1e-12:
+    d = [float(e) - float(s) for e, s in zip(element.end, element.start)]
+    n = math.hypot(*d)  # no overflow for huge coordinates (numpy's norm warns)
+    if n < 1e-12 or not math.isfinite(n):
         return None
-    return (float(d[0] / n), float(d[1] / n), float(d[2] / n))
+    return (d[0] / n, d[1] / n, d[2] / n)

@@ -106,3 +106,10 @@ def test_infinite_dwell_does_not_overflow() -> None:
         system.push(Dwell(source=Source("P", 1, 10), seconds=math.inf))
         system.advance(1.0)
     assert not system.is_idle() and system.drain_alarms() == []
+
+
+@pytest.mark.parametrize("block", ["G0 X1EX300", "G0 X1EX300 Y-1EX300", "G1 X1EX300 Z1EX300 F100"])
+def test_huge_programmed_target_through_the_interpreter_is_the_limit_alarm(block: str) -> None:
+    # The whole chain (path builder, planner, limits) with warnings as errors.
+    result = _run(f"N10 {block}\nN20 M30\n")
+    assert [alarm.number for alarm in result.alarms] == [10720]
