@@ -67,8 +67,8 @@ class StatusView:
                     if view.file == current_source.file and view.line == current_source.line:
                         current = view
                         break
-                segment = run.segments.get((current_source.file, current_source.line))
-                if segment is not None:
+                segment = run.segments.get(id(current_source))
+                if segment is not None and segment.source is current_source:
                     dtg = {a: float(v) - positions.get(a, 0.0) for a, v in segment.end_mcs.items()}
                     executing = segment
             if current is None and blocks:

@@ -117,7 +117,10 @@ class ProgramRun:
         self.history: deque[BlockView] = deque(maxlen=DISPLAY_HISTORY)
         self.blocks_executed = 0
         self.last_motion: Motion | None = None
-        self.segments: dict[tuple[str, int], Motion] = {}  # recent segments by (file, line)
+        # Recent segments by the identity of their block's Source: a line run several
+        # times (loops, subprogram passes) has one Source per run, and the look-ahead
+        # buffer may hold several runs of it at once.
+        self.segments: dict[int, Motion] = {}
         self.pushed: deque[Motion | Dwell] = deque(maxlen=PUSHED_HISTORY)
         self._requeued: deque[Motion | Dwell] = deque()
         # Main-run bookkeeping: outputs (aux functions, MSG) of a block go out when
@@ -248,8 +251,8 @@ class ProgramRun:
                     command = self._transform(command)
                     self.last_motion = command
                     src = command.source
-                    self.segments[(src.file, src.line)] = command
-                    if len(self.segments) > 64:
+                    self.segments[id(src)] = command
+                    if len(self.segments) > 256:
                         self.segments.pop(next(iter(self.segments)))
                 self._push(motion, command)
             elif isinstance(command, StopPoint):

@@ -134,3 +134,30 @@ def test_batched_cycles_give_the_same_result_as_single_cycles(factory) -> None:
     assert r16 == pytest.approx(r1) == pytest.approx(40.0, abs=1e-3)
     assert t16 == pytest.approx(t1, abs=0.2)  # stops are noticed at most a batch later
     assert parts1 == parts16 == 1
+
+
+def test_distance_to_go_belongs_to_the_executing_run_of_a_repeated_line(factory) -> None:
+    # The same subprogram line runs once per pass with another depth; the look-ahead
+    # buffer holds several passes at once, and the display must show this pass's target.
+    programs = {
+        "P.MPF": "N10 G0 X0 Y0 Z5\nN20 R1=0\nN30 WHILE R1>-6\nN40 R1=R1-1.5\nN50 ONE_PASS(R1)\n"
+                 "N60 ENDWHILE\nN70 M30",
+        "ONE_PASS.SPF": "PROC ONE_PASS(REAL ZD)\nN10 G90 G1 Z=ZD F600\nN20 G91 X40\nN30 G90 G0 Z2\nN40 RET",
+    }
+    nck = make(factory, programs)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    seen: list[tuple[float, float]] = []
+
+    def during_x_moves(k: Nck) -> bool:
+        status = k.status()
+        axes = {a.name: a for a in status.axes}
+        if 1.0 < axes["X"].distance_to_go:
+            seen.append((axes["Z"].position_wcs, axes["Z"].distance_to_go))
+        return k.situation.channel == "reset"
+
+    assert nck.run_until(during_x_moves, 60.0)
+    assert seen, "no X move was observed"
+    for z, z_to_go in seen:
+        assert z_to_go == pytest.approx(0.0, abs=1e-6), (z, z_to_go)
