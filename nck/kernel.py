@@ -759,7 +759,11 @@ class Nck(ManualControl, ControlSettings, StatusView):
             self._estop_pressed = False
             return
         if run is not None and self._sit.channel == ACTIVE and not self._jogging:
-            if "braking" in reactions or "feed_stop" in reactions:
+            # A block the motion refused when execution reached it (10720, 12160 …)
+            # faults the path: the blocks buffered behind it can never run, so the
+            # channel is interrupted there, as if braked (RESET is needed anyway).
+            faulted = bool(getattr(self._path_motion(), "faulted", False))
+            if "braking" in reactions or "feed_stop" in reactions or faulted:
                 self._path_motion().hold()
                 run.stop_reason = "alarm"
                 self._mark_interrupted(run)

@@ -161,3 +161,16 @@ def test_distance_to_go_belongs_to_the_executing_run_of_a_repeated_line(factory)
     assert seen, "no X move was observed"
     for z, z_to_go in seen:
         assert z_to_go == pytest.approx(0.0, abs=1e-6), (z, z_to_go)
+
+
+def test_limit_alarm_with_blocks_buffered_behind_it_interrupts_the_channel(factory) -> None:
+    # 10720 is raised when execution reaches the refused block; the block behind it is
+    # already buffered and can never run, so the channel must not stay active forever.
+    nck = make(factory, {"P.MPF": "N10 G0 X50 Y0\nN20 G1 X600 F1000\nN30 G1 Y10\nN40 M30"})
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.channel != "active", 10.0)
+    assert states(nck) == ("AUTO", "interrupted", "stopped")
+    assert 10720 in [alarm.number for alarm in nck.status().alarms]
+    assert nck.positions_mcs()["X"] == pytest.approx(50.0, abs=0.01)
