@@ -33,23 +33,7 @@ from nck.ncdata import NcData
 from nck.resources import data_path
 
 PROGRAM = data_path("programs", "iso", "ISO_T_SHAFT.MPF")
-TOOLS = """
-[[edge]]
-t = 1
-d = 1
-type = 500
-position = 3
-length1 = 20.0
-length2 = 40.0
-
-[[edge]]
-t = 2
-d = 2
-type = 540
-position = 3
-length1 = 25.0
-length2 = 45.0
-"""
+TOOLS = data_path("programs", "iso", "ISO_T_SHAFT_TOOLS.toml").read_text()  # shipped beside the program
 
 
 def _taper_z(r: float) -> float:
