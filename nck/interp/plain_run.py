@@ -33,8 +33,7 @@ import numpy as np
 
 from nck.geometry.contour_aids import LineElement
 from nck.geometry.path_builder import _end_tangent
-from nck.interp.plain_setup import GEOMETRY, Setup, r_round, simple_setup
-from nck.interp.program_text import TextLines
+from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, r_round, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_WORDS
 
 if TYPE_CHECKING:
@@ -113,16 +112,12 @@ class PlainBatch:
 
 def plan(interp: Interpreter, max_blocks: int) -> PlainBatch | None:
     """The batch of plain blocks from the current position, or None (the general path goes on)."""
-    state = interp._state
-    if state.finished or not state.frames or max_blocks <= 0:
+    found = plain_frame(interp) if max_blocks > 0 else None
+    if found is None:
         return None
-    frame = state.frames[-1]
-    program = frame.program
-    lines = program.lines
-    if not isinstance(lines, TextLines) or frame.modal_call is not None or frame.repeats:
-        return None
+    frame, lines = found
     first = frame.pc
-    stop = min(program.plain_run_end(first), first + max_blocks, first + BATCH_LINES)
+    stop = min(frame.program.plain_run_end(first), first + max_blocks, first + BATCH_LINES)
     if stop <= first:
         return None
     setup = simple_setup(interp)

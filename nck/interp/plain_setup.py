@@ -20,6 +20,7 @@ from nck.errors import NcAlarmError
 from nck.geometry.path_builder import _couples_axes
 from nck.geometry.trc_canon import STAGE_ATTRIBUTE
 from nck.geometry.units import UnitSystem
+from nck.interp.program_text import TextLines
 
 if TYPE_CHECKING:
     from nck.interp.interpreter import Interpreter
@@ -68,6 +69,22 @@ def machine_axes(interp: Interpreter) -> MachineAxes:
                           tuple(a in path.diameter_axes for a in axes))
         interp.__dict__["_plain_machine"] = cached
     return cached
+
+
+def plain_frame(interp: Interpreter) -> tuple[Any, Any] | None:
+    """The running frame and its scanned program lines, when the plain path may run there.
+
+    Only a streamed Siemens program (:class:`TextLines`) without a modal call or
+    pending repetitions qualifies; otherwise None (the general path goes on).
+    """
+    state = interp._state
+    if state.finished or not state.frames:
+        return None
+    frame = state.frames[-1]
+    lines = frame.program.lines
+    if not isinstance(lines, TextLines) or frame.modal_call is not None or frame.repeats:
+        return None
+    return frame, lines
 
 
 def simple_setup(interp: Interpreter) -> Setup | None:

@@ -16,8 +16,8 @@ from nck import canon
 from nck.geometry.contour_aids import LineElement
 from nck.geometry.path_builder import _end_tangent
 from nck.interp.api import BlockResult
-from nck.interp.plain_setup import BLOCK_COST_S, GEOMETRY, Setup, machine_axes, r_round, simple_setup
-from nck.interp.program_text import TextLines
+from nck.interp.plain_setup import (BLOCK_COST_S, GEOMETRY, Setup, machine_axes, plain_frame, r_round,
+                                    simple_setup)
 from nck.lang.plain import G_CODES, PLAIN_LINE, axis_value, feed_value
 
 if TYPE_CHECKING:
@@ -30,12 +30,11 @@ def step_plain(interp: Interpreter) -> BlockResult | None:
     Gives exactly the general path's :class:`BlockResult` (the same canonical
     motion) and state, without parser, snapshot or motion builder.
     """
-    state = interp._state
-    frame = state.frames[-1]
-    program = frame.program
-    lines = program.lines
-    if not isinstance(lines, TextLines) or frame.modal_call is not None or frame.repeats:
+    found = plain_frame(interp)
+    if found is None:
         return None
+    frame, lines = found
+    state, program = interp._state, frame.program
     index = frame.pc
     if program.plain_run_end(index) <= index:
         return None

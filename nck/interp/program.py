@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any, Sequence
 
 from nck.errors import NcAlarmError
-from nck.interp.program_text import CACHE_LINES, CHECKPOINT_LINES, TextLines
+from nck.interp.program_text import CACHE_LINES, CHECKPOINT_LINES, TextLines, remember_bounded
 from nck.lang import ast
 from nck.lang.gcodes import gtable
 from nck.lang.parser import parse_block
@@ -194,12 +194,7 @@ def load_program(name: str, text: str, dialect: str = "siemens", main: bool = Fa
         indexer.finish()
         return program
     program = _load_siemens(name, text)
-    try:  # the HMI checks in a worker thread: tolerate a concurrent eviction
-        while len(_RECENT) >= _RECENT_SIZE:
-            _RECENT.pop(next(iter(_RECENT)), None)
-    except (RuntimeError, StopIteration):
-        pass
-    _RECENT[key] = program
+    remember_bounded(_RECENT, key, program, _RECENT_SIZE)
     return program
 
 

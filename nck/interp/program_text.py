@@ -16,7 +16,7 @@ not parsed again.
 from __future__ import annotations
 
 from array import array
-from typing import TYPE_CHECKING, Iterator
+from typing import TYPE_CHECKING, Any, Iterator
 
 from nck.errors import NcAlarmError
 from nck.lang.parser import parse_block
@@ -29,6 +29,20 @@ CHECKPOINT_LINES = 64
 
 CACHE_LINES = 1024
 """Parsed lines kept per program."""
+
+
+def remember_bounded(cache: dict, key: Any, value: Any, limit: int) -> None:
+    """Put ``key: value`` into an insertion-ordered cache of at most ``limit`` entries.
+
+    The oldest entries go first. The HMI checks programs in a worker thread, so
+    an eviction racing with another thread is tolerated.
+    """
+    try:
+        while len(cache) >= limit:
+            cache.pop(next(iter(cache)), None)
+    except (RuntimeError, StopIteration):
+        pass
+    cache[key] = value
 
 
 class TextLines:
@@ -77,13 +91,7 @@ class TextLines:
 
     def remember(self, index: int, line: Line) -> None:
         """Keep a parsed line in the cache (the oldest one goes when it is full)."""
-        cache = self._cache
-        try:  # the HMI checks in a worker thread: tolerate a concurrent eviction
-            while len(cache) >= CACHE_LINES:
-                cache.pop(next(iter(cache)), None)
-        except (RuntimeError, StopIteration):
-            pass
-        cache[index] = line
+        remember_bounded(self._cache, index, line, CACHE_LINES)
 
     # ------------------------------------------------------------------ text access
     def start(self, index: int) -> int:
