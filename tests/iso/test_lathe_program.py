@@ -1,6 +1,6 @@
 """Golden test: the shipped ISO T lathe program runs on the lathe with hand-worked end points.
 
-``nck run data/programs/iso/ISO_T_SHAFT.MPF --machine lathe2 --dialect iso-t`` (the
+``nck run data/examples/iso/ISO_T_SHAFT.MPF --machine lathe2 --dialect iso-t`` (the
 issue's last "Done when" line): diameter programming, G96 with a G92 S spindle limit,
 G71 roughing + G70 finishing, G76 multi-pass threading.
 
@@ -32,8 +32,8 @@ from nck.machine import load_machine
 from nck.ncdata import NcData
 from nck.resources import data_path
 
-PROGRAM = data_path("programs", "iso", "ISO_T_SHAFT.MPF")
-TOOLS = data_path("programs", "iso", "ISO_T_SHAFT_TOOLS.toml").read_text()  # shipped beside the program
+PROGRAM = data_path("examples", "iso", "ISO_T_SHAFT.MPF")
+TOOLS = data_path("examples", "iso", "ISO_T_SHAFT_TOOLS.toml").read_text()  # shipped beside the program
 
 
 def _taper_z(r: float) -> float:
