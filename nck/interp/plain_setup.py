@@ -87,8 +87,12 @@ def plain_frame(interp: Interpreter) -> tuple[Any, Any] | None:
     return frame, lines
 
 
-def simple_setup(interp: Interpreter) -> Setup | None:
-    """The constants of the batch when the modal state is simple, else None."""
+def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None:
+    """The constants of the batch when the modal state is simple, else None.
+
+    ``motion`` is the G0/G1 the block itself programs: it replaces the modal
+    motion of group 1 (a ``G1 X… Y…`` after an arc is plain again).
+    """
     if interp.dialect != "siemens":
         return None
     machine = machine_axes(interp)
@@ -99,7 +103,7 @@ def simple_setup(interp: Interpreter) -> Setup | None:
     gcodes = modal.gcodes
     if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm:
         return None
-    kind, distance = gcodes.get(1), gcodes.get(14)
+    kind, distance = motion or gcodes.get(1), gcodes.get(14)
     if kind not in ("G0", "G1") or distance not in ("G90", "G91") or gcodes.get(7, "G40") != "G40":
         return None
     if gcodes.get(15, "G94") != "G94" or geo.feed_type != "G94" or geo.frames.settable_code != gcodes.get(8, "G500"):

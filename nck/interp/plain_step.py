@@ -43,7 +43,8 @@ def step_plain(interp: Interpreter) -> BlockResult | None:
     if found is None:
         return None
     number, motion_a, distance_a, distance_b, motion_b, x, y, z, f = found.groups()
-    setup = simple_setup(interp)
+    motion = motion_a or motion_b
+    setup = simple_setup(interp, None if motion is None else G_CODES[motion])
     if setup is None:
         return None
     distance = distance_a or distance_b
@@ -54,7 +55,6 @@ def step_plain(interp: Interpreter) -> BlockResult | None:
         feed = feed_value(f)
         if feed <= 0.0:
             return None  # alarm 14800
-    motion = motion_a or motion_b
     kind = setup.kind if motion is None else (1 if G_CODES[motion] == "G1" else 0)
     texts = (x, y, z)
     moving = x is not None or y is not None or z is not None

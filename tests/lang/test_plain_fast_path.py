@@ -104,7 +104,7 @@ SETUP = [
     "G94", "G41 G1 X0 Y0 F100", "RNDM=1", "R1=0", "M3 S1000",
 ]
 MIXED = [
-    "R1=R1+1", "G2 X10 Y0 CR=5", "G1 X=R1", "CHF=0.5", "G40", "G4 F0.1", "M1", "G17 G1 X1", "MSG(\"HI\")",
+    "R1=R1+1", "G2 X10 Y0 CR=5", "G3 X0 Y10 CR=-7", "G2 X5 Y5 I2.5 J2.5", "G1 X=R1", "CHF=0.5", "G40", "G4 F0.1", "M1", "G17 G1 X1", "MSG(\"HI\")",
     "G1 X1 X2", "G0 G1 X1", "X1..5", "G1 F-1 X1", "g1 x5", "G91 G1 X1", "G90", "M30", "T2", "D0",
     "IF R1>3 GOTOF DONE", "DONE:", "GOTOB START", "START:", "G91 X1", "SUPA G0 Z0", "G53 X5",
 ]
@@ -163,6 +163,24 @@ def _steps(text: str, fast: bool) -> tuple[list[Any], list[Any], dict[str, Any]]
 @given(programs())
 def test_plain_steps_give_the_general_block_results(text: str) -> None:
     assert _steps(text, True) == _steps(text, False), text
+
+
+def test_a_straight_block_after_an_arc_is_plain(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Group 1 holds G2/G3 after an arc; a block that programs G1 itself is plain again."""
+    taken: list[bool] = []
+    original = plain_step.step_plain
+
+    def spy(interp: Interpreter) -> Any:
+        found = original(interp)
+        taken.append(found is not None)
+        return found
+
+    monkeypatch.setattr("nck.interp.interpreter.step_plain", spy)
+    text = "G90 G1 X10 Y0 F1000\nG3 X0 Y10 CR=10\nG1 X-5 Y10\nX-5 Y0\nM30"
+    results, alarms, _ = _steps(text, True)
+    assert not alarms and len(results) == 5
+    assert taken[1:] == [False, True, True, False]  # the arc and M30 take the general path
+    assert _steps(text, True) == _steps(text, False)
 
 
 def test_plain_steps_are_taken_in_a_cam_program(monkeypatch: pytest.MonkeyPatch) -> None:
