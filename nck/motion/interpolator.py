@@ -106,6 +106,7 @@ class PathInterpolator:
         if self.is_idle():
             return 1 << 30  # already at rest: nothing left to notice
         servo = self.servo
+        servo.settle()
         if np.any(np.abs(servo.v_set) > 1e-9):
             return 1
         cycles = servo.cycles_to_window(np.arange(len(self.names)), self._coarse)

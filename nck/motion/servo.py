@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from nck.motion.params import AxisParams
+from nck.motion.servo_defer import bound_tables, quiet_bound, settle
 from nck.motion.servo_paths import AMBIENT_C, MOVING_MM_S, process_fast, process_small
 
 __all__ = ["AMBIENT_C", "MOVING_MM_S", "AxisState", "Fault", "ServoBank", "Trip", "first_order"]
@@ -193,21 +194,33 @@ class ServoBank:
             for i in range(n)
         ]
         self._small_e = np.minimum(self._limits["fine"], np.minimum(self._limits["still"], self._limits["clamp"]))
+        # Deferred blocks (nck.motion.servo_defer): queued setpoints and their error bound.
+        self._bound_tables = bound_tables(self)
+        self._pending: list[np.ndarray] = []
+        self._pending_bound: list[float] | None = None
+
+    def settle(self) -> None:
+        """Process queued setpoints now (every reader of the state calls this first)."""
+        if self._pending:
+            settle(self)
 
     # -- state ---------------------------------------------------------------
     @property
     def actual(self) -> np.ndarray:
         """Actual positions (setpoint minus following error)."""
+        self.settle()
         return self.x_set - self.e
 
     def set_position(self, index: int, value: float) -> None:
         """Redefine one axis position without motion (referencing, power on)."""
+        self.settle()
         self.x_set[index] = value
         self.e[index] = 0.0
         self.e_model[index] = 0.0
 
     def enter_follow_up(self) -> None:
         """Alarm reaction: setpoints follow the actual values, monitors off until reset."""
+        self.settle()
         self.x_set = self.actual.copy()
         self.e[:] = 0.0
         self.e_model[:] = 0.0
@@ -216,6 +229,7 @@ class ServoBank:
 
     def reset(self) -> None:
         """RESET: back to position control with the monitors on."""
+        self.settle()
         if self.follow_up:
             self.x_set = self.actual.copy()
             self.e[:] = 0.0
@@ -224,12 +238,14 @@ class ServoBank:
 
     def settled(self) -> bool:
         """True when every axis stands still with no following error and no fault."""
+        self.settle()
         if np.any(self.v_set != 0.0) or np.any(np.abs(self.e) > 1e-12) or np.any(np.abs(self.e_model) > 1e-12):
             return False
         return not any(f.active or f.push_mm for f in self.faults)
 
     def idle(self, n: int) -> None:
         """``n`` IPO cycles of standstill without any following error (fast path)."""
+        self.settle()
         self.e[:] = 0.0
         self.e_model[:] = 0.0
         self.v_act[:] = 0.0
@@ -244,10 +260,12 @@ class ServoBank:
 
     def in_window(self, indices: np.ndarray, window_mm: np.ndarray) -> bool:
         """True when every axis of ``indices`` has its following error inside its window."""
+        self.settle()
         return bool(np.all(np.abs(self.e[indices]) <= window_mm[indices]))
 
     def cycles_to_window(self, indices: np.ndarray, window_mm: np.ndarray) -> int | None:
         """IPO cycles until the standstill following error decays into the window (None: never)."""
+        self.settle()
         worst = 0
         for i in indices:
             fault = self.faults[i]
@@ -261,15 +279,27 @@ class ServoBank:
         return worst
 
     # -- one block of setpoints ----------------------------------------------
-    def process(self, setpoints: np.ndarray) -> tuple[np.ndarray, Trip | None]:
+    def process(self, setpoints: np.ndarray, defer: bool = False) -> tuple[np.ndarray, Trip | None]:
         """Run the controllers over ``setpoints`` (m × n); return actual positions and a trip.
 
         On a trip only the cycles up to and including the trip index are taken
         over into the state; the caller discards the rest of the block.
+
+        With ``defer`` a block whose monitors are proven silent is only queued
+        (:mod:`nck.motion.servo_defer`; the rows must stay unchanged until
+        :meth:`settle`) and the setpoints are returned in place of the actual
+        positions, which the caller then must not use.
         """
         m = setpoints.shape[0]
         if m == 0:
             return setpoints.copy(), None
+        if defer and self.monitoring and not self.follow_up and self._simple():
+            bound = quiet_bound(self, setpoints)
+            if bound is not None:
+                self._pending.append(setpoints)
+                self._pending_bound = bound
+                return setpoints, None
+        self.settle()
         if m == 1 and self._simple():
             return self._process_one(setpoints[0])
         if self.monitoring and not self.follow_up and m <= self._fast_rows and self._simple():
@@ -451,6 +481,7 @@ class ServoBank:
     # -- service values ------------------------------------------------------
     def state(self, i: int) -> AxisState:
         """Service-screen values of axis ``i``."""
+        self.settle()
         axis = self.axes[i]
         v_set = float(self.v_set[i])
         fe = float(self.e[i])

@@ -181,6 +181,7 @@ class PlannedMotion(PathInterpolator):
 
     def _run_cycles(self, n: int, stop_at_event: bool, on_block_event: Callable[[int], int] | None = None) -> int:
         """The IPO cycles of :meth:`advance` / :meth:`advance_cycles`; returns the cycles run."""
+        self.servo.settle()
         for i, delta in self.jog.take_shifts().items():
             self.servo.x_set[i] += delta
             self.cmd[i] += delta
@@ -217,7 +218,7 @@ class PlannedMotion(PathInterpolator):
             k_end, sync, limit = self._path_fill(rows, k, limit, stop_at_event)
             for i, col in columns.items():
                 rows[k:k_end, i] = col[k:k_end]
-            actual, trip = self.servo.process(rows[k:k_end])
+            actual, trip = self.servo.process(rows[k:k_end], defer=True)
             taken = actual.shape[0]
             self._record(rows[k:k + taken])
             if taken:
@@ -242,6 +243,7 @@ class PlannedMotion(PathInterpolator):
                 allowed = on_block_event(offset + k)
                 if allowed > 0:
                     limit = min(n, k + allowed)
+        self.servo.settle()  # the step ends: queued blocks through the position control now
         if k == 0:  # a trip in the very first cycle still took that cycle
             k = 1
         self._advance_spindles(k - spun)
@@ -257,6 +259,7 @@ class PlannedMotion(PathInterpolator):
             return False
         if self.jog.active():
             return False
+        self.servo.settle()
         return bool(np.all(np.abs(self.servo.v_set) <= 1e-9) and np.all(np.abs(self.servo.e) <= self._coarse))
 
     def hold(self) -> None:
@@ -312,6 +315,7 @@ class PlannedMotion(PathInterpolator):
         The actual values, following errors and drive values are in
         :meth:`axis_states` (service screens).
         """
+        self.servo.settle()
         setpoints = self.servo.x_set
         out = {name: float(setpoints[i]) for i, name in enumerate(self.names)}
         for name, spindle in self.spindles.items():
@@ -453,12 +457,14 @@ class PlannedMotion(PathInterpolator):
 
     def inject_fault(self, axis: str, **kwargs: float | None) -> None:
         """Simulate a mechanical fault (``jam_at_mm``, ``offset_mm``, ``runaway_mm_s``, ``push_mm``)."""
+        self.servo.settle()
         fault = self.servo.faults[self.index[axis]]
         for key, value in kwargs.items():
             setattr(fault, key, value)
 
     def set_clamped(self, axis: str, clamped: bool) -> None:
         """Clamping in progress (clamping monitoring replaces zero-speed monitoring)."""
+        self.servo.settle()
         self.servo.clamped[self.index[axis]] = bool(clamped)
 
     def enable_trace(self) -> None:

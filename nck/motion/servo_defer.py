@@ -1,0 +1,98 @@
+"""Deferred position control: several blocks of setpoints through one numpy pass.
+
+Inside one motion step (:meth:`nck.motion.system.PlannedMotion.advance_cycles`)
+the kernel is called back at every block end, so the servo used to run once
+per block — about 45 small numpy operations for a block of some 40 cycles.
+When a cheap bound proves that no monitor can respond anywhere in a block,
+its setpoints are only queued; :func:`settle` runs the queued blocks through
+:func:`nck.motion.servo_paths.process_fast` at once, before anything reads
+the servo state (every :class:`~nck.motion.servo.ServoBank` accessor settles
+first) and at the end of the step.
+
+The bound: without faults and without contour deviation the following error
+obeys ``e[k] = alpha e[k-1] + b v[k]`` (see :mod:`nck.motion.servo`), so with
+``V`` the largest setpoint speed of the block, ``|e| <= E = max(|e0|,
+b V / (1 - alpha))`` in every cycle; the speed setpoint ``kv e + ffw v`` is at
+most ``kv E + |ffw| V``; the actual velocity ``v - (e[k] - e[k-1]) / T`` at
+most ``V + ((1 - alpha) E + b V) / T``; and an axis that stops in the block
+must have ``E`` inside its standstill windows. The bounds carry over from
+block to block (``E`` of one block is ``|e0|`` of the next). A block that
+fails them is processed at once, after the queue, exactly as before.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from nck.motion.servo_paths import MOVING_MM_S, process_fast
+
+if TYPE_CHECKING:
+    from nck.motion.servo import ServoBank
+
+SAFETY = 1.0 - 1e-6  # the bounds must hold with room for rounding
+
+
+def bound_tables(bank: ServoBank) -> list[tuple[float, float, float, float, float, float, float, float]]:
+    """Per-axis constants of :func:`quiet_bound` as Python floats."""
+    limits = bank._limits
+    tables = []
+    for i in range(len(bank.axes)):
+        alpha, b = float(bank.alpha[i]), abs(float(bank.b[i]))
+        e_per_v = b / (1.0 - alpha) if alpha < 1.0 else float("inf")
+        tables.append((
+            e_per_v, float(bank.kv[i]), abs(float(bank._ffw_net[i])),
+            float(bank._ctrlout_mm_s[i]) * SAFETY, float(limits["velo"][i]) * SAFETY,
+            (1.0 - alpha) * bank._inv_t, b * bank._inv_t, float(bank._small_e[i]) * SAFETY,
+        ))
+    return tables
+
+
+def quiet_bound(bank: ServoBank, rows: np.ndarray) -> list[float] | None:
+    """The following-error bound after ``rows`` when no monitor can respond in them, else None.
+
+    Starts from the queued blocks' bound, or from the settled state (which
+    must then have no contour deviation).
+    """
+    pending = bank._pending
+    if pending:
+        previous = pending[-1][-1]
+        start = bank._pending_bound
+    else:
+        if not np.array_equal(bank.e, bank.e_model):
+            return None  # a contour deviation: the full model decides
+        previous = bank.x_set
+        start = np.abs(bank.e).tolist()
+    v = np.empty_like(rows)
+    np.subtract(rows[0], previous, out=v[0])
+    np.subtract(rows[1:], rows[:-1], out=v[1:])
+    v *= bank._inv_t
+    speed = np.abs(v)
+    tops = speed.max(axis=0).tolist()
+    lows = speed.min(axis=0).tolist()
+    out = []
+    for (e_per_v, kv, ffw, ctrlout, velo, decay_rate, b_rate, small_e), top, low, e0 in zip(
+            bank._bound_tables, tops, lows, start):
+        bound = max(e0, e_per_v * top)
+        if kv * bound + ffw * top > ctrlout or top + decay_rate * bound + b_rate * top > velo:
+            return None
+        if low <= MOVING_MM_S and bound > small_e:
+            return None  # a stopped axis that may be outside its windows
+        out.append(bound)
+    return out
+
+
+def settle(bank: ServoBank) -> None:
+    """Process the queued setpoints (in chunks the fast path can take)."""
+    pending = bank._pending
+    if not pending:
+        return
+    rows = pending[0] if len(pending) == 1 else np.concatenate(pending)
+    bank._pending = []
+    bank._pending_bound = None
+    step = bank._fast_rows
+    for start in range(0, rows.shape[0], step):
+        if process_fast(bank, rows[start:start + step]) is None:
+            # The bound proved every monitor silent: this is a programming error.
+            raise RuntimeError("deferred servo block failed its proven bounds")
