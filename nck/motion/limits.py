@@ -22,17 +22,22 @@ ALARM_WORKAREA_JOG = 10631
 EDGE_MM = 1e-6
 
 
+_KEYS: dict[tuple[int, str], tuple[str, str]] = {}
+
+
 def _setting(data: Mapping[str, Any] | None, number: int, axis: str, default: Any) -> Any:
     """Read setting datum ``SD<number>`` for ``axis`` (``{"SD43420": {"X": 1}}`` or ``"SD43420[X]"``)."""
     if not data:
         return default
-    key = f"SD{number}"
-    value = data.get(key)
-    if isinstance(value, Mapping):
+    keys = _KEYS.get((number, axis))
+    if keys is None:
+        keys = _KEYS[(number, axis)] = (f"SD{number}", f"SD{number}[{axis}]")
+    value = data.get(keys[0])
+    if value is None:
+        return data.get(keys[1], default)
+    if type(value) is dict or isinstance(value, Mapping):
         return value.get(axis, default)
-    if value is not None:
-        return value
-    return data.get(f"{key}[{axis}]", default)
+    return value
 
 
 class Limits:
@@ -65,10 +70,11 @@ class Limits:
     def check_segment(self, segment: Segment, referenced: list[bool]) -> tuple[int, str, str] | None:
         """First violation of a segment: (alarm number, axis name, ``+``/``-``), or None."""
         if segment.arc is None:
-            for i in np.flatnonzero(segment.delta):
-                if not referenced[i]:
+            ends = segment.end.tolist()
+            for i, delta in enumerate(segment.delta.tolist()):
+                if delta == 0.0 or not referenced[i]:
                     continue
-                value = float(segment.end[i])
+                value = ends[i]
                 minus, plus = self.software(i)
                 w_minus, w_plus = self.workarea(i) if self.setting_data else (-math.inf, math.inf)
                 name = self.axes[i].name

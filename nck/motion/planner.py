@@ -43,6 +43,11 @@ class AxisArrays:
         self.corner_brisk = reserve * self.amax * T
         self.corner_soft = reserve * self.jmax * T * T
         self.curvature_soft = reserve * self.jmax * T
+        # The same per axis as Python floats: on three axes a loop is cheaper than numpy.
+        self.rows = list(zip(self.vmax.tolist(), self.amax.tolist(), self.jmax.tolist(), self.g0_accel.tolist(),
+                             self.g0_jerk.tolist(), self.soft_accel.tolist()))
+        self.corner_brisk_floats = self.corner_brisk.tolist()
+        self.corner_soft_floats = self.corner_soft.tolist()
 
 
 _ARRAYS: dict[int, tuple[MotionParams, AxisArrays]] = {}
@@ -122,20 +127,23 @@ def plan_segment(
     moved = share > 1e-12
     axes = params.axes
     arrays = axis_arrays(params)
-    if not moved.any():
-        v_cap, a_lin, j_lin = 0.0, 1.0, 1.0
-    else:
-        inv = 1.0 / share[moved]
-        accel = arrays.amax[moved]
-        jerk_ax = arrays.jmax[moved]
+    v_cap = a_lin = j_lin = math.inf
+    moving = False
+    for part, (vmax, amax, jmax, g0_accel, g0_jerk, soft_accel) in zip(share.tolist(), arrays.rows):
+        if part <= 1e-12:
+            continue
+        moving = True
+        inv = 1.0 / part
+        accel_ax, jerk_ax = amax, jmax
         if rapid:
-            accel = accel * arrays.g0_accel[moved]
-            jerk_ax = jerk_ax * arrays.g0_jerk[moved]
+            accel_ax, jerk_ax = accel_ax * g0_accel, jerk_ax * g0_jerk
         if soft:
-            accel = accel * arrays.soft_accel[moved]
-        v_cap = float(np.min(arrays.vmax[moved] * inv))
-        a_lin = float(np.min(accel * inv))
-        j_lin = float(np.min(jerk_ax * inv))
+            accel_ax = accel_ax * soft_accel
+        v_cap = min(v_cap, vmax * inv)
+        a_lin = min(a_lin, accel_ax * inv)
+        j_lin = min(j_lin, jerk_ax * inv)
+    if not moving:
+        v_cap, a_lin, j_lin = 0.0, 1.0, 1.0
     accel = a_lin
     jerk: float | None = j_lin if soft else None
     if segment.arc is not None:
@@ -166,13 +174,13 @@ def junction_limit(params: MotionParams, prev: PlannedSegment, nxt: PlannedSegme
     arrays = axis_arrays(params)
     t1 = prev.segment.tangent(True)
     t2 = nxt.segment.tangent(False)
-    jump = np.abs(t2 - t1)
     soft = nxt.jerk is not None
     limit = math.inf
-    bent = jump > 1e-12
-    if bent.any():
-        allowed = arrays.corner_soft if soft else arrays.corner_brisk
-        limit = float(np.min(allowed[bent] / jump[bent]))
+    allowed = arrays.corner_soft_floats if soft else arrays.corner_brisk_floats
+    for before, after, corner in zip(t1.tolist(), t2.tolist(), allowed):
+        jump = abs(after - before)
+        if jump > 1e-12:
+            limit = min(limit, corner / jump)
     if soft and (prev.segment.arc is not None or nxt.segment.arc is not None):
         dk = np.abs(nxt.segment.curvature(False) - prev.segment.curvature(True))
         curved = dk > 1e-12
