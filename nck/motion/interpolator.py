@@ -79,7 +79,7 @@ class PathInterpolator:
                 self.cmd = point
                 k += 1
             elif m:
-                taus = run.tau + T * np.arange(1, m + 1)
+                taus = run.tau + self._sample_steps(m)
                 rows[k:k + m] = run.positions(run.profile.distances(taus))
                 run.tau = float(taus[m - 1])
                 self.cmd = rows[k + m - 1].copy()
@@ -94,6 +94,14 @@ class PathInterpolator:
             if self.run is None and not self.held and not self.faulted:
                 self._start_next(carry)
         return k, False, n
+
+    def _sample_steps(self, m: int) -> np.ndarray:
+        """``T * [1, 2, … m]`` (the sample times of a fill after the last one; table grown on demand)."""
+        table = self.__dict__.get("_steps_table")
+        if table is None or len(table) < m:
+            table = self.T * np.arange(1, max(m, 4096) + 1)
+            self.__dict__["_steps_table"] = table
+        return table[:m]
 
     def _cycles_to_idle(self, k: int) -> int:
         """Cycles of standstill setpoints until :meth:`is_idle` may turn true (≥ 1).

@@ -14,6 +14,7 @@ Units are consistent but arbitrary (the planner uses mm, s).
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from dataclasses import dataclass
 
 import numpy as np
@@ -36,6 +37,8 @@ class Profile:
     duration_s: float
     length: float
     v_end: float
+    phases: tuple[tuple[float, float, float, float, float], ...] = ()  # (t0, s0, v0, a0, j) as floats
+    starts: tuple[float, ...] = ()  # t0 as floats
 
     def sample(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Return distance, velocity and acceleration at times ``t`` (clipped to the profile)."""
@@ -52,8 +55,23 @@ class Profile:
         return np.minimum(s, self.length), vel, acc
 
     def distances(self, t: np.ndarray) -> np.ndarray:
-        """Distance only at times ``t`` (the interpolator's hot path; same formula as :meth:`sample`)."""
+        """Distance only at increasing times ``t`` (the interpolator's hot path; same formula as :meth:`sample`)."""
         t = np.minimum(np.maximum(t, 0.0), self.duration_s)
+        starts = self.starts
+        if starts:
+            first = bisect_right(starts, float(t[0])) - 1
+            if first == bisect_right(starts, float(t[-1])) - 1:
+                # All samples in one phase (mostly a cruise): scalar coefficients, fewer steps.
+                # Terms whose coefficient is zero add exactly nothing (s is never -0.0 here).
+                t0, s0, v0, a0, j = self.phases[max(first, 0)]
+                dt = t - t0
+                s = v0 * dt
+                s += s0
+                if a0 != 0.0:
+                    s += a0 * dt * dt / 2.0
+                if j != 0.0:
+                    s += j * dt**3 / 6.0
+                return np.minimum(s, self.length)
         idx = np.searchsorted(self.t0, t, side="right") - 1
         np.maximum(idx, 0, out=idx)
         dt = t - self.t0[idx]
@@ -144,9 +162,11 @@ class _Builder:
         if not self.rows:
             self.rows.append((0.0, 0.0, self.v, 0.0, 0.0))
         arr = np.array(self.rows, dtype=float)
+        phases = tuple(tuple(row) for row in arr.tolist())
         return Profile(
             t0=arr[:, 0], s0=arr[:, 1], v0=arr[:, 2], a0=arr[:, 3], j=arr[:, 4],
             duration_s=self.t, length=min(length, self.s + 1e-9), v_end=max(self.v, 0.0),
+            phases=phases, starts=tuple(row[0] for row in phases),  # type: ignore[arg-type]
         )
 
 
