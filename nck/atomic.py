@@ -15,7 +15,6 @@ no hard links).
 from __future__ import annotations
 
 import os
-import secrets
 import shutil
 from pathlib import Path
 
@@ -30,7 +29,7 @@ def backup_path(path: Path) -> Path:
 
 def _temp_path(path: Path) -> Path:
     """Return a fresh temporary name next to ``path`` (hidden, unique)."""
-    return path.with_name(f".{path.name}{TEMP_MARK}{os.getpid()}-{secrets.token_hex(4)}")
+    return path.with_name(f".{path.name}{TEMP_MARK}{os.getpid()}-{os.urandom(4).hex()}")
 
 
 def fsync_directory(directory: Path) -> None:

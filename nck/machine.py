@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from nck.resources import data_path
+from nck.resources import data_path, data_root, read_table
 
 DEFAULT_MACHINE = "mill3"
 
@@ -107,8 +107,11 @@ def load_machine(name_or_path: str | None = None) -> MachineConfig:
     if not path.is_file():
         raise MachineFileError(f"machine '{name}' not found")
     try:
-        with path.open("rb") as handle:
-            table = tomllib.load(handle)
+        if path.resolve().is_relative_to(data_root()):
+            table = read_table(path)  # a machine of the product: through its parsed copy
+        else:
+            with path.open("rb") as handle:
+                table = tomllib.load(handle)
         head = table["machine"]
         axes = tuple(
             AxisConfig(
