@@ -18,6 +18,7 @@ from nck.errors import NcAlarmError
 from nck.geometry.circles import Arc
 from nck.geometry.contour_aids import Corner, LineElement, chamfer, rounding
 from nck.geometry.path_state import GeometryState, PendingCorner
+from nck.geometry.rounding_distance import AID, criterion_mm, limit_feed, round_by_distance, transition_mm
 from nck.geometry.planes import Plane
 from nck.geometry.units import UnitSystem
 
@@ -53,7 +54,7 @@ def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
     geo.pending = None
     if pending is not None:
         if in_plane and pending.context["plane"] == pl.code:
-            cut = corner(pl, pending, element)
+            cut = corner(pl, pending, element, context, geo)
             first = builder.emit(cut.first, pending.context, pending.context["start_mcs"])
             out.append(first)
             last_mcs = first.end_mcs
@@ -63,6 +64,8 @@ def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
                 inserted_context["programmed"] = set(pending.context["programmed"]) | {pl.abscissa, pl.ordinate}
                 kind = "G1" if isinstance(cut.inserted, LineElement) else None
                 motion = builder.emit(cut.inserted, inserted_context, last_mcs, kind=kind, inserted=True)
+                if pending.aid == AID:
+                    motion = limit_feed(motion, transition_mm(pending, context, geo), builder.machine)
                 out.append(motion)
                 last_mcs = motion.end_mcs
             element = cut.second
@@ -73,6 +76,10 @@ def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
             out.append(builder.emit(pending.element, pending.context, pending.context["start_mcs"]))
             start_mcs = dict(out[-1].end_mcs)
     aid = aid_of(words, geo, units)
+    if aid is None and in_plane:
+        distance = criterion_mm(context, geo)
+        if distance > 0.0:
+            aid = (AID, distance)  # G641: every corner is rounded by distance
     if aid is not None and in_plane and context["kind"] != "G33":
         context["start_mcs"] = start_mcs
         geo.pending = PendingCorner(element, aid[0], aid[1], context)
@@ -84,8 +91,11 @@ def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
     return out
 
 
-def corner(pl: Plane, pending: PendingCorner, element: LineElement | Arc) -> Corner:
-    """The corner between the held-back element and the next one."""
+def corner(pl: Plane, pending: PendingCorner, element: LineElement | Arc,
+           context: dict[str, Any], geo: GeometryState) -> Corner:
+    """The corner between the held-back element and the next one (``context``: the next block's)."""
+    if pending.aid == AID:
+        return round_by_distance(pl, pending.element, element, transition_mm(pending, context, geo))
     if pending.aid == "RND":
         return rounding(pl, pending.element, element, pending.size_mm)
     return chamfer(pl, pending.element, element, pending.size_mm, pending.aid)

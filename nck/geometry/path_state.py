@@ -20,12 +20,12 @@ Vec3 = tuple[float, float, float]
 
 @dataclass
 class PendingCorner:
-    """A path element held back until the next one is known (CHF/CHR/RND/RNDM).
+    """A path element held back until the next one is known (CHF/CHR/RND/RNDM, G641).
 
     Attributes:
         element: the element in the WCS (mm): a line or an arc.
-        aid: ``CHF``, ``CHR`` or ``RND``.
-        size_mm: chamfer length / leg or rounding radius, mm.
+        aid: ``CHF``, ``CHR``, ``RND`` or ``ADIS`` (G641 rounding by distance).
+        size_mm: chamfer length / leg, rounding radius or rounding distance, mm.
         context: what is needed to emit it later (kind, source, transform, tool vector …).
     """
 
@@ -46,6 +46,7 @@ class GeometryState:
         tangent: WCS direction of travel at the end of the last path element (for CT).
         pending: an element held back for a chamfer/rounding, or None.
         rndm_mm: modal rounding radius (RNDM), 0 = off.
+        adis_mm, adispos_mm: G641 rounding distances of feed and G0 blocks (ADIS, ADISPOS).
         feed_type: the member of G group 15 the programmed F belongs to.
         cutting_speed_m_min: G96 constant cutting speed (S under G96).
         lims_rpm: G96 spindle speed limit (LIMS), None = none.
@@ -60,6 +61,8 @@ class GeometryState:
     tangent: Vec3 | None = None
     pending: PendingCorner | None = None
     rndm_mm: float = 0.0
+    adis_mm: float = 0.0
+    adispos_mm: float = 0.0
     feed_type: str = "G94"
     cutting_speed_m_min: float = 0.0
     lims_rpm: float | None = None
@@ -78,7 +81,7 @@ class GeometryState:
         return new
 
     def reset(self) -> None:
-        """RESET / program end: programmable frame, pole, RNDM and held-back element go.
+        """RESET / program end: programmable frame, pole, RNDM, ADIS/ADISPOS and held-back element go.
 
         The settable and basic frames are re-read from the NC data before the next
         block (their G code comes back to its reset member).
@@ -88,5 +91,7 @@ class GeometryState:
         self.tangent = None
         self.pending = None
         self.rndm_mm = 0.0
+        self.adis_mm = 0.0
+        self.adispos_mm = 0.0
         self.lims_rpm = None
         self.loaded = False

@@ -392,6 +392,11 @@ class Interpreter:
             line.main_run_read = "$" in line.text and _reads_main_run_data(block)
         run = BlockRun(self, frame, index, source)
         commands = run.execute(block)
+        geo = getattr(state.modal, "geometry", None)
+        if geo is not None and geo.pending is not None and self.needs_preprocessing_stop():
+            # The next block reads main-run data ($AA_IM …): the channel waits for the motion
+            # to end there, so an element held back for a corner must go out now, unrounded.
+            commands.extend(self.builder.release_held(state.modal))
         return BlockResult(
             source=source,
             text=line.text,

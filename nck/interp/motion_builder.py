@@ -39,6 +39,7 @@ from nck.errors import NcAlarmError
 from nck.geometry import trc_canon
 from nck.geometry.path_builder import PathBuilder
 from nck.geometry.path_state import GeometryState
+from nck.geometry.rounding_distance import AID
 from nck.interp.modal import ModalState
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
@@ -103,6 +104,15 @@ class MotionBuilder:
         """Return the commands of the block and update ``modal``."""
         trc_canon.reset_if_needed(modal)  # radius compensation look-ahead goes with RESET
         geo = self.path.state(modal)
+        self._rounding_distances(words, modal, geo)
+        pending = geo.pending
+        if pending is not None and pending.aid == AID and not self.path.has_path_words(words, modal):
+            # G641: a block with outputs but no path motion ends the rounding (implicit stop).
+            return self.release_held(modal) + self._build(words, modal, geo)
+        return self._build(words, modal, geo)
+
+    def _build(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> list[canon.CanonCommand]:
+        """The commands of the block once a held-back G641 corner is settled."""
         if 8 in words.gcodes:
             self.path.select_settable(modal, geo)
         if words.gcodes.get(2) == "G4":
@@ -144,6 +154,22 @@ class MotionBuilder:
             out[:0] = trc_canon.process([], modal, self.path, self.data, self.machine, src)
         return out
 
+    def release_held(self, modal: ModalState) -> list[canon.CanonCommand]:
+        """Emit an element held back for a corner unchanged (radius compensation still applies)."""
+        held = list(self.path.flush(modal))
+        if held:
+            held = trc_canon.process(held, modal, self.path, self.data, self.machine)
+        return held
+
+    def _rounding_distances(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> None:
+        """ADIS= / ADISPOS= (G641 rounding distances, modal; 16500 when negative)."""
+        for key, attribute in (("ADIS", "adis_mm"), ("ADISPOS", "adispos_mm")):
+            if key in words.words:
+                value = float(words.words[key]) * self.path.units(modal).position_mm
+                if value < 0:
+                    raise NcAlarmError(16500)
+                setattr(geo, attribute, value)
+
     def flush(self, modal: ModalState) -> list[canon.CanonCommand]:
         """Emit a motion held back for a chamfer/rounding (program stop or end reached)."""
         held = list(self.path.flush(modal))
@@ -162,9 +188,7 @@ class MotionBuilder:
     # ------------------------------------------------------------------ dwell
     def _dwell(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
         """G4 F… (seconds) or G4 S… (revolutions of the master spindle); F and S stay as they were."""
-        held = list(self.path.flush(modal))
-        if held:
-            held = trc_canon.process(held, modal, self.path, self.data, self.machine)
+        held = self.release_held(modal)
         # With radius compensation G4 is a block without plane motion, not a stop of the look-ahead.
         out: list[canon.CanonCommand] = held + trc_canon.process(
             [], modal, self.path, self.data, self.machine, words.source)

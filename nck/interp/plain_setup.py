@@ -103,6 +103,8 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
     gcodes = modal.gcodes
     if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm:
         return None
+    if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
+        return None  # every corner is rounded: the path builder holds each element back
     kind, distance = motion or gcodes.get(1), gcodes.get(14)
     if kind not in ("G0", "G1") or distance not in ("G90", "G91") or gcodes.get(7, "G40") != "G40":
         return None
