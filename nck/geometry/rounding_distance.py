@@ -11,7 +11,8 @@ tangent points lie exactly the distance from the corner along lines (radius
 Further rules of the manual:
 
 * a block shorter than four times the distance keeps about 60 % of its length:
-  the distance shrinks to 40 % of that block;
+  the distance shrinks to 40 % of that block (of what is left of it after the
+  rounding at its start, when it has one);
 * at a transition between G0 and a feed block the smaller of ADIS and ADISPOS
   applies; two G0 blocks meeting are not rounded here (the canonical motion has
   no rapid circles: the corner is passed as under G64);

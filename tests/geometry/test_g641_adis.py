@@ -218,3 +218,16 @@ def test_the_plain_block_path_does_not_bypass_the_rounding() -> None:
     text = "G90 G17 G1 X0 Y0 F1000\nG641 ADIS=0.5\n" + "".join(
         f"X{10 * (k + 1)} Y{10 * (k % 2)}\n" for k in range(8)) + "M30\n"
     assert [m.source.line for m in _arcs(_motions(text))] == [3, 4, 5, 6, 7, 8, 9]
+
+
+def test_stopre_and_dwell_end_the_rounding_computations_do_not() -> None:
+    for stop in ("STOPRE", "G4 F0.1"):
+        motions = _motions(f"G641 ADIS=1 G1 X10 F500\n{stop}\nY10\nX0\nM30\n")
+        assert [m.source.line for m in _arcs(motions)] == [3]
+    assert [m.source.line for m in _arcs(_motions("G641 ADIS=1 G1 X10 F500\nR1=5\nY10\nM30\n"))] == [1]
+
+
+def test_the_other_rounding_modes_stay_g64() -> None:
+    # G642 … G645 round within tolerances (MD20480 etc.): not modelled, the corner is passed as under G64.
+    for mode in ("G642", "G643", "G644", "G645"):
+        assert not _arcs(_motions(f"{mode} ADIS=1 G1 X10 F500\nY10\nX0\nM30\n"))
