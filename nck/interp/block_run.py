@@ -475,6 +475,8 @@ class BlockRun:
             end = program.find_label(stmt.end, start - 1, "F")
             if end is None:
                 raise NcAlarmError(14080, stmt.end)
+            if start <= self.index <= end:  # REPEAT between its labels: up to the REPEAT block (002 L21385-21387)
+                end = self.index - 1
         else:
             end_label = program.find_label("ENDLABEL", start, "F")
             end = end_label if end_label is not None and end_label < self.index else self.index - 1
