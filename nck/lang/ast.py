@@ -223,7 +223,7 @@ class SectionRepeat:
 
 @dataclass(frozen=True, slots=True)
 class Case:
-    """``CASE(expr) OF c1 GOTOF l1 c2 GOTOF l2 … DEFAULT GOTOF ld``."""
+    """``CASE(expr) OF`` or ``CASE expr OF``: ``c1 GOTOF l1 c2 GOTOF l2 … DEFAULT GOTOF ld``."""
 
     expr: Expr
     branches: tuple[tuple[Expr, Goto], ...]

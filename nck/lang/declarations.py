@@ -39,9 +39,7 @@ class DeclarationParser(TokenParser):
 
     def _case(self) -> ast.Case:
         self.advance()  # CASE
-        self.expect_op("(")
-        expr = self.expression()
-        self.expect_op(")")
+        expr = self.expression()  # CASE (<expr>) OF … and CASE <expr> OF … (002 L23209)
         if not self.is_name("OF"):
             raise syntax_error(self.tok)
         self.advance()

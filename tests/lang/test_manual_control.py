@@ -36,3 +36,31 @@ def test_repeat_between_its_labels_with_passes() -> None:
         "M30\n", timeout_s=5.0)
     assert result.status == "ended", result.alarms
     assert (_r(result, 1), _r(result, 3)) == (4, 1)
+
+
+def test_case_without_parentheses_as_in_the_manual_example() -> None:
+    # 002 L23209-23211: "CASE $P_UIFRNUM OF 0 GOTOF _G500 1 GOTOF _G54 ... DEFAULT GOTOF END";
+    # after G55 the settable frame number is 2 ($P_UIFRNUM: G54=1, G55=2), so the jump goes
+    # to the block of the constant 2.
+    result = run_text(
+        "N10 G55\n"
+        "N20 CASE $P_UIFRNUM OF 0 GOTOF _G500 1 GOTOF _G54 2 GOTOF _G55 DEFAULT GOTOF END\n"
+        "N30 _G500: R1=500 GOTOF END\n"
+        "N40 _G54: R1=54 GOTOF END\n"
+        "N50 _G55: R1=55 GOTOF END\n"
+        "N60 END: M30\n", timeout_s=5.0)
+    assert result.status == "ended", result.alarms
+    assert _r(result, 1) == 55
+
+
+def test_case_with_parentheses_and_default() -> None:
+    # 002 L23209: the DEFAULT branch is taken when no constant matches.
+    result = run_text(
+        "R2=7\n"
+        "CASE (R2) OF 1 GOTOF ONE 2 GOTOF TWO DEFAULT GOTOF OTHER\n"
+        "ONE: R1=1 GOTOF FIN\n"
+        "TWO: R1=2 GOTOF FIN\n"
+        "OTHER: R1=3\n"
+        "FIN: M30\n", timeout_s=5.0)
+    assert result.status == "ended", result.alarms
+    assert _r(result, 1) == 3
