@@ -149,7 +149,7 @@ class _Environment:
             if default.is_dir():
                 data_dir, ephemeral = str(default), True
         if data_dir:
-            from nck.datalock import DataDirInUse, lock_data_dir
+            from nck.datalock import DataDirLockError, lock_data_dir
             from nck.paths import EphemeralDataDir, resolve_data_dir
             from nck.persistence import Session
 
@@ -164,7 +164,7 @@ class _Environment:
             except OSError as exc:
                 self._release()
                 raise CliError(f"NC data directory '{data_dir}': {exc}") from None
-            except DataDirInUse as exc:  # another HMI or nck command works there
+            except DataDirLockError as exc:  # another HMI or nck command works there (or .lock is a link)
                 self._release()
                 raise CliError(str(exc)) from None
             for alarm in self.session.startup_alarms:

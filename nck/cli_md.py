@@ -33,7 +33,7 @@ from nck.machine_data import (
     UnknownDataError,
     format_value,
 )
-from nck.datalock import DataDirInUse, lock_data_dir
+from nck.datalock import DataDirLockError, lock_data_dir
 from nck.paths import open_data_dir
 from nck.persistence import Session
 from nck.resources import alarm_text
@@ -104,7 +104,7 @@ def run(argv: list[str], out: TextIO, err: TextIO) -> int:
         if ephemeral is None:  # an HMI working on this directory would overwrite what we write
             lock = lock_data_dir(data_dir)
         return _run(options, machine, data_dir, out, err)
-    except DataDirInUse as exc:
+    except DataDirLockError as exc:
         print(f"nck md: {exc}", file=err)
         return 2
     except OSError as exc:

@@ -16,6 +16,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from nck.regular_files import NotARegularFile, open_regular, read_regular_bytes
+
 try:  # POSIX advisory locks; released by the kernel when the process dies
     import fcntl
 except ImportError:  # pragma: no cover - Windows: no lock
@@ -25,7 +27,21 @@ LOCK_NAME = ".lock"
 """File name of the lock inside the NC data directory."""
 
 
-class DataDirInUse(Exception):
+class DataDirLockError(Exception):
+    """The NC data directory cannot be locked; ``str()`` says why."""
+
+
+class LockFileRefused(DataDirLockError):
+    """``.lock`` is not a regular file (a link, pipe or device): it is never opened through."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        super().__init__(
+            f"{path} is not a regular file (a link, pipe or device); the lock is never taken "
+            "through it — remove it and start again")
+
+
+class DataDirInUse(DataDirLockError):
     """The NC data directory is locked by another running process."""
 
     def __init__(self, directory: Path, holder_pid: int | None) -> None:
@@ -78,20 +94,28 @@ class DataDirLock:
 
 def _holder_pid(path: Path) -> int | None:
     try:
-        text = path.read_text(encoding="ascii", errors="replace").strip()
+        text = read_regular_bytes(path, 32).decode("ascii", errors="replace").strip()
     except OSError:
         return None
     return int(text) if text.isdigit() else None
 
 
 def lock_data_dir(directory: str | Path) -> DataDirLock:
-    """Take the lock of ``directory`` (created if missing) or raise :class:`DataDirInUse`."""
+    """Take the lock of ``directory`` (created if missing).
+
+    Raises :class:`DataDirInUse` while another process holds it and
+    :class:`LockFileRefused` when ``.lock`` is a link, pipe or device (the
+    file it points to is never opened, truncated or written).
+    """
     root = Path(directory)
     root.mkdir(parents=True, exist_ok=True)
     path = root / LOCK_NAME
     if fcntl is None:  # pragma: no cover
         return DataDirLock(root, None)
-    handle = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
+    try:
+        handle = open_regular(path, os.O_RDWR | os.O_CREAT, 0o644)
+    except NotARegularFile:
+        raise LockFileRefused(path) from None
     try:
         fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except OSError:

@@ -13,6 +13,7 @@ import pytest
 from hmi.app import main as hmi_main
 from hmi.startup import build_session
 from nck.datalock import DataDirInUse, lock_data_dir
+from nck.persistence import Session
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -81,9 +82,20 @@ def test_a_killed_hmi_leaves_no_stale_lock(tmp_path: Path) -> None:
 
 
 def test_ephemeral_copy_needs_no_lock(tmp_path: Path) -> None:
-    with lock_data_dir(tmp_path):
+    original = Session.open(tmp_path)
+    original.ncdata.r[1] = 11.0
+    original.save()
+    with lock_data_dir(tmp_path) as lock:
         session = build_session(data_dir=str(tmp_path), ephemeral=True)
+        copy = session.session.data_dir
+        assert copy != tmp_path and not copy.is_relative_to(tmp_path)
+        assert session.session.ncdata.r[1] == 11.0  # the copy holds the original's data
+        session.session.ncdata.r[1] = 99.0
+        assert getattr(session, "data_lock", None) is None  # the copy is not locked …
         session.quit()
+        assert lock.held  # … and the original's lock is left alone
+    assert not copy.exists()
+    assert Session.open(tmp_path).ncdata.r[1] == 11.0  # nothing written back
 
 
 def test_a_quit_session_frees_the_directory(tmp_path: Path) -> None:

@@ -1,0 +1,135 @@
+"""Only regular files: never read or write through a link, a pipe or a device.
+
+Everything the program keeps (lock, retained data, programs) or writes for the
+operator (exports) is a regular file in its place. An entry of another kind
+with such a name — a symbolic link pointing out of the data directory, a FIFO,
+a device — is never opened through: a read would block on a FIFO or never end
+on ``/dev/zero``, a write would land in a file somewhere else. The helpers here
+check the entry itself (``lstat``, ``O_NOFOLLOW``) and raise
+:class:`NotARegularFile` instead; reads are bounded in size
+(:class:`FileTooLarge`). Both are ``OSError`` subclasses, so code that already
+reports I/O failures reports these too.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import shutil
+import stat
+from pathlib import Path
+from typing import Callable
+
+_NO_FOLLOW = getattr(os, "O_NOFOLLOW", 0)
+_NON_BLOCKING = getattr(os, "O_NONBLOCK", 0)
+_CHUNK_BYTES = 1 << 20
+
+
+class NotARegularFile(OSError):
+    """The entry is a link, FIFO, device or directory where a regular file is expected."""
+
+    def __init__(self, path: Path | str) -> None:
+        super().__init__(errno.EINVAL, "not a regular file (a link, pipe or device)", str(path))
+
+
+class FileTooLarge(OSError):
+    """The file is larger than the reader accepts."""
+
+    def __init__(self, path: Path | str, limit_bytes: int) -> None:
+        super().__init__(errno.EFBIG, f"larger than {limit_bytes} bytes", str(path))
+
+
+def is_regular_file(path: Path | str) -> bool:
+    """True when ``path`` itself (not a link's target) is a regular file."""
+    try:
+        return stat.S_ISREG(os.lstat(path).st_mode)
+    except OSError:
+        return False
+
+
+def is_plain_directory(path: Path | str) -> bool:
+    """True when ``path`` itself (not a link's target) is a directory."""
+    try:
+        return stat.S_ISDIR(os.lstat(path).st_mode)
+    except OSError:
+        return False
+
+
+def is_link(path: Path | str) -> bool:
+    """True when ``path`` is a symbolic link (dangling or not)."""
+    return os.path.islink(path)
+
+
+def open_regular(path: Path | str, flags: int, mode: int = 0o644) -> int:
+    """``os.open`` that refuses links, FIFOs and devices; return the descriptor.
+
+    The file is opened without following a final symbolic link and without
+    blocking on a FIFO; its kind is checked on the open descriptor, so a swap
+    between check and use is impossible.
+    """
+    try:
+        handle = os.open(path, flags | _NO_FOLLOW | _NON_BLOCKING, mode)
+    except OSError as exc:
+        if exc.errno == errno.ELOOP:  # the final component is a symbolic link
+            raise NotARegularFile(path) from None
+        raise
+    try:
+        if not stat.S_ISREG(os.fstat(handle).st_mode):
+            raise NotARegularFile(path)
+        if _NON_BLOCKING:
+            os.set_blocking(handle, True)
+    except BaseException:
+        os.close(handle)
+        raise
+    return handle
+
+
+def read_regular_bytes(path: Path | str, limit_bytes: int) -> bytes:
+    """The content of the regular file ``path``, at most ``limit_bytes`` long.
+
+    Raises :class:`NotARegularFile`, :class:`FileTooLarge` or another ``OSError``.
+    """
+    handle = open_regular(path, os.O_RDONLY)
+    with os.fdopen(handle, "rb") as stream:
+        data = stream.read(limit_bytes + 1)
+    if len(data) > limit_bytes:
+        raise FileTooLarge(path, limit_bytes)
+    return data
+
+
+def copy_regular_tree(source: Path, target: Path, limit_bytes: int,
+                      skip_name: Callable[[str], bool] | None = None) -> list[Path]:
+    """Copy the directories and regular files below ``source`` to ``target`` (created).
+
+    Links, FIFOs, sockets and devices are not copied (never followed); neither
+    is anything past ``limit_bytes`` in total (:class:`FileTooLarge` is raised,
+    the caller removes ``target``). ``skip_name`` leaves out entries by name
+    (e.g. temporary files). Returns the entries that were left out because of
+    their kind, for a report.
+    """
+    skipped: list[Path] = []
+    copied_bytes = 0
+    target.mkdir(parents=True)
+    pending = [(source, target)]
+    while pending:
+        folder, copy = pending.pop()
+        for entry in sorted(folder.iterdir()):
+            if skip_name is not None and skip_name(entry.name):
+                continue
+            if is_plain_directory(entry):
+                (copy / entry.name).mkdir()
+                pending.append((entry, copy / entry.name))
+                continue
+            try:
+                handle = open_regular(entry, os.O_RDONLY)
+            except NotARegularFile:
+                skipped.append(entry)
+                continue
+            with os.fdopen(handle, "rb") as stream, open(copy / entry.name, "xb") as out:
+                while chunk := stream.read(_CHUNK_BYTES):
+                    copied_bytes += len(chunk)
+                    if copied_bytes > limit_bytes:
+                        raise FileTooLarge(source, limit_bytes)
+                    out.write(chunk)
+            shutil.copystat(entry, copy / entry.name, follow_symlinks=False)
+    return skipped
