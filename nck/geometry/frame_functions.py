@@ -1,4 +1,4 @@
-"""Frame functions in expressions: ``CTRANS()``, ``CROT()``, ``CSCALE()``, ``CMIRROR()``, ``CFINE()``.
+"""Frame functions in expressions: ``CTRANS()``, ``CROT()``, ``CRPL()``, ``CSCALE()``, ``CMIRROR()``, ``CFINE()``.
 
 Each returns a FRAME value (:class:`GeoFrameValue`) that can be assigned to a
 FRAME variable or to a frame system variable (``$P_PFRAME``, ``$P_IFRAME``,
@@ -7,9 +7,11 @@ FRAME variable or to a frame system variable (``$P_PFRAME``, ``$P_IFRAME``,
     $P_PFRAME = CTRANS(X, 10, Y, 20)    ; programmable frame: translation only
     $P_UIFR[1] = CROT(Z, 45)            ; settable frame G54: rotation only
     $P_PFRAME = CTRANS()                ; zero frame
+    $P_PFRAME = CTRANS(X,10) : CRPL(1,30) ; rotation about Z, chained
 
-Arguments come in pairs axis, value (``CMIRROR`` takes axes only). Lengths are
-in the programmed system (G70/G700 inch) and converted to mm here.
+Arguments come in pairs axis, value (``CMIRROR`` takes axes only; ``CRPL`` takes
+a plane number 0 = active plane, 1 = about Z, 2 = about Y, 3 = about X and an
+angle). Lengths are in the programmed system (G70/G700 inch) and converted to mm here.
 """
 
 from __future__ import annotations
@@ -19,9 +21,11 @@ from typing import Any, Sequence
 
 from nck.errors import NcAlarmError
 from nck.geometry.frames import Frame
+from nck.geometry.planes import Plane, plane
 from nck.interp.values import FrameValue
 
-NAMES = frozenset(("CTRANS", "CROT", "CSCALE", "CMIRROR", "CFINE"))
+NAMES = frozenset(("CTRANS", "CROT", "CRPL", "CSCALE", "CMIRROR", "CFINE"))
+CRPL_AXIS_INDEX = {1: 2, 2: 1, 3: 0}  # CRPL plane number → geometry axis index rotated about
 ALARM_PARAMETERS = 14020  # wrong value or number of parameters in a function call
 
 
@@ -32,8 +36,11 @@ class GeoFrameValue(FrameValue):
     frame: Frame = field(default_factory=Frame)
 
 
-def call(name: str, args: Sequence[Any], length_mm: float = 1.0) -> GeoFrameValue:
-    """Evaluate a frame function with already evaluated arguments."""
+def call(name: str, args: Sequence[Any], length_mm: float = 1.0,
+         active_plane: Plane | None = None) -> GeoFrameValue:
+    """Evaluate a frame function with already evaluated arguments (``active_plane``: for CRPL(0, …), G17 if None)."""
+    if name == "CRPL":
+        return _value(_crpl(args, active_plane or plane("G17")))
     if name == "CMIRROR":
         axes = [_axis(a, name) for a in args]
         return _value(Frame.cmirror(axes))
@@ -55,6 +62,19 @@ def call(name: str, args: Sequence[Any], length_mm: float = 1.0) -> GeoFrameValu
     if name == "CSCALE":
         return _value(Frame.cscale(pairs))
     raise NcAlarmError(12550, name)
+
+
+def _crpl(args: Sequence[Any], active_plane: Plane) -> Frame:
+    """``CRPL(plane, angle)``: rotation in the active plane (0) or about Z (1), Y (2), X (3) (002 L28005-28020)."""
+    if len(args) != 2 or any(isinstance(a, bool) or not isinstance(a, (int, float)) for a in args):
+        raise NcAlarmError(ALARM_PARAMETERS, "CRPL")
+    number, angle = args
+    if number == 0:
+        return Frame.crpl(active_plane, float(angle))
+    if number not in CRPL_AXIS_INDEX:
+        raise NcAlarmError(ALARM_PARAMETERS, "CRPL")
+    axes = active_plane.geometry_axes
+    return Frame.crot({axes[CRPL_AXIS_INDEX[int(number)]]: float(angle)}, axes)
 
 
 def chain(left: Any, right: Any) -> GeoFrameValue:

@@ -90,9 +90,11 @@ def rpy_angles(matrix: Matrix3 | np.ndarray) -> tuple[float, float, float]:
     """
     m = np.asarray(matrix, dtype=float)
     b = math.degrees(math.asin(max(-1.0, min(1.0, -m[2, 0]))))
-    if abs(abs(m[2, 0]) - 1.0) < 1e-12:  # gimbal lock: put everything into the first angle
-        a = math.degrees(math.atan2(-m[1, 2], m[1, 1])) * (1 if m[2, 0] < 0 else -1)
-        c = 0.0
+    if abs(abs(m[2, 0]) - 1.0) < 1e-12:
+        # gimbal lock: only c-a (b=90) or c+a (b=-90) is defined; the control reads it back
+        # as the third angle with the first one 0 (crot(x,10,y,90,z,40) → crot(x,0,y,90,z,30), 002 L27986)
+        a = 0.0
+        c = math.degrees(math.atan2(-m[0, 1], m[1, 1]))
     else:
         a = math.degrees(math.atan2(m[2, 1], m[2, 2]))
         c = math.degrees(math.atan2(m[1, 0], m[0, 0]))

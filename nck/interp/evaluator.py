@@ -13,6 +13,7 @@ from typing import Any, Callable, Protocol
 
 from nck.errors import NcAlarmError
 from nck.geometry import frame_functions
+from nck.geometry.planes import Plane
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
 from nck.interp.values import (
     Axis, INT_MAX, INT_MIN, round_half_away, to_bool, to_number, to_string,
@@ -282,7 +283,7 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
         raise NcAlarmError(12080, name)
     if name in frame_functions.NAMES:  # CTRANS(X,10), CROT(Z,45), … → FRAME value
         return frame_functions.call(name, [_index_value(a, scope) for a in args],  # type: ignore[arg-type]
-                                    frame_functions_length_mm(scope))
+                                    frame_functions_length_mm(scope), _active_plane(scope))
     if name in ONE_ARG:
         _arity(name, args, 1)
         return _checked(ONE_ARG[name](float(_number(evaluate(args[0], scope)))))  # type: ignore[arg-type]
@@ -400,6 +401,15 @@ def sprint(template: str, values: list[Any]) -> str:
 def _arity(name: str, args: tuple, count: int) -> None:
     if len(args) != count:
         raise NcAlarmError(14020, name)
+
+
+def _active_plane(scope: Scope) -> Plane | None:
+    """The active working plane for CRPL(0, …); None without an interpreter."""
+    interp = getattr(scope, "interp", None)
+    builder = getattr(interp, "builder", None)
+    if builder is None:
+        return None
+    return builder.path.plane(interp.modal)
 
 
 def frame_functions_length_mm(scope: Scope) -> float:

@@ -64,3 +64,60 @@ def test_case_with_parentheses_and_default() -> None:
         "FIN: M30\n", timeout_s=5.0)
     assert result.status == "ended", result.alarms
     assert _r(result, 1) == 3
+
+
+def _frame_rotation(program: str) -> tuple[float, float, float]:
+    result = run_text(program + "R11=$P_UIFR[1,X,RT] R12=$P_UIFR[1,Y,RT] R13=$P_UIFR[1,Z,RT]\nM30\n",
+                      timeout_s=5.0)
+    assert result.status == "ended", result.alarms
+    return (_r(result, 11), _r(result, 12), _r(result, 13))
+
+
+def test_crot_reads_back_in_the_manuals_rpy_form_at_ninety_degrees() -> None:
+    # 002 L27986-27988 (RPY, MD10600=1): $P_UIFR[1]=crot(x,10,y,90,z,40) reads back as
+    # crot(x,0,y,90,z,30) — at y=90 only z-x matters and it is put into z.
+    assert _frame_rotation("$P_UIFR[1]=crot(x,10,y,90,z,40)\n") == (0.0, 90.0, 30.0)
+
+
+def test_crot_reads_back_wrapped_into_the_unique_ranges() -> None:
+    # 002 L27990-27991: crot(x,190,y,0,z,-200) reads back as crot(x,-170,y,0,z,160).
+    assert _frame_rotation("$P_UIFR[1]=crot(x,190,y,0,z,-200)\n") == (-170.0, 0.0, 160.0)
+
+
+def test_crot_at_minus_ninety_degrees_puts_the_combined_angle_into_z() -> None:
+    # 002 L27986-27988 by the same rule at y=-90: Rz(z)·Ry(-90)·Rx(x) depends on x+z only;
+    # x=10, z=40 reads back as x=0, z=50.
+    assert _frame_rotation("$P_UIFR[1]=CROT(X,10,Y,-90,Z,40)\n") == (0.0, -90.0, 50.0)
+
+
+def _pframe_rotation(program: str) -> tuple[float, float, float]:
+    result = run_text(program + "R11=$P_PFRAME[X,RT] R12=$P_PFRAME[Y,RT] R13=$P_PFRAME[Z,RT]\nM30\n",
+                      timeout_s=5.0)
+    assert result.status == "ended", result.alarms
+    return (_r(result, 11), _r(result, 12), _r(result, 13))
+
+
+def test_crpl_rotates_in_the_active_plane_or_about_the_named_axis() -> None:
+    # 002 L28005-28020: CRPL(INT, REAL): 0 rotation in the active plane, 1 about z,
+    # 2 about y, 3 about x; the angle in degrees.
+    assert _pframe_rotation("G17\n$P_PFRAME=CRPL(0,30)\n") == (0.0, 0.0, 30.0)
+    assert _pframe_rotation("G18\n$P_PFRAME=CRPL(0,30)\n") == (0.0, 30.0, 0.0)
+    assert _pframe_rotation("G19\n$P_PFRAME=CRPL(0,30)\n") == (30.0, 0.0, 0.0)
+    assert _pframe_rotation("$P_PFRAME=CRPL(1,30)\n") == (0.0, 0.0, 30.0)
+    assert _pframe_rotation("$P_PFRAME=CRPL(2,-20)\n") == (0.0, -20.0, 0.0)
+    assert _pframe_rotation("$P_PFRAME=CRPL(3,45)\n") == (45.0, 0.0, 0.0)
+
+
+def test_crpl_chained_with_a_translation_moves_as_the_manual_example() -> None:
+    # 002 L28034: $P_PFRAME = CTRANS(x,10) : CRPL(1,30). WCS X10 Y0 lies at
+    # 10 + 10*cos(30) = 18.660254, 10*sin(30) = 5 in the machine (no other frames).
+    result = run_text("$P_PFRAME = CTRANS(x,10) : CRPL(1,30)\nG0 X10 Y0\nM30\n", timeout_s=5.0)
+    assert result.status == "ended", result.alarms
+    end = result.segments[-1].end_mcs
+    assert round(end["X"], 6) == 18.660254 and round(end["Y"], 6) == 5.0
+
+
+def test_crpl_with_a_wrong_plane_number_is_an_alarm() -> None:
+    # 002 L28009-28012: only 0..3 are defined; anything else is a wrong parameter (14020).
+    result = run_text("$P_PFRAME=CRPL(4,30)\nM30\n", timeout_s=5.0)
+    assert [a.number for a in result.alarms] == [14020]
