@@ -36,6 +36,8 @@ from typing import Any, Callable
 
 from textual import events
 from textual.app import App
+from textual.driver import Driver
+from textual.drivers.linux_driver import LinuxDriver
 from textual.screen import Screen
 
 from nck import commands as cmd
@@ -44,6 +46,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.bridge import NckBridge
+from hmi.key_input import PanelTerminalDriver
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.program_lines import ProgramLines
@@ -189,6 +192,11 @@ class HmiApp(MachineControlPanel, App):
         """Set by :func:`main`: call :func:`freeze_startup_objects` after the first frame."""
         for area in AREAS:
             self.add_mode(area.id, area_screen_factory(area))
+
+    def get_driver_class(self) -> type[Driver]:
+        """Textual's driver for this platform; on a Linux/macOS terminal the HMI's key reader."""
+        driver = super().get_driver_class()
+        return PanelTerminalDriver if driver is LinuxDriver else driver
 
     def get_theme_variable_defaults(self) -> dict[str, str]:
         """The HMI's own colour variables (``$softkey-background`` …), from the theme."""

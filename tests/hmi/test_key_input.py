@@ -1,0 +1,114 @@
+"""Keys reach the HMI as the operator typed them: no key typed as text, none reordered.
+
+The terminal tests feed the bytes an xterm-like terminal (tmux) sends into the
+HMI's parser, whole and split into reads the way a burst or an auto-repeat
+arrives (reads a few ms apart, well inside the parser's escape delay), and post
+what the parser makes of them to the app, as the terminal driver does.
+"""
+
+from __future__ import annotations
+
+from textual import events
+from textual.drivers.linux_driver import LinuxDriver
+
+from nck import commands as c
+
+from hmi.app import HmiApp
+from hmi.key_input import PanelKeyParser, PanelTerminalDriver
+from tests.hmi.conftest import SIZE
+from tests.hmi.fake_nck import FakeNck
+
+ALT_G = "\x1bg"  # CYCLE START as the terminal sends it (ESC + letter)
+ALT_K = "\x1bk"  # SINGLE BLOCK
+ALT_D = "\x1bd"  # MDA
+SHIFT_F1 = "\x1b[1;2P"  # VSK1
+F1 = "\x1bOP"
+UP, HOME = "\x1b[A", "\x1b[H"
+
+
+def parse(*reads: str) -> list[events.Key]:
+    """The keys the HMI's parser reports for these reads (no escape delay between them)."""
+    parser = PanelKeyParser()
+    return [m for read in reads for m in parser.feed(read) if isinstance(m, events.Key)]
+
+
+def names(keys: list[events.Key]) -> list[str]:
+    return [key.key for key in keys]
+
+
+def splits(data: str) -> list[tuple[str, ...]]:
+    """``data`` whole, and cut into two reads at every position."""
+    return [(data,)] + [(data[:i], data[i:]) for i in range(1, len(data))]
+
+
+def test_repeated_alt_key_is_read_as_alt_keys_however_the_reads_fall() -> None:
+    for reads in splits(ALT_G * 3) + [tuple(ALT_G * 3)]:
+        keys = parse(*reads)
+        assert names(keys) == ["alt+g"] * 3, reads
+        assert all(key.character is None for key in keys), reads
+
+
+def test_alt_key_between_text_keeps_its_place() -> None:
+    for reads in splits("G4" + ALT_G + "F1" + ALT_K + ALT_K + "X"):
+        assert names(parse(*reads)) == ["G", "4", "alt+g", "F", "1", "alt+k", "alt+k", "X"], reads
+
+
+def test_sequences_and_plain_keys_still_read_as_before() -> None:
+    burst = ALT_D + SHIFT_F1 + F1 + UP + HOME + "a" + "\x1b[1;5C"
+    for reads in splits(burst):
+        assert names(parse(*reads)) == ["alt+d", "shift+f1", "f1", "up", "home", "a",
+                                        "ctrl+right"], reads
+
+
+def test_alt_chord_never_carries_text() -> None:
+    """Bound or not, an Alt+letter is a command, never a character to type.
+
+    Alt+B and Alt+F are left out: terminals send them as word left/right (keymap.md).
+    """
+    for letter in "acdeghijklmnopqrstuvwxyz":
+        (key,) = parse("\x1b" + letter)
+        assert key.key == f"alt+{letter}" and key.character is None and not key.is_printable
+
+
+def test_terminal_driver_reads_through_the_panel_parser(fake_app: HmiApp) -> None:
+    assert fake_app.get_driver_class() is PanelTerminalDriver
+    assert issubclass(PanelTerminalDriver, LinuxDriver)
+
+
+async def feed_terminal(app: HmiApp, pilot, *reads: str) -> None:
+    """Post what the parser reads from ``reads`` to the app (as the driver does), then settle."""
+    for key in parse(*reads):
+        key.set_sender(app)
+        app.post_message(key)
+    await pilot.pause()
+
+
+def cycle_starts(fake: FakeNck) -> int:
+    return sum(isinstance(command, c.CycleStart) for command in fake.submitted)
+
+
+async def test_double_cycle_start_types_nothing_into_mda(fake: FakeNck, fake_app: HmiApp) -> None:
+    """Issue 18 repro: Alt+D, Shift+F1, ``G4 F1``, Alt+G Alt+G quickly gave ``G4 F1^g``."""
+    cases = splits(ALT_G * 2) + [tuple(ALT_G * 2)]
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d")
+        await pilot.pause()
+        await pilot.press(*"G4 F1")
+        for reads in cases:
+            before = cycle_starts(fake)
+            await feed_terminal(fake_app, pilot, *reads)
+            assert fake.mda_text == "G4 F1", reads
+            assert cycle_starts(fake) == before + 2, reads
+
+
+async def test_repeated_single_block_types_nothing_into_the_editor(fake: FakeNck,
+                                                                  fake_app: HmiApp) -> None:
+    """Issue 18: in the editor Alt+K four times at 10-60 ms inserted ``^k`` three to five times."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d")
+        await pilot.pause()
+        editor = fake_app.screen.query_one("#mda-editor")
+        await feed_terminal(fake_app, pilot, "N1", ALT_K, ALT_K + ALT_K[0], ALT_K[1:] + ALT_K, "X")
+        assert editor.text == "N1X"
+        await pilot.press("alt+k", "alt+k", "alt+k", "alt+k")  # the same four keys via Pilot
+        assert editor.text == "N1X"
