@@ -366,9 +366,9 @@ def final_state_json(result: Any, machine: MachineConfig, data: NcData) -> dict[
             {"number": a.number, "line": a.line, "n": a.n, "file": a.file, "text": alarm_message(a)}
             for a in result.alarms
         ],
-        "position": {
-            "wcs": {k: _num(v) for k, v in modal.position_wcs.items()},
-            "mcs": {k: _num(v) for k, v in modal.position_mcs.items()},
+        "position": {  # where the axes stand (a refused block did not move them, 002 L2397-2416)
+            "wcs": {k: _num(v) for k, v in (result.position_wcs or modal.position_wcs).items()},
+            "mcs": {k: _num(v) for k, v in (result.position_mcs or modal.position_mcs).items()},
         },
         "gcodes": {str(k): v for k, v in sorted(modal.gcodes.items())},
         "tool": {"T": modal.tool, "D": modal.edge},

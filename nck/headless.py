@@ -11,6 +11,7 @@ feed-based estimate (rapid traverse at the slowest axis' MD32000).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
@@ -31,7 +32,9 @@ class RunResult:
     """Outcome of a headless run.
 
     ``status`` is ``ended`` (M2/M30/M17/end of file), ``alarm`` or ``timeout``;
-    ``exit_code`` follows the CLI contract (0, 1, 3).
+    ``exit_code`` follows the CLI contract (0, 1, 3). ``position_mcs`` /
+    ``position_wcs`` are where the path axes stand at the end of a kernel run
+    (None for ``nck check``, which moves nothing: the interpreter's end point).
     """
 
     status: str
@@ -40,6 +43,8 @@ class RunResult:
     blocks: int = 0
     machine_time_s: float = 0.0
     interpreter: Interpreter | None = None
+    position_mcs: dict[str, float] | None = None
+    position_wcs: dict[str, float] | None = None
 
     @property
     def exit_code(self) -> int:
@@ -139,14 +144,11 @@ def run_on_kernel(
     if on_motion is not None:
         on_motion(nck.motion)
     result = RunResult(status="ended")
+    executed = _ExecutedCommands(result, on_command, keep_commands)
 
     def on_block(block: object) -> None:
         result.blocks += 1
-        for command in getattr(block, "commands", ()):
-            if keep_commands:
-                result.commands.append(command)
-            if on_command is not None:
-                on_command(command)
+        executed.interpreted(getattr(block, "commands", ()), nck.motion.current_source())
 
     nck.block_listener = on_block
     nck.alarm_listener = result.alarms.append
@@ -184,7 +186,76 @@ def run_on_kernel(
     if result.status != "timeout" and (result.alarms or nck.situation.channel != "reset"):
         result.status = "alarm"
     result.machine_time_s = nck.time_s
+    path_axes = [a for a in nck.status().axes if a.kind != "spindle"]
+    result.position_mcs = {a.name: a.position_mcs for a in path_axes}
+    result.position_wcs = {a.name: a.position_wcs for a in path_axes}
+    if result.status == "ended":
+        executed.finish(None, result.position_mcs, result.position_wcs)
+    else:
+        motion = nck.motion
+        stop = getattr(motion, "stop_source", None) if getattr(motion, "faulted", False) else None
+        executed.finish(stop or motion.current_source(), result.position_mcs, result.position_wcs)
     return result
+
+
+class _ExecutedCommands:
+    """Hands on the canonical commands of a kernel run as far as the machine executed them.
+
+    The interpreter runs ahead of the motion; its commands are held back until
+    execution has reached the next block. When the run stops early (a block the
+    motion refused, a tripped monitor, the timeout) the blocks after the stop
+    are never reported, and the block it stopped in ends where the axes stand
+    (002 L2397-2416: a block that would pass a software limit is not started).
+    """
+
+    def __init__(self, result: RunResult, on_command: Callable[[canon.CanonCommand], None] | None,
+                 keep_commands: bool) -> None:
+        self.result, self.on_command, self.keep = result, on_command, keep_commands
+        self.pending: list[canon.CanonCommand] = []
+
+    def interpreted(self, commands: Any, executing: canon.Source | None) -> None:
+        """New commands of the interpreter; those before the ``executing`` block are done."""
+        if not self.keep and self.on_command is None:
+            return
+        self.pending.extend(commands)
+        index = self._index_of(executing)
+        if index:
+            self._release(self.pending[:index])
+            del self.pending[:index]
+
+    def finish(self, stop: canon.Source | None, position_mcs: dict[str, float],
+               position_wcs: dict[str, float]) -> None:
+        """End of run: release what ran; the ``stop`` block (None: all ran) ends at the position."""
+        index = self._index_of(stop) if stop is not None else None
+        if index is None:
+            self._release(self.pending)
+        else:
+            self._release(self.pending[:index])
+            stopped = self.pending[index]
+            assert isinstance(stopped, canon.Motion)
+            moved = any(abs(position_mcs.get(a, v) - v) > 1e-6 for a, v in stopped.start_mcs.items())
+            if moved:
+                self._release([dataclasses.replace(
+                    stopped,
+                    end_mcs={a: position_mcs.get(a, v) for a, v in stopped.end_mcs.items()},
+                    end_wcs={a: position_wcs.get(a, v) for a, v in stopped.end_wcs.items()})])
+        self.pending.clear()
+
+    def _index_of(self, source: canon.Source | None) -> int | None:
+        """Index of the first pending motion of block ``source`` (None: not pending)."""
+        if source is None:
+            return None
+        for index, command in enumerate(self.pending):
+            if isinstance(command, canon.Motion) and command.source is source:
+                return index
+        return None
+
+    def _release(self, commands: list[canon.CanonCommand]) -> None:
+        for command in commands:
+            if self.keep:
+                self.result.commands.append(command)
+            if self.on_command is not None:
+                self.on_command(command)
 
 
 def interpret_only(

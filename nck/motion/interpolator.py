@@ -172,6 +172,7 @@ class PathInterpolator:
             self.la.pop_front()
             self._alarms.append(head.alarm)
             self.faulted = True
+            self.stop_source = head.source
             return False
         if isinstance(head, DwellItem):
             self.la.pop_front()
@@ -208,6 +209,7 @@ class PathInterpolator:
         self.cmd = self.servo.x_set.copy()
         self.run = None
         self.faulted = True
+        self.stop_source = source
         self.wait_cycles = 0
         self.exact_wait = None
         self.jog.runs.clear()

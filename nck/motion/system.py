@@ -70,6 +70,7 @@ class PlannedMotion(PathInterpolator):
         self.exact_wait: tuple[np.ndarray, np.ndarray] | None = None
         self.held = False
         self.faulted = False
+        self.stop_source: Source | None = None  # the block a motion alarm stopped (refused or tripped)
         self.hold_point: np.ndarray | None = None
         self.repos_feed: float | None = None
         self.repos_pending = False
@@ -286,6 +287,7 @@ class PlannedMotion(PathInterpolator):
         """RESET: brake, discard everything buffered, leave follow-up, stop the spindles."""
         self.held = False
         self.faulted = False
+        self.stop_source = None
         self.wait_cycles = 0
         self.exact_wait = None
         self.repos_pending = False
