@@ -44,6 +44,8 @@ ALARM_THREAD_LEAD_ZERO = 16720  # G33 without (or with zero) thread lead
 ALARM_DC_NOT_POSSIBLE = 16800  # DC programmed for an axis that is not a rotary axis
 ALARM_ACP_NOT_POSSIBLE = 16810  # ACP/ACN programmed for an axis that is not a rotary axis
 ALARM_MODULO_POSITION = 16830  # ACP/ACN target outside 0 … < 360°
+ALARM_FRAME_INSTRUCTION = 18311  # G58/G59 without MD24000 FRAME_ADD_COMPONENTS
+ALARM_FINE_NOT_CONFIGURED = 18312  # G58/G59 without a fine offset (MD18600 MM_FRAME_FINE_TRANS)
 ROTARY_MODES = ("DC", "ACP", "ACN")
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
 PATH_KINDS = ("G0", "G1", "G33") + ARC_KINDS
@@ -71,6 +73,8 @@ class PathBuilder:
             float(machine.md_value("MD21010", default=circles.CIRCLE_ERROR_FACTOR)),
         )
         self.mirror_toggle = bool(machine.md_value("MD10612", default=1))
+        self.frame_add_components = bool(machine.md_value("MD24000", default=0))
+        self.frame_fine_configured = bool(machine.md_value("MD18600", default=1))
         self.basic_metric = bool(machine.md_value("MD10240", default=1))
 
     # ================================================================ state
@@ -170,6 +174,11 @@ class PathBuilder:
     def frame_block(self, words: Any, modal: Any, geo: GeometryState) -> list[canon.Motion]:
         """Execute a G group 3 instruction; returns motions flushed ahead of it."""
         code = words.gcodes.get(3)
+        if code in ("G58", "G59"):  # 002 L28600-28606
+            if not self.frame_add_components:
+                raise NcAlarmError(ALARM_FRAME_INSTRUCTION, code)
+            if not self.frame_fine_configured:
+                raise NcAlarmError(ALARM_FINE_NOT_CONFIGURED, code)
         flushed = self.flush(modal)
         units = self.units(modal)
         values = {a: self.to_mm(a, v, modal, units) for a, (v, _mode) in words.axes.items()}

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import pytest
@@ -35,9 +36,13 @@ class Run:
         return dict(self.block(n)[-1].end_wcs)
 
 
-def run(text: str, data: NcData | None = None, machine: str = "mill3") -> Run:
-    """Interpret ``text`` to the end (alarms propagate)."""
-    interp = Interpreter(load_machine(machine), MemorySource({}), data or NcData())
+def run(text: str, data: NcData | None = None, machine: str = "mill3",
+        md: dict[str, object] | None = None) -> Run:
+    """Interpret ``text`` to the end (alarms propagate); ``md`` overrides machine data."""
+    config = load_machine(machine)
+    if md:
+        config = dataclasses.replace(config, md={**config.md, **md})
+    interp = Interpreter(config, MemorySource({}), data or NcData())
     interp.start_text("TEST.MPF", text)
     result = Run(interp)
     while not interp.finished:

@@ -7,16 +7,35 @@ import math
 
 import pytest
 
+from nck.errors import NcAlarmError
+
 from .helpers import approx, lines, run
 
 
 def test_g58_g59_bookkeeping_in_a_program() -> None:
-    # Digest K2 test 21: TRANS (10,10,10) -> ATRANS X5 Y5 -> G58 X20 -> G59 X10 Y10.
+    # Digest K2 test 21: TRANS (10,10,10) -> ATRANS X5 Y5 -> G58 X20 -> G59 X10 Y10
+    # (002 L28586-28598), with MD24000 FRAME_ADD_COMPONENTS set as G58/G59 require (002 L28600).
     r = run(lines("N10 TRANS X10 Y10 Z10", "N20 ATRANS X5 Y5", "N30 G0 X0 Y0 Z0",
-                  "N40 G58 X20", "N50 G0 X0 Y0 Z0", "N60 G59 X10 Y10", "N70 G0 X0 Y0 Z0", "N80 M30"))
+                  "N40 G58 X20", "N50 G0 X0 Y0 Z0", "N60 G59 X10 Y10", "N70 G0 X0 Y0 Z0", "N80 M30"),
+            md={"MD24000": True})
     assert r.end_mcs(30) == approx({"X": 15.0, "Y": 15.0, "Z": 10.0})
     assert r.end_mcs(50) == approx({"X": 25.0, "Y": 15.0, "Z": 10.0})
     assert r.end_mcs(70) == approx({"X": 30.0, "Y": 20.0, "Z": 10.0})
+
+
+@pytest.mark.parametrize("code", ["G58 X20", "G59 X10"])
+def test_g58_g59_without_md24000_raise_18311(code: str) -> None:
+    # 002 L28600-28603: G58/G59 only with MD24000 FRAME_ADD_COMPONENTS TRUE, else alarm 18311.
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 TRANS X10", f"N20 {code}", "N30 M30"), md={"MD24000": False})
+    assert info.value.number == 18311
+
+
+def test_g58_without_a_fine_offset_raises_18312() -> None:
+    # 002 L28604-28606: without a configured fine offset (MD18600 MM_FRAME_FINE_TRANS) alarm 18312.
+    with pytest.raises(NcAlarmError) as info:
+        run(lines("N10 TRANS X10", "N20 G58 X20", "N30 M30"), md={"MD24000": True, "MD18600": 0})
+    assert info.value.number == 18312
 
 
 def test_amirror_toggles_and_mirror_of_two_axes() -> None:
