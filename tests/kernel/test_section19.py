@@ -375,7 +375,9 @@ def test_17b_skip_levels_stay_effective_during_block_search() -> None:
 
 # 18 ------------------------------------------------------------------------
 def test_18_program_test_moves_the_display_not_the_machine() -> None:
-    nck = make_nck({"P": "N10 G1 X100 F6000\nN20 M3 S1000\nN30 M30"})
+    # 002 L18007-18009, L18030-18031: program test executes the program without axis or
+    # spindle setpoints, but with auxiliary function outputs.
+    nck = make_nck({"P": "N10 G1 X100 F6000\nN20 M3 S1000 M8\nN30 M30"})
     nck.submit(c.SelectMode("AUTO"))
     assert nck.submit(c.SetProgramControl("program_test", True)) == c.Accepted()
     nck.submit(c.SelectProgram("P"))
@@ -386,7 +388,7 @@ def test_18_program_test_moves_the_display_not_the_machine() -> None:
     assert x(nck) == pytest.approx(100.0)
     assert nck.status().axes[0].position_mcs == pytest.approx(100.0)
     assert nck.motion.positions_mcs()["X"] == 0.0  # the machine did not move
-    assert nck.status().channel.modal.aux.get("M") is None or True
+    assert nck.status().channel.modal.aux.get("M") == "8"  # M8 was output
     assert nck.status().channel.modal.spindle_state == "M3"  # aux functions still output
     assert nck.submit(c.SetProgramControl("program_test", False)) == c.Accepted()
     status = nck.status()
