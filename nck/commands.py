@@ -98,7 +98,7 @@ class SetProgramControl:
 
 @dataclass(frozen=True, slots=True)
 class SetOverride:
-    """Set an override switch: ``feed`` (0…120 %), ``rapid`` or ``spindle`` (50…120 %)."""
+    """Set an override: ``feed`` or ``spindle`` (0…200 %), ``rapid`` (0…100 %)."""
 
     which: str
     percent: float

@@ -68,7 +68,9 @@ class ControlSettings(DataWrites):
         return Accepted()
 
     def _set_override(self, command: cmd.SetOverride) -> SubmitResult:
-        limits = {"feed": (0.0, 120.0), "rapid": (0.0, 100.0), "spindle": (50.0, 120.0)}
+        # 002 L56312-56319: path feed and spindle 0 … 200 %, rapid traverse 0 … 100 %
+        # (the switches of the panel have fewer positions, see the keymap).
+        limits = {"feed": (0.0, 200.0), "rapid": (0.0, 100.0), "spindle": (0.0, 200.0)}
         if command.which not in limits:
             return Rejected(f"unknown override {command.which!r}")
         low, high = limits[command.which]
@@ -169,7 +171,8 @@ class ControlSettings(DataWrites):
         if spindle is not None:
             spindle(self._overrides["spindle"])
         feed = self._overrides["feed"]
-        rapid = feed if self._pc["rapid_override"] else self._overrides["rapid"]
+        # 002 L56369-56370: the feed switch acting as rapid override counts at most 100 %.
+        rapid = min(feed, 100.0) if self._pc["rapid_override"] else self._overrides["rapid"]
         for motion in (self.motion, self._test_motion):
             if motion is not None:
                 motion.set_overrides(feed, rapid)

@@ -41,7 +41,7 @@ class MotionSystem(Protocol):
         """Actual positions of every axis (MCS)."""
 
     def set_overrides(self, feed_percent: float, rapid_percent: float) -> None:
-        """Set the effective path feed override and rapid traverse override (0 … 120 %).
+        """Set the effective path feed override and rapid traverse override (0 … 200 %, 0 … 100 %).
 
         Applies on the fly to buffered and running segments; the feed override
         also scales JOG velocities. The kernel has already folded ROV into

@@ -64,7 +64,7 @@ class Spindle:
         self._update_setpoint()
 
     def set_override(self, percent: float) -> None:
-        """Spindle override (50 … 120 %)."""
+        """Spindle override (0 … 200 %)."""
         self.state.override_pct = max(float(percent), 0.0)
         self._update_setpoint()
 

@@ -109,7 +109,7 @@ def test_continuous_jog_moves_while_pressed_and_feed_override_scales_it() -> Non
     nck.tick(0.1)
     assert nck.positions_mcs()["Y"] == pytest.approx(-10.0, abs=0.05)  # 1000 mm/min * 0.6 s
     assert states(nck) == ("JOG", "reset", "aborted")
-    assert isinstance(nck.submit(c.SetOverride("feed", 150)), c.Rejected)
+    assert isinstance(nck.submit(c.SetOverride("feed", 250)), c.Rejected)  # 002 L56312: 0 … 200 %
 
 
 def test_jog_refused_in_auto() -> None:
