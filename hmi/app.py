@@ -46,7 +46,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.bridge import NckBridge
-from hmi.key_input import PanelTerminalDriver
+from hmi.key_input import PanelTerminalDriver, own_binding
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.program_lines import ProgramLines
@@ -234,6 +234,22 @@ class HmiApp(MachineControlPanel, App):
         self.switch_mode("machine")
         if self.freeze_gc_at_start:
             self.call_after_refresh(freeze_startup_objects)
+
+    async def on_event(self, event: events.Event) -> None:
+        """Run a key the focused widget binds itself in that widget's queue, in line with text.
+
+        Textual would let such a key (Up, Home, Backspace in an editor) bubble back up
+        to the app before its binding runs, so that characters typed behind it in the
+        same burst were inserted first (issue 18: ``AAA``, Up, ``BBB`` gave ``AAABBB``).
+        """
+        if isinstance(event, events.Key) and not event.is_forwarded:
+            focused = self.focused
+            binding = own_binding(self.screen, focused, event)
+            if binding is not None and focused is not None \
+                    and focused.call_later(focused.run_action, binding.action):
+                self.app_focus = True  # as Textual does on a key
+                return
+        await super().on_event(event)
 
     def on_cursor_position(self, event: events.CursorPosition) -> None:
         """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3).

@@ -112,3 +112,56 @@ async def test_repeated_single_block_types_nothing_into_the_editor(fake: FakeNck
         assert editor.text == "N1X"
         await pilot.press("alt+k", "alt+k", "alt+k", "alt+k")  # the same four keys via Pilot
         assert editor.text == "N1X"
+
+
+BURST = [*"AAA", "up", *"BBB", "home", *"CCC"]
+"""Issue 18: text, a cursor key, text, Home, text, arriving at once (paste, a fast typist)."""
+
+
+async def post_burst(app: HmiApp, pilot, keys: list[str]) -> None:
+    """Post keys to the app all at once, as the driver does with one read, then settle."""
+    for name in keys:
+        key = events.Key(name, name if len(name) == 1 else None)
+        key.set_sender(app)
+        app.post_message(key)
+    await pilot.pause()
+
+
+async def test_cursor_keys_in_a_burst_apply_in_order_in_mda(fake: FakeNck,
+                                                            fake_app: HmiApp) -> None:
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d")
+        await pilot.pause()
+        await pilot.press(*"N1", "enter", *"N2")
+        await post_burst(fake_app, pilot, BURST)
+        # AAA at the end of N2; Up to the end of N1 (column 2); BBB; Home; CCC at column 0
+        assert fake.mda_text == "CCCN1BBB\nN2AAA"
+        await pilot.press("down", "end", "backspace", "backspace", "home", "delete", "X")
+        assert fake.mda_text == "CCCN1BBB\nX2A"
+
+
+async def test_cursor_keys_in_a_burst_apply_in_order_in_the_program_editor(tmp_path) -> None:
+    from tests.program_screens.conftest import make_program_app, nc_files
+
+    root = tmp_path / "nc"
+    nc_files(root)
+    (root / "MPF" / "BURST.MPF").write_text("N10 G0 X0\nN20 M30\n")
+    app = make_program_app(root)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "enter")
+        await pilot.pause()
+        editor = app.screen.editor
+        await pilot.press("ctrl+end")
+        await post_burst(app, pilot, BURST)
+        # the last line is empty: AAA there; Up to line 2 column 3; BBB; Home; CCC
+        assert editor.text == "N10 G0 X0\nCCCN20BBB M30\nAAA"
+        await pilot.press(*BURST)  # the same keys through Pilot, without pauses
+        # from line 2 column 3: AAA; Up to line 1 column 6; BBB; Home; CCC
+        assert editor.text == "CCCN10 G0BBB X0\nCCCAAAN20BBB M30\nAAA"
+        await pilot.press("f2")  # the search field, an Input: Backspace in a burst
+        await pilot.pause()
+        find = app.screen.query_one("#prog-find")
+        assert app.focused is find
+        await post_burst(app, pilot, [*"G12", "backspace", "backspace", "3", "left", "left",
+                                      "delete", "N"])
+        assert find.value == "N3"
