@@ -52,8 +52,12 @@ def _build_parser() -> argparse.ArgumentParser:
 def _common_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--machine", help="machine name or TOML file")
     parser.add_argument("--dialect", default="siemens", choices=["siemens", "iso-m", "iso-t"])
-    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
-    parser.add_argument("--tools", help="tool table (TOML, see nck/cli_tools.py)")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="before start: write an R parameter (R1=5), a tool edge ($TC_DP6[1,1]=4), "
+                             "a work offset ($P_UIFR[1,X,TR]=100), machine or setting data "
+                             "(SD42100=2000); protection levels and limits apply as on the panel")
+    parser.add_argument("--tools", help="tool table (TOML, see nck/cli_tools.py); written like --set")
+    parser.add_argument("--password", help="password for this call's --set/--tools writes (levels 1..3)")
     parser.add_argument("--data-dir", help="NC data directory (retained data, NC file system)")
     parser.add_argument("--ephemeral", action="store_true",
                         help="work on a temporary copy of the data directory")
@@ -171,14 +175,11 @@ class _Environment:
                 print(format_alarm(alarm), file=sys.stderr)
             self.machine = self.session.active_machine()
             self.data = self.session.ncdata
-        if getattr(options, "tools", None):
-            from nck.cli_tools import ToolFileError, load_tool_table
-
-            try:
-                load_tool_table(options.tools, self.data)
-            except ToolFileError as exc:
-                raise CliError(str(exc)) from None
-        _apply_settings(options.set, self.machine, self.data)
+        try:
+            _apply_writes(options, self)
+        except CliError:
+            self.finish(save=False)
+            raise
 
     def finish(self, save: bool = True) -> None:
         """Write the retained data back (not for ephemeral copies); clean up."""
@@ -196,71 +197,62 @@ class _Environment:
             self._lock = None
 
 
-def _apply_settings(settings: list[str], machine: MachineConfig, data: NcData) -> None:
-    """``--set NAME=VALUE``: R parameters, tool edges ($TC_DP), machine data."""
-    from nck.interp.interpreter import Interpreter
-    from nck.interp.sources import MemorySource
-    for setting in settings:
+def _requested_writes(options: argparse.Namespace) -> list[tuple[str, str, object]]:
+    """``(door, name, value)`` of every ``--tools`` and ``--set`` write, in order."""
+    writes: list[tuple[str, str, object]] = []
+    if getattr(options, "tools", None):
+        from nck.cli_tools import ToolFileError, read_tool_table
+
+        try:
+            edges = read_tool_table(options.tools)
+        except ToolFileError as exc:
+            raise CliError(str(exc)) from None
+        writes += [("--tools", f"$TC_DP{param}[{tool},{edge}]", value)
+                   for (tool, edge), params in edges.items() for param, value in sorted(params.items())]
+    for setting in options.set:
         if "=" not in setting:
             raise CliError(f"--set needs NAME=VALUE, got '{setting}'")
         name, value = (part.strip() for part in setting.split("=", 1))
-        upper = name.upper()
-        if upper.startswith(("$M", "$S", "MD", "SD")):
-            _set_machine_data(machine, data, upper, value)
-            continue
-        interp = Interpreter(machine, MemorySource(), data)
-        interp.start_text("--set", f"{name}={value}")
-        try:
-            interp.step()
-        except NcAlarmError as alarm:
-            raise CliError(f"--set {setting}: {alarm_message(alarm)}") from None
+        writes.append(("--set", name, value))
+    return writes
 
 
-def _set_machine_data(machine: MachineConfig, data: NcData, name: str, value_text: str) -> None:
-    """``--set MD32000[X]=…`` / ``$MA_MAX_AX_VELO[X]=…`` / ``SD42100=…`` / ``MD20150[5]=…``."""
-    from nck.interp.sysvars import md_number
+def _apply_writes(options: argparse.Namespace, env: "_Environment") -> None:
+    """Write ``--tools`` and ``--set`` through the one write path (level and limit checks).
 
-    index = None
-    if name.endswith("]") and "[" in name:
-        name, index = name[:-1].split("[", 1)
-        index = index.strip()
-    key = None
-    try:
-        from nck.machine_data import catalog
+    The level is the one stored in the data directory (fresh NC data: keyswitch
+    position 0, level 7) or that of ``--password`` for this call, as for ``nck md``.
+    The first refused write stops the command before anything is saved.
+    """
+    from nck.access import AccessControl, AccessDenied, AccessState, level_name
+    from nck.machine_data import DataError, MachineDataStore
+    from nck.writes import DataWriter, WriteRefused
 
-        definition = catalog().get(name)
-        if definition is not None:
-            key = definition.key
-    except Exception:  # noqa: BLE001 - catalogue unavailable: fall back to the small table
-        key = None
-    if key is None and name.startswith("$"):
-        number = md_number(name.lstrip("$").split("_", 1)[1] if "_" in name else name)
-        if number is not None:
-            key = ("SD" if name.lstrip("$").startswith("S") else "MD") + str(number)
-    if key is None and name[:2] in ("MD", "SD") and name[2:].isdigit():
-        key = name
-    if key is None:
-        raise CliError(f"--set: unknown machine or setting data '{name}'")
-    try:
-        value: Any = float(value_text)
-        if value.is_integer() and "." not in value_text:
-            value = int(value)
-    except ValueError:
-        value = value_text
-    store: dict[str, Any] = data.setting_data if key.startswith("SD") else machine.md
-    current = store.get(key)
-    if index is None:
-        store[key] = value
-    elif index.isdigit():
-        values = list(current) if isinstance(current, list) else []
-        position = int(index)
-        values += [0] * (position + 1 - len(values))
-        values[position] = value
-        store[key] = values
+    writes = _requested_writes(options)
+    if not writes:
+        return
+    if env.session is not None:
+        store, access = env.session.md, env.session.access
     else:
-        table = dict(current) if isinstance(current, dict) else {}
-        table[index] = value
-        store[key] = table
+        store = MachineDataStore(env.machine, {}, env.data.setting_data)
+        access = AccessControl(AccessState(), user_class=store.user_class)
+    level, how = access.level, level_name(access.level)
+    if options.password is not None:
+        granted = access.check_password(options.password)
+        if granted is None:
+            raise CliError("password not accepted (nothing was written)")
+        level, how = granted, f"level {granted} (password)"
+    writer = DataWriter(env.data, store, access, level=level)
+    for door, name, value in writes:
+        try:
+            writer.write(name, value)
+        except AccessDenied as exc:
+            raise CliError(f"{door} {name}: refused: {exc.what} needs protection level "
+                           f"{exc.needed_level}; the current level is {how} (--password raises it)") from None
+        except (WriteRefused, DataError) as exc:
+            raise CliError(f"{door} {name}={value}: refused: {exc}") from None
+    store.activate("power_on")  # the run starts after the writes: every written MD is in effect
+    env.machine = store.active_machine()
 
 
 # ----------------------------------------------------------------------------- check

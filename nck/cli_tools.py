@@ -1,4 +1,4 @@
-"""``nck run --tools FILE``: a tool table in TOML, loaded into the NC data.
+"""``nck run --tools FILE``: a tool table in TOML, written into the NC data like ``--set``.
 
 Format (one ``[[edge]]`` table per cutting edge)::
 
@@ -19,7 +19,6 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from nck.ncdata import NcData, ToolEdge
 
 NAMED_PARAMS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 5, "radius": 6}
 MAX_PARAM = 25
@@ -29,8 +28,9 @@ class ToolFileError(Exception):
     """The tool table could not be used; ``str()`` says why."""
 
 
-def load_tool_table(path: Path | str, data: NcData) -> int:
-    """Read the tool table into ``data.tools``; returns the number of edges loaded."""
+def read_tool_table(path: Path | str) -> dict[tuple[int, int], dict[int, float]]:
+    """Read the tool table: ``{(t, d): {param: value}}`` (the values are written like
+    ``--set $TC_DP<param>[t,d]=value``, through the protection and limit checks)."""
     path = Path(path)
     try:
         table = tomllib.loads(path.read_text(encoding="utf-8"))
@@ -41,7 +41,7 @@ def load_tool_table(path: Path | str, data: NcData) -> int:
     edges = table.get("edge", [])
     if not isinstance(edges, list):
         raise ToolFileError(f"tool table '{path}': [[edge]] tables expected")
-    loaded: dict[tuple[int, int], ToolEdge] = {}
+    loaded: dict[tuple[int, int], dict[int, float]] = {}
     for number, entry in enumerate(edges, start=1):
         where = f"tool table '{path}', edge {number}"
         if not isinstance(entry, dict):
@@ -66,9 +66,8 @@ def load_tool_table(path: Path | str, data: NcData) -> int:
                 params[NAMED_PARAMS[key]] = _number(value, where, key)
             else:
                 raise ToolFileError(f"{where}: unknown key '{key}'")
-        loaded[(tool, edge)] = ToolEdge(params=params)
-    data.tools.update(loaded)
-    return len(loaded)
+        loaded[(tool, edge)] = params
+    return loaded
 
 
 def _number(value: object, where: str, key: str) -> float:

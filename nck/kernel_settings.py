@@ -91,12 +91,6 @@ class ControlSettings(DataWrites):
             return handled
         name = command.name.strip().upper()
         try:
-            if name.startswith("R") and name[1:].isdigit():
-                index = int(name[1:])
-                if index >= len(self.data.r):
-                    return Rejected(f"R parameter {index} does not exist")
-                self.data.r[index] = float(command.value)  # type: ignore[arg-type]
-                return Accepted()
             parts = {"$AC_TOTAL_PARTS": "total", "$AC_ACTUAL_PARTS": "actual",
                      "$AC_SPECIAL_PARTS": "special", "$AC_REQUIRED_PARTS": "required"}
             if name in parts:

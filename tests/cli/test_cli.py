@@ -70,7 +70,8 @@ def test_timeout_exit_3(tmp_path: Path) -> None:
 
 def test_set_r_parameter_and_tool_edge(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     prog = write(tmp_path, "P.MPF", "G0 X=R1\nR2=$TC_DP6[1,1]\nM30\n")
-    assert main(["run", str(prog), "--json", "--set", "R1=5", "--set", "$TC_DP6[1,1]=4"]) == 0
+    assert main(["run", str(prog), "--json", "--set", "R1=5", "--set", "$TC_DP6[1,1]=4",
+                 "--password", "CUSTOMER"]) == 0
     state = json.loads(capsys.readouterr().out)
     assert state["position"]["wcs"]["X"] == 5.0
     assert state["r"] == {"1": 5.0, "2": 4.0}
@@ -78,7 +79,8 @@ def test_set_r_parameter_and_tool_edge(tmp_path: Path, capsys: pytest.CaptureFix
 
 def test_set_machine_data(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     prog = write(tmp_path, "P.MPF", "R1=$MC_MM_NUM_R_PARAM\nM30\n")
-    assert main(["run", str(prog), "--json", "--set", "$MC_MM_NUM_R_PARAM=200"]) == 0
+    assert main(["run", str(prog), "--json", "--set", "$MC_MM_NUM_R_PARAM=200",
+                 "--password", "SUNRISE"]) == 0
     assert json.loads(capsys.readouterr().out)["r"] == {"1": 200}
 
 
@@ -126,7 +128,7 @@ def test_python_dash_m_nck_version() -> None:
 def test_tool_table_is_loaded(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     tools = write(tmp_path, "tools.toml", "[[edge]]\nt = 3\nd = 2\ntype = 120\nlength1 = 80\nradius = 5\ndp = { 12 = 0.25 }\n")
     prog = write(tmp_path, "P.MPF", "R1=$TC_DP3[3,2]+$TC_DP12[3,2] R2=$TC_DP6[3,2]\nM30\n")
-    assert main(["run", str(prog), "--json", "--tools", str(tools)]) == 0
+    assert main(["run", str(prog), "--json", "--tools", str(tools), "--password", "CUSTOMER"]) == 0
     assert json.loads(capsys.readouterr().out)["r"] == {"1": 80.25, "2": 5.0}
     bad = write(tmp_path, "bad.toml", "[[edge]]\nt = 0\n")
     assert main(["run", str(prog), "--tools", str(bad)]) == 2
@@ -158,9 +160,10 @@ def test_subprograms_found_in_the_nc_file_system(tmp_path: Path, capsys: pytest.
 
 def test_set_setting_and_axis_machine_data(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     prog = write(tmp_path, "SD.MPF", "R1=$SC_DRY_RUN_FEED R2=$MA_MAX_AX_VELO[Y]\nM30\n")
-    assert main(["run", str(prog), "--json", "--set", "SD42100=1234", "--set", "$MA_MAX_AX_VELO[Y]=5000"]) == 0
+    assert main(["run", str(prog), "--json", "--set", "SD42100=1234", "--set", "$MA_MAX_AX_VELO[Y]=5000",
+                 "--password", "SUNRISE"]) == 0
     assert json.loads(capsys.readouterr().out)["r"] == {"1": 1234.0, "2": 5000.0}
-    assert main(["run", str(prog), "--set", "$MC_NO_SUCH_DATUM=1"]) == 2
+    assert main(["run", str(prog), "--set", "$MC_NO_SUCH_DATUM=1", "--password", "SUNRISE"]) == 2
 
 
 def test_check_finds_jumps_without_destination_on_paths_not_taken(
@@ -189,7 +192,7 @@ def test_run_reads_the_user_data_dir_but_never_writes_it(tmp_path, monkeypatch) 
         return subprocess.run([sys.executable, "-m", "nck", "run", str(program), "--json", *extra],
                               capture_output=True, text=True, check=False)
 
-    setup = run("--data-dir", str(user_dir), "--set", "R5=7")  # explicit: R5 = 8 is saved
+    setup = run("--data-dir", str(user_dir), "--set", "R5=7", "--password", "CUSTOMER")  # explicit: R5 = 8 is saved
     assert setup.returncode == 0, setup.stderr
     for _ in range(2):
         result = run()

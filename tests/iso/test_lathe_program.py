@@ -56,7 +56,7 @@ def segments(tmp_path_factory) -> list[dict]:
     tools.write_text(TOOLS)
     out = folder / "segments.jsonl"
     code = main(["run", str(PROGRAM), "--machine", "lathe2", "--dialect", "iso-t", "--ephemeral",
-                 "--data-dir", str(folder / "data"), "--tools", str(tools),
+                 "--data-dir", str(folder / "data"), "--tools", str(tools), "--password", "CUSTOMER",
                  "--segments", str(out)])
     assert code == 0
     return [json.loads(line) for line in out.read_text().splitlines()]

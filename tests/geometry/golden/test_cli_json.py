@@ -25,7 +25,7 @@ def test_json_final_state_and_segments(tmp_path: Path, capsys: pytest.CaptureFix
         "run", str(program), "--json", "--ephemeral", "--data-dir", str(tmp_path / "data"),
         "--segments", str(segments),
         "--set", "$TC_DP1[1,1]=120", "--set", "$TC_DP3[1,1]=100",
-        "--set", "$P_UIFR[1,X,TR]=100", "--set", "$P_UIFR[1,Y,TR]=50",
+        "--set", "$P_UIFR[1,X,TR]=100", "--set", "$P_UIFR[1,Y,TR]=50", "--password", "CUSTOMER",
     ])
     out = capsys.readouterr().out
     assert code == 0

@@ -1,0 +1,282 @@
+"""The one write path for NC data: one protection and validation rule, whatever the door.
+
+The panel (``WriteData`` through the kernel), ``nck md``, ``nck run --set`` and
+``--tools`` and part programs all write retained NC data through
+:meth:`DataWriter.write`: the access level is checked against the datum's
+protection level (:func:`nck.access.action_for_write`, the MD catalogue's
+``protect`` and the ``USER_CLASS`` data), then the value is converted to the
+datum's type and checked against its limits. A refused write changes nothing.
+
+Names:
+
+* ``R<n>`` / ``R[<n>]`` — R parameter;
+* ``$TC_DP<n>[t,d]`` — tool edge parameter (writing creates the edge);
+* ``$P_UIFR[n,axis,comp]`` — settable frame n (1…4 = G54…G57, 5… = G505…),
+  ``$P_UBFR[axis,comp]`` — base frame; ``comp`` TR, FI, RT, SC or MI;
+* ``GUD:<name>`` / ``GUD:<name>[i]`` — a global user variable that exists (its type is kept);
+* ``MD…`` / ``$M…`` / ``SD…`` / ``$S…`` — machine and setting data
+  (:class:`nck.machine_data.MachineDataStore`; activation po/re/cf/so).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from nck.access import AccessControl, AccessDenied, Action, action_for_write, action_rules, required_level
+from nck.machine_data import DataError, MachineDataStore, WriteResult
+from nck.ncdata import NcData, ToolEdge, WorkOffset
+
+TOOL_PARAM_COUNT = 25
+TOOL_NUMBER_MAX = 99_999_999
+TOOL_EDGE_MAX = 12
+TOOL_VALUE_LIMIT_MM = 100_000.0
+FRAME_TRANSLATION_LIMIT_MM = 100_000.0
+FRAME_COMPONENTS = ("TR", "FI", "RT", "SC", "MI")
+_TC_DP = re.compile(r"^\$TC_DP(\d+)\[\s*(\d+)\s*,\s*(\d+)\s*\]$")
+_UIFR = re.compile(r"^\$P_UIFR\[\s*(\d+)\s*,\s*([A-Z][A-Z0-9]*)\s*,\s*([A-Z]{2})\s*\]$")
+_UBFR = re.compile(r"^\$P_UBFR\[\s*([A-Z][A-Z0-9]*)\s*,\s*([A-Z]{2})\s*\]$")
+_GUD = re.compile(r"^GUD:([A-Z_][A-Z0-9_]*)(?:\[\s*(\d+)\s*\])?$")
+_R = re.compile(r"^R(?:(\d+)|\[\s*(\d+)\s*\])$")
+
+
+class WriteRefused(Exception):
+    """The value does not fit the datum (type, limits) or the datum does not exist; nothing changed."""
+
+
+def settable_frame_name(index: int) -> str:
+    """The frame name of ``$P_UIFR[index]``: 1…4 → G54…G57, 5…99 → G505…G599."""
+    if 1 <= index <= 4:
+        return f"G{53 + index}"
+    if 5 <= index <= 99:
+        return f"G{500 + index}"
+    raise WriteRefused(f"settable frame index {index} does not exist (1 … 99)")
+
+
+def settable_frame_index(name: str) -> int:
+    """Inverse of :func:`settable_frame_name` (``G54`` → 1, ``G505`` → 5)."""
+    number = int(name.upper().lstrip("G"))
+    return number - 53 if 54 <= number <= 57 else number - 500
+
+
+def finite_number(value: Any, what: str) -> float:
+    """``value`` (a number or its text, ``EX`` exponents allowed) as a finite float, else WriteRefused."""
+    if isinstance(value, bool):
+        raise WriteRefused(f"{what}: a number is needed")
+    if isinstance(value, str):
+        text = value.strip().upper().replace("EX", "E")
+        if not re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)(E[+-]?\d+)?", text):
+            raise WriteRefused(f"{what}: '{value.strip()}' is not a number")
+        value = text
+    elif not isinstance(value, (int, float)):
+        raise WriteRefused(f"{what}: a number is needed")
+    number = float(value)
+    if not math.isfinite(number):
+        raise WriteRefused(f"{what}: a finite number is needed")
+    return number
+
+
+@dataclass(frozen=True, slots=True)
+class Written:
+    """What a successful write did; ``md`` is set for machine and setting data."""
+
+    name: str
+    md: WriteResult | None = None
+
+
+class DataWriter:
+    """Writes NC data by name after the protection and value checks.
+
+    Args:
+        data: the NC data written into.
+        store: the machine/setting data store of the same NC data.
+        access: the access control whose level applies; None = a commissioning bench
+            without protection (a bare kernel in unit tests).
+        level: check against this level instead of the access control's current one
+            (``--password`` for one command).
+    """
+
+    def __init__(self, data: NcData, store: MachineDataStore, access: AccessControl | None,
+                 level: int | None = None) -> None:
+        self.data = data
+        self.store = store
+        self.access = access
+        self._level = level
+
+    @property
+    def level(self) -> int:
+        """The level writes are checked against (0 without access control)."""
+        if self._level is not None:
+            return self._level
+        return self.access.level if self.access is not None else 0
+
+    def handles(self, name: str) -> bool:
+        """True when ``name`` denotes NC data this path writes."""
+        upper = name.strip().upper()
+        return bool(upper.startswith(("MD", "SD", "$M", "$S")) or _R.match(upper) or _TC_DP.match(upper)
+                    or _UIFR.match(upper) or _UBFR.match(upper) or _GUD.match(upper))
+
+    def required_level(self, name: str) -> int:
+        """The protection level writing ``name`` needs (7 for names without protection)."""
+        upper = name.strip().upper()
+        if upper.startswith(("MD", "SD", "$M", "$S")):
+            try:
+                return self.store.required_write_level(upper)
+            except DataError:
+                return 7
+        action = self._action(upper)
+        return 7 if action is None else self._needed(action)
+
+    def write(self, name: str, value: Any) -> Written:
+        """Write ``value`` into the datum ``name``.
+
+        Raises AccessDenied (level too low), WriteRefused (type, limits, unknown datum)
+        or a DataError of the MD store; nothing changes then.
+        """
+        upper = name.strip().upper()
+        if upper.startswith(("MD", "SD", "$M", "$S")):
+            return Written(upper, self.store.write(upper, value, level=self.level))
+        action = self._action(upper)
+        if action is not None:
+            self._require(action, f"{action_rules()[action].title} ({upper})")
+        match = _R.match(upper)
+        if match:
+            return self._write_r(int(match[1] or match[2]), value, upper)
+        match = _TC_DP.match(upper)
+        if match:
+            return self._write_tool(int(match[2]), int(match[3]), int(match[1]), value, upper)
+        match = _UIFR.match(upper)
+        if match:
+            frame = settable_frame_name(int(match[1]))
+            return self._write_frame(self.data.settable_frame(frame), match[2], match[3], value, upper)
+        match = _UBFR.match(upper)
+        if match:
+            return self._write_frame(self.data.base_frame, match[1], match[2], value, upper)
+        match = _GUD.match(upper)
+        if match:
+            return self._write_gud(match[1], None if match[2] is None else int(match[2]), value, upper)
+        raise WriteRefused(f"{name.strip()} cannot be written here")
+
+    # ---------------------------------------------------------------- checks
+    @staticmethod
+    def _action(upper: str) -> Action | None:
+        if upper.startswith("$P_UBFR"):
+            return Action.WRITE_WORK_OFFSET
+        if upper.startswith("GUD:"):
+            return Action.WRITE_USER_DATA
+        return action_for_write(upper)
+
+    def _needed(self, action: Action) -> int:
+        if self.access is not None:
+            return self.access.required(action)
+        return required_level(action, self.store.user_class)
+
+    def _require(self, action: Action, what: str) -> None:
+        if self.access is None and self._level is None:
+            return  # a commissioning bench: no protection
+        needed = self._needed(action)
+        if self.level > needed:
+            raise AccessDenied(what, needed, self.level)
+
+    # ---------------------------------------------------------------- writes
+    def _write_r(self, index: int, value: Any, name: str) -> Written:
+        r = self.data.r
+        if index >= len(r):
+            raise WriteRefused(f"R parameter {index} does not exist (R0 … R{len(r) - 1})")
+        r[index] = finite_number(value, name)
+        return Written(name)
+
+    def _write_tool(self, tool: int, edge: int, param: int, value: Any, name: str) -> Written:
+        if not 1 <= param <= TOOL_PARAM_COUNT:
+            raise WriteRefused(f"$TC_DP{param} does not exist (1 … {TOOL_PARAM_COUNT})")
+        if not 1 <= tool <= TOOL_NUMBER_MAX:
+            raise WriteRefused(f"tool number {tool} outside 1 … {TOOL_NUMBER_MAX}")
+        if not 1 <= edge <= TOOL_EDGE_MAX:
+            raise WriteRefused(f"cutting edge D{edge} outside 1 … {TOOL_EDGE_MAX}")
+        number = finite_number(value, name)
+        if param in (1, 2) and not number.is_integer():
+            raise WriteRefused(f"$TC_DP{param} ({'tool type' if param == 1 else 'edge position'}) "
+                               "is a whole number")
+        if param == 1 and not 0 <= number <= 999:
+            raise WriteRefused("tool type outside 0 … 999")
+        if param == 2 and not 0 <= number <= 9:
+            raise WriteRefused("cutting edge position outside 0 … 9")
+        if abs(number) > TOOL_VALUE_LIMIT_MM:
+            raise WriteRefused(f"$TC_DP{param} outside ±{TOOL_VALUE_LIMIT_MM:g}")
+        tools = self.data.tools
+        edge_data = tools.get((tool, edge))
+        if edge_data is None:
+            edge_data = ToolEdge()
+            if edge > 1 and (tool, 1) in tools:
+                edge_data.params[1] = tools[(tool, 1)].get(1)  # a new edge of a tool keeps its type
+            tools[(tool, edge)] = edge_data
+        edge_data.params[param] = number
+        return Written(name)
+
+    def _write_frame(self, offset: WorkOffset, axis: str, comp: str, value: Any, name: str) -> Written:
+        if axis not in [a for a in self.store.axes if a not in self.store.machine.spindles]:
+            raise WriteRefused(f"the machine has no axis {axis}")
+        if comp not in FRAME_COMPONENTS:
+            raise WriteRefused(f"frame component {comp} does not exist (TR FI RT SC MI)")
+        number = finite_number(value, f"{axis} {comp}")
+        if comp in ("TR", "FI") and abs(number) > FRAME_TRANSLATION_LIMIT_MM:
+            raise WriteRefused(f"translation outside ±{FRAME_TRANSLATION_LIMIT_MM:g} mm")
+        if comp == "RT" and not -360.0 <= number <= 360.0:
+            raise WriteRefused("rotation outside -360 … 360 degrees")
+        if comp == "SC" and (number <= 0.0 or number > 1000.0):
+            raise WriteRefused("scale factor outside 0 … 1000 (0 not allowed)")
+        if comp == "MI" and number not in (0.0, 1.0):
+            raise WriteRefused("mirror is 0 or 1")
+        if comp == "FI":
+            self._require(Action.WRITE_FINE_OFFSET, f"{action_rules()[Action.WRITE_FINE_OFFSET].title} ({name})")
+        if comp == "MI":
+            offset.mirror[axis] = bool(number)
+        else:
+            {"TR": offset.trans, "FI": offset.fine, "RT": offset.rot, "SC": offset.scale}[comp][axis] = number
+        return Written(name)
+
+    def _write_gud(self, name: str, index: int | None, value: Any, full: str) -> Written:
+        gud = self.data.gud
+        if name not in gud:
+            raise WriteRefused(f"user variable {name} is not defined")
+        current = gud[name]
+        if isinstance(current, list):
+            if index is None or not 0 <= index < len(current):
+                raise WriteRefused(f"{name} is an array of {len(current)}: name the element")
+            items = list(current)
+            items[index] = _like(items[index], value, name)
+            gud[name] = items
+        else:
+            if index is not None:
+                raise WriteRefused(f"{name} is not an array")
+            gud[name] = _like(current, value, name)
+        return Written(full)
+
+
+def _like(current: Any, value: Any, name: str) -> Any:
+    """``value`` converted to the type of ``current`` (a GUD keeps its type)."""
+    if isinstance(current, bool):
+        if isinstance(value, str):
+            text = value.strip().upper()
+            if text in ("TRUE", "1"):
+                return True
+            if text in ("FALSE", "0"):
+                return False
+            raise WriteRefused(f"{name} is BOOL: TRUE or FALSE")
+        return bool(value)
+    if isinstance(current, int):
+        number = finite_number(value, name)
+        if not number.is_integer():
+            raise WriteRefused(f"{name} is INT: a whole number is needed")
+        return int(number)
+    if isinstance(current, float):
+        return finite_number(value, name)
+    if isinstance(current, str):
+        return str(value)
+    raise WriteRefused(f"{name} cannot be written here")
+
+
+__all__ = ["DataWriter", "WriteRefused", "Written", "finite_number", "settable_frame_index",
+           "settable_frame_name"]
