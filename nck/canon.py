@@ -40,6 +40,10 @@ class Motion:
         turns: extra full turns of a helix (``TURN=``).
         feed: the programmed F value in force, in its own units (for display/segments).
         feed_mm_min: path feed converted to mm/min (``None`` for rapid traverse).
+        feed_mm_rev: revolutional feed (G95/G96/G97) or thread lead (G33) in mm per
+            revolution of the master spindle: the motion takes the path feed from the
+            spindle's speed when the block runs (002 L55411-55420); ``feed_mm_min`` is
+            then the value at the programmed speed (estimates). None otherwise.
         exact_stop: True if this block ends with exact stop (G60 modal or G9).
         exact_stop_window: ``G601`` fine or ``G602`` coarse.
         lead_mm: thread lead for G33 (mm per spindle revolution).
@@ -67,6 +71,7 @@ class Motion:
     turns: int = 0
     feed: float | None = None
     feed_mm_min: float | None = None
+    feed_mm_rev: float | None = None
     exact_stop: bool = False
     exact_stop_window: str = "G601"
     lead_mm: float | None = None

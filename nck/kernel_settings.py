@@ -152,7 +152,7 @@ class ControlSettings(DataWrites):
         base = mode % 10
         programmed = motion.feed_mm_min
         feed = {0: max(programmed, dry), 1: min(programmed, dry)}.get(base, dry)
-        return replace(motion, feed_mm_min=feed)
+        return replace(motion, feed_mm_min=feed, feed_mm_rev=None)  # the dry run feed is per minute
 
     def _setting(self, name: str, default: object) -> Any:
         value = self.data.setting_data.get(name)

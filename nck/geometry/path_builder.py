@@ -452,6 +452,7 @@ class PathBuilder:
             end_wcs=dict(modal.position_wcs), end_mcs=end_mcs, start_mcs=start_mcs,
             feed=feed.get("feed") if kind != "G0" else None,
             feed_mm_min=self._feed_value(feed, length) if kind != "G0" else None,
+            feed_mm_rev=feed.get("feed_mm_rev") if kind != "G0" else None,
             exact_stop=True, exact_stop_window=modal.gcodes.get(12, "G601"),
             gcodes=dict(modal.gcodes),
         )
@@ -511,8 +512,11 @@ class PathBuilder:
         feed = context["feed"]
         rapid = kind == "G0"
         feed_mm_min = None if rapid else self._feed_value(feed, length)
-        if context["lead"] is not None and feed.get("per_rev_rpm"):
-            feed_mm_min = context["lead"] * float(feed["per_rev_rpm"])
+        feed_mm_rev = None if rapid else feed.get("feed_mm_rev")
+        if context["lead"] is not None:
+            feed_mm_rev = context["lead"]
+            if feed.get("per_rev_rpm"):
+                feed_mm_min = context["lead"] * float(feed["per_rev_rpm"])
         return canon.Motion(
             kind=kind,
             source=context["source"],
@@ -525,6 +529,7 @@ class PathBuilder:
             turns=turns,
             feed=None if rapid else feed.get("feed"),
             feed_mm_min=feed_mm_min,
+            feed_mm_rev=feed_mm_rev,
             exact_stop=context["exact"],
             exact_stop_window=context["window"],
             lead_mm=context["lead"],

@@ -65,7 +65,10 @@ def limit_feed(motion: canon.Motion, distance_mm: float, machine: Any) -> canon.
     limit_mm_min = distance_mm / ipo_cycle_s(machine) * 60.0
     if motion.feed_mm_min <= limit_mm_min:
         return motion
-    return dataclasses.replace(motion, feed_mm_min=limit_mm_min)
+    per_rev = motion.feed_mm_rev
+    if per_rev is not None:
+        per_rev *= limit_mm_min / motion.feed_mm_min  # the same share of the spindle's speed
+    return dataclasses.replace(motion, feed_mm_min=limit_mm_min, feed_mm_rev=per_rev)
 
 
 def criterion_mm(context: dict[str, Any], geo: Any) -> float:

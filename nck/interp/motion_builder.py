@@ -228,7 +228,7 @@ class MotionBuilder:
         if kind == "G33":
             # Feed = spindle speed x lead; a stopped spindle means the axes wait (no alarm).
             return {"feed": modal.feed or None, "feed_mm_min": 0.0, "inverse_time": False,
-                    "per_rev_rpm": _turning_rpm(modal)}
+                    "per_rev_rpm": _turning_rpm(modal), "feed_mm_rev": None}
         if modal.feed <= 0:
             raise NcAlarmError(ALARM_NO_FEED)
         feed_type = modal.gcodes.get(15, "G94")
@@ -238,7 +238,7 @@ class MotionBuilder:
         if feed_type in FEED_TYPES_PER_REV or feed_type in ("G952", "G962", "G972"):
             # Revolutional feed follows the master spindle; while it stands the path waits (V1).
             return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm * _turning_rpm(modal),
-                    "inverse_time": False}
+                    "inverse_time": False, "feed_mm_rev": modal.feed * units.feed_mm}
         return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm, "inverse_time": False}
 
     # ------------------------------------------------------------------ tool

@@ -32,6 +32,7 @@ class PathInterpolator:
     run: PathRun | None
     servo: Any
     jog: Any
+    _dwell_s: Any
 
     def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
         """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.
@@ -176,7 +177,8 @@ class PathInterpolator:
             return False
         if isinstance(head, DwellItem):
             self.la.pop_front()
-            self.wait_cycles = int(round(min(head.seconds, MAX_DWELL_S) / self.T))
+            seconds = head.seconds if head.revolutions is None else self._dwell_s(head.revolutions)
+            self.wait_cycles = int(round(min(seconds, MAX_DWELL_S) / self.T))
             self.wait_source = head.source
             self.v_path = 0.0
             return True

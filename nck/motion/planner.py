@@ -79,6 +79,7 @@ class PlannedSegment:
     junction_out: float = 0.0  # velocity limit at the end (0 until a successor is known)
     exit_limit: float = 0.0  # result of the backward pass
     done_s: float = 0.0  # distance already travelled (after an interruption)
+    feed_mm_rev: float | None = None  # revolutional feed: feed_mm_s follows the master spindle
 
     @property
     def remaining(self) -> float:
@@ -94,10 +95,11 @@ class PlannedSegment:
 
 @dataclass
 class DwellItem:
-    """G4: wait ``seconds``."""
+    """G4: wait ``seconds``, or ``revolutions`` of the master spindle (counted when it starts)."""
 
     seconds: float
     source: Source | None
+    revolutions: float | None = None
 
 
 @dataclass

@@ -117,6 +117,25 @@ class Spindle:
         target = AMBIENT_C + p.rated_temp_rise_k * load
         st.temperature_c = target + (st.temperature_c - target) * math.exp(-dt_s / max(p.thermal_time_s, 1e-6))
 
+    def seconds_for_revolutions(self, revolutions: float) -> float:
+        """Time to turn ``revolutions`` from now: along the ramp to the setpoint, then at it.
+
+        0 when the spindle neither turns nor is about to (the dwell has nothing to count).
+        """
+        st = self.state
+        start, end = abs(st.actual_rpm) / 60.0, abs(st.setpoint_rpm) / 60.0  # rev/s
+        if revolutions <= 0.0 or (start <= 0.0 and end <= 0.0):
+            return 0.0
+        accel = self._accel_rpm_s / 60.0 if end >= start else -self._accel_rpm_s / 60.0  # rev/s²
+        ramp_s = (end - start) / accel if accel else 0.0
+        ramp_rev = (start + end) / 2.0 * ramp_s
+        if ramp_rev >= revolutions:
+            # start·t + accel·t²/2 = revolutions, the root on the ramp
+            return (-start + math.sqrt(start * start + 2.0 * accel * revolutions)) / accel
+        if end <= 0.0:
+            return 0.0  # the spindle stops before the revolutions are done
+        return ramp_s + (revolutions - ramp_rev) / end
+
     @property
     def moving(self) -> bool:
         """True while the spindle turns or its speed changes."""

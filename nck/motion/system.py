@@ -99,11 +99,12 @@ class PlannedMotion(PathInterpolator):
     def push(self, item: Motion | Dwell) -> None:
         """Plan a segment (or buffer a dwell) behind the ones already buffered."""
         if isinstance(item, Dwell):
-            seconds = item.seconds
-            if seconds is None:
-                rpm = max((abs(s.state.actual_rpm) for s in self.spindles.values()), default=0.0)
-                seconds = (item.revolutions or 0.0) / (rpm / 60.0) if rpm > 0 else 0.0
-            self.la.append(DwellItem(max(float(seconds), 0.0), item.source))
+            if item.seconds is None:
+                # G4 S: counted in revolutions of the master spindle when the dwell starts.
+                revolutions = max(float(item.revolutions or 0.0), 0.0)
+                self.la.append(DwellItem(0.0, item.source, revolutions=revolutions))
+            else:
+                self.la.append(DwellItem(max(float(item.seconds), 0.0), item.source))
             return
         if not isinstance(item, Motion):
             return
@@ -141,6 +142,8 @@ class PlannedMotion(PathInterpolator):
             self.params, segment, rapid=rapid, feed_mm_s=feed, soft=soft,
             exact_stop=bool(item.exact_stop), window=window, source=item.source,
         )
+        if not rapid and self._follows_spindle(item):
+            planned.feed_mm_rev = item.feed_mm_rev
         self.la.append(planned)
         self._replan_if_exit_changed()
 
@@ -447,11 +450,14 @@ class PlannedMotion(PathInterpolator):
             return
         index = min(max(command.spindle, 1), len(names)) - 1
         self.spindles[names[index]].command(command.state, command.speed_rpm, command.position_deg)
+        if index == 0:
+            self._follow_spindle()
 
     def set_spindle_override(self, percent: float) -> None:
         """Spindle override for every spindle."""
         for spindle in self.spindles.values():
             spindle.set_override(percent)
+        self._follow_spindle()
 
     def axis_states(self) -> dict[str, AxisState]:
         """Service-screen values of every path axis."""
@@ -514,8 +520,48 @@ class PlannedMotion(PathInterpolator):
         seg = line(start, end, self.linear_mask)
         return seg if seg.length > 1e-9 else None
 
+    def _master(self) -> Spindle | None:
+        """The master spindle (the first one), None on a machine without spindles."""
+        return next(iter(self.spindles.values()), None)
+
+    def _follows_spindle(self, item: Motion) -> bool:
+        """True when the path feed of ``item`` comes from the master spindle's speed."""
+        return item.feed_mm_rev is not None and self._master() is not None and not (
+            self.dry_run_feed_mm_min is not None and self.dry_run_feed_mm_min > 0)
+
+    def _spindle_feed_mm_min(self, feed_mm_rev: float) -> float:
+        """Revolutional feed at the master spindle's speed (002 L55411-55420).
+
+        The speed is the spindle's setpoint: programmed S with the spindle override,
+        limited by G26/LIMS and the gear stage; the ramp towards it is not followed.
+        """
+        master = self._master()
+        assert master is not None
+        return feed_mm_rev * abs(master.state.setpoint_rpm)
+
+    def _follow_spindle(self) -> None:
+        """The master spindle's speed changed: buffered revolutional feeds follow it."""
+        changed = False
+        for item in self.la.items:
+            if isinstance(item, PlannedSegment) and item.feed_mm_rev is not None:
+                item.feed_mm_s = self._spindle_feed_mm_min(item.feed_mm_rev) / 60.0
+                changed = True
+        if not changed:
+            return
+        self.la.replan_all()
+        if self.run is not None and self.run.kind == "segment":
+            self._replan_run()
+
+    def _dwell_s(self, revolutions: float) -> float:
+        """Seconds the master spindle needs for ``revolutions`` from its speed now (0 if it stands)."""
+        master = self._master()
+        return master.seconds_for_revolutions(revolutions) if master is not None else 0.0
+
     def _effective_feed(self, item: Motion) -> float:
         feed = item.feed_mm_min if item.feed_mm_min and item.feed_mm_min > 0 else None
+        if self._follows_spindle(item):
+            assert item.feed_mm_rev is not None
+            feed = self._spindle_feed_mm_min(item.feed_mm_rev)
         dry = self.dry_run_feed_mm_min
         if dry is not None and dry > 0:
             mode = self.dry_run_mode % 10

@@ -57,3 +57,72 @@ def test_rapid_override_by_the_feed_switch_is_limited_to_100_percent() -> None:
     nck.submit(c.SetOverride("feed", 200))
     assert run_time_s(nck, "P.MPF") == pytest.approx(plain, rel=0.01)
     assert isinstance(nck.submit(c.SetOverride("rapid", 101)), c.Rejected)
+
+
+# ----------------------------------------------------------------------------- G95 and G4 S
+RPM_1000_UP = "N10 G95 S1000 M3\nN15 G4 F2\n"  # the dwell lets the spindle reach its speed
+
+
+def test_revolutional_feed_follows_the_spindle_override() -> None:
+    # 002 L55411-55420: the G95 path velocity comes from the actual spindle speed, V = F × n.
+    # F0.1 mm/rev at 1000 rpm: 100 mm/min, 10 mm in 6 s; spindle override 50 %: 500 rpm,
+    # 50 mm/min, 12 s (002 L56318: the spindle override acts on the speed).
+    programs = {"P.MPF": RPM_1000_UP + "N20 G1 X10 F0.1\nN30 M30"}
+    plain = run_time_s(make(programs), "P.MPF")
+    slow = make(programs)
+    slow.submit(c.SetOverride("spindle", 50))
+    assert run_time_s(slow, "P.MPF") - plain == pytest.approx(6.0, abs=0.1)
+
+
+def test_spindle_override_during_a_revolutional_feed_block_changes_its_feed() -> None:
+    programs = {"P.MPF": RPM_1000_UP + "N20 G1 X10 F0.1\nN30 M30"}
+    nck = make(programs)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] >= 5.0, 20.0)  # half way at 100 mm/min
+    start = nck.time_s
+    nck.submit(c.SetOverride("spindle", 200))  # 2000 rpm: 200 mm/min, the last 5 mm in 1.5 s
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 20.0)
+    assert nck.time_s - start == pytest.approx(1.5, abs=0.1)
+
+
+def test_dwell_in_spindle_revolutions_waits_for_the_revolutions() -> None:
+    # 001 L6402-6419 and 002 L53952: G4 S… dwells for spindle revolutions; S50 at 1000 rpm is 3 s.
+    base = {"P.MPF": RPM_1000_UP + "N30 M30"}
+    dwell = {"P.MPF": RPM_1000_UP + "N20 G4 S50\nN30 M30"}
+    assert run_time_s(make(dwell), "P.MPF") - run_time_s(make(base), "P.MPF") == pytest.approx(3.0, abs=0.05)
+
+
+def test_dwell_in_revolutions_on_a_spindle_started_in_the_block_before() -> None:
+    # The revolutions are counted when the dwell starts, not when it is interpreted:
+    # S50 right after M3 S1000 lasts 3 s plus half the ramp (16.7 rev/s are reached with
+    # the acceleration MD35200 of the spindle, during which it turns only half as far).
+    nck = make({})
+    ramp_s = (1000 / 60) / float(nck.machine.md_value("MD35200", "SP", None))
+    base = {"P.MPF": "N10 S1000 M3\nN30 M30"}
+    dwell = {"P.MPF": "N10 S1000 M3\nN20 G4 S50\nN30 M30"}
+    assert run_time_s(make(dwell), "P.MPF") - run_time_s(make(base), "P.MPF") == pytest.approx(
+        3.0 + ramp_s / 2, abs=0.05)
+
+
+def test_iso_g04_under_g95_counts_revolutions_with_md20734_bit_2() -> None:
+    # 000 L1148-1160: MD20734 bit 2 = 1 and G95 active: G04 X… is in spindle revolutions;
+    # "G95 G04 X1000" (standard notation) = 1000 × 0.001 = 1 revolution. X5. = 5 revolutions
+    # at 600 rpm = 0.5 s; with bit 2 = 0 the same block dwells 5 s.
+    from nck.headless import run_program
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+
+    text = "G95 S600 M3\nG04 X2.\nG04 X5.\nM30\n"
+    base_text = "G95 S600 M3\nG04 X2.\nM30\n"
+    times = {}
+    for mask in (0, 4):
+        machine = load_machine()
+        machine.md["MD20734"] = mask
+        for name, body in (("dwell", text), ("base", base_text)):
+            result = run_program(machine, MemorySource({}), NcData(), "ISO.MPF", text=body, dialect="iso-m")
+            assert result.status == "ended", result.alarms
+            times[mask, name] = result.machine_time_s
+    assert times[4, "dwell"] - times[4, "base"] == pytest.approx(0.5, abs=0.05)
+    assert times[0, "dwell"] - times[0, "base"] == pytest.approx(5.0, abs=0.05)
