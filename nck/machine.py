@@ -11,9 +11,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from nck.resources import data_path, data_root, read_table
+from nck.resources import data_path, data_root, load_toml, read_table
 
 DEFAULT_MACHINE = "mill3"
+USER_CLASS_NUMBERS = range(9200, 9300)  # display MD holding protection levels (0 most rights … 7)
 
 
 @dataclass(frozen=True, slots=True)
@@ -98,6 +99,28 @@ class MachineFileError(Exception):
     """The machine file could not be read (a command-line/file problem, not an alarm)."""
 
 
+def _refuse_loosened_protection(path: Path, md: Any) -> None:
+    """A machine file the user passes may tighten protection levels, never loosen them.
+
+    The USER_CLASS data (MD 9200 …) hold the level each function needs; a file of the
+    user's own giving a function a level with fewer rights than the product's value would
+    let anyone write what the panel and ``nck md`` refuse (and the write would land in NC
+    data shared with the product's machines). Such levels are changed in the Setup area or
+    with ``nck md`` at the level they need.
+    """
+    if not isinstance(md, dict):
+        return
+    defaults = {f"MD{entry['number']}": entry["default"]
+                for entry in load_toml("md", "display.toml")["data"]
+                if entry["number"] in USER_CLASS_NUMBERS}
+    for key, value in md.items():
+        if key in defaults and (isinstance(value, bool) or not isinstance(value, int)
+                                or not 0 <= value <= defaults[key]):
+            raise MachineFileError(
+                f"machine file {path}: {key} = {value!r} would lower the protection level "
+                f"{defaults[key]} of the product; a machine file may only make it stricter (0 … {defaults[key]})")
+
+
 def load_machine(name_or_path: str | None = None) -> MachineConfig:
     """Load a machine by name (``data/machines/<name>.toml``) or by file path."""
     name = name_or_path or DEFAULT_MACHINE
@@ -107,11 +130,13 @@ def load_machine(name_or_path: str | None = None) -> MachineConfig:
     if not path.is_file():
         raise MachineFileError(f"machine '{name}' not found")
     try:
-        if path.resolve().is_relative_to(data_root()):
+        product = path.resolve().is_relative_to(data_root())
+        if product:
             table = read_table(path)  # a machine of the product: through its parsed copy
         else:
             with path.open("rb") as handle:
                 table = tomllib.load(handle)
+            _refuse_loosened_protection(path, table.get("md", {}))
         head = table["machine"]
         axes = tuple(
             AxisConfig(
