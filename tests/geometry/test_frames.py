@@ -35,6 +35,7 @@ def test_trans_then_atrans_adds_up() -> None:
 
 
 def test_g58_replaces_coarse_and_g59_the_fine_part() -> None:
+    """Digest 828d-2 rank 21: totals (15,15,10) -> (25,15,10) -> (30,20,10) (002 L28592-28598)."""
     # Digest K2 §11.1 bookkeeping: (15,15,10) -> G58 X20 -> (25,15,10) -> G59 X10 Y10 -> (30,20,10).
     frame = Frame.ctrans({"X": 10, "Y": 10, "Z": 10}).atrans({"X": 5, "Y": 5})
     assert apply(frame) == approx({"X": 15.0, "Y": 15.0, "Z": 10.0})
@@ -45,6 +46,7 @@ def test_g58_replaces_coarse_and_g59_the_fine_part() -> None:
 
 
 def test_rot_z90_turns_x_onto_y() -> None:
+    """Digest 828d-2 rank 20 (rotation part; program form in tests/digests/test_828d_2.py)."""
     # Digest K2 test 20: after ROT Z90, G1 X10 from the WCS origin ends at BCS Y+10.
     assert apply(Frame.crot({"Z": 90}), X=10) == approx({"X": 0.0, "Y": 10.0, "Z": 0.0})
 

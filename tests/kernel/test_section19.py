@@ -28,6 +28,7 @@ def at_x40() -> "object":
 
 # 1 -------------------------------------------------------------------------
 def test_01_start_from_reset_runs_from_first_block_and_restarts_runtime() -> None:
+    """Digest 828d-2 rank 1."""
     nck = make_nck({"P": LINE, "Q": "N5 G1 X1 F60\nN6 M30"})
     auto_start(nck, "Q")
     assert until_state(nck, "reset", "aborted")
@@ -43,6 +44,7 @@ def test_01_start_from_reset_runs_from_first_block_and_restarts_runtime() -> Non
 
 # 2 -------------------------------------------------------------------------
 def test_02_nc_stop_interrupts_and_nc_start_resumes_in_the_same_block() -> None:
+    """Digest 828d-2 rank 2."""
     nck = at_x40()
     assert nck.submit(c.CycleStop()) == c.Accepted()
     stopped_at = x(nck)
@@ -61,6 +63,7 @@ def test_02_nc_stop_interrupts_and_nc_start_resumes_in_the_same_block() -> None:
 
 # 3 -------------------------------------------------------------------------
 def test_03_reset_aborts_clears_reset_alarms_and_restarts_at_block_one() -> None:
+    """Digest 828d-2 rank 3."""
     nck = make_nck({"P": "N10 G91 G1 X10 F600\nN20 X10\nN30 X10\nN40 M30"})
     auto_start(nck, "P")
     nck.tick(1.5)
@@ -79,6 +82,7 @@ def test_03_reset_aborts_clears_reset_alarms_and_restarts_at_block_one() -> None
 
 # 4 -------------------------------------------------------------------------
 def test_04_nc_start_refused_for_unreferenced_axes_with_10203() -> None:
+    """Digest 828d-2 rank 4."""
     nck = make_nck({"P": LINE}, referenced=False)
     nck.motion.set_referenced("X", True)
     nck.motion.set_referenced("Y", True)
@@ -93,6 +97,7 @@ def test_04_nc_start_refused_for_unreferenced_axes_with_10203() -> None:
 
 
 def test_04b_axis_that_needs_no_referencing_lets_the_program_start() -> None:
+    """Digest 828d-2 rank 4."""
     base = load_machine()
     md = dict(base.md)
     md["MD34110"] = {"X": 2, "Y": 3, "Z": -1}
@@ -106,6 +111,7 @@ def test_04b_axis_that_needs_no_referencing_lets_the_program_start() -> None:
 
 # 5 -------------------------------------------------------------------------
 def test_05_nc_start_refused_with_an_alarm_with_start_disable_10200() -> None:
+    """Digest 828d-2 rank 5."""
     nck = make_nck({"P": "N10 SETAL(61000)\nN20 G1 X10 F1000\nN30 M30"})
     auto_start(nck, "P")
     assert until_state(nck, "interrupted", "stopped")
@@ -117,6 +123,7 @@ def test_05_nc_start_refused_with_an_alarm_with_start_disable_10200() -> None:
 
 
 def test_05b_nc_start_refused_during_emergency_stop_and_in_jog() -> None:
+    """Digest 828d-2 rank 5."""
     nck = make_nck({"P": LINE})
     assert isinstance(nck.submit(c.CycleStart()), c.Rejected)  # JOG
     assert states(nck) == ("JOG", "reset", "aborted")
@@ -128,6 +135,7 @@ def test_05b_nc_start_refused_during_emergency_stop_and_in_jog() -> None:
 
 
 def test_05c_nc_start_without_a_selected_program_is_refused() -> None:
+    """Digest 828d-2 rank 5."""
     nck = make_nck({"P": LINE})
     nck.submit(c.SelectMode("AUTO"))
     result = nck.submit(c.CycleStart())
@@ -137,6 +145,7 @@ def test_05c_nc_start_without_a_selected_program_is_refused() -> None:
 
 # 6 -------------------------------------------------------------------------
 def test_06_program_selection_only_in_reset() -> None:
+    """Digest 828d-2 rank 6."""
     nck = at_x40()
     nck.submit(c.CycleStop())
     result = nck.submit(c.SelectProgram("Q"))
@@ -150,6 +159,7 @@ def test_06_program_selection_only_in_reset() -> None:
 
 # 7 -------------------------------------------------------------------------
 def test_07_mode_change_blocked_while_active_then_allowed_after_stop() -> None:
+    """Digest 828d-2 rank 7."""
     nck = at_x40()
     result = nck.submit(c.SelectMode("JOG"))
     assert isinstance(result, c.Rejected)
@@ -162,6 +172,7 @@ def test_07_mode_change_blocked_while_active_then_allowed_after_stop() -> None:
 
 # 8 -------------------------------------------------------------------------
 def test_08_interrupt_jog_away_and_repos_back_on_nc_start() -> None:
+    """Digest 828d-2 rank 8."""
     nck = at_x40()
     nck.submit(c.CycleStop())
     stop_x = x(nck)
@@ -182,6 +193,7 @@ def test_08_interrupt_jog_away_and_repos_back_on_nc_start() -> None:
 
 
 def test_08b_reset_in_jog_aborts_the_interrupted_program() -> None:
+    """Digest 828d-2 rank 8."""
     nck = at_x40()
     nck.submit(c.CycleStop())
     nck.submit(c.SelectMode("JOG"))
@@ -195,6 +207,7 @@ def test_08b_reset_in_jog_aborts_the_interrupted_program() -> None:
 
 # 9 -------------------------------------------------------------------------
 def test_09_ref_and_repos_only_in_jog_or_mda() -> None:
+    """Digest 828d-2 rank 9."""
     nck = make_nck()
     assert nck.submit(c.SelectMachineFunction("REF")) == c.Accepted()
     assert nck.submit(c.SelectMode("MDA")) == c.Accepted()
@@ -224,6 +237,7 @@ def _stops(nck, level: str) -> list[str]:
 
 
 def test_10_single_block_sbl1_skips_calculation_blocks() -> None:
+    """Digest 828d-2 rank 10."""
     nck = make_nck({"P": SBL_PROGRAM})
     assert _stops(nck, "SBL1") == ["N10", "N30"]
     assert x(nck) == pytest.approx(20.0)
@@ -231,6 +245,7 @@ def test_10_single_block_sbl1_skips_calculation_blocks() -> None:
 
 
 def test_10b_single_block_sbl2_stops_after_every_block() -> None:
+    """Digest 828d-2 rank 10."""
     nck = make_nck({"P": SBL_PROGRAM})
     assert _stops(nck, "SBL2") == ["N10", "N20", "N30"]
     assert states(nck) == ("AUTO", "reset", "aborted")
@@ -238,6 +253,7 @@ def test_10b_single_block_sbl2_stops_after_every_block() -> None:
 
 # 11 ------------------------------------------------------------------------
 def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
+    """Digest 828d-2 rank 11."""
     program = "N10 M01\nN20 M00\nN30 G1 X5 F1000\nN40 M30"
     nck = make_nck({"P": program})
     auto_start(nck, "P")
@@ -259,6 +275,7 @@ def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
 
 # 12 ------------------------------------------------------------------------
 def test_12_program_end_counts_parts_and_keeps_runtime_reset_does_not() -> None:
+    """Digest 828d-2 rank 12."""
     nck = make_nck({"P": "N10 G91 G1 X10 F600\nN20 M30"})
     auto_start(nck, "P")
     assert until_state(nck, "reset", "aborted")
@@ -277,6 +294,7 @@ def test_12_program_end_counts_parts_and_keeps_runtime_reset_does_not() -> None:
 
 # 13 ------------------------------------------------------------------------
 def test_13_emergency_stop_needs_release_and_reset_axes_stay_referenced() -> None:
+    """Digest 828d-2 rank 13."""
     nck = at_x40()
     nck.submit(c.EmergencyStop(True))
     at_estop = x(nck)
@@ -299,6 +317,7 @@ def test_13_emergency_stop_needs_release_and_reset_axes_stay_referenced() -> Non
 
 # 14 ------------------------------------------------------------------------
 def test_14_reference_point_approach_in_jog_ref() -> None:
+    """Digest 828d-2 rank 14."""
     nck = make_nck(referenced=False)
     nck.submit(c.SelectMachineFunction("REF"))
     nck.submit(c.Jog("X", -1))
@@ -328,6 +347,7 @@ def _run_time(nck, program: str) -> float:
 
 
 def test_16_dry_run_feed_modes() -> None:
+    """Digest 828d-2 rank 16."""
     nck = make_nck()
     nck.submit(c.SelectMode("AUTO"))
     nck.submit(c.WriteData("SD42100", 2000.0))
@@ -344,6 +364,7 @@ def test_16_dry_run_feed_modes() -> None:
 
 # 17 ------------------------------------------------------------------------
 def test_17_skip_levels() -> None:
+    """Digest 828d-2 rank 17."""
     program = "N10 G1 X1 F6000\n/N40 X40\n/3 N50 Y50\nN60 M30"
     nck = make_nck({"P": program})
     nck.submit(c.SetProgramControl("skip_levels", {0}))
@@ -361,6 +382,7 @@ def test_17_skip_levels() -> None:
 
 
 def test_17b_skip_levels_stay_effective_during_block_search() -> None:
+    """Digest 828d-2 rank 17."""
     program = "N10 G1 X1 F6000\n/N40 X40\nN50 Y5\nN60 Y9\nN70 M30"
     nck = make_nck({"P": program})
     nck.submit(c.SetProgramControl("skip_levels", {0}))
@@ -375,6 +397,7 @@ def test_17b_skip_levels_stay_effective_during_block_search() -> None:
 
 # 18 ------------------------------------------------------------------------
 def test_18_program_test_moves_the_display_not_the_machine() -> None:
+    """Digest 828d-2 rank 18."""
     # 002 L18007-18009, L18030-18031: program test executes the program without axis or
     # spindle setpoints, but with auxiliary function outputs.
     nck = make_nck({"P": "N10 G1 X100 F6000\nN20 M3 S1000 M8\nN30 M30"})
@@ -397,6 +420,7 @@ def test_18_program_test_moves_the_display_not_the_machine() -> None:
 
 
 def test_18b_program_test_switch_refused_outside_reset() -> None:
+    """Digest 828d-2 rank 18."""
     nck = at_x40()
     assert isinstance(nck.submit(c.SetProgramControl("program_test", True)), c.Rejected)
 
@@ -408,6 +432,7 @@ SEARCH_PROGRAM = (
 
 
 def test_25_block_search_with_calculation_10208_then_continue() -> None:
+    """Digest 828d-2 rank 25."""
     nck = make_nck({"P": SEARCH_PROGRAM})
     nck.submit(c.SelectMode("AUTO"))
     nck.submit(c.SelectProgram("P"))
@@ -433,6 +458,7 @@ def test_25_block_search_with_calculation_10208_then_continue() -> None:
 
 
 def test_25b_block_search_target_not_found_and_by_text_and_cascaded() -> None:
+    """Digest 828d-2 rank 25."""
     nck = make_nck({"P": SEARCH_PROGRAM})
     nck.submit(c.SelectMode("AUTO"))
     nck.submit(c.SelectProgram("P"))
@@ -450,6 +476,7 @@ def test_25b_block_search_target_not_found_and_by_text_and_cascaded() -> None:
 
 # 15 ------------------------------------------------------------------------
 def test_15_adjusted_absolute_encoder_is_referenced_at_power_on() -> None:
+    """Digest 828d-2 rank 15."""
     base = load_machine()
     machine = dataclasses.replace(base, md={**base.md, "MD34210": {"X": 2, "Y": 2, "Z": 0}})
     nck = make_nck({"P": LINE}, referenced=False, machine=machine)

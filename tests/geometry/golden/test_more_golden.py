@@ -13,6 +13,7 @@ from .helpers import approx, lines, run
 
 
 def test_g58_g59_bookkeeping_in_a_program() -> None:
+    """Digest 828d-2 rank 21, in a program (002 L28592-28598)."""
     # Digest K2 test 21: TRANS (10,10,10) -> ATRANS X5 Y5 -> G58 X20 -> G59 X10 Y10
     # (002 L28586-28598), with MD24000 FRAME_ADD_COMPONENTS set as G58/G59 require (002 L28600).
     r = run(lines("N10 TRANS X10 Y10 Z10", "N20 ATRANS X5 Y5", "N30 G0 X0 Y0 Z0",
@@ -25,6 +26,7 @@ def test_g58_g59_bookkeeping_in_a_program() -> None:
 
 @pytest.mark.parametrize("code", ["G58 X20", "G59 X10"])
 def test_g58_g59_without_md24000_raise_18311(code: str) -> None:
+    """Digest 828d-2 rank 21 (alarm part)."""
     # 002 L28600-28603: G58/G59 only with MD24000 FRAME_ADD_COMPONENTS TRUE, else alarm 18311.
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 TRANS X10", f"N20 {code}", "N30 M30"), md={"MD24000": False})
