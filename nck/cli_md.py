@@ -61,7 +61,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def _line(store: MachineDataStore, ref: DataRef, value: Any) -> str:
     d = ref.definition
-    unit = f" {d.unit}" if d.unit else ""
+    unit = f" {store.unit(ref)}" if d.unit else ""
     pending = ""
     if d.kind == "md" and store.is_pending(ref):
         pending = f"  (not active yet: active {format_value(d, store.active_value(ref))}, " \
@@ -190,7 +190,7 @@ def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextI
             print(f"nck md: {ref.text}: {exc}", file=err)
             return 1
         d = ref.definition
-        unit = f" {d.unit}" if d.unit else ""
+        unit = f" {store.unit(ref)}" if d.unit else ""
         print(f"{ref.text} {ref.identifier_text} = {format_value(d, result.new)}{unit} "
               f"(was {format_value(d, result.old)}) - takes effect {result.takes_effect}", file=out)
     if checked:

@@ -28,6 +28,7 @@ from typing import Any, Iterable, Mapping
 
 from nck.access import AccessDenied, Action, LEVEL_FEWEST_RIGHTS, required_level
 from nck.machine import MachineConfig
+from nck.number_text import trimmed
 from nck.resources import data_path, load_toml
 
 ACTIVATIONS = ("so", "re", "cf", "po")
@@ -182,8 +183,7 @@ def format_value(definition: DataDefinition, value: Any) -> str:
         number = float(value)
         if abs(number) >= 1e7 or 0 < abs(number) < 1e-6:
             return f"{number:g}"
-        text = f"{number:.6f}".rstrip("0").rstrip(".")
-        return "0" if text == "-0" else text
+        return trimmed(number)
     return str(value)
 
 
@@ -311,8 +311,8 @@ def parse_ref(text: str, axes: Iterable[str], cat: Catalog | None = None) -> Dat
     if not match:
         raise UnknownDataError(f"{text!r} is not a machine or setting data name")
     definition = cat.get(match["base"])
-    if definition is None and match["base"].isdigit():
-        definition = cat.get("MD" + match["base"])
+    if definition is None and match["base"].isdigit():  # a bare number: MD and SD share one range
+        definition = cat.get("MD" + match["base"]) or cat.get("SD" + match["base"])
     if definition is None:
         raise UnknownDataError(f"{match['base']} is not in the machine/setting data catalogue")
     args = [a.strip() for a in match["args"].split(",")] if match["args"] is not None else []
@@ -370,6 +370,15 @@ class DataRow:
     title: str
 
 
+ROTARY_UNITS = {"mm": "deg", "mm/min": "deg/min", "mm/rev": "deg/rev"}
+"""The unit of an axis datum written in linear units, for a rotary axis (the kernel
+reads positions in degrees and velocities in degrees per minute there)."""
+
+SPINDLE_UNITS = {"mm": "deg", "mm/min": "rev/min", "mm/rev": "deg/rev"}
+"""The same for a spindle: positions in degrees, velocities in rev/min (the kernel
+takes MD32000 of a spindle as its maximum speed)."""
+
+
 class MachineDataStore:
     """Machine and setting data values of one machine, with stored vs active values.
 
@@ -405,6 +414,14 @@ class MachineDataStore:
                 return parse_ref(f"{spindle[1]}{spindles[int(spindle[2]) - 1]}]", self.axes,
                                  self.catalog)
             raise
+
+    def unit(self, ref: DataRef | str) -> str:
+        """The unit of a datum for its axis: ``mm`` of a linear axis is ``deg`` on a
+        rotary axis or spindle, ``mm/min`` is ``deg/min`` or ``rev/min``."""
+        ref = self._ref(ref)
+        kind = next((a.kind for a in self.machine.axes if a.name == ref.axis), "linear")
+        table = {"rotary": ROTARY_UNITS, "spindle": SPINDLE_UNITS}.get(kind, {})
+        return table.get(ref.definition.unit, ref.definition.unit)
 
     # ---------------------------------------------------------------- values
     def _full(self, layer: Mapping[str, Any], d: DataDefinition, axis: str | None) -> Any:
@@ -478,7 +495,7 @@ class MachineDataStore:
             if d.kind != kind or (scope is not None and d.scope != scope) or level > d.read_level:
                 continue
             ref = DataRef(d, chosen_axis if d.per_axis else None)
-            rows.append(DataRow(ref, format_value(d, self.value(ref)), d.unit, d.activation,
+            rows.append(DataRow(ref, format_value(d, self.value(ref)), self.unit(ref), d.activation,
                                 self.required_write_level(ref), self.is_pending(ref), d.title))
         return rows
 

@@ -28,6 +28,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable, Iterable, Sequence
 
+from nck.number_text import fixed
+
 MAX_SIGNALS = 4
 TRIGGERS = ("now", "nc_start")
 AXIS_QUANTITIES: dict[str, str] = {
@@ -233,7 +235,7 @@ def trace_csv(times_s: Sequence[float], columns: dict[str, Sequence[float]]) -> 
     lines = [",".join(["t_s", *columns])]
     values = list(columns.values())
     for index, t in enumerate(times_s):
-        row = [f"{t:.3f}"] + [f"{column[index]:.6f}" for column in values]
+        row = [fixed(t, 3)] + [fixed(column[index], 6) for column in values]
         lines.append(",".join(row))
     return "\n".join(lines) + "\n"
 

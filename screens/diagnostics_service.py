@@ -15,6 +15,7 @@ from typing import Any, Callable
 
 from rich.text import Text
 
+from nck.number_text import fixed
 from nck.status import AxisStatus, NckStatus
 
 CONTROLLER_MODES = {0: "0 position control", 1: "1 speed control", 2: "2 hold", 3: "3 parking",
@@ -28,7 +29,7 @@ MISSING = "—"
 
 
 def _num(value: float | None, digits: int = 3) -> str:
-    return MISSING if value is None else f"{value:.{digits}f}"
+    return MISSING if value is None else fixed(value, digits)
 
 
 def _extra(axis: AxisStatus, name: str) -> float | None:
@@ -74,7 +75,7 @@ def overview_text(status: NckStatus) -> Text:
             on = flags[name]
             text.append(" " * 13)
             text.append("✓" if on else "✗", style="green" if on else "bold red")
-        fe = MISSING if axis.kind == "spindle" else f"{axis.following_error:.3f}"
+        fe = MISSING if axis.kind == "spindle" else fixed(axis.following_error, 3)
         text.append(f"{fe:>18}\n")
     return text
 

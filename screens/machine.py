@@ -18,6 +18,7 @@ from textual.widgets import ContentSwitcher, Input, Static, TextArea
 
 from nck import commands as cmd
 from nck.commands import Accepted
+from nck.number_text import fixed, trimmed
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
@@ -370,7 +371,7 @@ class MachineScreen(AreaBase):
         elif function == "REPOS":
             text.append("  REPOS — repositioning to the interruption point\n", style="bold")
             for axis, way in channel.repos_offsets.items():
-                text.append(f"   {axis:<4}{way:12.3f}\n")
+                text.append(f"   {axis:<4}{fixed(way, 3, 12)}\n")
         elif function == "INC":
             text.append(f"  {increment_text(channel.increment)} (x 0.001 mm)\n", style="bold")
         else:
@@ -400,8 +401,8 @@ class MachineScreen(AreaBase):
         text.append(f" {'Function':<10}{'Active':<12}\n", style="bold")
         text.append(f" {'T':<10}{modal.tool_name or modal.tool}\n")
         text.append(f" {'D':<10}{modal.edge}\n")
-        text.append(f" {'S':<10}{modal.spindle_speed_rpm:g}  {modal.spindle_state}\n")
-        text.append(f" {'F':<10}{modal.feed:g}\n")
+        text.append(f" {'S':<10}{trimmed(modal.spindle_speed_rpm)}  {modal.spindle_state}\n")
+        text.append(f" {'F':<10}{trimmed(modal.feed)}\n")
         for key, value in sorted(modal.aux.items()):
             text.append(f" {key:<10}{value}\n")
         return text

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
+from nck.number_text import fixed, trimmed
 from nck.status import NckStatus
 
 from screens.parameter_tables import Cell, Column, DataTable
@@ -42,18 +43,12 @@ SETTING_DATA = (
 )
 
 
-def number_text(value: float, places: int = 3) -> str:
-    """A value as the lists show it (fixed decimals, no ``-0.000``)."""
-    text = f"{float(value):.{places}f}"
-    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
-
-
 def edit_text(value: Any) -> str:
     """The start text of an input field for ``value``."""
     if isinstance(value, bool):
         return "TRUE" if value else "FALSE"
     if isinstance(value, float):
-        return f"{value:.6f}".rstrip("0").rstrip(".") or "0"
+        return trimmed(value)
     return str(value)
 
 
@@ -79,7 +74,7 @@ def tool_table(nck: Any, status: NckStatus | None, levels: LevelOf, wear: bool =
                Cell(TOOL_TYPES.get(kind, f"type {kind}" if kind else "—"))]
         for param, title, _ in fields:
             value = data.get(param)
-            shown = str(int(value)) if param in (1, 2) else number_text(value)
+            shown = str(int(value)) if param in (1, 2) else fixed(value)
             unit = "" if param in (1, 2) else " mm"
             row.append(_datum(f"$TC_DP{param}[{tool},{edge}]", shown, value, levels,
                               f"T{tool} D{edge} {title}{unit}"))
@@ -132,11 +127,11 @@ def overview_table(nck: Any, status: NckStatus | None, levels: LevelOf) -> DataT
         row = [Cell("▶" if frame == active else ""), Cell(label)]
         for axis in axes:
             value = float(offset.trans.get(axis, 0.0))
-            row.append(_datum(frame_var(frame, axis, "TR"), number_text(value), value, levels,
+            row.append(_datum(frame_var(frame, axis, "TR"), fixed(value), value, levels,
                               f"{label} {axis} translation in mm (active at the next selection of the frame)"))
         for axis in geometry:
             value = float(offset.rot.get(axis, 0.0))
-            row.append(_datum(frame_var(frame, axis, "RT"), number_text(value), value, levels,
+            row.append(_datum(frame_var(frame, axis, "RT"), fixed(value), value, levels,
                               f"{label} rotation about {axis} in degrees (-360 … 360)"))
         rows.append(row)
     return DataTable("Work offsets — overview  (changes take effect when the frame is next selected)",
@@ -162,7 +157,7 @@ def details_table(nck: Any, frame: str, levels: LevelOf) -> DataTable:
             table = {"TR": offset.trans, "FI": offset.fine, "RT": offset.rot, "SC": offset.scale}[comp]
             value = float(table.get(axis, 1.0 if comp == "SC" else 0.0))
             places = 5 if comp == "SC" else 3
-            row.append(_datum(frame_var(frame, axis, comp), number_text(value, places), value, levels,
+            row.append(_datum(frame_var(frame, axis, comp), fixed(value, places), value, levels,
                               f"{label} {axis} {title.lower()}"))
         rows.append(row)
     return DataTable(f"Work offset {label} — details", columns, rows,
@@ -176,17 +171,17 @@ def active_chain_table(nck: Any, status: NckStatus | None) -> DataTable:
     active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
     rows = []
     base = nck.data.base_frame
-    rows.append([Cell("Base frame")] + [Cell(number_text(base.trans.get(a, 0.0))) for a in axes])
+    rows.append([Cell("Base frame")] + [Cell(fixed(base.trans.get(a, 0.0))) for a in axes])
     settable = nck.data.settable_frames.get(active) if active != "G500" else None
     label = f"Settable frame {active}" + ("" if settable is not None else " (zero)")
     rows.append([Cell(label)] + [
-        Cell(number_text((settable.trans.get(a, 0.0) + settable.fine.get(a, 0.0)) if settable else 0.0))
+        Cell(fixed((settable.trans.get(a, 0.0) + settable.fine.get(a, 0.0)) if settable else 0.0))
         for a in axes])
     rows.append([Cell("Programmable frame")] + [Cell("(program)") for _ in axes])
     if status is not None:
         by_name = {a.name: a for a in status.axes}
         rows.append([Cell("Total (MCS − WCS, with tool)")] + [
-            Cell(number_text(by_name[a].position_mcs - by_name[a].position_wcs) if a in by_name else "")
+            Cell(fixed(by_name[a].position_mcs - by_name[a].position_wcs) if a in by_name else "")
             for a in axes])
     return DataTable(f"Active work offset chain  (active settable frame: {active})", columns, rows,
                      "Rotations, scale and mirror: see Overview / Details")
@@ -197,7 +192,7 @@ def r_table(nck: Any, levels: LevelOf) -> DataTable:
     columns = [Column("R parameter", 12, "<"), Column("Value", 20)]
     rows = []
     for index, value in enumerate(nck.data.r):
-        rows.append([Cell(f"R{index}"), _datum(f"R{index}", number_text(value, 5), value, levels,
+        rows.append([Cell(f"R{index}"), _datum(f"R{index}", fixed(value, 5), value, levels,
                                                f"R{index} (REAL)")])
     return DataTable("R variables", columns, rows,
                      "Enter edit   Clear all: every R parameter to 0 (asks first)")
@@ -219,7 +214,7 @@ def _value_text(value: Any) -> str:
     if isinstance(value, bool):
         return "TRUE" if value else "FALSE"
     if isinstance(value, float):
-        return number_text(value, 5)
+        return fixed(value, 5)
     return str(value)
 
 
@@ -264,14 +259,15 @@ def setting_table(nck: Any, levels: LevelOf) -> DataTable:
             if definition.type == "bool":
                 shown = "on" if value else "off"
             elif definition.type == "real":
-                shown = number_text(value)
+                shown = fixed(value)
             else:
                 shown = str(value)
             limits = ""
             if definition.min is not None and definition.max is not None:
                 limits = f", {definition.min:g} … {definition.max:g}"
-            hint = f"{definition.identifier}: {definition.title} ({definition.unit or definition.type}{limits})"
+            unit = store.unit(name)
+            hint = f"{definition.identifier}: {definition.title} ({unit or definition.type}{limits})"
             rows.append([Cell(group), Cell(key), Cell(definition.name), Cell(axis or ""),
-                         _datum(name, shown, value, levels, hint), Cell(definition.unit)])
+                         _datum(name, shown, value, levels, hint), Cell(unit)])
     return DataTable("Setting data  (take effect at once)", columns, rows,
                      "Enter edit   Work area limits act when their enable is on (G25/G26, WALIMON)")

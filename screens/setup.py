@@ -62,7 +62,7 @@ def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) 
         else:
             edit = row.value_text if d.type != "bool" else ("1" if store.value(row.ref) else "0")
             limits = f", {d.min:g} … {d.max:g}" if d.min is not None and d.max is not None else ""
-            hint = (f"{d.identifier}: {d.title} ({d.unit or d.type}{limits}); takes effect "
+            hint = (f"{d.identifier}: {d.title} ({row.unit or d.type}{limits}); takes effect "
                     f"{ACTIVATION_TEXT[d.activation]}")
         rows.append([Cell(str(d.number)), Cell(d.name),
                      Cell(row.value_text, row.ref.text, edit, row.write_level, hint),

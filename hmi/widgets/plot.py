@@ -14,6 +14,8 @@ import numpy as np
 from rich.text import Text
 from textual.widget import Widget
 
+from nck.number_text import fixed
+
 from hmi.widgets.toolpath import BrailleCanvas
 
 CURVE_STYLES = ("bold green", "bold yellow", "bold cyan", "bold magenta")
@@ -24,10 +26,10 @@ def format_value(value: float) -> str:
     """A value for the legend and the read-out: fewer decimals for large magnitudes."""
     magnitude = abs(value)
     if magnitude >= 1000:
-        return f"{value:.1f}"
+        return fixed(value, 1)
     if magnitude >= 1:
-        return f"{value:.3f}"
-    return f"{value:.4f}"
+        return fixed(value, 3)
+    return fixed(value, 4)
 
 
 def value_range(values: Sequence[float]) -> tuple[float, float]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from rich.text import Text
 from textual.widgets import Static
 
+from nck.number_text import fixed
 from nck.status import AxisStatus, NckStatus
 
 UNREFERENCED_MARK = "○"
@@ -13,10 +14,7 @@ UNREFERENCED_MARK = "○"
 
 def format_mm(value: float, width: int = 12) -> str:
     """A position with 3 decimals, right aligned, never ``-0.000``."""
-    text = f"{value:.3f}"
-    if text in ("-0.000",):
-        text = "0.000"
-    return text.rjust(width)
+    return fixed(value, 3, width)
 
 
 def position_lines(status: NckStatus, mcs: bool, selected_axis: str | None) -> Text:
@@ -35,7 +33,7 @@ def position_lines(status: NckStatus, mcs: bool, selected_axis: str | None) -> T
         text.append(f"{marker}{axis.name:<4}", style="bold")
         text.append("   ")
         text.append(format_mm(axis.position_mcs if mcs else axis.position_wcs, 17) + "°")
-        text.append(f"{axis.speed_rpm:>13.0f} rpm  {status.channel.modal.spindle_state}\n")
+        text.append(f"{fixed(axis.speed_rpm, 0, 13)} rpm  {status.channel.modal.spindle_state}\n")
     return text
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from rich.text import Text
 from textual.widgets import Static
 
+from nck.number_text import fixed
 from nck.status import NckStatus
 
 from hmi.widgets.header import format_override
@@ -19,15 +20,15 @@ def tfs_lines(status: NckStatus) -> Text:
     text.append(" T ", style="bold")
     text.append(f"{tool:<16}", style="bold")
     text.append(f"D{modal.edge}\n" if modal.edge else "D0\n")
-    text.append(f"   L {modal.tool_length_mm:10.3f}   R {modal.tool_radius_mm:8.3f}\n")
+    text.append(f"   L {fixed(modal.tool_length_mm, 3, 10)}   R {fixed(modal.tool_radius_mm, 3, 8)}\n")
     text.append(" F ", style="bold")
     unit = "mm/rev" if modal.gcodes.get(15) == "G95" else "mm/min"
-    text.append(f"{status.channel.path_feed_mm_min:10.3f} / {modal.feed:10.3f} {unit}")
+    text.append(f"{fixed(status.channel.path_feed_mm_min, 3, 10)} / {fixed(modal.feed, 3, 10)} {unit}")
     text.append(f"  {format_override(overrides.get('feed', 100)):>3} %\n")
     spindle = next((a for a in status.axes if a.kind == "spindle"), None)
     if spindle is not None:
         text.append(f" S{spindle.name[-1] if spindle.name[-1].isdigit() else '1'} ", style="bold")
-        text.append(f"{spindle.speed_rpm:10.0f} / {modal.spindle_speed_rpm:10.0f} rpm   ")
+        text.append(f"{fixed(spindle.speed_rpm, 0, 10)} / {fixed(modal.spindle_speed_rpm, 0, 10)} rpm   ")
         text.append(f"{modal.spindle_state:<3}")
         text.append(f"  {format_override(overrides.get('spindle', 100)):>3} %\n")
     return text

@@ -24,6 +24,6 @@ def write_trace_csv(motion: Any, out: TextIO) -> int:
     times, rows = trace()
     if times.size == 0:
         return 0
-    table = np.column_stack([times, rows])
+    table = np.round(np.column_stack([times, rows]), 6) + 0.0  # no -0.000000
     np.savetxt(out, table, delimiter=",", fmt=["%.3f"] + ["%.6f"] * rows.shape[1])
     return int(times.size)

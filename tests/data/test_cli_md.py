@@ -122,7 +122,7 @@ def test_other_machine(tmp_path: Path) -> None:
 def test_listing_everything(tmp_path: Path) -> None:
     code, out, _ = md(tmp_path)
     assert code == 0
-    assert "MD32000[SP] $MA_MAX_AX_VELO[SP] = 8000 mm/min" in out
+    assert "MD32000[SP] $MA_MAX_AX_VELO[SP] = 8000 rev/min" in out  # a spindle speed
     assert "SD43420[X] $SA_WORKAREA_LIMIT_PLUS[X]" in out
     assert "MD20154" not in out  # readable only from level 2
 
@@ -144,3 +144,19 @@ def test_console_entry_dispatches_md(tmp_path: Path) -> None:
                            "--password", "EVENING", "MD32000[X]=5000"],
                           capture_output=True, text=True, env=env)
     assert proc.returncode == 0 and "takes effect" in proc.stdout
+
+
+def test_bare_number_finds_setting_data_too(tmp_path: Path) -> None:
+    """`nck md 42100` answers as `nck md SD42100` (one catalogue for MD and SD)."""
+    code, out, err = md(tmp_path, "42100")
+    assert code == 0, err
+    assert out == md(tmp_path, "SD42100")[1] == "SD42100 $SC_DRY_RUN_FEED = 5000 mm/min\n"
+
+
+def test_spindle_and_rotary_data_in_their_own_units(tmp_path: Path) -> None:
+    """Software limits of a spindle are angles, its maximum velocity is a speed (rev/min);
+    a linear axis keeps mm and mm/min."""
+    code, out, err = md(tmp_path, "MD36100[SP]", "MD32000[SP]", "MD36100[X]")
+    assert code == 0, err
+    lines = out.splitlines()
+    assert lines[0].endswith(" deg") and lines[1].endswith(" rev/min") and lines[2].endswith(" mm")

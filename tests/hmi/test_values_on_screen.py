@@ -1,0 +1,52 @@
+"""Values on the Machine screen are what the machine does (issue 18, "Values on screen")."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from hmi.app import HmiApp
+from hmi.widgets.positions import position_lines
+from hmi.widgets.tfs import tfs_lines
+from nck.number_text import fixed, trimmed
+from tests.hmi.conftest import SIZE
+from tests.hmi.fake_nck import FakeNck
+from tests.hmi.test_machine_area import screen_text
+
+
+def test_fixed_and_trimmed_never_show_a_negative_zero() -> None:
+    """A value that rounds to zero at the shown precision has no sign; others keep theirs."""
+    assert fixed(-0.0004) == "0.000"
+    assert fixed(-0.0) == "0.000"
+    assert fixed(-0.2, 0, 6) == "     0"
+    assert fixed(-0.0006) == "-0.001"
+    assert fixed(-2.5, 1) == "-2.5"
+    assert trimmed(-0.0) == "0" and trimmed(-1e-9) == "0" and trimmed(-1.25) == "-1.25"
+
+
+def test_position_and_tfs_windows_show_no_negative_zero() -> None:
+    """Positions, distance to go, spindle speed, feed and tool values near zero from below."""
+    status = FakeNck(referenced=True).status()
+    axes = tuple(replace(a, position_mcs=-0.0004, position_wcs=-0.0004, distance_to_go=-0.0001,
+                         speed_rpm=-0.2 if a.kind == "spindle" else 0.0) for a in status.axes)
+    modal = replace(status.channel.modal, spindle_speed_rpm=-0.0, feed=-0.0,
+                    tool_length_mm=-0.0, tool_radius_mm=-0.0)
+    status = replace(status, axes=axes, channel=replace(status.channel, modal=modal,
+                                                        path_feed_mm_min=-0.0001))
+    shown = str(position_lines(status, False, None)) + str(position_lines(status, True, None))
+    shown += str(tfs_lines(status))
+    assert "-0" not in shown
+    assert "0.000" in shown and " 0 rpm" in shown
+
+
+async def test_machine_screen_shows_no_negative_zero() -> None:
+    """The whole JOG screen with an axis standing a hair below zero."""
+    fake = FakeNck(referenced=True)
+    fake.pos["X"] = -0.0002
+    fake.spindle_rpm = -0.3
+    app = HmiApp(fake, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert "-0.000" not in screen_text(app) and "-0 " not in screen_text(app)
+        await pilot.press("f1")  # MCS
+        await pilot.pause()
+        assert "-0.000" not in screen_text(app)
