@@ -163,10 +163,19 @@ class TableWindow(Widget):
     def __init__(self, id: str | None = None) -> None:  # noqa: A002
         super().__init__(id=id)
         self._model: tuple[DataTable, TableCursor, int, bool] | None = None
+        self._shown_key: object = None
 
     def show(self, table: DataTable, cursor: TableCursor, level: int, show_cursor: bool = True) -> None:
-        """Draw ``table`` with ``cursor`` for access level ``level`` (at the next repaint)."""
+        """Draw ``table`` with ``cursor`` for access level ``level`` (at the next repaint).
+
+        Nothing is repainted when table, cursor and level are what the window
+        already shows (the areas call this on every kernel snapshot).
+        """
         self._model = (table, cursor, level, show_cursor)
+        key = (table, cursor.row, cursor.column, cursor.top, level, show_cursor)
+        if key == self._shown_key:
+            return
+        self._shown_key = key
         self.refresh()
 
     def render(self) -> Text:
@@ -174,7 +183,9 @@ class TableWindow(Widget):
         if self._model is None:
             return Text("")
         table, cursor, level, show_cursor = self._model
-        return render_table(table, cursor, self.size.height or 30, level, show_cursor)
+        drawn = render_table(table, cursor, self.size.height or 30, level, show_cursor)
+        self._shown_key = (table, cursor.row, cursor.column, cursor.top, level, show_cursor)  # clamped
+        return drawn
 
 
 class ValueDialog(AreaDialog[str | None]):

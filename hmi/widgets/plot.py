@@ -134,11 +134,11 @@ class TracePlot(Widget):
 
     def set_data(self, times: Sequence[float], names: Sequence[str], units: Sequence[str],
                  curves: Sequence[Sequence[float]]) -> None:
-        """Show new samples; the cursor stays inside them."""
-        self.times = list(times)
-        self.names = list(names)
-        self.units = list(units)
-        self.curves = [list(c) for c in curves]
+        """Show new samples (no repaint when they are the ones shown); the cursor stays inside them."""
+        data = (list(times), list(names), list(units), [list(c) for c in curves])
+        if data == (self.times, self.names, self.units, self.curves):
+            return
+        self.times, self.names, self.units, self.curves = data
         self.cursor = min(self.cursor, max(len(self.times) - 1, 0))
         self._version += 1
         self.refresh()

@@ -52,12 +52,17 @@ class PositionWindow(Static):
 
     def __init__(self, **kwargs: object) -> None:
         super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
-        self._key: object = None
+        self._shown: Text | None = None
 
     def show(self, status: NckStatus, mcs: bool, selected_axis: str | None) -> None:
-        """Redraw only when the axes, the coordinate system or the selection changed."""
-        key = (status.axes, status.channel.modal.spindle_state, mcs, selected_axis)
-        if key == self._key:
+        """Redraw only when what the window shows changed.
+
+        The snapshot's axes also carry drive values (motor temperature, current)
+        that change at idle; comparing the rendered text keeps the window quiet
+        until a shown digit changes.
+        """
+        lines = position_lines(status, mcs, selected_axis)
+        if lines == self._shown:
             return
-        self._key = key
-        self.update(position_lines(status, mcs, selected_axis), layout=False)
+        self._shown = lines
+        self.update(lines, layout=False)
