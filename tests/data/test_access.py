@@ -117,6 +117,7 @@ def test_user_class_md_changes_the_matrix() -> None:
 
 
 def test_keyswitch_levels_and_fresh_state() -> None:
+    """Digest 828d-1 rank 5 (keyswitch levels, 002 L1319-1380)."""
     control = AccessControl(fresh_state())
     assert control.level == 7
     for position, level in [(0, 7), (1, 6), (2, 5), (3, 4)]:
@@ -130,6 +131,7 @@ def test_keyswitch_levels_and_fresh_state() -> None:
 
 
 def test_passwords_override_keyswitch_until_deleted() -> None:
+    """Digest 828d-1 rank 5: CUSTOMER 3, EVENING 2, SUNRISE 1 (002 L1440-1442)."""
     control = AccessControl(fresh_state())
     control.set_keyswitch(3)
     assert control.enter_password("CUSTOMER") == 3
@@ -142,6 +144,7 @@ def test_passwords_override_keyswitch_until_deleted() -> None:
 
 
 def test_wrong_long_and_padded_passwords() -> None:
+    """Digest 828d-1 rank 5 (at most 8 characters, wrong password keeps the level)."""
     control = AccessControl(fresh_state())
     with pytest.raises(PasswordError):
         control.enter_password("evening")  # case matters

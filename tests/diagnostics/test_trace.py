@@ -18,7 +18,10 @@ def start(nck, program: str) -> None:
 
 
 def test_following_error_at_f1000_with_kv1_is_one_mm() -> None:
-    """Kv = 1 (m/min)/mm, no feedforward: 1 m/min gives 1 mm following error (± 2 %)."""
+    """Kv = 1 (m/min)/mm, no feedforward: 1 m/min gives 1 mm following error (± 2 %).
+
+    Digest 828d-1 rank 1 (002 L837-842).
+    """
     nck = kernel(kv1_machine())
     start(nck, "FEED.MPF")
     assert nck.run_until(lambda k: k.positions_mcs()["X"] < -99.9, 30.0)  # N10 done
@@ -99,6 +102,7 @@ def test_csv_columns_and_format() -> None:
 
 
 def test_logbook_records_access_level_and_machine_data_changes() -> None:
+    """Digest 828d-1 rank 5 (level change written to the logbook)."""
     nck = kernel()
     assert nck.submit(cmd.EnterPassword("EVENING")) == cmd.Accepted()
     assert nck.submit(cmd.WriteData("MD32000[X]", 5000)) == cmd.Accepted()

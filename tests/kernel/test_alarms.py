@@ -36,6 +36,7 @@ def test_same_alarm_is_not_raised_twice() -> None:
 
 
 def test_clear_criteria() -> None:
+    """Digest 828d-1 rank 4: clear criteria CANCEL, NC START, RESET, POWER ON (002 L8931-8935)."""
     server = AlarmServer()
     for number in (1, 3000, 10203, 10208):
         server.raise_alarm(number, (), now_s=0.0)
@@ -51,6 +52,7 @@ def test_clear_criteria() -> None:
 
 
 def test_log_is_sequenced_with_come_and_go_times_and_bounded() -> None:
+    """Digest 828d-1 rank 4 (alarm log with times)."""
     server = AlarmServer(log_limit=10)
     server.raise_alarm(10203, (), now_s=1.0)
     first = server.last_seq

@@ -36,6 +36,7 @@ def test_long_g1_reaches_end_at_programmed_feed() -> None:
 
 
 def test_brisk_acceleration_equals_md32300() -> None:
+    """Digest 828d-1 rank 8 (BRISK at MD32300, 002 L1866, L7624)."""
     m = motion()
     run_to_idle(m, feed=[move("G1", 6000.0, X=100.0)])
     _rows, _v, a, _j = derivatives(m)
@@ -43,6 +44,7 @@ def test_brisk_acceleration_equals_md32300() -> None:
 
 
 def test_soft_limits_jerk_and_takes_longer_than_brisk() -> None:
+    """Digest 828d-1 rank 8 (SOFT limited by MD32431, 002 L7641)."""
     brisk = motion()
     t_brisk = run_to_idle(brisk, step_s=0.004, feed=[move("G1", 12000.0, X=100.0)])
     soft = motion()
@@ -70,6 +72,7 @@ def test_short_block_limit() -> None:
 
 
 def test_g64_corner_is_passed_with_reduced_nonzero_velocity() -> None:
+    """Digest 828d-1 rank 7 (G64: corner velocity above 0)."""
     m = motion()
     m.push(move("G1", 6000.0, X=50.0))
     m.push(move("G1", 6000.0, X=50.0, Y=50.0))
@@ -86,6 +89,7 @@ def test_g64_corner_is_passed_with_reduced_nonzero_velocity() -> None:
 
 
 def test_g60_stops_at_the_corner_and_waits_for_the_fine_window() -> None:
+    """Digest 828d-1 rank 7: G60 stops at the corner inside STOP_LIMIT_FINE (002 L1919, L4703-4761)."""
     m = motion(MD32620={"X": 0, "Y": 0}, MD32200={"X": 1.0, "Y": 1.0})
     m.push(move("G1", 6000.0, exact_stop=True, X=50.0))
     m.push(move("G1", 6000.0, X=50.0, Y=50.0))
@@ -100,6 +104,7 @@ def test_g60_stops_at_the_corner_and_waits_for_the_fine_window() -> None:
 
 
 def test_g602_changes_block_earlier_than_g601() -> None:
+    """Digest 828d-1 rank 7 (G601/G602/G603 block change order, 002 L4703-4761)."""
     def block_change(window: str) -> float:
         m = motion(MD32620={"X": 0, "Y": 0}, MD32200={"X": 1.0, "Y": 1.0})
         m.push(move("G1", 6000.0, exact_stop=True, window=window, X=50.0))
@@ -216,6 +221,7 @@ def test_arc_reaches_end_with_radius_kept() -> None:
 
 
 def test_kv_gives_following_error_v_over_kv() -> None:
+    """Digest 828d-1 rank 1: FE = v/Kv, F1000 at Kv 1 gives 1 mm (002 L837-842, L1855-1860)."""
     m = motion(MD32620={"X": 0}, MD32200={"X": 1.0})
     m.push(move("G1", 1000.0, X=100.0))
     m.advance(3.0)
@@ -225,6 +231,7 @@ def test_kv_gives_following_error_v_over_kv() -> None:
 
 
 def test_feedforward_reduces_following_error() -> None:
+    """Digest 828d-1 rank 1 (feedforward variant: FE near 0)."""
     m = motion()
     m.push(move("G1", 1000.0, X=100.0))
     m.advance(3.0)
@@ -232,6 +239,7 @@ def test_feedforward_reduces_following_error() -> None:
 
 
 def test_drive_values_follow_motion() -> None:
+    """Digest 828d-1 rank 20 (simulated axes still show a following error, 002 L1663)."""
     m = motion()
     before = m.axis_states()["X"].motor_temperature_c
     m.push(move("G1", 20000.0, X=400.0))

@@ -61,6 +61,7 @@ def test_jog_while_path_is_held() -> None:
 
 
 def test_reference_point_approach_of_all_axes_in_phases() -> None:
+    """Digest 828d-1 rank 20 (reference approach ends referenced at the reference value)."""
     m = motion(referenced=False)
     # Power-on position on the other side of the cam than the reference point.
     m.jog_increment("X", -50.0, 5000.0)

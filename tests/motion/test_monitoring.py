@@ -19,6 +19,7 @@ def test_every_motion_alarm_is_in_the_catalogue() -> None:
 
 
 def test_software_limit_in_auto_stops_before_the_block() -> None:
+    """Digest 828d-1 rank 3 (002 L2378-2400)."""
     m = motion()
     m.push(move("G1", 2000.0, X=400.0))
     bad = move("G1", 2000.0, X=600.0)
@@ -53,6 +54,7 @@ def test_arc_bulging_over_the_limit_is_refused() -> None:
 
 
 def test_working_area_limit_from_setting_data() -> None:
+    """Digest 828d-1 rank 14: 10730 in AUTO, 10631 in JOG, WALIMOF (002 L2456-2620)."""
     from nck.motion.system import PlannedMotion
     from tests.motion.helpers import machine
 
@@ -80,6 +82,7 @@ def test_working_area_limit_from_setting_data() -> None:
 
 
 def test_jog_stops_exactly_at_software_limit_then_10621_which_clears_itself() -> None:
+    """Digest 828d-1 rank 2: JOG stops at MD36110, then 10621 which clears on release (002 L2378-2400, L2453)."""
     m = motion()
     run_to_idle(m, feed=[move("G0", X=490.0)])
     m.jog_continuous("X", 1, 10000.0)
@@ -100,6 +103,7 @@ def test_jog_stops_exactly_at_software_limit_then_10621_which_clears_itself() ->
 
 
 def test_jog_unreferenced_passes_the_limit() -> None:
+    """Digest 828d-1 rank 2 (variant: limits act only once referenced, 002 L2392-2394)."""
     m = motion(referenced=False)
     m.jog_continuous("X", 1, 10000.0)
     m.advance(4.0)
@@ -110,6 +114,7 @@ def test_jog_unreferenced_passes_the_limit() -> None:
 
 
 def test_contour_monitoring_on_a_jam() -> None:
+    """Digest 828d-1 rank 10: 25050 and follow-up on a jam (002 L1885)."""
     m = motion()
     m.push(move("G1", 5000.0, X=100.0))
     m.advance(1.0)
@@ -127,6 +132,7 @@ def test_contour_monitoring_on_a_jam() -> None:
 
 
 def test_zero_speed_monitoring_after_a_push() -> None:
+    """Digest 828d-1 rank 11: 0.3 mm > MD36030 0.2 gives 25040 (002 L1970-2001)."""
     m = motion()
     m.advance(2.0)
     m.inject_fault("X", push_mm=0.1)
@@ -138,6 +144,7 @@ def test_zero_speed_monitoring_after_a_push() -> None:
 
 
 def test_clamping_monitoring_replaces_zero_speed_monitoring() -> None:
+    """Digest 828d-1 rank 16: 0.4 mm no alarm, 0.6 mm 26000 with MD36050 = 0.5 (002 L2014)."""
     m = motion()
     m.set_clamped("X", True)
     m.advance(2.0)
@@ -150,6 +157,7 @@ def test_clamping_monitoring_replaces_zero_speed_monitoring() -> None:
 
 
 def test_positioning_monitoring_when_exact_stop_fine_is_never_reached() -> None:
+    """Digest 828d-1 rank 12: 25080 after MD36020 (002 L1919-1943)."""
     m = motion()
     m.inject_fault("X", offset_mm=0.05)
     m.push(move("G1", 1000.0, X=10.0))
@@ -160,6 +168,7 @@ def test_positioning_monitoring_when_exact_stop_fine_is_never_reached() -> None:
 
 
 def test_speed_setpoint_limitation_when_max_velocity_exceeds_the_motor() -> None:
+    """Digest 828d-1 rank 15: 25060 above MD36210 (002 L2240)."""
     # MD32000 needs 3000 rpm at the motor, rated speed only 2000 rpm → 150 % > MD36210 110 %.
     m = motion(MD32260={"X": 2000.0})
     m.push(move("G0", X=400.0))
@@ -168,6 +177,7 @@ def test_speed_setpoint_limitation_when_max_velocity_exceeds_the_motor() -> None
 
 
 def test_actual_velocity_monitoring_on_a_runaway() -> None:
+    """Digest 828d-1 rank 15: 25030 above MD36200 (002 L2285-2292)."""
     m = motion()
     m.push(move("G0", X=400.0))
     m.advance(0.4)  # at MD32000 = 30000 mm/min
