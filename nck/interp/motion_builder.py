@@ -289,6 +289,9 @@ class MotionBuilder:
         for (address, ext), value in words.extended.items():
             if address == "S":
                 speeds[ext or 1] = value
+        if words.gcodes.get(3) in ("G25", "G26"):
+            self._speed_limits(words.gcodes[3], speeds)
+            speeds = {}
         for ext, value in words.m_codes:
             if value in SPINDLE_M:
                 spindle = ext or 1
@@ -329,6 +332,20 @@ class MotionBuilder:
                     modal.spindle_state = state if state != "SPOS" else "M19"
             out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed,
                                             position_deg=positions.get(spindle)))
+
+    def _speed_limits(self, code: str, speeds: dict[int, float]) -> None:
+        """``G25 S…`` / ``G26 S…``: the minimum / maximum speed of a spindle (002 L54093-54107),
+        kept in SD43210 / SD43220 of that spindle, where the spindle reads it."""
+        key = "SD43210" if code == "G25" else "SD43220"
+        table = self.data.setting_data.get(key)
+        table = dict(table) if isinstance(table, dict) else {}
+        for number, rpm in speeds.items():
+            if rpm < 0:
+                raise NcAlarmError(12160, "S")
+            if not 1 <= number <= len(self.machine.spindles):
+                raise NcAlarmError(12550, f"S{number}")  # no such spindle
+            table[self.machine.spindles[number - 1]] = float(rpm)
+        self.data.setting_data[key] = table
 
     def _g96_speed(self, modal: ModalState, geo: GeometryState) -> float:
         """Spindle speed for the constant cutting speed at the programmed transverse position."""

@@ -25,7 +25,7 @@ EDGE_MM = 1e-6
 _KEYS: dict[tuple[int, str], tuple[str, str]] = {}
 
 
-def _setting(data: Mapping[str, Any] | None, number: int, axis: str, default: Any) -> Any:
+def axis_setting(data: Mapping[str, Any] | None, number: int, axis: str, default: Any) -> Any:
     """Read setting datum ``SD<number>`` for ``axis`` (``{"SD43420": {"X": 1}}`` or ``"SD43420[X]"``)."""
     if not data:
         return default
@@ -61,10 +61,10 @@ class Limits:
         data = self.setting_data
         minus = -math.inf
         plus = math.inf
-        if bool(_setting(data, 43410, name, 0)):
-            minus = float(_setting(data, 43430, name, -math.inf))
-        if bool(_setting(data, 43400, name, 0)):
-            plus = float(_setting(data, 43420, name, math.inf))
+        if bool(axis_setting(data, 43410, name, 0)):
+            minus = float(axis_setting(data, 43430, name, -math.inf))
+        if bool(axis_setting(data, 43400, name, 0)):
+            plus = float(axis_setting(data, 43420, name, math.inf))
         return minus, plus
 
     def check_segment(self, segment: Segment, referenced: list[bool]) -> tuple[int, str, str] | None:

@@ -1,9 +1,11 @@
 """Spindles in speed control: ramped speed, angle, limits, simple drive values.
 
 The speed follows its setpoint with the acceleration of MD35200; the setpoint
-is clamped to the gear-stage limits (MD35130/MD35140) and the chuck limit
-MD35100 without an alarm: like the interface signals DB31 DBX83.1/83.2, the
-state says when the setpoint was limited or raised. M19/SPOS stop the spindle
+is clamped to the gear-stage limits (MD35130/MD35140), the chuck limit
+MD35100, the programmed limits G26/G25 (SD43220/SD43210) and the operator's
+limit SD43235 (read live: a change acts at once, 002 L54713-54718) without an
+alarm: like the interface signals DB31 DBX83.1/83.2, the state says when the
+setpoint was limited or raised. M19/SPOS stop the spindle
 and orient it (the orientation itself is not interpolated). Everything is
 closed-form per call, independent of the number of IPO cycles.
 """
@@ -13,6 +15,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from typing import Any, Mapping
+
+from nck.motion.limits import axis_setting
 from nck.motion.params import SpindleParams
 
 AMBIENT_C = 25.0
@@ -42,6 +47,7 @@ class Spindle:
         self.params = params
         self.state = SpindleState()
         self._accel_rpm_s = params.accel_rev_s2 * 60.0
+        self.setting_data: Mapping[str, Any] | None = None  # SD43210/43220/43235, read live
 
     def command(self, state: str | None, speed_rpm: float | None, position_deg: float | None = None) -> None:
         """M3/M4/M5/M19 and S: set the speed setpoint (or orient the spindle)."""
@@ -86,10 +92,18 @@ class Spindle:
         else:
             target = 0.0
         upper = min(p.max_rpm, p.gear_max_rpm)
+        lower = p.gear_min_rpm
+        data = self.setting_data
+        if data:
+            # 002 L55616-55630: G26/SD43220 is never exceeded, G25/SD43210 not undercut;
+            # 002 L54713-54718: the operator's SD43235 limits the setpoint too.
+            upper = min(upper, float(axis_setting(data, 43220, p.name, math.inf)),
+                        float(axis_setting(data, 43235, p.name, math.inf)))
+            lower = max(lower, float(axis_setting(data, 43210, p.name, 0.0)))
         requested = abs(target)
         magnitude = min(requested, upper)
         if magnitude > 0.0:
-            magnitude = max(magnitude, p.gear_min_rpm)
+            magnitude = min(max(magnitude, lower), upper)
         # The speed is clamped without an alarm; only the interface signals report it.
         st.setpoint_limited = requested > upper
         st.setpoint_increased = 0.0 < requested < magnitude
@@ -99,6 +113,8 @@ class Spindle:
         """Ramp the speed towards its setpoint and turn the spindle."""
         st = self.state
         p = self.params
+        if self.setting_data:
+            self._update_setpoint()  # the limits in the setting data act at once
         start = st.actual_rpm
         diff = st.setpoint_rpm - start
         ramp_s = abs(diff) / self._accel_rpm_s

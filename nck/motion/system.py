@@ -254,8 +254,12 @@ class PlannedMotion(PathInterpolator):
         return k
 
     def _advance_spindles(self, cycles: int) -> None:
+        master = self._master()
+        before = master.state.setpoint_rpm if master is not None else 0.0
         for spindle in self.spindles.values():
             spindle.advance(cycles * self.T)
+        if master is not None and master.state.setpoint_rpm != before:
+            self._follow_spindle()  # a speed limit in the setting data changed
 
     def is_idle(self) -> bool:
         """True when nothing is buffered or moving and every axis is in its coarse window."""
@@ -436,8 +440,10 @@ class PlannedMotion(PathInterpolator):
             self.plan_pos = None
 
     def attach_setting_data(self, setting_data: Mapping[str, Any]) -> None:
-        """Read the working-area setting data SD43400 … SD43430 live from ``setting_data``."""
+        """Read the working-area (SD43400 … SD43430) and spindle-limit setting data live."""
         self.limits.setting_data = setting_data
+        for spindle in self.spindles.values():
+            spindle.setting_data = setting_data
 
     def set_workarea_monitoring(self, active: bool) -> None:
         """WALIMON / WALIMOF."""

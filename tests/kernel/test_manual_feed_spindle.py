@@ -126,3 +126,48 @@ def test_iso_g04_under_g95_counts_revolutions_with_md20734_bit_2() -> None:
             times[mask, name] = result.machine_time_s
     assert times[4, "dwell"] - times[4, "base"] == pytest.approx(0.5, abs=0.05)
     assert times[0, "dwell"] - times[0, "base"] == pytest.approx(5.0, abs=0.05)
+
+
+# ----------------------------------------------------------------------------- G25/G26, SD43235
+def spindle_rpm(nck: Nck) -> float:
+    return nck.motion.spindles["SP"].state.actual_rpm
+
+
+def test_g26_limits_the_spindle_speed_and_the_revolutional_feed() -> None:
+    # 002 L54101-54107 and L55616-55618: G26 S… sets the maximum speed (SD43220), which
+    # cannot be exceeded: S1000 turns at 500 rpm; F0.1 mm/rev then gives 50 mm/min (12 s for 10 mm).
+    programs = {"P.MPF": "N5 G26 S500\n" + RPM_1000_UP + "N20 G1 X10 F0.1\nN30 M30",
+                "Q.MPF": RPM_1000_UP + "N20 G1 X10 F0.1\nN30 M30"}
+    limited = make(programs)
+    assert run_time_s(limited, "P.MPF") - run_time_s(make(programs), "Q.MPF") == pytest.approx(6.0, abs=0.1)
+    assert limited.data.setting_data["SD43220"] == {"SP": 500.0}
+
+
+def test_g25_raises_the_spindle_speed_to_the_minimum() -> None:
+    # 002 L55624-55630: the speed may not fall below G25 / SD43210.
+    nck = make({"P.MPF": "N5 G25 S300\nN10 S100 M3\nN20 G4 F2\nN30 M0\nN40 M30"})
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.channel != "active", 10.0)
+    assert spindle_rpm(nck) == pytest.approx(300.0)
+
+
+def test_operator_speed_limit_sd43235_acts_at_once() -> None:
+    # 002 L54713-54718: the operator's maximum speed SD43235 acts immediately on the setpoint.
+    nck = make({"P.MPF": "N10 S1000 M3\nN20 G4 F10\nN30 M30"})
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    nck.tick(2.0)
+    assert spindle_rpm(nck) == pytest.approx(1000.0)
+    nck.data.setting_data["SD43235"] = {"SP": 800.0}
+    nck.tick(2.0)
+    assert spindle_rpm(nck) == pytest.approx(800.0)
+
+
+def test_sd43235_is_10000_rpm_as_delivered() -> None:
+    # 002 L54720: as standard setting SD43235 limits the speed to 10,000 rpm.
+    from nck.machine_data import catalog
+
+    assert catalog().get("SD43235").default == 10000.0
