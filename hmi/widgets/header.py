@@ -54,6 +54,29 @@ def alarm_class(category: str) -> str:
     return "-alarm-red"
 
 
+PROGRAM_INFLUENCES = (
+    ("single_block", "SBL"),
+    ("dry_run", "DRY"),
+    ("m01", "M01"),
+    ("program_test", "PRT"),
+    ("rapid_override", "ROV"),
+    ("skip_levels", "SKP"),
+)
+"""Program influences in the order of the Program control view, with their status-line names."""
+
+
+def influence_text(program_control: object) -> str:
+    """The active program influences as the status line names them (``SBL DRY ROV``).
+
+    002 L18120: active single block shows in the status line; the other
+    influences of the Program control view are shown beside it the same way.
+    """
+    get = getattr(program_control, "get", None)
+    if get is None:
+        return ""
+    return " ".join(name for key, name in PROGRAM_INFLUENCES if get(key))
+
+
 def format_override(value: object) -> str:
     """Return an override percentage without a needless decimal point."""
     try:
@@ -72,6 +95,7 @@ class AreaHeader(Vertical):
         yield Static("", id="hdr-alarm", markup=False)
         with Horizontal(id="hdr-line3"):
             yield Static("", id="hdr-program", markup=False)
+            yield Static("", id="hdr-influences", markup=False)
             yield Static("", id="hdr-overrides", markup=False)
 
     def show(self, area_title: str, status: NckStatus | None, hint: str = "") -> None:
@@ -79,11 +103,13 @@ class AreaHeader(Vertical):
         state = self.query_one("#hdr-state", Static)
         alarm = self.query_one("#hdr-alarm", Static)
         program = self.query_one("#hdr-program", Static)
+        influences = self.query_one("#hdr-influences", Static)
         overrides_line = self.query_one("#hdr-overrides", Static)
         if status is None:
             self._set(state, f" {area_title}  │ NCK not connected")
             self._set(alarm, "")
             self._set(program, "")
+            self._set(influences, "")
             self._set(overrides_line, "")
             return
         channel = status.channel
@@ -111,6 +137,7 @@ class AreaHeader(Vertical):
             f"Spindle {format_override(overrides.get('spindle', 100))} % "
         )
         self._set(program, f" {selected}")
+        self._set(influences, influence_text(channel.program_control))
         self._set(overrides_line, right)
 
     @staticmethod
