@@ -60,6 +60,7 @@ EXPECTED_MD_LEVEL = {"MD32000[X]": 2, "MD36110[X]": 2, "MD28050": 1, "MD9004": 3
 
 @pytest.mark.parametrize("level", range(1, 8))
 def test_protected_action_matrix(level: int) -> None:
+    """Digest 828d-3 rank 3."""
     control = control_at(level)
     for action, highest in EXPECTED_LEVEL.items():
         assert control.may(action) is (level <= highest), (action, level)
@@ -117,7 +118,10 @@ def test_user_class_md_changes_the_matrix() -> None:
 
 
 def test_keyswitch_levels_and_fresh_state() -> None:
-    """Digest 828d-1 rank 5 (keyswitch levels, 002 L1319-1380)."""
+    """Digest 828d-1 rank 5 (keyswitch levels, 002 L1319-1380).
+
+    Digest 828d-3 rank 1: positions 0-3 give levels 7-4; bits 1 and 4 together give position 3 (002 L1453-1478).
+    """
     control = AccessControl(fresh_state())
     assert control.level == 7
     for position, level in [(0, 7), (1, 6), (2, 5), (3, 4)]:
@@ -131,7 +135,10 @@ def test_keyswitch_levels_and_fresh_state() -> None:
 
 
 def test_passwords_override_keyswitch_until_deleted() -> None:
-    """Digest 828d-1 rank 5: CUSTOMER 3, EVENING 2, SUNRISE 1 (002 L1440-1442)."""
+    """Digest 828d-1 rank 5: CUSTOMER 3, EVENING 2, SUNRISE 1 (002 L1440-1442).
+
+    Digest 828d-3 rank 2 (002 L1413-1452).
+    """
     control = AccessControl(fresh_state())
     control.set_keyswitch(3)
     assert control.enter_password("CUSTOMER") == 3
@@ -144,7 +151,10 @@ def test_passwords_override_keyswitch_until_deleted() -> None:
 
 
 def test_wrong_long_and_padded_passwords() -> None:
-    """Digest 828d-1 rank 5 (at most 8 characters, wrong password keeps the level)."""
+    """Digest 828d-1 rank 5 (at most 8 characters, wrong password keeps the level).
+
+    Digest 828d-3 rank 2: case-sensitive, 9 characters refused, level unchanged.
+    """
     control = AccessControl(fresh_state())
     with pytest.raises(PasswordError):
         control.enter_password("evening")  # case matters
@@ -208,6 +218,7 @@ def test_action_for_write(name: str, action: Action | None) -> None:
 
 
 def test_require_write_matrix() -> None:
+    """Digest 828d-3 rank 3: access needs current level <= required level (002 L1479-1632)."""
     control = control_at(7)
     with pytest.raises(AccessDenied) as refused:
         control.require_write("$P_UIFR[1,X,TR]")

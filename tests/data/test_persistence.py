@@ -96,6 +96,7 @@ def test_passwords_are_stored_only_as_salted_hashes(tmp_path: Path) -> None:
 
 
 def test_password_survives_power_off_on(tmp_path: Path) -> None:
+    """Digest 828d-3 rank 2 (level survives POWER OFF/ON)."""
     session = open_session(tmp_path)
     session.access.enter_password("EVENING")
     session = session.power_on()

@@ -36,7 +36,10 @@ def test_same_alarm_is_not_raised_twice() -> None:
 
 
 def test_clear_criteria() -> None:
-    """Digest 828d-1 rank 4: clear criteria CANCEL, NC START, RESET, POWER ON (002 L8931-8935)."""
+    """Digest 828d-1 rank 4: clear criteria CANCEL, NC START, RESET, POWER ON (002 L8931-8935).
+
+    Digest 828d-3 rank 25 (NC alarms cleared by RESET, 10208 by NC START, POWER ON alarms survive RESET).
+    """
     server = AlarmServer()
     for number in (1, 3000, 10203, 10208):
         server.raise_alarm(number, (), now_s=0.0)

@@ -28,6 +28,7 @@ def run_time_s(nck: Nck, program: str) -> float:
 
 
 def test_feed_override_reaches_200_percent() -> None:
+    """Digest 828d-3 rank 9 (200 %)."""
     # 002 L56312-56313: an override between 0 and 200 % for the path feed; feeds are multiplied.
     # 100 mm at F1000 takes 6 s at 100 % and 3 s at 200 % (ramps add a little to both).
     programs = {"P.MPF": "N10 G1 X100 F1000\nN20 M30"}
@@ -47,6 +48,7 @@ def test_spindle_override_accepts_0_to_200_percent() -> None:
 
 
 def test_rapid_override_by_the_feed_switch_is_limited_to_100_percent() -> None:
+    """Digest 828d-3 rank 9 (rapid override clamped to 100 %)."""
     # 002 L56314-56315 and L56369-56370: rapid override 0 … 100 %; when the feed switch acts
     # as rapid override, feed overrides above 100 % count as 100 % for rapid traverse.
     # The instant motion stand-in moves G0 at exactly rapid × override (no axis limit to hide it).
@@ -64,6 +66,7 @@ RPM_1000_UP = "N10 G95 S1000 M3\nN15 G4 F2\n"  # the dwell lets the spindle reac
 
 
 def test_revolutional_feed_follows_the_spindle_override() -> None:
+    """Digest 828d-3 rank 11."""
     # 002 L55411-55420: the G95 path velocity comes from the actual spindle speed, V = F × n.
     # F0.1 mm/rev at 1000 rpm: 100 mm/min, 10 mm in 6 s; spindle override 50 %: 500 rpm,
     # 50 mm/min, 12 s (002 L56318: the spindle override acts on the speed).

@@ -120,6 +120,7 @@ def test_jog_refused_in_auto() -> None:
 
 
 def test_feed_override_zero_holds_the_path_but_stays_running() -> None:
+    """Digest 828d-3 rank 9 (0 % holds, program stays running)."""
     nck = make_nck({"P": "N10 G1 X10 F600\nN20 M30"})
     auto_start(nck, "P")
     nck.tick(0.5)

@@ -47,6 +47,7 @@ def test_program_runs_to_end_with_real_blocks() -> None:
 
 
 def test_single_block_sbl1_and_m0_with_the_real_interpreter() -> None:
+    """Digest 828d-3 rank 6 and 828d-2 rank 10 (real interpreter)."""
     nck = make({"P.MPF": "N10 G1 X10 F6000\nN20 R1=5\nN30 X20\nN40 M0\nN50 X30\nN60 M30"})
     nck.submit(c.SetProgramControl("single_block", "SBL1"))
     start(nck, "P.MPF")

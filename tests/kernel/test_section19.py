@@ -159,7 +159,10 @@ def test_06_program_selection_only_in_reset() -> None:
 
 # 7 -------------------------------------------------------------------------
 def test_07_mode_change_blocked_while_active_then_allowed_after_stop() -> None:
-    """Digest 828d-2 rank 7."""
+    """Digest 828d-2 rank 7.
+
+    Digest 828d-3 rank 5.
+    """
     nck = at_x40()
     result = nck.submit(c.SelectMode("JOG"))
     assert isinstance(result, c.Rejected)
@@ -172,7 +175,10 @@ def test_07_mode_change_blocked_while_active_then_allowed_after_stop() -> None:
 
 # 8 -------------------------------------------------------------------------
 def test_08_interrupt_jog_away_and_repos_back_on_nc_start() -> None:
-    """Digest 828d-2 rank 8."""
+    """Digest 828d-2 rank 8.
+
+    Digest 828d-3 rank 5.
+    """
     nck = at_x40()
     nck.submit(c.CycleStop())
     stop_x = x(nck)
@@ -245,7 +251,10 @@ def test_10_single_block_sbl1_skips_calculation_blocks() -> None:
 
 
 def test_10b_single_block_sbl2_stops_after_every_block() -> None:
-    """Digest 828d-2 rank 10."""
+    """Digest 828d-2 rank 10.
+
+    Digest 828d-3 rank 6.
+    """
     nck = make_nck({"P": SBL_PROGRAM})
     assert _stops(nck, "SBL2") == ["N10", "N20", "N30"]
     assert states(nck) == ("AUTO", "reset", "aborted")
@@ -253,7 +262,10 @@ def test_10b_single_block_sbl2_stops_after_every_block() -> None:
 
 # 11 ------------------------------------------------------------------------
 def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
-    """Digest 828d-2 rank 11."""
+    """Digest 828d-2 rank 11.
+
+    Digest 828d-3 rank 7.
+    """
     program = "N10 M01\nN20 M00\nN30 G1 X5 F1000\nN40 M30"
     nck = make_nck({"P": program})
     auto_start(nck, "P")
@@ -275,7 +287,10 @@ def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
 
 # 12 ------------------------------------------------------------------------
 def test_12_program_end_counts_parts_and_keeps_runtime_reset_does_not() -> None:
-    """Digest 828d-2 rank 12."""
+    """Digest 828d-2 rank 12.
+
+    Digest 828d-3 rank 7 (M30).
+    """
     nck = make_nck({"P": "N10 G91 G1 X10 F600\nN20 M30"})
     auto_start(nck, "P")
     assert until_state(nck, "reset", "aborted")
@@ -294,7 +309,10 @@ def test_12_program_end_counts_parts_and_keeps_runtime_reset_does_not() -> None:
 
 # 13 ------------------------------------------------------------------------
 def test_13_emergency_stop_needs_release_and_reset_axes_stay_referenced() -> None:
-    """Digest 828d-2 rank 13."""
+    """Digest 828d-2 rank 13.
+
+    Digest 828d-3 rank 8.
+    """
     nck = at_x40()
     nck.submit(c.EmergencyStop(True))
     at_estop = x(nck)

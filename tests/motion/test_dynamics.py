@@ -157,6 +157,7 @@ def test_repos_returns_to_the_hold_point_after_jog() -> None:
 
 
 def test_feed_override_50_percent_doubles_time_of_long_g1() -> None:
+    """Digest 828d-3 rank 9 (50 % doubles the block time)."""
     def duration(percent: float) -> float:
         m = motion()
         m.set_overrides(percent, 100.0)

@@ -116,6 +116,7 @@ def test_reference_cam_not_found_raises_20000() -> None:
 
 
 def test_spindle_ramps_to_speed_and_jogs() -> None:
+    """Digest 828d-3 rank 16 (spindle ramps to speed)."""
     m = motion()
     m.spindle_command(SpindleCommand(Source("T", 1), 1, state="M3", speed_rpm=3000.0))
     m.advance(0.5)

@@ -113,6 +113,7 @@ def corner(direction_deg, mode, settings=None):
 
 
 def test_90_degree_outside_corner_g450_circle():
+    """Digest 828d-3 rank 23 (G450: arc round the corner point)."""
     out = corner(-90, "G450")
     assert_path(out[1:4], [
         ("N20", "G1", (0, 5), (50, 5)),
@@ -123,6 +124,7 @@ def test_90_degree_outside_corner_g450_circle():
 
 
 def test_90_degree_outside_corner_g451_intersection():
+    """Digest 828d-3 rank 23 (G451: intersection)."""
     # The offset lines y = 5 and x = 55 meet at (55, 5): r from both edges.
     out = corner(-90, "G451")
     assert_path(out[1:3], [
@@ -257,6 +259,7 @@ def test_pocket_that_fits():
 
 
 def test_pocket_corner_too_tight_raises_10751_and_nothing_passes_it():
+    """Digest 828d-3 rank 23 (10751)."""
     # r = 5 needs 10 mm: the offsets of the 8 mm bottom (y = 5 from x = 5) and of the
     # far side (x = 3) cross before the bottom block starts; no later offset meets
     # it within MD20240 blocks → collision danger.
@@ -288,6 +291,7 @@ def test_inside_arc_smaller_than_tool_raises_10758():
 
 
 def test_step_shorter_than_radius_is_skipped_with_warning_10763():
+    """Digest 828d-3 rank 23 (10763)."""
     # A 1 mm step up under G41 r=5: the offset of the step (x = 15, y 0…1) never
     # meets y = 5; the next piece, the transition circle R5 about (20, 1), does at
     # x = 20 − √(5² − 4²) = 17. The step block is left out (warning 10763).

@@ -28,6 +28,7 @@ def straight(approach_from, retract_to, approach="NORM", mode="G450", retract_mo
 
 
 def test_norm_approach_and_retract_go_to_the_normal_points():
+    """Digest 828d-3 rank 22 (G41 centre path R to the left; G40 ends on the programmed point, NORM)."""
     # NORM: straight to (0, 5), perpendicular to the first block at its start,
     # and straight from (50, 5) to the end point — wherever the start/end point is.
     out = compensate(straight((20, -10), (30, -10)))
@@ -79,6 +80,7 @@ def test_kont_g451_from_behind_uses_the_intersection():
 
 
 def test_selection_only_in_linear_block_10753():
+    """Digest 828d-3 rank 22 (G41 in a G2 block is refused)."""
     block = circ((0, 0), (10, 10), (0, 10), "N10", ccw=True)
     comp = RadiusCompensator()
     with pytest.raises(NcAlarmError) as info:
@@ -98,6 +100,7 @@ def test_deselection_only_in_linear_block_10754():
 
 
 def test_d0_while_active_raises_10750_and_keeps_compensation():
+    """Digest 828d-3 rank 22 (D0 while G41 active: 10750, compensation kept)."""
     comp = RadiusCompensator()
     comp.feed(lin((-10, 0), (0, 0), "N10"))
     comp.feed(lin((0, 0), (20, 0), "N20"))
@@ -110,6 +113,7 @@ def test_d0_while_active_raises_10750_and_keeps_compensation():
 
 
 def test_d0_selects_nothing():
+    """Digest 828d-3 rank 22 (G41 with D0: no compensation)."""
     blocks = [lin((-10, 0), (0, 0), "N10", edge=0), lin((0, 0), (20, 0), "N20", edge=0)]
     out = compensate(blocks)
     assert [o.role for o in out] == ["uncompensated", "uncompensated"]

@@ -58,6 +58,7 @@ def test_external_profile_nose_centre_path():
 
 
 def test_edge_position_3_tip_touches_cylinder_and_face():
+    """Digest 828d-3 rank 24 (edge position 3, r = 0.8)."""
     # The length refers to the tip P = S + (−r, −r) for SL3. On the cylinder P runs
     # exactly on Ø20 (X 10), on the shoulder exactly on Z −30: no dimension error on
     # faces and diameters. On the taper P is off the contour (that is what S corrects).
@@ -97,6 +98,7 @@ def test_cutting_edge_position_table():
 
 
 def test_cutting_edge_position_0_is_an_alarm():
+    """Digest 828d-3 rank 24 (DP2 = 0 invalid)."""
     with pytest.raises(NcAlarmError) as info:
         ce.tip_offset(0, 0.8)
     assert info.value.number == 10799

@@ -204,12 +204,14 @@ def test_thread_dwell_and_spindle() -> None:
 
 
 def test_feed_type_change_deletes_f() -> None:
+    """Digest 828d-3 rank 12: G94 -> G95 without F gives 10860 (002 L56880-56882)."""
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 G1 X10 F100", "N20 G95 S100 M3", "N30 G1 X20", "N40 M30"))
     assert info.value.number == 10860
 
 
 def test_g96_needs_a_transverse_axis_and_computes_the_speed_on_a_lathe() -> None:
+    """Digest 828d-3 rank 14 (n = v / (2 pi r), 10870)."""
     with pytest.raises(NcAlarmError) as info:
         run(lines("N10 G96 S200 M3", "N20 M30"))
     assert info.value.number == 10870

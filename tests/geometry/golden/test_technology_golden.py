@@ -50,6 +50,7 @@ def test_cip_with_the_intermediate_point_between_is_a_straight_line() -> None:
 
 
 def test_inverse_time_and_axis_feed() -> None:
+    """Digest 828d-3 rank 13: G93 F2 -> block time 0.5 min whatever the length."""
     r = run(lines("N10 G93 G1 X30 Y40 F2", "N20 G94 FA[X]=500 G1 X0 F100", "N30 M30"))
     # G93 F2: the block takes 1/2 min; length 50 mm -> 100 mm/min.
     assert r.block(10)[0].feed_mm_min == pytest.approx(100.0)
@@ -66,6 +67,7 @@ def test_m19_spindle_position_and_lims() -> None:
 
 
 def test_tool_change_default_edge_and_d0() -> None:
+    """Digest 828d-3 rank 20: M6 activates D1 (MD20270), D0 removes the length."""
     r = run(lines("N10 T1", "N20 M6", "N30 G0 Z0", "N40 D0", "N50 G0 Z0", "N60 M30"), mill_data())
     # M6 activates D1 (MD20270 default); the length 100 acts on Z.
     assert r.end_mcs(30)["Z"] == pytest.approx(100.0)
@@ -73,6 +75,7 @@ def test_tool_change_default_edge_and_d0() -> None:
 
 
 def test_tool_length_follows_the_plane_and_wear() -> None:
+    """Digest 828d-3 rank 21 (plane mapping of L1/L2 with wear)."""
     data = NcData()
     data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 100.0, 4: 20.0, 12: -0.5})
     r = run(lines("N10 T1 M6 D1", "N20 G17 G0 X0 Y0 Z0", "N30 G18 X0 Y0 Z0", "N40 G19 X0 Y0 Z0",
