@@ -188,13 +188,7 @@ class AlarmServer:
     # -- internals ------------------------------------------------------------
     def _prefixed(self, definition: AlarmDefinition, params: tuple[str, ...], block: str) -> tuple[str, ...]:
         """Put the channel and block in front when the text starts with them."""
-        text = definition.text
-        prefix: list[str] = []
-        if "Channel %1" in text or "channel %1" in text:
-            prefix.append(CHANNEL_NUMBER)
-            if "block %2" in text or "Block %2" in text:
-                prefix.append(block)
-        return tuple(prefix) + params
+        return definition.with_channel(params, CHANNEL_NUMBER, block)
 
     def _went(self, entry: AlarmEntry, now_s: float) -> None:
         gone = replace(entry, went_s=now_s)

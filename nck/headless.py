@@ -22,7 +22,6 @@ from nck.interp.api import ProgramSource
 from nck.interp.interpreter import Interpreter
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
-from nck.resources import alarm_text
 
 DEFAULT_RAPID_MM_MIN = 10000.0
 
@@ -434,4 +433,5 @@ def alarm_message(alarm: NcAlarmError) -> str:
     if alarm.number not in alarm_catalog():
         kind = "cycle/user alarm" if 60000 <= alarm.number <= 69999 else "alarm"
         return " ".join([f"Channel 1 block {block}: {kind} {alarm.number}", *alarm.params])
-    return alarm_text(alarm.number, ("1", block, *alarm.params))
+    definition = alarm_catalog()[alarm.number]
+    return definition.format(definition.with_channel(alarm.params, "1", block))

@@ -28,6 +28,13 @@ start a file that cannot be read (truncated, garbage, wrong section or a
 the backup is unusable too the section starts from standard values with alarm
 4060. A section is never reset silently.
 
+"Cannot be read" covers hostile files too: an entry that is not a regular file
+(a link — never followed —, a FIFO, a device), a file larger than
+:data:`SECTION_LIMIT_BYTES`, nesting deeper than :data:`NESTING_LIMIT`, numbers
+that are not finite or beyond :data:`INTEGER_LIMIT`, an R parameter count
+beyond the largest ``MD28050`` allows, and machine or setting data of the wrong
+type or outside the catalogue's limits.
+
 :class:`Session` ties it together for one data directory and one machine:
 NC data, MD/SD store, access control, NC file system; ``save()`` writes the
 sections that changed, ``power_on()`` restarts from the files.
@@ -39,6 +46,8 @@ import base64
 import copy
 import dataclasses
 import json
+import math
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
@@ -47,8 +56,9 @@ from nck.access import AccessControl, AccessState, default_password_hashes
 from nck.atomic import atomic_write_bytes, atomic_write_text, backup_path, remove_stale_temp_files
 from nck.errors import NcAlarmError
 from nck.machine import MachineConfig, load_machine
-from nck.machine_data import MachineDataStore, catalog, fill_setting_defaults
+from nck.machine_data import DataError, MachineDataStore, catalog, fill_setting_defaults
 from nck.ncdata import NcData, ToolEdge, WorkOffset
+from nck.regular_files import read_regular_bytes
 from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError
@@ -62,6 +72,12 @@ NC_DIR = "nc"
 ALARM_LOG_LIMIT = 500
 ALARM_FROM_BACKUP = 4065
 ALARM_DEFAULTS_LOADED = 4060
+SECTION_LIMIT_BYTES = 32 * 1024 * 1024
+"""Largest retained file read (the biggest real one, a full tool list, is a few MB)."""
+NESTING_LIMIT = 32
+"""Deepest nesting of tables and lists in a retained file (the data need 7 at most)."""
+INTEGER_LIMIT = 2**63 - 1
+"""Largest integer magnitude in a retained file (the control's data are at most 64 bit)."""
 
 
 class BadFile(Exception):
@@ -88,6 +104,26 @@ def _number(value: Any) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ValueError(f"{value!r} is not a number")
     return float(value)
+
+
+def _check_document(document: Any) -> None:
+    """Raise BadFile for nesting deeper than NESTING_LIMIT, non-finite or oversized numbers.
+
+    Walks iteratively, so a deep document cannot exhaust the stack; every later
+    reader (loaders, ``json.dumps`` on save) may then recurse safely.
+    """
+    pending = [(document, 1)]
+    while pending:
+        value, depth = pending.pop()
+        if isinstance(value, (dict, list)):
+            if depth > NESTING_LIMIT:
+                raise BadFile(f"nested deeper than {NESTING_LIMIT} levels")
+            items = value.values() if isinstance(value, dict) else value
+            pending.extend((item, depth + 1) for item in items)
+        elif isinstance(value, float) and not math.isfinite(value):
+            raise BadFile(f"holds the number {value!r}")
+        elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > INTEGER_LIMIT:
+            raise BadFile("holds an integer beyond 64 bits")
 
 
 def _integer(value: Any) -> int:
@@ -170,6 +206,9 @@ def _load_r(data: Mapping[str, Any], rd: RetainedData) -> None:
     values = {int(i): _number(v) for i, v in _mapping(data["values"]).items()}
     if count < 0 or any(i < 0 for i in values):
         raise ValueError("negative R parameter index")
+    limit = catalog().get("MD28050").max
+    if count > limit or any(i >= limit for i in values):
+        raise ValueError(f"more than {limit:g} R parameters (the most MD28050 allows)")
     r = [0.0] * max(count, max(values, default=-1) + 1)
     for index, value in values.items():
         r[index] = value
@@ -189,28 +228,34 @@ def _dump_sd(rd: RetainedData) -> dict[str, Any]:
 
 
 def _load_sd(data: Mapping[str, Any], rd: RetainedData) -> None:
-    rd.ncdata.setting_data = dict(_plain(_mapping(data["values"])))
+    rd.ncdata.setting_data = _checked_catalog_values(data["values"])
 
 
 def _dump_md(rd: RetainedData) -> dict[str, Any]:
     return {"machines": _plain(rd.md_by_machine)}
 
 
-def _load_md(data: Mapping[str, Any], rd: RetainedData) -> None:
-    machines: dict[str, dict[str, Any]] = {}
+def _checked_catalog_values(values: Any) -> dict[str, Any]:
+    """Machine or setting data by key, each element of the catalogue's type and within its limits.
+
+    Raises DataValueError (a DataError) for a value the catalogue refuses.
+    """
     cat = catalog()
-    for machine, values in _mapping(data["machines"]).items():
-        checked: dict[str, Any] = {}
-        for key, value in _mapping(values).items():
-            definition = cat.get(key)
-            if definition is not None:  # unknown keys (an older catalogue) are kept as they are
-                items = value.values() if isinstance(value, dict) else [value]
-                for item in items:
-                    for element in item if isinstance(item, list) else [item]:
-                        definition.coerce(element)
-            checked[key] = _plain(value)
-        machines[str(machine)] = checked
-    rd.md_by_machine = machines
+    checked: dict[str, Any] = {}
+    for key, value in _mapping(values).items():
+        definition = cat.get(key)
+        if definition is not None:  # unknown keys (an older catalogue) are kept as they are
+            items = value.values() if isinstance(value, dict) else [value]
+            for item in items:
+                for element in item if isinstance(item, list) else [item]:
+                    definition.coerce(element)
+        checked[key] = _plain(value)
+    return checked
+
+
+def _load_md(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.md_by_machine = {str(machine): _checked_catalog_values(values)
+                        for machine, values in _mapping(data["machines"]).items()}
 
 
 def _dump_access(rd: RetainedData) -> dict[str, Any]:
@@ -247,7 +292,7 @@ def _load_alarm_log(data: Mapping[str, Any], rd: RetainedData) -> None:
     entries = []
     for entry in data["entries"]:
         entry = dict(_plain(_mapping(entry)))
-        _integer(entry["number"])
+        alarm_entry_from_dict(entry)  # every field of the right type
         entries.append(entry)
     rd.alarm_log = entries[-ALARM_LOG_LIMIT:]
 
@@ -283,6 +328,11 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
         if not raw.strip():
             raise BadFile("empty file") from exc
         raise BadFile(f"truncated or garbled at byte {exc.pos}") from exc
+    except ValueError as exc:  # the parser's own limit on the digits of an integer
+        raise BadFile("holds a number with too many digits") from exc
+    except RecursionError as exc:
+        raise BadFile(f"nested deeper than {NESTING_LIMIT} levels") from exc
+    _check_document(document)
     if not isinstance(document, dict) or document.get("format") != FORMAT:
         raise BadFile("not a retained-data file")
     if document.get("section") != name:
@@ -294,7 +344,7 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     scratch = RetainedData(copy.copy(rd.ncdata), rd.md_by_machine, rd.access, rd.alarm_log)
     try:
         SECTIONS[name][1](_mapping(document["data"]), scratch)
-    except (KeyError, TypeError, ValueError, AttributeError) as exc:
+    except (KeyError, TypeError, ValueError, AttributeError, DataError) as exc:
         raise BadFile(f"unexpected content ({exc})") from exc
     # apply only after the whole section was read without error
     rd.ncdata = scratch.ncdata
@@ -308,31 +358,41 @@ def _set_aside(path: Path) -> Path:
     n = 1
     while True:
         target = path.with_name(f"{path.name}.bad-{n}")
-        if not target.exists():
+        if not os.path.lexists(target):
             path.rename(target)
             return target
         n += 1
+
+
+def _read_section_file(path: Path) -> bytes:
+    """The content of a retained file; BadFile for a link, FIFO, device or an oversized file."""
+    try:
+        return read_regular_bytes(path, SECTION_LIMIT_BYTES)
+    except OSError as exc:
+        if isinstance(exc, FileNotFoundError):
+            raise
+        raise BadFile(exc.strerror or str(exc)) from exc
 
 
 def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmError]:
     """Load one section with recovery from its backup; return the alarms to raise."""
     main = directory / f"{name}.json"
     backup = backup_path(main)
-    if not main.exists() and not backup.exists():
+    if not os.path.lexists(main) and not os.path.lexists(backup):
         return []
     reason = "file missing"
-    if main.exists():
+    if os.path.lexists(main):
         try:
-            parse_section(name, main.read_bytes(), rd)
+            parse_section(name, _read_section_file(main), rd)
             return []
         except BadFile as exc:
             reason = str(exc)
         kept = _set_aside(main).name
     else:
         kept = "-"
-    if backup.exists():
+    if os.path.lexists(backup):
         try:
-            raw = backup.read_bytes()
+            raw = _read_section_file(backup)
             parse_section(name, raw, rd)
             atomic_write_bytes(main, raw)  # the backup becomes the file again
             return [NcAlarmError(ALARM_FROM_BACKUP, main.name, reason, kept)]
@@ -344,12 +404,18 @@ def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmEr
 def alarm_entry_from_dict(data: Mapping[str, Any]) -> AlarmEntry:
     """An alarm-log entry from its retained form (tolerates missing optional keys)."""
     went = data.get("went_s")
+    params = data.get("params", ()) or ()
+    if not isinstance(params, (list, tuple)):
+        raise ValueError("alarm parameters must be a list")
+    file, line, n = data.get("file"), data.get("line"), data.get("n")
+    if file is not None and not isinstance(file, str):
+        raise ValueError("the alarm's file must be text")
     return AlarmEntry(
         seq=_integer(data.get("seq", 0)), number=_integer(data["number"]), text=str(data.get("text", "")),
         category=str(data.get("category", "")), clear=str(data.get("clear", "reset")),
         came_s=_number(data.get("came_s", 0.0)), went_s=None if went is None else _number(went),
-        params=tuple(str(p) for p in data.get("params", ()) or ()),
-        file=data.get("file"), line=data.get("line"), n=data.get("n"),
+        params=tuple(str(p) for p in params), file=file,
+        line=None if line is None else _integer(line), n=None if n is None else _integer(n),
     )
 
 

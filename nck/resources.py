@@ -90,6 +90,15 @@ class AlarmDefinition:
     clear: str
     reactions: tuple[str, ...]
 
+    def with_channel(self, params: tuple[str, ...], channel: str, block: str) -> tuple[str, ...]:
+        """``params`` with the channel (and block) in front when the text starts with them."""
+        prefix: list[str] = []
+        if "Channel %1" in self.text or "channel %1" in self.text:
+            prefix.append(channel)
+            if "block %2" in self.text or "Block %2" in self.text:
+                prefix.append(block)
+        return tuple(prefix) + params
+
     def format(self, params: tuple[str, ...] | list[str]) -> str:
         """Return the text with ``%1`` … replaced by ``params`` (missing ones left empty)."""
         out = self.text
