@@ -19,6 +19,7 @@ from nck.channel import ACTIVE, RESET
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.interp.api import Interpreter
 from nck.kernel_data import DataWrites
+from nck.value_text import InvalidValue, number_from_text
 from nck.motion.instant import InstantMotion
 
 DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
@@ -94,13 +95,13 @@ class ControlSettings(DataWrites):
             parts = {"$AC_TOTAL_PARTS": "total", "$AC_ACTUAL_PARTS": "actual",
                      "$AC_SPECIAL_PARTS": "special", "$AC_REQUIRED_PARTS": "required"}
             if name in parts:
-                value = int(command.value)  # type: ignore[call-overload]
+                value = int(number_from_text(command.value, name, whole=True))
                 if not 0 <= value <= 999_999_999:
                     return Rejected("part counters range over 0 … 999999999")
                 setattr(self.counters, parts[name], value)
                 return Accepted()
-        except (TypeError, ValueError):
-            return Rejected(f"bad value for {command.name}")
+        except InvalidValue as refusal:
+            return Rejected(str(refusal))
         return Rejected(f"{command.name} cannot be written here")
 
     @property

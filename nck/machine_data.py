@@ -30,6 +30,7 @@ from nck.access import AccessDenied, Action, LEVEL_FEWEST_RIGHTS, required_level
 from nck.machine import MachineConfig
 from nck.number_text import trimmed
 from nck.resources import data_path, load_toml
+from nck.value_text import InvalidValue, number_from_text
 
 ACTIVATIONS = ("so", "re", "cf", "po")
 ACTIVATION_TEXT = {
@@ -149,7 +150,7 @@ def _convert(kind: str, value: Any, key: str) -> Any:
                     return int(upper.strip("'")[1:], 16)
                 if re.fullmatch(r"'?B[01]+'?", upper):
                     return int(upper.strip("'")[1:], 2)
-                number = float(text)
+                number = number_from_text(text, key)
                 if number.is_integer():
                     return int(number)
         elif kind == "real":
@@ -158,7 +159,7 @@ def _convert(kind: str, value: Any, key: str) -> Any:
             if isinstance(value, (int, float)):
                 result = float(value)
             elif text is not None:
-                result = float(text.upper().replace("EX", "E"))
+                result = number_from_text(text, key)
             else:
                 result = None
             if result is not None and result == result and abs(result) != float("inf"):
@@ -166,9 +167,13 @@ def _convert(kind: str, value: Any, key: str) -> Any:
         elif kind == "string":
             if isinstance(value, str):
                 return value
-    except (ValueError, OverflowError):
+    except (ValueError, OverflowError, InvalidValue):
         pass
-    raise DataValueError(f"{key}: {value!r} is not a valid {kind} value")
+    if text == "":
+        raise DataValueError(f"{key}: no value entered")
+    shown = f"“{text}”" if text is not None else repr(value)
+    expected = {"bool": "TRUE or FALSE", "int": "a whole number", "real": "a number"}.get(kind, kind)
+    raise DataValueError(f"{key}: {shown} is not valid, enter {expected}")
 
 
 def format_value(definition: DataDefinition, value: Any) -> str:

@@ -20,7 +20,6 @@ Names:
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass
 from typing import Any
@@ -28,6 +27,7 @@ from typing import Any
 from nck.access import AccessControl, AccessDenied, Action, action_for_write, action_rules, required_level
 from nck.machine_data import DataError, MachineDataStore, WriteResult
 from nck.ncdata import NcData, ToolEdge, WorkOffset
+from nck.value_text import InvalidValue, number_from_text
 
 TOOL_PARAM_COUNT = 25
 TOOL_NUMBER_MAX = 99_999_999
@@ -35,6 +35,9 @@ TOOL_EDGE_MAX = 12
 TOOL_VALUE_LIMIT_MM = 100_000.0
 FRAME_TRANSLATION_LIMIT_MM = 100_000.0
 FRAME_COMPONENTS = ("TR", "FI", "RT", "SC", "MI")
+FRAME_COMPONENT_TEXT = {"TR": "offset", "FI": "fine offset", "RT": "rotation", "SC": "scale",
+                        "MI": "mirror"}
+"""How the work offset screens name a frame component (in messages)."""
 _TC_DP = re.compile(r"^\$TC_DP(\d+)\[\s*(\d+)\s*,\s*(\d+)\s*\]$")
 _UIFR = re.compile(r"^\$P_UIFR\[\s*(\d+)\s*,\s*([A-Z][A-Z0-9]*)\s*,\s*([A-Z]{2})\s*\]$")
 _UBFR = re.compile(r"^\$P_UBFR\[\s*([A-Z][A-Z0-9]*)\s*,\s*([A-Z]{2})\s*\]$")
@@ -62,20 +65,14 @@ def settable_frame_index(name: str) -> int:
 
 
 def finite_number(value: Any, what: str) -> float:
-    """``value`` (a number or its text, ``EX`` exponents allowed) as a finite float, else WriteRefused."""
-    if isinstance(value, bool):
-        raise WriteRefused(f"{what}: a number is needed")
-    if isinstance(value, str):
-        text = value.strip().upper().replace("EX", "E")
-        if not re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)(E[+-]?\d+)?", text):
-            raise WriteRefused(f"{what}: '{value.strip()}' is not a number")
-        value = text
-    elif not isinstance(value, (int, float)):
-        raise WriteRefused(f"{what}: a number is needed")
-    number = float(value)
-    if not math.isfinite(number):
-        raise WriteRefused(f"{what}: a finite number is needed")
-    return number
+    """``value`` (a number or the operator's text, :mod:`nck.value_text`) as a finite float.
+
+    Raises WriteRefused with the operator message (no value, not a number, out of range).
+    """
+    try:
+        return number_from_text(value, what)
+    except InvalidValue as refusal:
+        raise WriteRefused(str(refusal)) from None
 
 
 @dataclass(frozen=True, slots=True)
@@ -150,10 +147,11 @@ class DataWriter:
         match = _UIFR.match(upper)
         if match:
             frame = settable_frame_name(int(match[1]))
-            return self._write_frame(self.data.settable_frame(frame), match[2], match[3], value, upper)
+            return self._write_frame(self.data.settable_frame(frame), match[2], match[3], value, upper,
+                                     frame)
         match = _UBFR.match(upper)
         if match:
-            return self._write_frame(self.data.base_frame, match[1], match[2], value, upper)
+            return self._write_frame(self.data.base_frame, match[1], match[2], value, upper, "Base frame")
         match = _GUD.match(upper)
         if match:
             return self._write_gud(match[1], None if match[2] is None else int(match[2]), value, upper)
@@ -215,12 +213,13 @@ class DataWriter:
         edge_data.params[param] = number
         return Written(name)
 
-    def _write_frame(self, offset: WorkOffset, axis: str, comp: str, value: Any, name: str) -> Written:
+    def _write_frame(self, offset: WorkOffset, axis: str, comp: str, value: Any, name: str,
+                     frame: str) -> Written:
         if axis not in [a for a in self.store.axes if a not in self.store.machine.spindles]:
             raise WriteRefused(f"the machine has no axis {axis}")
         if comp not in FRAME_COMPONENTS:
             raise WriteRefused(f"frame component {comp} does not exist (TR FI RT SC MI)")
-        number = finite_number(value, f"{axis} {comp}")
+        number = finite_number(value, f"{frame} {axis} {FRAME_COMPONENT_TEXT[comp]}")
         if comp in ("TR", "FI") and abs(number) > FRAME_TRANSLATION_LIMIT_MM:
             raise WriteRefused(f"translation outside ±{FRAME_TRANSLATION_LIMIT_MM:g} mm")
         if comp == "RT" and not -360.0 <= number <= 360.0:
@@ -264,12 +263,12 @@ def _like(current: Any, value: Any, name: str) -> Any:
                 return True
             if text in ("FALSE", "0"):
                 return False
-            raise WriteRefused(f"{name} is BOOL: TRUE or FALSE")
+            raise WriteRefused(f"{name} is BOOL: enter TRUE or FALSE")
         return bool(value)
     if isinstance(current, int):
         number = finite_number(value, name)
         if not number.is_integer():
-            raise WriteRefused(f"{name} is INT: a whole number is needed")
+            raise WriteRefused(f"{name}: enter a whole number")
         return int(number)
     if isinstance(current, float):
         return finite_number(value, name)

@@ -163,7 +163,8 @@ def parse_filter(typed: str) -> LogFilter:
     low = high = None
     rest = typed.strip()
     head, dash, tail = first.partition("-")
-    if (head.isdigit() or not head) and (tail.isdigit() or not tail) and (head or tail) and (dash or head):
+    if all(part.isascii() and part.isdigit() or not part for part in (head, tail)) \
+            and (head or tail) and (dash or head):
         low = int(head) if head else None
         high = int(tail) if tail else (None if dash else low)
         rest = words[1] if len(words) > 1 else ""

@@ -263,14 +263,8 @@ class MachineScreen(AreaBase):
         current = self.status.channel.parts_required if self.status else 0
 
         def write(text: str | None) -> None:
-            if text is None:
-                return
-            try:
-                value = int(text)
-            except ValueError:
-                self.show_hint(f"Required parts: {text!r} is not a whole number")
-                return
-            self.submit(cmd.WriteData("$AC_REQUIRED_PARTS", value))
+            if text is not None:  # the kernel reads the number and says what is wrong with it
+                self.submit(cmd.WriteData("$AC_REQUIRED_PARTS", text))
 
         self.app.push_screen(ValueDialog("Required parts ($AC_REQUIRED_PARTS)", str(current)), write)
 

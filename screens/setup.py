@@ -222,7 +222,7 @@ class SetupScreen(AreaBase):
             target, value = name, text.strip()
             if definition.array:
                 parts = value.split(None, 1)
-                if len(parts) != 2 or not parts[0].isdigit():
+                if len(parts) != 2 or not (parts[0].isascii() and parts[0].isdigit()):
                     self.hmi.set_hint(f"{name} is an array: give index and value, e.g. 0 5")
                     return
                 index, value = parts

@@ -66,10 +66,10 @@ def test_the_stored_keyswitch_and_a_password_give_the_level(
 
 
 @pytest.mark.parametrize("setting, words", [
-    ("SD42100=fast", "'fast' is not a valid real value"),
+    ("SD42100=fast", "SD42100: “fast” is not valid, enter a number"),
     ("SD42100=-5", "below the lower limit"),
-    ("SD42101=1.5", "not a valid int value"),
-    ("R9=abc", "'abc' is not a number"),
+    ("SD42101=1.5", "“1.5” is not valid, enter a whole number"),
+    ("R9=abc", "“abc” is not a number"),
     ("R99999=1", "R parameter 99999 does not exist"),
     ("$TC_DP1[1,1]=120.5", "whole number"),
     ("$TC_DP3[1,1]=1e9", "outside"),

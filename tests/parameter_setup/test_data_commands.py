@@ -45,7 +45,7 @@ def test_keyswitch_0_cannot_write_a_work_offset_customer_can(session: Session) -
     ("$P_UIFR[1,X,RT]", 400, "rotation"),
     ("$P_UIFR[1,X,SC]", 0, "scale"),
     ("$P_UIFR[1,Q,TR]", 1, "no axis"),
-    ("$P_UIFR[1,X,TR]", float("nan"), "finite"),
+    ("$P_UIFR[1,X,TR]", float("nan"), "out of range"),
     ("$TC_DP1[1,1]", 1.5, "whole number"),
     ("$TC_DP3[1,13]", 10, "D13"),
     ("$TC_DP6[1,1]", 1e9, "outside"),
