@@ -84,11 +84,14 @@ class Motion:
 
 @dataclass(frozen=True, slots=True)
 class Dwell:
-    """G4: wait ``seconds`` of time or ``revolutions`` of the spindle."""
+    """G4: wait ``seconds`` of time or ``revolutions`` of the spindle; with ``wait_spindle``
+    (SPOS, M19, WAITS) wait until the master spindle is positioned, stands or turns at
+    its set speed (002 L51302-51335)."""
 
     source: Source
     seconds: float | None = None
     revolutions: float | None = None
+    wait_spindle: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -122,7 +125,8 @@ class EdgeSelect:
 class SpindleCommand:
     """Spindle speed / direction / positioning for spindle number ``spindle``.
 
-    ``state`` is ``M3``, ``M4``, ``M5`` or ``M19``/``SPOS`` for positioning.
+    ``state`` is ``M3``, ``M4``, ``M5`` or ``M19``/``SPOS`` for positioning to
+    ``position_deg`` along ``approach``.
     """
 
     source: Source
@@ -130,6 +134,7 @@ class SpindleCommand:
     state: str | None = None
     speed_rpm: float | None = None
     position_deg: float | None = None
+    approach: str | None = None  # SPOS approach: DC (shortest), AC, ACP (+), ACN (-), IC
 
 
 @dataclass(frozen=True, slots=True)

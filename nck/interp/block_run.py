@@ -33,6 +33,7 @@ MAX_PASSES = 9999
 MAX_ARRAY_ELEMENTS = 1_000_000  # one array's elements (each dimension <= 65535); 17020 beyond
 PROGRAM_CONTROL_M = {0: "M0", 1: "M1", 2: "M2", 17: "M17", 30: "M30"}
 MODE_WORDS = frozenset(("I", "J", "K", "RP", "AP"))  # non-axis words that take AC()/IC()
+SPINDLE_POSITION_WORDS = frozenset(("SPOS", "SPOSA"))  # also DC()/ACP()/ACN() (002 L51117-51160)
 
 # ----------------------------------------------------------------------------- block run
 class BlockRun:
@@ -189,7 +190,11 @@ class BlockRun:
             self.words.axes[address] = (float(to_number(value, address)), mode)
             return
         if mode is not None:
-            if address not in MODE_WORDS and not (address[0] in "IJK" and address[1:].isdigit()):
+            spindle_mode = address in SPINDLE_POSITION_WORDS
+            if not spindle_mode and mode in ("DC", "ACP", "ACN"):
+                raise NcAlarmError(12080, f"{address}={mode}")
+            if not spindle_mode and address not in MODE_WORDS and not (
+                    address[0] in "IJK" and address[1:].isdigit()):
                 raise NcAlarmError(12080, f"{address}={mode}")
             self.words.word_modes[address] = mode  # I=AC(…), AP=IC(…): read by the motion builder
         if address == "G":
@@ -584,6 +589,13 @@ class BlockRun:
             self.late.append(canon.UserAlarm(self.source, number, params))
         elif name == "STOPRE":
             self.late.append(canon.StopPoint(self.source, "STOPRE"))
+        elif name == "WAITS":
+            # WAITS / WAITS(n, …): the next block waits for the spindle (002 L51302-51335).
+            for arg in stmt.args:
+                number = _whole(to_number(self.eval(arg), "WAITS"), "WAITS") if arg is not None else 1
+                if not 1 <= number <= len(self.interp.machine.spindles):
+                    raise NcAlarmError(12550, f"WAITS({number})")
+            self.late.append(canon.Dwell(self.source, wait_spindle=True))
         elif name == "RET":
             self.end_kind = "RET"
             self.ret_target = subprograms.return_target(self.eval, stmt.args)

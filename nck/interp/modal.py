@@ -31,6 +31,8 @@ class ModalState:
         feed: programmed path feed F (0 = none programmed since reset).
         spindle_speed_rpm: programmed S of the master spindle.
         spindle_state: ``M3``, ``M4``, ``M5`` or ``M19``.
+        spindle_position_deg: last programmed position of the master spindle (SPOS/M19),
+            the reference of ``SPOS=IC(…)``.
         tool_selected: T programmed (preselected) but not yet changed in.
         tool: active tool (after the change, M6 or T with change mode 0).
         edge: active cutting edge D (0 = no offset).
@@ -43,6 +45,7 @@ class ModalState:
     feed: float = 0.0
     spindle_speed_rpm: float = 0.0
     spindle_state: str = "M5"
+    spindle_position_deg: float = 0.0
     tool_selected: int = 0
     tool: int = 0
     edge: int = 0

@@ -118,6 +118,14 @@ class MotionBuilder:
         if words.gcodes.get(2) == "G4":
             return self._dwell(words, modal)
         _check_aux_limits(words)
+        self.spindle_wait = False
+        out = self._build_commands(words, modal, geo)
+        if self.spindle_wait:
+            out.append(canon.Dwell(words.source, wait_spindle=True))
+        return out
+
+    def _build_commands(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> list[canon.CanonCommand]:
+        """The commands of a block that is not a dwell."""
         out: list[canon.CanonCommand] = []
         src = words.source
         self._feed(words, modal, geo)
@@ -284,6 +292,7 @@ class MotionBuilder:
         speeds: dict[int, float] = {}
         states: dict[int, str] = {}
         positions: dict[int, float] = {}
+        modes: dict[int, str] = {}
         if "S" in words.words:
             speeds[1] = words.words["S"]
         for (address, ext), value in words.extended.items():
@@ -299,11 +308,15 @@ class MotionBuilder:
                     raise NcAlarmError(12000, "M")
                 states[spindle] = SPINDLE_M[value]
                 if value == 19:
-                    positions[spindle] = float(self.data.setting_data.get("SD43240", 0.0) or 0.0)
+                    positions[spindle] = self._spindle_setting("SD43240", spindle) % 360.0
         for key in ("SPOS", "SPOSA"):
             if key in words.words:
                 states[1] = "SPOS"
-                positions[1] = float(words.words[key]) % 360.0
+                positions[1] = self._spos_target(float(words.words[key]), words.word_modes.get(key), modal)
+                modes[1] = words.word_modes.get(key) or "DC"
+        if any(state in ("M19", "SPOS") for state in states.values()) and "SPOSA" not in words.words:
+            # SPOS and M19 stay active until the spindle is positioned (002 L51162-51165).
+            self.spindle_wait = True
         if "LIMS" in words.words:
             lims = words.words["LIMS"]
             if lims < 0:
@@ -331,8 +344,27 @@ class MotionBuilder:
                 if state is not None:
                     modal.spindle_state = state if state != "SPOS" else "M19"
             out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed,
-                                            position_deg=positions.get(spindle)))
+                                            position_deg=positions.get(spindle),
+                                            approach=modes.get(spindle)))
+            if spindle == 1 and spindle in positions:
+                modal.spindle_position_deg = positions[spindle]
 
+    def _spindle_setting(self, key: str, spindle: int) -> float:
+        """A spindle's setting datum (kept per spindle name, or one number for all)."""
+        value = self.data.setting_data.get(key, 0.0)
+        if isinstance(value, dict):
+            names = self.machine.spindles
+            value = value.get(names[spindle - 1], 0.0) if 1 <= spindle <= len(names) else 0.0
+        return float(value or 0.0)
+
+    def _spos_target(self, value: float, mode: str | None, modal: ModalState) -> float:
+        """End angle of ``SPOS=…``: AC/DC/ACP/ACN absolute 0 … 359.999°, IC relative to the last
+        programmed position (002 L51127-51160)."""
+        if mode == "IC":
+            return (modal.spindle_position_deg + value) % 360.0
+        if not 0.0 <= value < 360.0:
+            raise NcAlarmError(16830, "SPOS")
+        return value
     def _speed_limits(self, code: str, speeds: dict[int, float]) -> None:
         """``G25 S…`` / ``G26 S…``: the minimum / maximum speed of a spindle (002 L54093-54107),
         kept in SD43210 / SD43220 of that spindle, where the spindle reads it."""

@@ -78,7 +78,7 @@ class _Parser(DeclarationParser):
         if name == "EXTERN":
             stmts.append(self._extern())
             return
-        if name in ("STOPRE", "RET", "GOTOS", "SBLOF", "SBLON", "DISPLOF", "DISPLON"):
+        if name in ("STOPRE", "RET", "GOTOS", "SBLOF", "SBLON", "DISPLOF", "DISPLON", "WAITS"):
             self.advance()
             args: tuple[ast.Expr | None, ...] = ()
             if self.is_op("("):

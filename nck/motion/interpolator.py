@@ -10,6 +10,7 @@ block event (see :meth:`PlannedMotion.advance_cycles`).
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -33,6 +34,8 @@ class PathInterpolator:
     servo: Any
     jog: Any
     _dwell_s: Any
+    _spindle_settle_s: Any
+    spindle_wait: bool
 
     def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
         """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.
@@ -43,6 +46,13 @@ class PathInterpolator:
         """
         T = self.T
         while k < n:
+            if self.spindle_wait and self.wait_cycles == 0:
+                # The cycles of a spindle wait ran out (in a batch: in the last step, the
+                # block's outputs have gone out since): wait on while the spindle moves.
+                left_s = self._spindle_settle_s()
+                self.spindle_wait = left_s > T / 2.0
+                if self.spindle_wait:
+                    self.wait_cycles = max(1, int(math.ceil(left_s / T - 1e-9)))
             if self.wait_cycles > 0:
                 m = min(self.wait_cycles, n - k)
                 rows[k:k + m] = self.cmd
@@ -178,6 +188,11 @@ class PathInterpolator:
         if isinstance(head, DwellItem):
             self.la.pop_front()
             seconds = head.seconds if head.revolutions is None else self._dwell_s(head.revolutions)
+            if head.wait_spindle:
+                # At least one cycle: the block's spindle output goes out at its start;
+                # then checked again until the spindle has settled (_path_fill).
+                seconds = max(self._spindle_settle_s(), self.T)
+                self.spindle_wait = True
             self.wait_cycles = int(round(min(seconds, MAX_DWELL_S) / self.T))
             self.wait_source = head.source
             self.v_path = 0.0

@@ -96,6 +96,8 @@ class SpindleParams:
     gear_max_rpm: float
     gear_min_rpm: float
     accel_rev_s2: float
+    posctrl_accel_rev_s2: float  # MD35210: acceleration while positioning (SPOS, M19)
+    posctrl_rpm: float  # MD35300: speed of the positioning move
     jog_rpm: float
     velo_limit_rpm: float
     rated_motor_rpm: float
@@ -195,6 +197,8 @@ def _spindle_params(machine: MachineConfig, name: str, index: int) -> SpindlePar
         gear_max_rpm=md("MD35130", name, max_rpm),
         gear_min_rpm=md("MD35140", name, 0.0),
         accel_rev_s2=max(md("MD35200", name, 30.0), 1e-3),
+        posctrl_accel_rev_s2=max(md("MD35210", name, 30.0), 1e-3),
+        posctrl_rpm=max(md("MD35300", name, 500.0), 1e-3),
         jog_rpm=md("MD32020", name, 100.0),
         velo_limit_rpm=md("MD36200", name, max_rpm * 1.1),
         rated_motor_rpm=md("MD32260", name, max_rpm),

@@ -100,6 +100,7 @@ class DwellItem:
     seconds: float
     source: Source | None
     revolutions: float | None = None
+    wait_spindle: bool = False  # WAITS, SPOS, M19: until the master spindle has settled
 
 
 @dataclass

@@ -5,8 +5,10 @@ is clamped to the gear-stage limits (MD35130/MD35140), the chuck limit
 MD35100, the programmed limits G26/G25 (SD43220/SD43210) and the operator's
 limit SD43235 (read live: a change acts at once, 002 L54713-54718) without an
 alarm: like the interface signals DB31 DBX83.1/83.2, the state says when the
-setpoint was limited or raised. M19/SPOS stop the spindle
-and orient it (the orientation itself is not interpolated). Everything is
+setpoint was limited or raised. M19/SPOS brake the spindle (MD35210) and turn
+it to the position at the positioning speed MD35300 along the approach (DC/AC
+the shortest way, or on in the turning direction; ACP +, ACN -): the time this
+takes is exact, the angle on the way is interpolated linearly. Everything is
 closed-form per call, independent of the number of IPO cycles.
 """
 
@@ -48,21 +50,57 @@ class Spindle:
         self.state = SpindleState()
         self._accel_rpm_s = params.accel_rev_s2 * 60.0
         self.setting_data: Mapping[str, Any] | None = None  # SD43210/43220/43235, read live
+        self._positioning: _Positioning | None = None
 
-    def command(self, state: str | None, speed_rpm: float | None, position_deg: float | None = None) -> None:
-        """M3/M4/M5/M19 and S: set the speed setpoint (or orient the spindle)."""
+    def command(self, state: str | None, speed_rpm: float | None, position_deg: float | None = None,
+                approach: str | None = None) -> None:
+        """M3/M4/M5/M19 and S: set the speed setpoint (or position the spindle)."""
         st = self.state
         if speed_rpm is not None:
             rpm = abs(float(speed_rpm))
             st.programmed_rpm = rpm if rpm == rpm else 0.0  # NaN: no speed
         if state in ("M3", "M4", "M5"):
             st.state = state
+            self._positioning = None
         elif state in ("M19", "SPOS"):
             st.state = "M5"
-            st.actual_rpm = 0.0
-            if position_deg is not None:
-                st.angle_deg = float(position_deg) % 360.0
+            target = st.angle_deg if position_deg is None else float(position_deg) % 360.0
+            self._positioning = self._plan_positioning(target, approach or "DC")
         self._update_setpoint()
+
+    def _plan_positioning(self, target_deg: float, approach: str) -> "_Positioning":
+        """Brake from the speed now, then turn to ``target_deg`` (times in s, angles in degrees)."""
+        st = self.state
+        p = self.params
+        accel = p.posctrl_accel_rev_s2 * 360.0  # deg/s²
+        v0 = st.actual_rpm * 6.0  # deg/s, signed
+        brake_s = abs(v0) / accel
+        stop_deg = st.angle_deg + v0 * brake_s / 2.0
+        ahead = (target_deg - stop_deg) % 360.0  # the way in + direction
+        if v0 > 0.0 or approach == "ACP":
+            travel = ahead
+        elif v0 < 0.0 or approach == "ACN":
+            travel = -((360.0 - ahead) % 360.0)
+        else:  # DC, AC, IC from standstill: the shortest way
+            travel = ahead if ahead <= 180.0 else ahead - 360.0
+        speed = p.posctrl_rpm * 6.0
+        distance = abs(travel)
+        if distance >= speed * speed / accel:
+            move_s = distance / speed + speed / accel
+        else:
+            move_s = 2.0 * math.sqrt(distance / accel)
+        return _Positioning(st.angle_deg, stop_deg, travel, target_deg, brake_s, move_s)
+
+    @property
+    def positioning(self) -> bool:
+        """True while SPOS/M19 turns the spindle to its position."""
+        return self._positioning is not None
+
+    def settle_s(self) -> float:
+        """Time until the spindle is positioned, stands or turns at its set speed (WAITS)."""
+        if self._positioning is not None:
+            return self._positioning.remaining_s
+        return abs(self.state.setpoint_rpm - self.state.actual_rpm) / self._accel_rpm_s
 
     def jog(self, direction: int) -> None:
         """Spindle JOG: turn at the JOG speed (MD32020 in rpm) while ``direction`` ≠ 0."""
@@ -113,6 +151,9 @@ class Spindle:
         """Ramp the speed towards its setpoint and turn the spindle."""
         st = self.state
         p = self.params
+        if self._positioning is not None:
+            self._advance_positioning(dt_s)
+            return
         if self.setting_data:
             self._update_setpoint()  # the limits in the setting data act at once
         start = st.actual_rpm
@@ -152,7 +193,47 @@ class Spindle:
             return 0.0  # the spindle stops before the revolutions are done
         return ramp_s + (revolutions - ramp_rev) / end
 
+    def _advance_positioning(self, dt_s: float) -> None:
+        move = self._positioning
+        assert move is not None
+        st = self.state
+        move.elapsed_s += dt_s
+        t = move.elapsed_s
+        if t >= move.brake_s + move.move_s:
+            st.angle_deg = move.target_deg % 360.0
+            st.actual_rpm = 0.0
+            self._positioning = None
+            return
+        if t < move.brake_s:
+            share = t / move.brake_s
+            v0 = (move.stop_deg - move.start_deg) * 2.0 / move.brake_s
+            st.angle_deg = (move.start_deg + v0 * t * (1.0 - share / 2.0)) % 360.0
+            st.actual_rpm = v0 * (1.0 - share) / 6.0
+        else:
+            share = (t - move.brake_s) / move.move_s
+            st.angle_deg = (move.stop_deg + move.travel_deg * share) % 360.0
+            st.actual_rpm = math.copysign(self.params.posctrl_rpm, move.travel_deg) if move.travel_deg else 0.0
+
     @property
     def moving(self) -> bool:
         """True while the spindle turns or its speed changes."""
-        return abs(self.state.actual_rpm) > 1e-9 or abs(self.state.setpoint_rpm) > 1e-9
+        return (abs(self.state.actual_rpm) > 1e-9 or abs(self.state.setpoint_rpm) > 1e-9
+                or self._positioning is not None)
+
+
+@dataclass
+class _Positioning:
+    """A running SPOS/M19: braking (``brake_s``), then ``travel_deg`` in ``move_s``."""
+
+    start_deg: float
+    stop_deg: float
+    travel_deg: float
+    target_deg: float
+    brake_s: float
+    move_s: float
+    elapsed_s: float = 0.0
+
+    @property
+    def remaining_s(self) -> float:
+        """Time left until the spindle stands at the target."""
+        return max(self.brake_s + self.move_s - self.elapsed_s, 0.0)

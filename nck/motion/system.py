@@ -71,6 +71,7 @@ class PlannedMotion(PathInterpolator):
         self.held = False
         self.faulted = False
         self.stop_source: Source | None = None  # the block a motion alarm stopped (refused or tripped)
+        self.spindle_wait = False  # a WAITS/SPOS wait: checked again when its cycles ran out
         self.hold_point: np.ndarray | None = None
         self.repos_feed: float | None = None
         self.repos_pending = False
@@ -99,7 +100,9 @@ class PlannedMotion(PathInterpolator):
     def push(self, item: Motion | Dwell) -> None:
         """Plan a segment (or buffer a dwell) behind the ones already buffered."""
         if isinstance(item, Dwell):
-            if item.seconds is None:
+            if item.wait_spindle:
+                self.la.append(DwellItem(0.0, item.source, wait_spindle=True))
+            elif item.seconds is None:
                 # G4 S: counted in revolutions of the master spindle when the dwell starts.
                 revolutions = max(float(item.revolutions or 0.0), 0.0)
                 self.la.append(DwellItem(0.0, item.source, revolutions=revolutions))
@@ -263,7 +266,8 @@ class PlannedMotion(PathInterpolator):
 
     def is_idle(self) -> bool:
         """True when nothing is buffered or moving and every axis is in its coarse window."""
-        if self.run is not None or self.la.items or self.wait_cycles or self.exact_wait is not None:
+        if (self.run is not None or self.la.items or self.wait_cycles or self.spindle_wait
+                or self.exact_wait is not None):
             return False
         if self.jog.active():
             return False
@@ -295,6 +299,7 @@ class PlannedMotion(PathInterpolator):
         self.held = False
         self.faulted = False
         self.stop_source = None
+        self.spindle_wait = False
         self.wait_cycles = 0
         self.exact_wait = None
         self.repos_pending = False
@@ -353,7 +358,7 @@ class PlannedMotion(PathInterpolator):
         """The block whose segment or dwell is executing."""
         if self.run is not None and self.run.kind != "abort":
             return self.run.chain[0].source
-        if self.wait_cycles or self.exact_wait is not None:
+        if self.wait_cycles or self.spindle_wait or self.exact_wait is not None:
             return self.wait_source
         if self.la.items:
             return self.la.items[0].source
@@ -455,7 +460,8 @@ class PlannedMotion(PathInterpolator):
         if not names:
             return
         index = min(max(command.spindle, 1), len(names)) - 1
-        self.spindles[names[index]].command(command.state, command.speed_rpm, command.position_deg)
+        self.spindles[names[index]].command(command.state, command.speed_rpm, command.position_deg,
+                                            command.approach)
         if index == 0:
             self._follow_spindle()
 
@@ -506,11 +512,12 @@ class PlannedMotion(PathInterpolator):
     def _quiet(self) -> bool:
         return (
             self.run is None and not self.la.items and not self.wait_cycles and self.exact_wait is None
-            and not self.jog.runs and self.servo.settled()
+            and not self.spindle_wait and not self.jog.runs and self.servo.settled()
         )
 
     def _plan_start(self) -> np.ndarray:
-        if self.plan_pos is None or (self.run is None and not self.la.items and not self.wait_cycles):
+        if self.plan_pos is None or (self.run is None and not self.la.items and not self.wait_cycles
+                                     and not self.spindle_wait):
             self.plan_pos = self.cmd.copy()
         return self.plan_pos.copy()
 
@@ -557,6 +564,11 @@ class PlannedMotion(PathInterpolator):
         self.la.replan_all()
         if self.run is not None and self.run.kind == "segment":
             self._replan_run()
+
+    def _spindle_settle_s(self) -> float:
+        """Seconds until the master spindle is positioned, stands or turns at its speed."""
+        master = self._master()
+        return master.settle_s() if master is not None else 0.0
 
     def _dwell_s(self, revolutions: float) -> float:
         """Seconds the master spindle needs for ``revolutions`` from its speed now (0 if it stands)."""

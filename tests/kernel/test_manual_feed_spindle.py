@@ -102,7 +102,7 @@ def test_dwell_in_revolutions_on_a_spindle_started_in_the_block_before() -> None
     # S50 right after M3 S1000 lasts 3 s plus half the ramp (16.7 rev/s are reached with
     # the acceleration MD35200 of the spindle, during which it turns only half as far).
     nck = make({})
-    ramp_s = (1000 / 60) / float(nck.machine.md_value("MD35200", "SP", None))
+    ramp_s = (1000 / 60) / machine_datum(nck, "MD35200")
     base = {"P.MPF": "N10 S1000 M3\nN30 M30"}
     dwell = {"P.MPF": "N10 S1000 M3\nN20 G4 S50\nN30 M30"}
     assert run_time_s(make(dwell), "P.MPF") - run_time_s(make(base), "P.MPF") == pytest.approx(
@@ -174,3 +174,79 @@ def test_sd43235_is_10000_rpm_as_delivered() -> None:
     from nck.machine_data import catalog
 
     assert catalog().get("SD43235").default == 10000.0
+
+
+# ----------------------------------------------------------------------------- SPOS, M19, WAITS
+def machine_datum(nck: Nck, key: str) -> float:
+    """The spindle's machine datum, or the catalogue's default when the machine has none."""
+    from nck.machine_data import catalog
+
+    return float(nck.machine.md_value(key, "SP", catalog().get(key).default))
+
+
+def positioning_s(nck: Nck, degrees: float) -> float:
+    """Hand formula: a move of ``degrees`` from standstill at MD35300 with MD35210 (trapezoid)."""
+    speed = machine_datum(nck, "MD35300") * 6.0  # rpm -> deg/s
+    accel = machine_datum(nck, "MD35210") * 360.0  # rev/s² -> deg/s²
+    if degrees >= speed * speed / accel:
+        return degrees / speed + speed / accel
+    return 2.0 * (degrees / accel) ** 0.5
+
+
+def spindle_angle(nck: Nck) -> float:
+    return nck.motion.spindles["SP"].state.angle_deg
+
+
+@pytest.mark.parametrize(("word", "travel", "end"), [
+    ("SPOS=90", 90.0, 90.0),
+    ("SPOS=DC(270)", 90.0, 270.0),  # 002 L51141-51144: the shortest way (-90°)
+    ("SPOS=AC(270)", 90.0, 270.0),  # standstill: direction from the distance to go
+    ("SPOS=ACP(270)", 270.0, 270.0),  # 002 L51149-51152: from the positive direction
+    ("SPOS=ACN(90)", 270.0, 90.0),
+])
+def test_spos_takes_its_positioning_time(word: str, travel: float, end: float) -> None:
+    # 002 L51117-51165: SPOS positions the spindle; the block stays active until it is there.
+    base = make({"P.MPF": "N20 M30"})
+    nck = make({"P.MPF": f"N10 {word}\nN20 M30"})
+    assert run_time_s(nck, "P.MPF") - run_time_s(base, "P.MPF") == pytest.approx(
+        positioning_s(nck, travel), abs=0.01)
+    assert spindle_angle(nck) == pytest.approx(end)
+
+
+def test_spos_ic_is_relative_to_the_last_programmed_position() -> None:
+    # 002 L51132-51135: SPOS=IC(…) in relation to the last programmed position.
+    nck = make({"P.MPF": "N10 SPOS=100\nN20 SPOS=IC(30)\nN30 M30"})
+    run_time_s(nck, "P.MPF")
+    assert spindle_angle(nck) == pytest.approx(130.0)
+
+
+def test_m19_reads_the_position_of_its_spindle_from_sd43240() -> None:
+    # 002 L51159-51165: M19 reads the position from SD43240 $SA_M19_SPOS[<n>]; on a data
+    # directory it is kept per spindle.
+    nck = make({"P.MPF": "N10 M19\nN20 M30"})
+    nck.data.setting_data["SD43240"] = {"SP": 45.0}
+    assert run_time_s(nck, "P.MPF") == pytest.approx(positioning_s(nck, 45.0) + run_time_s(
+        make({"P.MPF": "N20 M30"}), "P.MPF"), abs=0.01)
+    assert spindle_angle(nck) == pytest.approx(45.0)
+    assert nck.status().alarms == ()
+
+
+def test_waits_holds_the_next_block_until_the_spindle_is_at_speed() -> None:
+    # 002 L51302-51335: with WAITS the next block waits until the spindle is in its set
+    # speed range; without it the axis starts at once. S1000 needs (1000/60)/MD35200 s.
+    nck = make({})
+    ramp_s = (1000 / 60) / machine_datum(nck, "MD35200")
+    plain = run_time_s(make({"P.MPF": "N10 S1000 M3\nN30 G1 X10 F600\nN40 M30"}), "P.MPF")
+    waiting = run_time_s(make({"P.MPF": "N10 S1000 M3\nN20 WAITS\nN30 G1 X10 F600\nN40 M30"}), "P.MPF")
+    assert waiting - plain == pytest.approx(ramp_s, abs=0.01)
+
+
+def test_check_agrees_with_the_run_on_spindle_positioning_words() -> None:
+    from nck.headless import check_program
+    from nck.machine import load_machine
+
+    def numbers(text: str) -> list[int]:
+        return [a.number for a in check_program(load_machine(), MemorySource({}), "C.MPF", text)]
+
+    assert numbers("N10 SPOS=DC(45)\nN20 SPOS=ACN(10)\nN30 WAITS\nN40 M19\nM30\n") == []
+    assert numbers("N10 SPOS=400\nM30\n") == [16830]  # absolute positions are 0 … 359.999°

@@ -196,7 +196,9 @@ def test_thread_dwell_and_spindle() -> None:
     assert thread.kind == "G33" and thread.lead_mm == pytest.approx(1.5)
     assert thread.feed_mm_min == pytest.approx(1500.0)
     dwells = [c for c in r.commands if isinstance(c, canon.Dwell)]
-    assert [(d.seconds, d.revolutions) for d in dwells] == [(2.5, None), (None, 10.0)]
+    assert [(d.seconds, d.revolutions, d.wait_spindle) for d in dwells] == [
+        (2.5, None, False), (None, 10.0, False),
+        (None, None, True)]  # SPOS: the block waits until the spindle is positioned (002 L51162-51165)
     spos = [c for c in r.commands if isinstance(c, canon.SpindleCommand) and c.state == "SPOS"]
     assert spos[0].position_deg == pytest.approx(90.0)
     assert r.block(70)[0].feed_mm_min == pytest.approx(0.0)
