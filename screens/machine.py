@@ -56,7 +56,9 @@ class MachineScreen(AreaBase):
 
     def __init__(self) -> None:
         super().__init__(id="area-machine")
-        self.show_mcs = False
+        # After power-up the HMI shows the actual values in the MCS (002 L31480, L31569);
+        # MD9424 only chooses which workpiece system (WCS or SZS) the softkey switches to.
+        self.show_mcs = True
         self.view: str | None = None
         self._shown_mode: str | None = None
         self._mda_loaded = False

@@ -39,13 +39,18 @@ async def test_softkey_views_and_menu_recall(fake_app: HmiApp) -> None:
 
 
 async def test_mcs_softkey_switches_coordinate_system(fake: FakeNck, fake_app: HmiApp) -> None:
-    """F1 toggles the position window between WCS and MCS."""
+    """Power-on shows the MCS (002 L31480 "the predefined setting after power-up of the HMI
+    software is MCS", L31569); F1 toggles the position window to the WCS and back."""
     async with fake_app.run_test(size=SIZE) as pilot:
-        assert text_of(fake_app, "#positions").lstrip().startswith("WCS")
-        await pilot.press("f1")
-        await pilot.pause()
         assert text_of(fake_app, "#positions").lstrip().startswith("MCS")
         assert fake_app.screen.query_one("#sk-h1").has_class("-active")
+        await pilot.press("f1")
+        await pilot.pause()
+        assert text_of(fake_app, "#positions").lstrip().startswith("WCS")
+        assert not fake_app.screen.query_one("#sk-h1").has_class("-active")
+        await pilot.press("f1", "f1")
+        await pilot.pause()
+        assert text_of(fake_app, "#positions").lstrip().startswith("WCS")
 
 
 async def test_program_control_switches(fake: FakeNck, fake_app: HmiApp) -> None:

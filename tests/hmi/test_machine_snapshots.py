@@ -52,9 +52,10 @@ def test_jog_ref_partly_referenced(snap_compare) -> None:
 
 
 def test_jog_inc_100_mcs(snap_compare) -> None:
-    """JOG INC 100 with Y selected and the positions in MCS (softkey pressed)."""
+    """JOG INC 100 with Y selected and the positions in MCS (softkey pressed, the power-on
+    setting, 002 L31480)."""
     assert snap_compare(app_on(referenced_fake()), terminal_size=SIZE,
-                        press=["alt+i", "alt+i", "alt+i", "alt+y", "f1"])
+                        press=["alt+i", "alt+i", "alt+i", "alt+y"])
 
 
 def test_mda_editor_with_block(snap_compare) -> None:
