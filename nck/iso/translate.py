@@ -157,7 +157,7 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
         out.insert(0, IsoLine(1, "", [cycles.DECLARATION]))
     if main and start_in_iso:
         first = 1 if out and out[0].blocks[:1] == [cycles.DECLARATION] else 0
-        start = turning.START_BLOCK if dialect == "iso-t" else "G0 G291"
+        start = turning.START_BLOCK if dialect == "iso-t" else "G0 G64 G291"  # 000 L5005, L5019
         start = f"{start} {settings.start_unit}".strip()
         out.insert(first, IsoLine(1, "", [start]))
     return out

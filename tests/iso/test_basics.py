@@ -28,6 +28,7 @@ def test_same_text_in_siemens_mode_differs():
 
 
 def test_nested_comments_hide_words():
+    """Digest iso-dialects-840d rank 4 (000 L1688-1690)."""
     assert strip_comments("N15 (c(c) X100) Y100").split() == ["N15", "Y100"]
     result = run_iso("N15 (a(b) X100) Y100\nM30\n")
     assert ends(result) == [(1, {"X": 0.0, "Y": 100.0, "Z": 0.0})]
@@ -39,22 +40,26 @@ def test_comment_then_words_both_run():
 
 
 def test_slash_in_comment_is_ignored():
+    """Digest iso-dialects-840d rank 4."""
     result = run_iso("X100. ( /3 ) Y100\nM30\n", skip_levels=frozenset({3}))
     assert ends(result)[0][1] == {"X": 100.0, "Y": 100.0, "Z": 0.0}
 
 
 def test_mid_block_skip_discards_rest_when_level_active():
+    """Digest iso-dialects-840d rank 4 (000 L1679-1716)."""
     skip, words = split_words("N5 G00 X100. /3 YY100", frozenset({3}))
     assert [w.letter for w in words] == ["N", "G", "X"]
 
 
 def test_mid_block_skip_off_reads_garbage_as_syntax_error():
+    """Digest iso-dialects-840d rank 4 (level off: 12080)."""
     result = run_iso("N5 G00 X100. /3 YY100\nM30\n")
     assert result.status == "alarm" and result.alarms[0].number == 12080
 
 
 @pytest.mark.parametrize("text", ["/0 X1", "/10 X1"])
 def test_skip_level_out_of_range_is_14060(text):
+    """Digest iso-dialects-840d rank 4 (/0, /10: 14060)."""
     result = run_iso(text + "\nM30\n")
     assert result.alarms[0].number == 14060
 
@@ -81,6 +86,7 @@ def _first_x(text: str, settings: IsoSettings) -> str:
 
 
 def test_decimal_point_rules():
+    """Digest iso-dialects-840d rank 1 (000 L987-1050)."""
     standard = IsoSettings(pocket_calculator=False)
     assert _first_x("G90 G01 X1000 Y2000. F100", standard) == "G90 G1 X1 Y2000 F100"
     is_c = IsoSettings(pocket_calculator=False, increment_system_c=True)
@@ -118,6 +124,7 @@ def test_incremental_g91():
 
 
 def test_e2_zero_offsets_g10_g54_g92_g921():
+    """Digest iso-dialects-840d rank 5 (E2, 000 L4502-4518)."""
     text = ("N10 G10 L2 P1 X10 Y10\nN20 G0 X100 Y100\nN30 G54 X100 Y100\nN40 G92 X50 Y50\n"
             "N50 G0 X100 Y100\nN60 G92.1 X0 Y0\nN70 X150. Y150.\nM30\n")
     result = run_iso(text)
@@ -131,6 +138,7 @@ def test_e2_zero_offsets_g10_g54_g92_g921():
 
 
 def test_e2_first_part_g92_preset():
+    """Digest iso-dialects-840d rank 5 (E2)."""
     text = "N10 G0 X100 Y100\nN20 G92 X10 Y10\nN30 G0 X50 Y50\nN40 G92.1 X0 Y0\nN50 X140. Y140.\nM30\n"
     result = run_iso(text)
     mcs, wcs = ends(result, "mcs"), ends(result)
@@ -151,6 +159,7 @@ def test_g290_switches_to_siemens_and_g291_back():
 
 
 def test_siemens_program_switches_with_g291():
+    """Digest iso-dialects-840d rank 2 (Siemens start, G291 switches)."""
     from nck.headless import interpret_only
     from nck.interp.sources import MemorySource
     from nck.machine import load_machine
@@ -192,6 +201,7 @@ def test_g_group_display_shows_iso_codes_in_iso_mode():
 
 
 def test_iso_t_defaults_in_display():
+    """Digest iso-dialects-840d rank 2 (ISO T, 000 L5032-5050)."""
     views = _step_views("G00 X1.\nM30\n", "iso-t")
     iso = views[0][1]
     assert iso[16] == "G18" and iso[31] == "G291"
@@ -210,6 +220,7 @@ def test_hmi_g_functions_line_lists_iso_groups():
 @pytest.mark.parametrize("md, expected_x", [({}, 100.0), ({"MD10884": False}, 0.1),
                                             ({"MD10884": False, "MD10886": 1}, 0.01)])
 def test_machine_data_choose_decimal_point_notation(md, expected_x):
+    """Digest iso-dialects-840d rank 1."""
     from nck.headless import interpret_only
     from nck.interp.sources import MemorySource
     from nck.machine import load_machine
@@ -231,17 +242,20 @@ def test_cli_runs_iso_dialect(tmp_path, capsys):
 
 
 def test_g54_1_needs_p_and_g54_p_selects_extended_offset():
+    """Digest iso-dialects-840d rank 5 (G54.1 without P: 12080)."""
     assert run_iso("G54.1 X1.\nM30\n").alarms[0].number == 12080
     assert translate("G54 P1 X1.")[0].blocks == ["G507 X1"]
     assert translate("G54.1 P2 X1.")[0].blocks == ["G508 X1"]
 
 
 def test_g53_incremental_values_are_skipped():
+    """Digest iso-dialects-840d rank 5 (G53 G91 X10 does not move)."""
     result = run_iso("G0 X5.\nG53 G91 X10.\nM30\n")
     assert [e[1]["X"] for e in ends(result)] == [5.0]
 
 
 def test_feed_and_arc_guards():
+    """Digest iso-dialects-840d rank 8 (10860 after G94->G95; G02 without R/IJK is an alarm)."""
     assert run_iso("G02 X10. Y10. F100\nM30\n").status == "alarm"
     result = run_iso("G94 G01 X10. F100\nG95 X20.\nM30\n")
     assert result.alarms[0].number == 10860
@@ -265,6 +279,7 @@ def test_iso_t_tool_word_splits_tool_and_offset(word, expected):
 
 
 def test_e1_language_switch_keeps_modal_state():
+    """Digest iso-dialects-840d rank 3 (E1, 000 L768-777)."""
     text = ("N5  G00 X100. Y100.\nN10 G90           ;ISO G90\nN15 G290         ;Siemens\n"
             "N20 G91\nN25 G291\nN30 G291\nM30\n")
     views = {line: (iso, siemens) for line, iso, siemens in _step_views(text)}

@@ -15,6 +15,7 @@ def _z_path(result):
 
 
 def test_g81_g99_drills_in_its_block_and_next_block_uses_new_r():
+    """Digest iso-dialects-840d rank 6 (000 L3408-3625)."""
     text = HEAD + "G17 G90 G99 G81 X10. Y20. Z-15. R5. F1000\nX50. Y30. R10.\nG80\nM30\n"
     result = run_iso(text)
     assert result.status == "ended", result.alarms
@@ -29,18 +30,21 @@ def test_g81_g99_drills_in_its_block_and_next_block_uses_new_r():
 
 
 def test_g98_returns_to_initial_plane():
+    """Digest iso-dialects-840d rank 6."""
     text = HEAD + "G17 G90 G98 G81 X10. Y20. Z-15. R5. F1000\nX50. Y30. R10.\nG80\nM30\n"
     path = _z_path(run_iso(text))
     assert path[4][3] == 50.0 and path[-1][3] == 50.0
 
 
 def test_cycle_block_without_position_and_k0_do_not_drill():
+    """Digest iso-dialects-840d rank 6."""
     text = HEAD + "G99 G81 X10. Y20. Z-15. R5. F1000\nF500\nX30. K0\nG80\nM30\n"
     path = _z_path(run_iso(text))
     assert all(line in (1, 2) for line, *_ in path)
 
 
 def test_g80_and_g00_cancel_the_cycle():
+    """Digest iso-dialects-840d rank 6."""
     for cancel in ("G80", "G00"):
         text = HEAD + f"G99 G81 X10. Y20. Z-15. R5. F1000\n{cancel}\nX30.\nM30\n"
         path = _z_path(run_iso(text))
@@ -48,6 +52,7 @@ def test_g80_and_g00_cancel_the_cycle():
 
 
 def test_missing_z_is_61808():
+    """Digest iso-dialects-840d rank 6."""
     result = run_iso(HEAD + "G81 X10. Y20. R5. F1000\nM30\n")
     assert result.alarms[0].number == 61808
 
@@ -55,6 +60,7 @@ def test_missing_z_is_61808():
 @pytest.mark.parametrize("code", ["G83", "G73"])
 @pytest.mark.parametrize("q_word", ["", "Q0"])
 def test_peck_without_q_is_61808(code, q_word):
+    """Digest iso-dialects-840d rank 6."""
     result = run_iso(HEAD + f"{code} X10. Y20. Z-15. R5. {q_word} F1000\nM30\n")
     assert result.alarms[0].number == 61808
 

@@ -23,6 +23,7 @@ def _dwells(text: str, **md) -> list[canon.Dwell]:
 
 @pytest.mark.parametrize("block", ["G04 X1000", "G04 X1.", "G04 P1000", "G04 U1000"])
 def test_standard_notation_dwell_is_one_second(block):
+    """Digest iso-dialects-840d rank 9 (000 L1148-1160)."""
     (dwell,) = _dwells(block, MD10884=False)
     assert dwell.seconds == pytest.approx(1.0) and dwell.revolutions is None
 
@@ -30,6 +31,7 @@ def test_standard_notation_dwell_is_one_second(block):
 @pytest.mark.parametrize("block, seconds", [("G04 P1000", 1.0), ("G04 X1000", 1000.0),
                                             ("G04 X2.5", 2.5), ("G04 P250", 0.25)])
 def test_pocket_calculator_dwell(block, seconds):
+    """Digest iso-dialects-840d rank 9 (P always in ms)."""
     (dwell,) = _dwells(block)
     assert dwell.seconds == pytest.approx(seconds)
 
@@ -41,6 +43,7 @@ def test_dwell_stays_time_under_g95_without_bit2():
 
 @pytest.mark.parametrize("pocket, revolutions", [(False, 1.0), (True, 1000.0)])
 def test_g95_dwell_in_revolutions_with_md20734_bit2(pocket, revolutions):
+    """Digest iso-dialects-840d rank 9 (MD20734 bit 2)."""
     (dwell,) = _dwells("M03 S1000\nG95 G04 X1000", MD10884=pocket, MD20734=4)
     assert dwell.revolutions == pytest.approx(revolutions) and dwell.seconds is None
 

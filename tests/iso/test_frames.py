@@ -34,6 +34,7 @@ E3 = "N5 G17 G90 X0 Y0\nN10 G16 X100. Y45.\nN15 G91 X100 G90 Y0\nN20 Y90.\nN25 G
 
 
 def test_e3_polar_coordinates_golden():
+    """Digest iso-dialects-840d rank 11 (E3, 000 L1429-1435)."""
     result = run_iso(E3)
     assert result.status == "ended", result.alarms
     assert _xy(result) == [(1, 0.0, 0.0), (2, 70.711, 70.711), (3, 170.711, 70.711),
@@ -52,6 +53,7 @@ def test_polar_angle_incremental_under_g91_and_radius_absolute():
 
 
 def test_g15_deletes_polar_angle():
+    """Digest iso-dialects-840d rank 11."""
     result = run_iso("G90 G16 X10. Y90.\nG15\nG16 X20.\nM30\n")
     assert _xy(result)[-1] == (3, 20.0, 0.0)
 
@@ -69,6 +71,7 @@ def test_polar_block_keeps_other_axes_and_feed():
 
 # ------------------------------------------------------------------ rotation (item 12)
 def test_g68_rotates_about_the_programmed_pivot():
+    """Digest iso-dialects-840d rank 12 (000 L1272-1316)."""
     result = run_iso("G90 G00 X0 Y0\nG68 X0 Y0 R90.\nG01 X10. Y0 F100\nM30\n")
     assert result.status == "ended", result.alarms
     assert _xy(result, "mcs")[-1] == (3, 0.0, 10.0)
@@ -76,11 +79,13 @@ def test_g68_rotates_about_the_programmed_pivot():
 
 
 def test_g68_without_pivot_turns_about_the_current_position():
+    """Digest iso-dialects-840d rank 12."""
     result = run_iso("G90 G00 X10. Y0\nG68 R90.\nG01 X20. Y0 F100\nM30\n")
     assert _xy(result, "mcs")[-1] == (3, 10.0, 10.0)
 
 
 def test_second_g68_in_g91_adds_and_g69_clears_both():
+    """Digest iso-dialects-840d rank 12."""
     text = ("G90 G00 X0 Y0\nG68 X0 Y0 R30.\nG91 G68 X0 Y0 R60.\nG90 G01 X10. Y0 F100\n"
             "G69\nX10. Y0\nM30\n")
     result = run_iso(text)
@@ -104,6 +109,7 @@ def test_3d_g68_rotates_about_the_vector_with_pivot_at_zero():
 
 
 def test_3d_g68_with_zero_vector_is_12560():
+    """Digest iso-dialects-840d rank 12."""
     result = run_iso("G68 X0 Y0 Z0 I0 J0 K0 R30.\nM30\n")
     assert result.status == "alarm" and result.alarms[0].number == 12560
 
@@ -111,6 +117,7 @@ def test_3d_g68_with_zero_vector_is_12560():
 @pytest.mark.parametrize("text", ["G68 X0 Y0 R90. G01 X1.", "G68 X0 Y0 R90. G01 F100",
                                   "G68 X0 Y0 R90. M3"])
 def test_g68_must_be_alone_in_its_block(text):
+    """Digest iso-dialects-840d rank 12."""
     result = run_iso(text + "\nM30\n")
     assert result.status == "alarm"
     assert result.alarms[0].number in (12000, 12080)
@@ -153,6 +160,7 @@ E4_MD = {"MD22910": 0, "MD22914": 1, "MD10884": False, "MD10886": 0}
 
 
 def test_e4_scaling_mirrors_the_square_into_each_quadrant():
+    """Digest iso-dialects-840d rank 13 (E4, 000 L1192-1219)."""
     result = _run_with_md(E4_MAIN, E4_MD, {"O0513": E4_SUB})
     assert result.status == "ended", result.alarms
     mcs = [(x, y) for _line, x, y in _xy(result, "mcs")]
@@ -165,6 +173,7 @@ def test_e4_scaling_mirrors_the_square_into_each_quadrant():
 
 
 def test_axial_scaling_needs_md22914():
+    """Digest iso-dialects-840d rank 13."""
     result = _run_with_md("G51 I2000 J500\nG01 X10. Y10. F100\nM30\n", {"MD22914": 0})
     assert _xy(result, "mcs") == [(2, 10.0, 10.0)]
     result = _run_with_md("G51 I2000 J500\nG01 X10. Y10. F100\nM30\n", {"MD22914": 1})
@@ -184,11 +193,13 @@ def test_negative_p_is_12560():
 
 
 def test_g51_1_mirrors_about_a_position():
+    """Digest iso-dialects-840d rank 13 (G51.1 X80 then X100 ends at 60)."""
     result = run_iso("G51.1 X80.\nG00 X100.\nM30\n")
     assert _xy(result, "mcs") == [(2, 60.0, 0.0)]
 
 
 def test_mirrors_are_additive_and_g50_1_cancels_per_axis():
+    """Digest iso-dialects-840d rank 13."""
     text = "G51.1 X10.\nG51.1 Y10.\nG00 X0 Y0\nG50.1 X0\nX0 Y0\nG50.1 X0 Y0\nX0 Y0\nM30\n"
     result = run_iso(text)
     assert result.status == "ended", result.alarms
@@ -216,6 +227,7 @@ def _mcs_ends(interp: Interpreter) -> list[dict[str, float]]:
 
 
 def test_reset_clears_g51_1():
+    """Digest iso-dialects-840d rank 13 (000 L1270)."""
     interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect="iso-m")
     interp.start_text("A.MPF", "G51.1 X80.\nG00 X100.\nM30\n")
     assert _mcs_ends(interp)[-1]["X"] == 60.0

@@ -19,6 +19,7 @@ def _r(result, *numbers):
 
 
 def test_g65_passes_arguments_and_does_not_move():
+    """Digest iso-dialects-840d rank 14 (000 L2163-2556)."""
     main = "N10 G00 X1. Y2.\nN30 G65 P10 F55 X150. Y100. S2000\nN40 X50.\nM30\n"
     result = run_iso(main, {"O0010": READER})
     assert result.status == "ended", result.alarms
@@ -29,6 +30,7 @@ def test_g65_passes_arguments_and_does_not_move():
 @pytest.mark.parametrize("block, passes", [("G65 P10 X1.", 1), ("G65 P10 L3 X1.", 3),
                                            ("G65 L2 P0010 X1.", 2)])
 def test_g65_l_is_the_number_of_passes(block, passes):
+    """Digest iso-dialects-840d rank 14."""
     result = run_iso(block + "\nM30\n", {"O0010": READER})
     assert result.status == "ended", result.alarms
     assert _r(result, 5) == [float(passes)]
@@ -61,6 +63,7 @@ def test_arguments_are_local_to_the_called_level():
 
 
 def test_g66_calls_after_every_motion_block_only():
+    """Digest iso-dialects-840d rank 14."""
     main = ("N10 G66 P10 X5.\nN20 G00 X50.\nN30 M03 S100\nN40 Y10.\nN50 G67\nN60 X0\nM30\n")
     result = run_iso(main, {"O0010": READER})
     assert result.status == "ended", result.alarms
@@ -84,6 +87,7 @@ def test_g66_l_passes_per_call():
 
 
 def test_proc_macro_runs_in_siemens_mode():
+    """Digest iso-dialects-840d rank 14."""
     proc = "PROC MAC10\nDEF REAL XA\nXA=$C_X+1\nG1 X=XA F100\nR6=$C_F\nM17\n"
     result = run_iso("G65 P10 X4. F200\nG00 Y1.\nM30\n", {"O0010": proc})
     assert result.status == "ended", result.alarms
@@ -92,6 +96,7 @@ def test_proc_macro_runs_in_siemens_mode():
 
 
 def test_macro_without_proc_runs_in_iso_mode():
+    """Digest iso-dialects-840d rank 14."""
     iso = "G00 X5. (an ISO comment)\nM99\n"
     result = run_iso("G65 P10 X4.\nM30\n", {"O0010": iso})
     assert result.status == "ended", result.alarms
@@ -102,6 +107,7 @@ def test_macro_without_proc_runs_in_iso_mode():
 
 @pytest.mark.parametrize("block", ["G05 P1 M98 P21", "G65 P10 M98 P21", "G05 P3 G65 P10"])
 def test_two_calls_in_one_block_raise_12722(block):
+    """Digest iso-dialects-840d rank 14."""
     result = run_iso(block + "\nM30\n", {"O0010": READER, "O0021": "M99\n"})
     assert result.status == "alarm"
     assert result.alarms[0].number == 12722

@@ -20,12 +20,14 @@ def _xs(result):
 
 
 def test_m98_count_in_p_runs_three_times():
+    """Digest iso-dialects-840d rank 7 (000 L1920-2012)."""
     result = run_iso("M98 P30021\nM30\n", {"O0021": STEP_SUB})
     assert result.status == "ended", result.alarms
     assert _xs(result) == [1.0, 2.0, 3.0]
 
 
 def test_m98_l_count_and_l_over_p_digits():
+    """Digest iso-dialects-840d rank 7."""
     assert _xs(run_iso("M98 P55 L4\nM30\n", {"O0055": STEP_SUB})) == [1.0, 2.0, 3.0, 4.0]
     assert _xs(run_iso("M98 P30077 L2\nM30\n", {"O0077": STEP_SUB})) == [1.0, 2.0]
 
@@ -36,6 +38,7 @@ def test_m98_is_one_call_with_passes():
 
 
 def test_m99_p_resumes_at_block_of_caller_forward():
+    """Digest iso-dialects-840d rank 7."""
     main = ("N10 G90 G00 X0 Y0\nN20 M98 P21\nN30 X30.\nN40 Y40.\nN50 M30\n")
     sub = "G90 G00 X5.\nM99 P40\n"
     result = run_iso(main, {"O0021": sub})
@@ -45,6 +48,7 @@ def test_m99_p_resumes_at_block_of_caller_forward():
 
 
 def test_m99_p_searches_backward_when_not_ahead():
+    """Digest iso-dialects-840d rank 7."""
     main = "N10 G90 G00 X0\nN15 Y1.\nN20 M98 P21\nN30 X30.\nN40 M30\n"
     # the sub counts its calls in R1: the first return jumps back to N15, the second goes on
     sub = ("G290\nR1=R1+1\nIF R1>1 GOTOF DONE\nRET(\"N15\")\nDONE:\nM17\n")
@@ -68,6 +72,7 @@ def test_m99_p_ends_remaining_passes():
 
 
 def test_m99_in_main_program_restarts_it():
+    """Digest iso-dialects-840d rank 7."""
     result = interpret_only(load_machine(None), MemorySource(), NcData(), "T.MPF", dialect="iso-m",
                             text="G91 G01 X1. F100\nM99\n", max_blocks=40)
     assert result.status == "timeout"
@@ -82,6 +87,7 @@ def test_m99_p_in_main_program_jumps():
 
 
 def test_m30_in_iso_subprogram_ends_the_whole_program():
+    """Digest iso-dialects-840d rank 7."""
     main = "N10 M98 P21\nN20 G00 X99.\nN30 M30\n"
     result = run_iso(main, {"O0021": "G00 X5.\nM30\n"})
     assert result.status == "ended", result.alarms
@@ -99,6 +105,7 @@ def test_m30_in_siemens_mode_subprogram_only_returns():
 
 
 def test_m98_m99_not_output_to_plc():
+    """Digest iso-dialects-840d rank 7."""
     main = "M98 P21\nM03 S1000\nM30\n"
     result = run_iso(main, {"O0021": "G00 X1.\nM08\nM99\n"})
     assert result.status == "ended", result.alarms

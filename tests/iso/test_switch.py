@@ -23,6 +23,7 @@ def _run(text: str, md: dict | None = None, subprograms: dict[str, str] | None =
 
 @pytest.mark.parametrize("text, shown", [("N10 WAIT", "WAIT"), ("N15 G91 G500", "G500")])
 def test_siemens_syntax_in_iso_mode_is_12080(text, shown):
+    """Digest iso-dialects-840d rank 3: WAIT and G500 in ISO mode give 12080 (000 L5566, MD20734 bit 3)."""
     result = run_iso("N5 G291\n" + text + "\nM30\n")
     assert result.status == "alarm"
     alarm = result.alarms[0]
@@ -35,6 +36,7 @@ def test_g_code_unknown_to_both_languages_is_12470():
 
 
 def test_if_goto_and_labels_run_in_iso_mode():
+    """Digest iso-dialects-840d rank 3 (Siemens control structures accepted, 000 L2014-2054)."""
     text = ("N5 G90 G01 X1. F100\nN10 IF $P_EP[X]>0 GOTOF SKIP\nN15 X50.\nSKIP:\n"
             "N20 Y2.\nM30\n")
     result = run_iso(text)
@@ -56,6 +58,7 @@ def test_if_else_endif_in_iso_mode():
 
 
 def test_call_runs_a_siemens_subprogram_in_iso_mode():
+    """Digest iso-dialects-840d rank 3."""
     sub = "PROC SHAFT\nG1 X4 F100\nM17\n"
     result = _run('N10 CALL "SHAFT"\nN20 G00 Y3.\nM30\n', subprograms={"SHAFT": sub})
     assert result.status == "ended", result.alarms
@@ -98,7 +101,10 @@ def test_iso_start_unit_from_md20154(value, x_mm):
 
 
 def test_p_extgg_shows_iso_values_in_both_modes():
-    """E1 (``$P_EXTGG[3]`` = 2 after G91 in Siemens mode) and the ISO M start-up values."""
+    """E1 (``$P_EXTGG[3]`` = 2 after G91 in Siemens mode) and the ISO M start-up values.
+
+    Digest iso-dialects-840d rank 2 and 3 (E1, 000 L768-777).
+    """
     data = NcData()
     text = ("N5 G00 X100. Y100.\nN10 G90\nN15 G290\nR1=$P_EXTGG[1] R2=$P_EXTGG[2] R3=$P_EXTGG[3]\n"
             "R5=$P_EXTGG[5] R11=$P_EXTGG[11] R16=$P_EXTGG[16] R31=$P_EXTGG[31]\nN20 G91\n"

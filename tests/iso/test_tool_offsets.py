@@ -25,6 +25,7 @@ def _run(text: str, data: NcData | None = None, dialect: str = "iso-m"):
 
 
 def test_g43_h_applies_length_of_the_edge_with_that_h_number():
+    """Digest iso-dialects-840d rank 10 (000 L2917-2985)."""
     result = _run(SETUP + "T2 G43 H4 Z0\nG00 X1.\nM30\n")
     assert result.status == "ended", result.alarms
     assert ends(result, "mcs")[0][1] == {"X": 0.0, "Y": 0.0, "Z": 15.0}  # T2 D3, not D4
@@ -39,6 +40,7 @@ def test_h_number_of_the_active_tool_in_a_later_block():
 
 
 def test_unknown_h_number_raises_an_alarm():
+    """Digest iso-dialects-840d rank 10."""
     result = _run(SETUP + "T2 G43 H9 Z0\nM30\n")
     assert result.status == "alarm"
     assert result.alarms[0].number == 12550
@@ -50,6 +52,7 @@ def test_h_number_of_another_tool_is_not_found():
 
 
 def test_duplicate_h_number_raises_17183_with_its_holder():
+    """Digest iso-dialects-840d rank 10."""
     result = _run(SETUP + "G290\n$TC_DPH[1,1]=4\nM30\n")
     assert result.alarms[0].number == 17183
     assert result.alarms[0].params[-2:] == ("2", "3")

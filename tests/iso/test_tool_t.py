@@ -30,15 +30,18 @@ def _run(text: str, data: NcData):
 @pytest.mark.parametrize("word, expected", [("T0102", "T1 D2"), ("T1234", "T12 D34"),
                                             ("T123", "T12 D3"), ("T0100", "T1 D0")])
 def test_tool_word_is_tool_then_offset(word, expected):
+    """Digest iso-dialects-840d rank 10."""
     assert translate(word, "iso-t")[0].blocks == [expected]
 
 
 def test_md10888_sets_the_number_of_tool_digits():
+    """Digest iso-dialects-840d rank 10."""
     settings = IsoSettings(tool_digits=3)
     assert translate("T1234", "iso-t", settings)[0].blocks == ["T123 D4"]
 
 
 def test_manual_example_g10_writes_geometry_and_wear_and_t0105_raises():
+    """Digest iso-dialects-840d rank 10."""
     data = _data()
     text = ("N640 T0101\nN650 G10 P2 X10.\nN655 G10 P102 X1.\nN670 T0102\nN680 G00 X0 Z0\n"
             "N675 T0105\nM30\n")

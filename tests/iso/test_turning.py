@@ -45,6 +45,7 @@ def lines_run(result: RunResult) -> list[int]:
 
 
 def test_e5_g70_runs_the_contour_then_continues_after_its_own_block():
+    """Digest iso-dialects-840d rank 15 (E5, 000 L3663-3669)."""
     text = ("N10 G70 P20 Q50\nN20 X100. Z50.\nN30 X200.\nN40 Z100.\nN50 X250. Z111.\nN60 M30\n")
     result = run_lathe(text)
     assert result.status == "ended", result.alarms
@@ -61,6 +62,7 @@ E5_G71 = ("N5 G00 X260. Z120.\nN10 G71 P50 Q80 U4. W3. F0.5\nN20 G1 F0.5 G95 S10
 
 
 def test_e5_g71_skips_the_blocks_before_the_contour_and_continues_after_q():
+    """Digest iso-dialects-840d rank 15 (E5, 000 L3686-3695)."""
     result = run_lathe(E5_G71)
     assert result.status == "ended", result.alarms
     assert lines_run(result) == [1, 2, 10]  # start move, cycle (N10), then N90: N20-N80 never run
@@ -70,6 +72,7 @@ def test_e5_g71_skips_the_blocks_before_the_contour_and_continues_after_q():
 
 
 def test_g71_settings_block_moves_nothing_and_keeps_depth_and_retract():
+    """Digest iso-dialects-840d rank 15."""
     assert translate("N10 G71 U6. R5.", "iso-t")[0].blocks == []
     text = ("G00 X40. Z2.\nG71 U6. R5.\nG71 P10 Q20 F0.2\nN10 G00 X10.\nN20 G01 Z-30.\nM30\n")
     result = run_lathe(text)
@@ -151,6 +154,7 @@ def test_g75_grooving_pecks_in_x_and_steps_in_z():
 
 
 def test_g76_f_is_the_thread_lead_and_passes_deepen():
+    """Digest iso-dialects-840d rank 15."""
     text = ("G00 X24. Z5.\nG76 P010000 Q50 R0\nG76 X18. Z-20. P1000 Q500 F2.\nM30\n")
     result = run_lathe(text)
     assert result.status == "ended", result.alarms
