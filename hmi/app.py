@@ -285,7 +285,12 @@ class HmiApp(MachineControlPanel, App):
         """Reset (po): save, restart the simulated NCK from the retained data; False without one."""
         if self.nc_session is None:
             return False
+        # The override switches are hardware of the machine control panel: a restarted NCK
+        # reads them where they stand.
+        switches = dict(self.bridge.status.channel.overrides)
         self.bridge.replace_kernel(self.nc_session.power_on())
+        for which, percent in switches.items():
+            self.bridge.submit(cmd.SetOverride(which, percent))
         self.bridge.poll(force=True)
         return True
 

@@ -290,3 +290,21 @@ async def test_areas_on_a_kernel_without_nc_data_do_not_break() -> None:
         await pilot.pause()
         assert "needs the NC data directory" in app.hint
         assert app.internal_errors == []
+
+
+async def test_reset_po_keeps_the_override_switch_positions(tmp_path: Path) -> None:
+    """The override switches are on the machine control panel: an NCK restart does not turn
+    them, so after Reset (po) the new NCK reads the positions the switches stand in."""
+    app = trainer(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+down", "ctrl+down", "ctrl+pagedown")  # switches turned down
+        await pilot.pause()
+        before = dict(app.bridge.status.channel.overrides)
+        assert before["feed"] < 100.0 and before["spindle"] < 100.0
+        assert app.power_on_reset()  # Setup → Reset (po) → yes
+        await pilot.pause()
+        after = app.bridge.status.channel.overrides
+        assert after["feed"] == before["feed"] and after["spindle"] == before["spindle"]
+        await pilot.press("ctrl+up")  # the switch moves on from where it stands
+        await pilot.pause()
+        assert app.bridge.status.channel.overrides["feed"] > before["feed"]
