@@ -41,6 +41,7 @@ from nck.ncdata import NcData, WorkOffset
 
 ALARM_CIRCLE_NOT_DETERMINED = circles.ALARM_CIRCLE_END_POINT
 ALARM_THREAD_LEAD_ZERO = 16720  # G33 without (or with zero) thread lead
+ALARM_THREAD_FRAME = 10607  # a frame rotation changes the thread length
 ALARM_DC_NOT_POSSIBLE = 16800  # DC programmed for an axis that is not a rotary axis
 ALARM_ACP_NOT_POSSIBLE = 16810  # ACP/ACN programmed for an axis that is not a rotary axis
 ALARM_MODULO_POSITION = 16830  # ACP/ACN target outside 0 … < 360°
@@ -283,6 +284,7 @@ class PathBuilder:
         lead = None
         if kind == "G33":
             lead = self._thread_lead(words, geo, units)
+            self._check_thread_frame(words, geo.frames.transform(), start, end)
         context = {
             "kind": kind, "source": words.source, "plane": pl.code, "programmed": programmed,
             "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
@@ -415,6 +417,24 @@ class PathBuilder:
         if not geo.thread_lead_mm:
             raise NcAlarmError(ALARM_THREAD_LEAD_ZERO)
         return geo.thread_lead_mm
+
+    def _check_thread_frame(self, words: Any, transform: Transform, start: Mapping[str, float],
+                            end: Mapping[str, float]) -> None:
+        """10607 when a frame rotation tilts the thread axis (002 L55706-55711): the axis of the
+        lead letter (I/J/K; else the longest move) must keep its direction; MD11410 bit 12
+        suppresses the alarm."""
+        if int(self.machine.md_value("MD11410", None, 0) or 0) & (1 << 12):
+            return
+        letters = [i for i, k in enumerate(INTERP_LETTERS) if k in words.words]
+        if letters:
+            index = letters[-1]
+        else:
+            moves = [abs(end.get(a, 0.0) - start.get(a, 0.0)) for a in self.geo_axes]
+            index = moves.index(max(moves))
+        column = np.asarray(transform.matrix)[:3, index]
+        length = float(np.linalg.norm(column))
+        if length > 0.0 and math.hypot(*(column[i] for i in range(3) if i != index)) > 1e-9 * length:
+            raise NcAlarmError(ALARM_THREAD_FRAME)
 
     # ---------------------------------------------------------------- suppression
     def _suppressed_move(self, kind: str, words: Any, modal: Any, geo: GeometryState,

@@ -50,6 +50,7 @@ ALARM_NO_TRANSVERSE_AXIS = 10870  # G96 without a transverse axis (MD20100)
 ALARM_G96_WITHOUT_S = 10900  # first G96 without a cutting speed S
 ALARM_LIMS_NEGATIVE = 14820  # negative maximum spindle speed for G96 (LIMS)
 ALARM_NO_FEED = 10860
+ALARM_G93_WITH_TRC = 10798  # G93 while G41/G42 is active (002 L55402; own number)
 ALARM_PATH_VELOCITY = 14800
 ALARM_ADDRESS_TOO_OFTEN = 12010  # address type programmed too often
 AUX_LIMITS = {"M": 5, "S": 3, "H": 3, "T": 1, "D": 1, "F": 6}  # per block (H2, 828D)
@@ -242,6 +243,8 @@ class MotionBuilder:
         feed_type = modal.gcodes.get(15, "G94")
         units = self.path.units(modal)
         if feed_type == "G93":
+            if modal.gcodes.get(7) in ("G41", "G42"):
+                raise NcAlarmError(ALARM_G93_WITH_TRC)  # 002 L55402
             return {"feed": modal.feed, "feed_mm_min": None, "inverse_time": True}
         if feed_type in FEED_TYPES_PER_REV or feed_type in ("G952", "G962", "G972"):
             # Revolutional feed follows the master spindle; while it stands the path waits (V1).
