@@ -113,7 +113,7 @@ _SIMPLE_G = {
     "G40": "G40", "G41": "G41", "G42": "G42", "G54": "G54", "G55": "G55",
     "G56": "G56", "G57": "G57", "G58": "G505", "G59": "G506", "G61": "G60",
     "G64": "G64", "G9": "G9", "G09": "G9", "G90": "G90", "G91": "G91",
-    "G94": "G94", "G95": "G95", "G20": "G700", "G21": "G710", "G70": "G700",
+    "G93": "G93", "G94": "G94", "G95": "G95", "G20": "G700", "G21": "G710", "G70": "G700",
     "G71": "G710", "G53": "G53",
 }
 _SUPPORTED_OTHER = {"G54.1", "G4", "G04", "G10", "G28", "G43", "G44", "G49", "G52", "G80", "G92",
@@ -237,7 +237,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         gcodes.remove("G290")
     if "G291" in gcodes:
         gcodes.remove("G291")
-    if "G94" in gcodes:
+    if "G94" in gcodes or "G93" in gcodes:
         modal.per_rev = False
     if "G95" in gcodes:
         modal.per_rev = True
@@ -245,6 +245,8 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     number = f"N{int(values.pop('N'))} " if "N" in values else ""
     for code in gcodes:
         if code not in _SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
+            raise switching.unknown_g(code)
+        if code == "G93" and modal.turning:  # inverse-time feed is ISO M only (000 L609)
             raise switching.unknown_g(code)  # 12080 for a Siemens-only G code, else 12470
     framing = iso_frames.frame_codes(words, gcodes, values, modal.frames, modal.absolute,
                                      modal.turning)  # G68/G51/G51.1/G16 …

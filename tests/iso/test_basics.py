@@ -28,38 +28,54 @@ def test_same_text_in_siemens_mode_differs():
 
 
 def test_nested_comments_hide_words():
-    """Digest iso-dialects-840d rank 4 (000 L1688-1690)."""
+    """Digest iso-dialects-840d rank 4 (000 L1688-1690).
+
+    Digest iso-milling-828d rank 4.
+    """
     assert strip_comments("N15 (c(c) X100) Y100").split() == ["N15", "Y100"]
     result = run_iso("N15 (a(b) X100) Y100\nM30\n")
     assert ends(result) == [(1, {"X": 0.0, "Y": 100.0, "Z": 0.0})]
 
 
 def test_comment_then_words_both_run():
+    """Digest iso-milling-828d rank 4."""
     result = run_iso("N10 (c(c)) X100 Y100\nM30\n")
     assert ends(result)[0][1] == {"X": 100.0, "Y": 100.0, "Z": 0.0}
 
 
 def test_slash_in_comment_is_ignored():
-    """Digest iso-dialects-840d rank 4."""
+    """Digest iso-dialects-840d rank 4.
+
+    Digest iso-milling-828d rank 5.
+    """
     result = run_iso("X100. ( /3 ) Y100\nM30\n", skip_levels=frozenset({3}))
     assert ends(result)[0][1] == {"X": 100.0, "Y": 100.0, "Z": 0.0}
 
 
 def test_mid_block_skip_discards_rest_when_level_active():
-    """Digest iso-dialects-840d rank 4 (000 L1679-1716)."""
+    """Digest iso-dialects-840d rank 4 (000 L1679-1716).
+
+    Digest iso-milling-828d rank 5.
+    """
     skip, words = split_words("N5 G00 X100. /3 YY100", frozenset({3}))
     assert [w.letter for w in words] == ["N", "G", "X"]
 
 
 def test_mid_block_skip_off_reads_garbage_as_syntax_error():
-    """Digest iso-dialects-840d rank 4 (level off: 12080)."""
+    """Digest iso-dialects-840d rank 4 (level off: 12080).
+
+    Digest iso-milling-828d rank 5.
+    """
     result = run_iso("N5 G00 X100. /3 YY100\nM30\n")
     assert result.status == "alarm" and result.alarms[0].number == 12080
 
 
 @pytest.mark.parametrize("text", ["/0 X1", "/10 X1"])
 def test_skip_level_out_of_range_is_14060(text):
-    """Digest iso-dialects-840d rank 4 (/0, /10: 14060)."""
+    """Digest iso-dialects-840d rank 4 (/0, /10: 14060).
+
+    Digest iso-milling-828d rank 5.
+    """
     result = run_iso(text + "\nM30\n")
     assert result.alarms[0].number == 14060
 
@@ -86,7 +102,10 @@ def _first_x(text: str, settings: IsoSettings) -> str:
 
 
 def test_decimal_point_rules():
-    """Digest iso-dialects-840d rank 1 (000 L987-1050)."""
+    """Digest iso-dialects-840d rank 1 (000 L987-1050).
+
+    Digest iso-milling-828d rank 3 (003 decimal point table).
+    """
     standard = IsoSettings(pocket_calculator=False)
     assert _first_x("G90 G01 X1000 Y2000. F100", standard) == "G90 G1 X1 Y2000 F100"
     is_c = IsoSettings(pocket_calculator=False, increment_system_c=True)
@@ -152,6 +171,7 @@ def test_g52_local_offset():
 
 
 def test_g290_switches_to_siemens_and_g291_back():
+    """Digest iso-milling-828d rank 6 (G291 switches; T, D/H and G54 kept)."""
     text = "G91\nG290\nR1=5\nG291\nG01 X1. F100\nM30\n"
     result = run_iso(text)
     assert result.status == "ended", result.alarms
@@ -289,6 +309,7 @@ def test_e1_language_switch_keeps_modal_state():
 
 
 def test_g28_goes_via_intermediate_point_to_reference():
+    """Digest iso-milling-828d rank 12."""
     result = run_iso("G0 X10. Y10. Z10.\nG28 Z20.\nM30\n")
     assert result.status == "ended", result.alarms
     assert [e[1]["Z"] for e in ends(result, "mcs")] == [10.0, 20.0, 0.0]

@@ -85,6 +85,7 @@ def test_md20734_bit3_hands_rejected_blocks_to_siemens():
 
 
 def test_language_switch_keeps_tool_offsets_and_frames():
+    """Digest iso-milling-828d rank 6."""
     text = "G52 X10.\nG290\nG0 X0\nG291\nG00 X5.\nM30\n"
     result = run_iso(text)
     assert result.status == "ended", result.alarms

@@ -24,6 +24,7 @@ def test_level_off_runs_the_whole_block_and_its_alarm():
 
 
 def test_level_decides_which_words_run():
+    """Digest iso-milling-828d rank 5 (/ and /1 are independent switches)."""
     text = "G00 X10. /2 Y20.\nM30\n"
     assert ends(run_iso(text, skip_levels=frozenset({2})))[0][1] == {"X": 10.0, "Y": 0.0, "Z": 0.0}
     assert ends(run_iso(text))[0][1] == {"X": 10.0, "Y": 20.0, "Z": 0.0}
