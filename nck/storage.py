@@ -9,7 +9,10 @@ Layout below the file-system root (``<data dir>/nc``)::
 Programs are addressed by a path such as ``"MPF/PART1.MPF"``,
 ``"WKS/SHAFT.WPD/SHAFT.MPF"`` or simply ``"PART1.MPF"`` (the directory follows
 from the extension). Names are not case-sensitive and are stored in capitals.
-Every write is atomic (:mod:`nck.atomic`). A program in use (selected for or
+Every write is atomic (:mod:`nck.atomic`). Only regular files are programs
+and only real directories workpieces (:mod:`nck.regular_files`): a link, FIFO
+or device named like a program is never read or written through; the listing
+skips it and names it (:meth:`NcFileSystem.scan_directory`). A program in use (selected for or
 being executed) cannot be saved, renamed or deleted: the owner of the channel
 reports which programs are in use through :attr:`NcFileSystem.in_use_check`.
 
@@ -26,6 +29,9 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
+from nck.regular_files import (
+    copy_regular_tree, is_plain_directory, is_regular_file, read_regular_bytes,
+)
 
 DIRECTORIES = ("MPF", "SPF", "WKS")
 PROGRAM_TYPES = ("MPF", "SPF")
@@ -162,11 +168,11 @@ class NcFileSystem:
 
     def _entry(self, canonical: str) -> ProgramEntry:
         disk = self._disk(canonical)
-        stat = disk.stat()
+        stat = disk.lstat()
         name = canonical.rpartition("/")[2]
         kind = name.rpartition(".")[2]
-        size = stat.st_size if disk.is_file() else sum(
-            p.stat().st_size for p in disk.iterdir() if p.is_file()
+        size = stat.st_size if kind != WORKPIECE_SUFFIX else sum(
+            p.lstat().st_size for p in disk.iterdir() if is_regular_file(p)
         )
         return ProgramEntry(canonical, name, kind, size, stat.st_mtime_ns)
 
@@ -198,19 +204,35 @@ class NcFileSystem:
 
     def list_directory(self, directory: str = "MPF") -> list[ProgramEntry]:
         """The programs (or, for ``WKS``, the workpieces) of one directory, sorted by name."""
+        return self.scan_directory(directory)[0]
+
+    def scan_directory(self, directory: str = "MPF") -> tuple[list[ProgramEntry], list[str]]:
+        """The entries of one directory sorted by name, and the odd ones skipped.
+
+        An odd entry has the name of a program or workpiece but is of the wrong
+        kind: a link (even to a program), a FIFO, a device, a file named like a
+        workpiece or a folder named like a program. It is left out of the list
+        and never opened; its file name is returned so that it can be reported.
+        Files with other names (temporary files, foreign files) are ignored.
+        """
         canonical = self.canonical(directory)
         disk = self._disk(canonical)
         if not disk.is_dir():
             raise StorageError("not_found", f"{directory} does not exist")
-        entries = []
+        entries, odd = [], []
         for item in disk.iterdir():
             try:
                 child = self.canonical(f"{canonical}/{item.name}")
             except StorageError:
                 continue  # not an NC file (temp files, foreign files)
-            if item.is_dir() == child.endswith("." + WORKPIECE_SUFFIX):
+            wanted = is_plain_directory if child.endswith("." + WORKPIECE_SUFFIX) else is_regular_file
+            try:
+                if not wanted(item):
+                    raise FileNotFoundError(item)
                 entries.append(self._entry(child))
-        return sorted(entries, key=lambda e: e.name)
+            except OSError:  # of the wrong kind, or gone meanwhile
+                odd.append(item.name)
+        return sorted(entries, key=lambda e: e.name), sorted(odd)
 
     def all_programs(self) -> list[ProgramEntry]:
         """Every MPF and SPF file, workpieces included."""
@@ -221,11 +243,14 @@ class NcFileSystem:
 
     # ---------------------------------------------------------- read / write
     def read_bytes(self, path: str) -> bytes:
-        """The raw content of a program."""
+        """The raw content of a program (a regular file of at most MAX_IMPORT_BYTES)."""
         disk = self._disk(self.canonical(path))
-        if not disk.is_file():
+        if not os.path.lexists(disk):
             raise StorageError("not_found", f"{path} does not exist")
-        return disk.read_bytes()
+        try:
+            return read_regular_bytes(disk, MAX_IMPORT_BYTES)
+        except OSError as exc:
+            raise StorageError("io", f"{path}: {exc.strerror}") from exc
 
     def read(self, path: str) -> str:
         """The text of a program (raise not_text when it is binary or not UTF-8)."""
@@ -318,7 +343,11 @@ class NcFileSystem:
         if src.endswith("." + WORKPIECE_SUFFIX):
             if self.exists(dst):
                 raise StorageError("exists", f"{dst} already exists")
-            shutil.copytree(self._disk(src), self._disk(dst))
+            try:
+                copy_regular_tree(self._disk(src), self._disk(dst), MAX_IMPORT_BYTES)
+            except OSError as exc:
+                shutil.rmtree(self._disk(dst), ignore_errors=True)
+                raise StorageError("io", f"{dst} could not be written: {exc.strerror}") from exc
             return self._entry(dst)
         self._require_parent(dst)
         try:
@@ -349,13 +378,13 @@ class NcFileSystem:
         if canonical in DIRECTORIES:
             raise StorageError("bad_path", f"the directory {canonical} cannot be deleted")
         disk = self._disk(canonical)
-        if not disk.exists():
+        if not os.path.lexists(disk):
             raise StorageError("not_found", f"{canonical} does not exist")
         self._refuse_in_use(canonical, "deleted")
-        if disk.is_dir():
+        if is_plain_directory(disk):
             shutil.rmtree(disk)
         else:
-            disk.unlink()
+            disk.unlink()  # a file, or a link itself (never what it points to)
 
     # ------------------------------------------------------- import / export
     def import_file(self, local_path: Path | str, directory: str = "MPF",
@@ -483,9 +512,8 @@ class ScopedProgramSource:
         for candidate in candidates:
             try:
                 canonical = self.fs.canonical(candidate)
-                disk = self.fs._disk(canonical)
-                if disk.is_file():
-                    text = disk.read_bytes().decode("utf-8", errors="replace")
+                if self.fs.exists(canonical):
+                    text = self.fs.read_bytes(canonical).decode("utf-8", errors="replace")
                     return canonical.rpartition("/")[2], text
             except (StorageError, OSError):
                 continue

@@ -265,10 +265,12 @@ class ProgramManagerScreen(AreaBase):
         table = self.table
         previous = select or (self.current_entry().path if self.current_entry() else None)
         try:
-            self.entries = self.files.fs.list_directory(self.directory)
+            self.entries, odd = self.files.fs.scan_directory(self.directory)
         except (OSError, ProgramFileError) as exc:
-            self.entries = []
+            self.entries, odd = [], []
             self.say(f"{self.directory}: {exc}")
+        if odd:
+            self.say(f"{self.directory}: skipped {', '.join(odd)} (not a regular file or folder)")
         selected = (self.status.channel.selected_program if self.status else None) or ""
         selected_name = Path(selected).name.upper()
         table.clear()

@@ -164,3 +164,17 @@ async def test_keyswitch_0_may_not_edit(data_dir: Path) -> None:
         await pilot.pause()
         await pilot.pause()
         assert not screen.editor.read_only
+
+
+async def test_a_dangling_link_and_a_fifo_are_skipped_and_named(data_dir: Path) -> None:
+    """An odd entry named like a program is left out and reported; the rest is listed."""
+    import os
+
+    (data_dir / "MPF" / "OTHER.MPF").write_text("M30\n")
+    (data_dir / "MPF" / "DANGLING.MPF").symlink_to(data_dir / "nowhere")
+    os.mkfifo(data_dir / "MPF" / "PIPE.MPF")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_manager(pilot)
+        assert listed(app) == ["DEMO.MPF", "OTHER.MPF"]
+        assert "DANGLING.MPF, PIPE.MPF" in hint(app) and "skipped" in hint(app)

@@ -74,3 +74,56 @@ def test_every_door_refuses_a_linked_lock_with_a_message(tmp_path: Path, capsys)
     messages = capsys.readouterr().err
     assert messages.count("not a regular file") == 3 and "Traceback" not in messages
     assert victim.read_text() == VICTIM_TEXT
+
+
+def _file_system(tmp_path: Path):
+    from nck.storage import NcFileSystem
+
+    fs = NcFileSystem(tmp_path / "nc")
+    fs.save("MPF/AA.MPF", "G0 X1\n")
+    return fs
+
+
+def test_odd_entries_named_like_programs_are_skipped_and_named(tmp_path: Path) -> None:
+    fs = _file_system(tmp_path)
+    mpf = tmp_path / "nc" / "MPF"
+    (mpf / "DANGLING.MPF").symlink_to(tmp_path / "nowhere")
+    (mpf / "ZERO.MPF").symlink_to("/dev/zero")
+    (mpf / "LINKED.MPF").symlink_to(mpf / "AA.MPF")
+    os.mkfifo(mpf / "PIPE.MPF")
+    (mpf / "FOLDER.MPF").mkdir()
+    (tmp_path / "nc" / "WKS" / "FILE.WPD").write_text("")
+    entries, odd = fs.scan_directory("MPF")
+    assert [e.name for e in entries] == ["AA.MPF"]
+    assert odd == ["DANGLING.MPF", "FOLDER.MPF", "LINKED.MPF", "PIPE.MPF", "ZERO.MPF"]
+    assert fs.scan_directory("WKS") == ([], ["FILE.WPD"])
+    assert [e.name for e in fs.all_programs()] == ["AA.MPF"]
+
+
+def test_programs_are_never_read_through_a_link_or_fifo(tmp_path: Path) -> None:
+    from nck.storage import StorageError
+
+    fs = _file_system(tmp_path)
+    victim = _victim(tmp_path)
+    mpf = tmp_path / "nc" / "MPF"
+    (mpf / "VICTIM.MPF").symlink_to(victim)
+    (mpf / "ZERO.MPF").symlink_to("/dev/zero")
+    os.mkfifo(mpf / "PIPE.MPF")
+    for name in ("VICTIM.MPF", "ZERO.MPF", "PIPE.MPF"):
+        with pytest.raises(StorageError, match="not a regular file"):
+            fs.read(name)
+        assert fs.read_program(name.removesuffix(".MPF")) is None  # a CALL finds nothing
+    fs.save("VICTIM.MPF", "M30\n")  # replaces the link itself
+    assert victim.read_text() == VICTIM_TEXT and fs.read("VICTIM.MPF") == "M30\n"
+    fs.delete("ZERO.MPF")  # the link goes, nothing else
+    assert not os.path.lexists(mpf / "ZERO.MPF")
+
+
+def test_copying_a_workpiece_copies_regular_files_only(tmp_path: Path) -> None:
+    fs = _file_system(tmp_path)
+    fs.create_workpiece("SHAFT")
+    folder = tmp_path / "nc" / "WKS" / "SHAFT.WPD"
+    (folder / "ZERO.SPF").symlink_to("/dev/zero")
+    os.mkfifo(folder / "PIPE.SPF")
+    fs.copy("WKS/SHAFT.WPD", "WKS/COPY.WPD")
+    assert sorted(p.name for p in (tmp_path / "nc" / "WKS" / "COPY.WPD").iterdir()) == ["SHAFT.MPF"]
