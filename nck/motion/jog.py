@@ -133,7 +133,7 @@ class JogUnit:
             if run.override and not run.stopping:
                 s, v, a = run.profile.state_at(max(run.tau, 0.0))
                 rest = run.profile.length - s
-                vmax = run.velocity_mm_s * self.feed_pct / 100.0
+                vmax = self._capped(i, run.velocity_mm_s * self.feed_pct / 100.0)
                 profile = build_profile(rest, v, 0.0, vmax, self.params.axes[i].max_accel_mm_s2, None)
                 self.runs[i] = AxisRun(i, run.origin + run.direction * s, run.direction, profile, run.purpose,
                                        run.velocity_mm_s, run.override)
@@ -185,9 +185,13 @@ class JogUnit:
         v0 = 0.0
         if current is not None and current.direction == direction and not current.purpose.startswith("ref"):
             _s, v0, _a = current.profile.state_at(max(current.tau, 0.0))
-        vmax = v_mm_s * (self.feed_pct / 100.0 if override else 1.0)
+        vmax = self._capped(i, v_mm_s * (self.feed_pct / 100.0 if override else 1.0))
         profile = build_profile(max(length, 0.0), v0, 0.0, vmax, accel, None)
         self.runs[i] = AxisRun(i, position, direction, profile, purpose, v_mm_s, override)
+
+    def _capped(self, i: int, v_mm_s: float) -> float:
+        """No JOG velocity (rapid, override) beyond the axis' maximum velocity MD32000."""
+        return min(v_mm_s, self.params.axes[i].max_velo_mm_s)
 
     def _brake(self, i: int, run: AxisRun) -> None:
         s, v, a = run.profile.state_at(max(run.tau, 0.0))
