@@ -180,6 +180,7 @@ def test_spindle_and_tool_display_follow_the_main_run() -> None:
 
 
 def test_reading_actual_positions_waits_for_the_main_run() -> None:
+    """Digest job-planning-variables rank 10: a main-run variable read in the program waits for the motion before it (004 L177-196)."""
     nck = make({"P.MPF": "N10 G1 X12 F600\nN20 R1=$AA_IM[X]\nN30 M30"})
     start(nck, "P.MPF")
     assert until_state(nck, "reset", "aborted")
