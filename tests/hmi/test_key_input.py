@@ -15,8 +15,10 @@ from nck import commands as c
 
 from hmi.app import HmiApp
 from hmi.key_input import PanelKeyParser, PanelTerminalDriver
+from hmi.keymap import default_keymap
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck
+from tests.hmi.terminal_bytes import terminal_bytes
 
 ALT_G = "\x1bg"  # CYCLE START as the terminal sends it (ESC + letter)
 ALT_K = "\x1bk"  # SINGLE BLOCK
@@ -58,6 +60,22 @@ def test_sequences_and_plain_keys_still_read_as_before() -> None:
     for reads in splits(burst):
         assert names(parse(*reads)) == ["alt+d", "shift+f1", "f1", "up", "home", "a",
                                         "ctrl+right"], reads
+
+
+def keymap_keys() -> list[str]:
+    """Every key of data/keymap.toml; Shift+F3 aside (its bytes read as a cursor report,
+    which the app turns back into the key, tests/hmi/test_shift_f3.py)."""
+    keys = [k.strip() for b in default_keymap().bindings for k in b.keys.split(",")]
+    return [k for k in keys if k != "shift+f3"]
+
+
+def test_every_keymap_key_in_one_burst_arrives_as_sent() -> None:
+    keys = keymap_keys()
+    burst = "".join(terminal_bytes(key) for key in keys)
+    assert names(parse(burst)) == keys
+    doubled = "".join(terminal_bytes(key) * 2 for key in keys)  # every key pressed twice
+    assert names(parse(doubled)) == [key for key in keys for _ in range(2)]
+    assert all(not key.is_printable for key in parse(doubled))
 
 
 def test_alt_chord_never_carries_text() -> None:
