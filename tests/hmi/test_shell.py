@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import io
+import re
+
+from rich.console import Console
+
 from nck import commands as c
 
 from hmi.app import AREAS, HmiApp
@@ -93,14 +98,34 @@ async def test_menu_select_offers_areas_and_recall_goes_back(fake_app: HmiApp) -
         assert fake_app.current_mode == "diagnostics"
 
 
+def help_lines(app: HmiApp) -> list[list[str]]:
+    """The rows of the help overlay's table as the operator reads them, split into columns."""
+    console = Console(width=160, record=True, file=io.StringIO())
+    console.print(app.screen.query_one("#help-table").content)
+    return [re.split(r"\s{2,}", line.strip()) for line in console.export_text().splitlines()]
+
+
 async def test_help_overlay_lists_keys(fake_app: HmiApp) -> None:
-    """F11 opens an overlay listing the keys; F11 closes it again."""
+    """F11 lists the softkeys in force and every panel key of the keymap; F11 closes it."""
     async with fake_app.run_test(size=SIZE) as pilot:
+        menu = fake_app.screen.softkey_menu()
         await pilot.press("f11")
         await pilot.pause()
         assert fake_app.screen.id == "help"
-        text = str(fake_app.screen.query_one("#help-table").render())
-        assert "CYCLE START" in text or fake_app.screen.query_one("#help-table") is not None
+        rows = help_lines(fake_app)
+        # keymap.md: the operator panel and the machine control panel, key, panel key, meaning
+        for row in (["Alt+M", "MACHINE"], ["F12", "ALARM CANCEL"], ["Alt+U", "AUTO"],
+                    ["Alt+G", "CYCLE START"], ["Alt+H", "CYCLE STOP"], ["Alt+Q", "RESET"],
+                    ["Alt+K", "SINGLE BLOCK"]):
+            assert any(line[:2] == row for line in rows), row
+        for binding in fake_app.keymap.bindings:
+            if binding.scope in ("op", "mcp"):
+                assert [binding.key_display, binding.panel, binding.label] in rows, binding.id
+        shown = [(f"F{i}", f"HSK{i}", key) for i, key in enumerate(menu.horizontal, 1) if key] \
+            + [(f"Shift+F{i}", f"VSK{i}", key) for i, key in enumerate(menu.vertical, 1) if key]
+        assert shown  # the machine area has softkeys
+        for fkey, panel, softkey in shown:
+            assert [fkey, panel, softkey.label.replace("\n", " ")] in rows, fkey
         await pilot.press("f11")
         await pilot.pause()
         assert isinstance(fake_app.screen, AreaBase)
