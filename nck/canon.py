@@ -44,6 +44,7 @@ class Motion:
             revolution of the master spindle: the motion takes the path feed from the
             spindle's speed when the block runs (002 L55411-55420); ``feed_mm_min`` is
             then the value at the programmed speed (estimates). None otherwise.
+        accel_pct: ``ACC[axis]`` factors (percent of MD32300) of axes not at 100 %, or None.
         exact_stop: True if this block ends with exact stop (G60 modal or G9).
         exact_stop_window: ``G601`` fine or ``G602`` coarse.
         lead_mm: thread lead for G33 (mm per spindle revolution).
@@ -72,6 +73,7 @@ class Motion:
     feed: float | None = None
     feed_mm_min: float | None = None
     feed_mm_rev: float | None = None
+    accel_pct: Mapping[str, float] | None = None
     exact_stop: bool = False
     exact_stop_window: str = "G601"
     lead_mm: float | None = None

@@ -473,6 +473,7 @@ class PathBuilder:
             feed=feed.get("feed") if kind != "G0" else None,
             feed_mm_min=self._feed_value(feed, length) if kind != "G0" else None,
             feed_mm_rev=feed.get("feed_mm_rev") if kind != "G0" else None,
+            accel_pct=feed.get("accel_pct"),
             exact_stop=True, exact_stop_window=modal.gcodes.get(12, "G601"),
             gcodes=dict(modal.gcodes),
         )
@@ -504,7 +505,7 @@ class PathBuilder:
     def _feed_value(self, feed: Mapping[str, Any], length_mm: float) -> float | None:
         if feed.get("inverse_time"):
             f = feed.get("feed") or 0.0
-            return max(length_mm, 1e-9) * float(f)
+            return max(length_mm, 1e-9) * float(f) * feed.get("override", 1.0)
         return feed.get("feed_mm_min")
 
     def emit(self, element: LineElement | Arc, context: Mapping[str, Any], start_mcs: Mapping[str, float],
@@ -550,6 +551,7 @@ class PathBuilder:
             feed=None if rapid else feed.get("feed"),
             feed_mm_min=feed_mm_min,
             feed_mm_rev=feed_mm_rev,
+            accel_pct=feed.get("accel_pct"),
             exact_stop=context["exact"],
             exact_stop_window=context["window"],
             lead_mm=context["lead"],

@@ -52,6 +52,9 @@ class GeometryState:
         lims_rpm: G96 spindle speed limit (LIMS), None = none.
         axis_feeds: positioning-axis feeds FA[axis] (mm/min or deg/min).
         thread_lead_mm: last programmed thread lead.
+        feed_override_pct: programmable feed override OVR (002 L56515-56536), 100 after RESET.
+        accel_pct: ACC[axis] acceleration factors in percent (002 L7433-7450), axes not at 100;
+            reduced to 100 by RESET/M30 (MD32320 bit 0 = 0, the only setting modelled).
         loaded: False after RESET: settable and basic frame are read again from the NC data.
     """
 
@@ -68,6 +71,8 @@ class GeometryState:
     lims_rpm: float | None = None
     axis_feeds: dict[str, float] = field(default_factory=dict)
     thread_lead_mm: float | None = None
+    feed_override_pct: float = 100.0
+    accel_pct: dict[str, float] = field(default_factory=dict)
     loaded: bool = False
 
     def __deepcopy__(self, memo: dict) -> "GeometryState":
@@ -75,6 +80,7 @@ class GeometryState:
         new = copy.copy(self)
         new.wcs_mm = dict(self.wcs_mm)
         new.axis_feeds = dict(self.axis_feeds)
+        new.accel_pct = dict(self.accel_pct)
         if self.pending is not None:
             new.pending = PendingCorner(self.pending.element, self.pending.aid, self.pending.size_mm,
                                         dict(self.pending.context))
@@ -94,4 +100,6 @@ class GeometryState:
         self.adis_mm = 0.0
         self.adispos_mm = 0.0
         self.lims_rpm = None
+        self.feed_override_pct = 100.0
+        self.accel_pct = {}
         self.loaded = False

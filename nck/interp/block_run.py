@@ -228,8 +228,8 @@ class BlockRun:
                 raise NcAlarmError(12550, address)
         elif address not in VALUE_ADDRESSES and not (address[0] in "IJK" and address[1:].isdigit()):
             raise NcAlarmError(12550, address)
-        if word.indices and address == "FA":  # FA[X]=…: one feed per positioning axis
-            address = f"FA[{to_string(self._index_value(word.indices[0]))}]"
+        if word.indices and address in ("FA", "ACC"):  # FA[X]=…, ACC[X]=…: one value per axis
+            address = f"{address}[{to_string(self._index_value(word.indices[0]))}]"
         if address in self.words.words:
             raise NcAlarmError(12000, address)
         self.words.words[address] = float(number)

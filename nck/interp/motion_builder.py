@@ -229,8 +229,40 @@ class MotionBuilder:
                 if value <= 0:
                     raise NcAlarmError(ALARM_PATH_VELOCITY)
                 geo.axis_feeds[key[3:-1]] = value * self.path.units(modal).feed_mm
+            elif key.startswith("ACC[") and key.endswith("]"):
+                # 002 L7433-7450: 0 < factor ≤ 200 % of the axis' maximum acceleration, modal.
+                axis = key[4:-1]
+                if axis not in self.machine.path_axes:
+                    raise NcAlarmError(12550, axis)
+                if not 0.0 < value <= 200.0:
+                    raise NcAlarmError(12160, "ACC")
+                if value == 100.0:
+                    geo.accel_pct.pop(axis, None)
+                else:
+                    geo.accel_pct[axis] = float(value)
+            elif key == "ACC":
+                raise NcAlarmError(12080, "ACC")  # the axis is required: ACC[X]=…
+        if "OVR" in words.words:
+            # 002 L56515-56536: 0 … 200 %, multiplied with the override of the panel.
+            value = words.words["OVR"]
+            if not 0.0 <= value <= 200.0:
+                raise NcAlarmError(12160, "OVR")
+            geo.feed_override_pct = float(value)
 
     def _feed_info(self, modal: ModalState, geo: GeometryState) -> dict[str, Any]:
+        """The feed of a path block with the programmable override OVR and the ACC factors."""
+        info = self._programmed_feed(modal, geo)
+        share = geo.feed_override_pct / 100.0
+        if share != 1.0 and info["feed"] is not None:
+            for key in ("feed_mm_min", "feed_mm_rev"):
+                if info.get(key) is not None:
+                    info[key] *= share
+            info["override"] = share
+        if geo.accel_pct:
+            info["accel_pct"] = dict(geo.accel_pct)
+        return info
+
+    def _programmed_feed(self, modal: ModalState, geo: GeometryState) -> dict[str, Any]:
         kind = modal.gcodes.get(1, "G1")
         if kind == "G0":
             return {"feed": None, "feed_mm_min": None, "inverse_time": False}

@@ -110,6 +110,8 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
         return None
     if gcodes.get(15, "G94") != "G94" or geo.feed_type != "G94" or geo.frames.settable_code != gcodes.get(8, "G500"):
         return None
+    if geo.feed_override_pct != 100.0 or geo.accel_pct:
+        return None  # OVR and ACC go through the path builder
     stage = getattr(geo, STAGE_ATTRIBUTE, None)
     if stage is None or stage.compensator.active:
         return None

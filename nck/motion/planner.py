@@ -124,18 +124,22 @@ def plan_segment(
     exact_stop: bool,
     window: str,
     source: Source | None,
+    accel_factors: list[float] | None = None,
 ) -> PlannedSegment:
-    """Compute the limits of one segment."""
+    """Compute the limits of one segment (``accel_factors``: ACC per axis, 1 = 100 %)."""
     share = segment.max_direction_share()
     moved = share > 1e-12
     axes = params.axes
     arrays = axis_arrays(params)
     v_cap = a_lin = j_lin = math.inf
     moving = False
-    for part, (vmax, amax, jmax, g0_accel, g0_jerk, soft_accel) in zip(share.tolist(), arrays.rows):
+    for index, (part, (vmax, amax, jmax, g0_accel, g0_jerk, soft_accel)) in enumerate(
+            zip(share.tolist(), arrays.rows)):
         if part <= 1e-12:
             continue
         moving = True
+        if accel_factors is not None:
+            amax *= accel_factors[index]
         inv = 1.0 / part
         accel_ax, jerk_ax = amax, jmax
         if rapid:

@@ -141,9 +141,13 @@ class PlannedMotion(PathInterpolator):
         feed = None if rapid else self._effective_feed(item)
         soft = item.gcodes.get(21, "BRISK") == "SOFT" if item.gcodes else False
         window = item.exact_stop_window or "G601"
+        factors = None
+        if item.accel_pct:
+            factors = [float(item.accel_pct.get(name, 100.0)) / 100.0 for name in self.names]
         planned = plan_segment(
             self.params, segment, rapid=rapid, feed_mm_s=feed, soft=soft,
             exact_stop=bool(item.exact_stop), window=window, source=item.source,
+            accel_factors=factors,
         )
         if not rapid and self._follows_spindle(item):
             planned.feed_mm_rev = item.feed_mm_rev

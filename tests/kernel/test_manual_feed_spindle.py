@@ -250,3 +250,62 @@ def test_check_agrees_with_the_run_on_spindle_positioning_words() -> None:
 
     assert numbers("N10 SPOS=DC(45)\nN20 SPOS=ACN(10)\nN30 WAITS\nN40 M19\nM30\n") == []
     assert numbers("N10 SPOS=400\nM30\n") == [16830]  # absolute positions are 0 … 359.999°
+
+
+# ----------------------------------------------------------------------------- OVR, ACC
+def test_programmable_feed_override_multiplies_with_the_panel() -> None:
+    # 002 L56515-56536: OVR= 0 … 200 % changes the path feed; the active override is the
+    # product with the panel's. 100 mm at F1000: 6 s; OVR=50: 12 s; OVR=200 at 50 % panel: 6 s.
+    plain = run_time_s(make({"P.MPF": "N10 G1 X100 F1000\nN20 M30"}), "P.MPF")
+    slow = run_time_s(make({"P.MPF": "N5 OVR=50\nN10 G1 X100 F1000\nN20 M30"}), "P.MPF")
+    assert slow - plain == pytest.approx(6.0, abs=0.05)
+    both = make({"P.MPF": "N5 OVR=200\nN10 G1 X100 F1000\nN20 M30"})
+    both.submit(c.SetOverride("feed", 50))
+    assert run_time_s(both, "P.MPF") == pytest.approx(plain, abs=0.05)
+
+
+def test_ovr_is_100_percent_again_after_reset() -> None:
+    # 002 L56533-56536: 100 % after RESET (MD22410 not set).
+    nck = make({"P.MPF": "N5 OVR=50\nN10 G1 X10 F600\nN20 M30", "Q.MPF": "N10 G1 X0 F600\nN20 M30"})
+    first = run_time_s(nck, "P.MPF")
+    assert run_time_s(nck, "Q.MPF") == pytest.approx(first - 1.0, abs=0.05)  # 1 s at F600, 2 s at 50 %
+
+
+def travel_s(nck: Nck, program: str, target_x: float) -> float:
+    """Time the X setpoint needs from leaving its place to reaching ``target_x`` (cycle by cycle)."""
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram(program))
+    start_x = nck.positions_mcs()["X"]
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: abs(k.positions_mcs()["X"] - start_x) > 1e-9, 5.0)
+    start = nck.time_s
+    assert nck.run_until(lambda k: abs(k.positions_mcs()["X"] - target_x) < 1e-9, 5.0)
+    travel = nck.time_s - start
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 5.0)
+    return travel
+
+
+def test_acc_scales_the_axis_acceleration_until_reset() -> None:
+    # 002 L7433-7450: ACC[axis] = 0 < factor ≤ 200 % of the maximum acceleration, modal;
+    # reduced to 100 % by RESET/M30 (MD32320 bit 0 = 0). X10 at F30000 never reaches the
+    # feed with MD32300 = 2.5 m/s²: t = 2·√(s/a), 0.253 s at 25 % (a = 625 mm/s²), 0.126 s at 100 %.
+    nck = make({"P.MPF": "N5 ACC[X]=25\nN10 G1 X10 F30000\nN20 M30",
+                "Q.MPF": "N10 G1 X0 F30000\nN20 M30"}, batch_cycles=1)
+    amax = float(nck.machine.md_value("MD32300", "X", None)) * 1000.0
+    assert travel_s(nck, "P.MPF", 10.0) == pytest.approx(2.0 * (10.0 / (0.25 * amax)) ** 0.5, abs=0.008)
+    assert travel_s(nck, "Q.MPF", 0.0) == pytest.approx(2.0 * (10.0 / amax) ** 0.5, abs=0.008)
+
+
+@pytest.mark.parametrize(("text", "number"), [
+    ("N10 ACC[X]=0\nM30\n", 12160), ("N10 ACC[X]=201\nM30\n", 12160),
+    ("N10 OVR=201\nM30\n", 12160), ("N10 ACC[Q]=50\nM30\n", 12550),
+])
+def test_acc_and_ovr_out_of_range_are_refused_by_run_and_check(text: str, number: int) -> None:
+    from nck.headless import check_program, run_program
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
+
+    machine = load_machine()
+    assert [a.number for a in check_program(machine, MemorySource({}), "C.MPF", text)] == [number]
+    run = run_program(machine, MemorySource({}), NcData(), "C.MPF", text=text)
+    assert [a.number for a in run.alarms] == [number]
