@@ -14,6 +14,8 @@ from typing import Any
 
 from nck.canon import Motion
 from nck.channel import INTERRUPTED
+from nck.geometry.cutting_edge import effective_radius
+from nck.geometry.tool_length import effective_lengths
 from nck.program_control import ProgramRun
 from nck.status import AxisStatus, ChannelStatus, ModalView, NckStatus
 
@@ -184,7 +186,18 @@ class StatusView:
                 base = ModalView()
         # Tool, edge, spindle and auxiliary functions as the main run output them:
         # the interpreter's own modal state is ahead of the machine (look-ahead).
+        length_mm, radius_mm = self._edge_values()
         return replace(
             base, tool=self._tool, edge=self._edge, spindle_speed_rpm=self._spindle_rpm,
             spindle_state=self._spindle_state, aux=dict(self._aux),
+            tool_length_mm=length_mm, tool_radius_mm=radius_mm,
         )
+
+    def _edge_values(self) -> tuple[float, float]:
+        """Length 1 and radius of the active edge, geometry + wear (+ base for the length),
+        with the wear sign of SD42930; 0, 0 without an active edge (T0 or D0)."""
+        edge = self.data.edge(self._tool, self._edge) if self._edge else None
+        if edge is None:
+            return 0.0, 0.0
+        wear_sign = int(self._setting("SD42930", 0) or 0)
+        return effective_lengths(edge, wear_sign)[0], effective_radius(edge, wear_sign)

@@ -16,9 +16,9 @@ def tfs_lines(status: NckStatus) -> Text:
     modal = status.channel.modal
     overrides = status.channel.overrides
     text = Text()
+    # The tool line names the tool once: its name, else its number (T1), else "no tool".
     tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
-    text.append(" T ", style="bold")
-    text.append(f"{tool:<16}", style="bold")
+    text.append(f" {tool:<18}", style="bold")
     text.append(f"D{modal.edge}\n" if modal.edge else "D0\n")
     text.append(f"   L {fixed(modal.tool_length_mm, 3, 10)}   R {fixed(modal.tool_radius_mm, 3, 8)}\n")
     text.append(" F ", style="bold")

@@ -50,3 +50,23 @@ async def test_machine_screen_shows_no_negative_zero() -> None:
         await pilot.press("f1")  # MCS
         await pilot.pause()
         assert "-0.000" not in screen_text(app)
+
+
+async def test_tfs_window_shows_tool_once_and_the_edge_size_with_wear(tmp_path) -> None:
+    """T1 D1 active after MDA `T1 M6 D1`: the T,F,S window names the tool once (not `T T1`)
+    and shows L = 120 - 0.2 and R = 5 + 0.01 (002 L58785-58787, L58800-58802)."""
+    from nck.kernel import Nck
+    from nck.ncdata import ToolEdge
+    from nck.interp.sources import MemorySource
+
+    nck = Nck(programs=MemorySource({}), referenced=True)
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120, 3: 120.0, 6: 5.0, 12: -0.2, 15: 0.01})
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d", *"T1 M6 D1", "alt+g")
+        app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=10)
+        await pilot.pause()
+        shown = str(app.screen.query_one("#tfs").render())
+        first, second = shown.splitlines()[:2]
+        assert first.split() == ["T1", "D1"]
+        assert second.split() == ["L", "119.800", "R", "5.010"]

@@ -43,3 +43,23 @@ def test_jog_never_exceeds_max_ax_velo(factory, rapid: bool) -> None:  # noqa: F
     top = top_speed_mm_min(nck, "X", 3.0)
     nck.submit(c.Jog("X", 0))
     assert top == pytest.approx(5000.0, rel=0.01)
+
+
+def test_status_carries_length_and_radius_of_the_active_edge_with_wear(factory) -> None:  # noqa: F811
+    """002 L58785-58787, L58800-58802: the active tool size is geometry + wear:
+    L1 = 120 + (-0.2) = 119.8 mm, R = 5 + 0.01 = 5.01 mm. D0 has no offset."""
+    nck = make(factory, {"P.MPF": "N10 T1 M6\nN20 D1\nN30 M0\nN40 D0\nN50 M30"})
+    from nck.ncdata import ToolEdge
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120, 3: 120.0, 6: 5.0, 12: -0.2, 15: 0.01})
+    modal = nck.status().channel.modal
+    assert (modal.tool_length_mm, modal.tool_radius_mm) == (0.0, 0.0)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.edge) == (1, 1)
+    assert modal.tool_length_mm == pytest.approx(119.8)
+    assert modal.tool_radius_mm == pytest.approx(5.01)
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
