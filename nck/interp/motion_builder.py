@@ -205,6 +205,10 @@ class MotionBuilder:
         revolutions = words.words.get("S")
         if seconds is None and revolutions is None:
             raise NcAlarmError(12080, "G4")
+        if (self.path.has_path_words(words, modal) or words.m_codes or words.h_codes
+                or "T" in words.words or "D" in words.words):
+            # No other functions in a dwell block (001 L6406-6408); they were dropped silently.
+            raise NcAlarmError(12080, "G4")
         for value in (seconds, revolutions):
             if value is not None and value < 0:
                 raise NcAlarmError(12160, "G4")

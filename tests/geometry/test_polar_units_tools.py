@@ -22,6 +22,7 @@ def test_planes_name_their_axes() -> None:
 
 
 def test_polar_move_around_g111_pole() -> None:
+    """Digest programming-840c rank 16."""
     # G111 X20 Y10, RP=50 AP=30: (20 + 50·cos30, 10 + 50·sin30) = (63.3013, 35).
     state = PolarState().define_pole("G111", last_position=(0, 0), axes=(20.0, 10.0))
     state = state.with_values(radius_mm=50.0, angle_deg=30.0)

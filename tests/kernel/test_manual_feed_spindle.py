@@ -91,6 +91,7 @@ def test_spindle_override_during_a_revolutional_feed_block_changes_its_feed() ->
 
 
 def test_dwell_in_spindle_revolutions_waits_for_the_revolutions() -> None:
+    """Digest programming-840c rank 18 (G4 S in revolutions takes revolutions/speed, 001 L6402-6419)."""
     # 001 L6402-6419 and 002 L53952: G4 S… dwells for spindle revolutions; S50 at 1000 rpm is 3 s.
     base = {"P.MPF": RPM_1000_UP + "N30 M30"}
     dwell = {"P.MPF": RPM_1000_UP + "N20 G4 S50\nN30 M30"}

@@ -27,6 +27,7 @@ def gcode(nck: Nck, group: int) -> str:
 
 
 def test_reset_restores_reset_g_codes() -> None:
+    """Digest programming-840c rank 1 (reset restores the initial G codes; 840D's set)."""
     nck = make({"P.MPF": "N10 G91 G1 X10 F100\nN20 X10\nN30 M30"})
     start(nck, "P.MPF")
     nck.tick(1.0)

@@ -178,6 +178,7 @@ def test_08_interrupt_jog_away_and_repos_back_on_nc_start() -> None:
     """Digest 828d-2 rank 8.
 
     Digest 828d-3 rank 5.
+    Digest programming-840c rank 20.
     """
     nck = at_x40()
     nck.submit(c.CycleStop())
@@ -254,6 +255,7 @@ def test_10b_single_block_sbl2_stops_after_every_block() -> None:
     """Digest 828d-2 rank 10.
 
     Digest 828d-3 rank 6.
+    Digest programming-840c rank 20.
     """
     nck = make_nck({"P": SBL_PROGRAM})
     assert _stops(nck, "SBL2") == ["N10", "N20", "N30"]
@@ -265,6 +267,7 @@ def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
     """Digest 828d-2 rank 11.
 
     Digest 828d-3 rank 7.
+    Digest programming-840c rank 9.
     """
     program = "N10 M01\nN20 M00\nN30 G1 X5 F1000\nN40 M30"
     nck = make_nck({"P": program})
@@ -382,7 +385,10 @@ def test_16_dry_run_feed_modes() -> None:
 
 # 17 ------------------------------------------------------------------------
 def test_17_skip_levels() -> None:
-    """Digest 828d-2 rank 17."""
+    """Digest 828d-2 rank 17.
+
+    Digest programming-840c rank 11.
+    """
     program = "N10 G1 X1 F6000\n/N40 X40\n/3 N50 Y50\nN60 M30"
     nck = make_nck({"P": program})
     nck.submit(c.SetProgramControl("skip_levels", {0}))

@@ -72,7 +72,10 @@ def test_short_block_limit() -> None:
 
 
 def test_g64_corner_is_passed_with_reduced_nonzero_velocity() -> None:
-    """Digest 828d-1 rank 7 (G64: corner velocity above 0)."""
+    """Digest 828d-1 rank 7 (G64: corner velocity above 0).
+
+    Digest programming-840c rank 15.
+    """
     m = motion()
     m.push(move("G1", 6000.0, X=50.0))
     m.push(move("G1", 6000.0, X=50.0, Y=50.0))
@@ -89,7 +92,10 @@ def test_g64_corner_is_passed_with_reduced_nonzero_velocity() -> None:
 
 
 def test_g60_stops_at_the_corner_and_waits_for_the_fine_window() -> None:
-    """Digest 828d-1 rank 7: G60 stops at the corner inside STOP_LIMIT_FINE (002 L1919, L4703-4761)."""
+    """Digest 828d-1 rank 7: G60 stops at the corner inside STOP_LIMIT_FINE (002 L1919, L4703-4761).
+
+    Digest programming-840c rank 15.
+    """
     m = motion(MD32620={"X": 0, "Y": 0}, MD32200={"X": 1.0, "Y": 1.0})
     m.push(move("G1", 6000.0, exact_stop=True, X=50.0))
     m.push(move("G1", 6000.0, X=50.0, Y=50.0))

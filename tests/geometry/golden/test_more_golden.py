@@ -74,12 +74,14 @@ def test_rpl_in_g18_rotates_about_y() -> None:
 
 
 def test_g110_in_polar_form() -> None:
+    """Digest programming-840c rank 16."""
     # From (10,0): G110 RP=5 AP=90 puts the pole at (10,5); RP=5 AP=0 -> (15,5).
     r = run(lines("N10 G0 X10 Y0", "N20 G110 RP=5 AP=90", "N30 G1 RP=5 AP=0 F100", "N40 M30"))
     assert r.end_wcs(30) == approx({"X": 15.0, "Y": 5.0, "Z": 0.0})
 
 
 def test_helix_with_cr_and_inch() -> None:
+    """Digest programming-840c rank 17 (helix: F on the arc, linear axis synchronised)."""
     # G70: CR=1 inch = 25.4 mm; half circle from (0,0) to (2 inch, 0) with Z-0.5 inch.
     r = run(lines("N10 G70 G0 X0 Y0 Z0", "N20 G2 X2 Y0 Z-0.5 CR=1 F10", "N30 M30"))
     m = r.block(20)[0]

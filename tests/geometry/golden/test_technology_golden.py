@@ -67,7 +67,10 @@ def test_m19_spindle_position_and_lims() -> None:
 
 
 def test_tool_change_default_edge_and_d0() -> None:
-    """Digest 828d-3 rank 20: M6 activates D1 (MD20270), D0 removes the length."""
+    """Digest 828d-3 rank 20: M6 activates D1 (MD20270), D0 removes the length.
+
+    Digest programming-840c rank 10 (length acts with the next Z motion; D0 removes it).
+    """
     r = run(lines("N10 T1", "N20 M6", "N30 G0 Z0", "N40 D0", "N50 G0 Z0", "N60 M30"), mill_data())
     # M6 activates D1 (MD20270 default); the length 100 acts on Z.
     assert r.end_mcs(30)["Z"] == pytest.approx(100.0)
@@ -75,7 +78,10 @@ def test_tool_change_default_edge_and_d0() -> None:
 
 
 def test_tool_length_follows_the_plane_and_wear() -> None:
-    """Digest 828d-3 rank 21 (plane mapping of L1/L2 with wear)."""
+    """Digest 828d-3 rank 21 (plane mapping of L1/L2 with wear).
+
+    Digest programming-840c rank 6 (G18 length on Y, G19 on X).
+    """
     data = NcData()
     data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 100.0, 4: 20.0, 12: -0.5})
     r = run(lines("N10 T1 M6 D1", "N20 G17 G0 X0 Y0 Z0", "N30 G18 X0 Y0 Z0", "N40 G19 X0 Y0 Z0",
@@ -125,6 +131,7 @@ def test_aux_output_order() -> None:
 
 
 def test_g25_g26_write_the_working_area_limits() -> None:
+    """Digest programming-840c rank 19."""
     data = NcData()
     run(lines("N10 G25 X-100 Y-50", "N20 G26 X200 Z10", "N30 G70 G26 Y1", "N40 M30"), data)
     assert data.setting_data["SD43430"] == {"X": -100.0, "Y": -50.0}
