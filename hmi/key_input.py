@@ -30,6 +30,7 @@ from textual import events
 from textual._xterm_parser import XTermParser
 from textual.binding import Binding
 from textual.drivers.linux_driver import LinuxDriver
+from textual.message import Message
 from textual.screen import Screen
 from textual.widget import Widget
 
@@ -44,6 +45,9 @@ are Alt chords like any other letter or sign.
 
 READ_POLL_S = 0.1
 """How long the input thread waits for bytes before it lets the parser check its escape delay."""
+
+READ_SIZE = 4096
+"""Bytes taken from the terminal per read."""
 
 
 def is_alt_chord(key: events.Key) -> bool:
@@ -69,21 +73,36 @@ class PanelKeyParser(XTermParser):
         return [_without_text(key) for key in keys]
 
 
+class TerminalReader:
+    """Bytes read from the terminal → the messages :class:`PanelKeyParser` makes of them."""
+
+    def __init__(self) -> None:
+        self.parser = PanelKeyParser()
+        self._decode = codecs.getincrementaldecoder("utf-8")(errors="ignore").decode
+
+    def feed(self, data: bytes) -> list[Message]:
+        """The messages complete after ``data`` (a character split over two reads waits)."""
+        text = self._decode(data)
+        return list(self.parser.feed(text)) if text else []  # "" would end the parser's input
+
+    def tick(self) -> list[Message]:
+        """Messages the escape delay has completed (a lone ESC becomes the Escape key)."""
+        return list(self.parser.tick())
+
+
 class PanelTerminalDriver(LinuxDriver):
     """The Linux terminal driver with :class:`PanelKeyParser` reading the keyboard."""
 
     def run_input_thread(self) -> None:
         """Read the terminal until the app exits and post what the parser makes of it."""
-        parser = PanelKeyParser()
-        decode = codecs.getincrementaldecoder("utf-8")(errors="ignore").decode
+        reader = TerminalReader()
         with selectors.DefaultSelector() as selector:
             selector.register(self.fileno, selectors.EVENT_READ)
             while not self.exit_event.is_set():
                 for _ in selector.select(READ_POLL_S):
-                    text = decode(os.read(self.fileno, 4096))
-                    for message in parser.feed(text):
+                    for message in reader.feed(os.read(self.fileno, READ_SIZE)):
                         self.process_message(message)
-                for message in parser.tick():
+                for message in reader.tick():
                     self.process_message(message)
 
 

@@ -8,13 +8,16 @@ what the parser makes of them to the app, as the terminal driver does.
 
 from __future__ import annotations
 
+import os
+import threading
+
 from textual import events
 from textual.drivers.linux_driver import LinuxDriver
 
 from nck import commands as c
 
 from hmi.app import HmiApp
-from hmi.key_input import PanelKeyParser, PanelTerminalDriver
+from hmi.key_input import PanelKeyParser, PanelTerminalDriver, TerminalReader
 from hmi.keymap import default_keymap
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck
@@ -91,6 +94,29 @@ def test_alt_chord_never_carries_text() -> None:
 def test_terminal_driver_reads_through_the_panel_parser(fake_app: HmiApp) -> None:
     assert fake_app.get_driver_class() is PanelTerminalDriver
     assert issubclass(PanelTerminalDriver, LinuxDriver)
+    read_end, write_end = os.pipe()
+    driver = PanelTerminalDriver.__new__(PanelTerminalDriver)  # only its reader, no terminal set-up
+    driver.fileno, driver.exit_event = read_end, threading.Event()
+    received: list[str] = []
+
+    def take(message) -> None:
+        received.append(message.key)
+        if len(received) == 4:
+            driver.exit_event.set()
+
+    driver.process_message = take
+    os.write(write_end, ALT_G.encode() * 2 + "äx".encode())
+    driver.run_input_thread()  # returns once the four keys are through
+    os.close(read_end)
+    os.close(write_end)
+    assert received == ["alt+g", "alt+g", "ä", "x"]
+
+
+def test_reads_split_inside_a_character_or_a_sequence() -> None:
+    reader = TerminalReader()
+    data = (ALT_G + "ä" + SHIFT_F1 + ALT_G).encode()
+    keys = [m.key for i in range(len(data)) for m in reader.feed(data[i:i + 1])]  # byte by byte
+    assert keys == ["alt+g", "ä", "shift+f1", "alt+g"]
 
 
 async def feed_terminal(app: HmiApp, pilot, *reads: str) -> None:
