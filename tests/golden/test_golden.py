@@ -2,7 +2,8 @@
 
 The trace lists every canonical command (motion end points, aux functions,
 messages, stops) and the final state (status, alarms, changed G groups,
-position, tool, spindle, R parameters). The values the manuals determine are asserted in ``test_golden_values.py``. Regenerate deliberately with
+position, tool, spindle, R parameters); it shows only that nothing changed. The values
+the manuals determine are asserted in ``test_golden_values.py``. Regenerate deliberately with
 ``GOLDEN_UPDATE=1 pytest tests/golden`` and review the diff by hand.
 """
 

@@ -191,7 +191,7 @@ def test_18_subprogram_passes_modal() -> None:
 
 
 def test_19_proc_value_and_reference() -> None:
-    """Parameters by value are copies, VAR by reference (002 L15528-15535): TOTAL = 1 + 5 = 6,
+    """Parameters by value are copies, VAR by reference (002 L15528): TOTAL = 1 + 5 = 6,
     R2 = 0 + R1 = 10 with R1 unchanged, ARR[2] = 42."""
     assert Case("19_proc_value_and_reference").ended().r(1, 2, 3, 4) == (10, 10, 6, 42)
 
@@ -254,8 +254,8 @@ def test_26_system_variables() -> None:
 
 
 def test_27_program_end_resets_modal() -> None:
-    """M2 ends the program and the G groups return to their reset members (002 L2989), F is
-    deleted."""
+    """M2 ends the program and the G groups return to their reset members (MD20150, digest
+    828d-2 §7), F is deleted."""
     case = Case("27_program_end_resets_modal").ended()
     modal = case.result.interpreter.modal
     assert (modal.gcodes[14], modal.gcodes[15], modal.gcodes[6]) == ("G90", "G94", "G17")
@@ -297,8 +297,8 @@ def test_32_string_functions() -> None:
 
 
 def test_33_case_and_save() -> None:
-    """CASE (002 L23209) jumps to TWO for 2; 20 matches nothing so DEFAULT; SAVE (002 L15701)
-    restores G90 (member 1) at the return, without SAVE G91 (2) stays."""
+    """CASE (002 L23209) jumps to TWO for 2; 20 matches nothing so DEFAULT; SAVE (002 L22796,
+    L31141) restores G90 (member 1) at the return, without SAVE G91 (2) stays."""
     assert Case("33_case_and_save").ended().r(2, 3, 4, 5) == (2, 0, 1, 2)
 
 
