@@ -11,12 +11,13 @@ then lets the app process the posted messages (``await pilot.pause()``).
 
 from __future__ import annotations
 
+import math
 import time
 from typing import Any, Callable, Protocol
 
 from textual.message_pump import MessagePump
 
-from nck.commands import Accepted, Rejected, SubmitResult
+from nck.commands import Accepted, EnterPassword, Rejected, SubmitResult
 from nck.status import NckStatus
 
 from hmi.messages import AlarmLogged, CommandRejected, NckStatusChanged
@@ -62,19 +63,21 @@ class NckBridge:
         self.nck = nck
         self.realtime = realtime
         self.ipo_cycle_s = ipo_cycle_s or float(getattr(nck, "ipo_cycle_s", 0.002) or 0.002)
-        self._clock = clock
+        self.clock = clock
         self._target: MessagePump | None = None
         self._last_wall: float | None = None
         self._last_seq: int | None = None
         self._last_log_seq = 0
         self._status: NckStatus = nck.status()
         self.refresh_count = 0
+        # wrong passwords: the kernel counts them, the panel waits before it takes the next one
+        self._password_open_at_s = self.clock() + self._password_delay_s()
 
     # -- wiring -----------------------------------------------------------------------
     def attach(self, target: MessagePump) -> None:
         """Post messages to ``target`` (the app) and, if realtime, start the timer."""
         self._target = target
-        self._last_wall = self._clock()
+        self._last_wall = self.clock()
         if self.realtime:
             target.set_interval(REFRESH_PERIOD_S, self._on_timer, name="nck-bridge")
         self.poll(force=True)
@@ -84,11 +87,11 @@ class NckBridge:
         if self._target is None or self.realtime:
             return
         self.realtime = True
-        self._last_wall = self._clock()
+        self._last_wall = self.clock()
         self._target.set_interval(REFRESH_PERIOD_S, self._on_timer, name="nck-bridge")
 
     def _on_timer(self) -> None:
-        now = self._clock()
+        now = self.clock()
         last = self._last_wall if self._last_wall is not None else now
         self._last_wall = now
         dt = min(max(now - last, 0.0), MAX_CATCH_UP_S)
@@ -159,9 +162,29 @@ class NckBridge:
             self._last_log_seq = max(self._last_log_seq, entry.seq)
             self._post(AlarmLogged(entry))
 
+    def _password_delay_s(self) -> float:
+        """The wait the kernel's count of wrong passwords asks for (0 without access control)."""
+        access = getattr(self.nck, "access_state", None)
+        if access is None:
+            return 0.0
+        return float(getattr(self.nck.access, "retry_delay_s", 0.0))
+
     def submit(self, command: Any) -> SubmitResult:
-        """Forward an operator command; a refusal is posted as :class:`CommandRejected`."""
+        """Forward an operator command; a refusal is posted as :class:`CommandRejected`.
+
+        After a wrong password the next one is taken only when the growing delay has passed
+        (a password entered earlier is refused without being checked).
+        """
+        if isinstance(command, EnterPassword):
+            wait_s = self._password_open_at_s - self.clock()
+            if wait_s > 0:
+                result: SubmitResult = Rejected(
+                    f"Password not checked: next try in {math.ceil(wait_s)} s after a wrong password")
+                self._post(CommandRejected(command, result.reason, None))
+                return result
         result = self.nck.submit(command)
+        if isinstance(command, EnterPassword):
+            self._password_open_at_s = self.clock() + self._password_delay_s()
         if isinstance(result, Rejected):
             self._post(CommandRejected(command, result.reason, result.alarm))
         self.poll()

@@ -5,7 +5,11 @@ protection level ``n`` may be used when the current level is ``<= n``.
 
 * Passwords give levels 1–3 (defaults ``SUNRISE``, ``EVENING``, ``CUSTOMER``).
   A password has at most 8 characters (shorter ones count as blank-padded) and
-  is stored only as a salted PBKDF2 hash.
+  is stored only as a salted PBKDF2-HMAC-SHA256 hash (600,000 iterations, the
+  OWASP recommendation of 2023; one check costs about a third of a second).
+* Wrong passwords are counted (retained); the door that takes passwords (panel,
+  command line) waits :func:`retry_delay_s` before it takes the next one. The
+  kernel itself has no clock: it only counts.
 * The keyswitch gives levels 4–7: position 3 → level 4 … position 0 → level 7.
   If several positions are reported at once, position 3 wins.
 * An entered password overrides the keyswitch until it is deleted; it is part
@@ -30,8 +34,22 @@ PASSWORD_LEVELS = (1, 2, 3)
 PASSWORD_MAX_CHARS = 8
 DEFAULT_PASSWORDS = {1: "SUNRISE", 2: "EVENING", 3: "CUSTOMER"}
 KEYSWITCH_POSITIONS = (0, 1, 2, 3)
-KDF_ITERATIONS = 20_000  # a trainer: enough to make the file useless as a password list
+KDF_ITERATIONS = 600_000  # PBKDF2-HMAC-SHA256, OWASP Password Storage Cheat Sheet (2023)
+KDF_ITERATIONS_ACCEPTED = range(10_000, 10_000_001)  # read from a file: older trainer files used 20,000
 KDF_NAME = "pbkdf2_sha256"
+RETRY_DELAY_CAP_S = 60.0
+ALARM_PASSWORD_REFUSED = 129300  # data/alarms/access.toml
+
+
+def retry_delay_s(failed_attempts: int) -> float:
+    """How long a door waits after ``failed_attempts`` wrong passwords in a row before the next try.
+
+    1 s after the first, doubling with every further one, at most 60 s (100 tries then take
+    well over an hour instead of 1.4 s).
+    """
+    if failed_attempts <= 0:
+        return 0.0
+    return min(RETRY_DELAY_CAP_S, 2.0 ** min(failed_attempts - 1, 16))
 
 
 class Action(enum.Enum):
@@ -213,28 +231,27 @@ class PasswordHash:
     @classmethod
     def create(cls, password: str, iterations: int = KDF_ITERATIONS) -> "PasswordHash":
         """Hash ``password`` with a fresh random salt."""
-        import hashlib  # noqa: PLC0415 - only when a password is set (≈ 7 ms at every start)
-        import secrets  # noqa: PLC0415
+        import secrets  # noqa: PLC0415 - only when a password is set
 
-        salt = secrets.token_bytes(16)
-        digest = hashlib.pbkdf2_hmac(
-            "sha256", normalize_password(password).encode("utf-8"), salt, iterations
-        )
-        return cls(salt.hex(), digest.hex(), iterations)
+        salt = secrets.token_bytes(16).hex()
+        return cls(salt, derive(normalize_password(password), salt, iterations), iterations)
 
-    def matches(self, password: str) -> bool:
-        """True when ``password`` hashes to this record."""
+    def matches(self, password: str, derived: dict[tuple[str, int], str] | None = None) -> bool:
+        """True when ``password`` hashes to this record.
+
+        ``derived`` caches derivations by (salt, iterations) across records that share a salt.
+        """
         try:
             candidate = normalize_password(password)
         except PasswordError:
             return False
-        import hashlib  # noqa: PLC0415 - only when a password is checked
-        import hmac  # noqa: PLC0415
+        import hmac  # noqa: PLC0415 - only when a password is checked
 
-        digest = hashlib.pbkdf2_hmac(
-            "sha256", candidate.encode("utf-8"), bytes.fromhex(self.salt_hex), self.iterations
-        )
-        return hmac.compare_digest(digest.hex(), self.hash_hex)
+        key = (self.salt_hex, self.iterations)
+        cache = derived if derived is not None else {}
+        if key not in cache:
+            cache[key] = derive(candidate, self.salt_hex, self.iterations)
+        return hmac.compare_digest(cache[key], self.hash_hex)
 
     def to_json(self) -> dict[str, object]:
         """Return the record as JSON-ready data."""
@@ -249,14 +266,28 @@ class PasswordHash:
         salt, digest, iterations = data["salt"], data["hash"], data["iterations"]
         if not (isinstance(salt, str) and isinstance(digest, str) and isinstance(iterations, int)):
             raise ValueError("malformed password hash")
-        bytes.fromhex(salt)
-        bytes.fromhex(digest)
+        if isinstance(iterations, bool) or iterations not in KDF_ITERATIONS_ACCEPTED:
+            raise ValueError(f"password hash iterations {iterations} outside "
+                             f"{KDF_ITERATIONS_ACCEPTED.start} … {KDF_ITERATIONS_ACCEPTED.stop - 1}")
+        if len(bytes.fromhex(salt)) < 8 or len(bytes.fromhex(digest)) != 32:
+            raise ValueError("malformed password hash")
         return cls(salt, digest, iterations)
 
 
+def derive(normalized_password: str, salt_hex: str, iterations: int) -> str:
+    """The PBKDF2-HMAC-SHA256 hash (hex) of a blank-padded password."""
+    import hashlib  # noqa: PLC0415 - only when a password is hashed or checked
+
+    return hashlib.pbkdf2_hmac("sha256", normalized_password.encode("utf-8"),
+                               bytes.fromhex(salt_hex), iterations).hex()
+
+
 def default_password_hashes() -> dict[int, PasswordHash]:
-    """Hashes of the factory passwords of levels 1–3."""
-    return {level: PasswordHash.create(pw) for level, pw in DEFAULT_PASSWORDS.items()}
+    """Hashes of the factory passwords of levels 1–3 (precomputed in ``data/access.toml``)."""
+    table = load_toml("access.toml")["factory_passwords"]
+    return {level: PasswordHash.from_json({"kdf": table["kdf"], "iterations": table["iterations"],
+                                           "salt": table["salt"], "hash": table[str(level)]})
+            for level in PASSWORD_LEVELS}
 
 
 @dataclass
@@ -266,6 +297,7 @@ class AccessState:
     keyswitch_position: int = 0
     password_level: int | None = None
     password_hashes: dict[int, PasswordHash] = field(default_factory=default_password_hashes)
+    failed_attempts: int = 0  # wrong passwords in a row (the doors wait retry_delay_s of it)
 
     def to_json(self) -> dict[str, object]:
         """Return JSON-ready data (hashes only)."""
@@ -273,6 +305,7 @@ class AccessState:
             "keyswitch_position": self.keyswitch_position,
             "password_level": self.password_level,
             "passwords": {str(k): v.to_json() for k, v in sorted(self.password_hashes.items())},
+            "failed_attempts": self.failed_attempts,
         }
 
     @classmethod
@@ -287,12 +320,17 @@ class AccessState:
             raise ValueError("bad password level")
         if not isinstance(passwords, dict):
             raise ValueError("bad password table")
+        if not passwords:  # never silently back to the factory passwords
+            raise ValueError("the password table is empty")
         hashes = {}
         for key, record in passwords.items():
-            if int(key) not in PASSWORD_LEVELS or not isinstance(record, dict):
+            if key not in ("1", "2", "3") or not isinstance(record, dict):
                 raise ValueError("bad password entry")
             hashes[int(key)] = PasswordHash.from_json(record)
-        return cls(position, level, hashes)
+        failed = data.get("failed_attempts", 0)
+        if isinstance(failed, bool) or not isinstance(failed, int) or not 0 <= failed <= 1_000_000:
+            raise ValueError("bad count of failed password attempts")
+        return cls(position, level, hashes, failed)
 
 
 def keyswitch_from_bits(bits: tuple[bool, bool, bool, bool]) -> int:
@@ -346,17 +384,37 @@ class AccessControl:
         self._note(before, f"keyswitch {position}")
 
     def check_password(self, password: str) -> int | None:
-        """Return the level that ``password`` opens, or None (nothing changes)."""
+        """Return the level that ``password`` opens, or None (nothing changes, nothing counted)."""
+        derived: dict[tuple[str, int], str] = {}
         for level in PASSWORD_LEVELS:
             record = self.state.password_hashes.get(level)
-            if record is not None and record.matches(password):
+            if record is not None and record.matches(password, derived):
                 return level
         return None
 
-    def enter_password(self, password: str) -> int:
-        """Set a password: return the new level, or raise PasswordError (level unchanged)."""
-        normalize_password(password)
+    def try_password(self, password: str) -> int | None:
+        """Check a password at a door: a wrong one counts as a failed attempt, a right one
+        clears the count (and renews a hash made with fewer iterations than today's)."""
         level = self.check_password(password)
+        if level is None:
+            self.state.failed_attempts += 1
+            self.log.append(f"password not accepted (failed attempt {self.state.failed_attempts})")
+            return None
+        self.state.failed_attempts = 0
+        if self.state.password_hashes[level].iterations < KDF_ITERATIONS:
+            self.state.password_hashes[level] = PasswordHash.create(password)
+        return level
+
+    @property
+    def retry_delay_s(self) -> float:
+        """How long the door waits before it takes the next password (0 after a right one)."""
+        return retry_delay_s(self.state.failed_attempts)
+
+    def enter_password(self, password: str) -> int:
+        """Set a password: return the new level, or raise PasswordError (level unchanged;
+        a wrong password counts as a failed attempt)."""
+        normalize_password(password)
+        level = self.try_password(password)
         if level is None:
             raise PasswordError("password not accepted")
         before = self.level
@@ -381,8 +439,9 @@ class AccessControl:
         if self.level > level:
             raise AccessDenied(f"changing the password of level {level}", level, self.level)
         normalize_password(new_password)
+        derived: dict[tuple[str, int], str] = {}
         for other, record in self.state.password_hashes.items():
-            if other != level and record.matches(new_password):
+            if other != level and record.matches(new_password, derived):
                 raise PasswordError(f"that password already belongs to level {other}")
         self.state.password_hashes[level] = PasswordHash.create(new_password)
 

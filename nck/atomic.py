@@ -46,9 +46,9 @@ def fsync_directory(directory: Path) -> None:
         os.close(handle)
 
 
-def _write_synced(path: Path, data: bytes) -> None:
-    """Create ``path`` with ``data`` and flush it to the disk."""
-    with open(path, "xb") as handle:
+def _write_synced(path: Path, data: bytes, mode: int = 0o666) -> None:
+    """Create ``path`` (permissions ``mode`` less the umask) with ``data`` and flush it to the disk."""
+    with open(os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, mode), "wb") as handle:
         handle.write(data)
         handle.flush()
         os.fsync(handle.fileno())
@@ -71,13 +71,15 @@ def _make_backup(path: Path) -> None:
             temp.unlink()
 
 
-def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False) -> None:
+def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False,
+                       private: bool = False) -> None:
     """Replace the content of ``path`` with ``data`` atomically.
 
     Args:
         path: the file to write; its directory is created when missing.
         data: the complete new content.
         backup: keep the previous content as ``<name>.bak`` first.
+        private: readable and writable by the owner only (file and backup, mode 0600).
 
     On any failure the temporary file is removed and the old file is left
     untouched; the exception propagates (an ``OSError``).
@@ -86,9 +88,11 @@ def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False) -
     path.parent.mkdir(parents=True, exist_ok=True)
     temp = _temp_path(path)
     try:
-        _write_synced(temp, data)
+        _write_synced(temp, data, 0o600 if private else 0o666)
         if backup and path.is_file():
             _make_backup(path)
+            if private:
+                os.chmod(backup_path(path), 0o600)
         os.replace(temp, path)
     except BaseException:
         try:
@@ -100,10 +104,10 @@ def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False) -
 
 
 def atomic_write_text(
-    path: Path | str, text: str, *, backup: bool = False, encoding: str = "utf-8"
+    path: Path | str, text: str, *, backup: bool = False, encoding: str = "utf-8", private: bool = False
 ) -> None:
     """Replace the content of ``path`` with ``text`` atomically (see :func:`atomic_write_bytes`)."""
-    atomic_write_bytes(path, text.encode(encoding), backup=backup)
+    atomic_write_bytes(path, text.encode(encoding), backup=backup, private=private)
 
 
 def remove_stale_temp_files(directory: Path | str) -> list[Path]:

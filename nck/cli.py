@@ -191,6 +191,11 @@ class _Environment:
         if self._ephemeral is not None:
             self._ephemeral.cleanup()
 
+    def keep_failed_attempt(self) -> None:
+        """Save the count of failed password attempts (and its alarm-log entry) and nothing else."""
+        if self.session is not None and self._ephemeral is None:
+            self.session.save()
+
     def _release(self) -> None:
         if self._lock is not None:
             self._lock.release()
@@ -238,8 +243,11 @@ def _apply_writes(options: argparse.Namespace, env: "_Environment") -> None:
         access = AccessControl(AccessState(), user_class=store.user_class)
     level, how = access.level, level_name(access.level)
     if options.password is not None:
-        granted = access.check_password(options.password)
+        from nck.cli_password import level_of_password
+
+        granted = level_of_password(access, options.password, env.session)
         if granted is None:
+            env.keep_failed_attempt()
             raise CliError("password not accepted (nothing was written)")
         level, how = granted, f"level {granted} (password)"
     writer = DataWriter(env.data, store, access, level=level)

@@ -22,7 +22,8 @@ import argparse
 import sys
 from typing import Any, TextIO
 
-from nck.access import AccessDenied, PasswordError, level_name, normalize_password
+from nck.access import AccessDenied, level_name
+from nck.cli_password import level_of_password
 from nck.machine import MachineFileError, load_machine
 from nck.machine_data import (
     ACTIVATION_TEXT,
@@ -125,12 +126,9 @@ def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextI
     level = session.access.level
     how = level_name(level)
     if options.password is not None:
-        try:
-            normalize_password(options.password)
-            granted = session.access.check_password(options.password)
-        except PasswordError:
-            granted = None
+        granted = level_of_password(session.access, options.password, session)
         if granted is None:
+            session.save()  # the failed attempt counts at the next try too
             print("nck md: password not accepted (level unchanged)", file=err)
             return 1
         level, how = granted, f"level {granted} (password)"

@@ -13,7 +13,7 @@ from dataclasses import replace
 from typing import Any
 
 from nck import commands as cmd
-from nck.access import AccessControl, AccessError, AccessState
+from nck.access import ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessState
 from nck.canon import Motion
 from nck.channel import ACTIVE, RESET
 from nck.commands import Accepted, Rejected, SubmitResult
@@ -21,6 +21,7 @@ from nck.interp.api import Interpreter
 from nck.kernel_data import DataWrites
 from nck.value_text import InvalidValue, number_from_text
 from nck.motion.instant import InstantMotion
+from nck.status import LogbookEntry
 
 DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
 THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
@@ -120,10 +121,18 @@ class ControlSettings(DataWrites):
         return Accepted()
 
     def _enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
+        failed_before = self.access.state.failed_attempts
         try:
             self.access.enter_password(command.password)
         except AccessError as error:
-            return Rejected(str(error) or "Password not accepted")
+            failed = self.access.state.failed_attempts
+            if failed > failed_before:  # a wrong password (not a malformed one): logbook and alarm log
+                delay = f"{self.access.retry_delay_s:g}"
+                self.logbook.append(LogbookEntry(self._time_s, "access",
+                                                 f"password not accepted (failed attempt {failed})"))
+                self._raise_number(ALARM_PASSWORD_REFUSED, failed, delay)
+            return Rejected(str(error) or "Password not accepted", alarm=ALARM_PASSWORD_REFUSED
+                            if failed > failed_before else None)
         return Accepted()
 
     def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:

@@ -78,6 +78,7 @@ NESTING_LIMIT = 32
 """Deepest nesting of tables and lists in a retained file (the data need 7 at most)."""
 INTEGER_LIMIT = 2**63 - 1
 """Largest integer magnitude in a retained file (the control's data are at most 64 bit)."""
+PRIVATE_SECTIONS = frozenset({"access"})  # password hashes: readable by the owner only
 
 
 class BadFile(Exception):
@@ -394,7 +395,7 @@ def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmEr
         try:
             raw = _read_section_file(backup)
             parse_section(name, raw, rd)
-            atomic_write_bytes(main, raw)  # the backup becomes the file again
+            atomic_write_bytes(main, raw, private=name in PRIVATE_SECTIONS)  # the backup becomes the file again
             return [NcAlarmError(ALARM_FROM_BACKUP, main.name, reason, kept)]
         except BadFile:
             _set_aside(backup)
@@ -485,7 +486,8 @@ class Session:
         session = cls(data_dir, machine or load_machine(), rd, files, alarms)
         for name in SECTIONS:
             path = retained_dir / f"{name}.json"
-            if name not in damaged and path.exists():
+            if name not in damaged and path.exists() and not (
+                    name in PRIVATE_SECTIONS and path.stat().st_mode & 0o077):  # else rewritten 0600
                 session._written[name] = path.read_text(encoding="utf-8")
         session.save()
         return session
@@ -499,7 +501,8 @@ class Session:
         for name in SECTIONS:
             text = section_text(name, self.retained)
             if self._written.get(name) != text:
-                atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True)
+                atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True,
+                                  private=name in PRIVATE_SECTIONS)
                 self._written[name] = text
                 written.append(name)
         return written
@@ -621,7 +624,8 @@ class Session:
         except (StorageError, KeyError, TypeError, ValueError) as exc:
             raise ArchiveError(f"{path}: bad content ({exc})") from exc
         for name, text in texts.items():
-            atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True)
+            atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True,
+                              private=name in PRIVATE_SECTIONS)
         for workpiece in workpieces:
             if not self.files.exists(workpiece):
                 self.files.create_workpiece(workpiece.split("/")[1], with_program=False)

@@ -109,12 +109,13 @@ def test_logbook_records_access_level_and_machine_data_changes() -> None:
     assert nck.submit(cmd.WriteData("R1", 5)) == cmd.Accepted()  # not a machine datum: not logged
     assert nck.submit(cmd.ActivateMachineData()) == cmd.Accepted()
     assert nck.submit(cmd.DeletePassword()) == cmd.Accepted()
-    assert isinstance(nck.submit(cmd.EnterPassword("wrong")), cmd.Rejected)  # refused: not logged
+    assert isinstance(nck.submit(cmd.EnterPassword("wrong")), cmd.Rejected)  # a failed attempt (issue 19)
     assert [(e.kind, e.text) for e in nck.logbook] == [
         ("access", "password entered: access level 7 -> 2"),
         ("data", "MD32000[X] = 5000"),
         ("data", "machine data activated (NEW CONFIG)"),
         ("access", "password deleted: access level 2 -> 7"),
+        ("access", "password not accepted (failed attempt 1)"),
     ]
     assert all("EVENING" not in e.text for e in nck.logbook)
 

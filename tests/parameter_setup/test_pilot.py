@@ -225,6 +225,8 @@ async def test_password_change_and_delete(tmp_path: Path) -> None:
         assert app.bridge.status.access_level == 7
         assert "7 — keyswitch position 0" in app.screen.query_one("#setup-access").render().plain
         assert isinstance(app.submit(c.EnterPassword("CUSTOMER")), c.Rejected)
+        later_s = app.bridge.clock() + 1.0  # the panel waits 1 s after one wrong password
+        app.bridge.clock = lambda: later_s
         await enter_password(pilot, "MYPASS")
         assert app.bridge.status.access_level == 3
 
