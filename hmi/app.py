@@ -24,6 +24,7 @@ Ctrl+Left/Right give way to a focused editor where they cannot jog.
 from __future__ import annotations
 
 import argparse
+import asyncio
 import gc
 import importlib
 import os
@@ -43,6 +44,7 @@ from textual.screen import Screen
 from nck import commands as cmd
 from nck.commands import Accepted, SubmitResult
 from nck.status import NckStatus
+from nck.termination import TERMINATION_SIGNALS, exit_on_termination
 
 from hmi.area import AreaBase
 from hmi.bridge import NckBridge
@@ -232,6 +234,8 @@ class HmiApp(MachineControlPanel, App):
         if self.nc_session is not None and self.bridge.realtime:
             self.set_interval(RETAINED_SAVE_PERIOD_S, self.save_nc_data, name="nc-data-save")
         self.switch_mode("machine")
+        if self.bridge.realtime:  # the real panel, not a test's
+            self._quit_on_termination()
         if self.freeze_gc_at_start:
             self.call_after_refresh(freeze_startup_objects)
 
@@ -438,6 +442,15 @@ class HmiApp(MachineControlPanel, App):
         """F12: acknowledge the alarms whose clear criterion is CANCEL."""
         self.submit(cmd.CancelAlarms())
 
+    def _quit_on_termination(self) -> None:
+        """SIGTERM/SIGHUP while running: quit as Ctrl+Q does (save, remove a temporary copy)."""
+        loop = asyncio.get_running_loop()
+        for number in TERMINATION_SIGNALS:
+            try:
+                loop.add_signal_handler(number, self.action_quit_hmi)
+            except (NotImplementedError, RuntimeError, ValueError):  # no signals here (Windows, thread)
+                return
+
     def action_quit_hmi(self) -> None:
         """Ctrl+Q: save NC data, then leave."""
         if self._on_quit is not None:
@@ -479,12 +492,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--program", help="part program to select in AUTO at start")
     args = parser.parse_args(argv)
     started = time.perf_counter()
-    try:
-        app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program)
-    except Exception as exc:  # a CLI/file problem: a clear message, no traceback
-        print(f"hmi: {exc}", file=sys.stderr)
-        return 2
-    app.started_at = started  # type: ignore[attr-defined]
-    app.freeze_gc_at_start = True
-    app.run()
+    # SIGTERM/SIGHUP while starting or ending: a normal exit, so a temporary copy is removed
+    with exit_on_termination():
+        try:
+            app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program)
+        except Exception as exc:  # a CLI/file problem: a clear message, no traceback
+            print(f"hmi: {exc}", file=sys.stderr)
+            return 2
+        app.started_at = started  # type: ignore[attr-defined]
+        app.freeze_gc_at_start = True
+        app.run()
     return 0

@@ -111,19 +111,18 @@ def build_session(machine: str | None = None, data_dir: str | None = None, ephem
 
     config = load_machine(machine)
     root, copy = open_data_dir(data_dir, ephemeral)
-    # One process per data directory: a second HMI gets a clear message (DataDirInUse), not torn data.
-    lock = lock_data_dir(root) if copy is None else None
+    lock = None
     try:
+        # One process per data directory: a second HMI gets a clear message (DataDirInUse), not torn data.
+        lock = lock_data_dir(root) if copy is None else None
         holder = NcDataSession(Session.open(root, config), copy)
-    except BaseException:
+        holder.data_lock = lock
+        _select_at_start(holder, program)
+    except BaseException:  # a failed start leaves neither a lock nor a temporary copy
         if lock is not None:
             lock.release()
-        raise
-    holder.data_lock = lock
-    try:
-        _select_at_start(holder, program)
-    except BaseException:
-        holder.release_lock()
+        if copy is not None:
+            copy.cleanup()
         raise
     return holder
 

@@ -20,6 +20,7 @@ from nck.motion.tracefile import start_trace, write_trace_csv
 from nck.interp.sources import DirectorySource, read_text_file
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
+from nck.termination import exit_on_termination
 
 
 class CliError(Exception):
@@ -64,8 +65,16 @@ def _common_options(parser: argparse.ArgumentParser) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Entry point of the ``nck`` console script; returns the exit code."""
-    args = sys.argv[1:] if argv is None else list(argv)
+    """Entry point of the ``nck`` console script; returns the exit code.
+
+    SIGTERM and SIGHUP end a command like a normal exit (:mod:`nck.termination`),
+    so a temporary copy of the data directory is removed and the lock given free.
+    """
+    with exit_on_termination():
+        return _main(sys.argv[1:] if argv is None else list(argv))
+
+
+def _main(args: list[str]) -> int:
     if args[:1] == ["md"]:
         try:
             from nck import cli_md  # type: ignore[attr-defined]
@@ -188,8 +197,6 @@ class _Environment:
                 self.session.save()
         finally:
             self._release()
-        if self._ephemeral is not None:
-            self._ephemeral.cleanup()
 
     def keep_failed_attempt(self) -> None:
         """Save the count of failed password attempts (and its alarm-log entry) and nothing else."""
@@ -197,9 +204,12 @@ class _Environment:
             self.session.save()
 
     def _release(self) -> None:
+        """Give the data directory free and remove a temporary copy (also when the start failed)."""
         if self._lock is not None:
             self._lock.release()
             self._lock = None
+        if self._ephemeral is not None:
+            self._ephemeral.cleanup()
 
 
 def _requested_writes(options: argparse.Namespace) -> list[tuple[str, str, object]]:

@@ -10,10 +10,14 @@ thrown away at the end.
 
 from __future__ import annotations
 
+import atexit
 import os
 import shutil
 import tempfile
 from pathlib import Path
+
+from nck.atomic import TEMP_MARK
+from nck.regular_files import copy_regular_tree, is_plain_directory
 
 APP_NAME = "sinumerik-trainer"
 ENV_DATA_DIR = "NCK_DATA_DIR"
@@ -39,33 +43,88 @@ def resolve_data_dir(data_dir: str | Path | None) -> Path:
     return path
 
 
+EPHEMERAL_PREFIX = "nck-ephemeral-"
+EPHEMERAL_LIMIT_BYTES = 256 * 1024 * 1024
+"""Most a temporary copy may hold (the NC memory of programs and data is far smaller)."""
+
+
 class EphemeralDataDir:
     """A temporary copy of an NC data directory; nothing is written back.
 
-    Use as a context manager or call :meth:`cleanup` at the end::
+    Only directories and regular files are copied — links, FIFOs and devices
+    are never followed (:mod:`nck.regular_files`) — and at most
+    :data:`EPHEMERAL_LIMIT_BYTES`; a copy that fails is removed before the
+    error (an ``OSError``) reaches the caller. The copy is removed by
+    :meth:`cleanup`, at the latest when the process exits normally (``atexit``;
+    the entry points turn SIGTERM/SIGHUP into a normal exit). A copy whose
+    process died without either (SIGKILL) carries the dead PID in its name and
+    is removed when the next copy is made. Use as a context manager or call
+    :meth:`cleanup` at the end::
 
         with EphemeralDataDir(source) as path:
             ...
     """
 
     def __init__(self, source: str | Path | None = None) -> None:
-        self._temp = Path(tempfile.mkdtemp(prefix="nck-ephemeral-"))
+        remove_abandoned_copies()
+        self._temp = Path(tempfile.mkdtemp(prefix=f"{EPHEMERAL_PREFIX}{os.getpid()}-"))
         self.path = self._temp / "ncdata"
         origin = Path(source).expanduser() if source else default_data_dir()
-        if origin.is_dir():
-            shutil.copytree(origin, self.path, ignore=shutil.ignore_patterns(".*.tmp-*"))
-        else:
-            self.path.mkdir()
+        try:
+            if origin.is_dir():
+                self.skipped = copy_regular_tree(origin, self.path, EPHEMERAL_LIMIT_BYTES, _is_temp_file)
+            else:
+                self.path.mkdir()
+                self.skipped = []
+        except BaseException:
+            self.cleanup()
+            raise
+        atexit.register(self.cleanup)
 
     def cleanup(self) -> None:
-        """Delete the temporary copy."""
+        """Delete the temporary copy (again is harmless)."""
         shutil.rmtree(self._temp, ignore_errors=True)
+        atexit.unregister(self.cleanup)
 
     def __enter__(self) -> Path:
         return self.path
 
     def __exit__(self, *exc: object) -> None:
         self.cleanup()
+
+
+def _is_temp_file(name: str) -> bool:
+    return name.startswith(".") and TEMP_MARK in name
+
+
+def _process_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # exists, but belongs to someone else
+        return True
+    return True
+
+
+def remove_abandoned_copies(temp_dir: Path | None = None) -> list[Path]:
+    """Remove this user's temporary copies whose process has ended; return them."""
+    removed = []
+    folder = Path(temp_dir or tempfile.gettempdir())
+    try:
+        candidates = [p for p in folder.iterdir() if p.name.startswith(EPHEMERAL_PREFIX)]
+    except OSError:
+        return removed
+    for candidate in candidates:
+        pid_text = candidate.name[len(EPHEMERAL_PREFIX):].partition("-")[0]
+        try:
+            mine = candidate.lstat().st_uid == os.getuid() and is_plain_directory(candidate)
+        except OSError:
+            continue
+        if mine and pid_text.isdigit() and not _process_alive(int(pid_text)):
+            shutil.rmtree(candidate, ignore_errors=True)
+            removed.append(candidate)
+    return removed
 
 
 def open_data_dir(data_dir: str | Path | None, ephemeral: bool = False) -> tuple[Path, EphemeralDataDir | None]:

@@ -31,12 +31,19 @@ class NotARegularFile(OSError):
     def __init__(self, path: Path | str) -> None:
         super().__init__(errno.EINVAL, "not a regular file (a link, pipe or device)", str(path))
 
+    def __str__(self) -> str:
+        return f"{self.filename}: {self.strerror}"
+
 
 class FileTooLarge(OSError):
-    """The file is larger than the reader accepts."""
+    """The file (or the files copied together) is larger than the reader accepts."""
 
     def __init__(self, path: Path | str, limit_bytes: int) -> None:
-        super().__init__(errno.EFBIG, f"larger than {limit_bytes} bytes", str(path))
+        size = f"{limit_bytes >> 20} MB" if limit_bytes >= 1 << 20 else f"{limit_bytes} bytes"
+        super().__init__(errno.EFBIG, f"larger than {size}", str(path))
+
+    def __str__(self) -> str:
+        return f"{self.filename}: {self.strerror}"
 
 
 def is_regular_file(path: Path | str) -> bool:
