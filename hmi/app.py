@@ -48,7 +48,9 @@ from nck.termination import TERMINATION_SIGNALS, exit_on_termination
 
 from hmi.area import AreaBase
 from hmi.bridge import NckBridge
+from hmi.dialog import AreaDialog
 from hmi.key_input import PanelTerminalDriver, own_binding
+from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.program_lines import ProgramLines
@@ -226,6 +228,13 @@ class HmiApp(MachineControlPanel, App):
         if not self._batch_count:
             self.screen.refresh()
 
+    def push_screen(self, screen: Any, callback: Any = None, wait_for_dismiss: bool = False) -> Any:
+        """Show ``screen``; a dialog hands its result to ``callback`` as it closes (:mod:`hmi.dialog`)."""
+        if callback is not None and isinstance(screen, AreaDialog) and not wait_for_dismiss:
+            screen.result_handler = callback
+            callback = None
+        return super().push_screen(screen, callback, wait_for_dismiss)
+
     # -- start ---------------------------------------------------------------------------
     def on_mount(self) -> None:
         """Connect the kernel and open the Machine area."""
@@ -242,18 +251,27 @@ class HmiApp(MachineControlPanel, App):
     async def on_event(self, event: events.Event) -> None:
         """Run a key the focused widget binds itself in that widget's queue, in line with text.
 
+        A key handed to the focused widget is handled, with all it caused (a
+        dialog closed by Enter), before the next key is taken
+        (:func:`hmi.key_settle.wait_until_handled`).
+
         Textual would let such a key (Up, Home, Backspace in an editor) bubble back up
         to the app before its binding runs, so that characters typed behind it in the
         same burst were inserted first (issue 18: ``AAA``, Up, ``BBB`` gave ``AAABBB``).
         """
-        if isinstance(event, events.Key) and not event.is_forwarded:
-            focused = self.focused
-            binding = own_binding(self.screen, focused, event)
-            if binding is not None and focused is not None \
-                    and focused.call_later(focused.run_action, binding.action):
-                self.app_focus = True  # as Textual does on a key
-                return
-        await super().on_event(event)
+        if not isinstance(event, events.Key) or event.is_forwarded:
+            await super().on_event(event)
+            return
+        focused = self.focused
+        binding = own_binding(self.screen, focused, event)
+        if binding is not None and focused is not None \
+                and focused.call_later(focused.run_action, binding.action):
+            self.app_focus = True  # as Textual does on a key
+        else:
+            await super().on_event(event)
+        target = focused or self.screen
+        if target.is_attached:
+            await wait_until_handled(self, target)
 
     def on_cursor_position(self, event: events.CursorPosition) -> None:
         """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3).

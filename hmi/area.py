@@ -33,6 +33,7 @@ from textual.widgets import Static
 from nck.commands import SubmitResult
 from nck.status import NckStatus
 
+from hmi.key_settle import BindingsInPlace
 from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalSoftkeys
 from hmi.widgets.header import AreaHeader
 
@@ -56,7 +57,7 @@ def show_text(widget: Static, content: object) -> None:
     widget.update(content, layout=False)  # type: ignore[arg-type]
 
 
-class AreaBase(Screen):
+class AreaBase(BindingsInPlace):
     """A SINUMERIK operating area: header, content, vertical and horizontal softkeys."""
 
     AREA_ID: ClassVar[str] = "area"

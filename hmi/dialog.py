@@ -7,21 +7,35 @@ queue when the next key, an area key, has switched to another area. Textual's
 to the hidden area. :class:`AreaDialog` closes only while it is the active
 screen; otherwise the dialog stays open in its area, as it was, for when the
 operator comes back (the monkey test found this with fast keys).
+
+The result goes to the code that opened the dialog at once, while the dialog
+closes (Textual would queue it for the opener, behind keys the operator typed
+after the dialog: a field opened by the result would miss them).
+:meth:`hmi.app.HmiApp.push_screen` hands the callback to the dialog.
 """
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable
 
 from textual.await_complete import AwaitComplete
 from textual.screen import ModalScreen, ScreenResultType
 
+from hmi.key_settle import BindingsInPlace
 
-class AreaDialog(ModalScreen[ScreenResultType]):
+
+class AreaDialog(BindingsInPlace, ModalScreen[ScreenResultType]):
     """A modal dialog that closes only while it is on top of the current area."""
+
+    result_handler: Callable[[Any], object] | None = None
+    """Called with the result when the dialog closes (set by the app's ``push_screen``)."""
 
     def dismiss(self, result: Any = None) -> AwaitComplete:
         """Close with ``result`` if this dialog is the active screen; else leave it open."""
         if not self.is_active:
             return AwaitComplete.nothing()
-        return super().dismiss(result)
+        closing = super().dismiss(result)
+        handler, self.result_handler = self.result_handler, None
+        if handler is not None:
+            handler(result)
+        return closing
