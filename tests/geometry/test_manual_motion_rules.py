@@ -29,6 +29,7 @@ def alarms(text: str, machine=None) -> tuple[list[int], list[int]]:
     "N10 G93 G1 X0 Y0 F2\nN20 T1 D1 G41 X10\nN30 G40 X30\nM30\n",
 ])
 def test_g93_is_refused_while_radius_compensation_is_active(text: str) -> None:
+    """Digest 828d-3 rank 13 (G41 + G93 refused)."""
     # 002 L55402: G93 may not be used when G41/G42 is active.
     assert alarms(text) == ([10798], [10798])
 

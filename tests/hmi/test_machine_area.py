@@ -40,7 +40,9 @@ async def test_softkey_views_and_menu_recall(fake_app: HmiApp) -> None:
 
 async def test_mcs_softkey_switches_coordinate_system(fake: FakeNck, fake_app: HmiApp) -> None:
     """Power-on shows the MCS (002 L31480 "the predefined setting after power-up of the HMI
-    software is MCS", L31569); F1 toggles the position window to the WCS and back."""
+    software is MCS", L31569); F1 toggles the position window to the WCS and back.
+    Digest 828d-2 rank 23 (power-on in MCS, softkey toggles).
+    """
     async with fake_app.run_test(size=SIZE) as pilot:
         assert text_of(fake_app, "#positions").lstrip().startswith("MCS")
         assert fake_app.screen.query_one("#sk-h1").has_class("-active")

@@ -138,6 +138,7 @@ def spindle_rpm(nck: Nck) -> float:
 
 
 def test_g26_limits_the_spindle_speed_and_the_revolutional_feed() -> None:
+    """Digest 828d-3 rank 15 (G26 S clamps the setpoint)."""
     # 002 L54101-54107 and L55616-55618: G26 S… sets the maximum speed (SD43220), which
     # cannot be exceeded: S1000 turns at 500 rpm; F0.1 mm/rev then gives 50 mm/min (12 s for 10 mm).
     programs = {"P.MPF": "N5 G26 S500\n" + RPM_1000_UP + "N20 G1 X10 F0.1\nN30 M30",
@@ -148,6 +149,7 @@ def test_g26_limits_the_spindle_speed_and_the_revolutional_feed() -> None:
 
 
 def test_g25_raises_the_spindle_speed_to_the_minimum() -> None:
+    """Digest 828d-3 rank 15 (lower limit)."""
     # 002 L55624-55630: the speed may not fall below G25 / SD43210.
     nck = make({"P.MPF": "N5 G25 S300\nN10 S100 M3\nN20 G4 F2\nN30 M0\nN40 M30"})
     nck.submit(c.SelectMode("AUTO"))
@@ -158,6 +160,7 @@ def test_g25_raises_the_spindle_speed_to_the_minimum() -> None:
 
 
 def test_operator_speed_limit_sd43235_acts_at_once() -> None:
+    """Digest 828d-3 rank 15 (SD43235 at once)."""
     # 002 L54713-54718: the operator's maximum speed SD43235 acts immediately on the setpoint.
     nck = make({"P.MPF": "N10 S1000 M3\nN20 G4 F10\nN30 M30"})
     nck.submit(c.SelectMode("AUTO"))
@@ -206,6 +209,7 @@ def spindle_angle(nck: Nck) -> float:
     ("SPOS=ACN(90)", 270.0, 90.0),
 ])
 def test_spos_takes_its_positioning_time(word: str, travel: float, end: float) -> None:
+    """Digest 828d-3 rank 17 (DC shortest way, ACP positive direction)."""
     # 002 L51117-51165: SPOS positions the spindle; the block stays active until it is there.
     base = make({"P.MPF": "N20 M30"})
     nck = make({"P.MPF": f"N10 {word}\nN20 M30"})
@@ -215,6 +219,7 @@ def test_spos_takes_its_positioning_time(word: str, travel: float, end: float) -
 
 
 def test_spos_ic_is_relative_to_the_last_programmed_position() -> None:
+    """Digest 828d-3 rank 17 (IC)."""
     # 002 L51132-51135: SPOS=IC(…) in relation to the last programmed position.
     nck = make({"P.MPF": "N10 SPOS=100\nN20 SPOS=IC(30)\nN30 M30"})
     run_time_s(nck, "P.MPF")
@@ -222,6 +227,7 @@ def test_spos_ic_is_relative_to_the_last_programmed_position() -> None:
 
 
 def test_m19_reads_the_position_of_its_spindle_from_sd43240() -> None:
+    """Digest 828d-3 rank 17 (M19 to SD43240)."""
     # 002 L51159-51165: M19 reads the position from SD43240 $SA_M19_SPOS[<n>]; on a data
     # directory it is kept per spindle.
     nck = make({"P.MPF": "N10 M19\nN20 M30"})
@@ -233,6 +239,7 @@ def test_m19_reads_the_position_of_its_spindle_from_sd43240() -> None:
 
 
 def test_waits_holds_the_next_block_until_the_spindle_is_at_speed() -> None:
+    """Digest 828d-3 rank 17 (WAITS)."""
     # 002 L51302-51335: with WAITS the next block waits until the spindle is in its set
     # speed range; without it the axis starts at once. S1000 needs (1000/60)/MD35200 s.
     nck = make({})
@@ -255,6 +262,7 @@ def test_check_agrees_with_the_run_on_spindle_positioning_words() -> None:
 
 # ----------------------------------------------------------------------------- OVR, ACC
 def test_programmable_feed_override_multiplies_with_the_panel() -> None:
+    """Digest 828d-3 rank 10."""
     # 002 L56515-56536: OVR= 0 … 200 % changes the path feed; the active override is the
     # product with the panel's. 100 mm at F1000: 6 s; OVR=50: 12 s; OVR=200 at 50 % panel: 6 s.
     plain = run_time_s(make({"P.MPF": "N10 G1 X100 F1000\nN20 M30"}), "P.MPF")
@@ -266,6 +274,7 @@ def test_programmable_feed_override_multiplies_with_the_panel() -> None:
 
 
 def test_ovr_is_100_percent_again_after_reset() -> None:
+    """Digest 828d-3 rank 10 (100 % after RESET)."""
     # 002 L56533-56536: 100 % after RESET (MD22410 not set).
     nck = make({"P.MPF": "N5 OVR=50\nN10 G1 X10 F600\nN20 M30", "Q.MPF": "N10 G1 X0 F600\nN20 M30"})
     first = run_time_s(nck, "P.MPF")
@@ -287,6 +296,7 @@ def travel_s(nck: Nck, program: str, target_x: float) -> float:
 
 
 def test_acc_scales_the_axis_acceleration_until_reset() -> None:
+    """Digest 828d-1 rank 8 (ACC[X] until RESET)."""
     # 002 L7433-7450: ACC[axis] = 0 < factor ≤ 200 % of the maximum acceleration, modal;
     # reduced to 100 % by RESET/M30 (MD32320 bit 0 = 0). X10 at F30000 never reaches the
     # feed with MD32300 = 2.5 m/s²: t = 2·√(s/a), 0.253 s at 25 % (a = 625 mm/s²), 0.126 s at 100 %.
