@@ -7,7 +7,8 @@ panel keys) it gives up on the held pair and reports it as the two characters
 ``^`` and the letter, which a focused editor then types into the program.
 :class:`PanelKeyParser` reads ESC + one character as the Alt chord at once,
 whatever follows and however the bytes were split into reads, and reports every
-Alt chord without a character, so that it can never become text.
+Alt chord without a character, so that it can never become text (nor, for Alt+B
+and Alt+F, a JOG key as Textual's table has it).
 :class:`PanelTerminalDriver` is Textual's Linux driver reading the terminal
 through this parser.
 
@@ -62,15 +63,21 @@ def _without_text(key: events.Key) -> events.Key:
     return events.Key(key.key, None)
 
 
+def _as_alt_chord(key: events.Key) -> events.Key:
+    """The key pressed with Alt (Textual marks only letters and digits so), without text."""
+    return events.Key(key.key if is_alt_chord(key) else f"alt+{key.key}", None)
+
+
 class PanelKeyParser(XTermParser):
     """Textual's terminal parser with Alt chords read at once and never as text."""
 
     def _sequence_to_key_events(self, sequence: str, alt: bool = False) -> Iterable[events.Key]:
-        keys = list(super()._sequence_to_key_events(sequence, alt))
-        if not keys and len(sequence) == 2 and sequence[0] == ESC \
-                and sequence[1] not in SEQUENCE_INTRODUCERS:
-            keys = list(super()._sequence_to_key_events(sequence[1], alt=True))
-        return [_without_text(key) for key in keys]
+        if len(sequence) == 2 and sequence[0] == ESC and sequence[1] not in SEQUENCE_INTRODUCERS:
+            # Textual's table reads some of these pairs as a macOS Option character (ESC 1 → ¡)
+            # or as word moves (ESC b / ESC f → Ctrl+Left/Right, the JOG keys); on the panel
+            # each is the Alt chord the operator pressed.
+            return [_as_alt_chord(key) for key in super()._sequence_to_key_events(sequence[1], True)]
+        return [_without_text(key) for key in super()._sequence_to_key_events(sequence, alt)]
 
 
 class TerminalReader:

@@ -9,6 +9,7 @@ what the parser makes of them to the app, as the terminal driver does.
 from __future__ import annotations
 
 import os
+import string
 import threading
 
 from textual import events
@@ -82,13 +83,16 @@ def test_every_keymap_key_in_one_burst_arrives_as_sent() -> None:
 
 
 def test_alt_chord_never_carries_text() -> None:
-    """Bound or not, an Alt+letter is a command, never a character to type.
+    """Bound or not, an Alt chord is a command, never a character to type.
 
-    Alt+B and Alt+F are left out: terminals send them as word left/right (keymap.md).
+    Textual's own table read ESC 1 as ``¡`` and ESC f as Ctrl+Right (JOG +).
     """
-    for letter in "acdeghijklmnopqrstuvwxyz":
+    for letter in string.ascii_lowercase + string.digits:
         (key,) = parse("\x1b" + letter)
         assert key.key == f"alt+{letter}" and key.character is None and not key.is_printable
+    (key,) = parse("\x1bG")
+    assert key.key == "alt+shift+g" and key.character is None
+    assert [k.key for k in parse("\x1b-\x1b=")] == ["alt+minus", "alt+equals_sign"]
 
 
 def test_terminal_driver_reads_through_the_panel_parser(fake_app: HmiApp) -> None:
