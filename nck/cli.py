@@ -2,7 +2,9 @@
 
 ``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck version``; ``nck md``
 is dispatched to its own module when present. Exit codes: 0 ok, 1 alarm or
-problems found, 2 command line / file problem, 3 timeout.
+problems found, 2 command line / file problem, 3 timeout (``nck run``: one hour of
+simulated time unless ``--timeout`` says otherwise; ``nck check``: a program not ended
+after ``--max-blocks``, default 200,000 blocks).
 """
 
 from __future__ import annotations
@@ -15,12 +17,15 @@ from typing import Any, TextIO
 
 from nck import __version__, canon
 from nck.errors import NcAlarmError
-from nck.headless import alarm_message, check_program, format_alarm, run_program
+from nck.headless import CHECK_BLOCK_BUDGET, alarm_message, check_outcome, format_alarm, run_program
 from nck.motion.tracefile import start_trace, write_trace_csv
 from nck.interp.sources import DirectorySource, read_text_file
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
 from nck.termination import exit_on_termination
+
+
+DEFAULT_RUN_TIMEOUT_S = 3600.0  # one hour of machine time: a bound for endless loops, not for parts
 
 
 class CliError(Exception):
@@ -38,13 +43,18 @@ def _build_parser() -> argparse.ArgumentParser:
     check = sub.add_parser("check", help="check programs without moving anything")
     check.add_argument("programs", nargs="+")
     _common_options(check)
+    check.add_argument("--max-blocks", type=int, default=CHECK_BLOCK_BUDGET, metavar="N",
+                       help=f"interpret at most N blocks per program (default {CHECK_BLOCK_BUDGET}); "
+                            "a program not ended by then is reported (exit 3), e.g. an endless loop")
     run = sub.add_parser("run", help="run a program headless")
     run.add_argument("program")
     _common_options(run)
     run.add_argument("--json", action="store_true", help="print the final state as JSON")
     run.add_argument("--segments", help="write motion segments as JSON lines (- = stdout)")
     run.add_argument("--trace", help="write the MCS setpoints of every IPO cycle as CSV (t_s, axes)")
-    run.add_argument("--timeout", type=float, help="stop after S seconds of simulated time")
+    run.add_argument("--timeout", type=float, default=DEFAULT_RUN_TIMEOUT_S, metavar="S",
+                     help=f"stop after S seconds of simulated time, exit 3 (default {DEFAULT_RUN_TIMEOUT_S:g}; "
+                          "0 = no limit); every block costs time, so an endless loop ends too")
     run.add_argument("--realtime", action="store_true", help="(accepted; runs as fast as possible)")
     sub.add_parser("version", help="print the version")
     return parser
@@ -275,24 +285,34 @@ def _apply_writes(options: argparse.Namespace, env: "_Environment") -> None:
 
 # ----------------------------------------------------------------------------- check
 def _check(options: argparse.Namespace) -> int:
+    if options.max_blocks < 1:
+        raise CliError("--max-blocks needs a number of blocks of 1 or more")
     files = [_read_program(p) for p in options.programs]
-    problems = 0
+    problems = unended = 0
     for path, text in files:
         env = _Environment(options)
         try:
-            found = check_program(env.machine, _source(path, options, env), path.name, text,
-                                  env.data, dialect=options.dialect)
+            found = check_outcome(env.machine, _source(path, options, env), path.name, text,
+                                  env.data, max_blocks=options.max_blocks, dialect=options.dialect)
         finally:
             env.finish(save=False)
-        for alarm in found:
+        for alarm in found.alarms:
             print(format_alarm(alarm), file=sys.stderr)
-        problems += len(found)
-        print(f"{path.name}: {'ok' if not found else f'{len(found)} problem(s)'}")
-    return 1 if problems else 0
+        problems += len(found.alarms)
+        if not found.alarms and not found.ended:
+            unended += 1
+            print(f"{path.name}: not ended after {found.blocks} blocks (an endless loop? "
+                  f"--max-blocks N checks longer programs)")
+        else:
+            print(f"{path.name}: {'ok' if not found.alarms else f'{len(found.alarms)} problem(s)'}")
+    return 1 if problems else 3 if unended else 0
 
 
 # ----------------------------------------------------------------------------- run
 def _run(options: argparse.Namespace) -> int:
+    if options.timeout < 0:
+        raise CliError("--timeout needs 0 (no limit) or a number of seconds")
+    timeout_s = options.timeout or None
     path, text = _read_program(options.program)
     env = _Environment(options)
     machine, data = env.machine, env.data
@@ -320,7 +340,7 @@ def _run(options: argparse.Namespace) -> int:
 
     try:
         result = run_program(machine, _source(path, options, env), data, path.name, text=text,
-                             timeout_s=options.timeout, on_command=on_command,
+                             timeout_s=timeout_s, on_command=on_command,
                              dialect=options.dialect, on_motion=on_motion if options.trace else None,
                              keep_commands=False)
     finally:
@@ -336,7 +356,8 @@ def _run(options: argparse.Namespace) -> int:
     for alarm in result.alarms:
         print(format_alarm(alarm), file=sys.stderr)
     if result.status == "timeout":
-        print(f"nck: timeout after {options.timeout} s of simulated time", file=sys.stderr)
+        print(f"nck: the program did not end within {options.timeout:g} s of simulated time "
+              "(an endless loop? --timeout S allows longer runs, 0 = no limit)", file=sys.stderr)
     if options.json:
         print(json.dumps(final_state_json(result, machine, data)))
     return result.exit_code

@@ -394,14 +394,30 @@ def check_program(machine: MachineConfig, programs: ProgramSource, name: str, te
     line; when there are none, the program is interpreted (without moving
     anything) up to its end or ``max_blocks`` blocks to find run-time alarms.
     """
+    return check_outcome(machine, programs, name, text, data, max_blocks, dialect).alarms
+
+
+@dataclass(frozen=True)
+class CheckOutcome:
+    """What ``nck check`` found: the alarms, and whether the run reached the program end."""
+
+    alarms: list[NcAlarmError]
+    ended: bool  # False: the block budget ran out first (an endless loop, or a longer program)
+    blocks: int
+
+
+def check_outcome(machine: MachineConfig, programs: ProgramSource, name: str, text: str,
+                  data: NcData | None = None, max_blocks: int = CHECK_BLOCK_BUDGET,
+                  dialect: str = "siemens") -> CheckOutcome:
+    """As :func:`check_program`, and say whether the program ended within ``max_blocks``."""
     from nck.interp.program import load_program
 
     found = load_program(name, text, dialect).problems()
     if found:
-        return found
+        return CheckOutcome(found, True, 0)
     outcome = run_program(machine, programs, data or NcData(), name, text=text,
                           max_blocks=max_blocks, dialect=dialect, keep_commands=False)
-    return list(outcome.alarms)
+    return CheckOutcome(list(outcome.alarms), outcome.status != "timeout", outcome.blocks)
 
 
 def segment_time_s(machine: MachineConfig, motion: canon.Motion) -> float:
