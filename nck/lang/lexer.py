@@ -116,6 +116,22 @@ def split_comment(line: str) -> tuple[str, str | None]:
     return line, None
 
 
+_MAIN_RUN_R = re.compile(r"\$R([0-9]+)")
+
+
+def _name_tokens(name: str, pos: int) -> list[Token]:
+    """The tokens of a name. ``$R<n>`` and ``$R[…]`` are the R parameters written as main-run
+    variables (004 L259-266, L305-306); they read as ``R<n>`` and ``R[…]`` (the interpreter
+    keeps one store for both)."""
+    if name == "$R":
+        return [Token(NAME, "R", None, pos)]
+    found = _MAIN_RUN_R.fullmatch(name)
+    if found is not None:
+        digits = found.group(1)
+        return [Token(ADDR, "R", None, pos), Token(NUMBER, digits, int(digits), pos + 2)]
+    return [Token(NAME, name, None, pos)]
+
+
 def tokenize(code: str) -> list[Token]:
     """Cut the code part of one block (comment already removed) into tokens.
 
@@ -184,7 +200,11 @@ def _tokenize_plain(text: str) -> list[Token] | None:
                 return None
             append(Token(NUMBER, digits, value, pos))
         elif kind == "name":
-            append(Token(NAME, found.group("name"), None, pos))
+            name = found.group("name")
+            if name.startswith("$R"):
+                tokens.extend(_name_tokens(name, pos))
+            else:
+                append(Token(NAME, name, None, pos))
         elif kind == "op":
             append(Token(OP, found.group("op"), None, pos))
         pos = end
@@ -231,7 +251,7 @@ def _tokenize_slow(code: str, text: str) -> list[Token]:
             end = pos + 1
             while end < n and _is_name_char(text[end]):
                 end += 1
-            tokens.append(Token(NAME, text[pos:end], None, pos))
+            tokens.extend(_name_tokens(text[pos:end], pos))
             pos = end
             continue
         two = text[pos:pos + 2]

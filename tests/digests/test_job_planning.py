@@ -39,13 +39,14 @@ def test_digest_job_planning_rank_01_r_parameter_aliasing_and_indexing() -> None
 
 
 def test_digest_job_planning_rank_02_number_literals_and_sin_in_degrees() -> None:
-    """Digest job-planning-variables rank 2 (004 L303-309): -0.1EX-5 = -0.1·10^-5, 1.874EX8 =
-    1.874·10^8, 8.2EX-3 = 0.0082 (004 L281), SIN(25.3) in degrees. The manual writes the first
-    two as main-run assignments ``$R4=``/``$R[6]=``; here they are written as R4/R6 because
-    ``$R`` in a part program is refused today (12550, see tests/README.md)."""
-    r = r_after("R4=-0.1EX-5\nR6=1.874EX8\nR3=8.2EX-3\nR7=SIN(25.3)\nM30\n")
+    """Digest job-planning-variables rank 2, the manual's example (004 L303-309):
+    ``$R4=-0.1EX-5`` is -0.1·10^-5 and ``$R[6]=1.874EX8`` 1.874·10^8, written as main-run R
+    parameters (004 L259-266); 8.2EX-3 = 0.0082 (004 L281); SIN(25.3) in degrees. Reading
+    R4/R6 gives the same elements (one store)."""
+    r = r_after("$R4=-0.1EX-5\n$R[6]=1.874EX8\nR3=8.2EX-3\nR7=SIN(25.3)\nR8=$R4+R6\nM30\n")
     assert r[4] == pytest.approx(-1e-6, rel=1e-12)
     assert r[6] == pytest.approx(1.874e8, rel=1e-12)
+    assert r[8] == pytest.approx(1.874e8 - 1e-6, rel=1e-12)
     assert r[3] == pytest.approx(0.0082, rel=1e-12)
     assert r[7] == pytest.approx(math.sin(math.radians(25.3)), rel=1e-12)
     assert r[7] == pytest.approx(0.4273579, abs=5e-8)
