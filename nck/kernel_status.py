@@ -58,6 +58,8 @@ class StatusView:
         positions = shown.positions_mcs()
         run = self._overlay or self._run
         current_source = self._path_motion().current_source() if run is not None else None
+        if current_source is None and run is not None:
+            current_source = run.last_executed_source()
         current = None
         executing: Motion | None = None
         blocks: tuple = ()

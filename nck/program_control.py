@@ -255,6 +255,10 @@ class ProgramRun:
                     if len(self.segments) > 256:
                         self.segments.pop(next(iter(self.segments)))
                 self._push(motion, command)
+                if isinstance(command, Motion) and self._single_segment_stop(options, commands):
+                    self._index += 1
+                    self._stop_at_idle("single block")
+                    return False
             elif isinstance(command, StopPoint):
                 kind = command.kind.upper()
                 if kind in ("M0", "M00"):
@@ -276,6 +280,14 @@ class ProgramRun:
                 self._deferred.append((self._pushed_total, RunEvent("output", command=command)))
             self._index += 1
         return True
+
+    def _single_segment_stop(self, options: RunOptions, commands: tuple) -> bool:
+        """SBL1 stops after every segment, also one the NC inserted or one an earlier block
+        released late (radius compensation, RND), when more motion of the block follows
+        (002 L18071-18094): the stops keep in step with the motion."""
+        if options.single_block != "SBL1" or self._pending is None or self._pending.extras.get("single_block_off"):
+            return False
+        return any(isinstance(c, (Motion, Dwell)) for c in commands[self._index + 1:])
 
     def _block_done(self, options: RunOptions) -> None:
         assert self._pending is not None
@@ -355,6 +367,17 @@ class ProgramRun:
         if approach is not None:
             self._approach = approach
         self._requeued.extend(items)
+
+    def last_executed_source(self) -> Source | None:
+        """The block to show while the motion stands: the one whose motion ran last, when the
+        latest interpreted block handed on motion (possibly of an earlier block: radius
+        compensation and RND release segments late); None: show the latest block."""
+        block = self.current
+        if block is None or not self.pushed:
+            return None
+        if not any(isinstance(c, (Motion, Dwell)) for c in block.commands):
+            return None
+        return self.pushed[-1].source
 
     @property
     def at_stop(self) -> bool:
