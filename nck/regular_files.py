@@ -20,6 +20,8 @@ import stat
 from pathlib import Path
 from typing import Callable
 
+from nck.atomic import atomic_write_bytes
+
 _NO_FOLLOW = getattr(os, "O_NOFOLLOW", 0)
 _NON_BLOCKING = getattr(os, "O_NONBLOCK", 0)
 _CHUNK_BYTES = 1 << 20
@@ -140,3 +142,20 @@ def copy_regular_tree(source: Path, target: Path, limit_bytes: int,
                     out.write(chunk)
             shutil.copystat(entry, copy / entry.name, follow_symlinks=False)
     return skipped
+
+
+def write_export(path: Path | str, data: bytes, *, replace: bool = False) -> None:
+    """Write a file for the operator (an export) atomically, never through a link.
+
+    ``path`` must be free or a regular file: a link, FIFO or device there is
+    refused (:class:`NotARegularFile`) — the write would land elsewhere. An
+    existing file is replaced only with ``replace`` (else ``FileExistsError``:
+    ask the operator first). The new file replaces the entry itself, so a link
+    planted in between is replaced, not written through.
+    """
+    if os.path.lexists(path):
+        if not is_regular_file(path):
+            raise NotARegularFile(path)
+        if not replace:
+            raise FileExistsError(errno.EEXIST, "already exists", str(path))
+    atomic_write_bytes(path, data)

@@ -30,7 +30,7 @@ from typing import Callable, Iterable
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
 from nck.regular_files import (
-    copy_regular_tree, is_plain_directory, is_regular_file, read_regular_bytes,
+    copy_regular_tree, is_plain_directory, is_regular_file, read_regular_bytes, write_export,
 )
 
 DIRECTORIES = ("MPF", "SPF", "WKS")
@@ -418,17 +418,21 @@ class NcFileSystem:
             raise StorageError("io", f"{target} could not be written: {exc.strerror}") from exc
         return self._entry(target)
 
-    def export_file(self, path: str, local_path: Path | str) -> Path:
+    def export_file(self, path: str, local_path: Path | str, replace: bool = False) -> Path:
         """Copy a program to the local file system (atomically); return the file written.
 
         ``local_path`` may be a directory: the program's file name is used there.
+        An existing file is replaced only with ``replace`` (else ``FileExistsError``
+        is raised: ask first); a link or pipe there is refused, never written through.
         """
         canonical = self.canonical(path)
         local = Path(local_path)
         if local.is_dir():
             local = local / canonical.rpartition("/")[2]
         try:
-            atomic_write_bytes(local, self.read_bytes(canonical))
+            write_export(local, self.read_bytes(canonical), replace=replace)
+        except FileExistsError:
+            raise
         except OSError as exc:
             raise StorageError("io", f"{local} could not be written: {exc.strerror}") from exc
         return local

@@ -11,7 +11,7 @@ kernel accessors (``alarm_history``, ``logbook``, ``buffer_fill``, counters).
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, ClassVar
+from typing import Any, Callable, ClassVar
 
 from rich.text import Text
 from textual.app import ComposeResult
@@ -22,6 +22,7 @@ from textual.widgets import ContentSwitcher, Input, Static
 import nck as nck_package
 from nck import commands as cmd
 from nck.status import NckStatus
+from nck.regular_files import write_export
 from nck.trace import TraceError
 
 from hmi.area import AreaBase, show_text
@@ -35,6 +36,7 @@ from screens.diagnostics_service import (
     UtilisationMeter, axis_rows, drive_rows, overview_text, rows_text, utilisation_rows,
 )
 from screens.diagnostics_trace import TraceSession
+from screens.parameter_tables import ConfirmDialog
 
 VIEWS = ("alarms", "messages", "log", "overview", "axis", "drive", "utilisation", "trace",
          "version", "logbook")
@@ -238,12 +240,29 @@ class DiagnosticsScreen(AreaBase):
         rows = log_rows(self._history(), self.log_filter)
         name = "alarm_log.csv" if kind == "csv" else "alarm_log.txt"
         path = Path(self.export_dir) / name
-        try:
-            path.write_text(log_as_csv(rows) if kind == "csv" else log_as_text(rows), encoding="utf-8")
-        except OSError as exc:
-            self.show_hint(f"Export failed: {exc}")
-            return
-        self.show_hint(f"Alarm log written to {path} ({len(rows)} entries)")
+        data = (log_as_csv(rows) if kind == "csv" else log_as_text(rows)).encode("utf-8")
+
+        def write(replace: bool) -> Path:
+            write_export(path, data, replace=replace)
+            return path
+
+        self._export(write, f"Alarm log written to {path} ({len(rows)} entries)", "Export failed")
+
+    def _export(self, write: Callable[[bool], Path], done: str, failed: str) -> None:
+        """Run an export; when its file exists, ask before replacing it (links are refused)."""
+        def attempt(replace: bool) -> None:
+            try:
+                path = write(replace)
+            except FileExistsError as exc:
+                question = f"{Path(exc.filename).name} already exists in {Path(exc.filename).parent}. Replace it?"
+                self.app.push_screen(ConfirmDialog(question), lambda yes: attempt(True) if yes else None)
+                return
+            except OSError as exc:
+                self.say(f"{failed}: {exc}")
+                return
+            self.say(done.format(path=path))  # kept when the area comes back from the question
+
+        attempt(False)
 
     def action_trace_slot(self) -> None:
         """Edit the next signal slot."""
@@ -294,12 +313,12 @@ class DiagnosticsScreen(AreaBase):
         """Write the recorded samples as ``trace.csv``."""
         if self.trace is None:
             return
-        try:
-            path = self.trace.export(Path(self.export_dir))
-        except (ValueError, OSError) as exc:
-            self.show_hint(f"Trace export: {exc}")
+        if not (self.trace.recorder is not None and self.trace.recorder.sample_count):
+            self.show_hint("Trace export: nothing recorded yet")
             return
-        self.show_hint(f"Trace written to {path}")
+        trace = self.trace
+        self._export(lambda replace: trace.export(Path(self.export_dir), replace), "Trace written to {path}",
+                     "Trace export")
 
     def action_arrow(self, direction: int) -> None:
         """Left/Right in the trace view: move the cursor by a hundredth of the recording."""

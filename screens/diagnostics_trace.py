@@ -11,6 +11,7 @@ from typing import Any
 
 from rich.text import Text
 
+from nck.regular_files import write_export
 from nck.trace import MAX_SIGNALS, TraceRecorder, TraceSettings, available_signals, signal_unit
 
 DURATIONS_S = (1.0, 2.0, 5.0, 10.0, 20.0, 60.0)
@@ -79,12 +80,17 @@ class TraceSession:
         if self.recorder is not None:
             self.recorder.detach()
 
-    def export(self, directory: Path) -> Path:
-        """Write the samples as ``trace.csv`` into ``directory``; return the path."""
+    def export(self, directory: Path, replace: bool = False) -> Path:
+        """Write the samples as ``trace.csv`` into ``directory``; return the path.
+
+        An existing ``trace.csv`` is replaced only with ``replace`` (else
+        ``FileExistsError``); a link or pipe of that name is refused
+        (:func:`nck.regular_files.write_export`).
+        """
         if self.recorder is None or not self.recorder.sample_count:
             raise ValueError("nothing recorded yet")
         path = Path(directory) / "trace.csv"
-        path.write_text(self.recorder.to_csv(), encoding="utf-8")
+        write_export(path, self.recorder.to_csv().encode("utf-8"), replace=replace)
         return path
 
     def settings_text(self) -> Text:

@@ -34,7 +34,9 @@ from hmi.dialog import AreaDialog
 from hmi.softkeys import Softkey, SoftkeyMenu
 from nck.storage import ProgramEntry
 
+from screens.parameter_tables import ConfirmDialog
 from screens.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
+
 
 def _level(action: str, fallback: int) -> int:
     """The access level an action needs (``data/access.toml``), or ``fallback``."""
@@ -508,11 +510,15 @@ class ProgramManagerScreen(AreaBase):
         if entry is None or entry.kind == "WPD":
             return
 
-        def do_export(path: str | None) -> None:
+        def do_export(path: str | None, replace: bool = False) -> None:
             if not path:
                 return
             try:
-                target = self.files.fs.export_file(entry.path, Path(path).expanduser())
+                target = self.files.fs.export_file(entry.path, Path(path).expanduser(), replace)
+            except FileExistsError as exc:
+                self.app.push_screen(ConfirmDialog(f"{exc.filename} already exists. Replace it?"),
+                                     lambda yes: do_export(path, True) if yes else None)
+                return
             except (ProgramFileError, OSError) as exc:
                 self.say(f"Export: {exc}")
                 return

@@ -127,3 +127,23 @@ def test_copying_a_workpiece_copies_regular_files_only(tmp_path: Path) -> None:
     os.mkfifo(folder / "PIPE.SPF")
     fs.copy("WKS/SHAFT.WPD", "WKS/COPY.WPD")
     assert sorted(p.name for p in (tmp_path / "nc" / "WKS" / "COPY.WPD").iterdir()) == ["SHAFT.MPF"]
+
+
+def test_a_program_export_refuses_a_link_and_replaces_only_when_asked(tmp_path: Path) -> None:
+    from nck.storage import StorageError
+
+    fs = _file_system(tmp_path)
+    victim = _victim(tmp_path)
+    folder = tmp_path / "pc"
+    folder.mkdir()
+    (folder / "AA.MPF").symlink_to(victim)
+    with pytest.raises(StorageError, match="not a regular file"):
+        fs.export_file("AA.MPF", folder)
+    assert victim.read_text() == VICTIM_TEXT
+    (folder / "AA.MPF").unlink()
+    (folder / "AA.MPF").write_text("older\n")
+    with pytest.raises(FileExistsError):
+        fs.export_file("AA.MPF", folder)
+    assert (folder / "AA.MPF").read_text() == "older\n"
+    assert fs.export_file("AA.MPF", folder, replace=True) == folder / "AA.MPF"
+    assert (folder / "AA.MPF").read_text() == "G0 X1\n"
