@@ -78,6 +78,9 @@ NESTING_LIMIT = 32
 """Deepest nesting of tables and lists in a retained file (the data need 7 at most)."""
 INTEGER_LIMIT = 2**63 - 1
 """Largest integer magnitude in a retained file (the control's data are at most 64 bit)."""
+ARCHIVE_LIMIT_BYTES = 256 * 1024 * 1024
+"""Largest archive imported (all programs and data of a data directory)."""
+"""Largest integer magnitude in a retained file (the control's data are at most 64 bit)."""
 PRIVATE_SECTIONS = frozenset({"access"})  # password hashes: readable by the owner only
 
 
@@ -136,6 +139,18 @@ def _integer(value: Any) -> int:
 def _mapping(value: Any) -> Mapping[str, Any]:
     if not isinstance(value, dict):
         raise ValueError("a table was expected")
+    return value
+
+
+def _sequence(value: Any) -> list[Any]:
+    if not isinstance(value, list):
+        raise ValueError("a list was expected")
+    return value
+
+
+def _text(value: Any) -> str:
+    if not isinstance(value, str):
+        raise ValueError(f"{value!r} is not text")
     return value
 
 
@@ -319,8 +334,8 @@ def section_text(name: str, rd: RetainedData) -> str:
     return json.dumps(document, indent=1, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
-    """Read one section file's content into ``rd``; raise BadFile when it is unusable."""
+def decode_document(raw: bytes) -> Any:
+    """The JSON document in ``raw``, bounded in depth and numbers; BadFile says why not."""
     try:
         document = json.loads(raw.decode("utf-8"))
     except UnicodeDecodeError as exc:
@@ -334,6 +349,12 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     except RecursionError as exc:
         raise BadFile(f"nested deeper than {NESTING_LIMIT} levels") from exc
     _check_document(document)
+    return document
+
+
+def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
+    """Read one section file's content into ``rd``; raise BadFile when it is unusable."""
+    document = decode_document(raw)
     if not isinstance(document, dict) or document.get("format") != FORMAT:
         raise BadFile("not a retained-data file")
     if document.get("section") != name:
@@ -591,8 +612,10 @@ class Session:
         is checked first: on any problem ArchiveError is raised and nothing changes.
         """
         try:
-            archive = json.loads(Path(path).read_bytes().decode("utf-8"))
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+            archive = decode_document(read_regular_bytes(path, ARCHIVE_LIMIT_BYTES, follow_links=True))
+        except OSError as exc:
+            raise ArchiveError(f"{path}: not a readable archive ({exc.strerror or exc})") from exc
+        except BadFile as exc:
             raise ArchiveError(f"{path}: not a readable archive ({exc})") from exc
         if not isinstance(archive, dict) or archive.get("format") != ARCHIVE_FORMAT:
             raise ArchiveError(f"{path}: not an NC data archive")
@@ -609,19 +632,19 @@ class Session:
                 scratch = RetainedData(access=self.retained.access)
                 SECTIONS[name][1](_mapping(data), scratch)
                 texts[name] = section_text(name, scratch)
-            workpieces = [self.files.canonical(w) for w in archive.get("workpieces", [])]
+            workpieces = [self.files.canonical(_text(w)) for w in _sequence(archive.get("workpieces", []))]
             programs: list[tuple[str, bytes]] = []
-            for item in archive.get("programs", []):
+            for item in _sequence(archive.get("programs", [])):
                 item = _mapping(item)
-                canonical = self.files.canonical(item["path"])
-                raw = (item["text"].encode("utf-8") if "text" in item
-                       else base64.b64decode(item["base64"], validate=True))
+                canonical = self.files.canonical(_text(item["path"]))
+                raw = (_text(item["text"]).encode("utf-8") if "text" in item
+                       else base64.b64decode(_text(item["base64"]), validate=True))
                 if self.files.exists(canonical) and self.files.is_in_use(canonical):
                     raise ArchiveError(f"{canonical} is in use and cannot be replaced")
                 programs.append((canonical, raw))
         except ArchiveError:
             raise
-        except (StorageError, KeyError, TypeError, ValueError) as exc:
+        except (StorageError, KeyError, TypeError, ValueError, DataError) as exc:
             raise ArchiveError(f"{path}: bad content ({exc})") from exc
         for name, text in texts.items():
             atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True,

@@ -69,15 +69,16 @@ def is_link(path: Path | str) -> bool:
     return os.path.islink(path)
 
 
-def open_regular(path: Path | str, flags: int, mode: int = 0o644) -> int:
+def open_regular(path: Path | str, flags: int, mode: int = 0o644, *, follow_links: bool = False) -> int:
     """``os.open`` that refuses links, FIFOs and devices; return the descriptor.
 
-    The file is opened without following a final symbolic link and without
+    The file is opened without following a final symbolic link (unless
+    ``follow_links``: for a file the operator names to be read) and without
     blocking on a FIFO; its kind is checked on the open descriptor, so a swap
     between check and use is impossible.
     """
     try:
-        handle = os.open(path, flags | _NO_FOLLOW | _NON_BLOCKING, mode)
+        handle = os.open(path, flags | (0 if follow_links else _NO_FOLLOW) | _NON_BLOCKING, mode)
     except OSError as exc:
         if exc.errno == errno.ELOOP:  # the final component is a symbolic link
             raise NotARegularFile(path) from None
@@ -93,12 +94,13 @@ def open_regular(path: Path | str, flags: int, mode: int = 0o644) -> int:
     return handle
 
 
-def read_regular_bytes(path: Path | str, limit_bytes: int) -> bytes:
+def read_regular_bytes(path: Path | str, limit_bytes: int, *, follow_links: bool = False) -> bytes:
     """The content of the regular file ``path``, at most ``limit_bytes`` long.
 
     Raises :class:`NotARegularFile`, :class:`FileTooLarge` or another ``OSError``.
+    ``follow_links`` reads through a link to a regular file (see :func:`open_regular`).
     """
-    handle = open_regular(path, os.O_RDONLY)
+    handle = open_regular(path, os.O_RDONLY, follow_links=follow_links)
     with os.fdopen(handle, "rb") as stream:
         data = stream.read(limit_bytes + 1)
     if len(data) > limit_bytes:
