@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import stat
 from pathlib import Path
 
 TEMP_MARK = ".tmp-"
@@ -30,6 +31,13 @@ def backup_path(path: Path) -> Path:
 def _temp_path(path: Path) -> Path:
     """Return a fresh temporary name next to ``path`` (hidden, unique)."""
     return path.with_name(f".{path.name}{TEMP_MARK}{os.getpid()}-{os.urandom(4).hex()}")
+
+
+def _is_regular_file(path: Path) -> bool:
+    try:
+        return stat.S_ISREG(os.lstat(path).st_mode)
+    except OSError:
+        return False
 
 
 def fsync_directory(directory: Path) -> None:
@@ -89,7 +97,7 @@ def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False,
     temp = _temp_path(path)
     try:
         _write_synced(temp, data, 0o600 if private else 0o666)
-        if backup and path.is_file():
+        if backup and _is_regular_file(path):  # a link's target is never copied into the backup
             _make_backup(path)
             if private:
                 os.chmod(backup_path(path), 0o600)

@@ -147,3 +147,16 @@ def test_a_program_export_refuses_a_link_and_replaces_only_when_asked(tmp_path: 
     assert (folder / "AA.MPF").read_text() == "older\n"
     assert fs.export_file("AA.MPF", folder, replace=True) == folder / "AA.MPF"
     assert (folder / "AA.MPF").read_text() == "G0 X1\n"
+
+
+def test_a_retained_write_replaces_a_link_and_backs_up_nothing_through_it(tmp_path: Path) -> None:
+    from nck.atomic import atomic_write_text, backup_path
+
+    victim = _victim(tmp_path)
+    target = tmp_path / "data" / "tools.json"
+    target.parent.mkdir()
+    target.symlink_to(victim)
+    atomic_write_text(target, "new\n", backup=True)
+    assert victim.read_text() == VICTIM_TEXT
+    assert not target.is_symlink() and target.read_text() == "new\n"
+    assert not os.path.lexists(backup_path(target))  # the outside content is not copied in
