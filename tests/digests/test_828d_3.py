@@ -105,3 +105,28 @@ def test_digest_828d_3_rank_21_effective_length_is_geometry_plus_wear_plus_base(
     r = run(lines("N10 T1 M6 D1", "N20 G17 G0 X0 Y0 Z10", "N30 G18 X0 Y0 Z0", "N40 M30"), data)
     assert r.end_mcs(20)["Z"] == pytest.approx(114.8)
     assert r.end_mcs(30)["Y"] == pytest.approx(104.8)
+
+
+def test_digest_828d_3_rank_20_missing_edge_is_corrected_and_the_block_runs_again() -> None:
+    """Digest 828d-3 rank 20: a D that does not exist interrupts the program at that block
+    (17180, with T and D); the operator loads the missing data set and NC START executes the
+    block again ("compensation block", 002 L58140-58170); still missing, the alarm comes again;
+    corrected, the program continues: D3 with L1 = 50 puts G0 Z0 at machine Z50."""
+    nck = Nck(programs=MemorySource({"P.MPF": "N10 T1 M6\nN20 D3\nN30 G0 Z0\nN40 M30"}),
+              referenced=True)
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 100.0})
+    assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
+    assert nck.submit(c.SelectProgram("P.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel != "active", 10.0)
+    assert [a.number for a in nck.status().alarms] == [17180]
+    assert (nck.situation.channel, nck.situation.program) == ("interrupted", "stopped")
+    assert nck.submit(c.CycleStart()) == c.Accepted()  # not corrected: the alarm again
+    assert nck.run_until(lambda k: k.situation.channel != "active", 10.0)
+    assert [a.number for a in nck.status().alarms] == [17180]
+    assert nck.submit(c.WriteData("$TC_DP1[1,3]", 120)) == c.Accepted()
+    assert nck.submit(c.WriteData("$TC_DP3[1,3]", 50)) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+    assert [a.number for a in nck.status().alarms] == []
+    assert nck.positions_mcs()["Z"] == pytest.approx(50.0, abs=1e-3)
