@@ -72,10 +72,9 @@ class EphemeralDataDir:
         origin = Path(source).expanduser() if source else default_data_dir()
         try:
             if origin.is_dir():
-                self.skipped = copy_regular_tree(origin, self.path, EPHEMERAL_LIMIT_BYTES, _is_temp_file)
+                copy_regular_tree(origin, self.path, EPHEMERAL_LIMIT_BYTES, _is_temp_file)
             else:
                 self.path.mkdir()
-                self.skipped = []
         except BaseException:
             self.cleanup()
             raise
@@ -109,8 +108,11 @@ def _process_alive(pid: int) -> bool:
 
 def remove_abandoned_copies(temp_dir: Path | None = None) -> list[Path]:
     """Remove this user's temporary copies whose process has ended; return them."""
-    removed = []
+    removed: list[Path] = []
+    if os.name != "posix":  # no process probe there (os.kill would end the process)
+        return removed
     folder = Path(temp_dir or tempfile.gettempdir())
+    user = os.getuid()
     try:
         candidates = [p for p in folder.iterdir() if p.name.startswith(EPHEMERAL_PREFIX)]
     except OSError:
@@ -118,7 +120,7 @@ def remove_abandoned_copies(temp_dir: Path | None = None) -> list[Path]:
     for candidate in candidates:
         pid_text = candidate.name[len(EPHEMERAL_PREFIX):].partition("-")[0]
         try:
-            mine = candidate.lstat().st_uid == os.getuid() and is_plain_directory(candidate)
+            mine = candidate.lstat().st_uid == user and is_plain_directory(candidate)
         except OSError:
             continue
         if mine and pid_text.isdigit() and not _process_alive(int(pid_text)):

@@ -64,11 +64,6 @@ def is_plain_directory(path: Path | str) -> bool:
         return False
 
 
-def is_link(path: Path | str) -> bool:
-    """True when ``path`` is a symbolic link (dangling or not)."""
-    return os.path.islink(path)
-
-
 def open_regular(path: Path | str, flags: int, mode: int = 0o644, *, follow_links: bool = False) -> int:
     """``os.open`` that refuses links, FIFOs and devices; return the descriptor.
 
@@ -115,8 +110,7 @@ def copy_regular_tree(source: Path, target: Path, limit_bytes: int,
     Links, FIFOs, sockets and devices are not copied (never followed); neither
     is anything past ``limit_bytes`` in total (:class:`FileTooLarge` is raised,
     the caller removes ``target``). ``skip_name`` leaves out entries by name
-    (e.g. temporary files). Returns the entries that were left out because of
-    their kind, for a report.
+    (e.g. temporary files). Returns the entries left out because of their kind.
     """
     skipped: list[Path] = []
     copied_bytes = 0
