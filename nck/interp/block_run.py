@@ -20,7 +20,8 @@ from nck.interp.evaluator import equal, evaluate
 from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, journal_cell, write_binding
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
-from nck.interp.values import Axis, Cell, convert, to_bool, to_number, to_string
+from nck.interp.values import (GUD_VALUES_MEM_KB, LUD_VALUES_MEM_KB, Axis, Cell, convert, memory_bytes,
+                               stored_bytes, to_bool, to_number, to_string)
 from nck.iso import macros, subprograms
 from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES
@@ -357,6 +358,7 @@ class BlockRun:
                 dims.append(int(size))
             if math.prod(dims) > MAX_ARRAY_ELEMENTS:  # every dimension allowed, the whole too big
                 raise NcAlarmError(17020, name)
+            self._reserve_memory(name, stmt, math.prod(dims), global_data=stmt.scope is not None)
             cell = Cell.create(name, stmt.type, tuple(dims), lower, upper, stmt.string_len)
             if decl.init is not None:
                 values = [self.eval(e) for e in decl.init]
@@ -382,6 +384,26 @@ class BlockRun:
                 self._def_gud(cell)
             else:
                 scope_dict[name] = cell
+
+    def _reserve_memory(self, name: str, stmt: ast.Def, elements: int, global_data: bool) -> None:
+        """Count a new variable against the variable memory: MD28040 for the local (and
+        program-global) variables of every program level, MD18150 for GUD; 12380 beyond it."""
+        interp = self.interp
+        size = memory_bytes(stmt.type, elements, stmt.string_len)
+        if global_data:
+            if name in interp.data.gud:
+                return  # defined once; a second DEF takes no memory
+            used = sum(stored_bytes(value) for value in interp.data.gud.values())
+            limit_kb = interp.machine.md_value("MD18150", default=GUD_VALUES_MEM_KB)
+            what = "MD18150 GUD memory"
+        else:
+            used = sum(frame.lud_bytes for frame in interp._state.frames)
+            limit_kb = interp.machine.md_value("MD28040", default=LUD_VALUES_MEM_KB)
+            what = "MD28040 LUD memory"
+        if used + size > int(limit_kb) * 1024:
+            raise NcAlarmError(12380, f"{what} {int(limit_kb)} KB: {name}")
+        if not global_data:
+            self.frame.lud_bytes += size
 
     def _def_gud(self, cell: Cell) -> None:
         """``DEF NCK/CHAN``: a global user variable kept in NcData.gud (created once)."""

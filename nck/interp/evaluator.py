@@ -359,6 +359,7 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
 
 
 _FORMAT = re.compile(r"%(\.(\d+))?([DFSBEXRC%])")
+SPRINT_MAX_CHARS = 400  # longest SPRINT result (14099 beyond)
 
 
 def sprint(template: str, values: list[Any]) -> str:
@@ -375,6 +376,8 @@ def sprint(template: str, values: list[Any]) -> str:
         digits, code = match.group(2), match.group(3)
         if code == "%":
             return "%"
+        if digits is not None and (len(digits) > 3 or int(digits) > SPRINT_MAX_CHARS):
+            raise NcAlarmError(14099, "SPRINT")  # the result could not fit: refused before it is built
         value = take()
         if code == "D":
             return str(_int(value))
@@ -393,7 +396,7 @@ def sprint(template: str, values: list[Any]) -> str:
     text = _FORMAT.sub(replace, template)
     if remaining:
         raise NcAlarmError(14020, "SPRINT")
-    if len(text) > 400:
+    if len(text) > SPRINT_MAX_CHARS:
         raise NcAlarmError(14099, "SPRINT")
     return text
 

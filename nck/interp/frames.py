@@ -58,6 +58,7 @@ class Frame:
     passes_left: int = 0
     def_open: bool = True
     for_ends: dict[int, Any] = field(default_factory=dict)
+    lud_bytes: int = 0  # variable memory of this level's DEFs (MD28040 budget over the call stack)
     is_main: bool = False
     saved_gcodes: dict[int, str] | None = None  # PROC … SAVE: G groups restored at the return
     saved_pframe: Any = None  # PROC … SAVE: the programmable frame restored at the return

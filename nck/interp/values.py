@@ -19,6 +19,25 @@ INT_MIN = -(2**31)
 INT_MAX = 2**31 - 1
 STRING_MAX = 200
 REAL_MAX = 1.8e308
+LUD_VALUES_MEM_KB = 64  # MD28040 MM_LUD_VALUES_MEM when the machine does not set it (data/md/channel.toml)
+GUD_VALUES_MEM_KB = 12  # MD18150 MM_GUD_VALUES_MEM (data/md/general.toml)
+ELEMENT_BYTES = {"INT": 4, "REAL": 8, "BOOL": 1, "CHAR": 1, "AXIS": 4, "FRAME": 400}
+"""Control memory one element of each type takes (the trainer's estimate; STRING[n] takes n + 1)."""
+
+
+def memory_bytes(dtype: str, elements: int, string_len: int | None = None) -> int:
+    """Bytes of variable memory ``elements`` values of ``dtype`` take (MD28040/MD18150 budget)."""
+    each = (string_len or STRING_MAX) + 1 if dtype == "STRING" else ELEMENT_BYTES.get(dtype, 8)
+    return each * elements
+
+
+def stored_bytes(value: Any) -> int:
+    """Bytes a stored value (a GUD in NcData) takes: strings by their length, numbers as REAL."""
+    if isinstance(value, list):
+        return sum(stored_bytes(item) for item in value)
+    if isinstance(value, str):
+        return len(value) + 1
+    return ELEMENT_BYTES["REAL"]
 
 
 class Axis(str):

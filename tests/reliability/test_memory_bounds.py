@@ -1,0 +1,95 @@
+"""Programs cannot make the simulator allocate without bound (issue 19, "memory bounds").
+
+Variables take memory of the channel: MD28040 MM_LUD_VALUES_MEM, "memory size for local user
+variables" in KB (002 L26506), and MD18150 MM_GUD_VALUES_MEM for global ones (004 L496); a
+program that needs more ends with the control's alarm 12380 (memory capacity reached).
+A formatted SPRINT result longer than a string can hold ends with 14099 before it is built.
+The budgets are measured with tracemalloc (memory, never time).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import tracemalloc
+
+import pytest
+
+from nck.check import check_text
+from nck.headless import run_program
+from nck.interp.sources import MemorySource
+from nck.machine import load_machine
+from nck.ncdata import NcData
+from tests.reliability.harness import run_hostile
+
+PEAK_BYTES = 20_000_000
+
+
+def _peak(action) -> tuple[object, int]:
+    tracemalloc.start()
+    try:
+        result = action()
+        return result, tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+
+
+@pytest.mark.parametrize("template", ["%.999999999F", "%.401F", "%.1000000E", "%." + "9" * 30 + "F"])
+def test_sprint_refuses_a_huge_precision_before_building_it(template: str) -> None:
+    text = f'DEF STRING[200] TXT\nTXT=SPRINT("{template}",1)\nM30\n'
+    result, peak = _peak(lambda: run_hostile(text))
+    assert [a.number for a in result.alarms][:1] == [14099]
+    assert peak < PEAK_BYTES
+
+
+def test_sprint_within_the_bound_still_formats() -> None:
+    result = run_hostile('DEF STRING[200] TXT\nTXT=SPRINT("%.3F",1.23456)\nIF TXT<>"1.235" GOTOF BAD\nM30\n'
+                         'BAD: SETAL(65000)\nM30\n')
+    assert result.status == "ended" and result.alarms == []
+
+
+def test_many_large_arrays_end_with_12380_without_allocating() -> None:
+    text = "\n".join(f"DEF REAL ARR{i}[1000,1000]" for i in range(300)) + "\nM30\n"
+    result, peak = _peak(lambda: run_hostile(text))
+    assert [a.number for a in result.alarms] == [12380]
+    assert "MD28040" in result.alarms[0].params[-1]
+    assert peak < PEAK_BYTES
+
+
+def _run(text: str, lud_kb: int | None = None, subprograms: dict[str, str] | None = None):
+    machine = load_machine()
+    if lud_kb is not None:
+        machine = dataclasses.replace(machine, md={**machine.md, "MD28040": lud_kb})
+    return run_program(machine, MemorySource(subprograms or {}), NcData(), "P.MPF", text=text,
+                       timeout_s=60.0)
+
+
+def test_the_budget_is_md28040_in_kilobytes() -> None:
+    # 64 KB = 65,536 bytes = 8,192 REAL values of 8 bytes
+    assert _run("DEF REAL VALS[8192]\nM30\n").alarms == []
+    assert [a.number for a in _run("DEF REAL VALS[8192]\nDEF INT CNT\nM30\n").alarms] == [12380]
+    assert _run("DEF REAL VALS[8192]\nDEF REAL MORE[8192]\nM30\n", lud_kb=128).alarms == []
+    # STRING[n] takes n + 1 bytes: 2 x 1000 STRING[31] = 64,000 bytes fit, a third array does not
+    assert _run("DEF STRING[31] TXA[1000]\nDEF STRING[31] TXB[1000]\nM30\n").alarms == []
+    assert [a.number for a in _run("DEF STRING[31] TXA[1000]\nDEF STRING[31] TXB[1000]\n"
+                                   "DEF STRING[31] TXC[100]\nM30\n").alarms] == [12380]
+
+
+def test_a_subprogram_gives_its_memory_back_at_the_return() -> None:
+    sub = {"BIG.SPF": "PROC BIG\nDEF REAL VALS[6000]\nM17\n"}
+    assert _run("DEF INT CNT\nFOR CNT=1 TO 20\nBIG\nENDFOR\nM30\n", subprograms=sub).alarms == []
+    nested = {"BIG.SPF": "PROC BIG\nDEF REAL VALS[6000]\nM17\n"}
+    main = "DEF REAL MINE[3000]\nBIG\nM30\n"  # 24,000 + 48,000 bytes > 64 KB while BIG runs
+    assert [a.number for a in _run(main, subprograms=nested).alarms] == [12380]
+
+
+def test_global_user_data_count_against_md18150() -> None:
+    # MD18150 = 12 KB (data/md/general.toml): 1,536 REAL values
+    assert _run("DEF NCK REAL GLOB1[1500]\nM30\n").alarms == []
+    assert [a.number for a in _run("DEF NCK REAL GLOB1[1500]\nDEF NCK REAL GLOB2[100]\nM30\n").alarms] == [12380]
+
+
+def test_the_editor_check_of_the_hostile_program_stays_small() -> None:
+    text = 'DEF STRING[200] TXT\nTXT=SPRINT("%.999999999F",1)\nM30\n'
+    found, peak = _peak(lambda: check_text("HOSTILE.MPF", text))
+    assert [a.number for a in found] == [14099]
+    assert peak < PEAK_BYTES
