@@ -25,10 +25,14 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from nck.atomic import atomic_write_text
+from nck.regular_files import read_regular_bytes
+from nck.storage import MAX_IMPORT_BYTES
 
 FORMAT_VERSION = 1
 AUTOSAVE_PERIOD_S = 3.0
 """How often the editor writes its unsaved text into the journal."""
+JOURNAL_LIMIT_BYTES = 8 * MAX_IMPORT_BYTES
+"""Largest journal file read: the biggest program, escaped as JSON text."""
 
 
 def text_hash(text: str) -> str:
@@ -92,14 +96,12 @@ class EditorJournal:
         return sorted((e for e in found if e is not None), key=lambda e: e.program)
 
     def _read(self, path: Path) -> JournalEntry | None:
-        try:
-            raw = path.read_text(encoding="utf-8")
-        except FileNotFoundError:
-            return None
+        try:  # a regular file only: a FIFO would block, a link to /dev/zero never end
+            raw = read_regular_bytes(path, JOURNAL_LIMIT_BYTES)
         except OSError:
             return None
         try:
-            record = json.loads(raw)
+            record = json.loads(raw.decode("utf-8"))
             if record.get("format_version") != FORMAT_VERSION:
                 raise ValueError("unknown journal format")
             return JournalEntry(
@@ -108,7 +110,7 @@ class EditorJournal:
                 base_sha256=str(record.get("base_sha256", "")),
                 path=path,
             )
-        except (ValueError, KeyError, TypeError, AttributeError):
+        except (ValueError, KeyError, TypeError, AttributeError, RecursionError):
             try:
                 path.replace(path.with_name(path.name + ".bad"))
             except OSError:
