@@ -74,3 +74,24 @@ def test_digest_828d_1_rank_14_programmed_working_area_limit() -> None:
     assert nck.run_until(lambda k: k.situation.channel == "reset", 30.0)
     assert alarms(nck) == []
     assert nck.positions_mcs()["X"] == pytest.approx(150.0, abs=1e-3)
+
+
+def lowest_path_speed_near_x40(program: str) -> float:
+    """The lowest X setpoint speed (mm/min) while X passes 39..41, sampled every IPO cycle."""
+    nck = start({"P.MPF": program})
+    xs = []
+    for _ in range(5000):
+        nck.step(1)
+        xs.append({a.name: a.setpoint_mcs for a in nck.status().axes}["X"])
+        if nck.situation.channel == "reset":
+            break
+    steps = [(a, b - a) for a, b in zip(xs, xs[1:]) if 39.0 < a < 41.0]
+    return min(step for _x, step in steps) / nck.ipo_cycle_s * 60.0
+
+
+def test_digest_828d_1_rank_07_soft_in_a_g64_sequence_stops_between_the_blocks() -> None:
+    """Digest 828d-1 rank 7: in G64 a collinear transition keeps the path velocity (F3000),
+    but a change between BRISK and SOFT makes the axis stop between the two blocks (002
+    L4950-4956, L4969)."""
+    assert lowest_path_speed_near_x40("N10 G64 G1 X40 F3000\nN20 X80\nN30 M30") == pytest.approx(3000.0)
+    assert lowest_path_speed_near_x40("N10 G64 G1 X40 F3000\nN20 SOFT X80\nN30 M30") < 0.01 * 3000.0
