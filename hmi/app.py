@@ -58,6 +58,7 @@ from hmi.messages import CommandRejected, NckStatusChanged
 from hmi.startup import build_session
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.theme import SINUMERIK_THEME
+from screens.parameter_tables import ConfirmDialog
 
 
 RETAINED_SAVE_PERIOD_S = 5.0
@@ -192,10 +193,22 @@ class HmiApp(MachineControlPanel, App):
         self.nc_session: Any = None  # hmi.startup.NcDataSession when running on a data directory
         self._program_cache: dict[str, ProgramLines] = {}
         self._held_updates = 0
+        self.area_screens: list[AreaBase] = []
+        """The area screens built so far (each area's screen lives as long as the app)."""
         self.freeze_gc_at_start = False
         """Set by :func:`main`: call :func:`freeze_startup_objects` after the first frame."""
         for area in AREAS:
-            self.add_mode(area.id, area_screen_factory(area))
+            self.add_mode(area.id, self._remembered(area_screen_factory(area)))
+
+    def _remembered(self, factory: Callable[[], Screen]) -> Callable[[], Screen]:
+        """Wrap an area factory so that the app knows every area screen built (for quitting)."""
+        def build() -> Screen:
+            screen = factory()
+            if isinstance(screen, AreaBase):
+                self.area_screens.append(screen)
+            return screen
+
+        return build
 
     def get_driver_class(self) -> type[Driver]:
         """Textual's driver for this platform; on a Linux/macOS terminal the HMI's key reader."""
@@ -469,8 +482,44 @@ class HmiApp(MachineControlPanel, App):
             except (NotImplementedError, RuntimeError, ValueError):  # no signals here (Windows, thread)
                 return
 
+    def quit_concerns(self) -> list[str]:
+        """What quitting now would interrupt or leave unsaved (empty: quit without asking)."""
+        concerns = []
+        status = self.latest_status
+        if status is not None and status.channel.channel_state in ("active", "interrupted"):
+            program = status.channel.selected_program or "the MDA program"
+            concerns.append(f"{program} is {'running' if status.channel.channel_state == 'active' else 'interrupted'}")
+        concerns += [work for work in (screen.unsaved_work() for screen in self.area_screens) if work]
+        return concerns
+
     def action_quit_hmi(self) -> None:
-        """Ctrl+Q: save NC data, then leave."""
+        """Ctrl+Q: leave; with a program running or interrupted, or unsaved text, ask first."""
+        concerns = self.quit_concerns() if self.is_running else []
+        if not concerns:
+            self.quit_now()
+            return
+
+        def answered(yes: bool | None) -> None:
+            if yes:
+                self.quit_now()
+
+        lines = [concern[:1].upper() + concern[1:] + "." for concern in concerns]
+        self.push_screen(ConfirmDialog("\n".join(["Quit the HMI?", *lines, "Unsaved program text is kept"
+                                                   " in the editor journal and offered at the next start."])),
+                         answered)
+
+    def quit_now(self) -> None:
+        """Keep unsaved editor text in the journal, save NC data, then leave.
+
+        When the journal cannot be written the HMI stays open and says why (the
+        text would be lost otherwise).
+        """
+        for screen in self.area_screens:
+            try:
+                screen.keep_before_quit()
+            except OSError as exc:
+                self.set_hint(f"Not quit: unsaved text could not be kept in the journal: {exc}")
+                return
         if self._on_quit is not None:
             try:
                 self._on_quit()

@@ -188,6 +188,14 @@ class AreaBase(BindingsInPlace):
         """A mouse click on a softkey does what its function key does."""
         self.press_softkey(message.slot_id)
 
+    # -- quitting --------------------------------------------------------------------------
+    def unsaved_work(self) -> str:
+        """What quitting the HMI now would leave unsaved in this area (``""``: nothing; override)."""
+        return ""
+
+    def keep_before_quit(self) -> None:
+        """Write what must survive quitting, while the area still exists (override; raise ``OSError``)."""
+
     # -- status ----------------------------------------------------------------------------
     def show_status(self, status: NckStatus | None) -> None:
         """Take a new snapshot: header, content (:meth:`update_status`) and softkeys."""

@@ -311,13 +311,19 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             self.journal_now()
             self.app.call_later(self._ask_after_leave)
 
-    def on_unmount(self) -> None:
-        """The app is closing (Ctrl+Q): unsaved text goes into the journal, offered next time."""
+    def unsaved_work(self) -> str:
+        """What quitting now would leave unsaved: the program with changes (else ``""``)."""
+        return f"unsaved changes in {self.program}" if self.is_modified() else ""
+
+    def keep_before_quit(self) -> None:
+        """The app is about to close (Ctrl+Q): unsaved text goes into the journal, offered next time.
+
+        Runs while the editor still exists; an ``OSError`` of the write reaches the app,
+        which then stays open and says why.
+        """
         if self.program is not None and not self.binary:
-            try:
-                self.journal_now()
-            except Exception:  # never block quitting
-                pass
+            self._journaled_hash = ""
+            self.write_journal()
 
     def _ask_after_leave(self) -> None:
         if self.app.current_mode == self.AREA_ID or not self.is_modified():
@@ -327,6 +333,13 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
     # -- journal -------------------------------------------------------------------------------
     def autosave(self) -> None:
         """Timer: write unsaved text into the journal if it changed since the last time."""
+        try:
+            self.write_journal()
+        except OSError as exc:
+            self.say(f"Journal could not be written: {exc}")
+
+    def write_journal(self) -> None:
+        """Write unsaved text into the journal if it changed since the last write (``OSError`` if it cannot)."""
         if self.program is None or self.binary or not self._dirty:
             return
         text = self.editor.text
@@ -337,11 +350,8 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
                 self._journaled_hash = ""
             return
         if digest != self._journaled_hash:
-            try:
-                self.journal.write(self.program, text, text_hash(self.saved_text))
-                self._journaled_hash = digest
-            except OSError as exc:
-                self.say(f"Journal could not be written: {exc}")
+            self.journal.write(self.program, text, text_hash(self.saved_text))
+            self._journaled_hash = digest
 
     def journal_now(self) -> None:
         """Write the journal at once (before leaving, closing, crashing risks)."""
