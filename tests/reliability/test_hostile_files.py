@@ -8,6 +8,7 @@ retained file restored from its backup: alarm 4065 naming the file.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -40,3 +41,24 @@ def test_every_hostile_file_gives_4065_and_the_backup(template, hostile, tmp_pat
 @pytest.mark.parametrize("hostile", _cases())
 def test_the_hostile_corpus_through_every_door(template, hostile, door, tmp_path) -> None:
     try_door(template, hostile, door, tmp_path)
+
+
+@pytest.mark.parametrize("hostile", _cases(("FIFO", "link to /dev/zero", "gud nested 100000 deep", "directory")))
+def test_a_hostile_backup_behind_a_bad_file_gives_4060(template, hostile, tmp_path) -> None:
+    """Both generations unusable: standard values with 4060, both kept aside (never a hang)."""
+    import json
+    import shutil
+
+    from nck.atomic import backup_path
+    from nck.persistence import Session
+
+    data_dir = tmp_path / "data"
+    shutil.copytree(template, data_dir, symlinks=True)
+    main = data_dir / "retained" / f"{hostile.section}.json"
+    document = json.loads(main.read_text())
+    main.write_text("damaged")
+    hostile.plant(backup_path(main), document, tmp_path / "victim.txt")
+    session = Session.open(data_dir, install_samples=False)
+    assert [a.number for a in session.startup_alarms] == [4060]
+    assert (data_dir / "retained" / f"{hostile.section}.json.bad-1").exists()
+    assert os.path.lexists(data_dir / "retained" / f"{hostile.section}.json.bak.bad-1")
