@@ -487,14 +487,44 @@ class PathBuilder:
         full = {"X": point[0], "Y": point[1], "Z": point[2]}
         full.update(context["end_other"])
         bcs = transform.apply(full)
-        coupled = _couples_axes(transform)
+        kept = self._kept_axes(context) if keep else ()
         out: dict[str, float] = {}
         for axis in self.path_axes:
             value = bcs.get(axis, 0.0) + tool.get(axis, 0.0)
-            if keep and axis not in context["programmed"] and (axis not in self.geo_axes or not coupled):
+            if axis in kept:
                 value = start_mcs.get(axis, value)
             out[axis] = _r(value)
         return out
+
+    def _kept_axes(self, context: Mapping[str, Any]) -> tuple[str, ...]:
+        """Path axes a block leaves where they stand: not programmed, not coupled by a rotation."""
+        coupled = _couples_axes(context["transform"])
+        return tuple(a for a in self.path_axes
+                     if a not in context["programmed"] and (a not in self.geo_axes or not coupled))
+
+    def _report_actual(self, end_wcs: dict[str, float], end_mcs: Mapping[str, float],
+                       context: Mapping[str, Any]) -> None:
+        """Kept axes report where they stand in the active system, not their old programmed value.
+
+        After a zero-offset change an axis the block does not program stays in the machine, so
+        its WCS position is the machine position seen through the new frame (what the actual
+        value display shows); its programmed position (for incremental moves, SD 42440) is kept.
+        Differences below 1e-6 are floating noise of the round trip and leave the value alone.
+        """
+        transform: Transform = context["transform"]
+        tool: Mapping[str, float] = context["tool"]
+        modal, units = SimpleNamespace(gcodes=context["gcodes"]), context["units"]
+        for axis in self._kept_axes(context):
+            bcs = float(end_mcs.get(axis, 0.0)) - tool.get(axis, 0.0)
+            if axis in self.geo_axes:
+                i = self.geo_axes.index(axis)
+                wcs_mm = (bcs - transform.matrix[i, 3]) / transform.matrix[i, i]
+            else:
+                factor, offset = transform.axial.get(axis, (1.0, 0.0))
+                wcs_mm = (bcs - offset) / factor
+            actual = _r(self.from_mm(axis, wcs_mm, modal, units))
+            if abs(actual - end_wcs.get(axis, actual)) > 1e-6:
+                end_wcs[axis] = actual
 
     def _wcs_out(self, point: tuple[float, float, float], context: Mapping[str, Any]) -> dict[str, float]:
         modal, units = SimpleNamespace(gcodes=context["gcodes"]), context["units"]
@@ -529,6 +559,9 @@ class PathBuilder:
             turns = element.turns
             if kind not in ARC_KINDS:
                 kind = "G2" if element.clockwise_in(plane(context["plane"], self.geo_axes)) else "G3"
+        end_wcs = self._wcs_out(element.end, context)
+        if keep and not inserted:
+            self._report_actual(end_wcs, end_mcs, context)
         length = element.length() if isinstance(element, Arc) else math.dist(element.start, element.end)
         feed = context["feed"]
         rapid = kind == "G0"
@@ -542,7 +575,7 @@ class PathBuilder:
             kind=kind,
             source=context["source"],
             plane=context["plane"],
-            end_wcs=self._wcs_out(element.end, context),
+            end_wcs=end_wcs,
             end_mcs=end_mcs,
             start_mcs=dict(start_mcs),
             center_wcs=center_wcs,

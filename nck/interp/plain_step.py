@@ -117,12 +117,27 @@ def _move(interp: Interpreter, setup: Setup, source: canon.Source, kind: int,
     rapid = kind == 0
     return canon.Motion(
         kind="G1" if kind else "G0", source=source, plane=gcodes.get(6, "G17"),
-        end_wcs=dict(modal.position_wcs), end_mcs=end_mcs, start_mcs=start_mcs,
+        end_wcs=_reported_wcs(interp, setup, texts, end, end_mcs), end_mcs=end_mcs, start_mcs=start_mcs,
         feed=None if rapid else modal.feed,
         feed_mm_min=None if rapid else modal.feed * setup.feed_mm,
         exact_stop=gcodes.get(10, "G60") == "G60", exact_stop_window=gcodes.get(12, "G601"),
         gcodes=shared,
     )
+
+
+def _reported_wcs(interp: Interpreter, setup: Setup, texts: tuple[str | None, str | None, str | None],
+                  end_mm: dict[str, float], end_mcs: dict[str, float]) -> dict[str, float]:
+    """The block's WCS end as reported: an axis it does not program stands where it is, seen
+    through the active frame (the path builder's ``_report_actual``)."""
+    reported = end_mm
+    for i, axis in enumerate(GEOMETRY):
+        if texts[i] is None and axis in end_mcs:
+            actual_mm = (end_mcs[axis] - setup.tool[i] - setup.offset[i]) / setup.scale[i]
+            if abs(actual_mm - end_mm[axis]) > 1e-6:
+                if reported is end_mm:
+                    reported = dict(end_mm)
+                reported[axis] = actual_mm
+    return dict(interp.modal.position_wcs) if reported is end_mm else _wcs_view(interp, setup, reported)
 
 
 def _wcs_view(interp: Interpreter, setup: Setup, wcs_mm: dict[str, float]) -> dict[str, float]:

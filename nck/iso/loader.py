@@ -51,7 +51,8 @@ def iso_lines(name: str, text: str, dialect: str,
                                                              guess_n(raw))))
                 continue
             try:
-                lines.append(Line(number, raw or block_text, parse_block(block_text, number)))
+                lines.append(Line(number, raw or block_text,
+                                  parse_block(block_text, number, inserted=not raw)))  # start block
             except NcAlarmError as alarm:
                 lines.append(Line(number, raw, None, located(alarm, name, number, guess_n(raw))))
     return lines

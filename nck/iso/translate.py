@@ -159,7 +159,7 @@ def translate(text: str, dialect: str = "iso-m", settings: IsoSettings | None = 
         first = 1 if out and out[0].blocks[:1] == [cycles.DECLARATION] else 0
         start = turning.START_BLOCK if dialect == "iso-t" else "G0 G64 G291"  # 000 L5005, L5019
         start = f"{start} {settings.start_unit}".strip()
-        out.insert(first, IsoLine(1, "", [start]))
+        out.insert(first, IsoLine(1, "", [start]))  # NC-inserted: G291 may share it
     return out
 
 
@@ -217,6 +217,9 @@ def _fmt(value: float) -> str:
 
 
 def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) -> list[str]:
+    switches = [w for w in words if w.letter == "G" and _g_name(w) in ("G290", "G291")]
+    if switches and any(w.letter != "N" for w in words if w not in switches) or len(switches) > 1:
+        raise NcAlarmError(switching.ALARM_SYNTAX, f"{_g_name(switches[0])} not alone in block")  # 003 L393
     macro = iso_macros.macro_block(words, modal, settings)  # G65/G66/G67/G05
     if macro is not None:
         return macro

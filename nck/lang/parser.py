@@ -21,6 +21,9 @@ from nck.lang.gcodes import named_gcodes, normalize
 from nck.lang.lexer import ADDR, EOL, NAME, NUMBER, OP, split_comment, tokenize
 
 
+LANGUAGE_SWITCHES = ("G290", "G291")  # Siemens / ISO dialect: alone in their block (003 L393)
+
+
 class _Parser(DeclarationParser):
     """Recursive-descent parser of the statements of one block."""
 
@@ -208,10 +211,14 @@ class _Parser(DeclarationParser):
         raise syntax_error(tok)
 
 
-def parse_block(text: str, line: int = 1) -> ast.Block:
-    """Parse one source line into a Block; raise NcAlarmError on any error."""
+def parse_block(text: str, line: int = 1, inserted: bool = False) -> ast.Block:
+    """Parse one source line into a Block; raise NcAlarmError on any error.
+
+    ``inserted``: a block the NC builds itself (the ISO start block), where the language
+    switch G291 may share the block with the reset G codes.
+    """
     try:
-        return _parse_block(text, line)
+        return _parse_block(text, line, inserted)
     except NcAlarmError:
         raise
     except RecursionError:
@@ -220,7 +227,7 @@ def parse_block(text: str, line: int = 1) -> ast.Block:
         raise NcAlarmError(12080, str(exc)[:20], line=line) from None
 
 
-def _parse_block(text: str, line: int) -> ast.Block:
+def _parse_block(text: str, line: int, inserted: bool = False) -> ast.Block:
     stripped = text.strip()
     if stripped.startswith("%"):
         # program header (%MPF123, %_N_PART_MPF): not a block
@@ -261,7 +268,7 @@ def _parse_block(text: str, line: int) -> ast.Block:
     stmts: list[ast.Statement] = []
     while not parser.at_end():
         parser.statement(stmts)
-    _check_single_statements(stmts)
+    _check_single_statements(stmts, inserted)
     return ast.Block(
         line=line,
         text=text,
@@ -274,11 +281,14 @@ def _parse_block(text: str, line: int) -> ast.Block:
     )
 
 
-def _check_single_statements(stmts: list[ast.Statement]) -> None:
-    """Control structures, DEF, PROC and EXTERN must stand alone in their block."""
+def _check_single_statements(stmts: list[ast.Statement], inserted: bool = False) -> None:
+    """Control structures, DEF, PROC and EXTERN must stand alone in their block, and so must
+    the language switches G290/G291 (ISO dialects manual: "programmed alone in an NC block")."""
     if len(stmts) <= 1:
         return
     for stmt in stmts:
         if isinstance(stmt, (ast.Def, ast.Proc, ast.Extern, ast.Control, ast.SectionRepeat)):
             label = stmt.kind if isinstance(stmt, ast.Control) else type(stmt).__name__.upper()
             raise NcAlarmError(12080, label)
+        if isinstance(stmt, ast.GWord) and stmt.code in LANGUAGE_SWITCHES and not inserted:
+            raise NcAlarmError(12080, stmt.code)

@@ -267,7 +267,10 @@ def test_sd42440_0_offset_change_not_travelled_in_g91(change):
 def test_sd42440_1_keeps_the_programmed_point():
     text = "G0 X0 Y0 Z20.\nG52 X5. Y5. Z1.\nG91 G1 X1. F100\nM30\n"
     result = _run_with_md(text, {}, setting_data={"SD42440": True})
-    assert ends(result)[-1][1] == {"X": 1.0, "Y": 0.0, "Z": 20.0}
+    # X: the increment from the programmed point 0 (the G52 shift is travelled, 002 L26937-26942);
+    # Y and Z are not programmed and stay in the machine (0, 20): in the G52 system -5 and 19.
+    assert ends(result)[-1][1] == {"X": 1.0, "Y": -5.0, "Z": 19.0}
+    assert ends(result, "mcs")[-1][1] == {"X": 6.0, "Y": 0.0, "Z": 20.0}
 
 
 def test_g58_g59_select_settable_offsets_5_and_6():
@@ -323,3 +326,30 @@ def test_drilling_cycle_under_g16_is_61814():
     assert result.status == "alarm" and result.alarms[0].number == 61814
     result = run_iso("G16 X10. Y45.\nG15\nG81 X10. Y45. Z-5. R2. F100\nG80\nM30\n")
     assert result.status == "ended", result.alarms
+
+
+@pytest.mark.parametrize("sd42440", [True, False])
+def test_axes_not_programmed_after_an_offset_change_report_their_actual_position(sd42440):
+    # G55 = (5, 7, -3) written by G10 L2 P2; after G54 (zero) G0 X10 Y10 Z20 a G55 block with
+    # only X moves X alone: Y and Z stay at machine 10 and 20, which in the G55 system is
+    # 10 - 7 = 3 and 20 + 3 = 23 — that is what the actual value display shows (issue 20).
+    # SD 42440 only decides whether an incremental move travels the change (002 L26937-26942).
+    text = "G10 L2 P2 X5. Y7. Z-3.\nG54 G00 X10. Y10. Z20.\nG55\nG00 X5.\nM30\n"
+    result = _run_with_md(text, {}, setting_data={"SD42440": sd42440})
+    assert ends(result)[-1][1] == {"X": 5.0, "Y": 3.0, "Z": 23.0}
+    assert ends(result, "mcs")[-1][1] == {"X": 10.0, "Y": 10.0, "Z": 20.0}
+
+
+def test_axes_not_programmed_after_a_frame_change_in_siemens_mode():
+    # The same in Siemens mode, with the plain block path: $P_UIFR[2] = G55 (5, 7, -3).
+    text = ("$P_UIFR[2]=CTRANS(X,5,Y,7,Z,-3)\nG54 G0 X10 Y10 Z20\nG55\nG0 X5\n"
+            "G1 Y2 F100\nG91 G1 Z1\nM30\n")
+    result = run_iso(text, dialect="siemens")
+    assert ends(result)[1:] == [
+        (4, {"X": 5.0, "Y": 3.0, "Z": 23.0}),
+        (5, {"X": 5.0, "Y": 2.0, "Z": 23.0}),
+        # SD 42440 = 1 (default): the increment starts from the programmed Z 20 and the
+        # offset change is travelled: WCS 21, machine 21 - 3 = 18 (002 L26937-26942).
+        (6, {"X": 5.0, "Y": 2.0, "Z": 21.0}),
+    ]
+    assert ends(result, "mcs")[-1][1] == {"X": 10.0, "Y": 9.0, "Z": 18.0}

@@ -42,8 +42,12 @@ _PLANES = {"G17": ("X", "Y", "Z"), "G18": ("Z", "X", "Y"), "G19": ("Y", "Z", "X"
 class _Generator:
     """Builds one random program and tracks which WCS coordinates are known."""
 
-    def __init__(self, seed: int) -> None:
+    def __init__(self, seed: int, offset_travel: bool = False) -> None:
         self.rng = random.Random(seed)
+        # SD 42440 = 1 (the default): an incremental move would travel an offset change, which
+        # rs274 never does; so after a change an absolute move of some axes (the others must
+        # report where they stand in the new system), then of all axes, before anything else
+        self.offset_travel = offset_travel
         self.inch = self.rng.random() < 0.2
         self.scale = 1 / 25.4 if self.inch else 1.0
         self.digits = 4 if self.inch else 3
@@ -161,7 +165,12 @@ class _Generator:
         else:
             self.lines.append(f"G{self.rng.randint(54, 59)}")
         self.forget()
-        if self.rng.random() < 0.5:
+        if self.offset_travel:
+            self.linear(incremental=False)
+            self.lines.append(f"G00 X{self.n(self.rng.uniform(-50, 50))} Y{self.n(self.rng.uniform(-50, 50))} "
+                              f"Z{self.n(self.rng.uniform(20, 40))}")
+            self.pos = {axis: None for axis in self.pos}
+        elif self.rng.random() < 0.5:
             self.linear(incremental=True)  # SD 42440 = 0: the offset change is not travelled
 
     # ---------------------------------------------------------------- drilling cycles
@@ -204,9 +213,9 @@ class _Generator:
         return "\n".join(self.lines) + "\n"
 
 
-def random_program(seed: int) -> str:
+def random_program(seed: int, offset_travel: bool = False) -> str:
     """A random program in the common subset (see module docstring)."""
-    return _Generator(seed).build()
+    return _Generator(seed, offset_travel).build()
 
 
 def rs274_points(text: str, tmp_path) -> tuple[list[tuple[float, ...]], float]:
@@ -260,10 +269,10 @@ def _run_rs274(path) -> str:
             fcntl.flock(lock, fcntl.LOCK_UN)
 
 
-def our_points(text: str) -> list[tuple[float, ...]]:
-    """The same points from this simulator (ISO M, SD 42440 = 0), in mm."""
+def our_points(text: str, sd42440: bool = False) -> list[tuple[float, ...]]:
+    """The same points from this simulator (ISO M, SD 42440 = 0 unless given), in mm."""
     data = NcData()
-    data.setting_data["SD42440"] = False
+    data.setting_data["SD42440"] = sd42440
     result = interpret_only(load_machine(None), MemorySource(), data, "TEST.MPF", text=text,
                             timeout_s=100_000.0, max_blocks=100_000, dialect="iso-m")
     assert result.status == "ended", (result.alarms, text)
@@ -308,6 +317,20 @@ def test_block_end_points_agree_with_rs274(seed, tmp_path):
     ours = our_points(text)
     theirs, ours = _dedupe(theirs), _dedupe(ours)
     # rs274 prints 4 decimals: 0.1 µm in mm, 2.54 µm in inch
+    tol_mm = TOL_MM if factor == 1.0 else 0.00006 * factor
+    for index, (a, b) in enumerate(zip(theirs, ours)):
+        assert _same(a, b, tol_mm), f"point {index}: rs274 {a} ours {b}\n{text}"
+    assert len(theirs) == len(ours), text
+
+
+@pytest.mark.parametrize("seed", range(PROGRAMS // 2))
+def test_axes_not_programmed_after_an_offset_change_agree_with_rs274(seed, tmp_path):
+    """With SD 42440 = 1 an axis a block leaves alone reports its actual position in the new
+    system, as rs274 does (the change is never travelled by an incremental move here)."""
+    text = random_program(1000 + seed, offset_travel=True)
+    theirs, factor = rs274_points(text, tmp_path)
+    ours = our_points(text, sd42440=True)
+    theirs, ours = _dedupe(theirs), _dedupe(ours)
     tol_mm = TOL_MM if factor == 1.0 else 0.00006 * factor
     for index, (a, b) in enumerate(zip(theirs, ours)):
         assert _same(a, b, tol_mm), f"point {index}: rs274 {a} ours {b}\n{text}"

@@ -119,3 +119,25 @@ def test_p_extgg_shows_iso_values_in_both_modes():
     assert r[30] == 2 and r[40] == 2  # G94 G50 G69 G290; G91 over the switch
     assert r[41] == 1  # G68
     assert len(result.segments) == 1  # the IF saw G291 (value 2) and jumped over X1.
+
+
+@pytest.mark.parametrize("text, line, dialect", [
+    ("N5 G291\nN10 G290 G0 X5\nM30\n", 2, "iso-m"),      # ISO mode: G290 with a motion
+    ("N5 G291\nN10 G00 X1. G290\nM30\n", 2, "iso-m"),    # ISO mode: G290 after the words
+    ("N5 G291 G0 X10\nM30\n", 1, "siemens"),             # Siemens mode: G291 with a motion
+    ("N5 M3 G291\nM30\n", 1, "siemens"),                 # Siemens mode: G291 with an M function
+])
+def test_g290_g291_must_stand_alone_in_their_block(text, line, dialect):
+    # 003 L393: "G290 and G291 must be programmed alone in an NC block." -> syntax error 12080
+    result = run_iso(text, dialect=dialect)
+    assert result.status == "alarm"
+    assert (result.alarms[0].number, result.alarms[0].line) == (12080, line)
+    assert not result.segments
+
+
+def test_g290_g291_alone_with_a_block_number_and_comment_switch():
+    # 003 L389-393: alone in the block (a block number and a comment are not instructions).
+    result = run_iso("N5 G291 ; to ISO\nN10 G00 X1.\nN15 G290 ; back\nN20 G0 X2\nM30\n",
+                     dialect="siemens")
+    assert result.status == "ended", result.alarms
+    assert [p["X"] for _line, p in ends(result)] == [1.0, 2.0]

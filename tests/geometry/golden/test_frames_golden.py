@@ -110,9 +110,10 @@ def test_offset_is_taken_up_when_the_axis_is_next_programmed() -> None:
     # N40: Z programmed: 5 + 100.
     assert r.end_mcs(40) == approx({"X": 10.0, "Y": 10.0, "Z": 105.0})
     # N50: G54 selected with G91 X1: X travels the increment plus the new offset
-    # (SD42440 = 1); Y is not programmed and keeps its position.
+    # (SD42440 = 1, 002 L26937-26942); Y is not programmed and keeps its machine position,
+    # so in the new system it stands at 10 - 50 = -40 (issue 20: the actual position is reported).
     assert r.end_mcs(50) == approx({"X": 111.0, "Y": 10.0, "Z": 105.0})
-    assert r.end_wcs(50) == approx({"X": 11.0, "Y": 10.0, "Z": 5.0})
+    assert r.end_wcs(50) == approx({"X": 11.0, "Y": -40.0, "Z": 5.0})
 
 
 def test_missing_edge_of_a_known_tool_is_17180() -> None:
