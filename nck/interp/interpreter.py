@@ -22,7 +22,8 @@ modal state take a fast path with the same result (:mod:`nck.interp.plain_step`;
 :attr:`fast_path` switches both off.
 
 Program-control hooks for the channel: :attr:`skip_levels` (active ``/n``
-levels), :attr:`position_source` (actual positions for ``$AA_IM``),
+levels), :attr:`position_source` (actual positions for ``$AA_IM``), :attr:`access_level`
+(the protection level setting-data writes are checked against),
 :attr:`flags` (``search``, ``test``, ``dry_run`` for ``$P_…``) and
 :meth:`block_search` (block search with calculation).
 
@@ -41,6 +42,8 @@ from typing import Any, Callable, Mapping
 
 from nck import canon
 from nck.errors import NcAlarmError
+from nck.access import LEVEL_FEWEST_RIGHTS
+from nck.interp import data_writes
 from nck.interp.api import BlockResult, ProgramSource
 from nck.interp.block_run import (  # noqa: F401 - re-exported language limits
     MAX_PASSES, MAX_PROGRAM_LEVELS, PROGRAM_CONTROL_M, BlockRun,
@@ -106,6 +109,8 @@ class Interpreter:
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
         self.position_source: Callable[[str], float] | None = None
+        # protection level the program runs with (setting-data writes); the kernel installs its own
+        self.access_level: Callable[[], int] = lambda: LEVEL_FEWEST_RIGHTS
         self._axis_names = frozenset(a.name for a in machine.axes)
         self._state = _State(modal=ModalState.initial(machine, self.table))
         self._journal: list[tuple[str, Any, Any]] = []
@@ -487,6 +492,11 @@ class Interpreter:
         else:
             self._journal.append(("tool", (tool, edge, param), self.data.tools[key].params.get(param)))
         self.data.tools[key].params[param] = value
+
+    def write_setting_data(self, name: str, indices: tuple[Any, ...], value: Any) -> None:
+        """Write setting datum ``$<name>`` at the current protection level (journaled)."""
+        data_writes.write_setting_data(self, "$" + name, indices, value,
+                                       lambda undo: self._journal.append(("undo", undo, None)))
 
     def write_gud(self, name: str, value: Any) -> None:
         """Write a global user variable (journaled)."""

@@ -74,6 +74,9 @@ class SysContext(Protocol):
     def flag(self, name: str) -> bool:
         """Program-control flags: ``search``, ``test``, ``dry_run``."""
 
+    def write_setting_data(self, name: str, indices: tuple[Any, ...], value: Any) -> None:
+        """Write a setting datum (``SC_WEAR_SIGN``) at the current protection level."""
+
     def write_tool(self, tool: int, edge: int, param: int, value: float) -> None:
         """Write one tool edge parameter (journaled)."""
 
@@ -153,7 +156,7 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
 
 
 def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> None:
-    """Write system variable ``name`` (only tool data is writable for now)."""
+    """Write system variable ``name``: frames, tool data, setting data, ISO internals."""
     if name in frame_vars.NAMES:  # $P_UIFR[n,ax,TR], $P_PFRAME[ax,RT], …
         frame_vars.write(ctx, name, indices, value)
         return
@@ -175,7 +178,11 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
         number = float(to_number(value, name))
         ctx.write_tool(tool, edge, param, number)
         return
-    if _MD.match(name) or name.startswith("$P_") or name.startswith("$AA_"):
+    md = _MD.match(name)
+    if md and md.group(1) == "S":  # $SC_WEAR_SIGN = 1: setting data, at the program's level
+        ctx.write_setting_data(name.lstrip("$"), indices, value)
+        return
+    if md or name.startswith("$P_") or name.startswith("$AA_"):
         raise NcAlarmError(17070, name)
     raise NcAlarmError(12550, name)
 

@@ -1,0 +1,70 @@
+"""Part-program writes of setting data (``$SN_…``, ``$SC_…``, ``$SA_…[axis]``).
+
+A part program may write a setting datum when the protection level active while it runs
+permits it (the datum's own write level, ``protect`` in the catalogue) and the datum takes
+effect immediately (004 L245-249; the manual's own examples
+write ``$SC_WEAR_SIGN``, 002 L62080-62106). The write goes through the machine-data store's
+one write path (:meth:`nck.machine_data.MachineDataStore.write`: level, type and limits);
+here its refusals become NC alarms:
+
+* level too low, or a datum that does not take effect at once → 17070 (write-protected);
+* value below / above the datum's limits → 17080 / 17090; a value of the wrong type → 12150.
+
+Machine data (``$MN_``/``$MC_``/``$MA_``) stay read-only for part programs: the kernel takes
+them from the machine configuration, which a running program cannot change (17070).
+The write is journaled: a block that fails later leaves the datum as it was.
+"""
+
+from __future__ import annotations
+
+import copy
+from typing import Any, Callable
+
+from nck.access import LEVEL_MOST_RIGHTS
+from nck.errors import NcAlarmError
+from nck.machine_data import DataValueError, MachineDataStore, UnknownDataError
+
+ALARM_WRITE_PROTECTED = 17070
+ALARM_BELOW_LIMIT = 17080
+ALARM_ABOVE_LIMIT = 17090
+ALARM_UNKNOWN = 12550
+ALARM_WRONG_TYPE = 12150
+
+
+def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: Any,
+                       journal: Callable[[Callable[[], None]], None]) -> None:
+    """Write setting datum ``name`` (``$SC_WEAR_SIGN``; ``indices`` as programmed) at the
+    interpreter's current protection level; ``journal`` receives the undo of the write."""
+    store = MachineDataStore(interp.machine, {}, interp.data.setting_data)
+    text = name + (f"[{','.join(str(i) for i in indices)}]" if indices else "")
+    try:
+        ref = store.resolve(text)
+    except UnknownDataError:
+        raise NcAlarmError(ALARM_UNKNOWN, name) from None
+    definition = ref.definition
+    if definition.kind != "sd" or definition.activation != "so":
+        raise NcAlarmError(ALARM_WRITE_PROTECTED, name)
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if definition.min is not None and value < definition.min:
+            raise NcAlarmError(ALARM_BELOW_LIMIT, name)
+        if definition.max is not None and value > definition.max:
+            raise NcAlarmError(ALARM_ABOVE_LIMIT, name)
+    if interp.access_level() > definition.write_level:
+        raise NcAlarmError(ALARM_WRITE_PROTECTED, name)
+    key = definition.key
+    had, old = key in interp.data.setting_data, copy.deepcopy(interp.data.setting_data.get(key))
+    try:
+        # The datum's own level was checked above; the panel's user class for its setting-data
+        # screen (MD9215) guards the operator's door, not the NCK's part-program door.
+        store.write(ref, value, level=LEVEL_MOST_RIGHTS)
+    except DataValueError:
+        raise NcAlarmError(ALARM_WRONG_TYPE, name) from None
+    setting_data = interp.data.setting_data
+
+    def undo() -> None:
+        if had:
+            setting_data[key] = old
+        else:
+            setting_data.pop(key, None)
+
+    journal(undo)
