@@ -60,7 +60,13 @@ def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
     if name == "$AA_IW":
         axis = _axis(interp, name, indices[:1]) if len(indices) == 1 else _bad(name)
         actual = {a: float(interp.actual_position(a)) for a in interp.machine.path_axes}
-        return float(path.wcs_from_mcs(modal, actual)[axis])
+        value = float(path.wcs_from_mcs(modal, actual)[axis])
+        if interp.machine.axis(axis).kind != "linear":
+            return value
+        # A length-related system variable: G70/G71 read it in the basic system,
+        # G700/G710 in the programmed one (002 L11680-11697, table L11793-11817).
+        units = path.units(modal)
+        return value * units.position_mm / units.data_mm
     whole = _whole_frame_read(interp, name, indices)
     if whole is not None:
         return whole

@@ -52,6 +52,9 @@ class GeometryState:
         lims_rpm: G96 spindle speed limit (LIMS), None = none.
         axis_feeds: positioning-axis feeds FA[axis] (mm/min or deg/min).
         thread_lead_mm: last programmed thread lead.
+        feed_unit_mm: millimetres per length unit of the programmed F, fixed when F is
+            programmed: a later G70/G71/G700/G710 keeps the feed's physical value until F is
+            programmed again (002 L11662-11667).
         feed_override_pct: programmable feed override OVR (002 L56515-56536), 100 after RESET.
         accel_pct: ACC[axis] acceleration factors in percent (002 L7433-7450), axes not at 100;
             reduced to 100 by RESET/M30 (MD32320 bit 0 = 0, the only setting modelled).
@@ -71,6 +74,7 @@ class GeometryState:
     lims_rpm: float | None = None
     axis_feeds: dict[str, float] = field(default_factory=dict)
     thread_lead_mm: float | None = None
+    feed_unit_mm: float = 1.0
     feed_override_pct: float = 100.0
     accel_pct: dict[str, float] = field(default_factory=dict)
     loaded: bool = False

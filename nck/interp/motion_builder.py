@@ -228,6 +228,7 @@ class MotionBuilder:
             if feed <= 0:
                 raise NcAlarmError(ALARM_PATH_VELOCITY)
             modal.feed = feed
+            geo.feed_unit_mm = self.path.units(modal).feed_mm
         for key, value in words.words.items():
             if key.startswith("FA[") and key.endswith("]"):
                 if value <= 0:
@@ -277,16 +278,15 @@ class MotionBuilder:
         if modal.feed <= 0:
             raise NcAlarmError(ALARM_NO_FEED)
         feed_type = modal.gcodes.get(15, "G94")
-        units = self.path.units(modal)
         if feed_type == "G93":
             if modal.gcodes.get(7) in ("G41", "G42"):
                 raise NcAlarmError(ALARM_G93_WITH_TRC)  # 002 L55402
             return {"feed": modal.feed, "feed_mm_min": None, "inverse_time": True}
         if feed_type in FEED_TYPES_PER_REV or feed_type in ("G952", "G962", "G972"):
             # Revolutional feed follows the master spindle; while it stands the path waits (V1).
-            return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm * _turning_rpm(modal),
-                    "inverse_time": False, "feed_mm_rev": modal.feed * units.feed_mm}
-        return {"feed": modal.feed, "feed_mm_min": modal.feed * units.feed_mm, "inverse_time": False}
+            return {"feed": modal.feed, "feed_mm_min": modal.feed * geo.feed_unit_mm * _turning_rpm(modal),
+                    "inverse_time": False, "feed_mm_rev": modal.feed * geo.feed_unit_mm}
+        return {"feed": modal.feed, "feed_mm_min": modal.feed * geo.feed_unit_mm, "inverse_time": False}
 
     # ------------------------------------------------------------------ tool
     def _tool(self, words: BlockWords, modal: ModalState, out: list[canon.CanonCommand]) -> None:
