@@ -528,7 +528,8 @@ class HmiApp(MachineControlPanel, App):
         self.exit()
 
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
-             *, nck: Any = None, program: str | None = None, realtime: bool = True) -> HmiApp:
+             *, nck: Any = None, program: str | None = None, realtime: bool = True,
+             confirm: Callable[[str], bool] | None = None) -> HmiApp:
     """Build the application (shared by the console script and the tests).
 
     Args:
@@ -538,15 +539,27 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
         nck: an existing kernel (tests); built from the other options when None.
         program: a part program to select at start (for AUTOMATIC).
         realtime: advance the kernel from the wall clock (False: tests advance it).
+        confirm: asks the user a yes/no question before the panel starts (replacing a
+            program with ``program``); None answers no.
     """
     on_quit = None
     session = None
     if nck is None:
-        session = build_session(machine, data_dir, ephemeral, program)
+        session = build_session(machine, data_dir, ephemeral, program, confirm)
         nck, on_quit = session.nck, session.quit
     app = HmiApp(nck, realtime=realtime, on_quit=on_quit)
     app.nc_session = session
     return app
+
+
+def ask_on_terminal(question: str) -> bool:
+    """A yes/no question on the terminal before the panel starts; no when nobody can answer."""
+    if not sys.stdin.isatty():
+        return False
+    try:
+        return input(f"hmi: {question} [y/N] ").strip().lower() in ("y", "yes")
+    except EOFError:
+        return False
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -562,7 +575,8 @@ def main(argv: list[str] | None = None) -> int:
     # SIGTERM/SIGHUP while starting or ending: a normal exit, so a temporary copy is removed
     with exit_on_termination():
         try:
-            app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program)
+            app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program,
+                           confirm=ask_on_terminal)
         except Exception as exc:  # a CLI/file problem: a clear message, no traceback
             print(f"hmi: {exc}", file=sys.stderr)
             return 2

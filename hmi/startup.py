@@ -95,14 +95,17 @@ class NcDataSession:
 
 
 def build_session(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
-                  program: str | None = None) -> NcDataSession:
+                  program: str | None = None, confirm: Callable[[str], bool] | None = None) -> NcDataSession:
     """Open the NC data directory and build the kernel on its retained data.
 
     The NC file system (``nck.storage``) lives in ``<data dir>/nc``; the training
     programs of ``data/programs`` are installed into a fresh directory. With
     ``ephemeral`` the kernel works on a temporary copy that is deleted on quit.
     ``program`` (a local file, imported into MPF, or a program name) is selected
-    at start; the HMI still starts in JOG (axes must be referenced first).
+    at start; the HMI still starts in JOG (axes must be referenced first). A local
+    file that would replace a different program of the same name needs the level
+    of program editing and ``confirm(question)`` (None: refused); the old program
+    is kept as ``<name>_OLD<n>``.
     """
     from nck.machine import load_machine
     from nck.datalock import lock_data_dir
@@ -117,7 +120,7 @@ def build_session(machine: str | None = None, data_dir: str | None = None, ephem
         lock = lock_data_dir(root) if copy is None else None
         holder = NcDataSession(Session.open(root, config), copy)
         holder.data_lock = lock
-        _select_at_start(holder, program)
+        _select_at_start(holder, program, confirm)
     except BaseException:  # a failed start leaves neither a lock nor a temporary copy
         if lock is not None:
             lock.release()
@@ -127,22 +130,44 @@ def build_session(machine: str | None = None, data_dir: str | None = None, ephem
     return holder
 
 
-def _select_at_start(holder: NcDataSession, program: str | None) -> None:
+def _select_at_start(holder: NcDataSession, program: str | None,
+                     confirm: Callable[[str], bool] | None = None) -> None:
     """Select ``program`` (a local file is imported first) for the start in AUTOMATIC."""
     if program:
         name = program
         local = Path(program)
         if local.is_file():
-            name = holder.session.files.import_file(local, overwrite=True).name
+            name = _import_at_start(holder, local, confirm)
         result = holder.nck.submit(cmd.SelectProgram(name))
         if isinstance(result, Rejected):
             raise ValueError(f"program {program}: {result.reason}")
 
 
+def _import_at_start(holder: NcDataSession, local: Path, confirm: Callable[[str], bool] | None) -> str:
+    """Import a local file for ``--program``; never replace another program unasked or unkept."""
+    from nck.access import AccessDenied, Action
+
+    files = holder.session.files
+    target = files.import_target(local)
+    if files.exists(target):
+        if files.read_bytes(target) == local.read_bytes():
+            return target.rpartition("/")[2]  # the same program: nothing to write
+        access = holder.session.access
+        if not access.may(Action.EDIT_PROGRAM):
+            raise ValueError(f"program {local}: {target} already exists in the NC memory with another "
+                             f"text; {AccessDenied('replacing it', access.required(Action.EDIT_PROGRAM), access.level)}")
+        if confirm is None or not confirm(f"{target} already exists in the NC memory with another text. "
+                                          "Replace it (the old one is kept as a copy)?"):
+            raise ValueError(f"program {local}: {target} already exists in the NC memory; not replaced")
+        files.keep_backup(target)
+    return files.import_file(local, overwrite=True).name
+
+
 def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
-              program: str | None = None) -> tuple[Any, Callable[[], None] | None]:
+              program: str | None = None, confirm: Callable[[str], bool] | None = None,
+              ) -> tuple[Any, Callable[[], None] | None]:
     """Build the kernel on the NC data directory; return it and the function run on quit."""
-    holder = build_session(machine, data_dir, ephemeral, program)
+    holder = build_session(machine, data_dir, ephemeral, program, confirm)
     return holder.nck, holder.quit
 
 

@@ -399,15 +399,7 @@ class NcFileSystem:
             raise StorageError("not_found", f"{local} is not a file")
         if local.stat().st_size > MAX_IMPORT_BYTES:
             raise StorageError("io", f"{local} is too large for the NC memory")
-        folder = self.canonical(directory)
-        file_name = (name or local.name).strip().upper()
-        stem, dot, ext = file_name.rpartition(".")
-        if not dot or ext not in PROGRAM_TYPES:
-            default_ext = folder if folder in PROGRAM_TYPES else "MPF"
-            file_name = f"{file_name if not dot else stem}.{default_ext}"
-        if folder in PROGRAM_TYPES:
-            file_name = f"{file_name.rpartition('.')[0]}.{folder}"
-        target = self.canonical(f"{folder}/{file_name}")
+        target = self.import_target(local, directory, name)
         if self.exists(target):
             if not overwrite:
                 raise StorageError("exists", f"{target} already exists")
@@ -417,6 +409,31 @@ class NcFileSystem:
         except OSError as exc:
             raise StorageError("io", f"{target} could not be written: {exc.strerror}") from exc
         return self._entry(target)
+
+    def import_target(self, local_path: Path | str, directory: str = "MPF", name: str | None = None) -> str:
+        """The canonical path :meth:`import_file` writes a local file to."""
+        folder = self.canonical(directory)
+        file_name = (name or Path(local_path).name).strip().upper()
+        stem, dot, ext = file_name.rpartition(".")
+        if not dot or ext not in PROGRAM_TYPES:
+            default_ext = folder if folder in PROGRAM_TYPES else "MPF"
+            file_name = f"{file_name if not dot else stem}.{default_ext}"
+        if folder in PROGRAM_TYPES:
+            file_name = f"{file_name.rpartition('.')[0]}.{folder}"
+        return self.canonical(f"{folder}/{file_name}")
+
+    def keep_backup(self, path: str) -> ProgramEntry:
+        """Copy a program to the first free ``<name>_OLD<n>`` beside it (before it is replaced)."""
+        canonical = self.canonical(path)
+        folder, _, file_name = canonical.rpartition("/")
+        stem, _, ext = file_name.rpartition(".")
+        number = 1
+        while True:
+            suffix = f"_OLD{number}"
+            backup = f"{folder}/{stem[:NAME_MAX_CHARS - len(suffix)]}{suffix}.{ext}"
+            if not self.exists(backup):
+                return self.copy(canonical, backup)
+            number += 1
 
     def export_file(self, path: str, local_path: Path | str, replace: bool = False) -> Path:
         """Copy a program to the local file system (atomically); return the file written.
