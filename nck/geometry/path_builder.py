@@ -45,6 +45,8 @@ ALARM_THREAD_FRAME = 10607  # a frame rotation changes the thread length
 ALARM_DC_NOT_POSSIBLE = 16800  # DC programmed for an axis that is not a rotary axis
 ALARM_ACP_NOT_POSSIBLE = 16810  # ACP/ACN programmed for an axis that is not a rotary axis
 ALARM_MODULO_POSITION = 16830  # ACP/ACN target outside 0 … < 360°
+ALARM_NOT_AVAILABLE = 12550  # a language element this NC does not offer (contour definition forms)
+ALARM_VALUE_OUTSIDE = 12560  # programmed value outside the permitted limits
 ALARM_FRAME_INSTRUCTION = 18311  # G58/G59 without MD24000 FRAME_ADD_COMPONENTS
 ALARM_FINE_NOT_CONFIGURED = 18312  # G58/G59 without a fine offset (MD18600 MM_FRAME_FINE_TRANS)
 ROTARY_MODES = ("DC", "ACP", "ACN")
@@ -273,6 +275,8 @@ class PathBuilder:
             return self.flush(modal) + [self._suppressed_move(kind, words, modal, geo, units, suppress, feed)]
         start = dict(geo.wcs_mm)
         end, programmed = self._targets(words, modal, geo, units, pl)
+        if "ANG" in words.words:
+            programmed |= self._angle_end(kind, float(words.words["ANG"]), words, pl, start, end)
         if kind in ARC_KINDS:
             element: LineElement | Arc = self._arc(kind, words, modal, geo, units, pl, start, end)
             programmed |= {pl.abscissa, pl.ordinate}
@@ -337,6 +341,31 @@ class PathBuilder:
             end[pl.abscissa], end[pl.ordinate] = target
             programmed |= {pl.abscissa, pl.ordinate}
         return end, programmed
+
+    def _angle_end(self, kind: str, angle_deg: float, words: Any, pl: Plane,
+                   start: Mapping[str, float], end: dict[str, float]) -> set[str]:
+        """Contour definition "straight line with angle" (000 L4105-4160; Siemens ``ANG=``):
+        one plane coordinate and the angle to the abscissa fix the end point; the other
+        coordinate is computed into ``end``. Returns the plane axes now programmed.
+
+        The two- and three-line forms (``ANG`` without a plane coordinate, or with both) need
+        the next block to find the corner: not modelled, refused with 12550. A coordinate the
+        angle cannot reach (parallel, or behind the start) is 12560.
+        """
+        a, o = pl.abscissa, pl.ordinate
+        given = [axis for axis in (a, o) if axis in words.axes]
+        if kind not in ("G0", "G1") or len(given) != 1:
+            raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
+        direction = (math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg)))
+        index = 0 if given[0] == a else 1
+        other = o if index == 0 else a
+        along = direction[index]
+        delta = end[given[0]] - start.get(given[0], 0.0)
+        if abs(along) < 1e-12 or delta / along < -1e-9:
+            raise NcAlarmError(ALARM_VALUE_OUTSIDE, "ANG")
+        length = delta / along
+        end[other] = start.get(other, 0.0) + length * direction[1 - index]
+        return {a, o}
 
     def _rotary_target(self, axis: str, current: float, value: float, mode: str) -> float:
         """``DC`` (shortest way), ``ACP`` (positive), ``ACN`` (negative) to an absolute angle.

@@ -37,7 +37,7 @@ from typing import Any
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry import trc_canon
-from nck.geometry.path_builder import PathBuilder
+from nck.geometry.path_builder import ALARM_NOT_AVAILABLE, PathBuilder
 from nck.geometry.path_state import GeometryState
 from nck.geometry.rounding_distance import AID
 from nck.interp.modal import ModalState
@@ -152,6 +152,8 @@ class MotionBuilder:
             out.extend(motions)
             if modal.gcodes.get(15) == "G96" and motions:
                 self._constant_cutting_speed(modal, geo, out, src)
+        elif "ANG" in words.words:  # first block of a two-line contour definition: not modelled
+            raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
         elif any(k in words.words for k in ("CHF", "CHR", "RND")):
             raise NcAlarmError(10882)
         elif "RNDM" in words.words:
