@@ -64,6 +64,8 @@ class NcData:
     base_frame: WorkOffset = field(default_factory=WorkOffset)
     setting_data: dict[str, Any] = field(default_factory=dict)
     gud: dict[str, Any] = field(default_factory=dict)
+    # part-program protection levels of a GUD from its DEF (APRP/APWP): name → {"read": n, "write": n}
+    gud_access: dict[str, dict[str, int]] = field(default_factory=dict)
     # Workpiece counters by variable name without prefix (TOTAL_PARTS, REQUIRED_PARTS,
     # ACTUAL_PARTS, SPECIAL_PARTS: the $AC_… values); retained like the rest.
     part_counters: dict[str, int] = field(default_factory=dict)

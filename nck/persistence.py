@@ -232,11 +232,14 @@ def _load_r(data: Mapping[str, Any], rd: RetainedData) -> None:
 
 
 def _dump_gud(rd: RetainedData) -> dict[str, Any]:
-    return {"gud": _plain(rd.ncdata.gud)}
+    return {"gud": _plain(rd.ncdata.gud), "access": _plain(rd.ncdata.gud_access)}
 
 
 def _load_gud(data: Mapping[str, Any], rd: RetainedData) -> None:
     rd.ncdata.gud = dict(_plain(_mapping(data["gud"])))
+    access = _mapping(data.get("access", {}))  # protection levels of APRP/APWP (older files: none)
+    rd.ncdata.gud_access = {str(name): {str(k): int(v) for k, v in _mapping(levels).items()}
+                            for name, levels in access.items()}
 
 
 def _dump_sd(rd: RetainedData) -> dict[str, Any]:

@@ -381,7 +381,7 @@ class BlockRun:
                         for i, v in enumerate(values):
                             cell.set(v, _unflatten(i, tuple(dims)))
             if stmt.scope is not None:
-                self._def_gud(cell)
+                self._def_gud(cell, stmt)
             else:
                 scope_dict[name] = cell
 
@@ -405,14 +405,18 @@ class BlockRun:
         if not global_data:
             self.frame.lud_bytes += size
 
-    def _def_gud(self, cell: Cell) -> None:
-        """``DEF NCK/CHAN``: a global user variable kept in NcData.gud (created once)."""
+    def _def_gud(self, cell: Cell, stmt: ast.Def) -> None:
+        """``DEF NCK/CHAN``: a global user variable kept in NcData.gud (created once, with the
+        part-program protection levels of its APRP/APWP attributes)."""
         if cell.name in self.interp.data.gud:
             return
         value = list(cell.value) if cell.dims else cell.value
         if cell.dims and len(cell.dims) > 1:
             raise NcAlarmError(12190, cell.name)
         self.interp.write_gud(cell.name, value)
+        levels = {k: v for k, v in (("read", stmt.read_level), ("write", stmt.write_level)) if v is not None}
+        if levels:
+            self.interp.data.gud_access[cell.name] = levels
 
     # ------------------------------------------------------------ control structures
     def _control(self, stmt: ast.Control) -> None:

@@ -135,6 +135,7 @@ def read_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...]
         if indices:
             raise NcAlarmError(17020, binding.cell.name)
         return binding.cell.get(binding.indices)
+    check_gud_access(interp, binding.name, "read")
     value = interp.data.gud[binding.name]
     if isinstance(value, list):
         if len(indices) != 1:
@@ -167,6 +168,7 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
         journal_cell(interp, binding.cell, binding.indices)
         binding.cell.set(value, binding.indices)
         return
+    check_gud_access(interp, binding.name, "write")
     current = interp.data.gud[binding.name]
     if isinstance(current, list):
         if len(indices) != 1:
@@ -181,6 +183,15 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
         if indices:
             raise NcAlarmError(17020, binding.name)
         interp.write_gud(binding.name, _like(current, value, binding.name))
+
+
+def check_gud_access(interp: Interpreter, name: str, kind: str) -> None:
+    """A GUD protected by APRP/APWP (004 L428-429) may be read/written by a part program only
+    when the protection level it runs with is that level or one with more rights: else 17070.
+    (The manuals name no separate alarm for a read-protected variable; 17070 says "read".)"""
+    needed = interp.data.gud_access.get(name, {}).get(kind)
+    if needed is not None and interp.access_level() > needed:
+        raise NcAlarmError(17070, name if kind == "write" else f"{name} (read)")
 
 
 def _like(current: Any, value: Any, name: str) -> Any:

@@ -125,7 +125,11 @@ class VarDecl:
 
 @dataclass(frozen=True, slots=True)
 class Def:
-    """``DEF [NCK|CHAN] type [LLI v] [ULI v] name[dims]=init, …``."""
+    """``DEF [NCK|CHAN] [APRP n] [APWP n] … type [LLI v] [ULI v] name[dims]=init, …``.
+
+    ``read_level``/``write_level``: protection level for part-program reads/writes of a GUD
+    (APRP/APR, APWP/APW); None when not given.
+    """
 
     type: str
     names: tuple[VarDecl, ...]
@@ -133,6 +137,8 @@ class Def:
     string_len: int | None = None
     lower: Expr | None = None
     upper: Expr | None = None
+    read_level: int | None = None
+    write_level: int | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -69,11 +69,20 @@ class DeclarationParser(TokenParser):
         scope = None
         if self.tok.kind == NAME and self.tok.text in ("NCK", "CHAN"):
             scope = self.advance().text
-        # access attributes and preprocessing stop attributes (accepted, not enforced)
+        # preprocessing stop attributes (accepted, no effect) and access attributes (004 L415-433):
+        # the part-program levels APRP/APWP (APR/APW: part program and OPI) are kept on the DEF;
+        # the OPI-only ones APRB/APWB concern the panel's door and are accepted without effect
+        read_level = write_level = None
         while self.tok.kind == NAME and self.tok.text in ("SYNR", "SYNW", "SYNRW", "APRP", "APWP", "APRB", "APWB", "APR", "APW"):
             attr = self.advance().text
             if attr.startswith("AP"):
-                self._small_int()
+                level = self._small_int()
+                if not 0 <= level <= 7:
+                    raise NcAlarmError(12560, f"{attr} {level}")
+                if attr in ("APRP", "APR"):
+                    read_level = level
+                elif attr in ("APWP", "APW"):
+                    write_level = level
         if not (self.tok.kind == NAME and self.tok.text in DATA_TYPES):
             raise syntax_error(self.tok)
         dtype = self.advance().text
@@ -100,7 +109,7 @@ class DeclarationParser(TokenParser):
             names.append(self._var_decl())
         if not self.at_end():
             raise syntax_error(self.tok)
-        return ast.Def(dtype, tuple(names), scope, string_len, lower, upper)
+        return ast.Def(dtype, tuple(names), scope, string_len, lower, upper, read_level, write_level)
 
     def _small_int(self) -> int:
         tok = self.advance()
