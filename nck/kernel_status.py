@@ -78,11 +78,16 @@ class StatusView:
             if current is None and blocks:
                 current = blocks[-1]
         offsets = dict(self._wcs_offset)
+        scales: dict[str, float] = {}
         if executing is not None:
-            # The WCS of the block being executed (the interpreter may already be ahead).
+            # The WCS of the block being executed (the interpreter may already be ahead);
+            # the transverse axis in diameter under DIAMON/DIAM90 (002 L32637-32660).
+            diameter = (executing.gcodes or {}).get(29) in ("DIAMON", "DIAM90")
             for name, mcs_end in executing.end_mcs.items():
                 if name in executing.end_wcs:
-                    offsets[name] = float(mcs_end) - float(executing.end_wcs[name])
+                    scale = 2.0 if diameter and name in self._diameter_axes() else 1.0
+                    scales[name] = scale
+                    offsets[name] = float(mcs_end) - float(executing.end_wcs[name]) / scale
         wcs_now = self._interpreter_wcs(run, positions) if executing is None else None
         axes = []
         getter = getattr(self.motion, "axis_states", None)
@@ -96,7 +101,7 @@ class StatusView:
             axes.append(AxisStatus(
                 name=axis.name, kind=axis.kind, position_mcs=mcs,
                 position_wcs=(wcs_now[axis.name] if wcs_now and axis.name in wcs_now
-                              else mcs - offsets.get(axis.name, 0.0)),
+                              else (mcs - offsets.get(axis.name, 0.0)) * scales.get(axis.name, 1.0)),
                 distance_to_go=dtg.get(axis.name, 0.0),
                 referenced=bool(self.motion.is_referenced(axis.name)),
                 setpoint_mcs=float(state.position_setpoint_mm) if state is not None else mcs,
@@ -133,6 +138,10 @@ class StatusView:
             emergency_stop=self._estop_active, mode_group_ready=not self._estop_active,
             alarm_log_seq=self.alarms.last_seq, internal_errors=len(self.internal_errors),
         )
+
+    def _diameter_axes(self) -> frozenset[str]:
+        """The transverse axes (MD20100), shown in diameter under DIAMON/DIAM90."""
+        return frozenset(a.name for a in self.machine.axes if a.diameter)
 
     def _interpreter_wcs(self, run: ProgramRun | None, positions: Any) -> dict[str, float] | None:
         """WCS of ``positions`` under the frames the interpreter holds now (when nothing executes).

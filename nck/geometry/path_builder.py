@@ -128,14 +128,25 @@ class PathBuilder:
         return self.kinds.get(axis, "linear") == "linear"
 
     def _diameter(self, axis: str, modal: Any) -> bool:
-        return axis in self.diameter_axes and modal.gcodes.get(29) == "DIAMON"
+        """The transverse axis is displayed in diameter (DIAMON, DIAM90: 002 L32637-32648)."""
+        return axis in self.diameter_axes and modal.gcodes.get(29) in ("DIAMON", "DIAM90")
 
-    def to_mm(self, axis: str, value: float, modal: Any, units: UnitSystem) -> float:
-        """A programmed axis value in internal units (mm radius, or degrees)."""
+    def to_mm(self, axis: str, value: float, modal: Any, units: UnitSystem, incremental: bool = False) -> float:
+        """A programmed axis value in internal units (mm radius, or degrees).
+
+        The transverse axis takes diameters under DIAMON, and under DIAM90 for absolute
+        values only (incremental ones are radii) (002 L32558-32565).
+        """
         if not self._is_length(axis):
             return float(value)
         out = float(value) * units.position_mm
-        return out / 2.0 if self._diameter(axis, modal) else out
+        code = modal.gcodes.get(29)
+        diameter = axis in self.diameter_axes and (code == "DIAMON" or (code == "DIAM90" and not incremental))
+        return out / 2.0 if diameter else out
+
+    def _frame_mm(self, axis: str, value: float, units: UnitSystem) -> float:
+        """A frame component in mm: always a radius on the transverse axis (002 L32672-32684)."""
+        return float(value) * units.position_mm if self._is_length(axis) else float(value)
 
     def from_mm(self, axis: str, value: float, modal: Any, units: UnitSystem) -> float:
         """An internal value back in programmed units (WCS display)."""
@@ -184,7 +195,7 @@ class PathBuilder:
                 raise NcAlarmError(ALARM_FINE_NOT_CONFIGURED, code)
         flushed = self.flush(modal)
         units = self.units(modal)
-        values = {a: self.to_mm(a, v, modal, units) for a, (v, _mode) in words.axes.items()}
+        values = {a: self._frame_mm(a, v, units) for a, (v, _mode) in words.axes.items()}
         angles = {a: float(v) for a, (v, _mode) in words.axes.items()}
         frames = geo.frames
         prog = frames.programmable
@@ -316,11 +327,11 @@ class PathBuilder:
             end.setdefault(axis, 0.0)
         programmed: set[str] = set()
         for axis, (value, mode) in words.axes.items():
-            v = self.to_mm(axis, value, modal, units)
+            incremental = mode == "IC" or (mode is None and not absolute)
+            v = self.to_mm(axis, value, modal, units, incremental=incremental and mode not in ROTARY_MODES)
             if mode in ROTARY_MODES:
                 end[axis] = self._rotary_target(axis, end.get(axis, 0.0), v, mode)
             else:
-                incremental = mode == "IC" or (mode is None and not absolute)
                 end[axis] = end.get(axis, 0.0) + v if incremental else v
             programmed.add(axis)
         w = words.words
@@ -413,7 +424,7 @@ class PathBuilder:
             pole = geo.polar.effective_pole
             return circles.arc_from_center(pl, s, e, pole, clockwise, turns, self.tolerance)
         centre_given = any(letter in w for letter in INTERP_LETTERS)
-        centre = self._centre(pl, s, w, modes, units)
+        centre = self._centre(pl, s, w, modes, units, modal)
         if "CR" in w:
             return circles.arc_from_radius(pl, s, e, float(w["CR"]) * units.position_mm, clockwise,
                                            turns, self.tolerance)
@@ -428,12 +439,14 @@ class PathBuilder:
         return circles.arc_from_center(pl, s, e, centre, clockwise, turns, self.tolerance)
 
     def _centre(self, pl: Plane, s: tuple[float, float, float], w: Mapping[str, float],
-                modes: Mapping[str, str], units: UnitSystem) -> tuple[float, float]:
+                modes: Mapping[str, str], units: UnitSystem, modal: Any) -> tuple[float, float]:
         out = []
         for index in pl.indices[:2]:
             letter = INTERP_LETTERS[index]
             if letter in w:
                 v = float(w[letter]) * units.position_mm
+                if modes.get(letter) == "AC" and self._diameter(self.geo_axes[index], modal):
+                    v /= 2.0  # an absolute centre is a diameter on the transverse axis (002 L32643-32646)
                 out.append(v if modes.get(letter) == "AC" else s[index] + v)
             else:
                 out.append(s[index])
@@ -480,8 +493,8 @@ class PathBuilder:
         point = reduced.inverse().apply(bcs)
         absolute = modal.gcodes.get(14, "G90") == "G90"
         for axis, (value, mode) in words.axes.items():
-            v = self.to_mm(axis, value, modal, units)
             incremental = mode == "IC" or (mode is None and not absolute)
+            v = self.to_mm(axis, value, modal, units, incremental=incremental)
             point[axis] = point.get(axis, 0.0) + v if incremental else v
         end_bcs = reduced.apply(point)
         end_mcs = dict(start_mcs)

@@ -126,6 +126,8 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
     units = _units(interp, gcodes.get(13, "G71"))
     if units[1] != geo.feed_unit_mm:
         return None  # F was programmed under another G70/G71/G700/G710: the path builder keeps it
+    if gcodes.get(29) == "DIAM90":
+        return None  # diameter or radius by G90/G91: the path builder
     diameter_on = gcodes.get(29) == "DIAMON"
     return Setup(
         absolute=distance == "G90",
