@@ -26,6 +26,7 @@ def motions(text: str) -> list[canon.Motion]:
     ("DIAMOF", (50.0, 60.0)),  # radius throughout
 ])
 def test_diam90_is_diameter_absolute_and_radius_incremental(code: str, x_mcs: tuple[float, float]) -> None:
+    """Digest 828d-2 rank 24 (DIAM90)."""
     moves = motions(f"N10 {code} G94 G90 G1 X50 Z0 F1000\nN20 G91 X10\nN30 M30\n")
     assert [m.end_mcs["X"] for m in moves] == pytest.approx(list(x_mcs))
 
@@ -37,6 +38,7 @@ def test_diam90_shows_the_transverse_axis_in_diameter() -> None:
 
 
 def test_frames_stay_radius_under_diamon() -> None:
+    """Digest 828d-2 rank 24 (frames always radius)."""
     # 002 L32672-32684: programmable frames are always radius values: TRANS X10 shifts by 10 mm.
     moves = motions("N10 DIAMON G94 G90 G1 X50 Z0 F1000\nN20 TRANS X10\nN30 X50\nN40 M30\n")
     assert moves[-1].end_mcs["X"] == pytest.approx(35.0)  # 50/2 + 10
@@ -52,6 +54,7 @@ def test_absolute_circle_centre_is_a_diameter_under_diamon() -> None:
 
 
 def test_wcs_display_is_in_diameter_while_the_block_runs() -> None:
+    """Digest 828d-2 rank 24 (WCS display in diameter)."""
     # 002 L32637-32642: under DIAMON the WCS actual position of the transverse axis is a diameter.
     nck = Nck(machine=load_machine("lathe2"), referenced=True,
               programs=MemorySource({"P.MPF": "N10 DIAMON G94 G1 X50 F100\nN20 M30"}))

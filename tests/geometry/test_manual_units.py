@@ -15,6 +15,7 @@ def on_kernel(text: str):
 
 
 def test_aa_iw_is_read_in_the_basic_system_under_g70() -> None:
+    """Digest 828d-1 rank 20 (G70: WCS in inch, basic system metric)."""
     # 002 L11680-11697 and table L11793-11817: length-related system variables are read in
     # the basic system (mm) under G70/G71, in the programmed system under G700/G710.
     text = "N10 G70 G1 X1 F100\nN20 R1=$AA_IW[X]\nN30 G700\nN40 R2=$AA_IW[X]\nN50 M30\n"

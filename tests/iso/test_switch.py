@@ -128,6 +128,7 @@ def test_p_extgg_shows_iso_values_in_both_modes():
     ("N5 M3 G291\nM30\n", 1, "siemens"),                 # Siemens mode: G291 with an M function
 ])
 def test_g290_g291_must_stand_alone_in_their_block(text, line, dialect):
+    """Digest iso-milling-828d rank 6."""
     # 003 L393: "G290 and G291 must be programmed alone in an NC block." -> syntax error 12080
     result = run_iso(text, dialect=dialect)
     assert result.status == "alarm"

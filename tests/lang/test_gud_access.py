@@ -32,6 +32,7 @@ def _defined() -> NcData:
 
 
 def test_apwp_refuses_a_write_from_a_program_running_with_fewer_rights() -> None:
+    """Digest job-planning-variables rank 3."""
     # 004 L429: APWP <level> protects writing from a part program; level 7 (keyswitch 0) > 3.
     data = _defined()
     assert _run("LIMIT=6\nM30\n", data, 7) == [17070]
@@ -42,6 +43,7 @@ def test_apwp_refuses_a_write_from_a_program_running_with_fewer_rights() -> None
 
 
 def test_aprp_allows_reading_at_its_level() -> None:
+    """Digest job-planning-variables rank 3 (APRP)."""
     # 004 L428: APRP 7 = everyone may read LIMIT from a part program.
     data = _defined()
     assert _run("R1=LIMIT\nM30\n", data, 7) == []
@@ -58,6 +60,7 @@ def test_apr_protects_reading_and_apw_default_is_free() -> None:
 
 
 def test_a_level_outside_0_to_7_is_refused() -> None:
+    """Digest job-planning-variables rank 3 (levels 0-7)."""
     # 004 L432: range of values 0 … 7.
     assert _run("DEF NCK APWP 9 REAL X1\nM30\n", NcData(), 7) == [12560]
 

@@ -52,6 +52,7 @@ def test_a_failing_block_leaves_the_setting_datum_alone() -> None:
 
 
 def test_machine_data_stay_write_protected_for_part_programs() -> None:
+    """Digest job-planning-variables rank 11 (machine data)."""
     # 004 L245-249: only data with immediate effect; the machine data come from the machine
     # configuration the running program cannot change → 17070.
     result = run_text("$MA_MAX_AX_VELO[X] = 1000\nM30\n", timeout_s=5.0)
@@ -59,6 +60,7 @@ def test_machine_data_stay_write_protected_for_part_programs() -> None:
 
 
 def test_the_protection_level_of_the_datum_decides(monkeypatch) -> None:
+    """Digest job-planning-variables rank 11."""
     # 004 L245-249: "the access level which is active when the part program/cycle is executed
     # permits write access". A datum protected at level 3: refused at level 7 (17070) …
     from nck.machine_data import DataDefinition
