@@ -151,3 +151,54 @@ def test_rnd_corner_on_the_real_motion() -> None:
     assert nck.positions_mcs()["X"] == pytest.approx(50.0, abs=1e-3)
     assert nck.positions_mcs()["Y"] == pytest.approx(50.0, abs=1e-3)
     assert min(closest) == pytest.approx(5 * (2 ** 0.5 - 1), abs=0.05)
+
+
+def x_velocity(nck: Nck) -> float:
+    return next(a for a in nck.status().axes if a.name == "X").velocity
+
+
+def test_feed_override_on_the_real_motion() -> None:
+    """Counterpart of ``test_modes.py::test_feed_override_zero_holds_the_path_but_stays_running``
+    (digest 828d-3 rank 9): at 50 % F1000 runs at 500 mm/min; at 0 % the axis stands while the
+    program stays running (002 L56312-56319); back at 100 % it reaches the end point."""
+    nck = make({"P.MPF": "N10 G1 X100 F1000\nN20 M30"})
+    start(nck)
+    nck.tick(1.0)
+    assert x_velocity(nck) == pytest.approx(1000.0, rel=1e-3)
+    nck.submit(c.SetOverride("feed", 50))
+    nck.tick(1.0)
+    assert x_velocity(nck) == pytest.approx(500.0, rel=1e-3)
+    nck.submit(c.SetOverride("feed", 0))
+    nck.tick(1.0)
+    held = nck.positions_mcs()["X"]
+    nck.tick(1.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(held, abs=1e-6)
+    assert states(nck) == ("AUTO", "active", "running")
+    nck.submit(c.SetOverride("feed", 100))
+    assert until_state(nck, "reset", "aborted", 30.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(100.0, abs=1e-3)
+
+
+def test_emergency_stop_on_the_real_motion() -> None:
+    """Counterpart of ``test_section19.py::test_13_*`` (digest 828d-2 rank 13): E-stop raises
+    3000 and the axis comes to a stop; RESET alone and release alone keep the alarm; release
+    and RESET clear it, the program is aborted and the axes stay referenced."""
+    nck = make({"P.MPF": "N10 G1 X100 F1000\nN20 M30"})
+    start(nck)
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] >= 40.0, 30.0)
+    nck.submit(c.EmergencyStop(True))
+    nck.tick(1.0)
+    stopped = nck.positions_mcs()["X"]
+    nck.tick(1.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(stopped, abs=1e-6)
+    assert 40.0 <= stopped < 45.0
+    numbers = [a.number for a in nck.status().alarms]
+    assert 3000 in numbers
+    nck.submit(c.Reset())
+    assert 3000 in [a.number for a in nck.status().alarms]
+    nck.submit(c.EmergencyStop(False))
+    assert 3000 in [a.number for a in nck.status().alarms]
+    nck.submit(c.Reset())
+    assert 3000 not in [a.number for a in nck.status().alarms]
+    assert states(nck) == ("AUTO", "reset", "aborted")
+    assert all(axis.referenced for axis in nck.status().axes)
