@@ -28,7 +28,7 @@ def at_x40() -> "object":
 
 # 1 -------------------------------------------------------------------------
 def test_01_start_from_reset_runs_from_first_block_and_restarts_runtime() -> None:
-    """Digest 828d-2 rank 1."""
+    """Digest 828d-2 rank 1 (002 L25799-25810)."""
     nck = make_nck({"P": LINE, "Q": "N5 G1 X1 F60\nN6 M30"})
     auto_start(nck, "Q")
     assert until_state(nck, "reset", "aborted")
@@ -44,7 +44,7 @@ def test_01_start_from_reset_runs_from_first_block_and_restarts_runtime() -> Non
 
 # 2 -------------------------------------------------------------------------
 def test_02_nc_stop_interrupts_and_nc_start_resumes_in_the_same_block() -> None:
-    """Digest 828d-2 rank 2."""
+    """Digest 828d-2 rank 2 (002 L70669-70673)."""
     nck = at_x40()
     assert nck.submit(c.CycleStop()) == c.Accepted()
     stopped_at = x(nck)
@@ -63,7 +63,7 @@ def test_02_nc_stop_interrupts_and_nc_start_resumes_in_the_same_block() -> None:
 
 # 3 -------------------------------------------------------------------------
 def test_03_reset_aborts_clears_reset_alarms_and_restarts_at_block_one() -> None:
-    """Digest 828d-2 rank 3."""
+    """Digest 828d-2 rank 3 (002 L17476-17490, L24182)."""
     nck = make_nck({"P": "N10 G91 G1 X10 F600\nN20 X10\nN30 X10\nN40 M30"})
     auto_start(nck, "P")
     nck.tick(1.5)
@@ -82,7 +82,7 @@ def test_03_reset_aborts_clears_reset_alarms_and_restarts_at_block_one() -> None
 
 # 4 -------------------------------------------------------------------------
 def test_04_nc_start_refused_for_unreferenced_axes_with_10203() -> None:
-    """Digest 828d-2 rank 4."""
+    """Digest 828d-2 rank 4 (002 L20826-20834)."""
     nck = make_nck({"P": LINE}, referenced=False)
     nck.motion.set_referenced("X", True)
     nck.motion.set_referenced("Y", True)
@@ -97,7 +97,7 @@ def test_04_nc_start_refused_for_unreferenced_axes_with_10203() -> None:
 
 
 def test_04b_axis_that_needs_no_referencing_lets_the_program_start() -> None:
-    """Digest 828d-2 rank 4."""
+    """Digest 828d-2 rank 4 (002 L20826-20834)."""
     base = load_machine()
     md = dict(base.md)
     md["MD34110"] = {"X": 2, "Y": 3, "Z": -1}
@@ -111,7 +111,7 @@ def test_04b_axis_that_needs_no_referencing_lets_the_program_start() -> None:
 
 # 5 -------------------------------------------------------------------------
 def test_05_nc_start_refused_with_an_alarm_with_start_disable_10200() -> None:
-    """Digest 828d-2 rank 5."""
+    """Digest 828d-2 rank 5 (002 L20826-20834, L17980-17989)."""
     nck = make_nck({"P": "N10 SETAL(61000)\nN20 G1 X10 F1000\nN30 M30"})
     auto_start(nck, "P")
     assert until_state(nck, "interrupted", "stopped")
@@ -123,7 +123,7 @@ def test_05_nc_start_refused_with_an_alarm_with_start_disable_10200() -> None:
 
 
 def test_05b_nc_start_refused_during_emergency_stop_and_in_jog() -> None:
-    """Digest 828d-2 rank 5."""
+    """Digest 828d-2 rank 5 (002 L20826-20834, L17980-17989)."""
     nck = make_nck({"P": LINE})
     assert isinstance(nck.submit(c.CycleStart()), c.Rejected)  # JOG
     assert states(nck) == ("JOG", "reset", "aborted")
@@ -135,7 +135,7 @@ def test_05b_nc_start_refused_during_emergency_stop_and_in_jog() -> None:
 
 
 def test_05c_nc_start_without_a_selected_program_is_refused() -> None:
-    """Digest 828d-2 rank 5."""
+    """Digest 828d-2 rank 5 (002 L20826-20834, L17980-17989)."""
     nck = make_nck({"P": LINE})
     nck.submit(c.SelectMode("AUTO"))
     result = nck.submit(c.CycleStart())
@@ -159,7 +159,7 @@ def test_06_program_selection_only_in_reset() -> None:
 
 # 7 -------------------------------------------------------------------------
 def test_07_mode_change_blocked_while_active_then_allowed_after_stop() -> None:
-    """Digest 828d-2 rank 7.
+    """Digest 828d-2 rank 7 (002 L17768-17808).
 
     Digest 828d-3 rank 5.
     """
@@ -244,7 +244,7 @@ def _stops(nck, level: str) -> list[str]:
 
 
 def test_10_single_block_sbl1_skips_calculation_blocks() -> None:
-    """Digest 828d-2 rank 10."""
+    """Digest 828d-2 rank 10 (002 L23364-23366)."""
     nck = make_nck({"P": SBL_PROGRAM})
     assert _stops(nck, "SBL1") == ["N10", "N30"]
     assert x(nck) == pytest.approx(20.0)
@@ -252,7 +252,7 @@ def test_10_single_block_sbl1_skips_calculation_blocks() -> None:
 
 
 def test_10b_single_block_sbl2_stops_after_every_block() -> None:
-    """Digest 828d-2 rank 10.
+    """Digest 828d-2 rank 10 (002 L23364-23366).
 
     Digest 828d-3 rank 6.
     Digest programming-840c rank 20.
@@ -264,7 +264,7 @@ def test_10b_single_block_sbl2_stops_after_every_block() -> None:
 
 # 11 ------------------------------------------------------------------------
 def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
-    """Digest 828d-2 rank 11.
+    """Digest 828d-2 rank 11 (002 L23368).
 
     Digest 828d-3 rank 7.
     Digest programming-840c rank 9.
@@ -290,7 +290,7 @@ def test_11_m0_always_stops_m1_only_with_programmed_stop() -> None:
 
 # 12 ------------------------------------------------------------------------
 def test_12_program_end_counts_parts_and_keeps_runtime_reset_does_not() -> None:
-    """Digest 828d-2 rank 12.
+    """Digest 828d-2 rank 12 (002 L21190-21194).
 
     Digest 828d-3 rank 7 (M30).
     """
@@ -312,7 +312,7 @@ def test_12_program_end_counts_parts_and_keeps_runtime_reset_does_not() -> None:
 
 # 13 ------------------------------------------------------------------------
 def test_13_emergency_stop_needs_release_and_reset_axes_stay_referenced() -> None:
-    """Digest 828d-2 rank 13.
+    """Digest 828d-2 rank 13 (002 L32094-32110).
 
     Digest 828d-3 rank 8.
     """
@@ -338,7 +338,7 @@ def test_13_emergency_stop_needs_release_and_reset_axes_stay_referenced() -> Non
 
 # 14 ------------------------------------------------------------------------
 def test_14_reference_point_approach_in_jog_ref() -> None:
-    """Digest 828d-2 rank 14."""
+    """Digest 828d-2 rank 14 (002 L49438-49442)."""
     nck = make_nck(referenced=False)
     nck.submit(c.SelectMachineFunction("REF"))
     nck.submit(c.Jog("X", -1))
@@ -368,7 +368,7 @@ def _run_time(nck, program: str) -> float:
 
 
 def test_16_dry_run_feed_modes() -> None:
-    """Digest 828d-2 rank 16."""
+    """Digest 828d-2 rank 16 (002 L18151-18181)."""
     nck = make_nck()
     nck.submit(c.SelectMode("AUTO"))
     nck.submit(c.WriteData("SD42100", 2000.0))
@@ -385,7 +385,7 @@ def test_16_dry_run_feed_modes() -> None:
 
 # 17 ------------------------------------------------------------------------
 def test_17_skip_levels() -> None:
-    """Digest 828d-2 rank 17.
+    """Digest 828d-2 rank 17 (002 L23316-23385).
 
     Digest programming-840c rank 11.
     """
@@ -406,7 +406,7 @@ def test_17_skip_levels() -> None:
 
 
 def test_17b_skip_levels_stay_effective_during_block_search() -> None:
-    """Digest 828d-2 rank 17."""
+    """Digest 828d-2 rank 17 (002 L23316-23385)."""
     program = "N10 G1 X1 F6000\n/N40 X40\nN50 Y5\nN60 Y9\nN70 M30"
     nck = make_nck({"P": program})
     nck.submit(c.SetProgramControl("skip_levels", {0}))
@@ -456,7 +456,7 @@ SEARCH_PROGRAM = (
 
 
 def test_25_block_search_with_calculation_10208_then_continue() -> None:
-    """Digest 828d-2 rank 25."""
+    """Digest 828d-2 rank 25 (002 L18282-18332, L18489-18494)."""
     nck = make_nck({"P": SEARCH_PROGRAM})
     nck.submit(c.SelectMode("AUTO"))
     nck.submit(c.SelectProgram("P"))
@@ -482,7 +482,7 @@ def test_25_block_search_with_calculation_10208_then_continue() -> None:
 
 
 def test_25b_block_search_target_not_found_and_by_text_and_cascaded() -> None:
-    """Digest 828d-2 rank 25."""
+    """Digest 828d-2 rank 25 (002 L18282-18332, L18489-18494)."""
     nck = make_nck({"P": SEARCH_PROGRAM})
     nck.submit(c.SelectMode("AUTO"))
     nck.submit(c.SelectProgram("P"))
@@ -500,7 +500,7 @@ def test_25b_block_search_target_not_found_and_by_text_and_cascaded() -> None:
 
 # 15 ------------------------------------------------------------------------
 def test_15_adjusted_absolute_encoder_is_referenced_at_power_on() -> None:
-    """Digest 828d-2 rank 15."""
+    """Digest 828d-2 rank 15 (002 L49502-49508)."""
     base = load_machine()
     machine = dataclasses.replace(base, md={**base.md, "MD34210": {"X": 2, "Y": 2, "Z": 0}})
     nck = make_nck({"P": LINE}, referenced=False, machine=machine)
