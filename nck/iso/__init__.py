@@ -41,6 +41,7 @@ def dialect_for(dialect: str, machine: object) -> str:
     named.iso_settings = IsoSettings(pocket_calculator=bool(pocket), increment_system_c=bool(is_c),
                                      gcode_system=int(system or 0), tool_digits=int(digits or 2),
                                      function_mask=int(mask or 0),
+                                     fixed_feedrates=bool(md_value("MD22920", None, False)) if md_value else False,
                                      start_unit=_start_unit(md_value),
                                      **_macro_tables(md_value))
     return named

@@ -72,6 +72,7 @@ class IsoSettings:
     pocket_calculator: bool = True
     increment_system_c: bool = False
     function_mask: int = 0  # MD 20734 EXTERN_FUNCTION_MASK (bit 2: G04 in revolutions under G95)
+    fixed_feedrates: bool = False  # MD 22920 EXTERN_FIXED_FEEDRATE_F1_ON: F0…F9 from SD 42160
     gcode_system: int = 0  # ISO T code system, MD 10881: 0 B, 1 A
     tool_digits: int = 2  # ISO T digits of the tool number in T, MD 10888
     start_unit: str = ""  # G700/G710 from MD 20154[5] (ISO group 6 reset), "" = table reset
@@ -245,6 +246,11 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     if "G95" in gcodes:
         modal.per_rev = True
     values = {letter: _value(word, settings, modal) for letter, word in addresses.items()}
+    fixed = addresses.get("F")
+    if settings.fixed_feedrates and fixed is not None and not fixed.has_point \
+            and fixed.value in range(10):
+        # 003 L631-652: F0…F9 (no decimal point) take the feed from SD 42160[n] when it is read
+        values["F"] = f"=$SC_EXTERN_FIXED_FEEDRATE_F1_F9[{int(fixed.value)}]"  # type: ignore[assignment]
     number = f"N{int(values.pop('N'))} " if "N" in values else ""
     for code in gcodes:
         if code not in _SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
@@ -394,7 +400,7 @@ def _cycle_block(number: str, siemens_g: list[str], values: dict[str, float], mo
     if "P" in values:
         state.params["P"] = values["P"] / 1000.0  # dwell in ms
     repeat = int(values.get("K", 1))
-    feed = _fmt(values["F"]) if "F" in values else None
+    feed = (values["F"] if isinstance(values["F"], str) else _fmt(values["F"])) if "F" in values else None
     hole = [f"{a}{_fmt(values[a])}" for a in ("X", "Y") if a in values]
     blocks = cycles.expand(state, modal.absolute, hole, feed, repeat) if repeat > 0 else []
     head = " ".join(siemens_g)
