@@ -195,6 +195,7 @@ class HmiApp(MachineControlPanel, App):
         self._held_updates = 0
         self.area_screens: list[AreaBase] = []
         """The area screens built so far (each area's screen lives as long as the app)."""
+        self._snapshot_shown = False
         self.freeze_gc_at_start = False
         """Set by :func:`main`: call :func:`freeze_startup_objects` after the first frame."""
         for area in AREAS:
@@ -299,8 +300,13 @@ class HmiApp(MachineControlPanel, App):
 
     # -- kernel ---------------------------------------------------------------------------
     def submit(self, command: Any) -> SubmitResult:
-        """Send a command to the kernel; an accepted command clears the dialog line."""
+        """Send a command to the kernel; an accepted command clears the dialog line.
+
+        The areas show the snapshot the command made at once, so that the next
+        key of a burst (a softkey after the keyswitch) meets the new state.
+        """
         result = self.bridge.submit(command)
+        self.show_snapshot(self.bridge.status)
         if isinstance(result, Accepted) and self.hint:
             self.set_hint("")
         if isinstance(result, Accepted) and isinstance(command, RETAINED_COMMANDS):
@@ -331,13 +337,21 @@ class HmiApp(MachineControlPanel, App):
 
     def on_nck_status_changed(self, message: NckStatusChanged) -> None:
         """Hand a new snapshot to the area screens of the current stack."""
-        self.latest_status = message.status
-        if not self.is_running:  # shutting down: the screens are being taken apart
+        self.show_snapshot(message.status)
+
+    def show_snapshot(self, status: NckStatus) -> None:
+        """Hand ``status`` to the area screens of the current stack (once per snapshot)."""
+        if status is self.latest_status and self._snapshot_shown:
             return
+        self.latest_status = status
+        if not self.is_running:  # shutting down: the screens are being taken apart
+            self._snapshot_shown = False
+            return
+        self._snapshot_shown = True
         for screen in self.screen_stack:
             if isinstance(screen, AreaBase):
                 try:
-                    screen.show_status(message.status)
+                    screen.show_status(status)
                 except Exception as exc:  # a display bug must not end the operator's session
                     self.report_internal_error(exc)
 
@@ -416,10 +430,12 @@ class HmiApp(MachineControlPanel, App):
 
     # -- operator panel ---------------------------------------------------------------------
     def action_switch_area(self, area_id: str) -> None:
-        """Area key: show the operating area ``area_id``."""
-        from screens.dialogs import HelpScreen
+        """Area key: show the operating area ``area_id``.
 
-        if isinstance(self.screen, HelpScreen):  # the help overlay belongs to the area being left
+        Dialogs of the area being left are cancelled (as Escape would): a dialog
+        is never left pending to come back on the next visit.
+        """
+        while isinstance(self.screen, AreaDialog):
             self.screen.dismiss(None)
         area = self.area_screen
         if area is not None:

@@ -19,16 +19,23 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from textual.await_complete import AwaitComplete
+from textual.binding import Binding
 from textual.screen import ModalScreen, ScreenResultType
 
 from hmi.key_settle import BindingsInPlace
 
 
 class AreaDialog(BindingsInPlace, ModalScreen[ScreenResultType]):
-    """A modal dialog that closes only while it is on top of the current area."""
+    """A modal dialog that closes only while it is on top of the current area; Escape cancels it."""
+
+    BINDINGS = [Binding("escape", "cancel_dialog", "Cancel", show=False)]
 
     result_handler: Callable[[Any], object] | None = None
     """Called with the result when the dialog closes (set by the app's ``push_screen``)."""
+
+    def action_cancel_dialog(self) -> None:
+        """Escape: close without a result."""
+        self.dismiss(None)
 
     def dismiss(self, result: Any = None) -> AwaitComplete:
         """Close with ``result`` if this dialog is the active screen; else leave it open."""

@@ -284,7 +284,9 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         program = self.program
 
         def decided(choice: str | None) -> None:
-            if choice is None or choice.startswith("Back") or program != self.program:
+            if choice is None:  # cancelled (Escape, F10, an area key): the text stays in the journal
+                return
+            if choice.startswith("Back") or program != self.program:
                 if self.app.current_mode != self.AREA_ID:
                     self.perform("app.switch_area('program')")
                 return
