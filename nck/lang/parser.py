@@ -46,6 +46,8 @@ class _Parser(DeclarationParser):
         if name == "CASE":
             stmts.append(self._case())
             return
+        if name == "REDEF":  # 004 L529-536: attribute redefinition is not offered by this NC
+            raise NcAlarmError(12550, "REDEF")
         if name in ("WHILE", "UNTIL"):
             self.advance()
             stmts.append(ast.Control(name, cond=self.expression()))

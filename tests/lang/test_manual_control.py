@@ -121,3 +121,14 @@ def test_crpl_with_a_wrong_plane_number_is_an_alarm() -> None:
     # 002 L28009-28012: only 0..3 are defined; anything else is a wrong parameter (14020).
     result = run_text("$P_PFRAME=CRPL(4,30)\nM30\n", timeout_s=5.0)
     assert [a.number for a in result.alarms] == [14020]
+
+
+def test_redef_is_refused_as_not_available_in_run_and_check() -> None:
+    # 004 L529-536 describes REDEF without its syntax; this NC does not offer it: 12550 (name or
+    # function not available) in the run and in the check, never a silent acceptance.
+    from nck.check import check_text
+
+    text = "DEF NCK REAL LIMIT\nREDEF LIMIT APWP 2\nM30\n"
+    result = run_text(text, timeout_s=5.0)
+    assert [(a.number, a.line) for a in result.alarms] == [(12550, 2)]
+    assert [(a.number, a.line) for a in check_text("TEST.MPF", text)] == [(12550, 2)]
