@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import time
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -25,6 +26,8 @@ from nck.ncdata import NcData
 from nck.termination import exit_on_termination
 
 
+wait_s = time.sleep
+"""How the command line waits after a wrong --password (tests replace it)."""
 DEFAULT_RUN_TIMEOUT_S = 3600.0  # one hour of machine time: a bound for endless loops, not for parts
 
 
@@ -91,7 +94,7 @@ def _main(args: list[str]) -> int:
         except ImportError:
             print("nck md: not available in this build", file=sys.stderr)
             return 2
-        return int(cli_md.main(args[1:]))
+        return int(cli_md.main(args[1:], wait_s=wait_s))
     try:
         options = _build_parser().parse_args(args)
     except CliError as exc:
@@ -265,7 +268,7 @@ def _apply_writes(options: argparse.Namespace, env: "_Environment") -> None:
     if options.password is not None:
         from nck.cli_password import level_of_password
 
-        granted = level_of_password(access, options.password, env.session)
+        granted = level_of_password(access, options.password, env.session, wait_s)
         if granted is None:
             env.keep_failed_attempt()
             raise CliError("password not accepted (nothing was written)")

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any, TextIO
+from typing import Any, Callable, TextIO
 
 from nck.access import AccessDenied, level_name
 from nck.cli_password import level_of_password
@@ -81,8 +81,11 @@ def _read_lines(store: MachineDataStore, ref: DataRef) -> list[str]:
     return [_line(store, ref, store.value(ref))]
 
 
-def run(argv: list[str], out: TextIO, err: TextIO) -> int:
-    """Run ``nck md`` with ``argv`` (without ``md``); return the exit code."""
+def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], None] | None = None) -> int:
+    """Run ``nck md`` with ``argv`` (without ``md``); return the exit code.
+
+    ``wait_s`` is how the command waits after a wrong ``--password`` (None: not at all).
+    """
     try:
         options = _parser().parse_args(argv)
     except _UsageError as exc:
@@ -104,7 +107,7 @@ def run(argv: list[str], out: TextIO, err: TextIO) -> int:
     try:
         if ephemeral is None:  # an HMI working on this directory would overwrite what we write
             lock = lock_data_dir(data_dir)
-        return _run(options, machine, data_dir, out, err)
+        return _run(options, machine, data_dir, out, err, wait_s)
     except DataDirLockError as exc:
         print(f"nck md: {exc}", file=err)
         return 2
@@ -118,7 +121,8 @@ def run(argv: list[str], out: TextIO, err: TextIO) -> int:
             ephemeral.cleanup()
 
 
-def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextIO) -> int:
+def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextIO,
+         wait_s: Callable[[float], None] | None) -> int:
     session = Session.open(data_dir, machine)
     for alarm in session.startup_alarms:
         print(f"ALARM {alarm.number} - - {alarm_text(alarm.number, alarm.params)}", file=err)
@@ -126,7 +130,7 @@ def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextI
     level = session.access.level
     how = level_name(level)
     if options.password is not None:
-        granted = level_of_password(session.access, options.password, session)
+        granted = level_of_password(session.access, options.password, session, wait_s)
         if granted is None:
             session.save()  # the failed attempt counts at the next try too
             print("nck md: password not accepted (level unchanged)", file=err)
@@ -196,6 +200,6 @@ def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextI
     return 0
 
 
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, wait_s: Callable[[float], None] | None = None) -> int:
     """Entry point used by ``nck.cli`` for ``nck md …``; returns the exit code."""
-    return run(sys.argv[1:] if argv is None else list(argv), sys.stdout, sys.stderr)
+    return run(sys.argv[1:] if argv is None else list(argv), sys.stdout, sys.stderr, wait_s)

@@ -8,21 +8,19 @@ alarm log (alarm 129300, as on the panel) and makes the command wait before it e
 
 from __future__ import annotations
 
-import time
 from typing import Any, Callable
 
 from nck.access import ALARM_PASSWORD_REFUSED, AccessControl, PasswordError, normalize_password
 from nck.resources import alarm_text
 
-wait_s: Callable[[float], None] = time.sleep
-"""How the door waits (tests replace it; nothing in ``nck/`` reads a clock)."""
 
-
-def level_of_password(access: AccessControl, password: str, session: Any = None) -> int | None:
+def level_of_password(access: AccessControl, password: str, session: Any = None,
+                      wait_s: Callable[[float], None] | None = None) -> int | None:
     """The level ``password`` opens for this call, or None after the failed-attempt handling.
 
     ``session`` (a :class:`nck.persistence.Session`) gets the alarm-log entry; the caller
-    saves it so that the count survives the command.
+    saves it so that the count survives the command. ``wait_s`` is how the door waits
+    (the ``nck`` console script passes ``time.sleep``; None does not wait).
     """
     try:
         normalize_password(password)
@@ -38,5 +36,6 @@ def level_of_password(access: AccessControl, password: str, session: Any = None)
             "seq": 0, "number": ALARM_PASSWORD_REFUSED, "text": alarm_text(ALARM_PASSWORD_REFUSED, params),
             "category": "hmi", "clear": "cancel", "came_s": 0.0, "went_s": 0.0, "params": list(params),
         }])
-    wait_s(delay)
+    if wait_s is not None:
+        wait_s(delay)
     return None

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+import nck.cli
 from nck.cli import main
 from nck.persistence import Session
 
@@ -43,7 +44,8 @@ def test_set_at_keyswitch_0_is_refused_and_nothing_is_saved(
 
 
 def test_the_stored_keyswitch_and_a_password_give_the_level(
-        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(nck.cli, "wait_s", lambda seconds: None)  # a wrong password waits 1 s
     data_dir = tmp_path / "data"
     session = Session.open(data_dir)
     session.access.set_keyswitch(1)  # level 6: work offsets and R parameters, not tool geometry

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from nck import cli_password
+import nck.cli
 from nck import commands as c
 from nck.access import KDF_ITERATIONS, AccessControl, AccessState, PasswordHash, retry_delay_s
 from nck.cli import main
@@ -74,7 +74,7 @@ def test_a_restarted_panel_keeps_the_delay_of_the_stored_count() -> None:
 def test_the_command_line_waits_counts_and_logs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
                                                 capsys: pytest.CaptureFixture[str]) -> None:
     waited: list[float] = []
-    monkeypatch.setattr(cli_password, "wait_s", waited.append)
+    monkeypatch.setattr(nck.cli, "wait_s", waited.append)
     data_dir = tmp_path / "data"
     Session.open(data_dir)
     prog = tmp_path / "P.MPF"
