@@ -388,13 +388,17 @@ class HmiApp(MachineControlPanel, App):
         return None
 
     def program_names(self) -> list[str]:
-        """Names of the part programs the kernel can select (for the selection dialog)."""
+        """Paths of the part programs the kernel can select (for the selection dialog).
+
+        The same path the Program manager's Execute selects (``MPF/PART1.MPF``),
+        so that the header shows a program the same way however it was selected.
+        """
         nck = self.bridge.nck
         source = getattr(nck, "programs", None)
         lister = getattr(source, "all_programs", None)
         if callable(lister):
             try:
-                return [e.name if e.directory == "MPF" else e.path for e in lister() if e.kind == "MPF"]
+                return [e.path for e in lister() if e.kind == "MPF"]  # as the Program manager selects them
             except Exception:  # a broken listing shows as an empty list
                 return []
         for holder in (nck, source):

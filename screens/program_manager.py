@@ -106,9 +106,29 @@ def _executing_program(status: NckStatus | None) -> str | None:
 
 
 class ProgramList(DataTable):
-    """The file list: Name, Type, Length, Date."""
+    """The file list: Name, Type, Length, Date; Home/End go to the first/last entry, PgUp/PgDn by a page."""
 
-    BINDINGS = [Binding("left", "app.focus_previous", "Tree", show=False)]
+    BINDINGS = [
+        Binding("left", "app.focus_previous", "Tree", show=False),
+        Binding("home", "first_entry", "First entry", show=False),
+        Binding("end", "last_entry", "Last entry", show=False),
+        Binding("pageup", "page_entries(-1)", "Page up", show=False),
+        Binding("pagedown", "page_entries(1)", "Page down", show=False),
+    ]
+
+    def action_first_entry(self) -> None:
+        """Home: the first entry."""
+        self.move_cursor(row=0)
+
+    def action_last_entry(self) -> None:
+        """End: the last entry."""
+        self.move_cursor(row=max(self.row_count - 1, 0))
+
+    def action_page_entries(self, pages: int) -> None:
+        """PgUp/PgDn: as many entries up or down as the list shows at once."""
+        shown = max(self.scrollable_content_region.height - self.header_height, 1)
+        row = self.cursor_row + int(pages) * shown
+        self.move_cursor(row=min(max(row, 0), max(self.row_count - 1, 0)))
 
 
 class ProgramManagerScreen(AreaBase):
