@@ -26,6 +26,9 @@ from typing import Any, Callable, Iterator
 
 from nck.canon import CanonCommand, Motion
 from nck.errors import NcAlarmError
+from nck.machine import load_machine
+from nck.motion.system import PlannedMotion
+from nck.ncdata import NcData
 from nck.resources import alarm_text
 
 _BLOCK_NUMBER = re.compile(r"\s*(?:/\d?\s*)?[Nn](\d+)\b")
@@ -164,8 +167,6 @@ class _OverlaySource:
 
 def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: Any) -> Any:
     from nck.interp.interpreter import Interpreter  # type: ignore[import-not-found]
-    from nck.machine import load_machine
-    from nck.ncdata import NcData
 
     source = _OverlaySource(name, text, programs)
     return Interpreter(machine or load_machine(), source, data if data is not None else NcData())
@@ -245,10 +246,28 @@ def iter_check(
     yield from structure
     if structure:
         return
+    machine = machine or load_machine()
+    data = data if data is not None else NcData()
     run = run_text(name, text, machine=machine, programs=programs, data=data, should_stop=should_stop)
+    refusal = motion_refusal(run.motions, machine, data)
+    if refusal is not None:
+        yield refusal  # the run stops there, before any later interpreter alarm
+        return
     for alarm in run.alarms:
         if alarm.line not in syntax_lines:
             yield alarm
+
+
+def motion_refusal(motions: list[Motion], machine: Any, data: NcData) -> CheckAlarm | None:
+    """The first motion the run's motion would refuse: software limit (10720), working area
+    (10730, with the setting data as the program left them), value range — the axes
+    referenced, as they must be for NC START."""
+    planner = PlannedMotion(machine, referenced=True, setting_data=data.setting_data)
+    for motion in motions:
+        alarm = planner.refusal_of(motion)
+        if alarm is not None:
+            return _alarm(alarm)
+    return None
 
 
 def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:

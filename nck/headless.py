@@ -21,6 +21,7 @@ from nck.errors import NcAlarmError
 from nck.interp.api import ProgramSource
 from nck.interp.interpreter import Interpreter
 from nck.machine import MachineConfig
+from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
 
 DEFAULT_RAPID_MM_MIN = 10000.0
@@ -270,10 +271,15 @@ def interpret_only(
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
     keep_commands: bool = True,
+    refusals: Any = None,
 ) -> RunResult:
     """Interpret ``program_name`` without the kernel (``nck check``): each segment is
     placed at its end point; ``machine_time_s`` is the blocks' cost plus a
     feed-based estimate of each segment.
+
+    ``refusals`` (a ``PlannedMotion``, axes referenced) is asked about every motion: one it
+    would refuse (software limit, working area) ends the run with that alarm, as the
+    kernel's run would end there.
 
     When nobody consumes the canonical commands (``keep_commands=False`` and no
     ``on_command``), runs of plain motion blocks are interpreted as batches
@@ -301,6 +307,10 @@ def interpret_only(
         if batches:
             left = max_blocks - result.blocks if max_blocks is not None else PLAIN_BATCH_ANY
             batch = interp.plain_batch(left)
+            if batch is not None and refusals is not None and refusals.first_refused_end(
+                    batch.axes, batch.mcs_mm[:batch.motions_before(batch.blocks)]) is not None:
+                batches = False  # find the refused block one by one, with its source
+                continue
             if batch is not None:
                 count, clock = batch_clock(machine, batch, clock, timeout_s)
                 batch.commit(count)
@@ -322,6 +332,11 @@ def interpret_only(
                 on_command(command)
             if isinstance(command, canon.Motion):
                 clock += segment_time_s(machine, command)
+                refused = refusals.refusal_of(command) if refusals is not None else None
+                if refused is not None:
+                    result.alarms.append(refused)
+                    stop = True
+                    break
             elif isinstance(command, canon.Dwell) and command.seconds:
                 clock += command.seconds
             elif isinstance(command, canon.UserAlarm):
@@ -415,8 +430,10 @@ def check_outcome(machine: MachineConfig, programs: ProgramSource, name: str, te
     found = load_program(name, text, dialect).problems()
     if found:
         return CheckOutcome(found, True, 0)
-    outcome = run_program(machine, programs, data or NcData(), name, text=text,
-                          max_blocks=max_blocks, dialect=dialect, keep_commands=False)
+    data = data or NcData()
+    refusals = PlannedMotion(machine, referenced=True, setting_data=data.setting_data)
+    outcome = interpret_only(machine, programs, data, name, text=text, max_blocks=max_blocks,
+                             dialect=dialect, keep_commands=False, refusals=refusals)
     return CheckOutcome(list(outcome.alarms), outcome.status != "timeout", outcome.blocks)
 
 

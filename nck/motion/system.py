@@ -22,7 +22,7 @@ from nck.errors import NcAlarmError
 from nck.machine import MachineConfig
 from nck.motion.interpolator import PathInterpolator
 from nck.motion.jog import JogUnit
-from nck.motion.limits import Limits
+from nck.motion.limits import EDGE_MM, Limits
 from nck.motion.params import motion_params
 from nck.motion.path import PLANE_AXES, Segment, arc, line
 from nck.motion.planner import AlarmItem, DwellItem, LookAhead, PlannedSegment, plan_segment
@@ -111,31 +111,11 @@ class PlannedMotion(PathInterpolator):
             return
         if not isinstance(item, Motion):
             return
-        start = self._plan_start()
-        end = start.copy()
-        for name, value in item.end_mcs.items():
-            if name in self.index:
-                end[self.index[name]] = float(value)
-                if not math.isfinite(end[self.index[name]]):
-                    self._value_range_alarm(item, name)  # an infinite or undefined position
-                    return
-        segment = self._segment(item, start, end)
-        self.plan_pos = end
-        if segment is None:
-            return
-        if item.gcodes and 28 in item.gcodes:
-            self.limits.workarea_on = item.gcodes[28] != "WALIMOF"
-        violation = self.limits.check_segment(segment, self.referenced)
-        if violation is not None:
-            number, axis, sign = violation
-            alarm = NcAlarmError(number, axis, sign, file=item.source.file, line=item.source.line, n=item.source.n)
+        segment, alarm = self._checked_segment(item, self._plan_start())
+        if alarm is not None:
             self.la.append(AlarmItem(alarm, item.source))
             return
-        outside = _outside_position_range(segment, item)
-        if outside is not None:
-            # Not caught by a limit switch (axis not referenced): beyond any position the
-            # control can represent, where the path arithmetic loses its precision.
-            self._value_range_alarm(item, outside)
+        if segment is None:
             return
         rapid = item.kind == "G0"
         feed = None if rapid else self._effective_feed(item)
@@ -154,9 +134,61 @@ class PlannedMotion(PathInterpolator):
         self.la.append(planned)
         self._replan_if_exit_changed()
 
-    def _value_range_alarm(self, item: Motion, axis: str) -> None:
-        alarm = NcAlarmError(ALARM_VALUE_RANGE, axis, file=item.source.file, line=item.source.line, n=item.source.n)
-        self.la.append(AlarmItem(alarm, item.source))
+    def refusal_of(self, item: Motion) -> NcAlarmError | None:
+        """The alarm ``item`` is refused with when it is pushed (software limit 10720, working
+        area 10730, value range), without buffering it; the planned position moves on as in
+        ``push``. ``nck check`` asks this so that it refuses what the run refuses."""
+        start = self.plan_pos.copy() if self.plan_pos is not None else self.cmd.copy()
+        return self._checked_segment(item, start)[1]
+
+    def first_refused_end(self, axes: tuple[str, ...], ends_mcs: np.ndarray) -> int | None:
+        """Row of the first straight-line end point (rows of ``ends_mcs``, columns ``axes``)
+        beyond a software limit or the working area, or None (then the planned position moves
+        to the last row). For runs of plain G0/G1 blocks, whose limits are checked at the ends."""
+        columns = [(c, self.index[name]) for c, name in enumerate(axes) if name in self.index]
+        bad = np.zeros(len(ends_mcs), dtype=bool)
+        for c, i in columns:
+            if not self.referenced[i]:
+                continue
+            minus, plus = self.limits.software(i)
+            w_minus, w_plus = self.limits.workarea(i)
+            values = ends_mcs[:, c]
+            bad |= (values > min(plus, w_plus) + EDGE_MM) | (values < max(minus, w_minus) - EDGE_MM)
+        rows = np.flatnonzero(bad)
+        if rows.size:
+            return int(rows[0])
+        if len(ends_mcs):
+            if self.plan_pos is None:
+                self.plan_pos = self.cmd.copy()
+            for c, i in columns:
+                self.plan_pos[i] = float(ends_mcs[-1, c])
+        return None
+
+    def _checked_segment(self, item: Motion, start: np.ndarray) -> tuple[Segment | None, NcAlarmError | None]:
+        """The segment of ``item`` from ``start``, or the alarm that refuses it."""
+        end = start.copy()
+        for name, value in item.end_mcs.items():
+            if name in self.index:
+                end[self.index[name]] = float(value)
+                if not math.isfinite(end[self.index[name]]):
+                    return None, _value_range_alarm(item, name)  # an infinite or undefined position
+        segment = self._segment(item, start, end)
+        self.plan_pos = end
+        if segment is None:
+            return None, None
+        if item.gcodes and 28 in item.gcodes:
+            self.limits.workarea_on = item.gcodes[28] != "WALIMOF"
+        violation = self.limits.check_segment(segment, self.referenced)
+        if violation is not None:
+            number, axis, sign = violation
+            return None, NcAlarmError(number, axis, sign, file=item.source.file, line=item.source.line,
+                                      n=item.source.n)
+        outside = _outside_position_range(segment, item)
+        if outside is not None:
+            # Not caught by a limit switch (axis not referenced): beyond any position the
+            # control can represent, where the path arithmetic loses its precision.
+            return None, _value_range_alarm(item, outside)
+        return segment, None
 
     def advance(self, dt_s: float) -> None:
         """Advance by ``dt_s`` (rounded to whole IPO cycles, remainders carried)."""
@@ -661,3 +693,7 @@ def _outside_position_range(segment: Segment, item: Motion) -> str | None:
 def planned_motion_factory(machine: MachineConfig) -> PlannedMotion:
     """``motion_factory`` for :class:`nck.kernel.Nck`: the real motion system."""
     return PlannedMotion(machine)
+
+
+def _value_range_alarm(item: Motion, axis: str) -> NcAlarmError:
+    return NcAlarmError(ALARM_VALUE_RANGE, axis, file=item.source.file, line=item.source.line, n=item.source.n)
