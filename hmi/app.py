@@ -46,7 +46,7 @@ from nck.commands import Accepted, SubmitResult
 from nck.status import NckStatus
 from nck.termination import TERMINATION_SIGNALS, exit_on_termination
 
-from hmi.area import AreaBase
+from hmi.area import MIN_TERMINAL_SIZE, AreaBase
 from hmi.bridge import NckBridge
 from hmi.dialog import AreaDialog
 from hmi.key_input import PanelTerminalDriver, own_binding
@@ -250,8 +250,17 @@ class HmiApp(MachineControlPanel, App):
         return super().push_screen(screen, callback, wait_for_dismiss)
 
     # -- start ---------------------------------------------------------------------------
+    def on_resize(self, event: events.Resize) -> None:
+        """Below :data:`MIN_TERMINAL_SIZE` every area shows one line with the size needed."""
+        self.show_size_fit(event.size.width, event.size.height)
+
+    def show_size_fit(self, width: int, height: int) -> None:
+        """Set the app's ``-too-small`` class for a terminal of ``width`` × ``height``."""
+        self.set_class(width < MIN_TERMINAL_SIZE[0] or height < MIN_TERMINAL_SIZE[1], "-too-small")
+
     def on_mount(self) -> None:
         """Connect the kernel and open the Machine area."""
+        self.show_size_fit(*self.size)
         self.latest_status = self.bridge.status
         self.bridge.attach(self)
         if self.nc_session is not None and self.bridge.realtime:

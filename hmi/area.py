@@ -41,6 +41,14 @@ if TYPE_CHECKING:
     from hmi.app import HmiApp
 
 
+MIN_TERMINAL_SIZE = (120, 36)
+"""The smallest terminal (columns, rows) the layout reads well in; below it one line says so."""
+
+TOO_SMALL_TEXT = (f"The panel needs a terminal of at least {MIN_TERMINAL_SIZE[0]} × {MIN_TERMINAL_SIZE[1]}"
+                  " characters: please make the window larger.")
+"""Shown instead of the area's windows while the terminal is smaller (app class ``-too-small``)."""
+
+
 class DialogLine(Static):
     """The line above the horizontal softkeys: operator hints and refused commands."""
 
@@ -82,6 +90,7 @@ class AreaBase(BindingsInPlace):
             yield VerticalSoftkeys(id="vsk")
         yield DialogLine("", id="dialog-line", markup=False)
         yield HorizontalSoftkeys(id="hsk")
+        yield Static(TOO_SMALL_TEXT, id="too-small", markup=False)
 
     def compose_content(self) -> ComposeResult:
         """Yield the windows of the area (override)."""
