@@ -29,6 +29,7 @@ ALARM_BELOW_LIMIT = 17080
 ALARM_ABOVE_LIMIT = 17090
 ALARM_UNKNOWN = 12550
 ALARM_WRONG_TYPE = 12150
+ALARM_INDEX = 17020
 
 
 def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: Any,
@@ -36,11 +37,11 @@ def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: 
     """Write setting datum ``name`` (``$SC_WEAR_SIGN``; ``indices`` as programmed) at the
     interpreter's current protection level; ``journal`` receives the undo of the write."""
     store = MachineDataStore(interp.machine, {}, interp.data.setting_data)
-    text = name + (f"[{','.join(str(i) for i in indices)}]" if indices else "")
+    text = name + (f"[{','.join(_index_text(i) for i in indices)}]" if indices else "")
     try:
         ref = store.resolve(text)
-    except UnknownDataError:
-        raise NcAlarmError(ALARM_UNKNOWN, name) from None
+    except UnknownDataError:  # a known name with a bad index or axis is 17020
+        raise NcAlarmError(ALARM_INDEX if store.catalog.get(name) else ALARM_UNKNOWN, name) from None
     definition = ref.definition
     if definition.kind != "sd" or definition.activation != "so":
         raise NcAlarmError(ALARM_WRITE_PROTECTED, name)
@@ -68,3 +69,10 @@ def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: 
             setting_data.pop(key, None)
 
     journal(undo)
+
+
+def _index_text(index: Any) -> str:
+    """An evaluated index as the catalogue spells it: ``2.0`` → ``2``, an axis name as is."""
+    if isinstance(index, float) and index.is_integer():
+        return str(int(index))
+    return str(index)

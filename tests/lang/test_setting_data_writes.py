@@ -81,3 +81,15 @@ def test_the_protection_level_of_the_datum_decides(monkeypatch) -> None:
         interp.step()
     assert data.setting_data["SD42930"] is True
     assert interpret_only  # the headless runner builds its interpreter the same way
+
+
+def test_array_setting_data_take_the_programmed_index() -> None:
+    # SD42160 EXTERN_FIXED_FEEDRATE_F1_F9 has ten elements (003 L645-647 writes them from a
+    # program); an index outside 0 … 9 is 17020.
+    data = NcData()
+    result = run_text("$SC_EXTERN_FIXED_FEEDRATE_F1_F9[2] = 500\nR1 = $SC_EXTERN_FIXED_FEEDRATE_F1_F9[2]\n"
+                      "M30\n", data=data, timeout_s=5.0)
+    assert result.status == "ended", result.alarms
+    assert data.r[1] == 500
+    result = run_text("$SC_EXTERN_FIXED_FEEDRATE_F1_F9[10] = 500\nM30\n", timeout_s=5.0)
+    assert [a.number for a in result.alarms] == [17020]
