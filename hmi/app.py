@@ -187,6 +187,7 @@ class HmiApp(MachineControlPanel, App):
         self.bridge = NckBridge(nck, realtime=realtime)
         self.latest_status: NckStatus | None = None
         self.hint = ""
+        """The message last written on a dialog line (each area keeps its own)."""
         self.internal_errors: list[str] = []
         self.init_panel()
         self._on_quit = on_quit
@@ -316,8 +317,9 @@ class HmiApp(MachineControlPanel, App):
         """
         result = self.bridge.submit(command)
         self.show_snapshot(self.bridge.status)
-        if isinstance(result, Accepted) and self.hint:
-            self.set_hint("")
+        area = self.area_screen
+        if isinstance(result, Accepted) and area is not None and area.area_hint:
+            area.say("")  # the refusal it showed is no longer the last word
         if isinstance(result, Accepted) and isinstance(command, RETAINED_COMMANDS):
             self.save_nc_data()
         return result
@@ -380,13 +382,11 @@ class HmiApp(MachineControlPanel, App):
         self.set_hint(f"{prefix}{message.reason}")
 
     def set_hint(self, text: str) -> None:
-        """Write the dialog line of the current area (and remember it for other areas)."""
+        """Write the dialog line of the current area: the message belongs to that area only."""
         self.hint = text
-        if not self.is_running:
-            return
-        for screen in self.screen_stack:
-            if isinstance(screen, AreaBase):
-                screen.show_hint(text)
+        area = self.area_screen if self.is_running else None
+        if area is not None:
+            area.say(text)
 
     @property
     def area_screen(self) -> AreaBase | None:

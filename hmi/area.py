@@ -78,6 +78,8 @@ class AreaBase(BindingsInPlace):
                  classes: str | None = None) -> None:
         super().__init__(name=name, id=id, classes=classes)
         self.status: NckStatus | None = None
+        self.area_hint = ""
+        """The message on this area's dialog line."""
         self._menu_stack: list[SoftkeyMenu] = []
 
     # -- layout ----------------------------------------------------------------------
@@ -228,17 +230,19 @@ class AreaBase(BindingsInPlace):
                 line.update(text, layout=False)
 
     def say(self, text: str) -> None:
-        """Write ``text`` on the dialog line and keep it when the area is shown again."""
-        setter = getattr(self.hmi, "set_hint", None)
-        if callable(setter):
-            setter(text)
-        else:
-            self.show_hint(text)
+        """Write ``text`` on this area's dialog line and keep it when the area is shown again.
+
+        A message belongs to its area: other areas do not show it, and an area
+        clears it when its cause is gone (a new view, an accepted command).
+        """
+        self.area_hint = text
+        self.hmi.hint = text
+        self.show_hint(text)
 
     def on_mount(self) -> None:
         """Show what is known as soon as the screen exists."""
         self.show_status(self.hmi.latest_status)
-        self.show_hint(self.hmi.hint)
+        self.show_hint(self.area_hint)
 
     def on_screen_resume(self, event: events.ScreenResume | None = None) -> None:
         """Coming back to the area (area key): show the newest snapshot at once.
@@ -250,7 +254,7 @@ class AreaBase(BindingsInPlace):
         Once the area shows the newest snapshot the app may repaint.
         """
         self.show_status(self.hmi.latest_status)
-        self.show_hint(self.hmi.hint)
+        self.show_hint(self.area_hint)
         if event is not None:
             event.refresh_styles = False
             release = getattr(self.app, "release_held_update", None)

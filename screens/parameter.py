@@ -157,7 +157,9 @@ class ParameterScreen(AreaBase):
 
     # -- actions ---------------------------------------------------------------------------------
     def action_show_view(self, view: str) -> None:
-        """Show ``view``."""
+        """Show ``view`` (a message about the view left goes with it)."""
+        if view != self.view:
+            self.say("")
         self.view = view
         self.refresh_table()
         self.refresh_softkeys()

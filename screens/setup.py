@@ -157,7 +157,9 @@ class SetupScreen(AreaBase):
 
     # -- actions -----------------------------------------------------------------------------------
     def action_show_view(self, view: str) -> None:
-        """Show a machine-data list or the password window."""
+        """Show a machine-data list or the password window (a message about the view left goes with it)."""
+        if view != self.view:
+            self.say("")
         self.view = view
         if self.is_mounted:
             table_view = view in MD_VIEWS
