@@ -603,7 +603,8 @@ class Session:
             "programs": programs,
         }
         target = Path(path)
-        atomic_write_text(target, json.dumps(archive, indent=1, sort_keys=True) + "\n")
+        # the archive holds the password hashes too: readable by its owner only, like access.json
+        atomic_write_text(target, json.dumps(archive, indent=1, sort_keys=True) + "\n", private=True)
         return target
 
     def import_archive(self, path: Path | str, include_access: bool = False) -> "Session":

@@ -97,6 +97,8 @@ def test_the_password_file_is_readable_by_its_owner_only(tmp_path: Path) -> None
     session.save()  # a second generation: access.json.bak exists too
     for name in ("access.json", "access.json.bak"):
         assert stat.S_IMODE((tmp_path / "retained" / name).stat().st_mode) == 0o600, name
+    archive = session.export_archive(tmp_path / "export.json")  # holds the hashes too
+    assert stat.S_IMODE(archive.stat().st_mode) == 0o600
     path = tmp_path / "retained" / "access.json"
     path.chmod(0o644)  # written by an older version
     Session.open(tmp_path)
