@@ -23,7 +23,7 @@ CONTROLLER_MODES = {0: "0 position control", 1: "1 speed control", 2: "2 hold", 
 DC_LINK_NOMINAL_V = 600.0
 """The drive model has no DC link: the service drive screen shows the nominal voltage."""
 MOTOR_TEMP_WARN_C = 120.0
-"""Motor temperature warning threshold (MD1602 standard value)."""
+"""Motor temperature warning threshold (SINAMICS p0604, as the 611D MD1602 standard value)."""
 Row = tuple[str, str, str]
 MISSING = "—"
 
@@ -134,24 +134,30 @@ def drive_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
     else:
         setpoint = _extra(axis, "motor_speed_setpoint_rpm")
         actual = _extra(axis, "motor_speed_actual_rpm")
+    # An 828D / 840D sl drives SINAMICS: the enables are the drive's sequence-control
+    # words (r0898 control word, r0899 status word) and the PLC's axis interface
+    # signals, not the SIMODRIVE 611D terminals (64/63/48/112) of the older manuals.
+    # The shared manuals describe only the 611D screen; these names are our choice.
     return [
-        ("Drive enable (terminal 64/63)", _yes(ready), ""),
-        ("Pulse enable (terminal 63/48)", _yes(ready), ""),
-        ("Setup mode (terminal 112): drive disabled", "no", ""),
+        ("ON / OFF1 (r0898.0)", _yes(ready), ""),
+        ("No coast down, OFF2 (r0898.1)", "yes", ""),
+        ("No fast stop, OFF3 (r0898.2)", _yes(ready), ""),
+        ("Enable operation (r0898.3)", _yes(ready), ""),
+        ("Infeed ready, DC link charged (p0864)", "yes", ""),
+        ("Ready for switching on (r0899.0)", "yes", ""),
+        ("Operation enabled (r0899.2)", _yes(ready), ""),
+        ("Pulses enabled (r0899.11)", _yes(ready), ""),
         ("PLC pulse disable (DBX21.7)", "no", ""),
-        ("Speed controller enable NC: OFF", _yes(not ready), ""),
-        ("Ramp-function generator fast stop not active", _yes(ready), ""),
-        ("DC link below warning limit", "no", ""),
-        ("Pulses enabled (DBX93.7)", _yes(ready), ""),
+        ("Pulses enabled to the PLC (DBX93.7)", _yes(ready), ""),
         ("Drive ready (DBX93.5)", _yes(ready), ""),
-        ("DC link voltage (nominal)", _num(DC_LINK_NOMINAL_V, 0), "V"),
-        ("Speed setpoint", _num(setpoint, 1), "rpm"),
-        ("Speed actual value", _num(actual, 1), "rpm"),
+        ("DC link voltage, nominal (r0070)", _num(DC_LINK_NOMINAL_V, 0), "V"),
+        ("Speed setpoint (r0060)", _num(setpoint, 1), "rpm"),
+        ("Speed actual value (r0063)", _num(actual, 1), "rpm"),
         ("Smoothed actual current", _num(current, 1), "%"),
-        ("Motor temperature", _num(temperature, 1), "°C"),
+        ("Motor temperature (r0035)", _num(temperature, 1), "°C"),
         ("Warning: motor temperature", _yes(temperature is not None and temperature > MOTOR_TEMP_WARN_C), ""),
-        ("Warning: power section at i²t limit", _yes(current is not None and current > 100.0), ""),
-        ("Setpoint / actual drive parameter set", "1 / 1", ""),
+        ("Warning: power unit at I²t limit", _yes(current is not None and current > 100.0), ""),
+        ("Drive data set, selected / active (r0051)", "1 / 1", ""),
         ("Operating mode", "main spindle drive" if axis.kind == "spindle" else "feed drive", ""),
     ]
 

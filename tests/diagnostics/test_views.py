@@ -119,3 +119,21 @@ def test_plot_helpers() -> None:
     lines = text.splitlines()
     assert len(lines) == 4 and all(len(line) == 20 for line in lines)
     assert any(ch not in " │" for ch in text)
+
+
+def test_service_drive_rows_name_the_sinamics_signals() -> None:
+    """An 828D / 840D sl drives SINAMICS (issue 18): no SIMODRIVE 611D terminal in the rows.
+
+    The enables are the SINAMICS sequence-control words (r0898 control, r0899 status);
+    the shared manuals describe only the 611D screen, so these names are our choice.
+    """
+    from nck.kernel import Nck
+    from screens.diagnostics_service import drive_rows
+
+    status = Nck().status()
+    names = [name for name, _value, _unit in drive_rows(status, status.axes[0])]
+    assert not [name for name in names if "terminal" in name.lower()], names
+    shown = dict((name, value) for name, value, _unit in drive_rows(status, status.axes[0]))
+    assert shown["Pulses enabled (r0899.11)"] == "yes"
+    assert shown["Operation enabled (r0899.2)"] == "yes"
+    assert shown["ON / OFF1 (r0898.0)"] == "yes"
