@@ -27,6 +27,7 @@ def _feeds(md22920: bool, program: str = PROGRAM) -> list[tuple[int, float | Non
 
 
 def test_f0_to_f9_take_the_setting_data_when_md22920_is_set() -> None:
+    """Digest iso-dialects-840d rank 8 and iso-milling-828d rank 8."""
     # 003 L639-641: with MD22920 = TRUE F0…F9 come from SD42160[n]: F1 = 1000, F2 = 500;
     # F2. (with a decimal point) is an ordinary feed of 2 mm/min (own choice: only the
     # single digits without a point are the fixed feedrates).
@@ -40,6 +41,7 @@ def test_f1_to_f9_are_ordinary_feeds_without_md22920() -> None:
 
 
 def test_f0_without_md22920_is_14800() -> None:
+    """Digest iso-milling-828d rank 2 and rank 8."""
     # 003 L629-631: F0 without the fixed-feedrate function → 14800 (path velocity <= 0).
     result = _run(False, "N10 G01 X10. F0\nM30\n")
     assert [a.number for a in result.alarms] == [14800]
