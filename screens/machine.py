@@ -374,8 +374,9 @@ class MachineScreen(AreaBase):
             text.append("  continuous\n", style="bold")
         text.append(f"\n Selected axis: {app.selected_axis or '—'}      "
                     f"Rapid overlay: {'ON' if app.rapid_overlay else 'off'}\n")
-        text.append(" Keys: Alt+X/Y/Z/C/V axis   Ctrl+Right / Ctrl+Left traverse   Alt+W rapid   "
-                    "Alt+I increment   Alt+R REF   Alt+E REPOS\n", style="dim")
+        # Two lines: one would wrap at the 120-column minimum (the window is 104 wide there).
+        text.append(" Keys: Alt+X/Y/Z/C/V axis   Ctrl+Right / Ctrl+Left traverse   Alt+W rapid\n"
+                    "       Alt+I increment   Alt+R REF   Alt+E REPOS\n", style="dim")
         return text
 
     def _auto_title(self, status: NckStatus) -> Text:
