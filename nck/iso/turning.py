@@ -524,7 +524,9 @@ def _preset(address: dict[str, Word], modal: Any, value: Callable[[Word], float]
         blocks.append(f"LIMS={_fmt(value(address['S']))}")
     axes = [(a, address[a]) for a in ("X", "Z") if a in address]
     if axes:
-        parts = " ".join(f"{a}=$P_EP[{a}]-({_fmt(value(w))})" for a, w in axes)
+        # Frames are radii on the transverse axis (002 L32672-32684): X (a diameter) halved.
+        parts = " ".join(f"{a}=($P_EP[{a}]-({_fmt(value(w))}))/2" if a == "X" else
+                         f"{a}=$P_EP[{a}]-({_fmt(value(w))})" for a, w in axes)
         blocks.append("ATRANS " + parts)
         lathe: LatheState = modal.lathe
         if len(axes) == 2:
