@@ -9,6 +9,7 @@ mypy's cache lives in the virtual environment: only changed modules are checked 
 from __future__ import annotations
 
 import hashlib
+import importlib.util
 import subprocess
 import sys
 import tempfile
@@ -29,6 +30,7 @@ def cache_dir() -> Path:
 
 def mypy_errors(target: str = "nck", cwd: Path = ROOT, cache: str = "nck") -> list[str]:
     """The ``error:`` lines mypy reports on ``target`` (relative to ``cwd``) with the project's settings."""
+    assert importlib.util.find_spec("mypy"), "mypy is missing: run `make .venv/.installed` (the test extra pins it)"
     completed = subprocess.run(
         [
             *(sys.executable, "-m", "mypy", "--config-file", str(ROOT / "pyproject.toml")),
@@ -40,7 +42,7 @@ def mypy_errors(target: str = "nck", cwd: Path = ROOT, cache: str = "nck") -> li
         text=True,
         check=False,
     )
-    assert completed.returncode in (0, 1), completed.stderr or completed.stdout
+    assert completed.returncode in (0, 1) and not completed.stderr, completed.stderr or completed.stdout
     return [line for line in completed.stdout.splitlines() if ": error:" in line]
 
 
