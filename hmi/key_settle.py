@@ -30,8 +30,11 @@ from textual.widget import Widget
 SETTLE_ROUNDS = 12
 """At most this many rounds of messages caused by one key are waited for (bubbling, a dialog closing)."""
 
-SETTLE_LIMIT_S = 0.25
-"""A round that takes longer than this (a widget removed before it handled its queue) is not waited for."""
+SETTLE_LIMIT_S = 2.0
+"""A round is waited for at most this long (an area built on its first visit can take a while)."""
+
+SETTLE_POLL_S = 0.05
+"""While waiting, markers of widgets removed meanwhile (they never handle them) are given up this often."""
 
 
 def _busy_pumps(app: App, widget: Widget, first: bool) -> list[MessagePump]:
@@ -57,15 +60,20 @@ async def wait_until_handled(app: App, widget: Widget) -> None:
     """
     loop = asyncio.get_running_loop()
     for round_number in range(SETTLE_ROUNDS):
-        markers = []
+        markers: dict[asyncio.Future[None], MessagePump] = {}
         for pump in _busy_pumps(app, widget, first=round_number == 0):
             marker = loop.create_future()
             if pump.call_later(_reached, marker):
-                markers.append(marker)
+                markers[marker] = pump
         if not markers:
             return
-        _, pending = await asyncio.wait(markers, timeout=SETTLE_LIMIT_S)
-        if pending:
+        waited_s = 0.0
+        while markers and waited_s < SETTLE_LIMIT_S:
+            _, pending = await asyncio.wait(markers, timeout=SETTLE_POLL_S)
+            waited_s += SETTLE_POLL_S
+            markers = {marker: pump for marker, pump in markers.items()
+                       if marker in pending and getattr(pump, "is_attached", True)}
+        if markers:
             return
 
 
