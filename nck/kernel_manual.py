@@ -82,9 +82,11 @@ class ManualControl:
                 return Accepted()
             self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
         elif function == "INC":
-            distance = direction * self._increment_mm()
-            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
-            self._jog_targets[axis] = self._jog_targets.get(axis, position) + distance
+            # A press while an increment still runs adds its increment to that target:
+            # every press is one increment (keymap), none cut short by the next.
+            target = self._jog_targets.get(axis, position) + direction * self._increment_mm()
+            self.motion.jog_increment(axis, target - position, self._jog_velocity(axis, command.rapid))
+            self._jog_targets[axis] = target
         else:
             self.motion.jog_continuous(axis, direction, self._jog_velocity(axis, command.rapid))
         self._jog_rest.clear()
