@@ -325,7 +325,7 @@ class MachineScreen(AreaBase):
             show_text(self.query_one("#auto-title", Static), self._auto_title(status))
             program = (self.hmi.program_text(channel.selected_program)
                        if channel.selected_program else None)
-            self.query_one("#auto-blocks", BlockWindow).show(channel, program)
+            self.query_one("#auto-blocks", BlockWindow).show(channel, program, status.alarms)
         elif view_id == "view-gfunc":
             self.query_one(GFunctionsTable).show(channel.modal.gcodes, getattr(channel.modal, "iso_gcodes", None))
         elif view_id == "view-aux":

@@ -7,7 +7,7 @@ from typing import Sequence
 from rich.text import Text
 from textual.widgets import Static
 
-from nck.status import BlockView, ChannelStatus
+from nck.status import AlarmEntry, BlockView, ChannelStatus
 
 from hmi.program_lines import ProgramLines
 
@@ -66,6 +66,21 @@ def program_window(program: ProgramLines, current: BlockView | None, height: int
     return _window_text(views, position if current is not None else None)
 
 
+def marked_block(channel: ChannelStatus, alarms: Sequence[AlarmEntry] = ()) -> BlockView | None:
+    """The block the ▶ marks: the one in execution or, stopped by an alarm, the block that raised it.
+
+    An alarm found while a block is prepared names that block, not the one still
+    in execution (issue 18: the ▶ stood on the block before the faulty one).
+    """
+    current = channel.current_block
+    if channel.stop_reason != "alarm":
+        return current
+    for alarm in sorted(alarms, key=lambda a: a.seq, reverse=True):
+        if alarm.line is not None and alarm.file:
+            return BlockView(alarm.file, alarm.line, "")
+    return current
+
+
 class BlockWindow(Static):
     """The blocks of the selected (or MDA) program; the current block highlighted.
 
@@ -79,9 +94,10 @@ class BlockWindow(Static):
         self.height_lines = height_lines
         self._key: object = None
 
-    def show(self, channel: ChannelStatus, program: ProgramLines | None = None) -> None:
-        """Redraw when the program or the current block changed."""
-        current = channel.current_block
+    def show(self, channel: ChannelStatus, program: ProgramLines | None = None,
+             alarms: Sequence[AlarmEntry] = ()) -> None:
+        """Redraw when the program or the marked block (:func:`marked_block`) changed."""
+        current = marked_block(channel, alarms)
         if program is not None and (current is None or _same_file(current.file, program.name)):
             key: object = (id(program), current, self.height_lines)
             if key != self._key:
