@@ -24,6 +24,7 @@ class ManualControl:
 
     machine: Any
     motion: Any
+    _jog_targets: dict[str, float]  # axis -> MCS end of the increments pressed so far
 
     def _select_machine_function(self, command: cmd.SelectMachineFunction) -> SubmitResult:
         function = command.function.upper() if command.function else None
