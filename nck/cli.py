@@ -4,13 +4,16 @@
 is dispatched to its own module when present. Exit codes: 0 ok, 1 alarm or
 problems found, 2 command line / file problem, 3 timeout (``nck run``: one hour of
 simulated time unless ``--timeout`` says otherwise; ``nck check``: a program not ended
-after ``--max-blocks``, default 200,000 blocks).
+after ``--max-blocks``, default 200,000 blocks), 141 the reader of the standard output
+went away (``nck run --segments - P | head``): the command ends quietly, as a Unix tool
+ended by SIGPIPE.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from pathlib import Path
@@ -29,6 +32,8 @@ from nck.termination import exit_on_termination
 wait_s = time.sleep
 """How the command line waits after a wrong --password (tests replace it)."""
 DEFAULT_RUN_TIMEOUT_S = 3600.0  # one hour of machine time: a bound for endless loops, not for parts
+STDOUT_CLOSED_EXIT = 141
+"""Exit code when the reader of stdout went away: 128 + SIGPIPE, what a shell reports for such tools."""
 
 
 class CliError(Exception):
@@ -84,7 +89,24 @@ def main(argv: list[str] | None = None) -> int:
     so a temporary copy of the data directory is removed and the lock given free.
     """
     with exit_on_termination():
-        return _main(sys.argv[1:] if argv is None else list(argv))
+        try:
+            return _main(sys.argv[1:] if argv is None else list(argv))
+        except BrokenPipeError:
+            return _stdout_closed()
+
+
+def _stdout_closed() -> int:
+    """End quietly after the reader of stdout went away (``| head``); return the exit code.
+
+    The rest of the output goes nowhere: stdout is pointed at the null device, so
+    the interpreter's final flush cannot fail again with a message.
+    """
+    null = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(null, sys.stdout.fileno())
+    finally:
+        os.close(null)
+    return STDOUT_CLOSED_EXIT
 
 
 def _main(args: list[str]) -> int:
@@ -118,6 +140,8 @@ def _main(args: list[str]) -> int:
     except MachineFileError as exc:
         print(f"nck: {exc}", file=sys.stderr)
         return 2
+    except BrokenPipeError:
+        raise  # the reader went away: not a bug (see main)
     except Exception as exc:  # noqa: BLE001 - a bug must still not show a traceback to the user
         print(f"ALARM 1 - - Internal error: {type(exc).__name__}: {exc}", file=sys.stderr)
         return 1
