@@ -75,7 +75,7 @@ CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
         # circle of 2 modules: nck.access, nck.machine_data
         ("nck.access", "nck.machine_data"),
         ("nck.machine_data", "nck.access"),
-        # circle of 17 modules across nck.interp and nck.iso (interp asks iso at load and run time)
+        # circle of 16 modules across nck.interp and nck.iso (interp asks iso at load and run time)
         ("nck.interp.block_run", "nck.interp.frames"),
         ("nck.interp.block_run", "nck.interp.interpreter"),
         ("nck.interp.block_run", "nck.interp.program"),
@@ -103,7 +103,6 @@ CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
         ("nck.interp.program", "nck.iso.loader"),
         ("nck.interp.program_text", "nck.interp.program"),
         ("nck.interp.sysvars", "nck.iso.macros"),
-        ("nck.interp.sysvars", "nck.iso.tool_offsets"),
         ("nck.iso", "nck.iso.macros"),
         ("nck.iso", "nck.iso.translate"),
         ("nck.iso.dwell", "nck.iso.translate"),
@@ -115,11 +114,9 @@ CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
         ("nck.iso.macros", "nck.iso.translate"),
         ("nck.iso.subprograms", "nck.interp.frames"),
         ("nck.iso.subprograms", "nck.interp.interpreter"),
-        ("nck.iso.tool_offsets", "nck.iso.translate"),
         ("nck.iso.translate", "nck.iso.dwell"),
         ("nck.iso.translate", "nck.iso.macros"),
         ("nck.iso.translate", "nck.iso.subprograms"),
-        ("nck.iso.translate", "nck.iso.tool_offsets"),
         ("nck.iso.translate", "nck.iso.turning"),
         ("nck.iso.turning", "nck.iso.translate"),
         # circle of 3 modules: nck.motion.servo, nck.motion.servo_defer, nck.motion.servo_paths
@@ -132,29 +129,5 @@ CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
 )
 """Import edges that lie on a circle (inside a strongly connected component)."""
 
-PRIVATE_IMPORTS: frozenset[tuple[str, str, str]] = frozenset(
-    {
-        ("nck.geometry.chain", "nck.geometry.frames", "_as_matrix3"),
-        ("nck.geometry.contour_aids", "nck.geometry.circles", "_plane_arc"),
-        ("nck.geometry.frame_vars", "nck.geometry.frames", "_as_matrix3"),
-        ("nck.geometry.rounding_distance", "nck.geometry.contour_aids", "_Flat"),
-        ("nck.geometry.rounding_distance", "nck.geometry.contour_aids", "_turn"),
-        ("nck.interp.interpreter", "nck.lang.parser", "_Parser"),
-        ("nck.interp.plain_run", "nck.geometry.path_builder", "_end_tangent"),
-        ("nck.interp.plain_setup", "nck.geometry.path_builder", "_couples_axes"),
-        ("nck.interp.plain_step", "nck.geometry.path_builder", "_end_tangent"),
-        ("nck.iso.frames", "nck.geometry.frames", "_as_matrix3"),
-        ("nck.iso.macros", "nck.iso.translate", "_SIMPLE_G"),
-        ("nck.iso.macros", "nck.iso.translate", "_fmt"),
-        ("nck.iso.macros", "nck.iso.translate", "_g_name"),
-        ("nck.iso.macros", "nck.iso.translate", "_translate_words"),
-        ("nck.iso.tool_offsets", "nck.iso.translate", "_fmt"),
-        ("nck.iso.turning", "nck.iso.cycles", "_fmt"),
-        ("nck.iso.turning", "nck.iso.translate", "_g_name"),
-        ("nck.iso.turning", "nck.iso.translate", "_translate_words"),
-        ("nck.iso.turning", "nck.iso.translate", "_value"),
-        ("nck.iso.turning_contour", "nck.iso.cycles", "_fmt"),
-        ("nck.iso.turning_cycles", "nck.iso.cycles", "_fmt"),
-    }
-)
+PRIVATE_IMPORTS: frozenset[tuple[str, str, str]] = frozenset()
 """(importer, module, name) of every ``_private`` name imported from another module."""

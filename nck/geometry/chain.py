@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from nck.geometry.frames import Frame, rpy_matrix, _as_matrix3
+from nck.geometry.frames import Frame, rpy_matrix, as_matrix3
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT
 from nck.geometry.transform import Transform
 from nck.ncdata import WorkOffset
@@ -45,7 +45,7 @@ def frame_from_work_offset(
         geometry_axes=geometry_axes,
         trans={a: float(v) * data_mm for a, v in offset.trans.items()},
         fine={a: float(v) * data_mm for a, v in offset.fine.items()},
-        rotation=_as_matrix3(rpy_matrix((angles[0], angles[1], angles[2]))),
+        rotation=as_matrix3(rpy_matrix((angles[0], angles[1], angles[2]))),
         scale={a: float(v) for a, v in offset.scale.items() if float(v) != 0.0},
         mirror=frozenset(a for a, flag in offset.mirror.items() if flag),
     )

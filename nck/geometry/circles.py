@@ -150,7 +150,7 @@ def _ccw_angle(from_vec: Vec2, to_vec: Vec2) -> float:
     return 0.0 if abs(delta - TWO_PI) < 1e-12 else delta
 
 
-def _plane_arc(
+def plane_arc(
     plane: Plane, start: Vec3, end: Vec3, center_ao: Vec2, clockwise: bool, turns: int
 ) -> Arc:
     """Assemble an arc in ``plane`` from a centre that is already consistent with the end."""
@@ -203,7 +203,7 @@ def arc_from_center(
     chord = math.hypot(e[0] - s[0], e[1] - s[1])
     if chord >= POINT_EPS and abs(r_start - r_end) > 1e-12:
         center = _center_on_bisector(s, e, r_start, near=center_ao)
-    return _plane_arc(plane, start, end, center, clockwise, turns)
+    return plane_arc(plane, start, end, center, clockwise, turns)
 
 
 def _center_on_bisector(s: Vec3 | Vec2, e: Vec3 | Vec2, radius: float, near: Vec2) -> Vec2:
@@ -255,7 +255,7 @@ def arc_from_radius(
     nx, ny = -dy / chord, dx / chord
     sign = 1.0 if left else -1.0
     center = (s[0] + dx / 2.0 + sign * nx * dist, s[1] + dy / 2.0 + sign * ny * dist)
-    return _plane_arc(plane, start, end, center, clockwise, turns)
+    return plane_arc(plane, start, end, center, clockwise, turns)
 
 
 def arc_from_end_and_angle(
@@ -286,7 +286,7 @@ def arc_from_end_and_angle(
     sign = -1.0 if clockwise else 1.0
     nx, ny = -dy / chord, dx / chord
     center = (s[0] + dx / 2.0 + sign * nx * dist, s[1] + dy / 2.0 + sign * ny * dist)
-    return _plane_arc(plane, start, end, center, clockwise, turns)
+    return plane_arc(plane, start, end, center, clockwise, turns)
 
 
 def arc_from_center_and_angle(
@@ -316,7 +316,7 @@ def arc_from_center_and_angle(
     eo = center_ao[1] + rx * si + ry * c
     ep = s[2] if end_applicate is None else float(end_applicate)
     end = plane.from_plane((ea, eo, ep))
-    arc = _plane_arc(plane, start, end, center_ao, clockwise, turns)
+    arc = plane_arc(plane, start, end, center_ao, clockwise, turns)
     if angle_deg >= 360.0 - 1e-9:
         arc = Arc(arc.start, arc.end, arc.center, arc.axis, arc.radius, TWO_PI * (1 + turns), turns)
     return arc
@@ -394,7 +394,7 @@ def arc_tangential(plane: Plane, start: Vec3, end: Vec3, tangent: Vec3, turns: i
         raise NcAlarmError(ALARM_TANGENTIAL_CIRCLE)
     k = (da * da + do * do) / (2.0 * across)  # signed distance of the centre along the normal
     center = (s[0] + k * na, s[1] + k * no)
-    return _plane_arc(plane, start, end, center, clockwise=k < 0, turns=turns)
+    return plane_arc(plane, start, end, center, clockwise=k < 0, turns=turns)
 
 
 def end_tangent_of_line(start: Vec3, end: Vec3) -> Vec3:

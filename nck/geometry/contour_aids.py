@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 
 from nck.errors import NcAlarmError
-from nck.geometry.circles import Arc, _plane_arc
+from nck.geometry.circles import Arc, plane_arc
 from nck.geometry.planes import Plane
 
 ALARM_CHAMFER_NEGATIVE = 16500  # chamfer or rounding negative
@@ -56,7 +56,7 @@ class Corner:
 
 
 # --- element helpers (plane coordinates) ---------------------------------------------------
-class _Flat:
+class FlatElement:
     """An element seen in the plane: a line or an arc, with the applicate kept linear."""
 
     def __init__(self, plane: Plane, element: Element) -> None:
@@ -130,7 +130,7 @@ class _Flat:
         return Arc(start, end, center, arc.axis, self.radius, sweep, 0)
 
 
-def _chord_point_back(flat: _Flat, dist: float) -> float | None:
+def _chord_point_back(flat: FlatElement, dist: float) -> float | None:
     """Arc length from the start of the point at straight distance ``dist`` before the end."""
     if flat.center is None:
         return flat.length - dist if dist <= flat.length + 1e-12 else None
@@ -140,7 +140,7 @@ def _chord_point_back(flat: _Flat, dist: float) -> float | None:
     return flat.length - u if u <= flat.length + 1e-12 else None
 
 
-def _chord_point_forward(flat: _Flat, dist: float) -> float | None:
+def _chord_point_forward(flat: FlatElement, dist: float) -> float | None:
     """Arc length from the start of the point at straight distance ``dist`` after the start."""
     if flat.center is None:
         return dist if dist <= flat.length + 1e-12 else None
@@ -150,7 +150,8 @@ def _chord_point_forward(flat: _Flat, dist: float) -> float | None:
     return u if u <= flat.length + 1e-12 else None
 
 
-def _turn(first: _Flat, second: _Flat) -> float:
+def corner_turn(first: FlatElement, second: FlatElement) -> float:
+    """(cross, dot) of the end tangent of ``first`` and the start tangent of ``second`` in the plane."""
     t1 = first.tangent(first.length)
     t2 = second.tangent(0.0)
     return t1[0] * t2[1] - t1[1] * t2[0], t1[0] * t2[0] + t1[1] * t2[1]  # type: ignore[return-value]
@@ -169,8 +170,8 @@ def chamfer(plane: Plane, first: Element, second: Element, size: float, kind: st
         NcAlarmError: 16500 for a negative size.
     """
     _check(size)
-    f, s = _Flat(plane, first), _Flat(plane, second)
-    cross, dot = _turn(f, s)
+    f, s = FlatElement(plane, first), FlatElement(plane, second)
+    cross, dot = corner_turn(f, s)
     if size == 0.0 or (abs(cross) < TANGENT_EPS and dot > 0):
         return Corner(first, None, second)
 
@@ -235,8 +236,8 @@ def rounding(plane: Plane, first: Element, second: Element, radius: float) -> Co
         NcAlarmError: 16500 for a negative radius.
     """
     _check(radius)
-    f, s = _Flat(plane, first), _Flat(plane, second)
-    cross, dot = _turn(f, s)
+    f, s = FlatElement(plane, first), FlatElement(plane, second)
+    cross, dot = corner_turn(f, s)
     if radius == 0.0 or abs(cross) < TANGENT_EPS:
         return Corner(first, None, second)
     side = 1.0 if cross > 0 else -1.0
@@ -259,13 +260,13 @@ def rounding(plane: Plane, first: Element, second: Element, radius: float) -> Co
     centre, u1, u2 = found
     a = f.trimmed(0.0, u1)
     b = s.trimmed(u2, s.length)
-    arc = _plane_arc(plane, a.end, b.start, centre, clockwise=side < 0, turns=0)
+    arc = plane_arc(plane, a.end, b.start, centre, clockwise=side < 0, turns=0)
     if arc.sweep_rad > math.pi * 2 - 1e-9:  # zero-length rounding (degenerate): drop it
         return Corner(first, None, second)
     return Corner(a, arc, b)
 
 
-def _foot(flat: _Flat, point: Vec2) -> Vec2:
+def _foot(flat: FlatElement, point: Vec2) -> Vec2:
     if flat.center is None:
         u = flat.param_of(point)
         dx, dy = flat.e[0] - flat.s[0], flat.e[1] - flat.s[1]
@@ -276,7 +277,7 @@ def _foot(flat: _Flat, point: Vec2) -> Vec2:
     return (cx + (point[0] - cx) * flat.radius / d, cy + (point[1] - cy) * flat.radius / d)
 
 
-def _offset(flat: _Flat, side: float, r: float):
+def _offset(flat: FlatElement, side: float, r: float):
     """The element moved sideways by ``r`` (left for side=+1): ('line', p, d) or ('circle', c, R)."""
     if flat.center is None:
         t = flat.tangent(0.0)
@@ -286,7 +287,7 @@ def _offset(flat: _Flat, side: float, r: float):
     return ("circle", flat.center, radius)
 
 
-def _offset_intersection(f: _Flat, s: _Flat, side: float, r: float, near: Vec2) -> Vec2 | None:
+def _offset_intersection(f: FlatElement, s: FlatElement, side: float, r: float, near: Vec2) -> Vec2 | None:
     points = _intersect(_offset(f, side, r), _offset(s, side, r))
     if not points:
         return None

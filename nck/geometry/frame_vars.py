@@ -21,7 +21,7 @@ from typing import Any
 
 from nck.errors import NcAlarmError
 from nck.geometry.chain import frame_from_work_offset
-from nck.geometry.frames import Frame, _as_matrix3, rpy_matrix
+from nck.geometry.frames import Frame, as_matrix3, rpy_matrix
 from nck.ncdata import WorkOffset
 
 COMPONENTS = frozenset(("TR", "FI", "RT", "SC", "MI"))
@@ -295,7 +295,7 @@ def _set_component(frame: Frame, axis: str, comp: str, value: float, length_mm: 
             raise NcAlarmError(14092, axis)
         angles = list(frame.rotation_deg)
         angles[geo.index(axis)] = value
-        return frame._replace(rotation=_as_matrix3(rpy_matrix((angles[0], angles[1], angles[2]))))
+        return frame._replace(rotation=as_matrix3(rpy_matrix((angles[0], angles[1], angles[2]))))
     if comp == "SC":
         if value == 0.0:
             raise NcAlarmError(ALARM_SCALE_ZERO, axis)

@@ -54,7 +54,8 @@ IDENTITY3: Matrix3 = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
 ANGLE_TOL_DEG = 1e-9
 
 
-def _as_matrix3(array: np.ndarray) -> Matrix3:
+def as_matrix3(array: np.ndarray) -> Matrix3:
+    """The upper-left 3x3 block of ``array`` as a tuple of float rows."""
     rows = [tuple(float(v) for v in array[i]) for i in range(3)]
     return (rows[0], rows[1], rows[2])  # type: ignore[return-value]
 
@@ -161,13 +162,13 @@ class Frame:
                 raise NcAlarmError(ALARM_WRONG_AXIS_TYPE, axis)
             angles[geometry_axes.index(axis)] = float(value)
         matrix = rpy_matrix((angles[0], angles[1], angles[2]))
-        return cls(geometry_axes=geometry_axes, rotation=_as_matrix3(matrix))
+        return cls(geometry_axes=geometry_axes, rotation=as_matrix3(matrix))
 
     @classmethod
     def crpl(cls, plane: Plane, angle_deg: float) -> "Frame":
         """``ROT RPL=…`` / ``CRPL``: rotation in the plane, about its applicate (right-hand rule)."""
         matrix = axis_rotation(plane.indices[2], float(angle_deg))
-        return cls(geometry_axes=plane.geometry_axes, rotation=_as_matrix3(matrix))
+        return cls(geometry_axes=plane.geometry_axes, rotation=as_matrix3(matrix))
 
     @classmethod
     def cscale(
@@ -260,7 +261,7 @@ class Frame:
         for axis, value in other.scale.items():
             scale[axis] = float(scale.get(axis, 1.0)) * float(value)
         mirror = self.mirror ^ other.mirror
-        return Frame(geo, _clean(trans), _clean(fine), _as_matrix3(rotation), scale, mirror)
+        return Frame(geo, _clean(trans), _clean(fine), as_matrix3(rotation), scale, mirror)
 
     # --- programmable-frame commands --------------------------------------------------------
     def atrans(self, values: Mapping[str, float]) -> "Frame":

@@ -311,7 +311,7 @@ class PathBuilder:
         start_mcs = dict(modal.position_mcs)
         geo.wcs_mm = end
         out = path_aids.with_contour_aids(self, words, geo, pl, element, context, start_mcs, units)
-        geo.tangent = _end_tangent(element)
+        geo.tangent = end_tangent(element)
         modal.position_wcs = self.wcs_view(geo, modal)
         modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
         return out
@@ -540,7 +540,7 @@ class PathBuilder:
 
     def _kept_axes(self, context: Mapping[str, Any]) -> tuple[str, ...]:
         """Path axes a block leaves where they stand: not programmed, not coupled by a rotation."""
-        coupled = _couples_axes(context["transform"])
+        coupled = couples_axes(context["transform"])
         return tuple(a for a in self.path_axes
                      if a not in context["programmed"] and (a not in self.geo_axes or not coupled))
 
@@ -594,7 +594,7 @@ class PathBuilder:
             transform: Transform = context["transform"]
             applicate = plane(context["plane"], self.geo_axes).applicate
             if applicate in self.path_axes and applicate not in context["programmed"] \
-                    and not _couples_axes(transform):
+                    and not couples_axes(transform):
                 centre_point[applicate] = start_mcs.get(applicate, centre_point[applicate])
             center_mcs = centre_point
             normal = _map_normal(transform, element.axis)
@@ -673,7 +673,8 @@ class PathBuilder:
         modal.position_wcs = self.wcs_view(geo, modal)
 
 
-def _couples_axes(transform: Transform) -> bool:
+def couples_axes(transform: Transform) -> bool:
+    """True when the linear part of ``transform`` mixes axes (a rotation, not only scaling/mirroring)."""
     m = transform.matrix[:3, :3]
     return bool(np.any(np.abs(m - np.diag(np.diag(m))) > 1e-12))
 
@@ -688,7 +689,8 @@ def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[
     return {names[i]: _r(n[i]) for i in range(3)}
 
 
-def _end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:
+def end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:
+    """The unit direction at the end of ``element``; ``None`` for a line of no (or no finite) length."""
     if isinstance(element, Arc):
         return element.tangent_at(1.0)
     d = [float(e) - float(s) for e, s in zip(element.end, element.start)]

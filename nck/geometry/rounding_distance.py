@@ -39,7 +39,7 @@ from typing import Any
 
 from nck import canon
 
-from nck.geometry.contour_aids import TANGENT_EPS, Corner, Element, _Flat, _turn, rounding
+from nck.geometry.contour_aids import TANGENT_EPS, Corner, Element, FlatElement, corner_turn, rounding
 from nck.geometry.planes import Plane
 
 SHORT_BLOCK_FACTOR = 4.0  # blocks shorter than this many distances keep 60 %
@@ -91,8 +91,8 @@ def transition_mm(pending: Any, context: dict[str, Any], geo: Any) -> float:
 
 def round_by_distance(plane: Plane, first: Element, second: Element, distance_mm: float) -> Corner:
     """The corner with a tangent circle reaching at most ``distance_mm`` into each element."""
-    f, s = _Flat(plane, first), _Flat(plane, second)
-    cross, dot = _turn(f, s)
+    f, s = FlatElement(plane, first), FlatElement(plane, second)
+    cross, dot = corner_turn(f, s)
     if distance_mm <= 0.0 or abs(cross) < TANGENT_EPS:
         return Corner(first, None, second)  # no distance, tangent, or a reversal
     reach = min(_limited(distance_mm, f.length), _limited(distance_mm, s.length))
@@ -122,10 +122,10 @@ def _limited(distance_mm: float, length_mm: float) -> float:
     return distance_mm if length_mm >= SHORT_BLOCK_FACTOR * distance_mm else KEPT_SHARE * length_mm
 
 
-def _fits(plane: Plane, f: _Flat, s: _Flat, cut: Corner, reach: float) -> bool:
+def _fits(plane: Plane, f: FlatElement, s: FlatElement, cut: Corner, reach: float) -> bool:
     """True when the rounding exists and takes at most ``reach`` of path from each element."""
     if cut.inserted is None:
         return False
-    taken_first = f.length - _Flat(plane, cut.first).length
-    taken_second = s.length - _Flat(plane, cut.second).length
+    taken_first = f.length - FlatElement(plane, cut.first).length
+    taken_second = s.length - FlatElement(plane, cut.second).length
     return taken_first <= reach + 1e-9 and taken_second <= reach + 1e-9

@@ -176,9 +176,9 @@ class Interpreter:
     def variable(self, name: str) -> Any:
         """Value of a variable visible at the current level (``R5``, ``COUNT``, ``ARR[1]``)."""
         from nck.lang.lexer import tokenize
-        from nck.lang.parser import _Parser
+        from nck.lang.parser import BlockParser
 
-        expr = _Parser(tokenize(name)).expression()
+        expr = BlockParser(tokenize(name)).expression()
         return evaluate(expr, VariableScope(self))
 
     def sync_position(self, position_mcs: Mapping[str, float]) -> None:

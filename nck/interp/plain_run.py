@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from nck.geometry.contour_aids import LineElement
-from nck.geometry.path_builder import _end_tangent
+from nck.geometry.path_builder import end_tangent
 from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, r_round, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_WORDS
 
@@ -99,7 +99,7 @@ class PlainBatch:
         for i, axis in enumerate(GEOMETRY):
             wcs[axis] = float(end[i])
         geo.wcs_mm = wcs
-        geo.tangent = _end_tangent(LineElement(tuple(float(v) for v in before),  # type: ignore[arg-type]
+        geo.tangent = end_tangent(LineElement(tuple(float(v) for v in before),  # type: ignore[arg-type]
                                                (wcs["X"], wcs["Y"], wcs["Z"])))
         mcs = self.mcs_mm[moves - 1]
         modal.position_mcs = {axis: float(mcs[i]) for i, axis in enumerate(self.axes)}

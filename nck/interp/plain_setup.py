@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from nck.errors import NcAlarmError
-from nck.geometry.path_builder import _couples_axes
+from nck.geometry.path_builder import couples_axes
 from nck.geometry.trc_canon import STAGE_ATTRIBUTE
 from nck.geometry.units import UnitSystem
 from nck.interp.program_text import TextLines
@@ -169,7 +169,7 @@ def axis_affine(transform: Any) -> tuple[tuple[float, float, float], tuple[float
     matrix = transform.matrix
     linear = matrix[:3, :3]
     found: Any = None
-    if not (_couples_axes(transform) or np.count_nonzero(linear - np.diag(np.diag(linear)))
+    if not (couples_axes(transform) or np.count_nonzero(linear - np.diag(np.diag(linear)))
             or np.count_nonzero(matrix[3] - (0.0, 0.0, 0.0, 1.0))):
         scale = (float(matrix[0, 0]), float(matrix[1, 1]), float(matrix[2, 2]))
         offset = (float(matrix[0, 3]), float(matrix[1, 3]), float(matrix[2, 3]))

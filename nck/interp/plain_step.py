@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from nck import canon
 from nck.geometry.contour_aids import LineElement
-from nck.geometry.path_builder import _end_tangent
+from nck.geometry.path_builder import end_tangent
 from nck.interp.api import BlockResult
 from nck.interp.plain_setup import (BLOCK_COST_S, GEOMETRY, Setup, machine_axes, plain_frame, r_round,
                                     simple_setup)
@@ -105,7 +105,7 @@ def _move(interp: Interpreter, setup: Setup, source: canon.Source, kind: int,
     end_mcs = {axis: machine_geo[axis] if axis in machine_geo else r_round(start_mcs.get(axis, 0.0))
                for axis in setup.axes}
     geo.wcs_mm = end
-    geo.tangent = _end_tangent(LineElement(
+    geo.tangent = end_tangent(LineElement(
         (float(start.get("X", 0.0)), float(start.get("Y", 0.0)), float(start.get("Z", 0.0))),
         (float(end["X"]), float(end["Y"]), float(end["Z"]))))
     modal.position_wcs = _wcs_view(interp, setup, end)

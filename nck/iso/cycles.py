@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 
 INITIAL_Z = "ISO_ZINIT"
 R_PLANE_Z = "ISO_ZR"
@@ -29,11 +30,6 @@ class CycleState:
     params: dict[str, float] = field(default_factory=dict)
     initial_captured: bool = False
     return_to_r: bool = False  # G99
-
-
-def _fmt(value: float) -> str:
-    text = f"{value:.6f}".rstrip("0").rstrip(".")
-    return text if text not in ("-0", "") else "0"
 
 
 def peck_depths(total_mm: float, step_mm: float) -> list[float]:
@@ -67,12 +63,12 @@ def expand(state: CycleState, absolute: bool, hole: list[str], feed: str | None,
     r_value = params.get("R")
     z_value = params["Z"]
     if absolute:
-        r_expr = _fmt(r_value) if r_value is not None else INITIAL_Z
-        bottom = _fmt(z_value)
+        r_expr = trimmed(r_value) if r_value is not None else INITIAL_Z
+        bottom = trimmed(z_value)
         total = None if r_value is None else r_value - z_value
     else:
-        r_expr = f"{INITIAL_Z}+{_fmt(r_value or 0.0)}"
-        bottom = f"{R_PLANE_Z}+{_fmt(z_value)}"
+        r_expr = f"{INITIAL_Z}+{trimmed(r_value or 0.0)}"
+        bottom = f"{R_PLANE_Z}+{trimmed(z_value)}"
         total = -z_value
     feed_word = f" F{feed}" if feed else ""
     retract = f"G0 Z=AC({R_PLANE_Z if state.return_to_r else INITIAL_Z})"
@@ -86,7 +82,7 @@ def expand(state: CycleState, absolute: bool, hole: list[str], feed: str | None,
             blocks.append(f"G1 Z=AC({bottom}){feed_word}")
         dwell = params.get("P")
         if dwell and code in (82, 89, 74, 84):
-            blocks.append(f"G4 F{_fmt(dwell)}")
+            blocks.append(f"G4 F{trimmed(dwell)}")
         if code in (84, 74):
             blocks.append("M4" if code == 84 else "M3")
             blocks.append(f"G1 Z=AC({R_PLANE_Z})")
@@ -110,13 +106,13 @@ def _pecks(code: int, step: float, total: float | None, bottom: str, feed_word: 
     for depth in peck_depths(total, step):
         if previous > 0:
             if code == 83:
-                blocks.append(f"G0 Z=AC({R_PLANE_Z}-{_fmt(max(previous - PECK_RETRACT_MM, 0.0))})")
-        target = f"{R_PLANE_Z}-{_fmt(depth)}"
+                blocks.append(f"G0 Z=AC({R_PLANE_Z}-{trimmed(max(previous - PECK_RETRACT_MM, 0.0))})")
+        target = f"{R_PLANE_Z}-{trimmed(depth)}"
         blocks.append(f"G1 Z=AC({target}){feed_word}")
         if depth < total - 1e-9:
             if code == 83:
                 blocks.append(f"G0 Z=AC({R_PLANE_Z})")
             else:
-                blocks.append(f"G0 Z=AC({target}+{_fmt(PECK_RETRACT_MM)})")
+                blocks.append(f"G0 Z=AC({target}+{trimmed(PECK_RETRACT_MM)})")
         previous = depth
     return blocks

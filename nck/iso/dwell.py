@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 from nck.iso.lexing import Word
 
 if TYPE_CHECKING:
@@ -39,9 +40,6 @@ def block(addresses: dict[str, Word], settings: IsoSettings, per_rev: bool) -> s
     if value < 0:
         raise NcAlarmError(12160, "G04")
     address = "S" if per_rev and settings.function_mask & REVOLUTIONS_BIT else "F"
-    return f"G4 {address}{_fmt(value)}"
+    return f"G4 {address}{trimmed(value)}"
 
 
-def _fmt(value: float) -> str:
-    text = f"{value:.6f}".rstrip("0").rstrip(".")
-    return text if text not in ("", "-0") else "0"

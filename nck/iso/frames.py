@@ -63,7 +63,8 @@ from typing import Any
 import numpy as np
 
 from nck.errors import NcAlarmError
-from nck.geometry.frames import Frame, _as_matrix3, axis_rotation
+from nck.number_text import trimmed
+from nck.geometry.frames import Frame, as_matrix3, axis_rotation
 
 ALARM_SYNTAX = 12080
 ALARM_LIMITS = 12560
@@ -168,7 +169,7 @@ def _install(interp: Any, geo: Any, new: IsoFrameState, trans: dict[str, float],
         geometry_axes=geo.frames.geometry_axes,
         trans=total,
         fine={a: v for a, v in fine.items() if v},
-        rotation=_as_matrix3(rotation),
+        rotation=as_matrix3(rotation),
         scale={a: abs(f) for a, f in factors.items() if abs(f) != 1.0},
         mirror=frozenset(a for a, f in factors.items() if f < 0),
     )
@@ -421,11 +422,6 @@ _ALONE_G68 = {"G68", "G90", "G91", "G17", "G18", "G19"}
 _ALONE_MIRROR = {"G51.1", "G50.1", "G90", "G91"}
 
 
-def _fmt(value: float) -> str:
-    text = f"{value:.6f}".rstrip("0").rstrip(".")
-    return text if text not in ("-0", "") else "0"
-
-
 def _alone(words: list[Any], gcodes: list[str], allowed_g: set[str], letters: str, code: str) -> None:
     for word in words:
         if word.letter == "G":
@@ -480,11 +476,11 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
                 raise NcAlarmError(ALARM_LIMITS, "I0 J0 K0")
         if "R" in values:
             mask |= 16
-        args = [str(mask)] + [_fmt(values.get(axis, 0.0)) for axis in GEO] + [_fmt(v) for v in vector]
+        args = [str(mask)] + [trimmed(values.get(axis, 0.0)) for axis in GEO] + [trimmed(v) for v in vector]
         head = " ".join(g for g in gcodes if g != "G68")
         if head:
             out.blocks.append(head)
-        out.blocks.extend([f"{PREFIX}ROT[{', '.join(args)}]={_fmt(values.get('R', 0.0))}", SYNC])
+        out.blocks.extend([f"{PREFIX}ROT[{', '.join(args)}]={trimmed(values.get('R', 0.0))}", SYNC])
         out.done = True
         return out
     if "G51.1" in present or "G50.1" in present:
@@ -492,7 +488,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         _alone(words, gcodes, _ALONE_MIRROR, "XYZ", code)
         axes = [axis for axis in GEO if axis in values]
         if code == "G51.1":
-            parts = [f"{PREFIX}MIRROR[{axis}]={_fmt(values[axis])}" for axis in axes]
+            parts = [f"{PREFIX}MIRROR[{axis}]={trimmed(values[axis])}" for axis in axes]
         else:
             parts = [f"{PREFIX}MIRROROFF[{axis}]=0" for axis in axes] or [f"{PREFIX}MIRROROFF=0"]
         out.blocks.extend([" ".join(parts), SYNC])
@@ -502,8 +498,8 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         mask = sum(1 << i for i, letter in enumerate("IJK") if letter in raw)
         if "P" in raw:
             mask |= 8
-        args = [str(mask)] + [_fmt(raw.get(letter, 0.0)) for letter in "IJK"]
-        out.blocks.extend([f"{PREFIX}SCALE[{', '.join(args)}]={_fmt(raw.get('P', 0.0))}", SYNC])
+        args = [str(mask)] + [trimmed(raw.get(letter, 0.0)) for letter in "IJK"]
+        out.blocks.extend([f"{PREFIX}SCALE[{', '.join(args)}]={trimmed(raw.get('P', 0.0))}", SYNC])
         for letter in ("X", "Y", "Z", "I", "J", "K", "P"):  # X/Y/Z: no centre (workpiece zero)
             values.pop(letter, None)
     gcodes[:] = [g for g in gcodes if g not in present]
@@ -517,7 +513,7 @@ def trans_blocks(number: str, values: dict[str, float]) -> list[str]:
     mask = sum(1 << i for i, axis in enumerate(GEO) if axis in values)
     if not mask:
         return [f"{number}{PREFIX}TRANSOFF=0", SYNC]
-    offsets = ", ".join(_fmt(values.get(axis, 0.0)) for axis in GEO)
+    offsets = ", ".join(trimmed(values.get(axis, 0.0)) for axis in GEO)
     return [f"{number}{PREFIX}TRANS[{mask}, {offsets}]=0", SYNC]
 
 
@@ -553,7 +549,7 @@ def polar_words(words: list[Any], values: dict[str, float], siemens_g: list[str]
     if first in values:
         radius = values.pop(first)
         pole = f"G111 {pole_axes}" if modes.get(first, True) else f"G110 {pole_axes}"
-        extra.append(f"RP=AC({_fmt(radius)})")
+        extra.append(f"RP=AC({trimmed(radius)})")
     else:
         pole = f"G111 {pole_axes}"
         ep_a, ep_o = f"$P_EP[{first}]", f"$P_EP[{second}]"
@@ -561,7 +557,7 @@ def polar_words(words: list[Any], values: dict[str, float], siemens_g: list[str]
     if second in values:
         angle = values.pop(second)
         mode = "AC" if modes.get(second, True) else "IC"
-        extra.append(f"AP={mode}({_fmt(angle)})")
+        extra.append(f"AP={mode}({trimmed(angle)})")
     elif tracker.polar_fresh:
         extra.append("AP=AC(0)")
     tracker.polar_fresh = False

@@ -44,6 +44,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 from nck.iso.lexing import Word
 
 if TYPE_CHECKING:
@@ -69,9 +70,9 @@ _ARRAYS = re.compile(r"^\$C_(?:[IJK]|[IJK]_ORDER)$")
 
 # ============================================================================ translation
 def _names(words: list[Word]) -> list[str]:
-    from nck.iso.translate import _g_name
+    from nck.iso.translate import g_name
 
-    return [_g_name(w) for w in words if w.letter == "G"]
+    return [g_name(w) for w in words if w.letter == "G"]
 
 
 def _is_g05(code: str) -> bool:
@@ -95,12 +96,12 @@ def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[st
     if words and words[0].letter == "N":
         number = f"N{int(words[0].value)} "
     if "G67" in gcodes and not calls:
-        from nck.iso.translate import _translate_words
+        from nck.iso.translate import translate_block_words
 
         rest = [w for w in words if not (w.letter == "G" and w.value == 67)]
         blocks = [number + f'{MCALL_NAME}=""']
         if any(w.letter != "N" for w in rest):
-            blocks += _translate_words(rest, modal, settings)
+            blocks += translate_block_words(rest, modal, settings)
         return blocks
     if "G67" in gcodes:
         raise NcAlarmError(12080, "G67")
@@ -142,7 +143,6 @@ def _passes(words: list[Word]) -> int:
 
 def argument_writes(words: list[Word], incremental: bool) -> list[str]:
     """``$C_…`` assignments for every argument word of a call block."""
-    from nck.iso.translate import _fmt
 
     writes: list[str] = []
     seen: set[str] = set()
@@ -173,27 +173,27 @@ def argument_writes(words: list[Word], incremental: bool) -> list[str]:
             prog = 3
         if word.has_point:
             typ_bits |= bit
-        writes.append(f"$C_{letter}={_fmt(word.value)} $C_{letter}_PROG={prog}")
+        writes.append(f"$C_{letter}={trimmed(word.value)} $C_{letter}_PROG={prog}")
     for letter, entries in ijk.items():
         if not entries:
             continue
         writes.append(f"$C_{letter}_NUM={len(entries)} $C_{letter}_PROG=1")
         for index, (value, set_no) in enumerate(entries):
-            writes.append(f"$C_{letter}[{index}]={_fmt(value)} $C_{letter}_ORDER[{index}]={set_no}")
+            writes.append(f"$C_{letter}[{index}]={trimmed(value)} $C_{letter}_ORDER[{index}]={set_no}")
     writes.append(f"$C_ALL_PROG={all_bits} $C_INC_PROG={inc_bits} $C_TYP_PROG={typ_bits}")
     return writes
 
 
 def _g65_g66(words: list[Word], call: str, modal: Any, settings: IsoSettings, number: str) -> list[str]:
-    from nck.iso.translate import _SIMPLE_G
+    from nck.iso.translate import SIMPLE_G
 
     prefix: list[str] = []
     for code in _names(words):
         if code == call:
             continue
-        if code not in _SIMPLE_G:
+        if code not in SIMPLE_G:
             raise NcAlarmError(12080, code)
-        prefix.append(_SIMPLE_G[code])
+        prefix.append(SIMPLE_G[code])
         if code == "G90":
             modal.absolute = True
         elif code == "G91":
@@ -264,12 +264,12 @@ def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: 
                  settings: IsoSettings) -> list[str]:
     """An M/G-code macro call; inside a running M/G-code macro the word acts as a plain
     M or G function instead (a G that exists only as a macro then raises 12470)."""
-    from nck.iso.translate import _translate_words
+    from nck.iso.translate import translate_block_words
 
     kind, word, program = substitution
     number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
     other_g = [w for w in words if w.letter == "G" and w is not word]
-    head = _translate_words(other_g, modal, settings) if other_g else []
+    head = translate_block_words(other_g, modal, settings) if other_g else []
     arguments = [w for w in words if w.letter not in ("N", "G") and w is not word]
     writes = " ".join(argument_writes(arguments, not modal.absolute))
     if kind == "G":
@@ -278,7 +278,7 @@ def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: 
     call = f'{number}{writes} {SUBST_CALL}=1 CALL "{program}"' + (f" P{passes}" if passes > 1 else "")
     modal.no_substitution = True
     try:
-        plain = _translate_words(words, modal, settings)
+        plain = translate_block_words(words, modal, settings)
     except NcAlarmError as alarm:  # a G code that exists only as a macro: 12470 at run time
         if alarm.number != 12470 or kind != "G":
             raise
@@ -299,10 +299,10 @@ def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings) -> lis
     if not any(w.letter != "N" for w in rest):
         return None
     from nck.iso.subprograms import call_block
-    from nck.iso.translate import _translate_words
+    from nck.iso.translate import translate_block_words
 
     number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
-    blocks = _translate_words(rest, modal, settings)
+    blocks = translate_block_words(rest, modal, settings)
     arguments = [w for w in rest if w.letter not in ("N", "M", "G")]
     writes = " ".join(argument_writes(arguments, not modal.absolute)) + " " if arguments else ""
     call = call_block({w.letter: w.value for w in words if w.letter in ("P", "L")})
@@ -313,7 +313,7 @@ def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> l
     """G05 P<prog> L<n> calls ``<prog>`` (not padded); the other forms (no P, P0/P1,
     G05.1) would call CYCLE305, which this control does not have: skipped without an
     alarm. Every other word of the block runs first, as in any block."""
-    from nck.iso.translate import _translate_words
+    from nck.iso.translate import translate_block_words
 
     p_words = [w for w in words if w.letter == "P"]
     codes = _names(words)
@@ -322,7 +322,7 @@ def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> l
         program = p_words[-1].text.lstrip("+")
     rest = [w for w in words if w.letter not in ("P", "L")
             and not (w.letter == "G" and _is_g05(_names([w])[0]))]
-    blocks = _translate_words(rest, modal, settings) if any(w.letter != "N" for w in rest) else []
+    blocks = translate_block_words(rest, modal, settings) if any(w.letter != "N" for w in rest) else []
     if program is None:
         return blocks or ([number.strip()] if number else [])
     if len(program) > 10:

@@ -28,6 +28,7 @@ from __future__ import annotations
 from typing import Any
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 
 H_NUMBER_PARAM = 0  # ToolEdge.params key of $TC_DPH (the $TC_DP numbers are 1 … 25)
 ALARM_H_TWICE = 17183
@@ -63,11 +64,10 @@ def g10_blocks(values: dict[str, float], absolute: bool) -> list[str] | None:
         return None
     if "P" not in values or "R" not in values:
         raise NcAlarmError(12080, f"G10 L{mode}")
-    from nck.iso.translate import _fmt
 
     h_number, param = int(values["P"]), G10_PARAMS[mode]
     target = f"{DATA_VAR}[{h_number},{param}]"
-    value = _fmt(values["R"])
+    value = trimmed(values["R"])
     return [f"{target}={value}" if absolute else f"{target}={target}+({value})"]
 
 

@@ -53,6 +53,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 from nck.iso import cycles, subprograms, turning
 from nck.iso.lexing import Word, split_words
 from nck.iso import dwell as iso_dwell
@@ -108,7 +109,7 @@ class _Modal:
     frames: iso_frames.FrameTracker = field(default_factory=iso_frames.FrameTracker)
 
 
-_SIMPLE_G = {
+SIMPLE_G = {  # ISO G code -> the Siemens G code with the same meaning
     "G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2",
     "G3": "G3", "G03": "G3", "G17": "G17", "G18": "G18", "G19": "G19",
     "G40": "G40", "G41": "G41", "G42": "G42", "G54": "G54", "G55": "G55",
@@ -190,9 +191,9 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
         return []
     prefix = "" if skip is None else ("/" if skip == 0 else f"/{skip}")
     if modal.lathe is not None:
-        blocks = turning.translate_words(words, modal, settings, _translate_words)
+        blocks = turning.translate_words(words, modal, settings, translate_block_words)
     else:
-        blocks = _translate_words(words, modal, settings)
+        blocks = translate_block_words(words, modal, settings)
     if not modal.iso:
         blocks.append("G290")  # back to Siemens mode after this block
     if words[0].letter == "N":  # NC-inserted blocks carry the ISO block number
@@ -203,7 +204,8 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
     return blocks
 
 
-def _value(word: Word, settings: IsoSettings, modal: _Modal) -> float:
+def word_value(word: Word, settings: IsoSettings, modal: _Modal) -> float:
+    """The value of ``word`` in mm, mm/min or mm/rev: undotted lengths and feeds scaled by the ISO input increment."""
     if word.has_point or settings.pocket_calculator:
         return word.value
     if word.letter == "F":
@@ -213,14 +215,11 @@ def _value(word: Word, settings: IsoSettings, modal: _Modal) -> float:
     return word.value
 
 
-def _fmt(value: float) -> str:
-    return cycles._fmt(value)
-
-
-def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) -> list[str]:
-    switches = [w for w in words if w.letter == "G" and _g_name(w) in ("G290", "G291")]
+def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSettings) -> list[str]:
+    """The Siemens blocks for the words of one ISO block (``modal`` is updated)."""
+    switches = [w for w in words if w.letter == "G" and g_name(w) in ("G290", "G291")]
     if switches and any(w.letter != "N" for w in words if w not in switches) or len(switches) > 1:
-        raise NcAlarmError(switching.ALARM_SYNTAX, f"{_g_name(switches[0])} not alone in block")  # 003 L393
+        raise NcAlarmError(switching.ALARM_SYNTAX, f"{g_name(switches[0])} not alone in block")  # 003 L393
     macro = iso_macros.macro_block(words, modal, settings)  # G65/G66/G67/G05
     if macro is not None:
         return macro
@@ -229,7 +228,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     others: list[Word] = []
     for word in words:
         if word.letter == "G":
-            gcodes.append(_g_name(word))
+            gcodes.append(g_name(word))
         elif word.letter in addresses and word.letter not in ("M",):
             raise NcAlarmError(12000, word.letter)
         elif word.letter == "M":
@@ -245,7 +244,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         modal.per_rev = False
     if "G95" in gcodes:
         modal.per_rev = True
-    values = {letter: _value(word, settings, modal) for letter, word in addresses.items()}
+    values = {letter: word_value(word, settings, modal) for letter, word in addresses.items()}
     fixed = addresses.get("F")
     if settings.fixed_feedrates and fixed is not None and not fixed.has_point \
             and fixed.value in range(10):
@@ -253,7 +252,7 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         values["F"] = f"=$SC_EXTERN_FIXED_FEEDRATE_F1_F9[{int(fixed.value)}]"  # type: ignore[assignment]
     number = f"N{int(values.pop('N'))} " if "N" in values else ""
     for code in gcodes:
-        if code not in _SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
+        if code not in SIMPLE_G and code not in _SUPPORTED_OTHER and _cycle_code(code) is None:
             raise switching.unknown_g(code)
         if code == "G93" and modal.turning:  # inverse-time feed is ISO M only (000 L609)
             raise switching.unknown_g(code)  # 12080 for a Siemens-only G code, else 12470
@@ -294,13 +293,13 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
         moved = [a for a in AXES if a in values]
         if not moved:
             return [number] if number else []
-        parts = " ".join(f"{a}=$P_EP[{a}]-({_fmt(values[a])})" for a in moved)
+        parts = " ".join(f"{a}=$P_EP[{a}]-({trimmed(values[a])})" for a in moved)
         return [number + "ATRANS " + parts, iso_frames.PRESET]
     if "G52" in gcodes:
         return iso_frames.trans_blocks(number, values)
     if "G28" in gcodes:
         moved = [a for a in AXES if a in values]
-        blocks = [number + "G0 " + " ".join(f"{a}{_fmt(values[a])}" for a in moved)] if moved else []
+        blocks = [number + "G0 " + " ".join(f"{a}{trimmed(values[a])}" for a in moved)] if moved else []
         blocks.append("G74 " + " ".join(f"{a}0" for a in (moved or list(AXES))))
         if modal.motion != "G0":
             blocks.append(modal.motion)  # G28 is non-modal: group 1 stays as it was
@@ -320,10 +319,10 @@ def _translate_words(words: list[Word], modal: _Modal, settings: IsoSettings) ->
     for code in gcodes:
         if code.startswith("G5") and code[1:].isdigit() and int(code[1:]) > 500:
             siemens_g.append(code)
-        elif code in _SIMPLE_G:
-            siemens_g.append(_SIMPLE_G[code])
-            if _SIMPLE_G[code] in ("G0", "G1", "G2", "G3"):
-                modal.motion = _SIMPLE_G[code]
+        elif code in SIMPLE_G:
+            siemens_g.append(SIMPLE_G[code])
+            if SIMPLE_G[code] in ("G0", "G1", "G2", "G3"):
+                modal.motion = SIMPLE_G[code]
                 modal.cycle.code = None
         elif code == "G80":
             modal.cycle.code = None
@@ -355,7 +354,8 @@ def _cycle_code(code: str) -> int | None:
     return None
 
 
-def _g_name(word: Word) -> str:
+def g_name(word: Word) -> str:
+    """The canonical name of a G word: ``G1`` -> ``G01``, ``G54.10`` -> ``G54.1``."""
     text = word.text
     if "." in text:
         whole, _, sub = text.partition(".")
@@ -372,20 +372,20 @@ def _plain_block(number: str, siemens_g: list[str], values: dict[str, float],
     parts = list(siemens_g)
     for letter in ("X", "Y", "Z", "U", "V", "W", "A", "B", "C", "I", "J", "K"):
         if letter in values:
-            parts.append(f"{letter}{_fmt(values[letter])}")
+            parts.append(f"{letter}{trimmed(values[letter])}")
     if "R" in values:
-        parts.append(f"CR={_fmt(values['R'])}")
+        parts.append(f"CR={trimmed(values['R'])}")
     if ",R" in values:
-        parts.append(f"RND={_fmt(values[',R'])}")
+        parts.append(f"RND={trimmed(values[',R'])}")
     if ",C" in values:
-        parts.append(f"CHF={_fmt(values[',C'])}")
+        parts.append(f"CHF={trimmed(values[',C'])}")
     for letter in ("F", "S", "T", "D"):
         if letter in values:
             value = values[letter]
             if isinstance(value, str):  # D=<edge lookup> (nck.iso.tool_offsets)
                 parts.append(f"{letter}{value}")
                 continue
-            parts.append(f"{letter}{_fmt(value) if letter == 'F' else int(value)}")
+            parts.append(f"{letter}{trimmed(value) if letter == 'F' else int(value)}")
     for word in others:
         parts.append(f"M{int(word.value)}")
     return (number + " ".join(parts)).rstrip()
@@ -400,8 +400,8 @@ def _cycle_block(number: str, siemens_g: list[str], values: dict[str, float], mo
     if "P" in values:
         state.params["P"] = values["P"] / 1000.0  # dwell in ms
     repeat = int(values.get("K", 1))
-    feed = (values["F"] if isinstance(values["F"], str) else _fmt(values["F"])) if "F" in values else None
-    hole = [f"{a}{_fmt(values[a])}" for a in ("X", "Y") if a in values]
+    feed = (values["F"] if isinstance(values["F"], str) else trimmed(values["F"])) if "F" in values else None
+    hole = [f"{a}{trimmed(values[a])}" for a in ("X", "Y") if a in values]
     blocks = cycles.expand(state, modal.absolute, hole, feed, repeat) if repeat > 0 else []
     head = " ".join(siemens_g)
     if head or number:
@@ -413,7 +413,7 @@ def _g10(values: dict[str, float]) -> list[str]:
     mode = int(values.get("L", 0))
     slot = int(values.get("P", 0))
     if mode == 2 and 1 <= slot <= 6:
-        return [f"$P_UIFR[{slot}, {a}, TR]={_fmt(values[a])}" for a in AXES if a in values]
+        return [f"$P_UIFR[{slot}, {a}, TR]={trimmed(values[a])}" for a in AXES if a in values]
     if mode == 20 and slot >= 1:
-        return [f"$P_UIFR[{slot + 6}, {a}, TR]={_fmt(values[a])}" for a in AXES if a in values]
+        return [f"$P_UIFR[{slot + 6}, {a}, TR]={trimmed(values[a])}" for a in AXES if a in values]
     raise NcAlarmError(12080, f"G10 L{mode}")

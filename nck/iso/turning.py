@@ -42,8 +42,8 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 from nck.iso import turning_cycles as tc
-from nck.iso.cycles import _fmt
 from nck.iso.lexing import Word, split_words
 from nck.iso.turning_contour import read_contour
 
@@ -140,8 +140,8 @@ def after_line(modal: Any, line: Any) -> None:
 
 
 def _g(word: Word) -> str:
-    from nck.iso.translate import _g_name
-    return _g_name(word)
+    from nck.iso.translate import g_name
+    return g_name(word)
 
 
 def _micro(word: Word) -> float:
@@ -175,10 +175,10 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     tool = address.get("T")
     if tool is not None and (tool.has_point or tool.value < 0):
         raise NcAlarmError(12080, f"T{tool.text}")  # T<tool><offset> is a plain integer
-    from nck.iso.translate import _value
+    from nck.iso.translate import word_value
 
     def value(word: Word) -> float:
-        return _value(word, settings, modal)
+        return word_value(word, settings, modal)
 
     for code in codes:
         if code == "G90":
@@ -229,7 +229,7 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         modal.motion = "G33"
         start_angle = next((w for w in keep if w.letter == "Q"), None)
         if start_angle is not None:  # Q: start angle in 0.001 degrees (an integer)
-            suffix = f" SF={_fmt(start_angle.value / 1000.0)}"
+            suffix = f" SF={trimmed(start_angle.value / 1000.0)}"
         keep = _thread_words(keep, lathe, settings)
     dwell = bool({"G04", "G4"} & set(codes))  # G04 U is a time, not an axis
     relative = (not dwell and modal.absolute and lathe.position is None
@@ -262,7 +262,7 @@ def _thread_words(words: list[Word], lathe: LatheState, settings: Any) -> list[W
             dz = got["W"] if "W" in got else got["Z"] - z
             dr = (got["U"] if "U" in got else got["X"] - x) / 2.0
             along_x = abs(dr) > abs(dz)
-        out.append(Word("I" if along_x else "K", _fmt(lead), lead, True))
+        out.append(Word("I" if along_x else "K", trimmed(lead), lead, True))
     return out
 
 
@@ -288,10 +288,10 @@ def _incremental_words(words: list[Word], modal: Any,
     for w in words:
         if w.letter == "U":
             target = x + value(w)
-            out.append(Word("X", _fmt(target), target, True))
+            out.append(Word("X", trimmed(target), target, True))
         elif w.letter == "W":
             target = z + value(w)
-            out.append(Word("Z", _fmt(target), target, True))
+            out.append(Word("Z", trimmed(target), target, True))
         else:
             out.append(w)
     return out
@@ -365,7 +365,7 @@ def _run_cycle(code: int, address: dict[str, Word], modal: Any, settings: Any,
     if not runs:  # settings block: store for later calls, no motion
         _store_settings(code, address, stored, value)
         return []
-    extra = [f"S{_fmt(value(address['S']))}"] if "S" in address else []
+    extra = [f"S{trimmed(value(address['S']))}"] if "S" in address else []
     if "T" in address:
         extra.append(f"T{int(address['T'].value)}")
     start = _start(modal)
@@ -468,7 +468,7 @@ def _contour_cycle(code: int, address: dict[str, Word], modal: Any, settings: An
 
 def _finishing(address: dict[str, Word], modal: Any, settings: Any) -> list[str]:
     """G70 P Q: the contour blocks with their own F/S/T, then back to the start point."""
-    from nck.iso.translate import _translate_words
+    from nck.iso.translate import translate_block_words
 
     lathe: LatheState = modal.lathe
     if "P" not in address or "Q" not in address:
@@ -480,10 +480,10 @@ def _finishing(address: dict[str, Word], modal: Any, settings: Any) -> list[str]
     for index, words in zip(range(first, last + 1), _contour_words(lathe, first, last)):
         lathe.line_index = index
         if words:
-            blocks.extend(translate_words(words, modal, settings, _translate_words))
+            blocks.extend(translate_words(words, modal, settings, translate_block_words))
     lathe.line_index = index_before
     if start is not None:
-        blocks.extend([f"G0 X=AC({_fmt(start[1])})", f"G0 Z=AC({_fmt(start[0])})",
+        blocks.extend([f"G0 X=AC({trimmed(start[1])})", f"G0 Z=AC({trimmed(start[0])})",
                        modal.motion])
         lathe.position = start
     return blocks
@@ -521,12 +521,12 @@ def _preset(address: dict[str, Word], modal: Any, value: Callable[[Word], float]
     """G92 (system A: G50): S = spindle speed limit, X/Z = coordinate system setting."""
     blocks: list[str] = []
     if "S" in address:
-        blocks.append(f"LIMS={_fmt(value(address['S']))}")
+        blocks.append(f"LIMS={trimmed(value(address['S']))}")
     axes = [(a, address[a]) for a in ("X", "Z") if a in address]
     if axes:
         # Frames are radii on the transverse axis (002 L32672-32684): X (a diameter) halved.
-        parts = " ".join(f"{a}=($P_EP[{a}]-({_fmt(value(w))}))/2" if a == "X" else
-                         f"{a}=$P_EP[{a}]-({_fmt(value(w))})" for a, w in axes)
+        parts = " ".join(f"{a}=($P_EP[{a}]-({trimmed(value(w))}))/2" if a == "X" else
+                         f"{a}=$P_EP[{a}]-({trimmed(value(w))})" for a, w in axes)
         blocks.append("ATRANS " + parts)
         lathe: LatheState = modal.lathe
         if len(axes) == 2:
@@ -557,9 +557,9 @@ def _tool_offset(address: dict[str, Word], modal: Any, value: Callable[[Word], f
         if letter in address:
             written = address[letter].value if letter == "Q" else value(address[letter])
             if modal.absolute or letter in ("R", "Q"):
-                blocks.append(f"{name}={_fmt(written)}")
+                blocks.append(f"{name}={trimmed(written)}")
             else:
-                blocks.append(f"{name}={name}+({_fmt(written)})")
+                blocks.append(f"{name}={name}+({trimmed(written)})")
         if inc and inc in address:
-            blocks.append(f"{name}={name}+({_fmt(value(address[inc]))})")
+            blocks.append(f"{name}={name}+({trimmed(value(address[inc]))})")
     return blocks

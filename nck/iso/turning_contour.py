@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 from typing import Callable, Sequence
 
 from nck.errors import NcAlarmError
+from nck.number_text import trimmed
 from nck.iso.lexing import Word
 
 ALARM_BAD_CYCLE_VALUE = 61812  # value(s) incorrectly specified in the external cycle call
@@ -191,17 +192,16 @@ def read_contour(blocks: Sequence[list[Word]], start: Point, absolute: bool,
 
 def fmt_elements(elements: Sequence[Element], feed: str) -> list[str]:
     """Siemens blocks that follow ``elements`` (absolute X as a diameter, arcs with CR)."""
-    from nck.iso.cycles import _fmt
 
     blocks: list[str] = []
     for element in elements:
         z, r = element.end
-        target = f"X=AC({_fmt(2 * r)}) Z=AC({_fmt(z)})"
+        target = f"X=AC({trimmed(2 * r)}) Z=AC({trimmed(z)})"
         if element.center is None:
             blocks.append(f"G1 {target}{feed}")
             continue
         radius = element.radius
         if _sweep_to(element, element.end) > math.pi + 1e-9:
             radius = -radius
-        blocks.append(f"{'G2' if element.clockwise else 'G3'} {target} CR={_fmt(radius)}{feed}")
+        blocks.append(f"{'G2' if element.clockwise else 'G3'} {target} CR={trimmed(radius)}{feed}")
     return blocks

@@ -37,7 +37,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 from nck.errors import NcAlarmError
-from nck.iso.cycles import _fmt
+from nck.number_text import trimmed
 from nck.iso.turning_contour import EPS, Element, crossing, fmt_elements
 
 ALARM_PITCH = 61001  # thread lead (pitch) wrong
@@ -48,15 +48,15 @@ MAX_PASSES = 10_000
 
 
 def _feed(feed: float | None) -> str:
-    return f" F{_fmt(feed)}" if feed else ""
+    return f" F{trimmed(feed)}" if feed else ""
 
 
 def _x(diameter: float) -> str:
-    return f"X=AC({_fmt(diameter)})"
+    return f"X=AC({trimmed(diameter)})"
 
 
 def _z(z: float) -> str:
-    return f"Z=AC({_fmt(z)})"
+    return f"Z=AC({trimmed(z)})"
 
 
 def _point(facing: bool, a: float, b: float) -> tuple[float, float]:
@@ -266,11 +266,11 @@ def multi_thread(start_zx: tuple[float, float], end_zx: tuple[float, float], tap
         cut_r = root_r + outward * (height - depth)
         blocks.append(f"G0 {_x(2 * (cut_r + taper_r))} {_z(za + shift)}")
         if run_out > EPS:
-            blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift - travel * run_out)} K{_fmt(lead)}")
+            blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift - travel * run_out)} K{trimmed(lead)}")
             blocks.append(f"G33 {_x(2 * (cut_r + outward * run_out))} {_z(ze + shift)} "
-                          f"K{_fmt(lead)}")
+                          f"K{trimmed(lead)}")
         else:
-            blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift)} K{_fmt(lead)}")
+            blocks.append(f"G33 {_x(2 * cut_r)} {_z(ze + shift)} K{trimmed(lead)}")
         blocks.append(f"G0 {_x(xa)}")
         blocks.append(f"G0 {_z(za)}")
     return blocks
@@ -287,7 +287,7 @@ def single_cycle(code: int, start_zx: tuple[float, float], end_zx: tuple[float, 
     if code == 78:
         if not feed or feed <= 0:
             raise NcAlarmError(ALARM_PITCH, "F")
-        return [f"G0 {_x(xe + 2 * taper)}", f"G33 {_x(xe)} {_z(ze)} K{_fmt(feed)}",
+        return [f"G0 {_x(xe + 2 * taper)}", f"G33 {_x(xe)} {_z(ze)} K{trimmed(feed)}",
                 f"G0 {_x(xa)}", f"G0 {_z(za)}"]
     return [f"G0 {_z(ze + taper)}", f"G1 {_x(xe)} {_z(ze)}{_feed(feed)}",
             f"G1 {_z(za)}", f"G0 {_x(xa)}"]

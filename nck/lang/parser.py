@@ -24,7 +24,7 @@ from nck.lang.lexer import ADDR, EOL, NAME, NUMBER, OP, split_comment, tokenize
 LANGUAGE_SWITCHES = ("G290", "G291")  # Siemens / ISO dialect: alone in their block (003 L393)
 
 
-class _Parser(DeclarationParser):
+class BlockParser(DeclarationParser):
     """Recursive-descent parser of the statements of one block."""
 
     def statement(self, stmts: list[ast.Statement]) -> None:
@@ -236,7 +236,7 @@ def _parse_block(text: str, line: int, inserted: bool = False) -> ast.Block:
         return ast.Block(line=line, text=text, comment=stripped)
     code, comment = split_comment(text)
     tokens = tokenize(code)
-    parser = _Parser(tokens)
+    parser = BlockParser(tokens)
     skip_level = None
     number = None
     main_block = False
