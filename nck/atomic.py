@@ -17,7 +17,9 @@ from __future__ import annotations
 import os
 import shutil
 import stat
+from contextlib import contextmanager
 from pathlib import Path
+from typing import BinaryIO, Iterator
 
 TEMP_MARK = ".tmp-"
 BACKUP_SUFFIX = ".bak"
@@ -77,6 +79,32 @@ def _make_backup(path: Path) -> None:
     finally:
         if temp.exists():
             temp.unlink()
+
+
+@contextmanager
+def atomic_writer(path: Path | str) -> Iterator[BinaryIO]:
+    """Stream the new content of ``path``; it replaces the old one when the block ends.
+
+    For content too long to build in memory first (a run's segments). The
+    stream writes a temporary file beside ``path``; at the end of the ``with``
+    block it is synced and renamed over ``path`` — or removed when the block
+    raised, leaving the old file as it was.
+    """
+    path = Path(path)
+    temp = _temp_path(path)
+    try:
+        with open(os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666), "wb") as handle:
+            yield handle
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(temp, path)
+    except BaseException:
+        try:
+            temp.unlink()
+        except OSError:
+            pass
+        raise
+    fsync_directory(path.parent)
 
 
 def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False,

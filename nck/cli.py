@@ -16,6 +16,7 @@ import json
 import os
 import sys
 import time
+from contextlib import ExitStack
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -26,6 +27,7 @@ from nck.motion.tracefile import start_trace, write_trace_csv
 from nck.interp.sources import DirectorySource, read_text_file
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
+from nck.regular_files import export_text_stream
 from nck.termination import exit_on_termination
 
 
@@ -341,45 +343,36 @@ def _run(options: argparse.Namespace) -> int:
         raise CliError("--timeout needs 0 (no limit) or a number of seconds")
     timeout_s = options.timeout or None
     path, text = _read_program(options.program)
-    env = _Environment(options)
-    machine, data = env.machine, env.data
-    segment_out: TextIO | None = None
-    close = False
-    if options.segments:
-        if options.segments == "-":
-            segment_out = sys.stdout
-        else:
-            try:
-                segment_out = open(options.segments, "w", encoding="utf-8")  # noqa: SIM115
-                close = True
-            except OSError as exc:
-                raise CliError(f"cannot write '{options.segments}': {exc.strerror}") from None
-
-    def on_command(command: canon.CanonCommand) -> None:
-        if segment_out is not None and isinstance(command, canon.Motion):
-            segment_out.write(json.dumps(segment_json(command)) + "\n")
-
-    traced: list[Any] = []
-
-    def on_motion(motion: Any) -> None:
-        start_trace(motion)
-        traced.append(motion)
-
     try:
-        result = run_program(machine, _source(path, options, env), data, path.name, text=text,
-                             timeout_s=timeout_s, on_command=on_command,
-                             dialect=options.dialect, on_motion=on_motion if options.trace else None,
-                             keep_commands=False)
-    finally:
-        if close and segment_out is not None:
-            segment_out.close()
-        env.finish()
-    if options.trace and traced:
-        try:
-            with open(options.trace, "w", encoding="utf-8") as trace_out:
+        with ExitStack() as outputs:
+            segment_out = _output(outputs, options.segments, "--segments")
+            trace_out = _output(outputs, options.trace, "--trace")
+            env = _Environment(options)
+            machine, data = env.machine, env.data
+
+            def on_command(command: canon.CanonCommand) -> None:
+                if segment_out is not None and isinstance(command, canon.Motion):
+                    segment_out.write(json.dumps(segment_json(command)) + "\n")
+
+            traced: list[Any] = []
+
+            def on_motion(motion: Any) -> None:
+                start_trace(motion)
+                traced.append(motion)
+
+            try:
+                result = run_program(machine, _source(path, options, env), data, path.name, text=text,
+                                     timeout_s=timeout_s, on_command=on_command,
+                                     dialect=options.dialect, on_motion=on_motion if trace_out else None,
+                                     keep_commands=False)
+            finally:
+                env.finish()
+            if trace_out is not None and traced:
                 write_trace_csv(traced[-1], trace_out)
-        except OSError as exc:
-            raise CliError(f"cannot write '{options.trace}': {exc.strerror}") from None
+    except BrokenPipeError:
+        raise  # the reader of stdout went away (see main)
+    except OSError as exc:  # an output file could not be completed (disk full ...): the old one stays
+        raise CliError(f"cannot write '{exc.filename or 'an output file'}': {exc.strerror}") from None
     for alarm in result.alarms:
         print(format_alarm(alarm), file=sys.stderr)
     if result.status == "timeout":
@@ -388,6 +381,23 @@ def _run(options: argparse.Namespace) -> int:
     if options.json:
         print(json.dumps(final_state_json(result, machine, data)))
     return result.exit_code
+
+
+def _output(outputs: ExitStack, name: str | None, option: str) -> TextIO | None:
+    """The stream of an output file option (``-`` = stdout), opened before the run.
+
+    A file is written like every export (:func:`nck.regular_files.export_text_stream`):
+    complete when the run is over, never through a link, FIFO or device; an
+    existing regular file is replaced, as a shell's ``>`` would.
+    """
+    if not name:
+        return None
+    if name == "-":
+        return sys.stdout
+    try:
+        return outputs.enter_context(export_text_stream(name, replace=True))
+    except OSError as exc:
+        raise CliError(f"cannot write '{name}' ({option}): {exc.strerror}") from None
 
 
 def segment_json(motion: canon.Motion) -> dict[str, Any]:

@@ -14,13 +14,15 @@ reports I/O failures reports these too.
 from __future__ import annotations
 
 import errno
+import io
 import os
 import shutil
 import stat
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterator, TextIO
 
-from nck.atomic import atomic_write_bytes
+from nck.atomic import atomic_write_bytes, atomic_writer
 
 _NO_FOLLOW = getattr(os, "O_NOFOLLOW", 0)
 _NON_BLOCKING = getattr(os, "O_NONBLOCK", 0)
@@ -140,18 +142,41 @@ def copy_regular_tree(source: Path, target: Path, limit_bytes: int,
     return skipped
 
 
-def write_export(path: Path | str, data: bytes, *, replace: bool = False) -> None:
-    """Write a file for the operator (an export) atomically, never through a link.
+def check_export_target(path: Path | str, *, replace: bool = False) -> None:
+    """Raise unless ``path`` may take an export: free, or a regular file (replaced only with ``replace``).
 
-    ``path`` must be free or a regular file: a link, FIFO or device there is
-    refused (:class:`NotARegularFile`) — the write would land elsewhere. An
-    existing file is replaced only with ``replace`` (else ``FileExistsError``:
-    ask the operator first). The new file replaces the entry itself, so a link
-    planted in between is replaced, not written through.
+    A link, FIFO or device there is refused (:class:`NotARegularFile`) — the
+    write would land elsewhere or block; an existing file without ``replace``
+    raises ``FileExistsError`` (ask the operator first).
     """
     if os.path.lexists(path):
         if not is_regular_file(path):
             raise NotARegularFile(path)
         if not replace:
             raise FileExistsError(errno.EEXIST, "already exists", str(path))
+
+
+def write_export(path: Path | str, data: bytes, *, replace: bool = False) -> None:
+    """Write a file for the operator (an export) atomically, never through a link.
+
+    ``path`` is checked by :func:`check_export_target`. The new file replaces
+    the entry itself, so a link planted in between is replaced, not written through.
+    """
+    check_export_target(path, replace=replace)
     atomic_write_bytes(path, data)
+
+
+@contextmanager
+def export_text_stream(path: Path | str, *, replace: bool = False) -> Iterator[TextIO]:
+    """A text stream (UTF-8) for an export too long to build in memory first.
+
+    Checked like :func:`write_export` before anything is written; the file
+    appears as a whole when the ``with`` block ends (:func:`nck.atomic.atomic_writer`)
+    and not at all when it raised.
+    """
+    check_export_target(path, replace=replace)
+    with atomic_writer(path) as raw:
+        text = io.TextIOWrapper(raw, encoding="utf-8", newline="\n")
+        yield text
+        text.flush()
+        text.detach()  # the binary stream stays open for the writer's sync
