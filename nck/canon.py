@@ -48,6 +48,8 @@ class Motion:
         exact_stop: True if this block ends with exact stop (G60 modal or G9).
         exact_stop_window: ``G601`` fine or ``G602`` coarse.
         lead_mm: thread lead for G33 (mm per spindle revolution).
+        thread_start_deg: G33 only: the spindle angle after the zero mark at which the thread
+            starts (``SF=``, SD42000); None for other motions.
         gcodes: the active member of every G group (group number -> G code) at this block.
         inserted: True for segments inserted by the NC (chamfers, roundings, cycle moves).
         arc_normal_mcs: arcs only: unit vector in the MCS about which the arc turns
@@ -77,6 +79,7 @@ class Motion:
     exact_stop: bool = False
     exact_stop_window: str = "G601"
     lead_mm: float | None = None
+    thread_start_deg: float | None = None
     gcodes: Mapping[int, str] = field(default_factory=dict)
     inserted: bool = False
     arc_normal_mcs: Mapping[str, float] | None = None

@@ -41,6 +41,7 @@ from nck.ncdata import NcData, WorkOffset
 
 ALARM_CIRCLE_NOT_DETERMINED = circles.ALARM_CIRCLE_END_POINT
 ALARM_THREAD_LEAD_ZERO = 16720  # G33 without (or with zero) thread lead
+SD_THREAD_START_ANGLE = "SD42000"  # start angle of a thread (SF=)
 ALARM_THREAD_FRAME = 10607  # a frame rotation changes the thread length
 ALARM_DC_NOT_POSSIBLE = 16800  # DC programmed for an axis that is not a rotary axis
 ALARM_ACP_NOT_POSSIBLE = 16810  # ACP/ACN programmed for an axis that is not a rotary axis
@@ -304,6 +305,7 @@ class PathBuilder:
             "kind": kind, "source": words.source, "plane": pl.code, "programmed": programmed,
             "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
             "feed": feed, "lead": lead, "gcodes": dict(modal.gcodes),
+            "thread_start": self._thread_start_deg() if lead is not None else None,
             "exact": modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9",
             "window": modal.gcodes.get(12, "G601"), "units": units,
             "end_other": {a: end[a] for a in end if a not in self.geo_axes},
@@ -459,6 +461,10 @@ class PathBuilder:
         if not geo.thread_lead_mm:
             raise NcAlarmError(ALARM_THREAD_LEAD_ZERO)
         return geo.thread_lead_mm
+
+    def _thread_start_deg(self) -> float:
+        """The start angle of a thread: SD42000, written by ``SF=`` (002 L26538, L55683-55687)."""
+        return float(self.data.setting_data.get(SD_THREAD_START_ANGLE, 0.0) or 0.0)
 
     def _check_thread_frame(self, words: Any, transform: Transform, start: Mapping[str, float],
                             end: Mapping[str, float]) -> None:
@@ -630,6 +636,7 @@ class PathBuilder:
             exact_stop=context["exact"],
             exact_stop_window=context["window"],
             lead_mm=context["lead"],
+            thread_start_deg=context["thread_start"],
             gcodes=context["gcodes"],
             inserted=inserted,
             arc_normal_mcs=normal,

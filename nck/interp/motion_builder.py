@@ -37,7 +37,7 @@ from typing import Any
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry import trc_canon
-from nck.geometry.path_builder import ALARM_NOT_AVAILABLE, PathBuilder
+from nck.geometry.path_builder import ALARM_NOT_AVAILABLE, SD_THREAD_START_ANGLE, PathBuilder
 from nck.geometry.path_state import GeometryState
 from nck.geometry.rounding_distance import AID
 from nck.interp.modal import ModalState
@@ -55,6 +55,8 @@ ALARM_PATH_VELOCITY = 14800
 ALARM_ADDRESS_TOO_OFTEN = 12010  # address type programmed too often
 AUX_LIMITS = {"M": 5, "S": 3, "H": 3, "T": 1, "D": 1, "F": 6}  # per block (H2, 828D)
 AUX_LIMIT_TOTAL = 10
+CIRCLE_WORDS = ("CR", "AR", "TURN")  # radius, opening angle, helix turns: G2/G3 only
+UNAVAILABLE_WORDS = ("SR", "OVRA")  # retraction on a fast NCK input; override of FA / a spindle
 
 
 @dataclass
@@ -119,6 +121,7 @@ class MotionBuilder:
         if words.gcodes.get(2) == "G4":
             return self._dwell(words, modal)
         _check_aux_limits(words)
+        _refuse_words_without_effect(words, modal)
         self.spindle_wait = False
         out = self._build_commands(words, modal, geo)
         if self.spindle_wait:
@@ -130,6 +133,7 @@ class MotionBuilder:
         out: list[canon.CanonCommand] = []
         src = words.source
         self._feed(words, modal, geo)
+        self._thread_start(words)
         self._tool(words, modal, out)
         self._spindle(words, modal, geo, out)
         for ext, value in words.m_codes:
@@ -290,6 +294,16 @@ class MotionBuilder:
                     "inverse_time": False, "feed_mm_rev": modal.feed * geo.feed_unit_mm}
         return {"feed": modal.feed, "feed_mm_min": modal.feed * geo.feed_unit_mm, "inverse_time": False}
 
+    def _thread_start(self, words: BlockWords) -> None:
+        """``SF=``: the start angle of the thread, kept in SD42000 for the threads that follow
+        (002 L26538, L55683-55687); the datum holds 0 … 359.999°."""
+        if "SF" not in words.words:
+            return
+        angle = float(words.words["SF"])
+        if not 0.0 <= angle < 360.0:
+            raise NcAlarmError(12160, "SF")
+        self.data.setting_data[SD_THREAD_START_ANGLE] = angle
+
     # ------------------------------------------------------------------ tool
     def _tool(self, words: BlockWords, modal: ModalState, out: list[canon.CanonCommand]) -> None:
         src = words.source
@@ -441,6 +455,27 @@ class MotionBuilder:
         if abs(rpm - modal.spindle_speed_rpm) > 1e-6:
             modal.spindle_speed_rpm = rpm
             out.append(canon.SpindleCommand(src, 1, speed_rpm=rpm))
+
+
+def _refuse_words_without_effect(words: BlockWords, modal: ModalState) -> None:
+    """12550 for a word that would change nothing in this block (issue 20: never parse and drop).
+
+    ``CR=``/``AR=``/``TURN=`` only describe a G2/G3 circle; ``RPL=`` is the plane angle of a
+    ``ROT``/``AROT`` in the same block. ``SR=`` needs the fast NCK inputs of "multiple feedrates
+    in one block" (002 L56700-56712) and ``OVRA[]`` positioning axes or a programmable spindle
+    override (002 L56523-56527, L54153); this control has neither. The number is the one the
+    control uses for ``ANG=`` in a circle block: the function is not available there.
+    """
+    present = words.words
+    if modal.gcodes.get(1) not in ("G2", "G3"):
+        for key in CIRCLE_WORDS:
+            if key in present:
+                raise NcAlarmError(ALARM_NOT_AVAILABLE, key)
+    if "RPL" in present and words.gcodes.get(3) not in ("ROT", "AROT"):
+        raise NcAlarmError(ALARM_NOT_AVAILABLE, "RPL")
+    for key in UNAVAILABLE_WORDS:
+        if key in present:
+            raise NcAlarmError(ALARM_NOT_AVAILABLE, key)
 
 
 def _check_aux_limits(words: BlockWords) -> None:
