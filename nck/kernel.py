@@ -455,6 +455,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self.motion.resume()
         if self._pc["program_test"]:
             self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
+            self._apply_overrides()  # the simulated axes run with the override switches too
 
     def _cycle_stop(self, command: cmd.CycleStop) -> SubmitResult:
         if self._sit.channel != ACTIVE:

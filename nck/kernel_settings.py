@@ -53,6 +53,7 @@ class ControlSettings(DataWrites):
             self._test_motion = (
                 InstantMotion(self.machine, self.motion.positions_mcs()) if value else None
             )
+            self._apply_overrides()
         elif name == "skip_levels":
             try:
                 levels = frozenset(int(v) for v in (value or ()))  # type: ignore[union-attr]

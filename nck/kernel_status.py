@@ -124,7 +124,7 @@ class StatusView:
             program_state=self._sit.program, selected_program=self._selected,
             current_block=current, blocks=blocks, modal=modal,
             program_control=dict(self._pc), overrides=dict(self._overrides),
-            path_feed_mm_min=(executing.feed_mm_min or 0.0) if executing is not None else 0.0, program_runtime_s=self.runtime.act_s,
+            path_feed_mm_min=shown.path_velocity_mm_min(), program_runtime_s=self.runtime.act_s,
             part_count=self.counters.actual, message=self.alarms.message,
             stop_reason=run.stop_reason if run is not None and self._sit.channel == INTERRUPTED else "",
             interrupted_program=self._owner, mda_text=self._mda_text,

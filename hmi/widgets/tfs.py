@@ -22,8 +22,13 @@ def tfs_lines(status: NckStatus) -> Text:
     text.append(f"D{modal.edge}\n" if modal.edge else "D0\n")
     text.append(f"   L {fixed(modal.tool_length_mm, 3, 10)}   R {fixed(modal.tool_radius_mm, 3, 8)}\n")
     text.append(" F ", style="bold")
-    unit = "mm/rev" if modal.gcodes.get(15) == "G95" else "mm/min"
-    text.append(f"{fixed(status.channel.path_feed_mm_min, 3, 10)} / {fixed(modal.feed, 3, 10)} {unit}")
+    # Actual: the interpolator's path velocity (rapid in G0, JOG in JOG), always per minute;
+    # programmed: F in its feed type. Under G95 each value carries its own unit.
+    actual = fixed(status.channel.path_feed_mm_min, 3, 10)
+    if modal.gcodes.get(15) == "G95":
+        text.append(f"{actual} mm/min / {fixed(modal.feed, 3, 8)} mm/rev")
+    else:
+        text.append(f"{actual} / {fixed(modal.feed, 3, 10)} mm/min")
     text.append(f"  {format_override(overrides.get('feed', 100)):>3} %\n")
     spindle = next((a for a in status.axes if a.kind == "spindle"), None)
     if spindle is not None:

@@ -69,6 +69,14 @@ class MotionSystem(Protocol):
     def drain_alarms(self) -> list[NcAlarmError]:
         """Return and forget the alarms raised by monitoring since the last call."""
 
+    def path_velocity_mm_min(self) -> float:
+        """The velocity the interpolator traverses at now (the actual feed of the display).
+
+        Along the path of the executing segment (G0 at its rapid velocity, both with their
+        override, also while braking), else of the JOG motion; 0 while the axes stand
+        (NC STOP, dwell, exact-stop wait, idle).
+        """
+
 
 class JogControl(Protocol):
     """JOG and referencing, as the channel sees them (same object as the MotionSystem)."""

@@ -162,6 +162,14 @@ class InstantMotion:
                 return item.source
         return None
 
+    def path_velocity_mm_min(self) -> float:
+        """Velocity of the head segment (0 while held or in a dwell), else of the JOG motion."""
+        head = self._queue[0] if self._queue and not self._held else None
+        if isinstance(head, _Segment) and self._distance(head.target) > EPSILON_MM:
+            return self._speed_mm_min(head)
+        squares = sum((jog.velocity_mm_min * self._feed_pct / 100.0) ** 2 for jog in self._jogs.values())
+        return math.sqrt(squares)
+
     def drain_alarms(self) -> list[NcAlarmError]:
         """The stand-in monitors nothing; always empty."""
         alarms, self._alarms = self._alarms, []
@@ -211,15 +219,18 @@ class InstantMotion:
         ]
         return min(velocities) if velocities else DEFAULT_RAPID_MM_MIN
 
+    def _speed_mm_min(self, seg: _Segment) -> float:
+        """The segment's velocity: its feed or rapid traverse, with the override."""
+        if seg.feed_mm_min is None:
+            return self._rapid_mm_min() * self._rapid_pct / 100.0
+        return seg.feed_mm_min * self._feed_pct / 100.0
+
     def _distance(self, target: Mapping[str, float]) -> float:
         return math.sqrt(sum((target[k] - self._pos[k]) ** 2 for k in target))
 
     def _advance_segment(self, seg: _Segment, dt_s: float) -> float:
         """Move towards the segment end; return the unused time."""
-        if seg.feed_mm_min is None:
-            speed = self._rapid_mm_min() * self._rapid_pct / 100.0
-        else:
-            speed = seg.feed_mm_min * self._feed_pct / 100.0
+        speed = self._speed_mm_min(seg)
         distance = self._distance(seg.target)
         if distance <= EPSILON_MM:
             self._pos.update(seg.target)

@@ -53,6 +53,11 @@ class JogUnit:
         """True while any axis moves in JOG or referencing."""
         return bool(self.runs) or bool(self.pending_shift)
 
+    def velocity_mm_s(self) -> float:
+        """Resulting velocity of the axes moving now (their vector sum; 0 when none moves)."""
+        squares = sum(run.profile.state_at(max(run.tau, 0.0))[1] ** 2 for run in self.runs.values())
+        return math.sqrt(squares)
+
     def referencing(self, i: int) -> bool:
         """True while axis ``i`` runs its reference point approach."""
         run = self.runs.get(i)

@@ -400,6 +400,12 @@ class PlannedMotion(PathInterpolator):
             return self.la.items[0].source
         return None
 
+    def path_velocity_mm_min(self) -> float:
+        """The interpolator's path velocity at the last IPO cycle (see the protocol)."""
+        if self.run is not None:
+            return abs(self.run.state()[1]) * 60.0
+        return self.jog.velocity_mm_s() * 60.0
+
     def drain_alarms(self) -> list[NcAlarmError]:
         """Alarms raised by monitoring, limits and referencing since the last call."""
         out = self._alarms + self.jog.alarms

@@ -70,3 +70,40 @@ async def test_tfs_window_shows_tool_once_and_the_edge_size_with_wear(tmp_path) 
         first, second = shown.splitlines()[:2]
         assert first.split() == ["T1", "D1"]
         assert second.split() == ["L", "119.800", "R", "5.010"]
+
+
+def tfs_feed_line(app: HmiApp) -> list[str]:
+    """The words of the F line of the T,F,S window."""
+    shown = str(app.screen.query_one("#tfs").render())
+    return next(line for line in shown.splitlines() if line.split()[:1] == ["F"]).split()
+
+
+async def test_tfs_actual_feed_is_the_path_velocity_with_override_and_zero_after_stop() -> None:
+    """MDA `G1 X300 F1000`, feed override switch down eight positions (100, 95, 90, 85, 80, 75,
+    70, 60, 50 %: the keymap's steps): the actual feed reads 1000 × 50 % = 500 mm/min (002 L56305-56307), the
+    programmed 1000; after NC STOP, once the axes stand, 0. Keys sent as one burst."""
+    from nck.kernel import Nck
+    from nck.interp.sources import MemorySource
+
+    nck = Nck(programs=MemorySource({}), referenced=True)
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d", *"G1 X300 F1000", "alt+g", *["ctrl+down"] * 8)
+        app.bridge.advance(2.0)
+        await pilot.pause()
+        assert nck.status().channel.overrides["feed"] == 50.0
+        assert tfs_feed_line(app)[:5] == ["F", "500.000", "/", "1000.000", "mm/min"]
+        await pilot.press("alt+h")
+        app.bridge.advance(0.5)
+        await pilot.pause()
+        assert tfs_feed_line(app)[:5] == ["F", "0.000", "/", "1000.000", "mm/min"]
+
+
+def test_tfs_feed_under_g95_names_both_units() -> None:
+    """G95: the programmed F is per revolution, the actual path velocity per minute
+    (0.25 mm/rev at 1000 rpm = 250 mm/min, 002 L55411-55420): each value carries its unit."""
+    status = FakeNck(referenced=True).status()
+    modal = replace(status.channel.modal, gcodes={**status.channel.modal.gcodes, 15: "G95"}, feed=0.25)
+    status = replace(status, channel=replace(status.channel, modal=modal, path_feed_mm_min=250.0))
+    line = next(row for row in str(tfs_lines(status)).splitlines() if row.split()[:1] == ["F"])
+    assert line.split()[:6] == ["F", "250.000", "mm/min", "/", "0.250", "mm/rev"]
