@@ -160,6 +160,7 @@ class AreaHeader(Vertical):
 
     @staticmethod
     def _set(widget: Static, text: str) -> None:
+        # every header field has a fixed size (hmi.tcss), so a new text needs no new layout
         if getattr(widget, "_last_text", None) != text:
             widget._last_text = text  # type: ignore[attr-defined]
             widget.update(text, layout=False)

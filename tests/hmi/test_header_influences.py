@@ -9,18 +9,19 @@ the same way, so the operator sees them from every area.
 from __future__ import annotations
 
 from nck import commands as cmd
+from nck.interp.sources import MemorySource
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
+from tests.burst import burst
+from tests.hmi.screen_rows import screen_rows
 
 SIZE = (160, 48)
 
 
 def program_line(app: HmiApp) -> str:
-    """The header's third line as the operator reads it (program and influences)."""
-    header = app.screen.query_one("#header")
-    return " ".join(str(header.query_one(f"#{name}").render())
-                    for name in ("hdr-program", "hdr-influences"))
+    """The header's third row as the terminal shows it (program, influences, overrides)."""
+    return screen_rows(app).get(app.screen.query_one("#hdr-line3").region.y, "")
 
 
 async def test_influences_shown_in_every_area() -> None:
@@ -36,10 +37,34 @@ async def test_influences_shown_in_every_area() -> None:
             app.submit(cmd.SetProgramControl(name, value))
         await pilot.pause()
         line = program_line(app)
-        assert line.split()[-6:] == ["SBL", "DRY", "M01", "PRT", "ROV", "SKP"], line
+        assert "SBL DRY M01 PRT ROV SKP" in line, line
         await pilot.press("alt+n")
         await pilot.pause()
-        assert program_line(app).split()[-6:] == ["SBL", "DRY", "M01", "PRT", "ROV", "SKP"]
+        assert "SBL DRY M01 PRT ROV SKP" in program_line(app)
         app.submit(cmd.SetProgramControl("dry_run", False))
         await pilot.pause()
         assert "DRY" not in program_line(app)
+
+
+async def test_single_block_switched_on_while_a_program_runs_shows_in_the_header() -> None:
+    """SBL switched on at run time appears in the header as drawn, not only in its text.
+
+    The influences field started with no text; before the fix its width stayed 0
+    (the update skipped the layout) and SBL never reached the screen.
+    """
+    nck = Nck(programs=MemorySource({"LONG.MPF": "G1 X100 F100\nX0\nM30\n"}), referenced=True)
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+u")
+        assert app.submit(cmd.SelectProgram("LONG.MPF")) == cmd.Accepted()
+        await burst(pilot, "alt+m", "alt+g")
+        app.bridge.advance(0.5)
+        assert app.bridge.status.channel.program_state == "running"
+        await pilot.pause()
+        assert "SBL" not in program_line(app)
+        await burst(pilot, "alt+k")
+        app.bridge.advance(0.1)
+        await pilot.pause()
+        assert "SBL" in program_line(app), program_line(app)
+        await burst(pilot, "alt+k", "alt+n")
+        assert "SBL" not in program_line(app)
