@@ -366,6 +366,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if unreferenced:
             self._raise_number(ALARM_START_UNREFERENCED, unreferenced[0])
             return Rejected("Axes not referenced: " + " ".join(unreferenced), alarm=ALARM_START_UNREFERENCED)
+        self._apply_dry_run()  # SD42100/SD42101 written during the interruption
         if mode == "AUTO":
             return self._start_auto()
         return self._start_mda()
@@ -456,6 +457,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if self._pc["program_test"]:
             self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
             self._apply_overrides()  # the simulated axes run with the override switches too
+        self._apply_dry_run()
 
     def _cycle_stop(self, command: cmd.CycleStop) -> SubmitResult:
         if self._sit.channel != ACTIVE:

@@ -2,14 +2,15 @@
 written data, access (a mixin).
 
 Program control: single block SBL1/SBL2, M01, dry run (SD42100 feed with the
-SD42101 mode applied to each segment as it is pushed), program test (switched
-only in channel reset; the program runs on a simulated copy of the axes),
-rapid override (ROV) and skip levels (changed only in STOP or RESET).
+SD42101 mode, handed to the motion, which applies it to every segment not yet
+started, so a switch during NC STOP or at block end reaches the buffered
+blocks), program test (switched only in channel reset; the program runs on a
+simulated copy of the axes), rapid override (ROV) and skip levels (changed
+only in STOP or RESET).
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Any
 
 from nck import commands as cmd
@@ -24,7 +25,6 @@ from nck.motion.instant import InstantMotion
 from nck.status import LogbookEntry
 
 DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
-THREAD_KINDS = {"G33", "G34", "G35", "G331", "G332", "G63"}
 
 
 class ControlSettings(DataWrites):
@@ -33,6 +33,8 @@ class ControlSettings(DataWrites):
     machine: Any
     motion: Any
     data: Any
+    _pc: dict[str, object]  # program control switches (the kernel's)
+    _interpreters: dict[str, Interpreter]
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
@@ -46,6 +48,7 @@ class ControlSettings(DataWrites):
         elif name in ("dry_run", "m01", "rapid_override"):
             self._pc[name] = bool(value)
             self._apply_overrides()
+            self._apply_dry_run()
         elif name == "program_test":
             if self._sit.channel != RESET:
                 return Rejected("Program test can be switched only in channel reset")
@@ -54,6 +57,7 @@ class ControlSettings(DataWrites):
                 InstantMotion(self.machine, self.motion.positions_mcs()) if value else None
             )
             self._apply_overrides()
+            self._apply_dry_run()
         elif name == "skip_levels":
             try:
                 levels = frozenset(int(v) for v in (value or ()))  # type: ignore[union-attr]
@@ -150,20 +154,26 @@ class ControlSettings(DataWrites):
             interp.skip_levels = levels  # type: ignore[attr-defined]
 
     def _adjust_motion(self, motion: Motion) -> Motion:
-        """Dry run feed (SD42100/SD42101) and the WCS offset bookkeeping."""
+        """The WCS offset bookkeeping of every segment handed to the motion."""
         for axis, mcs in motion.end_mcs.items():
             if axis in motion.end_wcs:
                 self._wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
-        if not self._pc["dry_run"] or motion.kind == "G0" or motion.feed_mm_min is None:
-            return motion
-        dry = float(self._setting("SD42100", DEFAULT_DRY_RUN_MM_MIN))
+        return motion
+
+    def _apply_dry_run(self) -> None:
+        """Hand the dry run (SD42100 feed, SD42101 mode) or its absence to the motion systems
+        and to the interpreters ($P_DRYRUN); called on the switch, at NC START (setting data
+        written meanwhile) and for a new program-test motion."""
+        on = bool(self._pc["dry_run"])
+        feed = float(self._setting("SD42100", DEFAULT_DRY_RUN_MM_MIN)) if on else None
         mode = int(self._setting("SD42101", 0))
-        if mode >= 10 and motion.kind in THREAD_KINDS:
-            return motion
-        base = mode % 10
-        programmed = motion.feed_mm_min
-        feed = {0: max(programmed, dry), 1: min(programmed, dry)}.get(base, dry)
-        return replace(motion, feed_mm_min=feed, feed_mm_rev=None)  # the dry run feed is per minute
+        for motion in (self.motion, self._test_motion):
+            if motion is not None:
+                motion.set_dry_run(feed, mode)
+        for interp in self._interpreters.values():
+            flags = getattr(interp, "flags", None)
+            if isinstance(flags, dict):
+                flags["dry_run"] = on
 
     def _setting(self, name: str, default: object) -> Any:
         value = self.data.setting_data.get(name)

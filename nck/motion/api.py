@@ -69,6 +69,13 @@ class MotionSystem(Protocol):
     def drain_alarms(self) -> list[NcAlarmError]:
         """Return and forget the alarms raised by monitoring since the last call."""
 
+    def set_dry_run(self, feed_mm_min: float | None, mode: int = 0) -> None:
+        """Dry run on with SD42100 ``feed_mm_min`` and SD42101 ``mode``, or off (None).
+
+        Acts on every buffered segment that has not started, and on the interrupted one
+        while the path is held (002 L18181-18182); a segment in execution keeps its feed.
+        """
+
     def path_velocity_mm_min(self) -> float:
         """The velocity the interpolator traverses at now (the actual feed of the display).
 

@@ -21,6 +21,7 @@ from typing import Mapping
 from nck.canon import Dwell, Motion, Source
 from nck.errors import NcAlarmError
 from nck.machine import MachineConfig
+from nck.motion.dry_run import DryRun
 
 BUFFER_SEGMENTS = 8
 REFERENCE_TIME_S = 0.5
@@ -30,11 +31,15 @@ EPSILON_MM = 1e-9
 
 @dataclass
 class _Segment:
-    """A straight move to ``target`` at ``feed_mm_min`` (None = rapid)."""
+    """A straight move to ``target`` at ``feed_mm_min`` (None = rapid): the programmed
+    ``programmed_mm_min`` of a ``kind`` block, with the dry run it runs with."""
 
     target: dict[str, float]
     feed_mm_min: float | None
     source: Source | None
+    kind: str = "G0"
+    programmed_mm_min: float | None = None
+    moved: bool = False  # has started: keeps its feed when dry run is switched while running
 
 
 @dataclass
@@ -80,6 +85,7 @@ class InstantMotion:
         self._referenced = {name: referenced for name in self._axes}
         self._ref_timers: dict[str, float] = {}
         self._alarms: list[NcAlarmError] = []
+        self._dry_run: DryRun | None = None
 
     # -- MotionSystem -------------------------------------------------------
     def can_accept(self) -> bool:
@@ -93,8 +99,9 @@ class InstantMotion:
             return
         target = {name: float(item.end_mcs.get(name, math.nan)) for name in self._axes}
         target = {k: v for k, v in target.items() if not math.isnan(v)}
-        feed = None if item.kind == "G0" else item.feed_mm_min
-        self._queue.append(_Segment(target, feed, item.source))
+        programmed = None if item.kind == "G0" else item.feed_mm_min
+        feed = programmed if self._dry_run is None else self._dry_run.feed_for(item.kind, programmed)
+        self._queue.append(_Segment(target, feed, item.source, item.kind, programmed))
 
     def advance(self, dt_s: float) -> None:
         """Move everything by ``dt_s`` seconds of simulated time."""
@@ -161,6 +168,15 @@ class InstantMotion:
             if item.source is not None:
                 return item.source
         return None
+
+    def set_dry_run(self, feed_mm_min: float | None, mode: int = 0) -> None:
+        """Dry run on (SD42100, SD42101) or off (None) for the segments not yet started (all
+        of them while held)."""
+        self._dry_run = DryRun(float(feed_mm_min), int(mode)) if feed_mm_min is not None else None
+        for item in self._queue:
+            if isinstance(item, _Segment) and item.kind != "G0" and (self._held or not item.moved):
+                item.feed_mm_min = (item.programmed_mm_min if self._dry_run is None
+                                    else self._dry_run.feed_for(item.kind, item.programmed_mm_min))
 
     def path_velocity_mm_min(self) -> float:
         """Velocity of the head segment (0 while held or in a dwell), else of the JOG motion."""
@@ -237,6 +253,7 @@ class InstantMotion:
             return dt_s
         if speed <= 0.0:
             return 0.0
+        seg.moved = True
         needed_s = distance / (speed / 60.0)
         if needed_s <= dt_s:
             self._pos.update(seg.target)

@@ -20,6 +20,7 @@ import numpy as np
 
 from nck.canon import Source
 from nck.errors import NcAlarmError
+from nck.motion.dry_run import DryRun
 from nck.motion.params import MotionParams
 from nck.motion.path import Segment
 from nck.motion.profile import reach_up
@@ -80,6 +81,9 @@ class PlannedSegment:
     exit_limit: float = 0.0  # result of the backward pass
     done_s: float = 0.0  # distance already travelled (after an interruption)
     feed_mm_rev: float | None = None  # revolutional feed: feed_mm_s follows the master spindle
+    kind: str = "G0"  # the block's motion type (G1, G2, G33 …: dry run spares threads in SD42101 10-12)
+    programmed_mm_min: float | None = None  # the programmed feed per minute (not G95)
+    dry_run: DryRun | None = None  # the dry run this segment runs with (fixed once it executes)
 
     @property
     def remaining(self) -> float:

@@ -20,6 +20,7 @@ import numpy as np
 from nck.canon import Dwell, Motion, Source, SpindleCommand
 from nck.errors import NcAlarmError
 from nck.machine import MachineConfig
+from nck.motion.dry_run import DryRun
 from nck.motion.interpolator import PathInterpolator
 from nck.motion.jog import JogUnit
 from nck.motion.limits import EDGE_MM, Limits
@@ -75,8 +76,7 @@ class PlannedMotion(PathInterpolator):
         self.hold_point: np.ndarray | None = None
         self.repos_feed: float | None = None
         self.repos_pending = False
-        self.dry_run_feed_mm_min: float | None = None
-        self.dry_run_mode = 0
+        self.dry_run: DryRun | None = None  # SD42100/SD42101 while dry run is switched on
         self.time_s = 0.0
         self.cycles = 0
         self._fraction = 0.0
@@ -118,19 +118,23 @@ class PlannedMotion(PathInterpolator):
         if segment is None:
             return
         rapid = item.kind == "G0"
-        feed = None if rapid else self._effective_feed(item)
         soft = item.gcodes.get(21, "BRISK") == "SOFT" if item.gcodes else False
         window = item.exact_stop_window or "G601"
         factors = None
         if item.accel_pct:
             factors = [float(item.accel_pct.get(name, 100.0)) / 100.0 for name in self.names]
         planned = plan_segment(
-            self.params, segment, rapid=rapid, feed_mm_s=feed, soft=soft,
+            self.params, segment, rapid=rapid, feed_mm_s=None, soft=soft,
             exact_stop=bool(item.exact_stop), window=window, source=item.source,
             accel_factors=factors,
         )
-        if not rapid and self._follows_spindle(item):
-            planned.feed_mm_rev = item.feed_mm_rev
+        if not rapid:
+            planned.kind = item.kind
+            planned.programmed_mm_min = item.feed_mm_min if item.feed_mm_min and item.feed_mm_min > 0 else None
+            if item.feed_mm_rev is not None and self._master() is not None:
+                planned.feed_mm_rev = item.feed_mm_rev  # the feed follows the master spindle
+            planned.dry_run = self.dry_run
+            planned.feed_mm_s = self._segment_feed_mm_s(planned)
         self.la.append(planned)
         self._replan_if_exit_changed()
 
@@ -328,6 +332,8 @@ class PlannedMotion(PathInterpolator):
                 feed = None if rapid else self.repos_feed / 60.0
                 planned = plan_segment(self.params, segment, rapid=rapid, feed_mm_s=feed, soft=False,
                                        exact_stop=True, window="G601", source=self._last_source)
+                if not rapid:
+                    planned.kind, planned.programmed_mm_min = "G1", self.repos_feed
                 self.la.items.insert(0, planned)
 
     def abort(self) -> None:
@@ -471,9 +477,21 @@ class PlannedMotion(PathInterpolator):
         return out
 
     def set_dry_run(self, feed_mm_min: float | None, mode: int = 0) -> None:
-        """Dry run (SD42100 feed, SD42101 mode) for segments pushed from now on; None = off."""
-        self.dry_run_feed_mm_min = feed_mm_min
-        self.dry_run_mode = int(mode)
+        """Dry run on (SD42100 feed, SD42101 mode) or off (None), for every buffered segment
+        that has not started yet; the segment in execution keeps its feed unless the path
+        is held (002 L18181-18182: activated on interruption or at the end of a block)."""
+        dry = DryRun(float(feed_mm_min), int(mode)) if feed_mm_min is not None else None
+        if dry == self.dry_run:
+            return
+        self.dry_run = dry
+        running = self.run.chain[0] if self.run is not None and self.run.kind == "segment" else None
+        for item in self.la.items:
+            if isinstance(item, PlannedSegment) and not item.rapid and item is not running:
+                item.dry_run = dry
+                item.feed_mm_s = self._segment_feed_mm_s(item)
+        self.la.replan_all()
+        if running is not None:
+            self._replan_run()
 
     def set_program_test(self, active: bool) -> None:
         """Program test: the display moves, the machine does not (restored when switched off)."""
@@ -579,11 +597,6 @@ class PlannedMotion(PathInterpolator):
         """The master spindle (the first one), None on a machine without spindles."""
         return next(iter(self.spindles.values()), None)
 
-    def _follows_spindle(self, item: Motion) -> bool:
-        """True when the path feed of ``item`` comes from the master spindle's speed."""
-        return item.feed_mm_rev is not None and self._master() is not None and not (
-            self.dry_run_feed_mm_min is not None and self.dry_run_feed_mm_min > 0)
-
     def _spindle_feed_mm_min(self, feed_mm_rev: float) -> float:
         """Revolutional feed at the master spindle's speed (002 L55411-55420).
 
@@ -599,7 +612,7 @@ class PlannedMotion(PathInterpolator):
         changed = False
         for item in self.la.items:
             if isinstance(item, PlannedSegment) and item.feed_mm_rev is not None:
-                item.feed_mm_s = self._spindle_feed_mm_min(item.feed_mm_rev) / 60.0
+                item.feed_mm_s = self._segment_feed_mm_s(item)
                 changed = True
         if not changed:
             return
@@ -617,22 +630,14 @@ class PlannedMotion(PathInterpolator):
         master = self._master()
         return master.seconds_for_revolutions(revolutions) if master is not None else 0.0
 
-    def _effective_feed(self, item: Motion) -> float:
-        feed = item.feed_mm_min if item.feed_mm_min and item.feed_mm_min > 0 else None
-        if self._follows_spindle(item):
-            assert item.feed_mm_rev is not None
-            feed = self._spindle_feed_mm_min(item.feed_mm_rev)
-        dry = self.dry_run_feed_mm_min
-        if dry is not None and dry > 0:
-            mode = self.dry_run_mode % 10
-            if self.dry_run_mode >= 10 and item.kind == "G33":
-                pass
-            elif feed is None or mode == 2:
-                feed = dry
-            elif mode == 1:
-                feed = min(feed, dry)
-            else:
-                feed = max(feed, dry)
+    def _segment_feed_mm_s(self, seg: PlannedSegment) -> float:
+        """The path feed of a non-rapid segment: programmed, or F × the master spindle's speed
+        under G95, replaced by the segment's dry run feed (002 L18151-18158)."""
+        feed = seg.programmed_mm_min
+        if seg.feed_mm_rev is not None:
+            feed = self._spindle_feed_mm_min(seg.feed_mm_rev)
+        if seg.dry_run is not None:
+            feed = seg.dry_run.feed_for(seg.kind, feed)
         return (feed if feed is not None else 0.0) / 60.0
 
     def _replan_if_exit_changed(self) -> None:
