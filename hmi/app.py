@@ -49,6 +49,8 @@ from nck.termination import TERMINATION_SIGNALS, exit_on_termination
 from hmi.area import MIN_TERMINAL_SIZE, AreaBase
 from hmi.bridge import NckBridge
 from hmi.dialog import AreaDialog
+from hmi.dialogs import ConfirmDialog
+from hmi.help import HelpScreen
 from hmi.key_input import PanelTerminalDriver, own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
@@ -58,7 +60,6 @@ from hmi.messages import CommandRejected, NckStatusChanged
 from hmi.startup import build_session
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.theme import SINUMERIK_THEME
-from screens.parameter_tables import ConfirmDialog
 
 
 RETAINED_SAVE_PERIOD_S = 5.0
@@ -487,8 +488,6 @@ class HmiApp(MachineControlPanel, App):
 
     def action_help(self) -> None:
         """F11: show or hide the overlay of the keys in force."""
-        from screens.dialogs import HelpScreen
-
         if isinstance(self.screen, HelpScreen):
             self.screen.dismiss(None)
             return

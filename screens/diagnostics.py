@@ -26,6 +26,7 @@ from nck.regular_files import write_export
 from nck.trace import TraceError
 
 from hmi.area import AreaBase, show_text
+from hmi.dialogs import ConfirmDialog
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -36,7 +37,6 @@ from screens.diagnostics_service import (
     UtilisationMeter, axis_rows, drive_rows, overview_text, rows_text, utilisation_rows,
 )
 from screens.diagnostics_trace import TraceSession
-from screens.parameter_tables import ConfirmDialog
 
 VIEWS = ("alarms", "messages", "log", "overview", "axis", "drive", "utilisation", "trace",
          "version", "logbook")

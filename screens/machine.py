@@ -203,7 +203,7 @@ class MachineScreen(AreaBase):
 
     def action_choose_skip_level(self) -> None:
         """Choose a skip level /0 … /9 to switch on or off."""
-        from screens.dialogs import ChoiceDialog
+        from hmi.dialogs import ChoiceDialog
 
         active = self._skip_levels()
         choices = [f"/{n}  {'on' if n in active else 'off'}" for n in range(10)]
@@ -226,7 +226,7 @@ class MachineScreen(AreaBase):
 
     def action_select_program(self) -> None:
         """Choose the part program for AUTOMATIC from the programs the kernel knows."""
-        from screens.dialogs import ChoiceDialog
+        from hmi.dialogs import ChoiceDialog
 
         names = self.hmi.program_names()
         selected = self.status.channel.selected_program if self.status else None
@@ -260,7 +260,7 @@ class MachineScreen(AreaBase):
 
     def action_enter_required_parts(self) -> None:
         """Ask for the number of parts required ($AC_REQUIRED_PARTS)."""
-        from screens.dialogs import ValueDialog
+        from hmi.dialogs import ValueDialog
 
         current = self.status.channel.parts_required if self.status else 0
 

@@ -229,31 +229,3 @@ class ValueDialog(AreaDialog[str | None]):
     def action_cancel(self) -> None:
         """Close without a value."""
         self.dismiss(None)
-
-
-class ConfirmDialog(AreaDialog[bool]):
-    """A yes/no question: ``Y`` or Enter confirms, ``N``, F10 or Esc cancels."""
-
-    DEFAULT_CSS = """
-    ConfirmDialog { align: center middle; }
-    #confirm-box { width: 64; height: auto; background: $surface; border: thick $warning; padding: 0 1; }
-    #confirm-keys { color: $secondary; }
-    """
-    BINDINGS = [
-        Binding("y,enter", "answer(True)", "Yes", show=False),
-        Binding("n,escape", "answer(False)", "No", show=False),
-    ]
-
-    def __init__(self, question: str) -> None:
-        super().__init__(classes="confirm-dialog")
-        self._question = question
-
-    def compose(self) -> ComposeResult:
-        """The question and the keys."""
-        with Vertical(id="confirm-box"):
-            yield Static(self._question, id="confirm-question", markup=False)
-            yield Static("Y / Enter: yes     N / F10 / Esc: no", id="confirm-keys")
-
-    def action_answer(self, yes: bool) -> None:
-        """Close with the answer."""
-        self.dismiss(bool(yes))

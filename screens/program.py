@@ -279,7 +279,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         self._ask_unsaved(after="manager")
 
     def _ask_unsaved(self, after: str) -> None:
-        from screens.dialogs import ChoiceDialog
+        from hmi.dialogs import ChoiceDialog
 
         program = self.program
 
@@ -369,7 +369,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
 
     def action_offer_restore_any(self) -> None:
         """Restore softkey: list the journal entries and restore the chosen one."""
-        from screens.dialogs import ChoiceDialog
+        from hmi.dialogs import ChoiceDialog
 
         try:
             entries = self.journal.entries()
@@ -399,7 +399,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         )
 
     def _ask_restore(self, entry: Any) -> None:
-        from screens.dialogs import ChoiceDialog
+        from hmi.dialogs import ChoiceDialog
 
         def chosen(choice: str | None) -> None:
             if choice == "Restore unsaved text":

@@ -31,10 +31,10 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
+from hmi.dialogs import ConfirmDialog
 from hmi.softkeys import Softkey, SoftkeyMenu
 from nck.storage import ProgramEntry
 
-from screens.parameter_tables import ConfirmDialog
 from screens.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 
 
@@ -449,7 +449,7 @@ class ProgramManagerScreen(AreaBase):
 
     def action_delete(self) -> None:
         """Delete: ask, then delete (refused for the program being executed)."""
-        from screens.dialogs import ChoiceDialog
+        from hmi.dialogs import ChoiceDialog
 
         entry = self.current_entry()
         if entry is None:

@@ -170,7 +170,7 @@ async def test_monkey_long(seed: int, tmp_path: Path) -> None:
 
 async def test_help_opened_again_after_an_area_switch(tmp_path: Path) -> None:
     """Found by the monkey: F11, an area key, F11 again raised DuplicateIds('help')."""
-    from screens.dialogs import HelpScreen
+    from hmi.help import HelpScreen
 
     app = make_app(data_dir=str(tmp_path / "data"), realtime=False)
     keys = {b.id: b.keys.split(",")[0].strip() for b in default_keymap().bindings}

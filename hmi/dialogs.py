@@ -1,4 +1,5 @@
-"""Shared modal dialogs: key help (F11), a choice list (program selection …), a value input.
+"""Modal dialogs shared by the app and the areas: a choice list (program selection …), a value
+input, a yes/no question. Their base class is :class:`hmi.dialog.AreaDialog`.
 
 Each dialog returns its result with ``dismiss()``; F10 (MENU RECALL) closes
 any dialog without a result.
@@ -8,64 +9,13 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from rich.table import Table
-from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Vertical, VerticalScroll
+from textual.containers import Vertical
 from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from hmi.dialog import AreaDialog
-from hmi.keymap import Keymap
-from hmi.softkeys import SoftkeyMenu
-
-SCOPE_TITLES = {"op": "Operator panel", "mcp": "Machine control panel", "softkey": "Softkeys"}
-
-
-def help_table(keymap: Keymap, menu: SoftkeyMenu) -> Table:
-    """Return the table of the keys in force: softkeys of the current level, then all keys."""
-    table = Table(expand=True, show_edge=False, box=None, padding=(0, 1))
-    table.add_column("Key", style="bold", width=14)
-    table.add_column("Panel key", width=18)
-    table.add_column("Meaning")
-    for prefix, bar, fkey in (("h", menu.horizontal, "F"), ("v", menu.vertical, "Shift+F")):
-        for index, softkey in enumerate(bar, start=1):
-            if softkey is not None:
-                table.add_row(f"{fkey}{index}", f"{prefix.upper()}SK{index}",
-                              softkey.label.replace("\n", " "))
-    for scope in ("op", "mcp"):
-        table.add_row("", "", "")
-        table.add_row("", "", Text(SCOPE_TITLES[scope], style="bold underline"))
-        for binding in keymap.bindings:
-            if binding.scope == scope:
-                table.add_row(binding.key_display, binding.panel, binding.label)
-    return table
-
-
-class HelpScreen(AreaDialog[None]):
-    """F11: the keys in force (current softkeys and the whole panel)."""
-
-    BINDINGS = [Binding("escape", "dismiss_help", "Close", show=False)]
-
-    def __init__(self, keymap: Keymap, menu: SoftkeyMenu) -> None:
-        super().__init__(id="help")
-        self._keymap = keymap
-        self._menu = menu
-
-    def compose(self) -> ComposeResult:
-        """One scrollable table."""
-        with VerticalScroll(id="help-box"):
-            yield Static("HELP — keys in force   (F11 or F10 closes)", id="help-title")
-            yield Static(help_table(self._keymap, self._menu), id="help-table")
-
-    def on_mount(self) -> None:
-        """Focus the list so the arrow keys and PgUp/PgDn scroll it."""
-        self.query_one("#help-box").focus()
-
-    def action_dismiss_help(self) -> None:
-        """Close the overlay."""
-        self.dismiss(None)
 
 
 class ChoiceDialog(AreaDialog[str | None]):
@@ -142,3 +92,31 @@ class ValueDialog(AreaDialog[str | None]):
     def action_cancel(self) -> None:
         """Close without a value."""
         self.dismiss(None)
+
+
+class ConfirmDialog(AreaDialog[bool]):
+    """A yes/no question: ``Y`` or Enter confirms, ``N``, F10 or Esc cancels."""
+
+    DEFAULT_CSS = """
+    ConfirmDialog { align: center middle; }
+    #confirm-box { width: 64; height: auto; background: $surface; border: thick $warning; padding: 0 1; }
+    #confirm-keys { color: $secondary; }
+    """
+    BINDINGS = [
+        Binding("y,enter", "answer(True)", "Yes", show=False),
+        Binding("n,escape", "answer(False)", "No", show=False),
+    ]
+
+    def __init__(self, question: str) -> None:
+        super().__init__(classes="confirm-dialog")
+        self._question = question
+
+    def compose(self) -> ComposeResult:
+        """The question and the keys."""
+        with Vertical(id="confirm-box"):
+            yield Static(self._question, id="confirm-question", markup=False)
+            yield Static("Y / Enter: yes     N / F10 / Esc: no", id="confirm-keys")
+
+    def action_answer(self, yes: bool) -> None:
+        """Close with the answer."""
+        self.dismiss(bool(yes))
