@@ -58,7 +58,7 @@ from nck.errors import NcAlarmError
 from nck.machine import MachineConfig, load_machine
 from nck.machine_data import DataError, MachineDataStore, catalog, fill_setting_defaults
 from nck.ncdata import NcData, ToolEdge, WorkOffset
-from nck.regular_files import read_regular_bytes
+from nck.regular_files import plain_directory, read_regular_bytes, set_aside
 from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError
@@ -378,17 +378,6 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     rd.alarm_log = scratch.alarm_log
 
 
-def _set_aside(path: Path) -> Path:
-    """Rename a bad file to ``<name>.bad-<n>`` (first free n); return the new path."""
-    n = 1
-    while True:
-        target = path.with_name(f"{path.name}.bad-{n}")
-        if not os.path.lexists(target):
-            path.rename(target)
-            return target
-        n += 1
-
-
 def _read_section_file(path: Path) -> bytes:
     """The content of a retained file; BadFile for a link, FIFO, device or an oversized file."""
     try:
@@ -412,7 +401,7 @@ def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmEr
             return []
         except BadFile as exc:
             reason = str(exc)
-        kept = _set_aside(main).name
+        kept = set_aside(main).name
     else:
         kept = "-"
     if os.path.lexists(backup):
@@ -422,7 +411,7 @@ def load_section(directory: Path, name: str, rd: RetainedData) -> list[NcAlarmEr
             atomic_write_bytes(main, raw, private=name in PRIVATE_SECTIONS)  # the backup becomes the file again
             return [NcAlarmError(ALARM_FROM_BACKUP, main.name, reason, kept)]
         except BadFile:
-            _set_aside(backup)
+            set_aside(backup)
     return [NcAlarmError(ALARM_DEFAULTS_LOADED, main.name, reason, kept)]
 
 
@@ -491,14 +480,22 @@ class Session:
              install_samples: bool = True, samples: Path | None = None) -> "Session":
         """Start from the data directory (created when new): load, recover, install samples."""
         data_dir = Path(data_dir)
+        data_dir.mkdir(parents=True, exist_ok=True)
         retained_dir = data_dir / RETAINED_DIR
-        retained_dir.mkdir(parents=True, exist_ok=True)
+        alarms: list[NcAlarmError] = []
+        odd_folders = [(retained_dir, plain_directory(retained_dir))]
         remove_stale_temp_files(retained_dir)
         files = NcFileSystem(data_dir / NC_DIR)
+        odd_folders += files.folders_set_aside
+        for folder, kept in odd_folders:
+            if kept is not None:  # a link, pipe or file in place of a folder: a new empty one is used
+                alarms.append(NcAlarmError(
+                    ALARM_DEFAULTS_LOADED, folder.relative_to(data_dir).as_posix(),
+                    "a link, not a folder" if kept.is_symlink() else "not a folder",
+                    kept.relative_to(data_dir).as_posix()))
         if install_samples:
             files.install_samples(samples if samples is not None else data_path("programs"))
         rd = RetainedData()
-        alarms: list[NcAlarmError] = []
         damaged: list[str] = []
         for name in SECTIONS:
             found = load_section(retained_dir, name, rd)

@@ -66,6 +66,38 @@ def is_plain_directory(path: Path | str) -> bool:
         return False
 
 
+def set_aside(path: Path) -> Path:
+    """Rename the entry ``path`` (itself: a link is not followed) to ``<name>.bad-<n>``; return it.
+
+    ``n`` is the first number free; what was there stays as it was, for the operator to look at.
+    """
+    n = 1
+    while True:
+        target = path.with_name(f"{path.name}.bad-{n}")
+        if not os.path.lexists(target):
+            path.rename(target)
+            return target
+        n += 1
+
+
+def plain_directory(path: Path) -> Path | None:
+    """Make ``path`` a directory of its own; return where an entry of another kind was kept.
+
+    A folder the program fills and lists must not be a link (its writes would
+    land elsewhere), a FIFO or a file: such an entry is set aside
+    (:func:`set_aside`) and a new, empty directory takes its place. Returns
+    None when ``path`` was a directory already or did not exist. The parent must
+    be a plain directory itself (call this from the top down).
+    """
+    if is_plain_directory(path):
+        return None
+    kept = set_aside(path) if os.path.lexists(path) else None
+    path.mkdir(parents=True, exist_ok=True)
+    if not is_plain_directory(path):  # replaced again meanwhile
+        raise NotARegularFile(path)
+    return kept
+
+
 def open_regular(path: Path | str, flags: int, mode: int = 0o644, *, follow_links: bool = False) -> int:
     """``os.open`` that refuses links, FIFOs and devices; return the descriptor.
 
@@ -109,11 +141,15 @@ def copy_regular_tree(source: Path, target: Path, limit_bytes: int,
                       skip_name: Callable[[str], bool] | None = None) -> list[Path]:
     """Copy the directories and regular files below ``source`` to ``target`` (created).
 
-    Links, FIFOs, sockets and devices are not copied (never followed); neither
+    ``source`` itself must be a directory, not a link to one (else
+    :class:`NotARegularFile`). Links, FIFOs, sockets and devices below it are
+    not copied (never followed); neither
     is anything past ``limit_bytes`` in total (:class:`FileTooLarge` is raised,
     the caller removes ``target``). ``skip_name`` leaves out entries by name
     (e.g. temporary files). Returns the entries left out because of their kind.
     """
+    if not is_plain_directory(source):
+        raise NotARegularFile(source)
     skipped: list[Path] = []
     copied_bytes = 0
     target.mkdir(parents=True)

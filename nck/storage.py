@@ -30,7 +30,8 @@ from typing import Callable, Iterable
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
 from nck.regular_files import (
-    copy_regular_tree, is_plain_directory, is_regular_file, read_regular_bytes, write_export,
+    copy_regular_tree, is_plain_directory, is_regular_file, plain_directory, read_regular_bytes,
+    write_export,
 )
 
 DIRECTORIES = ("MPF", "SPF", "WKS")
@@ -48,7 +49,7 @@ class StorageError(Exception):
     """A file operation was refused or failed; ``str()`` is a message for the operator.
 
     ``code`` is one of ``invalid_name``, ``bad_path``, ``exists``, ``not_found``,
-    ``in_use``, ``not_text``, ``io``.
+    ``in_use``, ``not_text``, ``io``, ``odd`` (a folder that is a link, pipe or file).
     """
 
     def __init__(self, code: str, message: str) -> None:
@@ -113,12 +114,22 @@ class OpenedProgram:
 
 
 class NcFileSystem:
-    """The NC file system below ``root``; creates its directories when missing."""
+    """The NC file system below ``root``; creates its directories when missing.
+
+    ``root`` and its directories MPF, SPF and WKS are never links: an entry of
+    another kind in their place is set aside as ``<name>.bad-<n>`` and a new
+    empty folder used (:func:`nck.regular_files.plain_directory`);
+    :attr:`folders_set_aside` lists ``(folder, where it was kept)`` for the report.
+    """
 
     def __init__(self, root: Path | str) -> None:
         self.root = Path(root)
+        self.folders_set_aside: list[tuple[Path, Path]] = []
+        for folder in (self.root, *(self.root / d for d in DIRECTORIES)):
+            kept = plain_directory(folder)
+            if kept is not None:
+                self.folders_set_aside.append((folder, kept))
         for directory in DIRECTORIES:
-            (self.root / directory).mkdir(parents=True, exist_ok=True)
             remove_stale_temp_files(self.root / directory)
         self._in_use: set[str] = set()
         #: Returns the paths or file names of the programs in use (selected/running).
@@ -154,9 +165,16 @@ class NcFileSystem:
         return "/".join(parts)
 
     def _disk(self, canonical: str) -> Path:
-        """The file on disk for a canonical path (matching names case-insensitively)."""
+        """The file on disk for a canonical path (matching names case-insensitively).
+
+        Raises StorageError ``odd`` when a folder on the way is not a folder of its
+        own (a link to one, a pipe, a file): nothing is read or written through it.
+        """
         current = self.root
         for part in canonical.split("/"):
+            if current != self.root and os.path.lexists(current) and not is_plain_directory(current):
+                raise StorageError("odd", f"{current.name}: not a folder of the NC memory "
+                                          "(a link, pipe or file) — not used")
             candidate = current / part
             if not candidate.exists() and current.is_dir():
                 for existing in current.iterdir():
@@ -217,7 +235,10 @@ class NcFileSystem:
         """
         canonical = self.canonical(directory)
         disk = self._disk(canonical)
-        if not disk.is_dir():
+        if not is_plain_directory(disk):
+            if os.path.lexists(disk):
+                raise StorageError("odd", f"{canonical}: not a folder of the NC memory (a link, pipe "
+                                          "or file) — not used")
             raise StorageError("not_found", f"{directory} does not exist")
         entries, odd = [], []
         for item in disk.iterdir():
