@@ -22,7 +22,7 @@ run: $(STAMP)
 
 test: $(STAMP)
 	$(COMPILE)
-	$(BIN)/python -m pytest -q -n 2 -p no:cacheprovider
+	$(BIN)/python -m pytest -q -n 2 -p no:cacheprovider --durations=15
 
 fuzz: $(STAMP)
 	$(BIN)/python -m pytest -q -m fuzz -p no:cacheprovider

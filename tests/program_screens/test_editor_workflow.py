@@ -8,6 +8,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
+import screens.program
+
 from tests.program_screens.conftest import SIZE, make_program_app, settle
 
 
@@ -117,8 +121,11 @@ async def test_leaving_the_area_with_unsaved_changes_asks(data_dir: Path) -> Non
         assert app.screen.editor.text.startswith("G1")
 
 
-async def test_crash_restore_from_the_journal(data_dir: Path) -> None:
+async def test_crash_restore_from_the_journal(data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Text typed before a kill (journal written by the autosave timer) is offered after restart."""
+    # the test calls autosave itself: the real timer (wall clock) fired in the middle of the keys
+    # on a loaded machine and journalled the "N" of "N6"
+    monkeypatch.setattr(screens.program, "AUTOSAVE_PERIOD_S", 3600.0)
     first = make_program_app(data_dir)
     async with first.run_test(size=SIZE) as pilot:
         await pilot.press("alt+n", "f3")
