@@ -91,12 +91,16 @@ class Motion:
 class Dwell:
     """G4: wait ``seconds`` of time or ``revolutions`` of the spindle; with ``wait_spindle``
     (SPOS, M19, WAITS) wait until the master spindle is positioned, stands or turns at
-    its set speed (002 L51302-51335)."""
+    its set speed (002 L51302-51335). ``gcodes`` (the active member of every G group) and
+    ``feed`` (the programmed F in force, in its own units) are the block's modal state, shown
+    while the dwell runs."""
 
     source: Source
     seconds: float | None = None
     revolutions: float | None = None
     wait_spindle: bool = False
+    gcodes: Mapping[int, str] = field(default_factory=dict)
+    feed: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

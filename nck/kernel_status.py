@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from nck.canon import Motion
+from nck.canon import Dwell, Motion
 from nck.channel import INTERRUPTED
 from nck.geometry.cutting_edge import effective_radius
 from nck.geometry.tool_length import effective_lengths
@@ -62,6 +62,7 @@ class StatusView:
             current_source = run.last_executed_source()
         current = None
         executing: Motion | None = None
+        executing_state: Motion | Dwell | None = None  # the segment or dwell in execution
         blocks: tuple = ()
         dtg: dict[str, float] = {}
         if run is not None:
@@ -73,8 +74,10 @@ class StatusView:
                         break
                 segment = run.segments.get(id(current_source))
                 if segment is not None and segment.source is current_source:
-                    dtg = {a: float(v) - positions.get(a, 0.0) for a, v in segment.end_mcs.items()}
-                    executing = segment
+                    executing_state = segment
+                    if isinstance(segment, Motion):
+                        dtg = {a: float(v) - positions.get(a, 0.0) for a, v in segment.end_mcs.items()}
+                        executing = segment
             if current is None and blocks:
                 current = blocks[-1]
         offsets = dict(self._wcs_offset)
@@ -110,10 +113,10 @@ class StatusView:
                 extra=_service_values(state) if state is not None else {},
             ))
         modal = self._modal_view(run)
-        if executing is not None and executing.gcodes:
-            # The main run lags the interpreter: show the G codes of the executing block.
-            modal = replace(modal, gcodes={**dict(modal.gcodes), **dict(executing.gcodes)},
-                            feed=executing.feed if executing.feed is not None else modal.feed)
+        if executing_state is not None and executing_state.gcodes:
+            # The main run lags the interpreter: show the G codes and F of the executing block.
+            feed = executing_state.feed if executing_state.feed is not None else modal.feed
+            modal = replace(modal, gcodes={**dict(modal.gcodes), **dict(executing_state.gcodes)}, feed=feed)
         repos = {}
         if self._repos_point is not None and self._owner is not None:
             now = self._path_positions(self.motion)

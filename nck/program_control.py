@@ -120,7 +120,8 @@ class ProgramRun:
         # Recent segments by the identity of their block's Source: a line run several
         # times (loops, subprogram passes) has one Source per run, and the look-ahead
         # buffer may hold several runs of it at once.
-        self.segments: dict[int, Motion] = {}
+        # A dwell is kept under its block unless a segment of that block is (a spindle wait).
+        self.segments: dict[int, Motion | Dwell] = {}
         self.pushed: deque[Motion | Dwell] = deque(maxlen=PUSHED_HISTORY)
         self._requeued: deque[Motion | Dwell] = deque()
         # Main-run bookkeeping: outputs (aux functions, MSG) of a block go out when
@@ -250,10 +251,11 @@ class ProgramRun:
                 if isinstance(command, Motion):
                     command = self._transform(command)
                     self.last_motion = command
-                    src = command.source
-                    self.segments[id(src)] = command
-                    if len(self.segments) > 256:
-                        self.segments.pop(next(iter(self.segments)))
+                    self.segments[id(command.source)] = command
+                else:
+                    self.segments.setdefault(id(command.source), command)
+                if len(self.segments) > PUSHED_HISTORY:
+                    self.segments.pop(next(iter(self.segments)))
                 self._push(motion, command)
                 if isinstance(command, Motion) and self._single_segment_stop(options, commands):
                     self._index += 1

@@ -621,7 +621,9 @@ class BlockRun:
                 number = _whole(to_number(self.eval(arg), "WAITS"), "WAITS") if arg is not None else 1
                 if not 1 <= number <= len(self.interp.machine.spindles):
                     raise NcAlarmError(12550, f"WAITS({number})")
-            self.late.append(canon.Dwell(self.source, wait_spindle=True))
+            modal = self.interp.modal
+            self.late.append(canon.Dwell(self.source, wait_spindle=True, gcodes=dict(modal.gcodes),
+                                         feed=modal.feed))
         elif name == "RET":
             self.end_kind = "RET"
             self.ret_target = subprograms.return_target(self.eval, stmt.args)

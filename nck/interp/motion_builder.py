@@ -125,7 +125,8 @@ class MotionBuilder:
         self.spindle_wait = False
         out = self._build_commands(words, modal, geo)
         if self.spindle_wait:
-            out.append(canon.Dwell(words.source, wait_spindle=True))
+            out.append(canon.Dwell(words.source, wait_spindle=True, gcodes=dict(modal.gcodes),
+                                   feed=modal.feed))
         return out
 
     def _build_commands(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> list[canon.CanonCommand]:
@@ -218,7 +219,8 @@ class MotionBuilder:
         for value in (seconds, revolutions):
             if value is not None and value < 0:
                 raise NcAlarmError(12160, "G4")
-        out.append(canon.Dwell(words.source, seconds=seconds, revolutions=revolutions))
+        out.append(canon.Dwell(words.source, seconds=seconds, revolutions=revolutions,
+                               gcodes=dict(modal.gcodes), feed=modal.feed))
         return out
 
     # ------------------------------------------------------------------ feed
