@@ -46,6 +46,7 @@ from nck.commands import Accepted, SubmitResult
 from nck.status import NckStatus
 from nck.termination import TERMINATION_SIGNALS, exit_on_termination
 
+from hmi.alarm_times import AlarmTimes
 from hmi.area import MIN_TERMINAL_SIZE, AreaBase
 from hmi.bridge import NckBridge
 from hmi.dialog import AreaDialog
@@ -171,6 +172,7 @@ class HmiApp(MachineControlPanel, App):
         realtime: advance the kernel from a wall-clock timer (False in tests).
         keymap: the key table (default: ``data/keymap.toml``).
         on_quit: called before the app exits (saves NC data).
+        alarm_times: the wall-clock stamps of the alarm log (those the NC data session retains).
     """
 
     CSS_PATH = "hmi.tcss"
@@ -180,12 +182,12 @@ class HmiApp(MachineControlPanel, App):
     """Every key of ``data/keymap.toml``, as priority bindings (they work over editors)."""
 
     def __init__(self, nck: Any, *, realtime: bool = True, keymap: Keymap | None = None,
-                 on_quit: Callable[[], None] | None = None) -> None:
+                 on_quit: Callable[[], None] | None = None, alarm_times: AlarmTimes | None = None) -> None:
         self.keymap = keymap or default_keymap()
         super().__init__()
         self.register_theme(SINUMERIK_THEME)
         self.theme = SINUMERIK_THEME.name
-        self.bridge = NckBridge(nck, realtime=realtime)
+        self.bridge = NckBridge(nck, realtime=realtime, alarm_times=alarm_times)
         self.latest_status: NckStatus | None = None
         self.hint = ""
         """The message last written on a dialog line (each area keeps its own)."""
@@ -575,7 +577,8 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
     if nck is None:
         session = build_session(machine, data_dir, ephemeral, program, confirm)
         nck, on_quit = session.nck, session.quit
-    app = HmiApp(nck, realtime=realtime, on_quit=on_quit)
+    app = HmiApp(nck, realtime=realtime, on_quit=on_quit,
+                 alarm_times=session.alarm_times if session is not None else None)
     app.nc_session = session
     return app
 

@@ -20,6 +20,7 @@ from textual.message_pump import MessagePump
 from nck.commands import Accepted, EnterPassword, Rejected, SubmitResult
 from nck.status import NckStatus
 
+from hmi.alarm_times import AlarmTimes
 from hmi.messages import AlarmLogged, CommandRejected, NckStatusChanged
 
 REFRESH_PERIOD_S = 0.05
@@ -50,6 +51,8 @@ class NckBridge:
         realtime: start a timer that advances the kernel with the wall clock.
         ipo_cycle_s: the kernel's IPO cycle; :meth:`step` advances whole cycles.
         clock: monotonic clock in seconds (replaceable for tests).
+        alarm_times: where the log entries read are stamped with the wall clock
+            (a fresh :class:`AlarmTimes` when None).
     """
 
     def __init__(
@@ -59,8 +62,11 @@ class NckBridge:
         realtime: bool = True,
         ipo_cycle_s: float | None = None,
         clock: Callable[[], float] = time.monotonic,
+        alarm_times: AlarmTimes | None = None,
     ) -> None:
         self.nck = nck
+        self.alarm_times = alarm_times if alarm_times is not None else AlarmTimes()
+        """Date and time of day of the alarms and messages read from the kernel's log."""
         self.realtime = realtime
         self.ipo_cycle_s = ipo_cycle_s or float(getattr(nck, "ipo_cycle_s", 0.002) or 0.002)
         self.clock = clock
@@ -160,6 +166,7 @@ class NckBridge:
             return
         for entry in reader(self._last_log_seq):
             self._last_log_seq = max(self._last_log_seq, entry.seq)
+            self.alarm_times.record(entry)
             self._post(AlarmLogged(entry))
 
     def _password_delay_s(self) -> float:

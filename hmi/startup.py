@@ -18,6 +18,8 @@ from typing import Any, Callable
 from nck import commands as cmd
 from nck.commands import Rejected
 
+from hmi.alarm_times import AlarmTimes
+
 
 PART_COUNTERS = ("TOTAL_PARTS", "REQUIRED_PARTS", "ACTUAL_PARTS", "SPECIAL_PARTS")
 """Workpiece counters ``$AC_…`` that are retained (REQUIRED first: it bounds nothing but is set before ACTUAL)."""
@@ -29,6 +31,8 @@ class NcDataSession:
     def __init__(self, session: Any, copy: Any = None) -> None:
         self.session = session
         self._copy = copy
+        self.alarm_times = AlarmTimes()
+        """Date and time of the alarm log's entries (the bridge stamps them; retained with the log)."""
         self.nck = self._build_kernel()
 
     def _build_kernel(self) -> Any:
@@ -42,7 +46,7 @@ class NcDataSession:
             nck.raise_alarm(alarm)
         restore = getattr(self.session, "restore_alarm_log", None)
         if callable(restore):
-            restore(nck)
+            self.alarm_times.restart(restore(nck))
         data = self.session.ncdata
         for key in PART_COUNTERS:  # the kernel keeps them itself: hand it the retained values
             if key in data.part_counters:
@@ -68,7 +72,7 @@ class NcDataSession:
         self._collect()
         store = getattr(self.session, "store_alarm_log", None)
         if callable(store):
-            store(self.nck)
+            store(self.nck, self.alarm_times.retained())
         return self.session.save()
 
     def power_on(self) -> Any:

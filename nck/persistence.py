@@ -70,6 +70,8 @@ ARCHIVE_VERSION = 1
 RETAINED_DIR = "retained"
 NC_DIR = "nc"
 ALARM_LOG_LIMIT = 500
+WALL_CLOCK_STAMPS = ("came_at", "went_at")
+"""Keys of a retained alarm-log entry the HMI fills (date and time of day as ISO text)."""
 ALARM_FROM_BACKUP = 4065
 ALARM_DEFAULTS_LOADED = 4060
 SECTION_LIMIT_BYTES = 32 * 1024 * 1024
@@ -312,6 +314,8 @@ def _load_alarm_log(data: Mapping[str, Any], rd: RetainedData) -> None:
     for entry in data["entries"]:
         entry = dict(_plain(_mapping(entry)))
         alarm_entry_from_dict(entry)  # every field of the right type
+        if any(not isinstance(entry.get(name, ""), str) for name in WALL_CLOCK_STAMPS):
+            raise ValueError("an alarm's date and time must be text")
         entries.append(entry)
     rd.alarm_log = entries[-ALARM_LOG_LIMIT:]
 
@@ -535,29 +539,37 @@ class Session:
             self.retained.alarm_log.append(_plain({k: v for k, v in data.items()}))
         del self.retained.alarm_log[:-ALARM_LOG_LIMIT]
 
-    def restore_alarm_log(self, nck: Any) -> None:
+    def restore_alarm_log(self, nck: Any) -> dict[int, dict[str, Any]]:
         """Give the kernel the retained alarm log (after power on), as entries before its own.
 
         Retained entries get negative sequence numbers (oldest lowest), so they
         never mix with the ones the kernel numbers from 1 after this power on;
         the diagnosis marks them as coming from before the last power on.
+        Returns the wall-clock stamps the HMI kept with them (``came_at``,
+        ``went_at``; see :meth:`store_alarm_log`) by the sequence number given.
         """
         self._alarm_base = list(self.retained.alarm_log)
         entries = [alarm_entry_from_dict(data) for data in self._alarm_base]
         count = len(entries)
         nck.load_alarm_history([dataclasses.replace(e, seq=index - count) for index, e in enumerate(entries)])
+        return {index - count: {name: data[name] for name in WALL_CLOCK_STAMPS if name in data}
+                for index, data in enumerate(self._alarm_base)}
 
-    def store_alarm_log(self, nck: Any) -> None:
+    def store_alarm_log(self, nck: Any, stamps: Mapping[int, Mapping[str, str]] | None = None) -> None:
         """Replace the retained alarm log by the retained part plus this power on's entries (bounded).
 
         Call before :meth:`save` (on quit; calling it again later is fine). Alarms
-        still pending keep ``went_s`` None.
+        still pending keep ``went_s`` None. ``stamps`` are wall-clock times the caller
+        keeps for this power on's entries (the kernel has no clock), by entry ``seq``:
+        stored with them as text.
         """
         base = getattr(self, "_alarm_base", None)
         if base is None:
             base = self._alarm_base = list(self.retained.alarm_log)
         self.retained.alarm_log = list(base)
-        self.record_alarms(e for e in nck.alarm_history() if e.seq > 0)
+        stamps = stamps or {}
+        self.record_alarms({**dataclasses.asdict(e), **stamps.get(e.seq, {})}
+                           for e in nck.alarm_history() if e.seq > 0)
 
     def active_machine(self) -> MachineConfig:
         """The machine with the active MD values (build the kernel from this)."""

@@ -240,7 +240,8 @@ class DiagnosticsScreen(AreaBase):
         rows = log_rows(self._history(), self.log_filter)
         name = "alarm_log.csv" if kind == "csv" else "alarm_log.txt"
         path = Path(self.export_dir) / name
-        data = (log_as_csv(rows) if kind == "csv" else log_as_text(rows)).encode("utf-8")
+        times = self.hmi.bridge.alarm_times
+        data = (log_as_csv(rows, times) if kind == "csv" else log_as_text(rows, times)).encode("utf-8")
 
         def write(replace: bool) -> Path:
             write_export(path, data, replace=replace)
@@ -364,13 +365,14 @@ class DiagnosticsScreen(AreaBase):
         return self.query_one(f"#diag-{view}", Static)
 
     def _render_alarms(self, status: NckStatus) -> None:
-        show_text(self._body("alarms"), alarm_list_text(status.alarms))
+        show_text(self._body("alarms"), alarm_list_text(status.alarms, self.hmi.bridge.alarm_times))
 
     def _render_messages(self, status: NckStatus) -> None:
         reader = getattr(self.kernel, "alarm_log_since", None)
         events = tuple(reader(0)) if callable(reader) else ()
-        lines = message_lines(status.channel.message, events, status.alarms)
-        show_text(self._body("messages"), messages_text(lines, events))
+        times = self.hmi.bridge.alarm_times
+        lines = message_lines(status.channel.message, events, status.alarms, times)
+        show_text(self._body("messages"), messages_text(lines, events, times))
 
     def _render_log(self, status: NckStatus) -> None:
         if status.alarm_log_seq == self._log_seq:
@@ -379,7 +381,8 @@ class DiagnosticsScreen(AreaBase):
         history = self._history()
         rows = log_rows(history, self.log_filter)
         total = len([e for e in history if e.category != "message"])
-        show_text(self._body("log"), log_text(rows, self.log_filter, total, self.log_first, LOG_PAGE))
+        show_text(self._body("log"), log_text(rows, self.log_filter, total, self.hmi.bridge.alarm_times,
+                                              self.log_first, LOG_PAGE))
 
     def _selected_axis(self, status: NckStatus) -> Any:
         self.axis_index %= max(len(status.axes), 1)

@@ -1,9 +1,11 @@
 """Alarm list, messages and alarm log of the Diagnostics area: rows, filter, export.
 
 Pure functions over :class:`nck.status.AlarmEntry` / :class:`AlarmEvent`, so
-the views and their tests need no running app. Times are simulated-control
-times since power on (``hh:mm:ss.cc``); entries retained from an earlier power
-on carry a negative ``seq`` (see :mod:`nck.persistence`) and are marked ``PO-``.
+the views and their tests need no running app. Alarms and messages show the
+date and time of day the HMI stamped them with (:mod:`hmi.alarm_times`);
+entries retained from an earlier power on carry a negative ``seq`` (see
+:mod:`nck.persistence`), are marked ``PO-`` and stay below this power on's
+entries (the log is ordered by sequence, newest first).
 """
 
 from __future__ import annotations
@@ -11,11 +13,14 @@ from __future__ import annotations
 import csv
 import io
 from dataclasses import dataclass
+from datetime import datetime
 from typing import Iterable, Sequence
 
 from rich.text import Text
 
 from nck.status import AlarmEntry, AlarmEvent
+
+from hmi.alarm_times import AlarmTimes, date_time_text
 
 CLEAR_SYMBOLS: dict[str, str] = {
     "power_on": "◉",  # switch the control off and on
@@ -29,6 +34,7 @@ CLEAR_NAMES: dict[str, str] = {
     "self": "self-clearing",
 }
 CATEGORY_STYLES = {"user": "bold yellow", "message": "cyan", "axis": "bold red"}
+STAMP_WIDTH = len("2026-11-26 07:15:00")
 
 
 def clock_text(seconds: float | None) -> str:
@@ -59,20 +65,21 @@ def alarm_list_rows(alarms: Iterable[AlarmEntry]) -> list[AlarmEntry]:
     return sorted(alarms, key=lambda e: e.seq, reverse=True)
 
 
-def alarm_list_text(alarms: Sequence[AlarmEntry], width: int = 150) -> Text:
-    """The alarm list: ``Time | Clear | Number | Text | Source``, newest first."""
+def alarm_list_text(alarms: Sequence[AlarmEntry], times: AlarmTimes) -> Text:
+    """The alarm list: ``Date and time | Clear | Number | Text | Source``, newest first."""
     text = Text(no_wrap=True, end="")
-    text.append(f" {'Time':<12} {'Del':<4} {'Number':>6}  {'Text':<96} Source\n", style="bold")
+    text.append(f" {'Date and time':<{STAMP_WIDTH}} {'Del':<4} {'Number':>6}  {'Text':<90} Source\n",
+                style="bold")
     rows = alarm_list_rows(alarms)
     if not rows:
         text.append(" No active alarms.", style="dim")
         return text
     for entry in rows:
         symbol = CLEAR_SYMBOLS.get(entry.clear, "?")
-        text.append(f" {clock_text(entry.came_s):<12} {symbol:<4} ")
+        text.append(f" {date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} {symbol:<4} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
-        body = entry.text if len(entry.text) <= 96 else entry.text[:95] + "…"
-        text.append(f"  {body:<96} {source_text(entry)}\n")
+        body = entry.text if len(entry.text) <= 90 else entry.text[:89] + "…"
+        text.append(f"  {body:<90} {source_text(entry)}\n")
     text.append("\n Clear: ")
     for key in ("cancel", "reset", "nc_start", "power_on", "self"):
         text.append(f"{CLEAR_SYMBOLS[key]} {CLEAR_NAMES[key]}   ", style="dim")
@@ -83,42 +90,43 @@ def alarm_list_text(alarms: Sequence[AlarmEntry], width: int = 150) -> Text:
 
 @dataclass(frozen=True, slots=True)
 class MessageLine:
-    """One NC or cycle message: when it came, its text, where it came from."""
+    """One NC or cycle message: when it came (None: not known), its text, where it came from."""
 
-    time_s: float
+    came_at: datetime | None
     text: str
     source: str
 
 
-def message_lines(current: str, events: Iterable[AlarmEvent], user_alarms: Iterable[AlarmEntry]) -> list[MessageLine]:
+def message_lines(current: str, events: Iterable[AlarmEvent], user_alarms: Iterable[AlarmEntry],
+                  times: AlarmTimes) -> list[MessageLine]:
     """Active messages: the NC message (MSG) shown now, and pending cycle/user alarms."""
     lines: list[MessageLine] = []
     if current:
-        came = 0.0
+        came = None
         for event in events:
             if event.kind == "message" and event.entry.text == current:
-                came = event.time_s
+                came = times.event_at(event)
         lines.append(MessageLine(came, current, "NC program (MSG)"))
     for entry in sorted(user_alarms, key=lambda e: e.seq, reverse=True):
         if entry.category == "user":
-            lines.append(MessageLine(entry.came_s, f"{entry.number} {entry.text}", source_text(entry)))
+            lines.append(MessageLine(times.came_at(entry), f"{entry.number} {entry.text}", source_text(entry)))
     return lines
 
 
-def messages_text(lines: Sequence[MessageLine], history: Sequence[AlarmEvent]) -> Text:
+def messages_text(lines: Sequence[MessageLine], history: Sequence[AlarmEvent], times: AlarmTimes) -> Text:
     """Active messages, then the recent message history (newest first)."""
     text = Text(no_wrap=True, end="")
-    text.append(f" {'Time':<12} {'Message':<100} Source\n", style="bold")
+    text.append(f" {'Date and time':<{STAMP_WIDTH}} {'Message':<100} Source\n", style="bold")
     if not lines:
         text.append(" No active messages.\n", style="dim")
     for line in lines:
-        text.append(f" {clock_text(line.time_s):<12} {line.text[:100]:<100} {line.source}\n")
+        text.append(f" {date_time_text(line.came_at):<{STAMP_WIDTH}} {line.text[:100]:<100} {line.source}\n")
     shown = [e for e in reversed(history) if e.kind == "message"][:12]
     if shown:
         text.append("\n Recent NC messages\n", style="bold")
         for event in shown:
             body = event.entry.text or "(message cleared)"
-            text.append(f" {clock_text(event.time_s):<12} {body[:100]}\n",
+            text.append(f" {date_time_text(times.event_at(event)):<{STAMP_WIDTH}} {body[:100]}\n",
                         style=None if event.entry.text else "dim")
     return text
 
@@ -183,38 +191,43 @@ def _earlier(entry: AlarmEntry) -> str:
     return "PO-" if entry.seq < 0 else ""
 
 
-def log_text(rows: Sequence[AlarmEntry], log_filter: LogFilter, total: int, first: int = 0,
-             count: int = 30) -> Text:
+def _went_text(entry: AlarmEntry, times: AlarmTimes, pending: str = "—") -> str:
+    """When the alarm went; ``pending`` while it has not."""
+    return pending if entry.went_s is None else date_time_text(times.went_at(entry))
+
+
+def log_text(rows: Sequence[AlarmEntry], log_filter: LogFilter, total: int, times: AlarmTimes,
+             first: int = 0, count: int = 30) -> Text:
     """The alarm log window: ``Come | Go | Number | Text``, newest first, a filter line."""
     text = Text(no_wrap=True, end="")
     described = log_filter.describe()
     text.append(f" {len(rows)} of {total} entries" + (f" — filter: {described}" if described else ""),
                 style="dim")
     text.append("   (PO- = before the last power on)\n", style="dim")
-    text.append(f" {'':<3} {'Come':<12} {'Go':<12} {'Number':>6}  Text\n", style="bold")
+    text.append(f" {'':<3} {'Come':<{STAMP_WIDTH}} {'Go':<{STAMP_WIDTH}} {'Number':>6}  Text\n", style="bold")
     for entry in rows[first:first + count]:
-        text.append(f" {_earlier(entry):<3} {clock_text(entry.came_s):<12} "
-                    f"{clock_text(entry.went_s) or '—':<12} ")
+        text.append(f" {_earlier(entry):<3} {date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} "
+                    f"{_went_text(entry, times):<{STAMP_WIDTH}} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
-        text.append(f"  {entry.text[:110]}\n")
+        text.append(f"  {entry.text[:90]}\n")
     return text
 
 
-def log_as_csv(rows: Sequence[AlarmEntry]) -> str:
+def log_as_csv(rows: Sequence[AlarmEntry], times: AlarmTimes) -> str:
     """The alarm log as CSV (``earlier,come,go,number,clear,text,source``)."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["earlier_power_on", "come", "go", "number", "clear", "text", "source"])
     for entry in rows:
-        writer.writerow([int(entry.seq < 0), clock_text(entry.came_s), clock_text(entry.went_s),
+        writer.writerow([int(entry.seq < 0), date_time_text(times.came_at(entry)), _went_text(entry, times, ""),
                          entry.number, entry.clear, entry.text, source_text(entry)])
     return out.getvalue()
 
 
-def log_as_text(rows: Sequence[AlarmEntry]) -> str:
+def log_as_text(rows: Sequence[AlarmEntry], times: AlarmTimes) -> str:
     """The alarm log as plain text, one entry a line."""
     lines = ["Alarm log (newest first)", ""]
     for entry in rows:
-        went = clock_text(entry.went_s) or "pending"
-        lines.append(f"{_earlier(entry):<3} {clock_text(entry.came_s)}  {went:<11}  {entry.number:>6}  {entry.text}")
+        lines.append(f"{_earlier(entry):<3} {date_time_text(times.came_at(entry))}  "
+                     f"{_went_text(entry, times, 'pending'):<{STAMP_WIDTH}}  {entry.number:>6}  {entry.text}")
     return "\n".join(lines) + "\n"

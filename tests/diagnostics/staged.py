@@ -9,6 +9,7 @@ everything else (machine, counters, logbook, commands) is the real kernel's.
 from __future__ import annotations
 
 from dataclasses import replace
+from datetime import datetime, timedelta, timezone
 from typing import Any
 
 from nck.kernel import Nck
@@ -16,6 +17,7 @@ from nck.motion.system import planned_motion_factory
 from nck.status import AlarmEntry, AlarmEvent, AxisStatus, NckStatus
 from nck.trace import TraceRecorder, TraceSettings
 
+from hmi.app import HmiApp
 from tests.diagnostics.conftest import Programs, limit_machine
 
 JOG_LIMIT = AlarmEntry(seq=3, number=10621, text="Channel 1 axis X stands at software limit switch +",
@@ -27,6 +29,23 @@ AUTO_LIMIT = AlarmEntry(seq=1, number=10720,
 CYCLE_ALARM = AlarmEntry(seq=5, number=61000, text="Channel 1 block N40 cycle alarm 61000",
                          category="user", clear="reset", came_s=20.0, params=("1", "N40"),
                          file="MSG.MPF", line=4, n=40)
+
+STAGED_STAMPS = {
+    -1: {"came_at": "2026-11-25T15:02:40+01:00", "went_at": "2026-11-25T15:03:10+01:00"},
+    1: {"came_at": "2026-11-26T09:12:04+01:00", "went_at": "2026-11-26T09:12:09+01:00"},
+    3: {"came_at": "2026-11-26T09:12:12+01:00"},
+    5: {"came_at": "2026-11-26T09:12:20+01:00"},
+}
+"""Date and time of the staged alarms by entry seq (-1: one from before the last power on)."""
+STAGED_NOW = datetime(2026, 11, 26, 9, 12, 30, tzinfo=timezone(timedelta(hours=1)))
+"""The wall clock of a staged app: when the HMI reads the staged NC message."""
+
+
+def stamped(app: HmiApp) -> HmiApp:
+    """``app`` with a stopped wall clock and the staged alarms' dates and times."""
+    app.bridge.alarm_times.clock = lambda: STAGED_NOW
+    app.bridge.alarm_times.restart(STAGED_STAMPS)
+    return app
 
 
 def moving_x(status: NckStatus) -> tuple[AxisStatus, ...]:

@@ -15,7 +15,7 @@ import pytest
 from nck import commands as cmd
 from screens import diagnostics_service
 from tests.diagnostics.conftest import SIZE, app_on
-from tests.diagnostics.staged import AUTO_LIMIT, CYCLE_ALARM, JOG_LIMIT, StagedKernel, staged_trace
+from tests.diagnostics.staged import AUTO_LIMIT, CYCLE_ALARM, JOG_LIMIT, StagedKernel, stamped, staged_trace
 
 
 @pytest.fixture(autouse=True)
@@ -31,21 +31,21 @@ async def _open(pilot, *keys: str) -> None:
 
 
 def test_alarm_list(snap_compare) -> None:
-    """10621 (self-clearing, ◌) above 10720 (RESET, ⟲), newest first, with their sources."""
+    """10621 (self-clearing, ◌) above 10720 (RESET, ⟲), newest first, with date, time and source."""
     nck = StagedKernel()
     nck.staged_alarms = (AUTO_LIMIT, JOG_LIMIT)
-    assert snap_compare(app_on(nck), terminal_size=SIZE, run_before=lambda p: _open(p))
+    assert snap_compare(stamped(app_on(nck)), terminal_size=SIZE, run_before=lambda p: _open(p))
 
 
 def test_alarm_log(snap_compare) -> None:
-    """Come and go times, newest first; one entry from before the last power on (PO-)."""
+    """Come and go dates and times, newest first; one entry from before the last power on (PO-) below."""
     nck = StagedKernel()
     earlier = AUTO_LIMIT.__class__(**{**{f: getattr(AUTO_LIMIT, f) for f in AUTO_LIMIT.__slots__},
                                       "seq": -1, "came_s": 100.0, "went_s": 130.5})
     went = AUTO_LIMIT.__class__(**{**{f: getattr(AUTO_LIMIT, f) for f in AUTO_LIMIT.__slots__},
                                    "went_s": 9.75})
     nck.staged_history = (earlier, went, JOG_LIMIT)
-    assert snap_compare(app_on(nck), terminal_size=SIZE, run_before=lambda p: _open(p, "f3"))
+    assert snap_compare(stamped(app_on(nck)), terminal_size=SIZE, run_before=lambda p: _open(p, "f3"))
 
 
 def test_messages(snap_compare) -> None:
@@ -53,7 +53,7 @@ def test_messages(snap_compare) -> None:
     nck = StagedKernel()
     nck.staged_message = "Clamp the part, then NC START"
     nck.staged_alarms = (CYCLE_ALARM,)
-    assert snap_compare(app_on(nck), terminal_size=SIZE, run_before=lambda p: _open(p, "f2"))
+    assert snap_compare(stamped(app_on(nck)), terminal_size=SIZE, run_before=lambda p: _open(p, "f2"))
 
 
 def moving() -> StagedKernel:

@@ -10,6 +10,7 @@ from hypothesis import given, settings, strategies as st
 
 from nck.persistence import ALARM_LOG_LIMIT, Session, alarm_entry_from_dict
 from nck.status import AlarmEntry
+from hmi.alarm_times import AlarmTimes
 from hmi.widgets.plot import format_value, render_curves, value_range
 from screens.diagnostics_alarms import (
     LogFilter, alarm_list_rows, clock_text, log_as_csv, log_rows, parse_filter, source_text,
@@ -69,9 +70,12 @@ def test_log_rows_skip_messages_and_csv_export() -> None:
     history = [entry(1, 10720, went_s=2.5), entry(2, 0, category="message"), entry(-1, 3000, clear="reset")]
     rows = log_rows(history)
     assert [r.number for r in rows] == [3000, 10720]
-    table = list(csv.reader(io.StringIO(log_as_csv(rows))))
-    assert table[1][:4] == ["1", "00:00:00.00", "", "3000"]  # retained from an earlier power on
-    assert table[2][:5] == ["0", "00:00:01.00", "00:00:02.50", "10720", "reset"]
+    times = AlarmTimes()
+    times.restart({-1: {"came_at": "2026-11-25T23:59:58+00:00"},
+                   1: {"came_at": "2026-11-26T00:00:01+00:00", "went_at": "2026-11-26T00:00:02+00:00"}})
+    table = list(csv.reader(io.StringIO(log_as_csv(rows, times))))
+    assert table[1][:4] == ["1", "2026-11-25 23:59:58", "", "3000"]  # retained from an earlier power on
+    assert table[2][:5] == ["0", "2026-11-26 00:00:01", "2026-11-26 00:00:02", "10720", "reset"]
 
 
 def test_retained_alarm_log_is_bounded_oldest_dropped(tmp_path) -> None:
