@@ -100,3 +100,17 @@ def test_actual_feed_on_the_stand_in_motion_of_program_test() -> None:
     assert nck.submit(c.CycleStop()) == c.Accepted()
     nck.tick(0.1)
     assert feed(nck) == 0.0
+
+
+@pytest.mark.parametrize(("feed_pct", "expected"), [(50.0, 15000.0), (200.0, 30000.0)])
+def test_feed_switch_as_rapid_override_on_the_real_motion(feed_pct: float, expected: float) -> None:
+    """Digest 828d-3 rank 9: with ROV the feed switch acts as rapid override (002
+    L56367-56370), above 100 % counting as 100 %: G0 X400 runs at 30000 mm/min (MD32000[X]) ×
+    50 % = 15000 mm/min, and at 200 % at 30000 (not beyond). The rapid switch (20 %) is not used."""
+    nck = make("N10 G0 X400\nN20 M30")
+    assert nck.submit(c.SetOverride("rapid", 20.0)) == c.Accepted()
+    assert nck.submit(c.SetProgramControl("rapid_override", True)) == c.Accepted()
+    assert nck.submit(c.SetOverride("feed", feed_pct)) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    nck.tick(0.5)
+    assert feed(nck) == pytest.approx(expected, abs=1e-6)

@@ -59,3 +59,18 @@ def test_single_block_with_rnd_stops_before_and_after_each_rounding() -> None:
 
 def test_plain_blocks_stop_once_each() -> None:
     assert stops("N10 G1 X5 F1000\nN20 Y5\nN30 M30\n") == [(5.0, 0.0, 1), (5.0, 5.0, 2)]
+
+
+def test_single_block_with_g42_stops_after_each_inserted_corner_arc() -> None:
+    """002 L18071-18073: with radius compensation processing stops after every intermediate
+    block inserted by the control. G42 (tool right of the contour), G450: at each outside
+    corner of the square (10,10)-(30,10)-(30,30)-(10,30) the control inserts an arc of the
+    tool radius 2 round the corner point: N40 ends at (30,8), the arc to (32,10) is a stop of
+    its own (shown with N50, the block it leads into), N50 ends at (32,30), the arc to
+    (30,32), N60 ends at (10,32) (perpendicular to N60 before G40), then (0,0)."""
+    text = ("N10 T1 M6 D1\nN20 G0 X0 Y0\nN30 G42 G1 X10 Y10 F1000\nN40 X30\nN50 Y30\nN60 X10\n"
+            "N70 G40 X0 Y0\nN80 M30\n")
+    assert stops(text) == [
+        (0.0, 0.0, 1), (0.0, 0.0, 2), (10.0, 8.0, 3), (30.0, 8.0, 4), (32.0, 10.0, 5),
+        (32.0, 30.0, 5), (30.0, 32.0, 6), (10.0, 32.0, 6), (0.0, 0.0, 7),
+    ]
