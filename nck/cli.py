@@ -112,6 +112,10 @@ def _stdout_closed() -> int:
 
 
 def _main(args: list[str]) -> int:
+    if args[:1] == ["archive"]:
+        from nck import cli_archive
+
+        return cli_archive.main(args[1:], wait_s=wait_s)
     if args[:1] == ["md"]:
         try:
             from nck import cli_md  # type: ignore[attr-defined]
@@ -134,7 +138,7 @@ def _main(args: list[str]) -> int:
             return _check(options)
         if options.command == "run":
             return _run(options)
-        print("usage: nck {check,run,md,version} ...", file=sys.stderr)
+        print("usage: nck {check,run,md,archive,version} ...", file=sys.stderr)
         return 2
     except CliError as exc:
         print(f"nck: {exc}", file=sys.stderr)

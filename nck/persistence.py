@@ -52,16 +52,20 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
 
-from nck.access import AccessControl, AccessState, default_password_hashes
+from nck.access import (
+    PASSWORD_LEVELS, AccessControl, AccessDenied, AccessState, Action, default_password_hashes,
+)
+from nck.archive_writes import md_write_level, write_import
 from nck.atomic import atomic_write_bytes, atomic_write_text, backup_path, remove_stale_temp_files
 from nck.errors import NcAlarmError
 from nck.machine import MachineConfig, load_machine
 from nck.machine_data import DataError, MachineDataStore, catalog, fill_setting_defaults
 from nck.ncdata import NcData, ToolEdge, WorkOffset
-from nck.regular_files import plain_directory, read_regular_bytes, set_aside
+from nck.regular_files import check_export_target, plain_directory, read_regular_bytes, set_aside
 from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError
+from nck.writes import DataWriter, WriteRefused
 
 FORMAT = "sinumerik-trainer/retained"
 FORMAT_VERSION = 1
@@ -92,6 +96,10 @@ class BadFile(Exception):
 
 class ArchiveError(Exception):
     """An archive could not be read or imported; ``str()`` says why (nothing was changed)."""
+
+
+class ArchiveRefused(ArchiveError):
+    """The archive changes data the importer's protection level may not write (nothing was changed)."""
 
 
 @dataclass
@@ -594,6 +602,48 @@ class Session:
         return Session.open(self.data_dir, self.machine, install_samples=False)
 
     # ------------------------------------------------------------- archives
+    def _archive_workpiece(self, name: str) -> str:
+        canonical = self.files.canonical(name)
+        if not canonical.startswith("WKS/") or canonical.count("/") != 1:
+            raise ArchiveError(f"{name} is not a workpiece")
+        return canonical
+
+    def _checked_sections(self, sections: Mapping[str, Any], include_access: bool,
+                          level: int) -> dict[str, str]:
+        """The file text of every archive section to import, checked as writes at ``level``."""
+        scratch = RetainedData(access=self.retained.access)
+        for name, data in sections.items():
+            if name not in SECTIONS:
+                raise ArchiveError(f"unknown section {name!r}")
+            if name == "access" and not include_access:
+                continue
+            SECTIONS[name][1](_mapping(data), scratch)
+        names = [n for n in SECTIONS if n in sections and (n != "access" or include_access)]
+        machine = self.machine.name
+        current_md = self.md.retained_changes()
+        imported_md = scratch.md_by_machine.get(machine, {}) if "machine_data" in names else current_md
+        written, md_changes = write_import(
+            self.ncdata, current_md, scratch.ncdata, imported_md, names, self.machine,
+            lambda data, store: DataWriter(data, store, self.access, level=level))
+        result = RetainedData(written, {**scratch.md_by_machine, machine: md_changes}, scratch.access,
+                              scratch.alarm_log)
+        others = set(scratch.md_by_machine) | set(self.retained.md_by_machine) if "machine_data" in names else set()
+        for other in others - {machine}:  # the data of other machines: the same levels by datum
+            values = scratch.md_by_machine.get(other, {})
+            before = self.retained.md_by_machine.get(other, {})
+            for key in set(values) | set(before):
+                if values.get(key) != before.get(key) and level > md_write_level(key):
+                    raise AccessDenied(f"importing {key} of machine {other}", md_write_level(key), level)
+        if ("access" in names and scratch.access.to_json() != self.retained.access.to_json()
+                and level > min(PASSWORD_LEVELS)):
+            raise AccessDenied("importing the passwords", min(PASSWORD_LEVELS), level)
+        for name in ("counters", "mda"):  # kept by the kernel, not protected data
+            if name in names:
+                SECTIONS[name][1](SECTIONS[name][0](scratch), result)
+        if not result.md_by_machine[machine]:
+            del result.md_by_machine[machine]
+        return {name: section_text(name, result) for name in names}
+
     def export_archive(self, path: Path | str) -> Path:
         """Write all NC data (retained sections and every program) into one file."""
         self.save()
@@ -612,18 +662,26 @@ class Session:
             "programs": programs,
         }
         target = Path(path)
+        check_export_target(target, replace=True)  # never through a link, FIFO or device
         # the archive holds the password hashes too: readable by its owner only, like access.json
         atomic_write_text(target, json.dumps(archive, indent=1, sort_keys=True) + "\n", private=True)
         return target
 
-    def import_archive(self, path: Path | str, include_access: bool = False) -> "Session":
+    def import_archive(self, path: Path | str, include_access: bool = False,
+                       level: int | None = None) -> "Session":
         """Load an archive written by :meth:`export_archive` and restart from it.
 
         Every section in the archive replaces the retained one (the access
         section — keyswitch and passwords — only with ``include_access``);
-        programs are added or overwritten, other programs stay. The whole archive
-        is checked first: on any problem ArchiveError is raised and nothing changes.
+        programs are added or overwritten, other programs stay. The import is a
+        write like any other (:mod:`nck.archive_writes`): each datum it changes
+        needs its protection level — ``level``, else the access control's
+        current one —, programs need the level of program editing, the
+        passwords level 1; every value is checked like a write. The whole archive
+        is checked first: on any problem ArchiveError (ArchiveRefused for a level
+        too low) is raised and nothing changes.
         """
+        level = self.access.level if level is None else level
         try:
             archive = decode_document(read_regular_bytes(path, ARCHIVE_LIMIT_BYTES, follow_links=True))
         except OSError as exc:
@@ -634,40 +692,47 @@ class Session:
             raise ArchiveError(f"{path}: not an NC data archive")
         if archive.get("format_version") != ARCHIVE_VERSION:
             raise ArchiveError(f"{path}: archive version {archive.get('format_version')!r} not supported")
-        sections = archive.get("sections", {})
-        texts: dict[str, str] = {}
         try:
-            for name, data in _mapping(sections).items():
-                if name not in SECTIONS:
-                    raise ArchiveError(f"{path}: unknown section {name!r}")
-                if name == "access" and not include_access:
-                    continue
-                scratch = RetainedData(access=self.retained.access)
-                SECTIONS[name][1](_mapping(data), scratch)
-                texts[name] = section_text(name, scratch)
-            workpieces = [self.files.canonical(_text(w)) for w in _sequence(archive.get("workpieces", []))]
+            texts = self._checked_sections(_mapping(archive.get("sections", {})), include_access, level)
+            workpieces = [w for w in (self._archive_workpiece(_text(w))
+                                      for w in _sequence(archive.get("workpieces", [])))
+                          if not self.files.exists(w)]
             programs: list[tuple[str, bytes]] = []
             for item in _sequence(archive.get("programs", [])):
                 item = _mapping(item)
                 canonical = self.files.canonical(_text(item["path"]))
+                if "/" not in canonical or canonical.endswith(".WPD"):
+                    raise ArchiveError(f"{path}: {canonical} is not a program")
                 raw = (_text(item["text"]).encode("utf-8") if "text" in item
                        else base64.b64decode(_text(item["base64"]), validate=True))
-                if self.files.exists(canonical) and self.files.is_in_use(canonical):
-                    raise ArchiveError(f"{canonical} is in use and cannot be replaced")
+                if self.files.exists(canonical):
+                    if self.files.read_bytes(canonical) == raw:
+                        continue  # the same program: nothing to write
+                    if self.files.is_in_use(canonical):
+                        raise ArchiveError(f"{canonical} is in use and cannot be replaced")
                 programs.append((canonical, raw))
+            if programs or workpieces:
+                needed = self.access.required(Action.EDIT_PROGRAM)
+                if level > needed:
+                    raise AccessDenied("importing programs", needed, level)
         except ArchiveError:
             raise
-        except (StorageError, KeyError, TypeError, ValueError, DataError) as exc:
+        except AccessDenied as exc:
+            raise ArchiveRefused(f"{path}: refused: {exc.what} needs protection level {exc.needed_level}, "
+                                 f"the current level is {level}") from None
+        except (StorageError, KeyError, TypeError, ValueError, DataError, WriteRefused) as exc:
             raise ArchiveError(f"{path}: bad content ({exc})") from exc
-        for name, text in texts.items():
-            atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True,
-                              private=name in PRIVATE_SECTIONS)
-        for workpiece in workpieces:
-            if not self.files.exists(workpiece):
+        try:
+            for name, text in texts.items():
+                atomic_write_text(self.retained_dir / f"{name}.json", text, backup=True,
+                                  private=name in PRIVATE_SECTIONS)
+            for workpiece in workpieces:
                 self.files.create_workpiece(workpiece.split("/")[1], with_program=False)
-        for canonical, raw in programs:
-            parent = canonical.rpartition("/")[0]
-            if parent.startswith("WKS/") and not self.files.exists(parent):
-                self.files.create_workpiece(parent.split("/")[1], with_program=False)
-            atomic_write_bytes(self.files._disk(canonical), raw)
+            for canonical, raw in programs:
+                parent = canonical.rpartition("/")[0]
+                if parent.startswith("WKS/") and not self.files.exists(parent):
+                    self.files.create_workpiece(parent.split("/")[1], with_program=False)
+                self.files.save_bytes(canonical, raw)
+        except (OSError, StorageError) as exc:
+            raise ArchiveError(f"{path}: could not be written completely ({exc})") from exc
         return Session.open(self.data_dir, self.machine, install_samples=False)

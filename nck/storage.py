@@ -304,13 +304,17 @@ class NcFileSystem:
 
     def save(self, path: str, text: str) -> ProgramEntry:
         """Write a program (new or existing) atomically; refused while it is in use."""
+        return self.save_bytes(path, text.encode("utf-8"))
+
+    def save_bytes(self, path: str, data: bytes) -> ProgramEntry:
+        """:meth:`save` of raw content (a program kept as it came, e.g. from an archive)."""
         canonical = self.canonical(path)
         if "/" not in canonical or canonical.endswith("." + WORKPIECE_SUFFIX):
             raise StorageError("bad_path", f"{path} is not a program")
         self._refuse_in_use(canonical, "changed")
         self._require_parent(canonical)
         try:
-            atomic_write_bytes(self._disk(canonical), text.encode("utf-8"))
+            atomic_write_bytes(self._disk(canonical), data)
         except OSError as exc:
             raise StorageError("io", f"{canonical} could not be written: {exc.strerror}") from exc
         return self._entry(canonical)

@@ -124,7 +124,10 @@ class DataWriter:
             except DataError:
                 return 7
         action = self._action(upper)
-        return 7 if action is None else self._needed(action)
+        needed = 7 if action is None else self._needed(action)
+        if upper.startswith(("$P_UIFR", "$P_UBFR")) and upper.replace(" ", "").endswith(",FI]"):
+            needed = min(needed, self._needed(Action.WRITE_FINE_OFFSET))  # as write() checks both
+        return needed
 
     def write(self, name: str, value: Any) -> Written:
         """Write ``value`` into the datum ``name``.
