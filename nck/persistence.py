@@ -57,6 +57,7 @@ from nck.access import (
 )
 from nck.archive_writes import md_write_level, write_import
 from nck.atomic import atomic_write_bytes, atomic_write_text, backup_path, remove_stale_temp_files
+from nck.cli_tools import read_tool_table
 from nck.errors import NcAlarmError
 from nck.machine import MachineConfig, load_machine
 from nck.machine_data import DataError, MachineDataStore, catalog, fill_setting_defaults
@@ -87,6 +88,7 @@ INTEGER_LIMIT = 2**63 - 1
 ARCHIVE_LIMIT_BYTES = 256 * 1024 * 1024
 """Largest archive imported (all programs and data of a data directory)."""
 """Largest integer magnitude in a retained file (the control's data are at most 64 bit)."""
+SAMPLE_TOOLS = "sample_tools.toml"  # the tools of the training programs (data/)
 PRIVATE_SECTIONS = frozenset({"access"})  # password hashes: readable by the owner only
 
 
@@ -505,8 +507,9 @@ class Session:
                     ALARM_DEFAULTS_LOADED, folder.relative_to(data_dir).as_posix(),
                     "a link, not a folder" if kept.is_symlink() else "not a folder",
                     kept.relative_to(data_dir).as_posix()))
-        if install_samples:
-            files.install_samples(samples if samples is not None else data_path("programs"))
+        fresh_tools = not (retained_dir / "tools.json").exists()
+        samples_installed = bool(install_samples and files.install_samples(
+            samples if samples is not None else data_path("programs")))
         rd = RetainedData()
         damaged: list[str] = []
         for name in SECTIONS:
@@ -514,6 +517,9 @@ class Session:
             alarms += found
             if any(a.number == ALARM_DEFAULTS_LOADED for a in found):
                 damaged.append(name)
+        if samples_installed and fresh_tools:  # the training programs come with their tools
+            rd.ncdata.tools = {key: ToolEdge(params=dict(params))
+                               for key, params in read_tool_table(data_path(SAMPLE_TOOLS)).items()}
         if not rd.access.password_hashes:  # fresh, or the access file was lost
             rd.access.password_hashes = default_password_hashes()
         session = cls(data_dir, machine or load_machine(), rd, files, alarms)

@@ -40,6 +40,7 @@ from nck.geometry import trc_canon
 from nck.geometry.path_builder import ALARM_NOT_AVAILABLE, SD_THREAD_START_ANGLE, PathBuilder
 from nck.geometry.path_state import GeometryState
 from nck.geometry.rounding_distance import AID
+from nck.geometry.tool_length import ALARM_T_NOT_DEFINED
 from nck.interp.modal import ModalState
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
@@ -314,14 +315,17 @@ class MotionBuilder:
             tool = int(words.words["T"])
             if tool < 0:
                 raise NcAlarmError(12160, "T")
-            modal.tool_selected = tool
             direct = not self.tool_change_with_m6
+            if direct:
+                self._require_tool_data(tool)  # MD22550 = 0: stop at the T block (002 L58150-58153)
+            modal.tool_selected = tool
             out.append(canon.ToolSelect(src, tool, change=direct or change))
             if direct:
                 self._change_tool(modal, "D" in words.words)
         elif change:
             out.append(canon.ToolSelect(src, modal.tool_selected, change=True))
         if change and self.tool_change_with_m6:
+            self._require_tool_data(modal.tool_selected)  # MD22550 = 1: stop at M06 (002 L58171-58190)
             self._change_tool(modal, "D" in words.words)
         if "D" in words.words:
             edge = int(words.words["D"])
@@ -330,6 +334,13 @@ class MotionBuilder:
             modal.edge = edge
             self.path.tool_vector(modal)  # a D that does not exist for the tool: alarm 17180
             out.append(canon.EdgeSelect(src, edge))
+
+    def _require_tool_data(self, tool: int) -> None:
+        """17191 when T<tool> has no data set in the tool offset memory (002 L58219); T0 is no
+        tool. Raised before the block changes anything, so NC START runs it again once the data
+        set is loaded (compensation block, 002 L58150-58160)."""
+        if tool and not any(number == tool for number, _edge in self.data.tools):
+            raise NcAlarmError(ALARM_T_NOT_DEFINED, str(tool))
 
     def _change_tool(self, modal: ModalState, edge_programmed: bool) -> None:
         """The tool change: new tool, and the default edge of MD20270 unless D is in the block."""

@@ -20,7 +20,8 @@ def write(tmp_path: Path, name: str, text: str) -> Path:
 
 def test_run_json_final_state(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     prog = write(tmp_path, "PART1.MPF", "N10 G0 X10 Y5\nN20 G1 Z-1 F100\nN30 T1 M6 D1 S1000 M3\nN40 R1=5\nN50 M30\n")
-    assert main(["run", str(prog), "--json"]) == 0
+    # T1 needs its data set (17191 otherwise, 002 L58219): an end mill without length
+    assert main(["run", str(prog), "--json", "--set", "$TC_DP1[1,1]=120", "--password", "CUSTOMER"]) == 0
     state = json.loads(capsys.readouterr().out)
     assert state["alarms"] == []
     assert state["position"]["wcs"] == {"X": 10.0, "Y": 5.0, "Z": -1.0}

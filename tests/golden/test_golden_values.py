@@ -20,6 +20,7 @@ from nck.headless import RunResult, interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
 from nck.ncdata import NcData
+from tests.golden.trace import case_data
 
 HERE = Path(__file__).parent
 
@@ -33,7 +34,7 @@ class Case:
         if (folder / "options.toml").is_file():
             options = tomllib.loads((folder / "options.toml").read_text())
         programs = {p.name: p.read_text() for p in folder.iterdir() if p.suffix.lower() in (".spf", ".mpf")}
-        self.data = NcData()
+        self.data = case_data(folder, options)
         self.result: RunResult = interpret_only(
             load_machine(options.get("machine")), MemorySource(programs), self.data, "main.mpf",
             text=programs["main.mpf"], max_blocks=100_000,
@@ -233,8 +234,18 @@ def test_24_tool_spindle_aux() -> None:
     case = Case("24_tool_spindle_aux").ended()
     modal = case.result.interpreter.modal
     assert (modal.tool, modal.spindle_state) == (7, "M5")
+    assert modal.edge == 1  # T7 M6 without D: the default edge D1 of MD20270 (002 L58120-58126)
     aux = [(c.address, c.value) for c in case.result.commands if isinstance(c, canon.AuxFunction)]
     assert ("M", 8.0) in aux and ("H", 5.0) in aux and ("M", 9.0) in aux
+
+
+def test_24_without_its_tool_data_stops_at_the_m6() -> None:
+    """Without the data set of T3 the mill (MD22550 = 1) stops at the tool change M06 of N20
+    with 17191 (002 L58171-58190, L58219)."""
+    programs = {"main.mpf": (HERE / "24_tool_spindle_aux" / "main.mpf").read_text()}
+    result = interpret_only(load_machine(None), MemorySource(programs), NcData(), "main.mpf",
+                            text=programs["main.mpf"], max_blocks=1000)
+    assert [(a.number, a.line) for a in result.alarms] == [(17191, 3)]
 
 
 def test_25_tool_data_variables() -> None:

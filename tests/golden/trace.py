@@ -6,11 +6,12 @@ import tomllib
 from pathlib import Path
 
 from nck import canon
+from nck.cli_tools import read_tool_table
 from nck.headless import RunResult, interpret_only
 from nck.interp.sources import MemorySource
 from nck.lang.gcodes import gtable
 from nck.machine import load_machine
-from nck.ncdata import NcData
+from nck.ncdata import NcData, ToolEdge
 
 
 def num(value: float | None) -> str:
@@ -73,13 +74,22 @@ def final_lines(result: RunResult, data: NcData) -> list[str]:
     return lines
 
 
+def case_data(folder: Path, options: dict) -> NcData:
+    """The NC data a case starts with: its tool table (``tools = "file"`` in options.toml)."""
+    data = NcData()
+    if "tools" in options:
+        table = read_tool_table(folder / options["tools"])
+        data.tools = {key: ToolEdge(params=dict(params)) for key, params in table.items()}
+    return data
+
+
 def run_case(folder: Path) -> str:
     """Run ``main.mpf`` of a case folder (other files are subprograms) → trace text."""
     options = {}
     if (folder / "options.toml").is_file():
         options = tomllib.loads((folder / "options.toml").read_text())
     programs = {p.name: p.read_text() for p in folder.iterdir() if p.suffix.lower() in (".spf", ".mpf")}
-    data = NcData()
+    data = case_data(folder, options)
     for index, value in options.get("r", {}).items():
         data.r[int(index)] = float(value)
     # The language is tested on its own: the interpreter-only loop (no kernel, no motion

@@ -9,10 +9,10 @@ from nck.ncdata import NcData
 
 
 def run_iso(text: str, subprograms: dict[str, str] | None = None, dialect: str = "iso-m",
-            skip_levels: frozenset[int] = frozenset()) -> RunResult:
+            skip_levels: frozenset[int] = frozenset(), data: NcData | None = None) -> RunResult:
     """Run ``text`` as TEST.MPF in ``dialect``; returns the RunResult."""
     source = MemorySource(subprograms or {})
-    return interpret_only(load_machine(None), source, NcData(), "TEST.MPF", text=text,
+    return interpret_only(load_machine(None), source, data or NcData(), "TEST.MPF", text=text,
                           timeout_s=100_000.0, max_blocks=100_000, dialect=dialect,
                           skip_levels=skip_levels)
 

@@ -26,14 +26,16 @@ import pytest
 
 from nck import canon
 from nck.cli import main
+from nck.cli_tools import read_tool_table
 from nck.headless import interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
-from nck.ncdata import NcData
+from nck.ncdata import NcData, ToolEdge
 from nck.resources import data_path
 
 PROGRAM = data_path("examples", "iso", "ISO_T_SHAFT.MPF")
-TOOLS = data_path("examples", "iso", "ISO_T_SHAFT_TOOLS.toml").read_text()  # shipped beside the program
+TOOLS_PATH = data_path("examples", "iso", "ISO_T_SHAFT_TOOLS.toml")
+TOOLS = TOOLS_PATH.read_text()  # shipped beside the program
 
 
 def _taper_z(r: float) -> float:
@@ -109,7 +111,9 @@ def test_diameter_programming_and_tool_offsets_in_machine_coordinates(segments):
 
 
 def test_constant_cutting_speed_is_limited_and_thread_lead_is_f():
-    result = interpret_only(load_machine("lathe2"), MemorySource({}), NcData(), PROGRAM.name,
+    data = NcData()  # the tools of the program (17191 without them, 002 L58219)
+    data.tools = {key: ToolEdge(params=dict(p)) for key, p in read_tool_table(TOOLS_PATH).items()}
+    result = interpret_only(load_machine("lathe2"), MemorySource({}), data, PROGRAM.name,
                             text=PROGRAM.read_text(), max_blocks=10_000, dialect="iso-t")
     assert result.status == "ended", result.alarms
     speeds = [(c.source.n, c.speed_rpm) for c in result.commands

@@ -6,6 +6,7 @@ from __future__ import annotations
 import pytest
 
 from nck.iso.translate import translate
+from nck.ncdata import NcData, ToolEdge
 
 from tests.iso.conftest import ends, run_iso
 
@@ -241,10 +242,12 @@ def _run_md(text: str, programs: dict[str, str]):
     from nck.headless import interpret_only
     from nck.interp.sources import MemorySource
     from nck.machine import load_machine
-    from nck.ncdata import NcData
+    from nck.ncdata import NcData, ToolEdge
     machine = load_machine(None)
     machine.md.update(MACRO_MD)
-    return interpret_only(machine, MemorySource(programs), NcData(), "T.MPF", dialect="iso-m",
+    data = NcData()
+    data.tools[(2, 1)] = ToolEdge({1: 120.0})  # T2 needs its data set (17191, 002 L58219)
+    return interpret_only(machine, MemorySource(programs), data, "T.MPF", dialect="iso-m",
                           text=text, max_blocks=2000)
 
 
@@ -296,7 +299,9 @@ def test_two_substitutions_or_calls_in_one_block_raise_12722(block):
 
 
 def test_without_the_machine_data_m6_is_a_plain_m_function():
-    result = run_iso("T2 M6\nM30\n")
+    data = NcData()
+    data.tools[(2, 1)] = ToolEdge({1: 120.0})  # T2 needs its data set (17191, 002 L58219)
+    result = run_iso("T2 M6\nM30\n", data=data)
     assert result.status == "ended", result.alarms
     assert result.interpreter.modal.tool == 2
 
@@ -314,7 +319,7 @@ def _iso_views(text: str, programs: dict[str, str], **md) -> list[tuple[str, int
     from nck.interp.interpreter import Interpreter
     from nck.interp.sources import MemorySource
     from nck.machine import load_machine
-    from nck.ncdata import NcData
+    from nck.ncdata import NcData, ToolEdge
     machine = load_machine(None)
     machine.md.update(md)
     interp = Interpreter(machine, MemorySource(programs), NcData(), dialect="iso-m")

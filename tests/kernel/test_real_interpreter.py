@@ -8,6 +8,7 @@ from nck import commands as c
 from nck.interp.sources import MemorySource
 from nck.kernel import Nck
 from nck.motion.instant import instant_motion_factory
+from nck.ncdata import ToolEdge
 from tests.kernel.helpers import states, until_state
 
 
@@ -171,6 +172,7 @@ def test_wcs_display_follows_the_executing_block() -> None:
 
 def test_spindle_and_tool_display_follow_the_main_run() -> None:
     nck = make({"P.MPF": "N10 G1 X100 F6000\nN20 T2 M6 D1 S800 M3\nN30 G1 X0\nN40 M30"})
+    nck.data.tools[(2, 1)] = ToolEdge({1: 120.0})  # T2 needs its data set (17191, 002 L58219)
     start(nck, "P.MPF")
     nck.tick(0.5)
     modal = nck.status().channel.modal

@@ -11,7 +11,7 @@ from nck.errors import NcAlarmError
 from nck.interp.interpreter import BLOCK_COST_S, Interpreter
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
-from nck.ncdata import NcData
+from nck.ncdata import NcData, ToolEdge
 
 
 def make(text: str, subprograms: dict[str, str] | None = None, data: NcData | None = None,
@@ -197,7 +197,9 @@ def test_m17_in_main_ends_the_program() -> None:
 
 
 def test_modal_view_reports_tool_feed_spindle() -> None:
-    interp = make("T2 M6 D1 S800 M4 G1 X1 F300\nM30\n")
+    data = NcData()
+    data.tools[(2, 1)] = ToolEdge({1: 120.0})  # T2 needs its data set (17191, 002 L58219)
+    interp = make("T2 M6 D1 S800 M4 G1 X1 F300\nM30\n", data=data)
     interp.step()
     view = interp.modal_view()
     assert (view.tool, view.edge, view.feed, view.spindle_speed_rpm, view.spindle_state) == (2, 1, 300.0, 800.0, "M4")

@@ -1,4 +1,9 @@
-"""The training programs shipped in data/programs run as their comments promise."""
+"""The training programs shipped in data/programs run as their comments promise.
+
+They are checked with the NC data of a fresh data directory, which starts with the tools the
+samples use (data/sample_tools.toml): a T number without a data set is alarm 17191
+(002 L58219), so a sample that changes to a tool needs its data set.
+"""
 
 from __future__ import annotations
 
@@ -9,14 +14,16 @@ import pytest
 from nck.headless import check_program
 from nck.interp.sources import DirectorySource
 from nck.machine import load_machine
+from nck.persistence import Session
 from nck.resources import data_path
 
 PROGRAMS = sorted(Path(data_path("programs")).glob("*.MPF"))
 
 
 @pytest.mark.parametrize("path", PROGRAMS, ids=[p.stem for p in PROGRAMS])
-def test_sample_program_checks(path: Path) -> None:
-    alarms = check_program(load_machine(), DirectorySource(path.parent), path.name, path.read_text())
+def test_sample_program_checks(path: Path, tmp_path: Path) -> None:
+    data = Session.open(tmp_path / "data").ncdata  # a fresh data directory
+    alarms = check_program(load_machine(), DirectorySource(path.parent), path.name, path.read_text(), data)
     numbers = [a.number for a in alarms]
     if path.stem == "ALARM_DEMO":
         assert numbers == [10860] and alarms[0].n == 30
@@ -26,3 +33,11 @@ def test_sample_program_checks(path: Path) -> None:
 
 def test_there_are_samples() -> None:
     assert len(PROGRAMS) >= 5
+
+
+def test_a_data_directory_with_samples_already_installed_gets_no_tools_again(tmp_path: Path) -> None:
+    session = Session.open(tmp_path / "data")
+    assert sorted(session.ncdata.tools) == [(1, 1), (2, 1)]
+    session.ncdata.tools.clear()  # the operator deleted them
+    session.save()
+    assert Session.open(tmp_path / "data").ncdata.tools == {}
