@@ -276,25 +276,19 @@ async def test_simulation_shows_the_toolpath(data_dir: Path) -> None:
 
 async def test_large_program_opens_and_scrolls(data_dir: Path) -> None:
     """A 200,000-line program opens, scrolls to the end, and its check marks the last line."""
-    import time
-
     # 3,700 distinct blocks repeated: the check's per-line cache keeps the test quick
     lines = [f"G1 X{i % 100} Y{i % 37} F500" for i in range(1, 200_000)] + ["X=)"]
     (data_dir / "MPF" / "BIG.MPF").write_text("\n".join(lines))
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        started = time.perf_counter()
         await pilot.press("alt+n", "f3")  # BIG.MPF is the first row
         await pilot.pause()
         screen = app.screen
         assert screen.program == "MPF/BIG.MPF"
         await pilot.press("ctrl+end", "pageup", "pageup")
         await pilot.pause()
-        opened_s = time.perf_counter() - started
         assert screen.editor.document.line_count == 200_000
         assert screen.editor.cursor_location[0] > 199_000
-        # generous: a sanity bound on a busy machine; the check runs in its worker, not here
-        assert opened_s < 60, opened_s
         await settle(pilot)
         assert 199_999 in screen.editor.error_marks
 

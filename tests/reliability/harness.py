@@ -2,16 +2,15 @@
 
 :func:`run_hostile` selects the text as a main program in AUTOMATIC, starts it
 with NC START and lets simulated time run (``nck run`` does the same), with a
-simulated-time budget (the ``--timeout`` of the CLI) and a wall-clock guard.
-It returns the :class:`~nck.headless.RunResult` after asserting the contract
+simulated-time budget (the ``--timeout`` of the CLI); a hang is caught by the
+suite's per-test timeout, never by timing a run. It returns the :class:`~nck.headless.RunResult` after asserting the contract
 of issue 13: the run ended normally, with an NC alarm or at the time budget;
 the kernel logged no internal error (alarm 1 "internal error" is how the
-kernel reports a Python exception) and the wall clock stayed under the guard.
+kernel reports a Python exception).
 """
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 from nck.errors import NcAlarmError
@@ -24,8 +23,6 @@ MACHINE = load_machine()
 GOLDEN_DIR = Path(__file__).resolve().parents[1] / "golden"
 SIM_BUDGET_S = 20.0
 """Simulated seconds a hostile program may run (like ``nck run --timeout 20``)."""
-WALL_GUARD_S = 20.0
-"""Wall-clock seconds one run may take before the test calls it a hang."""
 
 SUBPROGRAMS = {
     "SUBA.SPF": "PROC SUBA(REAL PA, VAR REAL PB)\nPB=PA+1\nR1=R1+1\nIF R1<5 GOTOB LBL\nLBL: RET\n",
@@ -56,16 +53,13 @@ def golden_subprograms() -> dict[str, str]:
 ALL_SUBPROGRAMS = golden_subprograms()
 
 
-def run_hostile(text: str, sim_budget_s: float = SIM_BUDGET_S, wall_guard_s: float = WALL_GUARD_S) -> RunResult:
+def run_hostile(text: str, sim_budget_s: float = SIM_BUDGET_S) -> RunResult:
     """Run ``text`` through the kernel and assert it ended cleanly (see module doc)."""
-    started = time.perf_counter()
     result = run_on_kernel(MACHINE, MemorySource(ALL_SUBPROGRAMS), NcData(), "FUZZ.MPF",
                            text=text, timeout_s=sim_budget_s)
-    wall_s = time.perf_counter() - started
     assert result.status in ("ended", "alarm", "timeout"), result.status
     for alarm in result.alarms:
         assert isinstance(alarm, NcAlarmError) and isinstance(alarm.number, int)
     internal = [a for a in result.alarms if a.number == 1]
     assert not internal, f"kernel internal error for program {text[:200]!r}: {internal[0].params}"
-    assert wall_s < wall_guard_s, f"run took {wall_s:.1f} s of wall clock (hang?) for {text[:200]!r}"
     return result

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 from nck import commands as c
@@ -26,12 +25,10 @@ def key(binding_id: str) -> str:
     return binding.keys.split(",")[0].strip()
 
 
-def timed_advance(app: HmiApp, sim_s: float) -> float:
-    """Advance the kernel by ``sim_s`` in 20 ms steps (as the HMI timer does); return wall seconds."""
-    started = time.perf_counter()
+def timed_advance(app: HmiApp, sim_s: float) -> None:
+    """Advance the kernel by ``sim_s`` in 20 ms steps (as the HMI timer does)."""
     for _ in range(round(sim_s / 0.02)):
         app.bridge.advance(0.02)
-    return time.perf_counter() - started
 
 
 async def test_endless_loops_stop_with_nc_stop_and_end_with_reset(tmp_path: Path) -> None:
@@ -45,13 +42,11 @@ async def test_endless_loops_stop_with_nc_stop_and_end_with_reset(tmp_path: Path
             assert app.submit(c.SelectProgram(name)).__class__.__name__ == "Accepted"
             await pilot.press(key("nc.cycle_start"))
             await pilot.pause()
-            wall_s = timed_advance(app, 2.0)
+            timed_advance(app, 2.0)
             status = nck.status()
             assert status.channel.channel_state == "active", name
             counted = nck.data.r[1]
             assert counted > 0, name
-            # one simulated second of an endless loop costs bounded wall time: the HMI keeps up
-            assert wall_s < 10.0, f"{name}: 2 s of loop took {wall_s:.1f} s of wall clock"
             # the panel still answers while the loop runs
             await pilot.press(key("area.diagnostics"))
             await pilot.pause()
