@@ -104,6 +104,15 @@ class Dwell:
 
 
 @dataclass(frozen=True, slots=True)
+class ExactStop:
+    """An implicit exact stop: the block before ends with its exact-stop criterion before this
+    block goes on (an auxiliary function output before the motion, or a block with outputs
+    but no path motion, 002 L4797-4809). The channel pushes it as a zero-time wait."""
+
+    source: Source
+
+
+@dataclass(frozen=True, slots=True)
 class AuxFunction:
     """An auxiliary function output to the PLC: M, S, T, D, H or F with extension."""
 
@@ -180,7 +189,7 @@ class UserAlarm:
 
 
 CanonCommand = (
-    Motion | Dwell | AuxFunction | ToolSelect | EdgeSelect | SpindleCommand | Message
+    Motion | Dwell | ExactStop | AuxFunction | ToolSelect | EdgeSelect | SpindleCommand | Message
     | StopPoint | ProgramEnd | UserAlarm
 )
 

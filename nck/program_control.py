@@ -24,7 +24,7 @@ from dataclasses import dataclass, field, replace
 from typing import Callable, Mapping
 
 from nck.canon import (
-    AuxFunction, Dwell, EdgeSelect, Message, Motion, ProgramEnd, SpindleCommand, StopPoint,
+    AuxFunction, Dwell, EdgeSelect, ExactStop, Message, Motion, ProgramEnd, SpindleCommand, StopPoint,
     Source, ToolSelect, UserAlarm,
 )
 from nck.errors import NcAlarmError
@@ -245,6 +245,8 @@ class ProgramRun:
         commands = self._pending.commands
         while self._index < len(commands):
             command = commands[self._index]
+            if isinstance(command, ExactStop):
+                command = Dwell(command.source, seconds=0.0)  # the motion stops, then goes on
             if isinstance(command, (Motion, Dwell)):
                 if not motion.can_accept():
                     return False

@@ -275,7 +275,7 @@ class Interpreter:
                 result = self.step()
                 blocks += 1
                 collected.extend(c for c in result.commands
-                                 if not isinstance(c, (canon.Motion, canon.Dwell, canon.StopPoint)))
+                                 if not isinstance(c, (canon.Motion, canon.Dwell, canon.ExactStop, canon.StopPoint)))
         finally:
             self.flags["search"] = False
         return SearchResult(False, blocks, tuple(collected), dict(self._state.modal.position_wcs))

@@ -31,7 +31,7 @@ M3/M4/M5/M19, SPOS, LIMS), tool (T, M6 per MD22550, D) and G4 dwell.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from nck import canon
@@ -41,11 +41,13 @@ from nck.geometry.path_builder import ALARM_NOT_AVAILABLE, SD_THREAD_START_ANGLE
 from nck.geometry.path_state import GeometryState
 from nck.geometry.rounding_distance import AID
 from nck.geometry.tool_length import ALARM_T_NOT_DEFINED
+from nck.interp import aux_timing
 from nck.interp.modal import ModalState
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
 
 SPINDLE_M = {3: "M3", 4: "M4", 5: "M5", 19: "M19"}
+SPINDLE_STATE_M = {state: number for number, state in SPINDLE_M.items()}
 FEED_TYPES_PER_REV = ("G95", "G96", "G97")
 ALARM_NO_TRANSVERSE_AXIS = 10870  # G96 without a transverse axis (MD20100)
 ALARM_G96_WITHOUT_S = 10900  # first G96 without a cutting speed S
@@ -102,6 +104,7 @@ class MotionBuilder:
         self.transverse_axis = transverse if transverse in self.path_axes else None
         self.spindle_limit_rpm = _first_spindle_value(machine, "MD35100")
         self.path = PathBuilder(machine, data)
+        self.aux_timing = aux_timing.AuxOutputTiming(machine)
 
     # ------------------------------------------------------------------ entry points
     def build(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
@@ -131,45 +134,93 @@ class MotionBuilder:
         return out
 
     def _build_commands(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> list[canon.CanonCommand]:
-        """The commands of a block that is not a dwell."""
-        out: list[canon.CanonCommand] = []
+        """The commands of a block that is not a dwell, outputs placed around the motion."""
+        outputs: list[canon.CanonCommand] = []
         src = words.source
         self._feed(words, modal, geo)
         self._thread_start(words)
-        self._tool(words, modal, out)
-        self._spindle(words, modal, geo, out)
+        self._tool(words, modal, outputs)
+        self._spindle(words, modal, geo, outputs)
         for ext, value in words.m_codes:
             if value in SPINDLE_M or value == 6:
                 continue
-            out.append(canon.AuxFunction(src, "M", float(value), ext))
+            outputs.append(canon.AuxFunction(src, "M", float(value), ext))
             modal.aux["M"] = str(value)
         for ext, value in words.h_codes:
-            out.append(canon.AuxFunction(src, "H", float(value), ext))
+            outputs.append(canon.AuxFunction(src, "H", float(value), ext))
             modal.aux["H"] = _fmt(value)
+        earlier, own = self._geometry(words, modal, geo, src)
+        return earlier + self._place_outputs(outputs, own, src)
+
+    def _geometry(self, words: BlockWords, modal: ModalState, geo: GeometryState,
+                  src: canon.Source) -> tuple[list[canon.CanonCommand], list[canon.CanonCommand]]:
+        """The path part of a block: (motions of earlier blocks released now, its own motions)."""
         if words.gcodes.get(3) is not None:
-            out.extend(self.path.frame_block(words, modal, geo))
-            return out
+            flushed: list[canon.CanonCommand] = list(self.path.frame_block(words, modal, geo))
+            return flushed, []
         if self.path.has_path_words(words, modal):
             feed = self._feed_info(modal, geo)
             motions = self.path.motion(words, modal, geo, feed)
             motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
             earlier, motions = trc_canon.split_released(motions, src)
-            out[:0] = earlier  # motions of earlier blocks released by the TRC look-ahead
-            out.extend(motions)
+            own: list[canon.CanonCommand] = list(motions)
             if modal.gcodes.get(15) == "G96" and motions:
-                self._constant_cutting_speed(modal, geo, out, src)
-        elif "ANG" in words.words:  # first block of a two-line contour definition: not modelled
+                self._constant_cutting_speed(modal, geo, own, src)
+            released: list[canon.CanonCommand] = list(earlier)
+            return released, own
+        if "ANG" in words.words:  # first block of a two-line contour definition: not modelled
             raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
-        elif any(k in words.words for k in ("CHF", "CHR", "RND")):
+        if any(k in words.words for k in ("CHF", "CHR", "RND")):
             raise NcAlarmError(10882)
-        elif "RNDM" in words.words:
+        if "RNDM" in words.words:
             value = float(words.words["RNDM"]) * self.path.units(modal).position_mm
             if value < 0:
                 raise NcAlarmError(16500)
             geo.rndm_mm = value
-        else:
-            out[:0] = trc_canon.process([], modal, self.path, self.data, self.machine, src)
-        return out
+            return [], []
+        released = list(trc_canon.process([], modal, self.path, self.data, self.machine, src))
+        return released, []
+
+    def _place_outputs(self, outputs: list[canon.CanonCommand], own: list[canon.CanonCommand],
+                       src: canon.Source) -> list[canon.CanonCommand]:
+        """Outputs before/during the motion ahead of it, outputs at block end behind it
+        (002 L14590-14598). An output before the motion, or any output of a block without
+        path motion, first ends the previous block with exact stop (002 L4797-4809). An output at block end ends the block's own
+        motion at interpolator end."""
+        if not outputs:
+            return own
+        timings = [self._timing(command) for command in outputs]
+        ahead = [c for c, t in zip(outputs, timings) if t != aux_timing.AFTER]
+        behind = [c for c, t in zip(outputs, timings) if t == aux_timing.AFTER]
+        motions = [i for i, c in enumerate(own) if isinstance(c, canon.Motion)]
+        barrier: list[canon.CanonCommand] = []
+        if aux_timing.BEFORE in timings or not motions:
+            barrier = [canon.ExactStop(src)]
+        if behind and motions:
+            last = own[motions[-1]]
+            assert isinstance(last, canon.Motion)
+            if not last.exact_stop:
+                own = list(own)
+                own[motions[-1]] = replace(last, exact_stop=True, exact_stop_window="G603")
+        return ahead + barrier + own + behind
+
+    def _timing(self, command: canon.CanonCommand) -> str:
+        """When ``command`` goes out relative to the block's motion (MD22080, MD22035)."""
+        timing = self.aux_timing.timing
+        if isinstance(command, canon.AuxFunction):
+            return timing(command.address, command.extension, command.value)
+        if isinstance(command, canon.ToolSelect):
+            return timing("T")
+        if isinstance(command, canon.EdgeSelect):
+            return timing("D")
+        if isinstance(command, canon.SpindleCommand):
+            state = command.state
+            if state in SPINDLE_STATE_M:
+                return timing("M", command.spindle, SPINDLE_STATE_M[state])
+            if command.speed_rpm is not None:
+                return timing("S", command.spindle)
+            return aux_timing.DURING  # SPOS: no auxiliary function, the block waits for it
+        return aux_timing.DURING
 
     def release_held(self, modal: ModalState) -> list[canon.CanonCommand]:
         """Emit an element held back for a corner unchanged (radius compensation still applies)."""

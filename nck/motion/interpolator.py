@@ -36,6 +36,11 @@ class PathInterpolator:
     _dwell_s: Any
     _spindle_settle_s: Any
     spindle_wait: bool
+    exact_wait: tuple[np.ndarray, np.ndarray] | None
+    unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None
+    settle_point: np.ndarray | None
+    _fine: np.ndarray
+    _coarse: np.ndarray
 
     def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
         """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.
@@ -54,6 +59,8 @@ class PathInterpolator:
                 if self.spindle_wait:
                     self.wait_cycles = max(1, int(math.ceil(left_s / T - 1e-9)))
             if self.wait_cycles > 0:
+                if self.settle_point is not None:
+                    self.cmd, self.settle_point = self.settle_point, None
                 m = min(self.wait_cycles, n - k)
                 rows[k:k + m] = self.cmd
                 self.wait_cycles -= m
@@ -150,13 +157,19 @@ class PathInterpolator:
             self.cmd = seg.segment.end.copy()
             self.v_path = run.profile.v_end
             self._last_source = seg.source
-            if seg.exact_stop and seg.window != "G603":
-                window = self._coarse if seg.window == "G602" else self._fine
-                self.exact_wait = (np.flatnonzero(seg.moved), window)
+            window = self._coarse if seg.window == "G602" else self._fine
+            self.unsettled = None
+            if seg.exact_stop:
+                # G603 (interpolator end): the end point once, no window to wait for; the
+                # block change comes after it, so outputs at block end go out there.
+                moved = np.flatnonzero(seg.moved) if seg.window != "G603" else np.zeros(0, dtype=np.int64)
+                self.exact_wait = (moved, window)
                 self.wait_source = seg.source
                 self.v_path = 0.0
                 # Output the end point once, then check the window.
                 self.wait_cycles = 1
+            elif seg.window != "G603":
+                self.unsettled = (np.flatnonzero(seg.moved), window, self.cmd.copy())
             return False
         self.v_path = 0.0
         end_s = min(run.profile.length, float(run._offsets[-1]))
@@ -187,13 +200,23 @@ class PathInterpolator:
             return False
         if isinstance(head, DwellItem):
             self.la.pop_front()
+            unsettled, self.unsettled = self.unsettled, None
+            if unsettled is not None:
+                # The block before ends with its exact-stop criterion first (002 L4797-4809).
+                indices, window, end = unsettled
+                self.exact_wait = (indices, window)
+                self.settle_point = end  # held while waiting (a batch step may end on a profile sample)
             seconds = head.seconds if head.revolutions is None else self._dwell_s(head.revolutions)
             if head.wait_spindle:
                 # At least one cycle: the block's spindle output goes out at its start;
                 # then checked again until the spindle has settled (_path_fill).
                 seconds = max(self._spindle_settle_s(), self.T)
                 self.spindle_wait = True
-            self.wait_cycles = int(round(min(seconds, MAX_DWELL_S) / self.T))
+            cycles = int(round(min(seconds, MAX_DWELL_S) / self.T))
+            if unsettled is not None:
+                cycles = max(cycles, 1)  # output the end point once, then check the window
+            # An exact-stop wait just begun keeps its cycle of the end point.
+            self.wait_cycles = max(self.wait_cycles, cycles)
             self.wait_source = head.source
             self.v_path = 0.0
             return True
@@ -201,6 +224,7 @@ class PathInterpolator:
         if vmax <= 1e-9:
             self.v_path = 0.0
             return False
+        self.unsettled = None
         exit_v = min(head.exit_limit, vmax)
         profile = build_profile(head.remaining, self.v_path, exit_v, vmax, head.accel, head.jerk)
         self.run = PathRun([head], head.done_s, profile, tau=carry, kind="segment", exit_target=exit_v)

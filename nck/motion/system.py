@@ -69,6 +69,10 @@ class PlannedMotion(PathInterpolator):
         self.wait_cycles = 0
         self.wait_source: Source | None = None
         self.exact_wait: tuple[np.ndarray, np.ndarray] | None = None
+        # The window of the last segment that ended without its exact-stop wait (continuous path):
+        # a dwell or a block without path motion waits for it first (002 L4797-4809).
+        self.unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        self.settle_point: np.ndarray | None = None
         self.held = False
         self.faulted = False
         self.stop_source: Source | None = None  # the block a motion alarm stopped (refused or tripped)
@@ -344,6 +348,8 @@ class PlannedMotion(PathInterpolator):
         self.spindle_wait = False
         self.wait_cycles = 0
         self.exact_wait = None
+        self.unsettled = None
+        self.settle_point = None
         self.repos_pending = False
         self.hold_point = None
         self.plan_pos = None

@@ -46,6 +46,8 @@ def command_line(command: canon.CanonCommand) -> str:
         return f"{where} END {command.kind}"
     if isinstance(command, canon.UserAlarm):
         return f"{where} SETAL {command.number} {' '.join(command.params)}".rstrip()
+    if isinstance(command, canon.ExactStop):
+        return f"{where} EXACT STOP"
     if isinstance(command, canon.Dwell):
         return f"{where} DWELL {num(command.seconds)}"
     return f"{where} {type(command).__name__}"

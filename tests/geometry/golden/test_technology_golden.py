@@ -115,19 +115,19 @@ def test_aux_function_limits_per_block() -> None:
 def test_aux_output_order() -> None:
     """T, D and the spindle function go out before the block's motion: the predefined
     functions tool selection (index 21), edge selection (19) and M3 (6) have bit 5 "output
-    prior to motion" set by default (002 L14504, L14517, L14519, L14590-14592).
+    prior to motion" set by default (002 L14504, L14517, L14519, L14590-14592); the previous
+    block ends with exact stop first (002 L4797-4799).
 
     User functions without a defined output behaviour (M8, H5) go out at block end, after the
-    motion (002 L14633-14636; bit 7, L14596-14598). The kernel gives them out before the
-    motion today (auxiliary-function output timing, issue 20, owner `motionfid`), so this test
-    asserts only that they are output, not where: the earlier version froze the wrong order.
+    motion (002 L14633-14636; bit 7, L14596-14598). The earlier version of this test froze
+    them before the motion; the timing on the real motion: ``tests/motion/test_aux_output_timing.py``.
     """
     r = run(lines("N10 G1 X10 F100 M8 H5 S200 M3 T1 D1", "N20 M30"))
     kinds = [type(c).__name__ for c in r.commands if c.source.n == 10]
-    motion_at = kinds.index("Motion")
-    assert kinds[:3] == ["ToolSelect", "EdgeSelect", "SpindleCommand"] and motion_at > 2
+    assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "ExactStop", "Motion",
+                     "AuxFunction", "AuxFunction"]
     aux = [(c.address, c.value) for c in r.commands if c.source.n == 10 and isinstance(c, canon.AuxFunction)]
-    assert sorted(aux) == [("H", 5.0), ("M", 8.0)]
+    assert aux == [("M", 8.0), ("H", 5.0)]
 
 
 def test_g25_g26_write_the_working_area_limits() -> None:
