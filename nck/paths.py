@@ -71,8 +71,8 @@ class EphemeralDataDir:
         self.path = self._temp / "ncdata"
         origin = Path(source).expanduser() if source else default_data_dir()
         try:
-            if origin.is_dir():
-                copy_regular_tree(origin, self.path, EPHEMERAL_LIMIT_BYTES, _is_temp_file)
+            if origin.is_dir():  # the directory the operator names may be a link; nothing below it is followed
+                copy_regular_tree(origin.resolve(), self.path, EPHEMERAL_LIMIT_BYTES, _is_temp_file)
             else:
                 self.path.mkdir()
         except BaseException:

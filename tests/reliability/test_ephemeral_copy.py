@@ -118,3 +118,16 @@ def test_copies_of_killed_processes_are_removed_by_the_next_copy(tmp_path: Path,
         (folder / "ncdata").mkdir(parents=True)
     with EphemeralDataDir(_data_dir(tmp_path)):
         assert not abandoned.exists() and living.exists() and foreign.exists()
+
+
+def test_a_data_directory_the_operator_names_through_a_link_is_copied(tmp_path: Path) -> None:
+    """``NCK_DATA_DIR`` may name the data directory through a link (the operator's choice);
+    only entries below it are never followed."""
+    from nck.paths import EphemeralDataDir
+
+    real = tmp_path / "real"
+    (real / "retained").mkdir(parents=True)
+    (real / "retained" / "tools.json").write_text("{}")
+    (tmp_path / "link").symlink_to(real, target_is_directory=True)
+    with EphemeralDataDir(tmp_path / "link") as copy:
+        assert (copy / "retained" / "tools.json").read_text() == "{}"
