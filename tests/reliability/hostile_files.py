@@ -8,7 +8,11 @@ a count of 10^10 R parameters) and kind of entry (links out of the directory,
 to ``/dev/zero``, dangling; FIFOs; directories). Every door that opens a data
 directory (``nck md``, ``nck check``, ``nck run``, the HMI's start) must answer
 with alarm 4065 naming the file, keep the bad file aside, use the backup and
-never show a traceback. The expected alarm follows from the manual's
+never show a traceback; so must the archive import (``nck archive import``,
+whose session opens the directory first) and the panel built by ``make_app``.
+:data:`FOLDER_CORPUS` does the same for the folders (``retained``, ``nc``,
+``nc/MPF`` … replaced by a link, FIFO or file): alarm 4060 naming the folder,
+the odd entry kept aside, nothing outside touched. The expected alarm follows from the manual's
 description of 4065 ("data restored from backup") — not from our own output.
 """
 
@@ -102,6 +106,19 @@ def _fifo(path: Path, _document: dict[str, Any], _victim: Path) -> None:
     os.mkfifo(path)
 
 
+def _link_to_directory(path: Path, _document: dict[str, Any], victim: Path) -> None:
+    path.unlink()
+    path.symlink_to(victim.parent, target_is_directory=True)
+
+
+def _socket(path: Path, _document: dict[str, Any], _victim: Path) -> None:
+    import socket
+
+    path.unlink()
+    with socket.socket(socket.AF_UNIX) as listener:
+        listener.bind(str(path))  # the socket file stays after close
+
+
 def _directory(path: Path, _document: dict[str, Any], _victim: Path) -> None:
     path.unlink()
     path.mkdir()
@@ -159,6 +176,19 @@ CORPUS: tuple[Hostile, ...] = (
     Hostile("keyswitch as text", "access", _edit(lambda d: d.__setitem__("keyswitch_position", "3"))),
     Hostile("data as a list", "counters", _edit(lambda d: d.clear())),
     Hostile("document as a string", "mda", _write("hello")),
+    Hostile("R value as true", "r_parameters", _edit(lambda d: d["values"].__setitem__("3", True))),
+    Hostile("tool edge without parameters", "tools", _edit(lambda d: d["edges"][0].pop("params"))),
+    Hostile("GUD access level as text", "user_data", _edit(lambda d: d.__setitem__("access", {"A": {"r": "x"}}))),
+    Hostile("password table as a number", "access", _edit(lambda d: d.__setitem__("passwords", 5))),
+    Hostile("password table empty", "access", _edit(lambda d: d.__setitem__("passwords", {}))),
+    Hostile("password iterations 10**9", "access", _edit(lambda d: d["passwords"]["1"].__setitem__("iterations", 10**9))),
+    Hostile("empty file", "work_offsets", _raw("")),
+    Hostile("NUL bytes", "counters", _raw("\x00" * 64)),
+    Hostile("UTF-16 text", "mda", lambda path, doc, _v: path.write_bytes(json.dumps(doc).encode("utf-16"))),
+    Hostile("section of another name", "tools", _raw(_wrapped("mda", '{"text": ""}'))),
+    Hostile("format version 99", "setting_data",
+            _raw('{"format": "sinumerik-trainer/retained", "format_version": 99, "section": "setting_data", '
+                 '"data": {}}')),
     # value
     Hostile("machine datum below its limit", "machine_data", _edit(_set_md(-1.0))),
     Hostile("machine datum above its limit", "machine_data", _edit(_set_md(1e300))),
@@ -177,6 +207,8 @@ CORPUS: tuple[Hostile, ...] = (
     Hostile("dangling link", "setting_data", _link_to("/nonexistent/nowhere.json")),
     Hostile("link to its own backup", "counters", _link_to("counters.json.bak")),
     Hostile("FIFO", "machine_data", _fifo),
+    Hostile("link to a directory", "user_data", _link_to_directory),
+    Hostile("socket", "work_offsets", _socket),
     Hostile("directory", "alarm_log", _directory),
 )
 
@@ -229,13 +261,38 @@ def door_hmi(data_dir: Path, program: Path) -> tuple[list[int], str]:
     return numbers, ""
 
 
+def door_hmi_app(data_dir: Path, program: Path) -> tuple[list[int], str]:
+    """The panel as the ``hmi`` console script builds it (``make_app``), then its quit."""
+    from hmi.app import make_app
+
+    app = make_app(data_dir=str(data_dir), realtime=False)
+    try:
+        numbers = [a.number for a in app.nc_session.nck.status().alarms]
+    finally:
+        app.nc_session.quit()
+    return numbers, ""
+
+
+def door_archive_import(data_dir: Path, program: Path) -> tuple[list[int], str]:
+    """``nck archive import`` of an archive that changes nothing (the session opens first)."""
+    from nck.cli_archive import run
+
+    archive = program.with_name("empty-archive.json")
+    archive.write_text(json.dumps({"format": "sinumerik-trainer/archive", "format_version": 1,
+                                   "sections": {}, "workpieces": [], "programs": []}))
+    out, err = io.StringIO(), io.StringIO()
+    code = run(["import", str(archive), "--data-dir", str(data_dir)], out, err)
+    assert code == 0, err.getvalue()
+    return _alarm_numbers(err.getvalue()), err.getvalue()
+
+
 def _alarm_numbers(text: str) -> list[int]:
     return [int(line.split()[1]) for line in text.splitlines() if line.startswith("ALARM ")]
 
 
 DOORS: dict[str, Callable[[Path, Path], tuple[list[int], str]]] = {
     "session": door_session, "nck md": door_md, "nck check": _nck("check"), "nck run": _nck("run"),
-    "hmi": door_hmi,
+    "hmi": door_hmi, "hmi make_app": door_hmi_app, "nck archive import": door_archive_import,
 }
 
 
@@ -283,3 +340,49 @@ GENERATION: dict[str, Callable[[Session], Any]] = {
     "alarm_log": lambda s: {e["number"] for e in s.alarm_log} & {14001, 14002} == {14001} and 1,
 }
 """Which saved generation a section of a session holds (the backup holds 1, the main file 2)."""
+
+
+# ------------------------------------------------------------ hostile folders
+FOLDERS = ("retained", "nc", "nc/MPF", "nc/SPF", "nc/WKS")
+
+
+def _plant_folder(entry: Path, kind: str, outside: Path) -> None:
+    if os.path.lexists(entry):
+        shutil.move(str(entry), str(outside.parent / f"moved-{entry.name}"))
+    if kind == "link":
+        entry.symlink_to(outside, target_is_directory=True)
+    elif kind == "dangling link":
+        entry.symlink_to(outside / "missing")
+    elif kind == "FIFO":
+        os.mkfifo(entry)
+    else:
+        entry.write_text("a file where a folder belongs\n")
+
+
+FOLDER_CORPUS: tuple[tuple[str, str], ...] = tuple(
+    (folder, kind) for folder in FOLDERS for kind in ("link", "dangling link", "FIFO", "file"))
+"""A folder of the data directory replaced by an entry of another kind."""
+
+
+def try_folder_door(template: Path, folder: str, kind: str, door: str, work: Path) -> None:
+    """Replace ``folder`` in a copy of ``template`` by ``kind``; open it through ``door``: 4060 names it."""
+    data_dir = work / "data"
+    shutil.copytree(template, data_dir, symlinks=True)
+    (data_dir / "nc").mkdir(exist_ok=True)
+    outside = work / "outside"
+    outside.mkdir()
+    (outside / "KEEP.MPF").write_text(VICTIM_TEXT)
+    _plant_folder(data_dir / folder, kind, outside)
+    program = work / "P.MPF"
+    program.write_text("G0 X1\nM30\n")
+
+    numbers, text = DOORS[door](data_dir, program)
+
+    assert "Traceback" not in text and "Internal error" not in text, text
+    assert numbers.count(4060) == 1, (numbers, text)
+    if text:
+        assert f"Retained data {folder} unreadable" in text, text
+    assert os.path.lexists(data_dir / f"{folder}.bad-1"), "the odd entry was not kept aside"
+    assert {p.name: p.read_text() for p in outside.iterdir()} == {"KEEP.MPF": VICTIM_TEXT}
+    again = Session.open(data_dir, install_samples=False)
+    assert again.startup_alarms == []

@@ -13,7 +13,9 @@ from pathlib import Path
 
 import pytest
 
-from tests.reliability.hostile_files import CORPUS, DOORS, FAST_SAMPLE, make_template, try_door
+from tests.reliability.hostile_files import (
+    CORPUS, DOORS, FAST_SAMPLE, FOLDER_CORPUS, make_template, try_door, try_folder_door,
+)
 
 
 @pytest.fixture(scope="module")
@@ -41,6 +43,24 @@ def test_every_hostile_file_gives_4065_and_the_backup(template, hostile, tmp_pat
 @pytest.mark.parametrize("hostile", _cases())
 def test_the_hostile_corpus_through_every_door(template, hostile, door, tmp_path) -> None:
     try_door(template, hostile, door, tmp_path)
+
+
+@pytest.mark.parametrize("folder, kind", [pytest.param(f, k, id=f"{f} {k}") for f, k in FOLDER_CORPUS])
+def test_every_hostile_folder_gives_4060_and_a_new_folder(template, folder, kind, tmp_path) -> None:
+    try_folder_door(template, folder, kind, "session", tmp_path)
+
+
+@pytest.mark.parametrize("door", sorted(DOORS))
+@pytest.mark.parametrize("folder, kind", [("nc/MPF", "link"), ("retained", "FIFO")])
+def test_a_hostile_folder_gives_4060_on_every_door(template, folder, kind, door, tmp_path) -> None:
+    try_folder_door(template, folder, kind, door, tmp_path)
+
+
+@pytest.mark.fuzz
+@pytest.mark.parametrize("door", sorted(DOORS))
+@pytest.mark.parametrize("folder, kind", [pytest.param(f, k, id=f"{f} {k}") for f, k in FOLDER_CORPUS])
+def test_the_hostile_folders_through_every_door(template, folder, kind, door, tmp_path) -> None:
+    try_folder_door(template, folder, kind, door, tmp_path)
 
 
 @pytest.mark.parametrize("hostile", _cases(("FIFO", "link to /dev/zero", "gud nested 100000 deep", "directory")))
