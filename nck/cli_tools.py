@@ -16,8 +16,9 @@ Format (one ``[[edge]]`` table per cutting edge)::
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
+
+from nck.operator_files import OperatorFileError, load_operator_toml
 
 
 NAMED_PARAMS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 5, "radius": 6}
@@ -33,11 +34,9 @@ def read_tool_table(path: Path | str) -> dict[tuple[int, int], dict[int, float]]
     ``--set $TC_DP<param>[t,d]=value``, through the protection and limit checks)."""
     path = Path(path)
     try:
-        table = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ToolFileError(f"cannot read tool table '{path}': {exc.strerror}") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise ToolFileError(f"tool table '{path}' is not valid TOML: {exc}") from None
+        table = load_operator_toml(path)
+    except OperatorFileError as exc:
+        raise ToolFileError(f"tool table '{path}' {exc}") from None
     edges = table.get("edge", [])
     if not isinstance(edges, list):
         raise ToolFileError(f"tool table '{path}': [[edge]] tables expected")

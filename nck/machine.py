@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from nck.resources import data_path, data_root, load_toml, read_table
+from nck.operator_files import OperatorFileError, load_operator_toml
 
 DEFAULT_MACHINE = "mill3"
 USER_CLASS_NUMBERS = range(9200, 9300)  # display MD holding protection levels (0 most rights … 7)
@@ -134,8 +135,10 @@ def load_machine(name_or_path: str | None = None) -> MachineConfig:
         if product:
             table = read_table(path)  # a machine of the product: through its parsed copy
         else:
-            with path.open("rb") as handle:
-                table = tomllib.load(handle)
+            try:
+                table = load_operator_toml(path)
+            except OperatorFileError as exc:
+                raise MachineFileError(f"machine file {path} {exc}") from None
             _refuse_loosened_protection(path, table.get("md", {}))
         head = table["machine"]
         axes = tuple(

@@ -9,12 +9,22 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from nck.regular_files import read_regular_bytes
+
 EXTENSIONS = (".SPF", ".MPF")
 
 
+PROGRAM_FILE_LIMIT_BYTES = 50 * 1024 * 1024
+"""Largest program file read (as large as the NC memory takes one, ``nck.storage.MAX_IMPORT_BYTES``)."""
+
+
 def read_text_file(path: Path) -> str:
-    """Read a program file as text; undecodable bytes never fail (latin-1 fallback)."""
-    raw = path.read_bytes()
+    """Read a program file as text; undecodable bytes never fail (latin-1 fallback).
+
+    Only a regular file (a link to one is followed) of at most
+    :data:`PROGRAM_FILE_LIMIT_BYTES` is read; else an ``OSError`` says why.
+    """
+    raw = read_regular_bytes(path, PROGRAM_FILE_LIMIT_BYTES, follow_links=True)
     try:
         return raw.decode("utf-8")
     except UnicodeDecodeError:
