@@ -24,7 +24,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterator
 
-from nck.canon import CanonCommand, Motion
+from nck.canon import CanonCommand, Motion, UserAlarm
 from nck.errors import NcAlarmError
 from nck.machine import load_machine
 from nck.motion.system import PlannedMotion
@@ -209,9 +209,18 @@ def run_text(
                 break
             block = interpreter.step()
             result.blocks += 1
+            user_alarm = None
             for command in block.commands:
                 if isinstance(command, Motion) and len(result.motions) < MAX_RUN_MOTIONS:
                     result.motions.append(command)
+                elif isinstance(command, UserAlarm):  # SETAL stops the run there, as in nck run
+                    user_alarm = command
+                    break
+            if user_alarm is not None:
+                result.alarms.append(_alarm(NcAlarmError(
+                    user_alarm.number, *user_alarm.params, line=user_alarm.source.line,
+                    n=user_alarm.source.n)))
+                break
             if block.finished:
                 break
         result.finished = not result.truncated

@@ -46,7 +46,8 @@ def _retained(data_dir: Path) -> dict[str, bytes]:
 
 
 def _with_tool(archive: dict[str, Any], radius_mm: Any) -> dict[str, Any]:
-    archive["sections"]["tools"] = {"edges": [{"t": 7, "d": 1, "params": {"1": 120.0, "6": radius_mm}}]}
+    # a tool added beside those of the fresh data directory (the samples' T1 and T2)
+    archive["sections"]["tools"]["edges"].append({"t": 7, "d": 1, "params": {"1": 120.0, "6": radius_mm}})
     return archive
 
 
