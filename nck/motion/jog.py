@@ -30,6 +30,7 @@ from nck.motion.runs import AxisRun
 UNLIMITED_MM = 1e6
 ALARM_NO_CAM = 20000
 ALARM_NO_ZERO_MARK = 20002
+ALARM_HW_LIMIT = 21614
 
 
 class JogUnit:
@@ -87,10 +88,45 @@ class JogUnit:
             self.alarms.append(NcAlarmError(alarm, self.params.axes[i].name, sign))
             self.limit_alarm[i] = alarm
             return
+        switch = self._hardware_switch(i, direction)
+        to_switch = (switch - position) * direction
+        if to_switch <= EDGE_MM:
+            # Standing on the switch: the traversing keys of this direction are blocked.
+            self.alarms.append(NcAlarmError(ALARM_HW_LIMIT, self.params.axes[i].name, "+" if direction > 0 else "-"))
+            return
         self._clear_limit_alarm(i)
         room = min(room, UNLIMITED_MM)
         length = room if distance is None else min(distance, room)
+        if length > to_switch - EDGE_MM:
+            self._begin_past_switch(i, position, direction, to_switch, velocity_mm_min / 60.0, switch)
+            return
         self._begin(i, position, direction, length, velocity_mm_min / 60.0, "jog", override=True)
+
+    def _hardware_switch(self, i: int, direction: float) -> float:
+        """Position (current coordinate) of the hardware limit switch in ``direction``."""
+        axis = self.params.axes[i]
+        raw = axis.hw_limit_plus_mm if direction > 0 else axis.hw_limit_minus_mm
+        return raw + self.raw_offset[i]
+
+    def _begin_past_switch(self, i: int, position: float, direction: float, to_switch: float,
+                           v_mm_s: float, switch: float) -> None:
+        """A JOG motion that reaches the hardware limit switch (002 L2355-2375): on at JOG
+        velocity up to the switch, then braked as MD36600 says: 0 with the axial acceleration
+        MD32300 (the axis stops beyond the switch), 1 setpoint velocity zero at the switch."""
+        axis = self.params.axes[i]
+        accel = axis.max_accel_mm_s2
+        current = self.runs.get(i)
+        v0 = 0.0
+        if current is not None and current.direction == direction and not current.purpose.startswith("ref"):
+            _s, v0, _a = current.profile.state_at(max(current.tau, 0.0))
+        vmax = self._capped(i, v_mm_s * self.feed_pct / 100.0)
+        v_switch = min(vmax, math.sqrt(v0 * v0 + 2.0 * accel * to_switch))
+        if axis.brake_mode_choice == 1:
+            profile = build_profile(to_switch, v0, v_switch, vmax, accel, None)
+        else:
+            overrun = v_switch * v_switch / (2.0 * accel)
+            profile = build_profile(to_switch + overrun, v0, 0.0, vmax, accel, None)
+        self.runs[i] = AxisRun(i, position, direction, profile, "jog", v_mm_s, True, limit_switch_mm=switch)
 
     def stop(self, i: int) -> None:
         """Brake a JOG motion of axis ``i`` (not a reference approach)."""
@@ -141,7 +177,7 @@ class JogUnit:
                 vmax = self._capped(i, run.velocity_mm_s * self.feed_pct / 100.0)
                 profile = build_profile(rest, v, 0.0, vmax, self.params.axes[i].max_accel_mm_s2, None)
                 self.runs[i] = AxisRun(i, run.origin + run.direction * s, run.direction, profile, run.purpose,
-                                       run.velocity_mm_s, run.override)
+                                       run.velocity_mm_s, run.override, limit_switch_mm=run.limit_switch_mm)
 
     def take_shifts(self) -> dict[int, float]:
         """Coordinate shifts of axes whose approach just ended; they count as referenced now."""
@@ -171,10 +207,12 @@ class JogUnit:
                     run.tau = float(taus[m - 1])
                     value = float(col[k + m - 1])
                     k += m
+                    self._check_switch(run, value)
                 if m == room:
                     break
                 carry = run.tau - run.profile.duration_s
                 value = run.end_position
+                self._check_switch(run, value + run.direction * 2.0 * EDGE_MM)
                 run = self._on_end(i, run, value)
                 if run is not None:
                     run.tau = carry
@@ -183,6 +221,15 @@ class JogUnit:
         return columns
 
     # -- internals ---------------------------------------------------------
+    def _check_switch(self, run: AxisRun, position: float) -> None:
+        """Alarm 21614 once the run has reached its hardware limit switch."""
+        switch = run.limit_switch_mm
+        if switch is None or (position - switch) * run.direction < 0.0:
+            return
+        run.limit_switch_mm = None
+        sign = "+" if run.direction > 0 else "-"
+        self.alarms.append(NcAlarmError(ALARM_HW_LIMIT, self.params.axes[run.index].name, sign))
+
     def _begin(self, i: int, position: float, direction: float, length: float, v_mm_s: float,
                purpose: str, override: bool) -> None:
         accel = self.params.axes[i].max_accel_mm_s2

@@ -8,6 +8,7 @@ internally everything is mm, mm/s, mm/s², mm/s³ and 1/s.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from nck.machine import MachineConfig
@@ -77,6 +78,9 @@ class AxisParams:
     ref_cycle_nr: int
     ref_cam_mm: float
     power_on_mm: float
+    hw_limit_minus_mm: float = -math.inf  # hardware limit switches, raw encoder coordinate (mechanics)
+    hw_limit_plus_mm: float = math.inf
+    brake_mode_choice: int = 0  # MD36600: 0 ramp with MD32300, 1 setpoint velocity zero at once
 
     @property
     def motor_rpm_per_mm_s(self) -> float:
@@ -183,6 +187,9 @@ def _axis_params(machine: MachineConfig, name: str, index: int, rotary: bool) ->
         ref_cycle_nr=int(md("MD34110", name, 1)),
         ref_cam_mm=sim("ref_cam_mm", name, 5.0 * direction),
         power_on_mm=sim("power_on_mm", name, 0.0),
+        hw_limit_minus_mm=sim("hw_limit_minus_mm", name, -math.inf),
+        hw_limit_plus_mm=sim("hw_limit_plus_mm", name, math.inf),
+        brake_mode_choice=int(md("MD36600", name, 0)),
     )
 
 

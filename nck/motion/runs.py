@@ -85,6 +85,7 @@ class AxisRun:
     override: bool = True
     tau: float = 0.0
     stopping: bool = False
+    limit_switch_mm: float | None = None  # a hardware limit switch this run will reach (21614 then)
 
     @property
     def finished(self) -> bool:
