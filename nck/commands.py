@@ -122,6 +122,16 @@ class Jog:
 
 
 @dataclass(frozen=True, slots=True)
+class SetControllerEnable:
+    """The controller enable of a machine axis (the PLC signal DB31.DBX2.1; the trainer has
+    no PLC, so the operator's simulation sets it): removed while the axis moves, it stops
+    with alarm 21612 (002 L756-768)."""
+
+    axis: str
+    enabled: bool
+
+
+@dataclass(frozen=True, slots=True)
 class StartBlockSearch:
     """Block search with calculation to block number ``n`` or to a block containing ``text``."""
 

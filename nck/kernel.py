@@ -582,6 +582,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         cmd.SetOverride: "_set_override",
         cmd.CancelAlarms: "_cancel_alarms",
         cmd.Jog: "_jog",
+        cmd.SetControllerEnable: "_set_controller_enable",
         cmd.StartBlockSearch: "_start_block_search",
         cmd.WriteData: "_write_data",
         cmd.SetKeyswitch: "_set_keyswitch",

@@ -117,6 +117,13 @@ class ControlSettings(DataWrites):
             self._access = AccessControl(AccessState(keyswitch_position=self._keyswitch))
         return self._access
 
+    def _set_controller_enable(self, command: cmd.SetControllerEnable) -> SubmitResult:
+        set_enable = getattr(self.motion, "set_controller_enable", None)
+        if set_enable is None or command.axis not in self.machine.path_axes:
+            return Rejected(f"no machine axis {command.axis}")
+        set_enable(command.axis, command.enabled)
+        return Accepted()
+
     def _set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
         if command.position not in (0, 1, 2, 3):
             return Rejected("keyswitch positions are 0 … 3")

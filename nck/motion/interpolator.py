@@ -21,6 +21,7 @@ from nck.motion.profile import build_profile
 from nck.motion.runs import PathRun
 
 RECHECK_CYCLES = 25
+ALARM_CONTROLLER_ENABLE = 21612
 MAX_DWELL_S = 1e9  # longer dwells are cut here (an infinite dwell would overflow the cycle count)
 
 
@@ -37,6 +38,9 @@ class PathInterpolator:
     _spindle_settle_s: Any
     spindle_wait: bool
     exact_wait: tuple[np.ndarray, np.ndarray] | None
+    disabled: set[int]
+    names: list[str]
+    _alarms: list[NcAlarmError]
     unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     settle_point: np.ndarray | None
     _fine: np.ndarray
@@ -220,6 +224,14 @@ class PathInterpolator:
             self.wait_source = head.source
             self.v_path = 0.0
             return True
+        without_enable = [i for i in self.disabled if head.moved[i]]
+        if without_enable:
+            # An axis without controller enable cannot follow: 21612, the path stops here.
+            self.la.pop_front()
+            self._alarms.append(NcAlarmError(ALARM_CONTROLLER_ENABLE, self.names[without_enable[0]]))
+            self.faulted = True
+            self.stop_source = head.source
+            return False
         vmax = self.la.v_max(head)
         if vmax <= 1e-9:
             self.v_path = 0.0

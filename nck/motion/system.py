@@ -21,7 +21,7 @@ from nck.canon import Dwell, Motion, Source, SpindleCommand
 from nck.errors import NcAlarmError
 from nck.machine import MachineConfig
 from nck.motion.dry_run import DryRun
-from nck.motion.interpolator import PathInterpolator
+from nck.motion.interpolator import ALARM_CONTROLLER_ENABLE, PathInterpolator
 from nck.motion.jog import JogUnit
 from nck.motion.limits import EDGE_MM, Limits
 from nck.motion.params import motion_params
@@ -29,7 +29,7 @@ from nck.motion.path import PLANE_AXES, Segment, arc, line
 from nck.motion.planner import AlarmItem, DwellItem, LookAhead, PlannedSegment, plan_segment
 from nck.motion.profile import braking_profile, build_profile
 from nck.motion.runs import PathRun
-from nck.motion.servo import AxisState, ServoBank
+from nck.motion.servo import AxisState, ServoBank, Trip
 from nck.motion.spindle import Spindle
 
 ALARM_VALUE_RANGE = 12160  # a target position that is not a finite number or out of range
@@ -72,6 +72,7 @@ class PlannedMotion(PathInterpolator):
         # The window of the last segment that ended without its exact-stop wait (continuous path):
         # a dwell or a block without path motion waits for it first (002 L4797-4809).
         self.unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        self.disabled: set[int] = set()  # axes without controller enable
         self.settle_point: np.ndarray | None = None
         self.held = False
         self.faulted = False
@@ -446,13 +447,43 @@ class PlannedMotion(PathInterpolator):
             return
         if axis in self.index:
             i = self.index[axis]
+            if direction and self._refuse_without_enable(i):
+                return
             self.jog.continuous(i, direction, velocity_mm_min, float(self.cmd[i]))
 
     def jog_increment(self, axis: str, distance_mm: float, velocity_mm_min: float) -> None:
         """Traverse one axis by a signed increment."""
         if axis in self.index:
             i = self.index[axis]
+            if self._refuse_without_enable(i):
+                return
             self.jog.increment(i, distance_mm, velocity_mm_min, float(self.cmd[i]))
+
+    def set_controller_enable(self, axis: str, enabled: bool) -> None:
+        """Set or remove the controller enable of a path axis (002 L735-790). Removed while the
+        axis moves: every axis stops at once, 21612, follow-up (the trip reaction of the
+        monitors); removed at standstill: no alarm, but the axis cannot be traversed."""
+        i = self.index[axis]
+        if enabled:
+            self.disabled.discard(i)
+            return
+        self.disabled.add(i)
+        if self._axis_moving(i):
+            self._on_trip(Trip(0, ALARM_CONTROLLER_ENABLE, axis))
+
+    def _axis_moving(self, i: int) -> bool:
+        """True while axis ``i`` has a JOG run or takes part in the running path segment."""
+        if i in self.jog.runs:
+            return True
+        run = self.run
+        return run is not None and run.kind != "abort" and bool(run.chain[0].moved[i])
+
+    def _refuse_without_enable(self, i: int) -> bool:
+        """A traversing request for an axis without controller enable: 21612, nothing moves."""
+        if i not in self.disabled:
+            return False
+        self._alarms.append(NcAlarmError(ALARM_CONTROLLER_ENABLE, self.names[i]))
+        return True
 
     def start_reference(self, axis: str) -> None:
         """Start the reference point approach of one axis."""
