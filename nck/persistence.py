@@ -65,7 +65,7 @@ from nck.ncdata import NcData, ToolEdge, WorkOffset
 from nck.regular_files import check_export_target, plain_directory, read_regular_bytes, set_aside
 from nck.resources import data_path
 from nck.status import AlarmEntry
-from nck.storage import NcFileSystem, StorageError
+from nck.storage import NcFileSystem, StorageError, check_program_size
 from nck.writes import DataWriter, WriteRefused
 
 FORMAT = "sinumerik-trainer/retained"
@@ -711,6 +711,7 @@ class Session:
                     raise ArchiveError(f"{path}: {canonical} is not a program")
                 raw = (_text(item["text"]).encode("utf-8") if "text" in item
                        else base64.b64decode(_text(item["base64"]), validate=True))
+                check_program_size(canonical, raw)
                 if self.files.exists(canonical):
                     if self.files.read_bytes(canonical) == raw:
                         continue  # the same program: nothing to write

@@ -113,6 +113,13 @@ class OpenedProgram:
     message: str = ""
 
 
+def check_program_size(name: str, data: bytes) -> None:
+    """Raise StorageError ``io`` for content larger than a program the NC memory takes
+    (:data:`MAX_IMPORT_BYTES`: what is read back; a larger program could never be opened)."""
+    if len(data) > MAX_IMPORT_BYTES:
+        raise StorageError("io", f"{name} is too large for the NC memory")
+
+
 class NcFileSystem:
     """The NC file system below ``root``; creates its directories when missing.
 
@@ -309,6 +316,7 @@ class NcFileSystem:
     def save_bytes(self, path: str, data: bytes) -> ProgramEntry:
         """:meth:`save` of raw content (a program kept as it came, e.g. from an archive)."""
         canonical = self.canonical(path)
+        check_program_size(canonical, data)
         if "/" not in canonical or canonical.endswith("." + WORKPIECE_SUFFIX):
             raise StorageError("bad_path", f"{path} is not a program")
         self._refuse_in_use(canonical, "changed")

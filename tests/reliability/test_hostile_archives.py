@@ -102,3 +102,21 @@ def test_an_archive_that_is_a_fifo_or_a_link_to_dev_zero_gives_archive_error(tmp
     for name in ("fifo.json", "zero.json"):
         with pytest.raises(ArchiveError, match="not a regular file"):
             session.import_archive(tmp_path / name)
+
+
+def test_a_program_larger_than_the_nc_memory_takes_is_refused_by_every_write(tmp_path: Path, monkeypatch) -> None:
+    """Programs are read up to ``MAX_IMPORT_BYTES``; no write may store a larger one (it
+    could never be opened again). The limit is lowered here to keep the test small."""
+    import nck.storage
+    from nck.storage import StorageError
+
+    session, archive = _good(tmp_path)
+    monkeypatch.setattr(nck.storage, "MAX_IMPORT_BYTES", 1000)
+    with pytest.raises(StorageError, match="too large"):
+        session.files.save("BIG.MPF", "G0 X1\n" * 200)
+    archive["programs"] = [{"path": "MPF/HUGE.MPF", "text": "G0 X1\n" * 200}]
+    path = tmp_path / "huge.json"
+    path.write_text(json.dumps(archive))
+    with pytest.raises(ArchiveError, match="too large"):
+        session.import_archive(path, level=1)
+    assert not session.files.exists("MPF/HUGE.MPF") and not session.files.exists("MPF/BIG.MPF")
