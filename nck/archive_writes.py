@@ -113,7 +113,23 @@ def write_import(current: NcData, current_md: dict[str, Any], imported: NcData, 
                     raise AccessDenied(f"importing {name}", needed, checker.level)
         for name, value in after.items():
             validator.write(name, value)
+        if section == "user_data":
+            _check_gud_protection(checker, current.gud_access, imported.gud_access)
     return result, store.retained_changes()
+
+
+def _check_gud_protection(checker: DataWriter, before: dict[str, dict[str, int]],
+                          after: dict[str, dict[str, int]]) -> None:
+    """The APRP/APWP levels of a GUD are protection data: changing them needs the level of
+    writing user data and the rights of every level changed (none may be loosened from below)."""
+    for name in set(before) | set(after):
+        old, new = before.get(name, {}), after.get(name, {})
+        if any(not 0 <= level <= 7 for level in new.values()):
+            raise WriteRefused(f"{name}: protection levels are 0 … 7")
+        if old != new:
+            needed = min([checker.required_level(f"GUD:{name}"), *old.values(), *new.values()])
+            if checker.level > needed:
+                raise AccessDenied(f"importing the protection levels of {name}", needed, checker.level)
 
 
 def md_write_level(key: str) -> int:

@@ -61,7 +61,7 @@ def _build_parser() -> argparse.ArgumentParser:
     _common_options(run)
     run.add_argument("--json", action="store_true", help="print the final state as JSON")
     run.add_argument("--segments", help="write motion segments as JSON lines (- = stdout)")
-    run.add_argument("--trace", help="write the MCS setpoints of every IPO cycle as CSV (t_s, axes)")
+    run.add_argument("--trace", help="write the MCS setpoints of every IPO cycle as CSV (t_s, axes; - = stdout)")
     run.add_argument("--timeout", type=float, default=DEFAULT_RUN_TIMEOUT_S, metavar="S",
                      help=f"stop after S seconds of simulated time, exit 3 (default {DEFAULT_RUN_TIMEOUT_S:g}; "
                           "0 = no limit); every block costs time, so an endless loop ends too")

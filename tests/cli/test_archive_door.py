@@ -123,3 +123,20 @@ def test_an_export_never_writes_through_a_link(tmp_path: Path) -> None:
     out, err = io.StringIO(), io.StringIO()
     assert archive_run(["export", str(tmp_path / "a.json"), "--data-dir", str(tmp_path / "d")], out, err) == 2
     assert "not a regular file" in err.getvalue() and victim.read_text() == "keep\n"
+
+
+def test_the_protection_levels_of_a_user_variable_are_not_loosened_by_an_import(tmp_path: Path) -> None:
+    """``DEF NCK REAL SECRET APWP 2`` (004 L428-429): part programs below level 2 may not write
+    SECRET. An archive holding the same value but no protection would lift that at level 7."""
+    data_dir, _unused = _exported(tmp_path)
+    session = Session.open(data_dir, install_samples=False)
+    session.ncdata.gud["SECRET"] = 1.0
+    session.ncdata.gud_access["SECRET"] = {"write": 2}
+    session.save()
+    archive = json.loads(session.export_archive(tmp_path / "with-secret.json").read_text())
+    archive["sections"]["user_data"]["access"] = {}
+    path = _archive(tmp_path, "loosened.json", archive)
+    code, message = _import(tmp_path, data_dir, path, "--password", "CUSTOMER")
+    assert code == 1 and "protection levels of SECRET needs protection level 2" in message
+    assert Session.open(data_dir, install_samples=False).ncdata.gud_access["SECRET"] == {"write": 2}
+    assert _import(tmp_path, data_dir, path, "--password", "SUNRISE")[0] == 0
