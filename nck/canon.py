@@ -179,6 +179,13 @@ class ProgramEnd:
     kind: str
 
 
+# The program ends after which MD35040 = 0 brakes the spindle and deletes S and direction
+# (002 L51017-51035 name M2 and M30; M17 ends a main program the same way). Our choice: an MDA
+# buffer or a main program that simply runs out (kind "EOF") is no such end, so `S1000 M3` in
+# MDA leaves the spindle turning, as an operator setting up expects.
+SPINDLE_RESET_ENDS = frozenset({"M2", "M30", "M17"})
+
+
 @dataclass(frozen=True, slots=True)
 class UserAlarm:
     """``SETAL(n)``: a cycle/user alarm raised by the program."""

@@ -28,12 +28,13 @@ from __future__ import annotations
 import math
 import traceback
 from dataclasses import replace
-from typing import Any, Callable
+from typing import Any, Callable, Collection
 
 from nck import commands as cmd
 from nck.access import AccessControl
 from nck.alarms import AlarmServer
-from nck.canon import AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand, ToolSelect, UserAlarm
+from nck.canon import (SPINDLE_RESET_ENDS, AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand,
+                       ToolSelect, UserAlarm)
 from nck.channel import (
     ABORTED, ACTIVE, INTERRUPTED, RESET, RUNNING, ChannelSituation, mode_change_allowed,
     next_state, situation_after_mode_change,
@@ -440,6 +441,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
         sync = getattr(interp, "sync_position", None)
         if sync is not None:
             sync(self._path_motion().positions_mcs())
+        sync_spindle = getattr(interp, "sync_spindle", None)
+        if sync_spindle is not None:
+            sync_spindle(self._spindle_state, self._spindle_rpm)  # what RESET or M30 left
         flags = getattr(interp, "flags", None)
         if isinstance(flags, dict):
             flags["test"] = bool(self._pc["program_test"])
@@ -475,7 +479,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
         return Accepted()
 
     def _reset(self, command: cmd.Reset) -> SubmitResult:
-        self.motion.abort()
+        kept = self._spindles_kept_after_reset()
+        self.motion.abort(keep_spindles=kept)
+        self._spindle_display_after_reset(kept)
         if self._test_motion is not None:
             self._test_motion.abort()
         for interp in self._interpreters.values():
@@ -510,6 +516,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if not self._estop_active:
             self._estop_active = True
             self.motion.abort()
+            self._spindle_display_after_reset(())  # every spindle brakes and loses its S
             if self._test_motion is not None:
                 self._test_motion.abort()
             self._jogging = False
@@ -726,10 +733,21 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if run.kind == "AUTO":
             self.counters.on_program_end(bool(self._pc["program_test"]))
             self.runtime.program_end()
+        if kind in SPINDLE_RESET_ENDS:
+            self._reset_spindles_at_program_end(run.name)
         self.alarms.set_message("", self._time_s)
         self._run = None
         self._owner = None
         self._transition("program_end")
+
+    def _reset_spindles_at_program_end(self, program: str) -> None:
+        """M2 / M30: brake the spindles that MD35040 does not keep, and delete their S."""
+        kept = self._spindles_kept_after_reset()
+        spindle_command = getattr(self.motion, "spindle_command", None)
+        for number, name in enumerate(self.machine.spindles, start=1):
+            if name not in kept and spindle_command is not None and not self._pc["program_test"]:
+                spindle_command(SpindleCommand(Source(program, 0), number, state="M5", speed_rpm=0.0))
+        self._spindle_display_after_reset(kept)
 
     def _output(self, command: object) -> None:
         if isinstance(command, AuxFunction):
@@ -781,6 +799,20 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if new is not None:
             self._sit = new
 
+    def _spindles_kept_after_reset(self) -> frozenset[str]:
+        """The spindles whose MD35040 SPIND_ACTIVE_AFTER_RESET is set: they keep turning with
+        their S and direction at RESET and program end; the others (0, the default) brake
+        and lose them (002 L51017-51038)."""
+        return frozenset(name for name in self.machine.spindles if self.machine.spindle_kept_after_reset(name))
+
+    def _spindle_display_after_reset(self, kept: Collection[str]) -> None:
+        """The displayed S and direction of the master spindle follow it: deleted unless
+        the spindle is kept (002 L51032-51038)."""
+        spindles = self.machine.spindles
+        if not spindles or spindles[0] not in kept:
+            self._spindle_state = "M5"
+            self._spindle_rpm = 0.0
+
     def _mark_interrupted(self, run: ProgramRun | None) -> None:
         """Remember which program is stopped (the owner of the interruption)."""
         if run is not None and run is not self._overlay:
@@ -796,7 +828,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         position = self._path_positions(motion)
         self._parked = run.park(motion.current_source(), position)
         self._repos_point = position
-        motion.abort()
+        motion.abort(keep_spindles=self.machine.spindles)  # a mode change stops no spindle
 
     def _resume_motion(self, run: ProgramRun) -> None:
         """NC START of an interrupted program: REPOS (RMI) back, then the remainder."""

@@ -61,6 +61,12 @@ class MachineConfig:
         """Names of the spindles."""
         return tuple(a.name for a in self.axes if a.kind == "spindle")
 
+    def spindle_kept_after_reset(self, name: str) -> bool:
+        """MD35040 SPIND_ACTIVE_AFTER_RESET of spindle ``name``: True keeps its S and direction
+        at RESET and program end, False (the default) brakes it and deletes them (002
+        L51017-51038)."""
+        return bool(int(self.md_value("MD35040", name, 0) or 0))
+
     def axis(self, name: str) -> AxisConfig:
         """Return the axis called ``name`` (KeyError if there is none)."""
         for axis in self.axes:

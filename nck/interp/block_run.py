@@ -113,7 +113,7 @@ class BlockRun:
         if self.call is not None:
             raise NcAlarmError(12080, self.end_kind)
         if self.frame.is_main or subprograms.ends_whole_program(interp, self.end_kind):
-            interp._program_end()  # (ISO mode: M30 in a subprogram ends the whole program)
+            interp._program_end(self.end_kind or "M30")  # (ISO mode: M30 in a subprogram ends the whole program)
             return [canon.ProgramEnd(self.source, self.end_kind or "M30")]
         subprograms.prepare_return(self.frame, self.ret_target)
         interp._return_from(self.frame)

@@ -434,17 +434,27 @@ class Interpreter:
         if frame.is_main:
             commands.extend(self.builder.flush(self._state.modal))  # held-back chamfer/rounding
             commands.append(canon.ProgramEnd(source, "EOF"))
-            self._program_end()
+            self._program_end("EOF")
         else:
             self._return_from(frame)
         return BlockResult(source, "", tuple(commands), action_block=bool(commands),
                            finished=self._state.finished, cost_s=BLOCK_COST_S)
 
-    def _program_end(self) -> None:
+    def _program_end(self, kind: str) -> None:
         self._state.finished = True
         self._state.frames = []
-        self._state.modal.reset(self.machine, self.table)
+        modal = self._state.modal
+        modal.reset(self.machine, self.table)
+        spindles = self.machine.spindles
+        if kind in canon.SPINDLE_RESET_ENDS and spindles and not self.machine.spindle_kept_after_reset(spindles[0]):
+            self.sync_spindle("M5", 0.0)
         self._skip_run = None
+
+    def sync_spindle(self, state: str, speed_rpm: float) -> None:
+        """Take over the master spindle's direction and programmed S (the channel deletes
+        them at RESET, keeps them over a mode change): G95, G96 and $P_S go on from there."""
+        self._state.modal.spindle_state = state
+        self._state.modal.spindle_speed_rpm = float(speed_rpm)
 
     def _return_from(self, frame: Frame) -> None:
         """Subprogram end: repeat while passes are left, else back to the caller."""

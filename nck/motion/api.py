@@ -7,7 +7,7 @@ in the MCS, millimetres (degrees for rotary axes), seconds.
 
 from __future__ import annotations
 
-from typing import Callable, Mapping, Protocol
+from typing import Callable, Collection, Mapping, Protocol
 
 from nck.canon import Dwell, Motion, Source
 from nck.errors import NcAlarmError
@@ -34,8 +34,9 @@ class MotionSystem(Protocol):
     def resume(self) -> None:
         """NC START after hold: continue the interrupted segment."""
 
-    def abort(self) -> None:
-        """RESET: brake, then discard everything buffered."""
+    def abort(self, keep_spindles: Collection[str] = ()) -> None:
+        """RESET: brake, then discard everything buffered; the spindles stop except those
+        named in ``keep_spindles``."""
 
     def positions_mcs(self) -> Mapping[str, float]:
         """Actual positions of every axis (MCS)."""

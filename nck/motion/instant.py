@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections import deque
 from dataclasses import dataclass
-from typing import Mapping
+from typing import Collection, Mapping
 
 from nck.canon import Dwell, Motion, Source
 from nck.errors import NcAlarmError
@@ -139,8 +139,8 @@ class InstantMotion:
         self._held = False
         self._hold_point = None
 
-    def abort(self) -> None:
-        """Discard everything buffered and stop JOG and referencing."""
+    def abort(self, keep_spindles: Collection[str] = ()) -> None:
+        """Discard everything buffered and stop JOG and referencing (no spindles here)."""
         self._queue.clear()
         self._jogs.clear()
         self._ref_timers.clear()

@@ -113,9 +113,11 @@ class Spindle:
         self._update_setpoint()
 
     def stop(self) -> None:
-        """RESET: spindle stops (M5)."""
+        """RESET: the spindle brakes (M5) and its programmed S is deleted (002 L51032-51035)."""
         self.state.state = "M5"
+        self.state.programmed_rpm = 0.0
         self.state.jog_direction = 0
+        self._positioning = None
         self._update_setpoint()
 
     def _update_setpoint(self) -> None:

@@ -13,7 +13,7 @@ result as one cycle per call.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Collection, Mapping
 
 import numpy as np
 
@@ -341,8 +341,9 @@ class PlannedMotion(PathInterpolator):
                     planned.kind, planned.programmed_mm_min = "G1", self.repos_feed
                 self.la.items.insert(0, planned)
 
-    def abort(self) -> None:
-        """RESET: brake, discard everything buffered, leave follow-up, stop the spindles."""
+    def abort(self, keep_spindles: Collection[str] = ()) -> None:
+        """RESET: brake, discard everything buffered, leave follow-up, stop the spindles
+        except those named in ``keep_spindles`` (a mode change, or MD35040 = 1)."""
         self.held = False
         self.faulted = False
         self.stop_source = None
@@ -365,9 +366,10 @@ class PlannedMotion(PathInterpolator):
         self.jog.stop_all(abort_reference=True)
         self.servo.reset()
         self.cmd = self.servo.x_set.copy()
-        for spindle in self.spindles.values():
-            spindle.stop()
         self.limits.workarea_on = True
+        for name, spindle in self.spindles.items():
+            if name not in keep_spindles:
+                spindle.stop()
 
     def positions_mcs(self) -> Mapping[str, float]:
         """Positions of every path axis (MCS) and the angle of every spindle.

@@ -28,7 +28,8 @@ def test_run_json_final_state(tmp_path: Path, capsys: pytest.CaptureFixture[str]
     assert state["position"]["mcs"] == {"X": 10.0, "Y": 5.0, "Z": -1.0}
     assert state["gcodes"]["14"] == "G90" and state["gcodes"]["6"] == "G17"
     assert state["tool"] == {"T": 1, "D": 1}
-    assert state["spindle"] == {"S": 1000.0, "state": "M3"}
+    # M30 with MD35040 = 0 (default) deletes the last S and direction (002 L51032-51035).
+    assert state["spindle"] == {"S": 0.0, "state": "M5"}
     assert state["r"] == {"1": 5.0}
     assert state["blocks"] == 5
     assert state["channel"] == "reset" and state["program"] == "aborted"

@@ -61,6 +61,13 @@ def xyz(x: float, y: float, z: float) -> dict[str, float]:
     return {"X": x, "Y": y, "Z": z}
 
 
+def assert_spindle_deleted_at_end(case: Case) -> None:
+    """MD35040 = 0 (the machines' default): at the program end (M2, M30) the spindle brakes and
+    the last programmed S and direction are deleted (002 L51020, L51032-51035)."""
+    modal = case.result.interpreter.modal
+    assert (modal.spindle_state, modal.spindle_speed_rpm) == ("M5", 0.0)
+
+
 def test_01_g0_g1_absolute() -> None:
     """G90 end points are the programmed values (001 L1666-1672); F150 is modal for N40."""
     case = Case("01_g0_g1_absolute").ended()
@@ -189,6 +196,7 @@ def test_18_subprogram_passes_modal() -> None:
     case = Case("18_subprogram_passes_modal").ended()
     assert (case.position["X"], case.position["Z"]) == (52.0, 70.0)
     assert case.r(1, 2) == (2, 1)
+    assert_spindle_deleted_at_end(case)
 
 
 def test_19_proc_value_and_reference() -> None:
@@ -235,6 +243,7 @@ def test_24_tool_spindle_aux() -> None:
     modal = case.result.interpreter.modal
     assert (modal.tool, modal.spindle_state) == (7, "M5")
     assert modal.edge == 1  # T7 M6 without D: the default edge D1 of MD20270 (002 L58120-58126)
+    assert_spindle_deleted_at_end(case)  # S1200 is gone after M30, not only the direction
     aux = [(c.address, c.value) for c in case.result.commands if isinstance(c, canon.AuxFunction)]
     assert ("M", 8.0) in aux and ("H", 5.0) in aux and ("M", 9.0) in aux
 
@@ -271,6 +280,7 @@ def test_27_program_end_resets_modal() -> None:
     modal = case.result.interpreter.modal
     assert (modal.gcodes[14], modal.gcodes[15], modal.gcodes[6]) == ("G90", "G94", "G17")
     assert modal.feed == 0.0
+    assert_spindle_deleted_at_end(case)  # M2 as M30 (002 L51020)
 
 
 def test_28_main_blocks_and_comments() -> None:
@@ -372,6 +382,7 @@ def test_40_drilling_cycles() -> None:
     assert dwells == [0.5]
     assert case.position == xyz(50, 10, 50)
     assert case.r(1, 2) == (1, 1)
+    assert_spindle_deleted_at_end(case)
 
 
 def test_41_g641_adis_rounding() -> None:

@@ -259,7 +259,7 @@ def test_aux_functions_and_messages_go_out_with_the_main_run() -> None:
 
 
 def test_outputs_after_a_repos_wait_for_the_remainder() -> None:
-    program = "N10 G1 X100 F6000\nN20 S500 M3\nN30 M30"
+    program = "N10 G1 X100 F6000\nN20 S500 M3\nN30 M0\nN40 M30"
     nck = make_nck({"P": program})
     auto_start(nck, "P")
     nck.tick(0.5)
@@ -273,9 +273,15 @@ def test_outputs_after_a_repos_wait_for_the_remainder() -> None:
     nck.submit(c.CycleStart())
     nck.tick(0.2)
     assert nck.status().channel.modal.spindle_state == "M5"  # N10 not finished yet
-    assert until_state(nck, "reset", "aborted")
+    assert until_state(nck, "interrupted", "stopped")  # M0 after the remainder
     assert nck.positions_mcs() == pytest.approx({"X": 100.0, "Y": 0.0, "Z": 0.0})
-    assert nck.status().channel.modal.spindle_state == "M3"
+    modal = nck.status().channel.modal
+    assert (modal.spindle_state, modal.spindle_speed_rpm) == ("M3", 500.0)
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "reset", "aborted")
+    # M30 with MD35040 = 0 (default) deletes the last S and direction (002 L51032-51035).
+    modal = nck.status().channel.modal
+    assert (modal.spindle_state, modal.spindle_speed_rpm) == ("M5", 0.0)
 
 
 def test_power_on_status_shows_the_reset_g_codes() -> None:

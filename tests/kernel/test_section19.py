@@ -424,19 +424,23 @@ def test_18_program_test_moves_the_display_not_the_machine() -> None:
     """Digest 828d-2 rank 18."""
     # 002 L18007-18009, L18030-18031: program test executes the program without axis or
     # spindle setpoints, but with auxiliary function outputs.
-    nck = make_nck({"P": "N10 G1 X100 F6000\nN20 M3 S1000 M8\nN30 M30"})
+    nck = make_nck({"P": "N10 G1 X100 F6000\nN20 M3 S1000 M8\nN30 M0\nN40 M30"})
     nck.submit(c.SelectMode("AUTO"))
     assert nck.submit(c.SetProgramControl("program_test", True)) == c.Accepted()
     nck.submit(c.SelectProgram("P"))
     nck.submit(c.CycleStart())
     nck.tick(0.5)
     assert 0.0 < x(nck) < 100.0
-    assert until_state(nck, "reset", "aborted")
+    assert until_state(nck, "interrupted", "stopped")  # at M0
     assert x(nck) == pytest.approx(100.0)
     assert nck.status().axes[0].position_mcs == pytest.approx(100.0)
     assert nck.motion.positions_mcs()["X"] == 0.0  # the machine did not move
     assert nck.status().channel.modal.aux.get("M") == "8"  # M8 was output
     assert nck.status().channel.modal.spindle_state == "M3"  # aux functions still output
+    nck.submit(c.CycleStart())
+    assert until_state(nck, "reset", "aborted")
+    # M30, MD35040 = 0 (default): S and direction deleted (002 L51032-51035).
+    assert nck.status().channel.modal.spindle_state == "M5"
     assert nck.submit(c.SetProgramControl("program_test", False)) == c.Accepted()
     status = nck.status()
     assert status.axes[0].position_mcs == 0.0

@@ -63,3 +63,128 @@ def test_status_carries_length_and_radius_of_the_active_edge_with_wear(factory) 
     assert modal.tool_radius_mm == pytest.approx(5.01)
     nck.submit(c.CycleStart())
     assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+
+
+SPINDLE_PROGRAM = "N10 M3 S1000\nN20 G1 X50 F500\nN30 M30"
+
+
+def spindle_view(nck: Nck) -> tuple[str, float, float]:
+    """(direction shown, programmed S shown, actual speed rounded to 1 rpm)."""
+    status = nck.status()
+    actual = next(a.speed_rpm for a in status.axes if a.kind == "spindle")
+    return status.channel.modal.spindle_state, status.channel.modal.spindle_speed_rpm, round(actual)
+
+
+def start(nck: Nck, name: str = "P.MPF") -> None:
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram(name))
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+
+
+def test_mode_change_keeps_the_spindle_turning(factory) -> None:  # noqa: F811
+    """NC STOP, AUTO → JOG → AUTO, NC START: the spindle turns on at 1000 rpm all along. The
+    mode changes of an interrupted channel (002 L17768-17801) stop no spindle; only RESET /
+    program end do, as MD35040 says (002 L51017-51038). The program goes on at 1000 rpm."""
+    nck = make(factory, {"P.MPF": SPINDLE_PROGRAM})
+    start(nck)
+    nck.tick(1.0)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+    nck.submit(c.CycleStop())
+    nck.tick(0.5)
+    assert nck.submit(c.SelectMode("JOG")) == c.Accepted()
+    nck.tick(1.0)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+    # Jogging the spindle meanwhile does not take its programmed rotation away.
+    nck.submit(c.Jog("SP", 1))
+    nck.tick(0.5)
+    nck.submit(c.Jog("SP", 0))
+    nck.tick(1.0)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.CycleStart())
+    nck.tick(0.5)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+
+
+@pytest.mark.parametrize("ending", ["RESET", "M30"])
+def test_md35040_0_reset_and_program_end_stop_the_spindle_and_delete_s(factory, ending) -> None:  # noqa: F811
+    """MD35040 = 0 (default): at RESET or program end the spindle brakes and the last S and
+    direction are deleted (002 L51031-51035): the display says M5, S 0, 0 rpm."""
+    nck = make(factory, {"P.MPF": SPINDLE_PROGRAM})
+    start(nck)
+    nck.tick(1.0)
+    if ending == "RESET":
+        nck.submit(c.Reset())
+    else:
+        assert nck.run_until(lambda k: k.situation.channel == "reset", 30.0)
+    nck.tick(3.0)
+    assert spindle_view(nck) == ("M5", 0.0, 0)
+
+
+@pytest.mark.parametrize("ending", ["RESET", "M30"])
+def test_md35040_1_spindle_keeps_turning_after_reset_and_program_end(factory, ending) -> None:  # noqa: F811
+    """MD35040 = 1: S and direction are kept and the spindle is not braked (002 L51036-51038)."""
+    machine = machine_with({"MD35040": {"SP": 1}})
+    nck = Nck(programs=MemorySource({"P.MPF": SPINDLE_PROGRAM}), referenced=True,
+              motion_factory=factory, machine=machine)
+    start(nck)
+    nck.tick(1.0)
+    if ending == "RESET":
+        nck.submit(c.Reset())
+    else:
+        assert nck.run_until(lambda k: k.situation.channel == "reset", 30.0)
+    nck.tick(3.0)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+
+
+def test_after_reset_m3_without_s_turns_at_the_deleted_speed(factory) -> None:  # noqa: F811
+    """MD35040 = 0: RESET deletes the last S (002 L51032-51035), in the machine as on the
+    screen: a following `M3` without S does not bring back the old 1000 rpm."""
+    nck = make(factory, {"P.MPF": SPINDLE_PROGRAM, "Q.MPF": "N10 M3\nN20 M0\nN30 M30"})
+    start(nck)
+    nck.tick(1.0)
+    nck.submit(c.Reset())
+    nck.tick(3.0)
+    start(nck, "Q.MPF")
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    nck.tick(1.0)
+    assert spindle_view(nck) == ("M3", 0.0, 0)
+    nck.submit(c.Reset())
+
+
+def test_emergency_stop_stops_the_spindle_on_screen_too(factory) -> None:  # noqa: F811
+    """EMERGENCY STOP brakes every spindle; the display does not keep claiming M3 1000."""
+    nck = make(factory, {"P.MPF": SPINDLE_PROGRAM})
+    start(nck)
+    nck.tick(1.0)
+    nck.submit(c.EmergencyStop(True))
+    nck.tick(3.0)
+    assert spindle_view(nck) == ("M5", 0.0, 0)
+
+
+def run_mda(nck: Nck, text: str) -> None:
+    nck.submit(c.SelectMode("MDA"))
+    nck.submit(c.SetMdaProgram(text))
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 30.0)
+
+
+def test_mda_block_leaves_the_spindle_turning_for_the_next_block(factory) -> None:  # noqa: F811
+    """`S1000 M3` in MDA: the buffer runs out without M2/M30, which is no program end in the
+    sense of MD35040 (002 L51017-51035): the spindle keeps turning, and the next MDA block in
+    G95 feeds from it: F0.1 mm/rev × 1000 rpm = 100 mm/min, X10 in 6 s (002 L51032-51035
+    apply only to M2/M30 and RESET). After RESET the S is gone for the next block too."""
+    nck = make(factory, {})
+    run_mda(nck, "S1000 M3")
+    nck.tick(2.0)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+    run_mda(nck, "G95 G1 X10 F0.1")
+    assert nck.positions_mcs()["X"] == pytest.approx(10.0)
+    assert spindle_view(nck) == ("M3", 1000.0, 1000)
+    nck.submit(c.Reset())
+    nck.tick(3.0)
+    assert spindle_view(nck) == ("M5", 0.0, 0)
+    nck.submit(c.SetMdaProgram("M3"))
+    nck.submit(c.CycleStart())
+    nck.tick(1.0)
+    assert spindle_view(nck) == ("M3", 0.0, 0)

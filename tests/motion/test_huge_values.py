@@ -11,6 +11,7 @@
 
 from __future__ import annotations
 
+import copy
 import math
 import warnings
 
@@ -31,9 +32,13 @@ def _run(text: str, trace: list | None = None):
         if trace is not None:
             trace.append(motion)
 
+    # MD35040 = 1: the spindle keeps its S and direction after M30 (002 L51036-51038), so
+    # the setpoint reached in the program can still be read after the end.
+    machine = copy.deepcopy(load_machine())
+    machine.md["MD35040"] = {"SP": 1}
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        return run_program(load_machine(), MemorySource({"P.MPF": text}), NcData(), "P.MPF",
+        return run_program(machine, MemorySource({"P.MPF": text}), NcData(), "P.MPF",
                            on_motion=on_motion, keep_commands=False)
 
 

@@ -37,6 +37,8 @@ def test_json_final_state_and_segments(tmp_path: Path, capsys: pytest.CaptureFix
     assert state["gcodes"]["8"] == "G500"
     assert state["position"]["wcs"] == pytest.approx({"X": 112.0, "Y": 55.0, "Z": -1.0})
     assert state["tool"] == {"T": 1, "D": 1}
+    # The program runs out without M2/M30: no program end in the sense of MD35040 (002
+    # L51017-51035), so the spindle keeps S and direction (nck.canon.SPINDLE_RESET_ENDS).
     assert state["spindle"]["state"] == "M3" and state["spindle"]["S"] == pytest.approx(2000.0)
     assert state["gcodes"]["6"] == "G17"
     lines = [json.loads(line) for line in segments.read_text().splitlines()]

@@ -63,7 +63,8 @@ def test_m19_spindle_position_and_lims() -> None:
     r = run(lines("N10 S500 M3", "N20 M19", "N30 LIMS=2000", "N40 M30"), data)
     positioning = [c for c in r.commands if isinstance(c, canon.SpindleCommand) and c.state == "M19"]
     assert positioning[0].position_deg == pytest.approx(45.0)
-    assert r.interp.modal.spindle_state == "M19"
+    # M30 with MD35040 = 0 (default) deletes the direction of rotation (002 L51032-51035).
+    assert r.interp.modal.spindle_state == "M5"
 
 
 def test_tool_change_default_edge_and_d0() -> None:
