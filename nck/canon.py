@@ -179,11 +179,12 @@ class ProgramEnd:
     kind: str
 
 
-# The program ends after which MD35040 = 0 brakes the spindle and deletes S and direction
-# (002 L51017-51035 name M2 and M30; M17 ends a main program the same way). Our choice: an MDA
-# buffer or a main program that simply runs out (kind "EOF") is no such end, so `S1000 M3` in
-# MDA leaves the spindle turning, as an operator setting up expects.
-SPINDLE_RESET_ENDS = frozenset({"M2", "M30", "M17"})
+# The program ends by an end command: after them MD35040 = 0 brakes the spindle and deletes S
+# and direction (002 L51017-51035 name M2 and M30; M17 ends a main program the same way), and
+# no tool stays preselected. Our choice: an MDA buffer or a main program that simply runs out
+# (kind "EOF") is no such end, so `S1000 M3` or `T1` in MDA leave the spindle turning and the
+# tool preselected for the next MDA block (`M6`), as an operator setting up expects.
+END_COMMANDS = frozenset({"M2", "M30", "M17"})
 
 
 @dataclass(frozen=True, slots=True)

@@ -33,7 +33,7 @@ from typing import Any, Callable, Collection
 from nck import commands as cmd
 from nck.access import AccessControl
 from nck.alarms import AlarmServer
-from nck.canon import (SPINDLE_RESET_ENDS, AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand,
+from nck.canon import (END_COMMANDS, AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand,
                        ToolSelect, UserAlarm)
 from nck.channel import (
     ABORTED, ACTIVE, INTERRUPTED, RESET, RUNNING, ChannelSituation, mode_change_allowed,
@@ -438,6 +438,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
         return Accepted()
 
     def _new_run(self, kind: str, name: str, interp: Interpreter) -> ProgramRun:
+        sync_tool = getattr(interp, "sync_tool", None)
+        if sync_tool is not None:
+            sync_tool(self._tool, self._edge, int(self._aux.get("T", self._tool)))
         sync = getattr(interp, "sync_position", None)
         if sync is not None:
             sync(self._path_motion().positions_mcs())
@@ -482,6 +485,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         kept = self._spindles_kept_after_reset()
         self.motion.abort(keep_spindles=kept)
         self._spindle_display_after_reset(kept)
+        self._aux.pop("T", None)  # no preselection beyond RESET (the interpreter's too)
         if self._test_motion is not None:
             self._test_motion.abort()
         for interp in self._interpreters.values():
@@ -733,7 +737,8 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if run.kind == "AUTO":
             self.counters.on_program_end(bool(self._pc["program_test"]))
             self.runtime.program_end()
-        if kind in SPINDLE_RESET_ENDS:
+        if kind in END_COMMANDS:
+            self._aux.pop("T", None)  # no preselection beyond M2 / M30
             self._reset_spindles_at_program_end(run.name)
         self.alarms.set_message("", self._time_s)
         self._run = None

@@ -19,7 +19,14 @@ def tfs_lines(status: NckStatus) -> Text:
     # The tool line names the tool once: its name, else its number (T1), else "no tool".
     tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
     text.append(f" {tool:<18}", style="bold")
-    text.append(f"D{modal.edge}\n" if modal.edge else "D0\n")
+    text.append(f"D{modal.edge}")
+    # With MD22550 = 1 a programmed T only prepares the tool until M6 changes it: say
+    # which tool waits, so that "T1 D1" without M6 does not pass unnoticed (our choice;
+    # the manual leaves the display of the preselection open).
+    preselected = modal.aux.get("T")
+    if preselected is not None and preselected != str(modal.tool):
+        text.append(f"   T{preselected} preselected", style="bold #f39200")
+    text.append("\n")
     text.append(f"   L {fixed(modal.tool_length_mm, 3, 10)}   R {fixed(modal.tool_radius_mm, 3, 8)}\n")
     text.append(" F ", style="bold")
     # Actual: the interpolator's path velocity (rapid in G0, JOG in JOG), always per minute;

@@ -446,7 +446,7 @@ class Interpreter:
         modal = self._state.modal
         modal.reset(self.machine, self.table)
         spindles = self.machine.spindles
-        if kind in canon.SPINDLE_RESET_ENDS and spindles and not self.machine.spindle_kept_after_reset(spindles[0]):
+        if kind in canon.END_COMMANDS and spindles and not self.machine.spindle_kept_after_reset(spindles[0]):
             self.sync_spindle("M5", 0.0)
         self._skip_run = None
 
@@ -455,6 +455,13 @@ class Interpreter:
         them at RESET, keeps them over a mode change): G95, G96 and $P_S go on from there."""
         self._state.modal.spindle_state = state
         self._state.modal.spindle_speed_rpm = float(speed_rpm)
+
+    def sync_tool(self, tool: int, edge: int, preselected: int) -> None:
+        """Take over the tool in the spindle, its active edge and the preselected tool (MDA
+        and AUTO have interpreters of their own; the machine has one spindle): before
+        :meth:`sync_position`, so that the WCS follows with the tool length."""
+        modal = self._state.modal
+        modal.tool, modal.edge, modal.tool_selected = int(tool), int(edge), int(preselected)
 
     def _return_from(self, frame: Frame) -> None:
         """Subprogram end: repeat while passes are left, else back to the caller."""

@@ -96,8 +96,8 @@ class MotionBuilder:
         self.machine = machine
         self.data = data
         self.path_axes = machine.path_axes
-        mode = machine.md_value("MD22550")
-        self.tool_change_with_m6 = (machine.kind != "lathe") if mode is None else bool(mode)
+        # MD22550 TOOL_CHANGE_MODE from the machine file; the catalogue default is 0 (T changes).
+        self.tool_change_with_m6 = bool(machine.md_value("MD22550") or 0)
         default_edge = machine.md_value("MD20270")
         self.default_edge = 1 if default_edge is None else int(default_edge)
         transverse = machine.md_value("MD20100")
@@ -372,12 +372,12 @@ class MotionBuilder:
             modal.tool_selected = tool
             out.append(canon.ToolSelect(src, tool, change=direct or change))
             if direct:
-                self._change_tool(modal, "D" in words.words)
+                self._change_tool(modal, "D" in words.words, out, src)
         elif change:
             out.append(canon.ToolSelect(src, modal.tool_selected, change=True))
         if change and self.tool_change_with_m6:
             self._require_tool_data(modal.tool_selected)  # MD22550 = 1: stop at M06 (002 L58171-58190)
-            self._change_tool(modal, "D" in words.words)
+            self._change_tool(modal, "D" in words.words, out, src)
         if "D" in words.words:
             edge = int(words.words["D"])
             if edge < 0:
@@ -393,8 +393,10 @@ class MotionBuilder:
         if tool and not any(number == tool for number, _edge in self.data.tools):
             raise NcAlarmError(ALARM_T_NOT_DEFINED, str(tool))
 
-    def _change_tool(self, modal: ModalState, edge_programmed: bool) -> None:
-        """The tool change: new tool, and the default edge of MD20270 unless D is in the block."""
+    def _change_tool(self, modal: ModalState, edge_programmed: bool, out: list[canon.CanonCommand],
+                     src: canon.Source) -> None:
+        """The tool change: new tool, and the default edge of MD20270 unless D is in the block
+        (output, so that the channel shows the edge the compensation uses)."""
         modal.tool = modal.tool_selected
         if edge_programmed:
             return
@@ -402,6 +404,7 @@ class MotionBuilder:
             modal.edge = 0
         elif self.default_edge >= 0:
             modal.edge = self.default_edge
+        out.append(canon.EdgeSelect(src, modal.edge))
 
     # ------------------------------------------------------------------ spindle
     def _spindle(self, words: BlockWords, modal: ModalState, geo: GeometryState,

@@ -313,7 +313,7 @@ def _machine_data(ctx: SysContext, name: str, match: re.Match, indices: tuple[An
             if value is None:
                 raise NcAlarmError(17040, name)
             return value
-    defaults = {28050: 100, 11120: 0, 22550: 1 if ctx.machine.kind != "lathe" else 0}
+    defaults = {28050: 100, 11120: 0, 22550: 0}  # catalogue defaults of data the file may omit
     if number in defaults and index is None:
         return defaults[number]
     raise NcAlarmError(12550, name)

@@ -160,3 +160,13 @@ def test_spindle_and_rotary_data_in_their_own_units(tmp_path: Path) -> None:
     assert code == 0, err
     lines = out.splitlines()
     assert lines[0].endswith(" deg") and lines[1].endswith(" rev/min") and lines[2].endswith(" mm")
+
+
+@pytest.mark.parametrize(("machine", "mode"), [("mill3", 1), ("lathe2", 0)])
+def test_md22550_shows_the_tool_change_mode_the_machine_runs(tmp_path: Path, machine: str, mode: int) -> None:
+    """MD22550 TOOL_CHANGE_MODE: 1 on the mill (T prepares, M6 changes: a magazine, 002
+    L57620-57625), 0 on the lathe (T changes at once: a turret, 002 L57616-57619); the
+    kernel behaves so (tests/kernel/test_values_on_screen.py)."""
+    code, out, err = md(tmp_path, "--machine", machine, "MD22550")
+    assert code == 0, err
+    assert out.strip() == f"MD22550 $MC_TOOL_CHANGE_MODE = {mode}"

@@ -244,6 +244,9 @@ def test_24_tool_spindle_aux() -> None:
     assert (modal.tool, modal.spindle_state) == (7, "M5")
     assert modal.edge == 1  # T7 M6 without D: the default edge D1 of MD20270 (002 L58120-58126)
     assert_spindle_deleted_at_end(case)  # S1200 is gone after M30, not only the direction
+    # Each M6 selects edge 1 of the new tool (MD20270 = 1, 002 L57659-57666); D2 in between.
+    edges = [c.edge for c in case.result.commands if isinstance(c, canon.EdgeSelect)]
+    assert edges == [1, 2, 1]
     aux = [(c.address, c.value) for c in case.result.commands if isinstance(c, canon.AuxFunction)]
     assert ("M", 8.0) in aux and ("H", 5.0) in aux and ("M", 9.0) in aux
 

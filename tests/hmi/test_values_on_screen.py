@@ -107,3 +107,27 @@ def test_tfs_feed_under_g95_names_both_units() -> None:
     status = replace(status, channel=replace(status.channel, modal=modal, path_feed_mm_min=250.0))
     line = next(row for row in str(tfs_lines(status)).splitlines() if row.split()[:1] == ["F"])
     assert line.split()[:6] == ["F", "250.000", "mm/min", "/", "0.250", "mm/rev"]
+
+
+async def test_tfs_window_shows_a_tool_waiting_for_m6() -> None:
+    """Mill (MD22550 = 1): MDA `T1 D1` leaves T0 in the spindle and T1 preselected (002
+    L57620-57625, L57649-57651); the T,F,S window says so, and after `M6` shows T1 with its
+    length."""
+    from nck.kernel import Nck
+    from nck.ncdata import ToolEdge
+    from nck.interp.sources import MemorySource
+
+    nck = Nck(programs=MemorySource({}), referenced=True)
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120, 3: 120.0, 6: 5.0})
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d", *"T1 D1", "enter", *"M0", "enter", *"M6", "alt+g")
+        app.bridge.run_until(lambda s: s.channel.program_state == "stopped", max_s=10)
+        await pilot.pause()
+        first = str(app.screen.query_one("#tfs").render()).splitlines()[0]
+        assert first.split() == ["no", "tool", "D1", "T1", "preselected"]
+        await pilot.press("alt+g")
+        app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=10)
+        await pilot.pause()
+        first, second = str(app.screen.query_one("#tfs").render()).splitlines()[:2]
+        assert first.split() == ["T1", "D1"] and second.split()[1] == "120.000"

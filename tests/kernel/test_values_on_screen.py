@@ -65,6 +65,85 @@ def test_status_carries_length_and_radius_of_the_active_edge_with_wear(factory) 
     assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
 
 
+def test_mill_changes_tools_with_m6_as_its_md22550_says() -> None:
+    """The mill's MD22550 TOOL_CHANGE_MODE is 1 (a mill with a magazine, 002 L57620-57625):
+    the table, the machine file and the behaviour agree. T1 only prepares the tool, M6
+    changes it; a D1 while T0 is active stays inactive (002 L57649-57651), and the tool
+    stays visible as preselected (aux T)."""
+    from nck.machine_data import MachineDataStore
+    from nck.ncdata import ToolEdge
+
+    machine = load_machine()
+    assert MachineDataStore(machine).value("MD22550") == 1
+    nck = Nck(programs=MemorySource({"P.MPF": "N10 T1 D1\nN20 M0\nN30 M6\nN40 D1\nN50 M0\nN60 M30"}),
+              referenced=True)
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120, 3: 120.0, 6: 5.0})
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.tool_length_mm) == (0, 0.0)  # T0 still in the spindle
+    assert modal.aux.get("T") == "1"  # T1 is preselected
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.edge, modal.tool_length_mm) == (1, 1, 120.0)
+
+
+def test_lathe_changes_tools_with_t_as_its_md22550_says() -> None:
+    """The lathe's MD22550 is 0 (turret): T1 changes the tool at once (002 L57616-57619)."""
+    from nck.machine_data import MachineDataStore
+    from nck.ncdata import ToolEdge
+
+    machine = load_machine("lathe2")
+    assert MachineDataStore(machine).value("MD22550") == 0
+    nck = Nck(programs=MemorySource({"P.MPF": "N10 T1 D1\nN20 M0\nN30 M30"}), referenced=True,
+              machine=machine)
+    nck.data.tools[(1, 1)] = ToolEdge({1: 500, 2: 3, 3: 20.0, 4: 40.0, 6: 0.4})
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    nck.submit(c.CycleStart())
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.edge) == (1, 1)
+
+
+def test_md22550_0_on_the_mill_changes_the_tool_with_t() -> None:
+    """The behaviour follows the datum, not the machine kind: the mill with MD22550 = 0
+    changes the tool with T at once (002 L57616-57619), D1 active, length 120 without M6."""
+    from nck.ncdata import ToolEdge
+
+    nck = Nck(programs=MemorySource({"P.MPF": "N10 T1 D1\nN20 M0\nN30 M30"}), referenced=True,
+              machine=machine_with({"MD22550": 0}))
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120, 3: 120.0, 6: 5.0})
+    start(nck)
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.edge, modal.tool_length_mm) == (1, 1, 120.0)
+
+
+def test_tool_changed_in_mda_stays_for_the_next_mda_block_and_the_program() -> None:
+    """Mill, MD22550 = 1: MDA `T1` preselects, the next MDA `M6` changes (002 L57620-57625)
+    and activates D1 (MD20270, 002 L57652ff); the tool stays in the spindle for an AUTO
+    program, whose `G0 Z0` ends 120 mm higher in the machine (length 1 = 120 on Z, G17)."""
+    from nck.ncdata import ToolEdge
+
+    nck = Nck(programs=MemorySource({"P.MPF": "N10 G0 Z0\nN20 M0\nN30 M30"}), referenced=True)
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120, 3: 120.0, 6: 5.0})
+    run_mda(nck, "T1")
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.aux.get("T")) == (0, "1")  # preselected, still T0
+    run_mda(nck, "M6")
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.edge, modal.tool_length_mm) == (1, 1, 120.0)
+    start(nck)
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    assert nck.positions_mcs()["Z"] == pytest.approx(120.0)
+    modal = nck.status().channel.modal
+    assert (modal.tool, modal.edge) == (1, 1)
+
+
 SPINDLE_PROGRAM = "N10 M3 S1000\nN20 G1 X50 F500\nN30 M30"
 
 
