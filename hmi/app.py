@@ -43,6 +43,7 @@ from textual.screen import Screen
 
 from nck import commands as cmd
 from nck.commands import Accepted, SubmitResult
+from nck import queries
 from nck.status import NckStatus
 from nck.termination import TERMINATION_SIGNALS, exit_on_termination
 
@@ -58,7 +59,7 @@ from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.program_lines import ProgramLines
 from hmi.messages import CommandRejected, NckStatusChanged
-from hmi.startup import build_session
+from hmi.startup import start_session
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.theme import SINUMERIK_THEME
 
@@ -405,22 +406,10 @@ class HmiApp(MachineControlPanel, App):
         The same path the Program manager's Execute selects (``MPF/PART1.MPF``),
         so that the header shows a program the same way however it was selected.
         """
-        nck = self.bridge.nck
-        source = getattr(nck, "programs", None)
-        lister = getattr(source, "all_programs", None)
-        if callable(lister):
-            try:
-                return [e.path for e in lister() if e.kind == "MPF"]  # as the Program manager selects them
-            except Exception:  # a broken listing shows as an empty list
-                return []
-        for holder in (nck, source):
-            lister = getattr(holder, "list_programs", None)
-            if callable(lister):
-                try:
-                    return [str(name) for name in lister()]
-                except Exception:  # a broken listing shows as an empty list
-                    return []
-        return []
+        try:
+            return list(self.bridge.query(queries.ProgramNames()))
+        except Exception:  # a broken listing shows as an empty list
+            return []
 
     def program_text(self, name: str) -> ProgramLines | None:
         """The lines of a part program from the kernel's program source, or None.
@@ -430,7 +419,7 @@ class HmiApp(MachineControlPanel, App):
         cached = self._program_cache.get(name)
         if cached is not None:
             return cached
-        source = getattr(self.bridge.nck, "programs", None)
+        source = self.bridge.query(queries.ProgramSource())
         reader = getattr(source, "read_program", None)
         found = None
         if callable(reader):
@@ -575,8 +564,8 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
     on_quit = None
     session = None
     if nck is None:
-        session = build_session(machine, data_dir, ephemeral, program, confirm)
-        nck, on_quit = session.nck, session.quit
+        session, nck = start_session(machine, data_dir, ephemeral, program, confirm)
+        on_quit = session.quit
     app = HmiApp(nck, realtime=realtime, on_quit=on_quit,
                  alarm_times=session.alarm_times if session is not None else None)
     app.nc_session = session

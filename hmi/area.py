@@ -113,6 +113,10 @@ class AreaBase(BindingsInPlace):
         """Send an operator command to the kernel through the bridge."""
         return self.hmi.submit(command)
 
+    def ask(self, question: object) -> Any:
+        """Ask the kernel a read-only question of :mod:`nck.queries` through the bridge."""
+        return self.hmi.bridge.query(question)
+
     # -- softkeys ------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
         """Return the top softkey level of the area (override)."""

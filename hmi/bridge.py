@@ -2,7 +2,10 @@
 
 It advances the simulated NCK from a Textual interval timer (no threads),
 posts :class:`~hmi.messages.NckStatusChanged` only when the snapshot's ``seq``
-changed, forwards operator commands and reports rejections.
+changed, forwards operator commands and reports rejections. Screens read what
+the snapshot does not carry with :meth:`NckBridge.query` (the questions of
+:mod:`nck.queries`); they never hold the kernel. The bridge times every advance
+of the kernel for the system utilisation view (:mod:`hmi.utilisation`).
 
 For tests the timer is not started (``realtime=False``): the test advances the
 kernel explicitly with :meth:`NckBridge.advance` or :meth:`NckBridge.step` and
@@ -17,11 +20,13 @@ from typing import Any, Callable, Protocol
 
 from textual.message_pump import MessagePump
 
+from nck import queries
 from nck.commands import Accepted, EnterPassword, Rejected, SubmitResult
 from nck.status import NckStatus
 
 from hmi.alarm_times import AlarmTimes
 from hmi.messages import AlarmLogged, CommandRejected, NckStatusChanged
+from hmi.utilisation import UtilisationMeter
 
 REFRESH_PERIOD_S = 0.05
 """Timer period: the kernel is advanced and the screen refreshed at most 20 times a second."""
@@ -65,6 +70,7 @@ class NckBridge:
         alarm_times: AlarmTimes | None = None,
     ) -> None:
         self.nck = nck
+        """The kernel. Only the bridge calls it (screens ask :meth:`query`; tests may read it)."""
         self.alarm_times = alarm_times if alarm_times is not None else AlarmTimes()
         """Date and time of day of the alarms and messages read from the kernel's log."""
         self.realtime = realtime
@@ -76,6 +82,8 @@ class NckBridge:
         self._last_log_seq = 0
         self._status: NckStatus = nck.status()
         self.refresh_count = 0
+        self.utilisation = UtilisationMeter()
+        """The kernel's compute time per IPO cycle, measured over the last advances."""
         # wrong passwords: the kernel counts them, the panel waits before it takes the next one
         self._password_open_at_s = self.clock() + self._password_delay_s()
 
@@ -126,16 +134,16 @@ class NckBridge:
 
     def advance(self, dt_s: float) -> NckStatus:
         """Advance the kernel by ``dt_s`` seconds of simulated time, then poll."""
-        self.nck.tick(dt_s)
+        self._timed(self.nck.tick, dt_s)
         return self.poll()
 
     def step(self, n_ipo_cycles: int = 1) -> NckStatus:
         """Advance the kernel by whole IPO cycles (tests), then poll."""
         stepper = getattr(self.nck, "step", None)
         if callable(stepper):
-            stepper(n_ipo_cycles)
+            self._timed(stepper, n_ipo_cycles)
         else:
-            self.nck.tick(n_ipo_cycles * self.ipo_cycle_s)
+            self._timed(self.nck.tick, n_ipo_cycles * self.ipo_cycle_s)
         return self.poll()
 
     def run_until(self, predicate: Callable[[NckStatus], bool], *, max_s: float = 60.0,
@@ -144,10 +152,30 @@ class NckBridge:
         elapsed = 0.0
         status = self.poll()
         while not predicate(status) and elapsed < max_s:
-            self.nck.tick(dt_s)
+            self._timed(self.nck.tick, dt_s)
             elapsed += dt_s
             status = self.nck.status()
         return self.poll()
+
+    def _timed(self, advance: Callable[[Any], None], amount: Any) -> None:
+        """Advance the kernel with ``advance(amount)``, timed for the utilisation view."""
+        self.utilisation.measure(lambda: advance(amount), self._counters)
+
+    def _counters(self) -> tuple[int, int]:
+        return int(getattr(self.nck, "cycles_done", 0)), int(getattr(self.nck, "blocks_interpreted", 0))
+
+    def query(self, question: object) -> Any:
+        """Answer a read-only question about the kernel (a class of :mod:`nck.queries`)."""
+        return queries.answer(self.nck, question)
+
+    @property
+    def traceable(self) -> bool:
+        """True when the kernel can be sampled every IPO cycle (a trace can be started)."""
+        return hasattr(self.nck, "cycle_listeners")
+
+    def attach_trace(self, recorder: Any) -> None:
+        """Let ``recorder`` (``nck.trace.TraceRecorder``) sample the kernel at every IPO cycle."""
+        recorder.attach(self.nck)
 
     def poll(self, force: bool = False) -> NckStatus:
         """Read the snapshot; post it when ``seq`` changed, and post new log entries."""

@@ -167,12 +167,12 @@ def _import_at_start(holder: NcDataSession, local: Path, confirm: Callable[[str]
     return files.import_file(local, overwrite=True).name
 
 
-def build_nck(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
-              program: str | None = None, confirm: Callable[[str], bool] | None = None,
-              ) -> tuple[Any, Callable[[], None] | None]:
-    """Build the kernel on the NC data directory; return it and the function run on quit."""
-    holder = build_session(machine, data_dir, ephemeral, program, confirm)
-    return holder.nck, holder.quit
+def start_session(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
+                  program: str | None = None, confirm: Callable[[str], bool] | None = None,
+                  ) -> tuple[NcDataSession, Any]:
+    """Open the NC data directory (:func:`build_session`); return the session and its kernel for the bridge."""
+    session = build_session(machine, data_dir, ephemeral, program, confirm)
+    return session, session.nck
 
 
 def programs_in_execution(status: Any) -> list[str]:

@@ -4,8 +4,9 @@ Views (horizontal softkeys): alarm list, messages, alarm log, service overview,
 service axis/spindle, service drive, trace; ``More`` leads to system
 utilisation, version and the logbook. The vertical softkeys belong to the
 view on display (acknowledge, filter/export, axis +/−, trace settings).
-Everything shown comes from the status snapshot, the alarm log and read-only
-kernel accessors (``alarm_history``, ``logbook``, ``buffer_fill``, counters).
+Everything shown comes from the status snapshot and from read-only questions to the
+kernel through the bridge (``nck.queries``: alarm history, logbook, buffer fill, counters);
+the utilisation figures are the bridge's measurement of the kernel's compute time.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from textual.widgets import ContentSwitcher, Input, Static
 
 import nck as nck_package
 from nck import commands as cmd
+from nck import queries
 from nck.status import NckStatus
 from nck.regular_files import write_export
 from nck.trace import TraceError
@@ -34,7 +36,7 @@ from screens.diagnostics_alarms import (
     messages_text, parse_filter,
 )
 from screens.diagnostics_service import (
-    UtilisationMeter, axis_rows, drive_rows, overview_text, rows_text, utilisation_rows,
+    axis_rows, drive_rows, overview_text, rows_text, utilisation_rows,
 )
 from screens.diagnostics_trace import TraceSession
 
@@ -75,19 +77,12 @@ class DiagnosticsScreen(AreaBase):
         self.log_filter = LogFilter()
         self.log_first = 0
         self.export_dir = Path.cwd()
-        self.meter = UtilisationMeter()
         self.trace: TraceSession | None = None
         self._log_seq = -1
 
-    # -- kernel access (read-only accessors) --------------------------------------------
-    @property
-    def kernel(self) -> Any:
-        """The kernel behind the bridge (only its read-only accessors are used here)."""
-        return self.hmi.bridge.nck
-
+    # -- kernel data (read-only questions through the bridge) ------------------------------
     def _history(self) -> tuple:
-        reader = getattr(self.kernel, "alarm_history", None)
-        return tuple(reader()) if callable(reader) else ()
+        return self.ask(queries.AlarmHistory())
 
     # -- layout ---------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
@@ -106,10 +101,9 @@ class DiagnosticsScreen(AreaBase):
                         yield Static("", id=f"diag-{view}", classes="diag-body", markup=False)
 
     def on_mount(self) -> None:
-        """No cursor blink; measure the kernel's compute time from now on."""
+        """No cursor blink; a trace session on the machine's axes."""
         self.query_one("#log-filter", Input).cursor_blink = False
-        self.meter.attach(self.kernel)
-        machine = getattr(self.kernel, "machine", None)
+        machine = self.ask(queries.ReadData()).machine
         if machine is not None:
             self.trace = TraceSession(machine)
         super().on_mount()
@@ -298,12 +292,12 @@ class DiagnosticsScreen(AreaBase):
         elif not self.trace.chosen:
             self.show_hint("Trace: choose at least one signal")
             return
-        elif not hasattr(self.kernel, "cycle_listeners"):
+        elif not self.hmi.bridge.traceable:
             self.show_hint("Trace: this kernel cannot be traced")
             return
         else:
             try:
-                self.trace.start(self.kernel)
+                self.trace.start(self.hmi.bridge.attach_trace)
             except TraceError as exc:
                 self.show_hint(f"Trace: {exc}")
                 return
@@ -368,8 +362,7 @@ class DiagnosticsScreen(AreaBase):
         show_text(self._body("alarms"), alarm_list_text(status.alarms, self.hmi.bridge.alarm_times))
 
     def _render_messages(self, status: NckStatus) -> None:
-        reader = getattr(self.kernel, "alarm_log_since", None)
-        events = tuple(reader(0)) if callable(reader) else ()
+        events = self.ask(queries.AlarmLogSince(0))
         times = self.hmi.bridge.alarm_times
         lines = message_lines(status.channel.message, events, status.alarms, times)
         show_text(self._body("messages"), messages_text(lines, events, times))
@@ -407,18 +400,15 @@ class DiagnosticsScreen(AreaBase):
                 drive_rows(status, axis)))
 
     def _render_utilisation(self, status: NckStatus) -> None:
-        kernel = self.kernel
-        self.meter.attach(kernel)  # a new kernel after "Reset (po)" is measured too
-        ipo = float(getattr(kernel, "ipo_cycle_s", 0.004) or 0.004)
-        filler = getattr(kernel, "buffer_fill", None)
-        buffer = filler() if callable(filler) else (0, 0)
-        rows = utilisation_rows(self.meter, ipo, buffer, int(getattr(kernel, "cycles_done", 0)),
-                                int(getattr(kernel, "blocks_interpreted", 0)))
+        counters = self.ask(queries.Counters())
+        ipo = counters.ipo_cycle_s or 0.004
+        rows = utilisation_rows(self.hmi.bridge.utilisation, ipo, self.ask(queries.BufferFill()),
+                                counters.cycles_done, counters.blocks_interpreted)
         show_text(self._body("utilisation"), rows_text(
             "Measured on this computer (wall-clock time spent per simulated IPO cycle)", rows))
 
     def _render_trace(self, status: NckStatus) -> None:
-        machine = getattr(self.kernel, "machine", None)
+        machine = self.ask(queries.ReadData()).machine
         if machine is not None and (self.trace is None or self.trace.machine is not machine) and not (
                 self.trace is not None and self.trace.running):
             self.trace = TraceSession(machine)  # a new kernel (Reset (po)) may have other axes
@@ -443,8 +433,7 @@ class DiagnosticsScreen(AreaBase):
                       [recorder.columns[n] for n in names])
 
     def _render_version(self, status: NckStatus) -> None:
-        kernel = self.kernel
-        machine = getattr(kernel, "machine", None)
+        machine = self.ask(queries.ReadData()).machine
         rows = [
             ("Product", "SINUMERIK Operate trainer (828D / 840D sl behaviour)", ""),
             ("NCK kernel version", str(getattr(nck_package, "__version__", "?")), ""),
@@ -453,7 +442,7 @@ class DiagnosticsScreen(AreaBase):
         if machine is not None:
             axes = ", ".join(f"{a.name} ({a.kind})" for a in machine.axes)
             rows.append(("Axes", axes, ""))
-            rows.append(("IPO cycle", f"{float(getattr(kernel, 'ipo_cycle_s', 0.0)) * 1000:.1f}", "ms"))
+            rows.append(("IPO cycle", f"{self.ask(queries.Counters()).ipo_cycle_s * 1000:.1f}", "ms"))
             rows.append(("Block buffer (MD28060)", str(machine.md_value("MD28060", None, "—")), "blocks"))
         text = Text(no_wrap=True, end="")
         text.append(f" {'Component':<28}Version / configuration\n", style="bold")
@@ -462,7 +451,7 @@ class DiagnosticsScreen(AreaBase):
         show_text(self._body("version"), text)
 
     def _render_logbook(self, status: NckStatus) -> None:
-        entries = list(getattr(self.kernel, "logbook", []) or [])
+        entries = list(self.ask(queries.Logbook()))
         text = Text(no_wrap=True, end="")
         text.append(f" Current access level: {status.access_level}\n", style="bold")
         text.append(f" {'Time':<12} {'Kind':<8} Change\n", style="bold")

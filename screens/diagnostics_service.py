@@ -8,15 +8,13 @@ Rows are built from :class:`nck.status.AxisStatus` (service values in
 
 from __future__ import annotations
 
-import time
-from collections import deque
-from dataclasses import dataclass, field
-from typing import Any, Callable
 
 from rich.text import Text
 
 from nck.number_text import fixed
 from nck.status import AxisStatus, NckStatus
+
+from hmi.utilisation import UtilisationMeter
 
 CONTROLLER_MODES = {0: "0 position control", 1: "1 speed control", 2: "2 hold", 3: "3 parking",
                     4: "4 follow-up", 5: "5 braking"}
@@ -176,65 +174,6 @@ def rows_text(title: str, rows: list[Row]) -> Text:
 
 
 # -- system utilisation ----------------------------------------------------------------------
-CLOCK: Callable[[], float] = time.perf_counter
-"""Wall clock of the measurement (tests replace it)."""
-
-
-@dataclass
-class UtilisationMeter:
-    """Measures the kernel's compute time per simulated IPO cycle and blocks per second.
-
-    :meth:`attach` wraps the kernel's ``tick``/``step`` (HMI side, the kernel has
-    no clock): each call is timed and divided by the IPO cycles it ran.
-    """
-
-    window: int = 50
-    samples: deque = field(default_factory=lambda: deque(maxlen=50))  # (wall_s, cycles, blocks)
-    attached: Any = None
-
-    def attach(self, nck: Any) -> None:
-        """Time every ``tick``/``step`` of ``nck`` from now on (once per kernel)."""
-        if self.attached is nck or getattr(nck, "_utilisation_meter", None) is not None:
-            self.attached = nck
-            meter = getattr(nck, "_utilisation_meter", None)
-            if meter is not None and meter is not self:
-                self.samples = meter.samples
-            return
-        self.attached = nck
-        nck._utilisation_meter = self
-        for name in ("tick", "step"):
-            original = getattr(nck, name, None)
-            if callable(original):
-                setattr(nck, name, self._timed(nck, original))
-
-    def _timed(self, nck: Any, original: Callable[[Any], None]) -> Callable[[Any], None]:
-        def timed(arg: Any = 1) -> None:
-            cycles0 = getattr(nck, "cycles_done", 0)
-            blocks0 = getattr(nck, "blocks_interpreted", 0)
-            start = CLOCK()
-            original(arg)
-            cycles = getattr(nck, "cycles_done", 0) - cycles0
-            if cycles > 0:
-                self.samples.append((CLOCK() - start, cycles, getattr(nck, "blocks_interpreted", 0) - blocks0))
-        return timed
-
-    def figures(self, ipo_cycle_s: float) -> dict[str, float]:
-        """Mean compute time per IPO cycle (µs), load (%), blocks per second (wall and simulated)."""
-        wall = sum(s[0] for s in self.samples)
-        cycles = sum(s[1] for s in self.samples)
-        blocks = sum(s[2] for s in self.samples)
-        per_cycle = wall / cycles if cycles else 0.0
-        worst = max((s[0] / s[1] for s in self.samples), default=0.0)
-        return {
-            "cycle_compute_us": per_cycle * 1e6,
-            "cycle_compute_max_us": worst * 1e6,
-            "ipo_load_pct": per_cycle / ipo_cycle_s * 100.0 if ipo_cycle_s > 0 else 0.0,
-            "blocks_per_s": blocks / wall if wall > 0 else 0.0,
-            "blocks_per_sim_s": blocks / (cycles * ipo_cycle_s) if cycles else 0.0,
-            "cycles_measured": float(cycles),
-        }
-
-
 def utilisation_rows(meter: UtilisationMeter, ipo_cycle_s: float, buffer: tuple[int, int],
                      cycles_total: int, blocks_total: int) -> list[Row]:
     """The rows of the system utilisation screen (real measured figures)."""

@@ -1,13 +1,13 @@
 """The trace view's settings and recorder handling (Diagnostics area).
 
 Holds the four signal slots, the trigger and the duration the operator chose,
-starts a :class:`nck.trace.TraceRecorder` on the kernel and exports its CSV.
+starts a :class:`nck.trace.TraceRecorder` (hooked to the kernel by the bridge) and exports its CSV.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from rich.text import Text
 
@@ -68,11 +68,11 @@ class TraceSession:
         """True while the recorder waits for its trigger or records."""
         return self.recorder is not None and self.recorder.state in ("armed", "recording")
 
-    def start(self, nck: Any) -> TraceRecorder:
-        """Start a new recording on ``nck`` (a running one is stopped first)."""
+    def start(self, attach: Callable[[TraceRecorder], None]) -> TraceRecorder:
+        """Start a new recording, hooked to the kernel by ``attach`` (a running one is stopped first)."""
         self.stop()
         self.recorder = TraceRecorder(TraceSettings(self.chosen, self.trigger, self.duration_s), self.machine)
-        self.recorder.attach(nck)
+        attach(self.recorder)
         return self.recorder
 
     def stop(self) -> None:

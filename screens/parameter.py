@@ -17,6 +17,7 @@ from typing import Any, Callable, ClassVar
 from textual.app import ComposeResult
 
 from nck import commands as cmd
+from nck import queries
 from nck.commands import Accepted
 from nck.status import NckStatus
 
@@ -67,11 +68,11 @@ class ParameterScreen(AreaBase):
         self._levels: dict[str, int] = {}
         self._levels_at = -1
 
-    # -- kernel access (read-only accessors; writes are commands) ----------------------------
+    # -- kernel data (read through the bridge; writes are commands) ----------------------------
     @property
-    def kernel(self) -> Any:
-        """The kernel behind the bridge."""
-        return self.hmi.bridge.nck
+    def data_view(self) -> queries.DataView:
+        """The machine, NC data and machine data, read through the bridge."""
+        return self.ask(queries.ReadData())
 
     def level_of(self, name: str) -> int:
         """The access level writing ``name`` needs (cached per access level)."""
@@ -80,14 +81,12 @@ class ParameterScreen(AreaBase):
             self._levels_at = self.access_level
         key = level_key(name)
         if key not in self._levels:
-            reader = getattr(self.kernel, "required_level", None)
-            self._levels[key] = int(reader(name)) if callable(reader) else 7
+            self._levels[key] = self.ask(queries.RequiredLevel(name))
         return self._levels[key]
 
     def action_level(self, action_name: str) -> int:
         """The level a protected function (``nck.access.Action`` name) needs; 7 if unknown."""
-        reader = getattr(self.kernel, "action_level", None)
-        return int(reader(action_name)) if callable(reader) else 7
+        return self.ask(queries.ActionLevel(action_name))
 
     # -- layout -------------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
@@ -172,7 +171,7 @@ class ParameterScreen(AreaBase):
             return
         if self.view == "wo_overview":
             row = self.cursors["wo_overview"].row
-            frames = ["BASE"] + frame_names(self.kernel)
+            frames = ["BASE"] + frame_names(self.data_view)
             self.detail_frame = frames[max(0, min(row, len(frames) - 1))]
         self.cursors["wo_details"] = TableCursor()
         self.action_show_view("wo_details")
@@ -217,7 +216,7 @@ class ParameterScreen(AreaBase):
     # tools
     def selected_tool(self) -> tuple[int, int] | None:
         """(T, D) of the selected row of the tool list, or None."""
-        tools = sorted(self.kernel.data.tools)
+        tools = sorted(self.data_view.data.tools)
         row = self.cursors[self.view if self.view in ("tools", "wear") else "tools"].row
         return tools[row] if 0 <= row < len(tools) else None
 
@@ -233,7 +232,7 @@ class ParameterScreen(AreaBase):
             except ValueError:
                 self.hmi.set_hint("New tool: give the T number and optionally the type, e.g. 12 120")
                 return
-            if any(t == tool for t, _ in self.kernel.data.tools):
+            if any(t == tool for t, _ in self.data_view.data.tools):
                 self.hmi.set_hint(f"T{tool} exists already")
                 return
             if self.write(f"$TC_DP1[{tool},1]", kind):
@@ -249,9 +248,9 @@ class ParameterScreen(AreaBase):
         if selected is None:
             return
         tool = selected[0]
-        edges = [d for t, d in self.kernel.data.tools if t == tool]
+        edges = [d for t, d in self.data_view.data.tools if t == tool]
         edge = max(edges) + 1
-        kind = self.kernel.data.tools[(tool, 1 if 1 in edges else edges[0])].get(1)
+        kind = self.data_view.data.tools[(tool, 1 if 1 in edges else edges[0])].get(1)
         if self.write(f"$TC_DP1[{tool},{edge}]", int(kind)):
             self._select_tool(tool, edge)
 
@@ -287,7 +286,7 @@ class ParameterScreen(AreaBase):
         self.app.push_screen(ValueDialog("Search tool: T number"), find)
 
     def _select_tool(self, tool: int, edge: int | None) -> bool:
-        keys = sorted(self.kernel.data.tools)
+        keys = sorted(self.data_view.data.tools)
         for index, (t, d) in enumerate(keys):
             if t == tool and (edge is None or d == edge):
                 self.cursors[self.view].row = index
@@ -304,7 +303,7 @@ class ParameterScreen(AreaBase):
                     self.hmi.set_hint("All R parameters are 0")
                 self.refresh_table()
 
-        self.app.push_screen(ConfirmDialog(f"Set all {len(self.kernel.data.r)} R parameters to 0?"), clear)
+        self.app.push_screen(ConfirmDialog(f"Set all {len(self.data_view.data.r)} R parameters to 0?"), clear)
 
     # -- display -----------------------------------------------------------------------------------
     def update_status(self, status: NckStatus) -> None:
@@ -325,21 +324,22 @@ class ParameterScreen(AreaBase):
 
     def build_table(self) -> DataTable:
         """The table of the view on display."""
-        if not hasattr(self.kernel, "data") or not hasattr(self.kernel, "machine_data"):
+        data = self.data_view
+        if data.data is None or data.machine_data is None:
             return DataTable("This kernel offers no NC data", [Column("", 1)], [])
         refused = self.read_refused()
         if refused is not None:
             return refused
-        kernel, status, levels = self.kernel, self.status, self.level_of
+        status, levels = self.status, self.level_of
         builders: dict[str, Callable[[], DataTable]] = {
-            "tools": lambda: tool_table(kernel, status, levels),
-            "wear": lambda: tool_table(kernel, status, levels, wear=True),
-            "wo_active": lambda: active_chain_table(kernel, status),
-            "wo_overview": lambda: overview_table(kernel, status, levels),
-            "wo_details": lambda: details_table(kernel, self.detail_frame, levels),
-            "r": lambda: r_table(kernel, levels),
-            "gud": lambda: gud_table(kernel, levels),
-            "sd": lambda: setting_table(kernel, levels),
+            "tools": lambda: tool_table(data, status, levels),
+            "wear": lambda: tool_table(data, status, levels, wear=True),
+            "wo_active": lambda: active_chain_table(data, status),
+            "wo_overview": lambda: overview_table(data, status, levels),
+            "wo_details": lambda: details_table(data, self.detail_frame, levels),
+            "r": lambda: r_table(data, levels),
+            "gud": lambda: gud_table(data, levels),
+            "sd": lambda: setting_table(data, levels),
         }
         return builders[self.view]()
 

@@ -1,4 +1,4 @@
-"""The tables of the Parameter area, built from the kernel's NC data (read-only).
+"""The tables of the Parameter area, built from the NC data (an :class:`nck.queries.DataView`, read only).
 
 Each ``*_table`` function returns a :class:`~screens.parameter_tables.DataTable`
 whose editable cells name the datum for ``WriteData``: ``$TC_DP<n>[t,d]``,
@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from nck.number_text import fixed, trimmed
+from nck.queries import DataView
 from nck.status import NckStatus
 
 from screens.parameter_tables import Cell, Column, DataTable
@@ -56,19 +57,19 @@ def _datum(name: str, text: str, value: Any, levels: LevelOf, hint: str = "") ->
     return Cell(text, name, edit_text(value), levels(name), hint)
 
 
-def path_axes(nck: Any) -> list[str]:
+def path_axes(view: DataView) -> list[str]:
     """Names of the machine's linear and rotary axes (no spindles)."""
-    return [a.name for a in nck.machine.axes if a.kind != "spindle"]
+    return [a.name for a in view.machine.axes if a.kind != "spindle"]
 
 
-def tool_table(nck: Any, status: NckStatus | None, levels: LevelOf, wear: bool = False) -> DataTable:
+def tool_table(view: DataView, status: NckStatus | None, levels: LevelOf, wear: bool = False) -> DataTable:
     """The tool list (geometry) or tool wear list: one row per cutting edge."""
     fields = TOOL_WEAR if wear else TOOL_GEOMETRY
     columns = [Column("", 1, "<"), Column("T", 6), Column("D", 3), Column("Tool type", 18, "<")]
     columns += [Column(title, width) for _, title, width in fields]
     active = (status.channel.modal.tool, status.channel.modal.edge) if status is not None else (0, 0)
     rows = []
-    for (tool, edge), data in sorted(nck.data.tools.items()):
+    for (tool, edge), data in sorted(view.data.tools.items()):
         kind = int(data.get(1))
         row = [Cell("▶" if (tool, edge) == active else ""), Cell(str(tool)), Cell(str(edge)),
                Cell(TOOL_TYPES.get(kind, f"type {kind}" if kind else "—"))]
@@ -87,12 +88,12 @@ def tool_table(nck: Any, status: NckStatus | None, levels: LevelOf, wear: bool =
     return DataTable(title, columns, rows, note)
 
 
-def frame_names(nck: Any) -> list[str]:
+def frame_names(view: DataView) -> list[str]:
     """The settable frames in the NC data: G54…G57, then G505… in order."""
     def order(name: str) -> int:
         number = int(name[1:])
         return number if number < 100 else number - 400
-    return sorted(nck.data.settable_frames, key=order)
+    return sorted(view.data.settable_frames, key=order)
 
 
 def frame_index(name: str) -> int:
@@ -108,21 +109,21 @@ def frame_var(frame: str, axis: str, comp: str) -> str:
     return f"$P_UIFR[{frame_index(frame)},{axis},{comp}]"
 
 
-def _offset(nck: Any, frame: str) -> Any:
-    return nck.data.base_frame if frame == "BASE" else nck.data.settable_frames.get(frame)
+def _offset(view: DataView, frame: str) -> Any:
+    return view.data.base_frame if frame == "BASE" else view.data.settable_frames.get(frame)
 
 
-def overview_table(nck: Any, status: NckStatus | None, levels: LevelOf) -> DataTable:
+def overview_table(view: DataView, status: NckStatus | None, levels: LevelOf) -> DataTable:
     """Work offsets: base frame and every settable frame, translation and rotation per axis."""
-    axes = path_axes(nck)
+    axes = path_axes(view)
     geometry = [a for a in axes if a in ("X", "Y", "Z")]
     columns = [Column("", 1, "<"), Column("Work offset", 12, "<")]
     columns += [Column(f"{a} [mm]", 11) for a in axes]
     columns += [Column(f"Rot {a} [°]", 10) for a in geometry]
     active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
     rows = []
-    for frame in ["BASE"] + frame_names(nck):
-        offset = _offset(nck, frame)
+    for frame in ["BASE"] + frame_names(view):
+        offset = _offset(view, frame)
         label = "Base frame" if frame == "BASE" else frame
         row = [Cell("▶" if frame == active else ""), Cell(label)]
         for axis in axes:
@@ -138,14 +139,14 @@ def overview_table(nck: Any, status: NckStatus | None, levels: LevelOf) -> DataT
                      columns, rows, "↑↓←→ select   Enter edit   Details: all components of the frame")
 
 
-def details_table(nck: Any, frame: str, levels: LevelOf) -> DataTable:
+def details_table(view: DataView, frame: str, levels: LevelOf) -> DataTable:
     """One frame in full: translation, fine offset, rotation, scale and mirror per axis."""
     label = "Base frame" if frame == "BASE" else frame
-    offset = _offset(nck, frame)
+    offset = _offset(view, frame)
     columns = [Column("Axis", 6, "<"), Column("Translation", 12), Column("Fine", 10),
                Column("Rotation [°]", 13), Column("Scale", 9), Column("Mirror", 7)]
     rows = []
-    for axis in path_axes(nck):
+    for axis in path_axes(view):
         row = [Cell(axis)]
         for comp, title in FRAME_COMPONENTS:
             if comp == "MI":
@@ -164,15 +165,15 @@ def details_table(nck: Any, frame: str, levels: LevelOf) -> DataTable:
                      "Enter edit   Details again / F10: back to the overview")
 
 
-def active_chain_table(nck: Any, status: NckStatus | None) -> DataTable:
+def active_chain_table(view: DataView, status: NckStatus | None) -> DataTable:
     """The active frame chain: base frame, active settable frame, and the total offset."""
-    axes = path_axes(nck)
+    axes = path_axes(view)
     columns = [Column("Frame", 30, "<")] + [Column(f"{a} [mm]", 11) for a in axes]
     active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
     rows = []
-    base = nck.data.base_frame
+    base = view.data.base_frame
     rows.append([Cell("Base frame")] + [Cell(fixed(base.trans.get(a, 0.0))) for a in axes])
-    settable = nck.data.settable_frames.get(active) if active != "G500" else None
+    settable = view.data.settable_frames.get(active) if active != "G500" else None
     label = f"Settable frame {active}" + ("" if settable is not None else " (zero)")
     rows.append([Cell(label)] + [
         Cell(fixed((settable.trans.get(a, 0.0) + settable.fine.get(a, 0.0)) if settable else 0.0))
@@ -187,11 +188,11 @@ def active_chain_table(nck: Any, status: NckStatus | None) -> DataTable:
                      "Rotations, scale and mirror: see Overview / Details")
 
 
-def r_table(nck: Any, levels: LevelOf) -> DataTable:
+def r_table(view: DataView, levels: LevelOf) -> DataTable:
     """The R parameters with their values."""
     columns = [Column("R parameter", 12, "<"), Column("Value", 20)]
     rows = []
-    for index, value in enumerate(nck.data.r):
+    for index, value in enumerate(view.data.r):
         rows.append([Cell(f"R{index}"), _datum(f"R{index}", fixed(value, 5), value, levels,
                                                f"R{index} (REAL)")])
     return DataTable("R variables", columns, rows,
@@ -218,11 +219,11 @@ def _value_text(value: Any) -> str:
     return str(value)
 
 
-def gud_table(nck: Any, levels: LevelOf) -> DataTable:
+def gud_table(view: DataView, levels: LevelOf) -> DataTable:
     """The global user variables (GUD) with their types; arrays one row per element."""
     columns = [Column("Name", 24, "<"), Column("Type", 12, "<"), Column("Value", 24)]
     rows = []
-    for name, value in sorted(nck.data.gud.items()):
+    for name, value in sorted(view.data.gud.items()):
         if isinstance(value, list):
             for index, item in enumerate(value):
                 rows.append([Cell(f"{name}[{index}]"), Cell(f"{_type_name(item)}[{len(value)}]"),
@@ -236,13 +237,13 @@ def gud_table(nck: Any, levels: LevelOf) -> DataTable:
                      columns, rows, "Enter edit   Local user data (LUD) exist only while their program runs")
 
 
-def setting_table(nck: Any, levels: LevelOf) -> DataTable:
+def setting_table(view: DataView, levels: LevelOf) -> DataTable:
     """Setting data: JOG, spindle limits, working area limits with enables, dry run."""
-    store = nck.machine_data
+    store = view.machine_data
     columns = [Column("Group", 10, "<"), Column("Number", 8, "<"), Column("Name", 30, "<"),
                Column("Axis", 5, "<"), Column("Value", 14), Column("Unit", 8, "<")]
-    spindles = [a.name for a in nck.machine.axes if a.kind == "spindle"]
-    linear = [a.name for a in nck.machine.axes if a.kind == "linear"]
+    spindles = [a.name for a in view.machine.axes if a.kind == "spindle"]
+    linear = [a.name for a in view.machine.axes if a.kind == "linear"]
     rows = []
     for group, key, axes_kind in SETTING_DATA:
         definition = store.catalog.get(key)

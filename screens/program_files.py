@@ -18,6 +18,7 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from nck import queries
 from nck.storage import NcFileSystem, StorageError
 
 DIRECTORIES: tuple[tuple[str, str], ...] = (
@@ -51,13 +52,11 @@ def format_modified(modified_ns: int) -> str:
 
 
 def find_file_system(app: Any) -> NcFileSystem | None:
-    """The NC file system of the app's kernel (``nck.programs``), if it has one."""
-    for owner in (app, getattr(getattr(app, "bridge", None), "nck", None)):
-        for attr in ("storage", "nc_files", "programs"):
-            candidate = getattr(owner, attr, None)
-            if isinstance(candidate, NcFileSystem):
-                return candidate
-    return None
+    """The NC file system of the app (its own, else the kernel's program source), if it has one."""
+    bridge = getattr(app, "bridge", None)
+    kernel_source = bridge.query(queries.ProgramSource()) if bridge is not None else None
+    candidates = [getattr(app, attr, None) for attr in ("storage", "nc_files", "programs")] + [kernel_source]
+    return next((candidate for candidate in candidates if isinstance(candidate, NcFileSystem)), None)
 
 
 class ProgramFiles:

@@ -21,6 +21,7 @@ from textual.app import ComposeResult
 from textual.widgets import Input, Static
 
 from nck import commands as cmd
+from nck import queries
 from nck.commands import Accepted
 from nck.status import NckStatus
 
@@ -96,14 +97,14 @@ class SetupScreen(AreaBase):
         self._drawn_key: tuple = ()
 
     @property
-    def kernel(self) -> Any:
-        """The kernel behind the bridge (read-only accessors; writes are commands)."""
-        return self.hmi.bridge.nck
+    def data_view(self) -> queries.DataView:
+        """The machine and its machine data, read through the bridge (writes are commands)."""
+        return self.ask(queries.ReadData())
 
     @property
     def axis(self) -> str:
         """The axis whose axis machine data are listed."""
-        names = [a.name for a in self.kernel.machine.axes]
+        names = [a.name for a in self.data_view.machine.axes]
         return names[self.axis_index % len(names)]
 
     # -- layout -------------------------------------------------------------------------------
@@ -172,7 +173,7 @@ class SetupScreen(AreaBase):
 
     def action_next_axis(self, step: int) -> None:
         """Axis + / Axis −."""
-        self.axis_index = (self.axis_index + int(step)) % max(len(self.kernel.machine.axes), 1)
+        self.axis_index = (self.axis_index + int(step)) % max(len(self.data_view.machine.axes), 1)
         self.cursors["axis"] = TableCursor()
         self.refresh_view()
 
@@ -217,7 +218,7 @@ class SetupScreen(AreaBase):
             self.hmi.set_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
             return
         name = cell.name
-        definition = self.kernel.machine_data.resolve(name).definition
+        definition = self.data_view.machine_data.resolve(name).definition
 
         def write(text: str | None) -> None:
             if text is None:
@@ -240,7 +241,7 @@ class SetupScreen(AreaBase):
 
     def action_new_config(self) -> None:
         """Set MD active (cf): stored machine data of activation cf and re take effect."""
-        store = getattr(self.kernel, "machine_data", None)
+        store = self.data_view.machine_data
         pending = list(store.pending()) if store is not None else []
         if isinstance(self.submit(cmd.ActivateMachineData()), Accepted):
             self.hmi.set_hint("Machine data active" + (f": {', '.join(pending)}" if pending else ""))
@@ -328,13 +329,14 @@ class SetupScreen(AreaBase):
         """Draw the list or the access window."""
         if not self.is_mounted:
             return
-        if not hasattr(self.kernel, "machine_data"):
+        store = self.data_view.machine_data
+        if store is None:
             self.table = DataTable("This kernel offers no machine data", [Column("", 1)], [])
             self.query_one("#setup-table", TableWindow).show(self.table, TableCursor(), self.access_level)
             return
         if self.view in MD_VIEWS:
             axis = self.axis if self.view == "axis" else None
-            self.table = md_table(self.kernel.machine_data, self.view, axis, self.search, self.access_level)
+            self.table = md_table(store, self.view, axis, self.search, self.access_level)
             self.query_one("#setup-table", TableWindow).show(self.table, self.cursors[self.view],
                                                              self.access_level)
         else:
@@ -344,7 +346,7 @@ class SetupScreen(AreaBase):
         """Access level, keyswitch, password state, pending MD, and the control's date and time."""
         status = self.status
         level = status.access_level if status is not None else 7
-        state = getattr(self.kernel, "access_state", None)
+        state = self.ask(queries.AccessStatus())
         keyswitch = status.keyswitch_position if status is not None else None
         if keyswitch is None and state is not None:
             keyswitch = state.keyswitch_position
@@ -365,7 +367,7 @@ class SetupScreen(AreaBase):
             name = LEVEL_NAMES.get(number, "")
             text.append(f"   {number}  {name:<14}{how}\n", style="bold" if number == level else "")
         text.append("\n Machine data\n", style="bold underline")
-        store = getattr(self.kernel, "machine_data", None)
+        store = self.data_view.machine_data
         pending = store.pending() if store is not None else []
         text.append("   Stored, not active     " + (", ".join(pending) if pending else "none") + "\n")
         text.append("\n Date and time of the control\n", style="bold underline")

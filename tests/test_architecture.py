@@ -93,6 +93,31 @@ def test_no_private_names_imported_across_modules_apart_from_the_listed_ones(pro
     assert ratchet_report(private_imports(project_imports), allowed.PRIVATE_IMPORTS, "private import") == []
 
 
+KERNEL_HOLDERS = {"hmi.bridge", "hmi.startup"}
+"""The bridge holds the kernel; startup builds it and hands it to the app (for the bridge)."""
+
+
+def kernel_reads(path: Path) -> list[int]:
+    """Lines of ``path`` that take the attribute ``nck`` of an object (``bridge.nck``, ``getattr(x, "nck")``)."""
+    lines = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Attribute) and node.attr == "nck":
+            lines.append(node.lineno)
+        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in ("getattr", "setattr")
+              and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant) and node.args[1].value == "nck"):
+            lines.append(node.lineno)
+    return sorted(lines)
+
+
+def test_only_the_bridge_touches_the_kernel() -> None:
+    # Screens ask the bridge (bridge.query, bridge.submit); the kernel object stays in the bridge.
+    offenders = {}
+    for module, path in module_files(ROOT, ("hmi", "screens")).items():
+        if module not in KERNEL_HOLDERS and (lines := kernel_reads(path)):
+            offenders[module] = lines
+    assert offenders == {}
+
+
 # --- the checks themselves, on deliberately broken trees -------------------------------------
 
 
@@ -175,6 +200,13 @@ def test_private_names_taken_from_another_module_are_reported(tmp_path: Path) ->
         ("pkg.b", "pkg.a", "_hidden"),
         ("pkg.c", "pkg.a", "_hidden"),
     }
+
+
+def test_a_screen_reaching_past_the_bridge_is_found(tmp_path: Path) -> None:
+    sample = tmp_path / "screen.py"
+    sample.write_text("class S:\n    def f(self):\n        kernel = self.hmi.bridge.nck\n"
+                      "        return getattr(self.app.bridge, 'nck').machine, self.ask(None)\n")
+    assert kernel_reads(sample) == [3, 4]
 
 
 def test_the_ratchet_reports_new_breaks_and_stale_entries() -> None:

@@ -13,7 +13,7 @@ import itertools
 import pytest
 
 from nck import commands as cmd
-from screens import diagnostics_service
+from hmi import utilisation
 from tests.diagnostics.conftest import SIZE, app_on
 from tests.diagnostics.staged import AUTO_LIMIT, CYCLE_ALARM, JOG_LIMIT, StagedKernel, stamped, staged_trace
 
@@ -22,7 +22,7 @@ from tests.diagnostics.staged import AUTO_LIMIT, CYCLE_ALARM, JOG_LIMIT, StagedK
 def fake_clock(monkeypatch: pytest.MonkeyPatch) -> None:
     """Every reading of the wall clock is 1 ms after the previous one."""
     ticks = itertools.count()
-    monkeypatch.setattr(diagnostics_service, "CLOCK", lambda: next(ticks) * 0.001)
+    monkeypatch.setattr(utilisation, "CLOCK", lambda: next(ticks) * 0.001)
 
 
 async def _open(pilot, *keys: str) -> None:

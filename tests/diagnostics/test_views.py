@@ -11,11 +11,14 @@ from hypothesis import given, settings, strategies as st
 from nck.persistence import ALARM_LOG_LIMIT, Session, alarm_entry_from_dict
 from nck.status import AlarmEntry
 from hmi.alarm_times import AlarmTimes
+from hmi import utilisation
+from hmi.bridge import NckBridge
+from hmi.utilisation import UtilisationMeter
 from hmi.widgets.plot import format_value, render_curves, value_range
+from tests.diagnostics.conftest import kernel
 from screens.diagnostics_alarms import (
     LogFilter, alarm_list_rows, clock_text, log_as_csv, log_rows, parse_filter, source_text,
 )
-from screens.diagnostics_service import UtilisationMeter
 
 
 def entry(seq: int, number: int, text: str = "text", **kwargs) -> AlarmEntry:
@@ -89,31 +92,32 @@ def test_retained_alarm_log_is_bounded_oldest_dropped(tmp_path) -> None:
 
 
 def test_utilisation_meter_divides_by_the_cycles_run(monkeypatch) -> None:
-    from screens import diagnostics_service
-
     readings = iter([0.0, 0.010, 1.0, 1.004])
-    monkeypatch.setattr(diagnostics_service, "CLOCK", lambda: next(readings))
+    monkeypatch.setattr(utilisation, "CLOCK", lambda: next(readings))
+    counts = {"cycles": 0, "blocks": 0}
 
-    class Kernel:
-        cycles_done = 0
-        blocks_interpreted = 0
+    def tick(dt_s: float) -> None:
+        counts["cycles"] += round(dt_s / 0.004)
+        counts["blocks"] += 5
 
-        def tick(self, dt_s: float) -> None:
-            self.cycles_done += round(dt_s / 0.004)
-            self.blocks_interpreted += 5
-
-        def step(self, n: int = 1) -> None:
-            self.cycles_done += n
-
-    kernel = Kernel()
     meter = UtilisationMeter()
-    meter.attach(kernel)
-    kernel.tick(0.04)  # 10 cycles in 10 ms
-    kernel.tick(0.016)  # 4 cycles in 4 ms
+    for dt_s in (0.04, 0.016):  # 10 cycles in 10 ms, 4 cycles in 4 ms
+        meter.measure(lambda: tick(dt_s), lambda: (counts["cycles"], counts["blocks"]))
     figures = meter.figures(0.004)
     assert figures["cycle_compute_us"] == pytest.approx(1000.0)
     assert figures["ipo_load_pct"] == pytest.approx(25.0)
     assert figures["blocks_per_s"] == pytest.approx(10 / 0.014)
+
+
+def test_the_bridge_measures_each_ipo_cycle_once() -> None:
+    # Nck.tick runs its cycles through Nck.step: timing both counted every cycle twice.
+    nck = kernel()
+    bridge = NckBridge(nck, realtime=False)
+    for _ in range(10):
+        bridge.advance(0.04)
+    cycles = 10 * round(0.04 / nck.ipo_cycle_s)
+    assert nck.cycles_done == cycles
+    assert bridge.utilisation.figures(nck.ipo_cycle_s)["cycles_measured"] == cycles
 
 
 def test_plot_helpers() -> None:

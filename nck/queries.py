@@ -1,0 +1,197 @@
+"""Read-only questions to the kernel, for clients that must not hold it (the HMI's screens).
+
+A screen asks the HMI bridge, ``bridge.query(AlarmHistory())``; the bridge, the only
+holder of the kernel, answers with :func:`answer`. Each question is a small frozen
+class; its docstring says what the answer is. Writes are never answered here: they
+are commands (``nck.commands``) submitted through the bridge.
+
+The answers are the kernel's own read accessors. :class:`DataView` hands out the live
+configuration and NC data objects for reading (the tables of the Parameter and Setup
+areas are built from them); they are read only, changed only by ``WriteData`` commands.
+A kernel stand-in that lacks an accessor answers "nothing" (an empty tuple, ``None``,
+level 7), as the screens always treated such kernels.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from nck.status import AlarmEntry, AlarmEvent, LogbookEntry
+
+UNPROTECTED_LEVEL = 7
+"""The level a kernel without access control asks for (every function is free)."""
+
+
+@dataclass(frozen=True)
+class AlarmHistory:
+    """The alarm log (raised and cleared alarms, oldest first): ``tuple[AlarmEntry, ...]``."""
+
+
+@dataclass(frozen=True)
+class AlarmLogSince:
+    """The alarm events logged after sequence number ``seq``: ``tuple[AlarmEvent, ...]``."""
+
+    seq: int = 0
+
+
+@dataclass(frozen=True)
+class Logbook:
+    """Access-level and machine-data changes since power on: ``tuple[LogbookEntry, ...]``."""
+
+
+@dataclass(frozen=True)
+class BufferFill:
+    """(blocks in the motion system's look-ahead buffer, its capacity); (0, 0) when unknown."""
+
+
+@dataclass(frozen=True)
+class Counters:
+    """The kernel's IPO cycle and its counters since power on: :class:`KernelCounters`."""
+
+
+@dataclass(frozen=True)
+class KernelCounters:
+    """IPO cycle time and what the kernel has done since power on."""
+
+    ipo_cycle_s: float
+    cycles_done: int
+    blocks_interpreted: int
+
+
+@dataclass(frozen=True)
+class ReadData:
+    """The machine configuration, NC data and machine/setting data, for reading: :class:`DataView`."""
+
+
+@dataclass(frozen=True)
+class DataView:
+    """What the data tables read: ``machine`` (MachineConfig), ``data`` (NcData), ``machine_data``.
+
+    A field is ``None`` when the kernel does not have that part (a stand-in kernel).
+    """
+
+    machine: Any
+    data: Any
+    machine_data: Any
+
+
+@dataclass(frozen=True)
+class AccessStatus:
+    """Keyswitch position and password state (``nck.access.AccessState``); ``None`` when unprotected."""
+
+
+@dataclass(frozen=True)
+class RequiredLevel:
+    """The protection level writing the datum ``name`` needs (7 when unprotected): ``int``."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class ActionLevel:
+    """The protection level the protected function ``action`` (``"EDIT_PROGRAM"``) needs: ``int``."""
+
+    action: str
+
+
+@dataclass(frozen=True)
+class ProgramSource:
+    """The kernel's program source (``read_program``, ``all_programs`` …); ``None`` without one."""
+
+
+@dataclass(frozen=True)
+class ProgramNames:
+    """The part programs the kernel can select: ``list[str]``.
+
+    The main-program paths of its NC file system (``MPF/PART1.MPF``, as the Program
+    manager selects them), else the names its program source lists.
+    """
+
+
+def _reader(nck: Any, name: str) -> Callable[..., Any] | None:
+    reader = getattr(nck, name, None)
+    return reader if callable(reader) else None
+
+
+def _alarm_history(nck: Any, query: AlarmHistory) -> tuple[AlarmEntry, ...]:
+    reader = _reader(nck, "alarm_history")
+    return tuple(reader()) if reader else ()
+
+
+def _alarm_log_since(nck: Any, query: AlarmLogSince) -> tuple[AlarmEvent, ...]:
+    reader = _reader(nck, "alarm_log_since")
+    return tuple(reader(query.seq)) if reader else ()
+
+
+def _logbook(nck: Any, query: Logbook) -> tuple[LogbookEntry, ...]:
+    return tuple(getattr(nck, "logbook", ()) or ())
+
+
+def _buffer_fill(nck: Any, query: BufferFill) -> tuple[int, int]:
+    reader = _reader(nck, "buffer_fill")
+    return reader() if reader else (0, 0)
+
+
+def _counters(nck: Any, query: Counters) -> KernelCounters:
+    return KernelCounters(float(getattr(nck, "ipo_cycle_s", 0.0) or 0.0), int(getattr(nck, "cycles_done", 0)),
+                          int(getattr(nck, "blocks_interpreted", 0)))
+
+
+def _read_data(nck: Any, query: ReadData) -> DataView:
+    return DataView(getattr(nck, "machine", None), getattr(nck, "data", None), getattr(nck, "machine_data", None))
+
+
+def _access_status(nck: Any, query: AccessStatus) -> Any:
+    return getattr(nck, "access_state", None)
+
+
+def _required_level(nck: Any, query: RequiredLevel) -> int:
+    reader = _reader(nck, "required_level")
+    return int(reader(query.name)) if reader else UNPROTECTED_LEVEL
+
+
+def _action_level(nck: Any, query: ActionLevel) -> int:
+    reader = _reader(nck, "action_level")
+    return int(reader(query.action)) if reader else UNPROTECTED_LEVEL
+
+
+def _program_source(nck: Any, query: ProgramSource) -> Any:
+    return getattr(nck, "programs", None)
+
+
+def _program_names(nck: Any, query: ProgramNames) -> list[str]:
+    source = getattr(nck, "programs", None)
+    lister = _reader(source, "all_programs")
+    if lister:
+        return [entry.path for entry in lister() if entry.kind == "MPF"]
+    for holder in (nck, source):
+        lister = _reader(holder, "list_programs")
+        if lister:
+            return [str(name) for name in lister()]
+    return []
+
+
+ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
+    AlarmHistory: _alarm_history,
+    AlarmLogSince: _alarm_log_since,
+    Logbook: _logbook,
+    BufferFill: _buffer_fill,
+    Counters: _counters,
+    ReadData: _read_data,
+    AccessStatus: _access_status,
+    RequiredLevel: _required_level,
+    ActionLevel: _action_level,
+    ProgramSource: _program_source,
+    ProgramNames: _program_names,
+}
+"""Question type -> the function that answers it from a kernel."""
+
+
+def answer(nck: Any, query: object) -> Any:
+    """Answer ``query`` (one of the question classes above) from the kernel ``nck``."""
+    try:
+        handler = ANSWERS[type(query)]
+    except KeyError:
+        raise TypeError(f"not a kernel query: {query!r}") from None
+    return handler(nck, query)
