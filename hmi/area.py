@@ -38,7 +38,7 @@ from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalS
 from hmi.widgets.header import AreaHeader
 
 if TYPE_CHECKING:
-    from hmi.app import HmiApp
+    from hmi.host import AreaHost
 
 
 MIN_TERMINAL_SIZE = (120, 36)
@@ -100,8 +100,8 @@ class AreaBase(BindingsInPlace):
 
     # -- app and kernel access -----------------------------------------------------------
     @property
-    def hmi(self) -> HmiApp:
-        """The application (typed)."""
+    def hmi(self) -> AreaHost:
+        """The application, as far as an area may use it (:class:`hmi.host.AreaHost`)."""
         return self.app  # type: ignore[return-value]
 
     @property

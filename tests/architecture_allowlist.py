@@ -58,13 +58,6 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
 
 CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
     {
-        # circle of 4 modules: hmi.app, hmi.area, hmi.mcp, screens.placeholder
-        ("hmi.app", "hmi.area"),
-        ("hmi.app", "hmi.mcp"),
-        ("hmi.app", "screens.placeholder"),
-        ("hmi.area", "hmi.app"),
-        ("hmi.mcp", "hmi.area"),
-        ("screens.placeholder", "hmi.area"),
         # circle of 2 modules: nck.access, nck.machine_data
         ("nck.access", "nck.machine_data"),
         ("nck.machine_data", "nck.access"),

@@ -1,0 +1,49 @@
+"""What an operating area may ask of the app: the :class:`AreaHost` protocol.
+
+Areas (``hmi.area.AreaBase`` and the screens) see the app only through this
+protocol, so the area layer does not import the app module: the app imports the
+areas, never the other way round.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, Protocol
+
+from nck.commands import SubmitResult
+from nck.status import NckStatus
+
+from hmi.bridge import NckBridge
+from hmi.program_lines import ProgramLines
+
+
+class AreaHost(Protocol):
+    """The app as an area sees it."""
+
+    bridge: NckBridge
+    """The one door to the kernel: ``query`` for reading, ``submit`` for commands."""
+    latest_status: NckStatus | None
+    hint: str
+    single_block_type: str
+    rapid_overlay: bool
+
+    @property
+    def selected_axis(self) -> str | None:
+        """The axis the + / − keys traverse (None when none can be)."""
+
+    def submit(self, command: Any) -> SubmitResult:
+        """Send an operator command through the bridge."""
+
+    def set_hint(self, text: str) -> None:
+        """Write ``text`` on the dialog line of the current area."""
+
+    def power_on_reset(self) -> bool:
+        """Reset (po): restart the kernel on the NC data; False without a data directory."""
+
+    def program_names(self) -> list[str]:
+        """The part programs the kernel can select."""
+
+    def program_text(self, name: str) -> ProgramLines | None:
+        """The lines of a part program, or None."""
+
+    def push_screen(self, screen: Any, callback: Callable[[Any], object] | None = None) -> Any:
+        """Open ``screen`` (a dialog) over the current area."""
