@@ -13,7 +13,9 @@ from textual import events
 from textual.pilot import Pilot
 
 NAMED_CHARACTERS = {"space": " ", "enter": "\r", "tab": "\t", "escape": "\x1b",
-                    "backspace": "\x7f", "minus": "-", "full_stop": ".", "comma": ","}
+                    "backspace": "\x7f", "minus": "-", "full_stop": ".", "comma": ",",
+                    "equals_sign": "=", "left_parenthesis": "(", "right_parenthesis": ")",
+                    "semicolon": ";", "quotation_mark": "\"", "underscore": "_"}
 
 
 def key_event(key: str) -> events.Key:

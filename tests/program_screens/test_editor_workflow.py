@@ -39,6 +39,8 @@ async def test_create_fix_save_select_and_run(data_dir: Path) -> None:
         screen.check_now()
         await settle(pilot)
         assert screen.editor.error_marks == {}
+        # the message about the faulty line went with its cause (issue 18)
+        assert str(screen.query_one("#prog-message").render()) == "no errors found"
         await pilot.press("f4")  # Save
         await pilot.pause()
         saved = (data_dir / "MPF" / "TRAIN1.MPF").read_text()
