@@ -286,8 +286,17 @@ class HmiApp(MachineControlPanel, App):
         Textual would let such a key (Up, Home, Backspace in an editor) bubble back up
         to the app before its binding runs, so that characters typed behind it in the
         same burst were inserted first (issue 18: ``AAA``, Up, ``BBB`` gave ``AAABBB``).
+
+        A key that comes back up to the app has been offered to every binding where it
+        arrived (each screen of the HMI runs them in place, :class:`BindingsInPlace`;
+        the keymap's are priority bindings, run before the key went down). It ends
+        here: Textual would try it again on the focus of the moment, a dialog opened
+        by a later key of the burst (Ctrl+U, Enter on the tool list emptied the new
+        field).
         """
-        if not isinstance(event, events.Key) or event.is_forwarded:
+        if isinstance(event, events.Key) and event.is_forwarded:
+            return
+        if not isinstance(event, events.Key):
             await super().on_event(event)
             return
         focused = self.focused

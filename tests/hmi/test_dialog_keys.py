@@ -56,3 +56,25 @@ async def test_diagnostics_vertical_softkey_right_after_view_key(tmp_path: Path)
         await burst(pilot, "alt+a", "f6", "shift+f1")
         assert app.screen.view == "drive"
         assert app.screen.axis_index == 1
+
+
+async def test_key_the_table_ignores_never_edits_the_dialog_opened_behind_it(tmp_path: Path) -> None:
+    """Backspace or Ctrl+U on the tool list, then Enter, in one burst: the field shows the value.
+
+    The table has no use for Backspace / Ctrl+U; before, such a key travelled back
+    to the app behind the Enter and was run with the bindings of the dialog's field
+    opened meanwhile (seen in tmux: Ctrl+U Enter opened an empty field, Backspace
+    Enter turned 75.5 into 75.).
+    """
+    app = trainer(tmp_path)
+    fill(app)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "alt+o", "right")  # T1 D1 Length 1 (75.5)
+        screen = app.screen
+        for ignored in ("backspace", "ctrl+u", "delete", "end"):
+            await burst(pilot, ignored, "enter")
+            field = app.screen.query_one("Input")
+            assert field.value == "75.5", (ignored, field.value)
+            await burst(pilot, "escape")
+            assert app.screen is screen
+        assert table_cell(app, 0, 5) == "75.500"
