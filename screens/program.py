@@ -143,12 +143,12 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             self._update_read_only()
 
     def _open_requested(self) -> bool:
-        requested = self.files.take_open_request()
+        requested, at_end = self.files.take_open_request() or (None, False)
         if requested is None and self.program is None and self.files.last_program:
             requested = self.files.last_program
         if requested is None or requested == self.program:
             return False
-        self.open_program(requested)
+        self.open_program(requested, at_end=at_end)
         return True
 
     @property
@@ -210,10 +210,13 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         return False
 
     # -- opening and closing -----------------------------------------------------------------
-    def open_program(self, program: str, *, text: str | None = None, offer_journal: bool = True) -> bool:
+    def open_program(self, program: str, *, text: str | None = None, offer_journal: bool = True,
+                     at_end: bool = False) -> bool:
         """Show ``program`` in the editor (read from the NC file system unless ``text`` is given).
 
-        Returns False (with a message) when it cannot be read.
+        The cursor starts on the first line, or with ``at_end`` behind the text (a new
+        program: what the operator types goes below its header line). Returns False
+        (with a message) when it cannot be read.
         """
         if self.program is not None and self.program != program and self.is_modified():
             self.journal_now()
@@ -234,6 +237,8 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         editor = self.editor
         self._loading = True  # the Changed message of load_text is not an edit
         editor.load_text(decoded)
+        if at_end:
+            editor.move_cursor(editor.document.end)
         editor.set_error_marks([])
         self._update_read_only()
         if binary:

@@ -70,6 +70,8 @@ class ProgramFiles:
         self.fs = fs
         self.last_program: str | None = None
         self.pending_open: str | None = None
+        self.pending_at_end = False
+        """The requested program opens with the cursor at its end (a new program: behind its header)."""
 
     @classmethod
     def of_app(cls, app: Any) -> ProgramFiles:
@@ -98,14 +100,15 @@ class ProgramFiles:
         """The storage's canonical path of a program."""
         return self.fs.canonical(path)
 
-    def request_open(self, path: str) -> None:
-        """Ask the editor to open ``path`` when it is shown next (Program manager → Open)."""
+    def request_open(self, path: str, *, at_end: bool = False) -> None:
+        """Ask the editor to open ``path`` when it is shown next (Program manager → Open, New)."""
         self.pending_open = path
+        self.pending_at_end = at_end
 
-    def take_open_request(self) -> str | None:
-        """The program the editor should open now (a request is taken once), else None."""
+    def take_open_request(self) -> tuple[str, bool] | None:
+        """The program the editor should open now and whether at its end (taken once), else None."""
         pending, self.pending_open = self.pending_open, None
-        return pending
+        return None if pending is None else (pending, self.pending_at_end)
 
     def program_source(self, context: str | None = None) -> Any:
         """A ProgramSource for subprogram calls of ``context`` during checks and simulation."""

@@ -400,7 +400,7 @@ class ProgramManagerScreen(AreaBase):
             self.refresh_listing(select=path)
             self.say(f"{path} created")
             if not path.endswith(".WPD"):
-                self.files.request_open(path)
+                self.files.request_open(path, at_end=True)
                 self.perform("app.switch_area('program')")
 
         self.app.push_screen(PromptDialog(f"New {kind} in {directory}: name", ""), create)

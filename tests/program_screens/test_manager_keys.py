@@ -59,3 +59,17 @@ async def test_program_path_shown_the_same_from_manager_and_from_f7(data_dir: Pa
         header_dialog = str(app.screen.query_one("#hdr-program").render()).strip()
         assert from_manager == from_dialog
         assert header_manager == header_dialog
+
+
+async def test_text_typed_after_new_goes_below_the_header(data_dir: Path) -> None:
+    """F2 New, name, Enter and the first blocks in one burst: the blocks follow the header line.
+
+    Seen in tmux: the editor opened with the cursor on line 1, so the blocks were typed
+    in front of ``; TRAIN.MPF`` and the header ended up behind the last block.
+    """
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "f2", *"train", "enter", *"G0 X1", "enter", *"M30")
+        await settle(pilot)
+        assert app.screen.program == "MPF/TRAIN.MPF"
+        assert app.screen.editor.text == "; TRAIN.MPF\nG0 X1\nM30"

@@ -35,7 +35,7 @@ def test_open_request_is_taken_once(tmp_path: Path) -> None:
     """The manager's Open request reaches the editor exactly once."""
     files = ProgramFiles(NcFileSystem(tmp_path / "nc"))
     files.request_open("MPF/A_B.MPF")
-    assert files.take_open_request() == "MPF/A_B.MPF"
+    assert files.take_open_request() == ("MPF/A_B.MPF", False)
     assert files.take_open_request() is None
 
 
