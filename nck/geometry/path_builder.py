@@ -361,9 +361,10 @@ class PathBuilder:
         one plane coordinate and the angle to the abscissa fix the end point; the other
         coordinate is computed into ``end``. Returns the plane axes now programmed.
 
-        The two- and three-line forms (``ANG`` without a plane coordinate, or with both) need
-        the next block to find the corner: not modelled, refused with 12550. A coordinate the
-        angle cannot reach (parallel, or behind the start) is 12560.
+        The two- and three-line forms (``ANG`` without a plane coordinate, then a block with
+        both and its own ``ANG``) are joined by the motion builder (:meth:`two_line_corner`);
+        here both coordinates with ``ANG`` are 12550. A coordinate the angle cannot reach
+        (parallel, or behind the start) is 12560.
         """
         a, o = pl.abscissa, pl.ordinate
         given = [axis for axis in (a, o) if axis in words.axes]
@@ -379,6 +380,34 @@ class PathBuilder:
         length = delta / along
         end[other] = start.get(other, 0.0) + length * direction[1 - index]
         return {a, o}
+
+    def two_line_corner(self, first_angle_deg: float, words: Any, modal: Any, geo: GeometryState) -> dict[str, float]:
+        """The corner of a two-line contour definition (000 L4133-4155): the line from the
+        current point at ``first_angle_deg`` meets the line that ends at this block's plane
+        point at its ``ANG=``. Returns the corner in program units (absolute WCS).
+
+        Raises:
+            NcAlarmError: 12560 when the lines are parallel or meet behind the start or
+                beyond the end (no valid intermediate point, 000 L4073).
+        """
+        units = self.units(modal)
+        pl = self.plane(modal)
+        a, o = pl.abscissa, pl.ordinate
+        start = dict(geo.wcs_mm)
+        end, _ = self._targets(words, modal, geo, units, pl)
+        first = (math.cos(math.radians(first_angle_deg)), math.sin(math.radians(first_angle_deg)))
+        second_deg = float(words.words["ANG"])
+        second = (math.cos(math.radians(second_deg)), math.sin(math.radians(second_deg)))
+        span = (end[a] - start.get(a, 0.0), end[o] - start.get(o, 0.0))
+        det = first[0] * second[1] - second[0] * first[1]
+        if abs(det) < 1e-12:
+            raise NcAlarmError(ALARM_VALUE_OUTSIDE, "ANG")
+        along_first = (span[0] * second[1] - second[0] * span[1]) / det
+        along_second = (first[0] * span[1] - first[1] * span[0]) / det
+        if along_first < -1e-9 or along_second < -1e-9:
+            raise NcAlarmError(ALARM_VALUE_OUTSIDE, "ANG")
+        corner_mm = {a: start.get(a, 0.0) + along_first * first[0], o: start.get(o, 0.0) + along_first * first[1]}
+        return {axis: self.from_mm(axis, value, modal, units) for axis, value in corner_mm.items()}
 
     def _rotary_target(self, axis: str, current: float, value: float, mode: str) -> float:
         """``DC`` (shortest way), ``ACP`` (positive), ``ACN`` (negative) to an absolute angle.

@@ -59,6 +59,9 @@ class GeometryState:
         accel_pct: ACC[axis] acceleration factors in percent (002 L7433-7450), axes not at 100;
             reduced to 100 by RESET/M30 (MD32320 bit 0 = 0, the only setting modelled).
         loaded: False after RESET: settable and basic frame are read again from the NC data.
+        contour_first: the first block of a two-line contour definition (``ANG=`` without a
+            plane axis) as (angle in degrees, plane code, the block's words), waiting for the
+            block that ends the contour; None otherwise.
     """
 
     frames: FrameChain = field(default_factory=FrameChain)
@@ -78,6 +81,7 @@ class GeometryState:
     feed_override_pct: float = 100.0
     accel_pct: dict[str, float] = field(default_factory=dict)
     loaded: bool = False
+    contour_first: tuple[float, str, Any] | None = None
 
     def __deepcopy__(self, memo: dict) -> "GeometryState":
         """Snapshots before each block: frames, pole and elements are immutable and shared."""
@@ -107,3 +111,4 @@ class GeometryState:
         self.feed_override_pct = 100.0
         self.accel_pct = {}
         self.loaded = False
+        self.contour_first = None

@@ -155,21 +155,21 @@ class MotionBuilder:
     def _geometry(self, words: BlockWords, modal: ModalState, geo: GeometryState,
                   src: canon.Source) -> tuple[list[canon.CanonCommand], list[canon.CanonCommand]]:
         """The path part of a block: (motions of earlier blocks released now, its own motions)."""
+        released: list[canon.CanonCommand] = []
+        own: list[canon.CanonCommand] = []
+        if geo.contour_first is not None:
+            words = self._second_of_two_lines(geo.contour_first, words, modal, geo, released, own)
         if words.gcodes.get(3) is not None:
             flushed: list[canon.CanonCommand] = list(self.path.frame_block(words, modal, geo))
             return flushed, []
         if self.path.has_path_words(words, modal):
-            feed = self._feed_info(modal, geo)
-            motions = self.path.motion(words, modal, geo, feed)
-            motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
-            earlier, motions = trc_canon.split_released(motions, src)
-            own: list[canon.CanonCommand] = list(motions)
-            if modal.gcodes.get(15) == "G96" and motions:
-                self._constant_cutting_speed(modal, geo, own, src)
-            released: list[canon.CanonCommand] = list(earlier)
-            return released, own
-        if "ANG" in words.words:  # first block of a two-line contour definition: not modelled
-            raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
+            earlier, motions = self._path_motion(words, modal, geo)
+            return released + earlier, own + motions
+        if "ANG" in words.words:  # first block of a two-line contour definition (000 L4133-4155)
+            if modal.gcodes.get(1) not in ("G0", "G1"):
+                raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
+            geo.contour_first = (float(words.words["ANG"]), self.path.plane(modal).code, words)
+            return [], []
         if any(k in words.words for k in ("CHF", "CHR", "RND")):
             raise NcAlarmError(10882)
         if "RNDM" in words.words:
@@ -180,6 +180,41 @@ class MotionBuilder:
             return [], []
         released = list(trc_canon.process([], modal, self.path, self.data, self.machine, src))
         return released, []
+
+    def _path_motion(self, words: BlockWords, modal: ModalState, geo: GeometryState
+                     ) -> tuple[list[canon.CanonCommand], list[canon.CanonCommand]]:
+        """(motions of earlier blocks released now, the block's own motions) of a path block."""
+        src = words.source
+        feed = self._feed_info(modal, geo)
+        motions = self.path.motion(words, modal, geo, feed)
+        motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
+        earlier, motions = trc_canon.split_released(motions, src)
+        own: list[canon.CanonCommand] = list(motions)
+        if modal.gcodes.get(15) == "G96" and motions:
+            self._constant_cutting_speed(modal, geo, own, src)
+        return list(earlier), own
+
+    def _second_of_two_lines(self, first_block: tuple[float, str, BlockWords], words: BlockWords,
+                             modal: ModalState, geo: GeometryState, released: list[canon.CanonCommand],
+                             own: list[canon.CanonCommand]) -> BlockWords:
+        """The block after ``ANG=`` without a plane axis ends a two-line contour (000 L4133-4155):
+        both plane axes and its own ``ANG=``, in the same plane. The first line runs to the
+        corner of the two lines (with its chamfer or rounding; its commands go to ``released``
+        and ``own``); returns this block's words without ``ANG``. Anything else is 12550
+        (000 L4066, L4075, L4079-4080)."""
+        angle_deg, plane_code, first = first_block
+        geo.contour_first = None
+        plane = self.path.plane(modal)
+        if ("ANG" not in words.words or not {plane.abscissa, plane.ordinate} <= set(words.axes)
+                or plane.code != plane_code or modal.gcodes.get(1) not in ("G0", "G1")):
+            raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
+        corner = self.path.two_line_corner(angle_deg, words, modal, geo)
+        first_line = replace(first, axes={**first.axes, **{axis: (v, "AC") for axis, v in corner.items()}},
+                             words={k: v for k, v in first.words.items() if k != "ANG"})
+        earlier, motions = self._path_motion(first_line, modal, geo)
+        released.extend(earlier)
+        own.extend(motions)
+        return replace(words, words={k: v for k, v in words.words.items() if k != "ANG"})
 
     def _place_outputs(self, outputs: list[canon.CanonCommand], own: list[canon.CanonCommand],
                        src: canon.Source) -> list[canon.CanonCommand]:
@@ -239,7 +274,14 @@ class MotionBuilder:
                 setattr(geo, attribute, value)
 
     def flush(self, modal: ModalState) -> list[canon.CanonCommand]:
-        """Emit a motion held back for a chamfer/rounding (program stop or end reached)."""
+        """Emit a motion held back for a chamfer/rounding (program stop or end reached).
+
+        A two-line contour still waiting for its second block cannot end here (000 L4075).
+        """
+        geo = getattr(modal, "geometry", None)
+        if geo is not None and geo.contour_first is not None:
+            geo.contour_first = None
+            raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
         held = list(self.path.flush(modal))
         if held:
             held = trc_canon.process(held, modal, self.path, self.data, self.machine)
