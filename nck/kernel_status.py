@@ -175,6 +175,9 @@ class StatusView:
                 name=name, kind="spindle", position_mcs=angle, position_wcs=angle, referenced=True,
                 setpoint_mcs=angle, velocity=float(state.actual_rpm), speed_rpm=float(state.actual_rpm),
                 extra={"setpoint_rpm": float(getattr(state, "setpoint_rpm", 0.0)),
+                       # DB31 DBX83.1 / 83.2 as flags 1.0 / 0.0: the setpoint was clamped / raised
+                       "setpoint_limited": float(bool(getattr(state, "setpoint_limited", False))),
+                       "setpoint_increased": float(bool(getattr(state, "setpoint_increased", False))),
                        "override_pct": float(getattr(state, "override_pct", 100.0)),
                        "torque_nm": float(getattr(state, "torque_nm", 0.0)),
                        "motor_temperature_c": float(getattr(state, "temperature_c", 0.0))},

@@ -43,6 +43,12 @@ def tfs_lines(status: NckStatus) -> Text:
         text.append(f"{fixed(spindle.speed_rpm, 0, 10)} / {fixed(modal.spindle_speed_rpm, 0, 10)} rpm   ")
         text.append(f"{modal.spindle_state:<3}")
         text.append(f"  {format_override(overrides.get('spindle', 100)):>3} %\n")
+        # A speed limit acting on the setpoint is said, not hidden (DB31 DBX83.1 "setpoint
+        # speed limited" / DBX83.2 "setpoint speed increased", 002 L54541-54543).
+        if spindle.extra.get("setpoint_limited"):
+            text.append("    setpoint speed limited\n", style="bold #f39200")
+        elif spindle.extra.get("setpoint_increased"):
+            text.append("    setpoint speed increased\n", style="bold #f39200")
     return text
 
 
@@ -55,7 +61,8 @@ class TfsWindow(Static):
 
     def show(self, status: NckStatus) -> None:
         """Redraw only when the shown values changed."""
-        spindle = tuple(a.speed_rpm for a in status.axes if a.kind == "spindle")
+        spindle = tuple((a.speed_rpm, a.extra.get("setpoint_limited"), a.extra.get("setpoint_increased"))
+                        for a in status.axes if a.kind == "spindle")
         key = (status.channel.modal, status.channel.path_feed_mm_min,
                tuple(status.channel.overrides.items()), spindle)
         if key == self._key:

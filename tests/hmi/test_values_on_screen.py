@@ -131,3 +131,28 @@ async def test_tfs_window_shows_a_tool_waiting_for_m6() -> None:
         await pilot.pause()
         first, second = str(app.screen.query_one("#tfs").render()).splitlines()[:2]
         assert first.split() == ["T1", "D1"] and second.split()[1] == "120.000"
+
+
+async def test_tfs_window_says_when_a_speed_limit_clamps_the_spindle() -> None:
+    """MDA `G26 S500` then `S1000 M3`: G26 is never exceeded (002 L55616-55621), the spindle
+    turns at 500 and the T,F,S window says "setpoint speed limited" (DB31 DBX83.1, 002
+    L54541-54543) instead of clamping silently; `S400` lifts the message."""
+    from nck.kernel import Nck
+    from nck.interp.sources import MemorySource
+
+    nck = Nck(programs=MemorySource({}), referenced=True)
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+d", *"G26 S500", "enter", *"S1000 M3", "alt+g")
+        app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=10)
+        app.bridge.advance(3.0)
+        await pilot.pause()
+        lines = str(app.screen.query_one("#tfs").render()).splitlines()
+        s_line = next(i for i, line in enumerate(lines) if line.split()[:1] == ["S1"])
+        assert lines[s_line].split()[:5] == ["S1", "500", "/", "1000", "rpm"]
+        assert lines[s_line + 1].strip() == "setpoint speed limited"
+        await pilot.press("shift+f1", *"S400", "alt+g")
+        app.bridge.run_until(lambda s: s.channel.channel_state == "reset", max_s=10)
+        app.bridge.advance(3.0)
+        await pilot.pause()
+        assert "limited" not in str(app.screen.query_one("#tfs").render())

@@ -267,3 +267,19 @@ def test_mda_block_leaves_the_spindle_turning_for_the_next_block(factory) -> Non
     nck.submit(c.CycleStart())
     nck.tick(1.0)
     assert spindle_view(nck) == ("M3", 0.0, 0)
+
+
+def test_a_fresh_data_directory_does_not_clamp_a_normal_spindle_speed(tmp_path, factory) -> None:  # noqa: F811
+    """SD43220 SPIND_MAX_VELO_G26 is the programmed limit G26 (002 L55616-55621); its default
+    must not lie below what the machine can do, or `S1150 M3` runs at 1000 on a fresh data
+    directory but at 1150 headless. The mill's gear stage allows 8000 (MD35130)."""
+    from nck.persistence import Session
+
+    session = Session.open(tmp_path / "data")
+    nck = Nck(**{**session.kernel_arguments(), "programs": MemorySource({"P.MPF": "N10 S1150 M3\nN20 M0\nN30 M30"})},
+              referenced=True, motion_factory=factory)
+    start(nck)
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)
+    nck.tick(2.0)
+    assert spindle_view(nck) == ("M3", 1150.0, 1150)
+    nck.submit(c.Reset())
