@@ -157,10 +157,11 @@ class AreaBase(BindingsInPlace):
         if key is None:
             return False
         if not key.allowed(self, self.access_level):
+            # the area's message: an accepted command (the keyswitch turned) clears it
             if self.access_level > key.level:
-                self.show_hint(f"{key.label.replace(chr(10), ' ')}: needs access level {key.level}")
+                self.say(f"{key.label.replace(chr(10), ' ')}: needs access level {key.level}")
             else:
-                self.show_hint(f"{key.label.replace(chr(10), ' ')}: not possible in this state")
+                self.say(f"{key.label.replace(chr(10), ' ')}: not possible in this state")
             return False
         try:
             self.perform(key.action)

@@ -33,3 +33,17 @@ async def test_refusal_in_tool_list_leaves_with_its_view_and_stays_in_its_area(t
         assert "$TC_DP6" in dialog_line(app)  # still the tool list's
         await burst(pilot, "f3")  # work offsets: the cause is not on screen any more
         assert "$TC_DP6" not in dialog_line(app)
+
+
+async def test_refused_softkey_message_goes_when_the_keyswitch_gives_the_level(tmp_path: Path) -> None:
+    """'New tool: needs access level 4' goes once the keyswitch is turned to level 4.
+
+    Seen in tmux: the refusal stayed on the dialog line while the New tool dialog,
+    opened at level 4 in the same burst, was already on screen.
+    """
+    app = trainer(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+o", "shift+f1")
+        assert "needs access level 4" in dialog_line(app)
+        await burst(pilot, "alt+t", "alt+t", "alt+t")
+        assert "needs access level" not in dialog_line(app)
