@@ -117,6 +117,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         self._ipo_s = self._ipo_cycle_s()
         self._sit = ChannelSituation()
         self._machine_function: str | None = None
+        self._inc_waiting_for_jog = False  # INC was active when JOG was left for MDA
         self._increment: int | None = 1
         self._owner: str | None = None  # mode whose program is stopped/interrupted
         self._run: ProgramRun | None = None
@@ -346,9 +347,17 @@ class Nck(ManualControl, ControlSettings, StatusView):
             self._jog_rest.clear()
         self._sit = new
         if mode == "AUTO":
+            # Selecting AUTOMATIC disables the INC keys (002 L17738-17739).
             self._machine_function = None
+            self._inc_waiting_for_jog = False
         elif mode == "MDA" and self._machine_function == "INC":
+            # MDA has no INC (002 L17597-17601); the selection waits for JOG (our choice).
             self._machine_function = None
+            self._inc_waiting_for_jog = True
+        elif mode == "JOG" and self._inc_waiting_for_jog:
+            if self._machine_function is None:
+                self._machine_function = "INC"
+            self._inc_waiting_for_jog = False
         return Accepted()
 
     def _cycle_start(self, command: cmd.CycleStart) -> SubmitResult:

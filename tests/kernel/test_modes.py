@@ -290,3 +290,26 @@ def test_power_on_status_shows_the_reset_g_codes() -> None:
 
     gcodes = Nck().status().channel.modal.gcodes
     assert gcodes[6] == "G17" and gcodes[8] == "G500" and gcodes[14] == "G90" and gcodes[15] == "G94"
+
+
+def test_jog_inc_survives_a_visit_to_mda_but_not_automatic() -> None:
+    """INC 100 in JOG, MDA, back to JOG: still INC 100, one + press moves X by 0.1 mm. MDA
+    offers no INC of its own (its machine functions are REF, REPOS, TEACH IN, 002
+    L17591-17601), so the selection waits for the return to JOG (our choice where the manual
+    is silent). Selecting AUTOMATIC disables the INC keys: they must be pressed again (002
+    L17738-17739)."""
+    nck = make_nck({"P": "M30"})
+    nck.submit(c.SelectMode("JOG"))
+    assert nck.submit(c.SelectIncrement(100)) == c.Accepted()
+    nck.submit(c.SelectMode("MDA"))
+    assert nck.status().channel.machine_function is None
+    nck.submit(c.SelectMode("JOG"))
+    channel = nck.status().channel
+    assert (channel.machine_function, channel.increment) == ("INC", 100)
+    nck.submit(c.Jog("X", 1))
+    nck.tick(1.0)
+    nck.submit(c.Jog("X", 0))
+    assert x(nck) == pytest.approx(0.1)
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectMode("JOG"))
+    assert nck.status().channel.machine_function is None
