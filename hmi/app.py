@@ -502,13 +502,22 @@ class HmiApp(MachineControlPanel, App):
         self.submit(cmd.CancelAlarms())
 
     def _quit_on_termination(self) -> None:
-        """SIGTERM/SIGHUP while running: quit as Ctrl+Q does (save, remove a temporary copy)."""
+        """SIGTERM/SIGHUP while running: quit at once (:meth:`quit_on_signal`)."""
         loop = asyncio.get_running_loop()
         for number in TERMINATION_SIGNALS:
             try:
-                loop.add_signal_handler(number, self.action_quit_hmi)
+                loop.add_signal_handler(number, self.quit_on_signal)
             except (NotImplementedError, RuntimeError, ValueError):  # no signals here (Windows, thread)
                 return
+
+    def quit_on_signal(self) -> None:
+        """Terminated (SIGTERM, or SIGHUP: the terminal is gone): save and leave without asking.
+
+        Nobody can answer Ctrl+Q's question any more: asked with a program interrupted,
+        it kept the HMI running without a terminal (found after ``tmux kill-session``).
+        Unsaved editor text goes into the journal as on every quit.
+        """
+        self.quit_now()
 
     def quit_concerns(self) -> list[str]:
         """What quitting now would interrupt or leave unsaved (empty: quit without asking)."""

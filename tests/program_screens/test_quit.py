@@ -69,6 +69,24 @@ async def test_quit_with_interrupted_program_asks(data_dir: Path) -> None:
         assert app.is_running and type(app.screen).__name__ != "ConfirmDialog"
 
 
+async def test_termination_with_interrupted_program_quits_without_asking(data_dir: Path) -> None:
+    """SIGTERM/SIGHUP (the terminal gone) with a program interrupted: no question nobody can answer.
+
+    Found after ``tmux kill-session``: the HMI asked its Ctrl+Q question and kept running.
+    """
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        for command in (cmd.SelectMode("AUTO"), cmd.SelectProgram("MPF/DEMO.MPF"), cmd.CycleStart()):
+            app.submit(command)
+        app.bridge.advance(0.2)
+        app.submit(cmd.CycleStop())
+        app.bridge.advance(0.1)
+        assert app.quit_concerns()
+        app.quit_on_signal()
+        await pilot.pause()
+        assert app.return_code == 0  # ended, nothing asked
+
+
 async def test_journal_write_failure_at_quit_is_reported_and_the_hmi_stays(
         data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The journal cannot be written at quit: the HMI does not quit and says why."""
