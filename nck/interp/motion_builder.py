@@ -220,8 +220,8 @@ class MotionBuilder:
                        src: canon.Source) -> list[canon.CanonCommand]:
         """Outputs before/during the motion ahead of it, outputs at block end behind it
         (002 L14590-14598). An output before the motion, or any output of a block without
-        path motion, first ends the previous block with exact stop (002 L4797-4809). An output at block end ends the block's own
-        motion at interpolator end."""
+        path motion, first ends the previous block with exact stop (002 L4797-4809); an
+        output at block end ends the block's own motion at interpolator end."""
         if not outputs:
             return own
         timings = [self._timing(command) for command in outputs]
