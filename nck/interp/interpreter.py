@@ -252,9 +252,6 @@ class Interpreter:
         except RecursionError:
             self._rollback(saved)
             raise self._locate(NcAlarmError(12540)) from None
-        except (ArithmeticError, ValueError, TypeError) as exc:
-            self._rollback(saved)
-            raise self._locate(NcAlarmError(14051, type(exc).__name__)) from None
         self._state.blocks += 1
         return result
 
