@@ -14,6 +14,8 @@ Any character that cannot start a token raises alarm 12080 (syntax error).
 
 from __future__ import annotations
 
+import math
+
 import re
 from dataclasses import dataclass
 
@@ -84,6 +86,8 @@ def _read_number(text: str, pos: int) -> tuple[int, float | int]:
         raise NcAlarmError(12160, mantissa[:20])
     if is_real:
         value: float | int = float(f"{mantissa}e{exponent}")
+        if math.isinf(value):  # beyond the REAL range (1EX400): value range exceeded, as a long exponent
+            raise NcAlarmError(12160, text[start:pos])
     else:
         value = int(mantissa)
     return pos, value
