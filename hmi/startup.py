@@ -53,10 +53,12 @@ class NcDataSession:
                 nck.submit(cmd.WriteData(f"$AC_{key}", int(data.part_counters[key])))
         if data.mda_program:
             nck.submit(cmd.SetMdaProgram(data.mda_program))
+        for switch, percent in data.override_switches.items():  # a switch stays where it was turned
+            nck.submit(cmd.SetOverride(switch, percent))
         return nck
 
     def _collect(self) -> None:
-        """Copy what the kernel keeps itself (part counters, MDA buffer) into the NC data."""
+        """Copy what the kernel keeps itself (part counters, MDA buffer, override switches) into the NC data."""
         channel = self.nck.status().channel
         data = self.session.ncdata
         data.part_counters = {
@@ -64,6 +66,7 @@ class NcDataSession:
             "ACTUAL_PARTS": int(channel.part_count), "SPECIAL_PARTS": int(channel.parts_special),
         }
         data.mda_program = channel.mda_text
+        data.override_switches = {switch: float(percent) for switch, percent in channel.overrides.items()}
 
     def save(self) -> list[str]:
         """Write the retained sections that changed (alarm log included); return their names."""

@@ -71,6 +71,9 @@ class NcData:
     part_counters: dict[str, int] = field(default_factory=dict)
     # The MDA buffer (kept until deleted, also over power off/on).
     mda_program: str = ""
+    # Positions of the machine control panel's override switches in % by switch (feed, rapid,
+    # spindle). A switch stays where it was turned, over power off/on, like the keyswitch.
+    override_switches: dict[str, float] = field(default_factory=dict)
 
     def edge(self, tool: int, edge: int) -> ToolEdge | None:
         """Return the cutting edge ``D<edge>`` of tool ``T<tool>``, if it exists."""

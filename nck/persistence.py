@@ -13,6 +13,7 @@ that a damaged file costs only that section:
 ``access``         keyswitch position, active password level, password hashes
 ``counters``       workpiece counters
 ``mda``            the MDA buffer
+``panel``          positions of the override switches of the machine control panel
 ``alarm_log``      the alarm log (bounded)
 =================  ==========================================================
 
@@ -315,6 +316,27 @@ def _load_mda(data: Mapping[str, Any], rd: RetainedData) -> None:
     rd.ncdata.mda_program = data["text"]
 
 
+OVERRIDE_SWITCH_RANGES = {"feed": (0.0, 200.0), "rapid": (0.0, 100.0), "spindle": (0.0, 200.0)}
+"""Positions an override switch can stand at, in % (002 L56312-56319)."""
+
+
+def _dump_panel(rd: RetainedData) -> dict[str, Any]:
+    return {"override_switches": dict(rd.ncdata.override_switches)}
+
+
+def _load_panel(data: Mapping[str, Any], rd: RetainedData) -> None:
+    switches = {}
+    for name, value in _mapping(data["override_switches"]).items():
+        if name not in OVERRIDE_SWITCH_RANGES:
+            raise ValueError(f"no override switch {name!r}")
+        low, high = OVERRIDE_SWITCH_RANGES[name]
+        percent = _number(value)
+        if not low <= percent <= high:
+            raise ValueError(f"the {name} override switch cannot stand at {percent:g} %")
+        switches[name] = percent
+    rd.ncdata.override_switches = switches
+
+
 def _dump_alarm_log(rd: RetainedData) -> dict[str, Any]:
     return {"entries": _plain(rd.alarm_log[-ALARM_LOG_LIMIT:])}
 
@@ -340,6 +362,7 @@ SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, Ret
     "access": (_dump_access, _load_access),
     "counters": (_dump_counters, _load_counters),
     "mda": (_dump_mda, _load_mda),
+    "panel": (_dump_panel, _load_panel),
     "alarm_log": (_dump_alarm_log, _load_alarm_log),
 }
 
@@ -643,7 +666,7 @@ class Session:
         if ("access" in names and scratch.access.to_json() != self.retained.access.to_json()
                 and level > min(PASSWORD_LEVELS)):
             raise AccessDenied("importing the passwords", min(PASSWORD_LEVELS), level)
-        for name in ("counters", "mda"):  # kept by the kernel, not protected data
+        for name in ("counters", "mda", "panel"):  # kept by the kernel, not protected data
             if name in names:
                 SECTIONS[name][1](SECTIONS[name][0](scratch), result)
         if not result.md_by_machine[machine]:

@@ -46,6 +46,7 @@ def make_template() -> Path:
         data.gud["COUNT"] = generation
         data.part_counters = {"TOTAL_PARTS": 10 * generation}
         data.mda_program = f"G0 X{generation}\n"
+        data.override_switches = {"feed": 10.0 * generation}
         data.setting_data["SD42100"] = 100.0 * generation
         session.retained.access.keyswitch_position = generation
         session.md.write("MD32000[X]", 5000.0 + generation, level=1)
@@ -172,6 +173,13 @@ CORPUS: tuple[Hostile, ...] = (
     Hostile("alarm time as text", "alarm_log", _edit(_set_alarm_field("came_s", "noon"))),
     Hostile("counter as text", "counters", _edit(lambda d: d["part_counters"].__setitem__("TOTAL_PARTS", "x"))),
     Hostile("MDA text as a number", "mda", _edit(lambda d: d.__setitem__("text", 5))),
+    Hostile("override switch as text", "panel", _edit(lambda d: d["override_switches"].__setitem__("feed", "50"))),
+    Hostile("override switch of no such name", "panel",
+            _edit(lambda d: d["override_switches"].__setitem__("coolant", 50.0))),
+    Hostile("feed override switch beyond 200 %", "panel",
+            _edit(lambda d: d["override_switches"].__setitem__("feed", 250.0))),
+    Hostile("rapid override switch beyond 100 %", "panel",
+            _edit(lambda d: d["override_switches"].__setitem__("rapid", 150.0))),
     Hostile("mirror flag as text", "work_offsets", _edit(lambda d: d["base"].__setitem__("mirror", {"X": "yes"}))),
     Hostile("keyswitch as text", "access", _edit(lambda d: d.__setitem__("keyswitch_position", "3"))),
     Hostile("data as a list", "counters", _edit(lambda d: d.clear())),
@@ -337,6 +345,7 @@ GENERATION: dict[str, Callable[[Session], Any]] = {
     "access": lambda s: s.retained.access.keyswitch_position,
     "counters": lambda s: s.ncdata.part_counters["TOTAL_PARTS"] / 10,
     "mda": lambda s: int(s.ncdata.mda_program.split("X")[1]),
+    "panel": lambda s: s.ncdata.override_switches["feed"] / 10.0,
     "alarm_log": lambda s: {e["number"] for e in s.alarm_log} & {14001, 14002} == {14001} and 1,
 }
 """Which saved generation a section of a session holds (the backup holds 1, the main file 2)."""
