@@ -145,6 +145,8 @@ class ControlSettings(DataWrites):
                 self._raise_number(ALARM_PASSWORD_REFUSED, failed, delay)
             return Rejected(str(error) or "Password not accepted", alarm=ALARM_PASSWORD_REFUSED
                             if failed > failed_before else None)
+        # the refusal and its waiting time are over: the alarm goes (the log keeps it)
+        self.alarms.clear_number(ALARM_PASSWORD_REFUSED, self._time_s)
         return Accepted()
 
     def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:

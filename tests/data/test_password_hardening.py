@@ -43,6 +43,21 @@ def test_the_kernel_counts_logs_and_raises_an_alarm_for_each_wrong_password() ->
     assert nck.access.state.failed_attempts == 0 and nck.status().access_level == 3
 
 
+def test_the_right_password_takes_the_refusal_alarm_away_and_the_log_keeps_it() -> None:
+    """Found in the operator day: 129300 "next try in 1 s" stayed after the right password.
+
+    The alarm's cause (a refused password and its waiting time) is gone once a password is
+    accepted, so the alarm goes (own choice: the manuals give this alarm no number, see
+    data/alarms/access.toml); the alarm log keeps when it came and went.
+    """
+    nck = Nck(access=AccessControl(AccessState()))
+    nck.submit(c.EnterPassword("WRONG"))
+    assert [a.number for a in nck.status().alarms] == [129300]
+    assert isinstance(nck.submit(c.EnterPassword("CUSTOMER")), c.Accepted)
+    assert [a.number for a in nck.status().alarms] == []
+    assert [e.number for e in nck.alarm_history()] == [129300]
+
+
 def test_the_panel_takes_the_next_password_only_after_the_delay() -> None:
     nck = Nck(access=AccessControl(AccessState()))
     now = [100.0]
