@@ -15,6 +15,7 @@ from typing import Any
 
 from nck import commands as cmd
 from nck.access import ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessState
+from nck.alarms import AlarmServer
 from nck.canon import Motion
 from nck.channel import ACTIVE, RESET
 from nck.commands import Accepted, Rejected, SubmitResult
@@ -35,6 +36,9 @@ class ControlSettings(DataWrites):
     data: Any
     _pc: dict[str, object]  # program control switches (the kernel's)
     _interpreters: dict[str, Interpreter]
+    alarms: AlarmServer
+    _time_s: float
+    _overrides: dict[str, float]  # override switch positions in % (feed, rapid, spindle)
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
