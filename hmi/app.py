@@ -28,6 +28,7 @@ import asyncio
 import gc
 import importlib
 import os
+import signal
 import sys
 import traceback
 import time
@@ -35,7 +36,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
-from textual import events
+from textual import events, on
 from textual.app import App
 from textual.driver import Driver
 from textual.drivers.linux_driver import LinuxDriver
@@ -53,14 +54,15 @@ from hmi.bridge import NckBridge
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.help import HelpScreen
-from hmi.key_input import PanelTerminalDriver, own_binding
+from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.program_lines import ProgramLines
-from hmi.messages import CommandRejected, NckStatusChanged
+from hmi.messages import CommandRejected, NckStatusChanged, TerminalClosed
 from hmi.startup import start_session
 from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.terminal_driver import PanelTerminalDriver
 from hmi.theme import SINUMERIK_THEME
 
 
@@ -201,6 +203,10 @@ class HmiApp(MachineControlPanel, App):
         self.area_screens: list[AreaBase] = []
         """The area screens built so far (each area's screen lives as long as the app)."""
         self._snapshot_shown = False
+        self.ending = False
+        """Set once the HMI has begun to quit (a second quit request is then ignored)."""
+        self.exit_notes: list[str] = []
+        """What could not be kept or saved at quit: printed on stderr once the screen is closed."""
         self.freeze_gc_at_start = False
         """Set by :func:`main`: call :func:`freeze_startup_objects` after the first frame."""
         for area in AREAS:
@@ -502,22 +508,18 @@ class HmiApp(MachineControlPanel, App):
         self.submit(cmd.CancelAlarms())
 
     def _quit_on_termination(self) -> None:
-        """SIGTERM/SIGHUP while running: quit at once (:meth:`quit_on_signal`)."""
+        """SIGTERM/SIGHUP while running: quit without asking (:meth:`quit_unattended`)."""
         loop = asyncio.get_running_loop()
         for number in TERMINATION_SIGNALS:
             try:
-                loop.add_signal_handler(number, self.quit_on_signal)
+                loop.add_signal_handler(number, self.quit_unattended, 128 + number)
             except (NotImplementedError, RuntimeError, ValueError):  # no signals here (Windows, thread)
                 return
 
-    def quit_on_signal(self) -> None:
-        """Terminated (SIGTERM, or SIGHUP: the terminal is gone): save and leave without asking.
-
-        Nobody can answer Ctrl+Q's question any more: asked with a program interrupted,
-        it kept the HMI running without a terminal (found after ``tmux kill-session``).
-        Unsaved editor text goes into the journal as on every quit.
-        """
-        self.quit_now()
+    @on(TerminalClosed)
+    def _quit_on_terminal_closed(self) -> None:
+        """The terminal has gone away: quit without asking, as after the hang-up signal."""
+        self.quit_unattended(128 + signal.SIGHUP)
 
     def quit_concerns(self) -> list[str]:
         """What quitting now would interrupt or leave unsaved (empty: quit without asking)."""
@@ -551,18 +553,56 @@ class HmiApp(MachineControlPanel, App):
         When the journal cannot be written the HMI stays open and says why (the
         text would be lost otherwise).
         """
+        failures = self._keep_unsaved_text()
+        if failures:
+            self.set_hint(f"Not quit: unsaved text could not be kept in the journal: {failures[0]}")
+            return
+        self._leave(0)
+
+    def quit_unattended(self, exit_code: int) -> None:
+        """Quit without asking: the terminal is gone, or SIGTERM/SIGHUP told the HMI to end.
+
+        Nobody can answer "Quit the HMI?" (a program running or unsaved text) nor
+        read the dialog line, so the HMI keeps what it can, notes what it could not
+        keep (a journal that cannot be written) for stderr (:attr:`exit_notes`),
+        saves, gives the data directory free and ends with ``exit_code`` (128 + the
+        signal, as a shell reports a process ended by it; a lost terminal counts as
+        a hang-up).
+        """
+        if self.ending:
+            return
+        for failure in self._keep_unsaved_text():
+            self.exit_notes.append(f"hmi: unsaved text could not be kept in the journal: {failure}")
+        self._leave(exit_code)
+
+    def _keep_unsaved_text(self) -> list[OSError]:
+        """Write every area's unsaved text into the journal; return the errors of those that failed."""
+        failures = []
         for screen in self.area_screens:
             try:
                 screen.keep_before_quit()
             except OSError as exc:
-                self.set_hint(f"Not quit: unsaved text could not be kept in the journal: {exc}")
-                return
+                failures.append(exc)
+        return failures
+
+    def _leave(self, exit_code: int) -> None:
+        """Save NC data (a failure is reported, the app still quits), then end the app."""
+        self.ending = True
         if self._on_quit is not None:
             try:
                 self._on_quit()
             except Exception as exc:  # a failed save is reported, the app still quits
-                print(f"hmi: saving NC data failed: {exc}", file=sys.stderr)
-        self.exit()
+                self.exit_notes.append(f"hmi: saving NC data failed: {exc}")
+        self.exit(return_code=exit_code)
+
+
+def report_on_stderr(text: str) -> None:
+    """Write a line for the operator on stderr; nothing when the terminal is gone."""
+    try:
+        print(text, file=sys.stderr)
+    except OSError:  # the terminal has been hung up: nobody is left to read it
+        pass
+
 
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
              *, nck: Any = None, program: str | None = None, realtime: bool = True,
@@ -621,4 +661,6 @@ def main(argv: list[str] | None = None) -> int:
         app.started_at = started  # type: ignore[attr-defined]
         app.freeze_gc_at_start = True
         app.run()
-    return 0
+        for note in app.exit_notes:
+            report_on_stderr(note)
+    return app.return_code or 0

@@ -9,8 +9,8 @@ panel keys) it gives up on the held pair and reports it as the two characters
 whatever follows and however the bytes were split into reads, and reports every
 Alt chord without a character, so that it can never become text (nor, for Alt+B
 and Alt+F, a JOG key as Textual's table has it).
-:class:`PanelTerminalDriver` is Textual's Linux driver reading the terminal
-through this parser.
+:class:`TerminalReader` feeds it the bytes read from the terminal
+(:mod:`hmi.terminal_driver`).
 
 Inside the app Textual types a printable key where it lands (the focused
 widget's own queue) but runs a bound key only after it has bubbled from that
@@ -23,14 +23,11 @@ with the text around them (:meth:`hmi.app.HmiApp.on_event`).
 from __future__ import annotations
 
 import codecs
-import os
-import selectors
 from collections.abc import Iterable
 
 from textual import events
 from textual._xterm_parser import XTermParser
 from textual.binding import Binding
-from textual.drivers.linux_driver import LinuxDriver
 from textual.message import Message
 from textual.screen import Screen
 from textual.widget import Widget
@@ -43,12 +40,6 @@ SEQUENCE_INTRODUCERS = frozenset("[O")
 The HMI asks the terminal for no DCS, OSC or APC replies, so ``ESC P``, ``ESC ]`` …
 are Alt chords like any other letter or sign.
 """
-
-READ_POLL_S = 0.1
-"""How long the input thread waits for bytes before it lets the parser check its escape delay."""
-
-READ_SIZE = 4096
-"""Bytes taken from the terminal per read."""
 
 
 def is_alt_chord(key: events.Key) -> bool:
@@ -95,22 +86,6 @@ class TerminalReader:
     def tick(self) -> list[Message]:
         """Messages the escape delay has completed (a lone ESC becomes the Escape key)."""
         return list(self.parser.tick())
-
-
-class PanelTerminalDriver(LinuxDriver):
-    """The Linux terminal driver with :class:`PanelKeyParser` reading the keyboard."""
-
-    def run_input_thread(self) -> None:
-        """Read the terminal until the app exits and post what the parser makes of it."""
-        reader = TerminalReader()
-        with selectors.DefaultSelector() as selector:
-            selector.register(self.fileno, selectors.EVENT_READ)
-            while not self.exit_event.is_set():
-                for _ in selector.select(READ_POLL_S):
-                    for message in reader.feed(os.read(self.fileno, READ_SIZE)):
-                        self.process_message(message)
-                for message in reader.tick():
-                    self.process_message(message)
 
 
 def own_binding(screen: Screen, focused: Widget | None, key: events.Key) -> Binding | None:

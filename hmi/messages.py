@@ -39,3 +39,11 @@ class AlarmLogged(Message):
     def __init__(self, entry: AlarmEntry) -> None:
         super().__init__()
         self.entry = entry
+
+
+class TerminalClosed(Message):
+    """The terminal has gone away (window closed, connection dropped): its input ended.
+
+    Posted by the terminal driver (:mod:`hmi.terminal_driver`); nobody is left to
+    answer a question, so the app ends without asking.
+    """

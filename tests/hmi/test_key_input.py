@@ -18,7 +18,8 @@ from textual.drivers.linux_driver import LinuxDriver
 from nck import commands as c
 
 from hmi.app import HmiApp
-from hmi.key_input import PanelKeyParser, PanelTerminalDriver, TerminalReader
+from hmi.key_input import PanelKeyParser, TerminalReader
+from hmi.terminal_driver import PanelTerminalDriver
 from hmi.keymap import default_keymap
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck

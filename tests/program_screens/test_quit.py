@@ -6,6 +6,7 @@ before Ctrl+Q, with no autosave in between, must be in the journal.
 
 from __future__ import annotations
 
+import signal
 from pathlib import Path
 
 import pytest
@@ -82,9 +83,9 @@ async def test_termination_with_interrupted_program_quits_without_asking(data_di
         app.submit(cmd.CycleStop())
         app.bridge.advance(0.1)
         assert app.quit_concerns()
-        app.quit_on_signal()
+        app.quit_unattended(128 + signal.SIGTERM)
         await pilot.pause()
-        assert app.return_code == 0  # ended, nothing asked
+        assert app.return_code == 128 + signal.SIGTERM  # ended, nothing asked
 
 
 async def test_journal_write_failure_at_quit_is_reported_and_the_hmi_stays(
@@ -105,3 +106,22 @@ async def test_journal_write_failure_at_quit_is_reported_and_the_hmi_stays(
         # "Journal could not be written: …" — both name the failure; the HMI stayed either way
         assert "No space left on device" in line and "journal" in line.lower()
         assert app.screen.editor.text.startswith("N5; pocket")
+
+
+async def test_unattended_quit_with_a_journal_write_failure_still_ends_and_says_why(
+        data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """SIGTERM or a lost terminal: nobody can answer or read the dialog line, so the HMI
+    ends anyway (it cannot stay for nobody) and the failure is written on stderr after it."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_demo_and_type(app, pilot, "N5")
+
+        def refuse(*args: object, **kwargs: object) -> None:
+            raise OSError(28, "No space left on device")
+
+        monkeypatch.setattr(EditorJournal, "write", refuse)
+        app.quit_unattended(143)
+        await pilot.pause()
+        assert app.return_code == 143
+    assert app.exit_notes == [
+        "hmi: unsaved text could not be kept in the journal: [Errno 28] No space left on device"]
