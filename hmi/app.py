@@ -62,6 +62,7 @@ from hmi.program_lines import ProgramLines
 from hmi.messages import CommandRejected, NckStatusChanged, TerminalClosed
 from hmi.startup import start_session
 from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.stack_dump import register_stack_dump
 from hmi.terminal_driver import PanelTerminalDriver
 from hmi.theme import SINUMERIK_THEME
 
@@ -660,6 +661,11 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         app.started_at = started  # type: ignore[attr-defined]
         app.freeze_gc_at_start = True
+        if app.nc_session is not None:
+            try:  # kill -USR1 <pid>: every thread's stack into <data dir>/hmi/thread-stacks.txt
+                register_stack_dump(Path(app.nc_session.session.data_dir) / "hmi")
+            except OSError as exc:
+                print(f"hmi: thread stacks cannot be written on SIGUSR1: {exc}", file=sys.stderr)
         app.run()
         for note in app.exit_notes:
             report_on_stderr(note)

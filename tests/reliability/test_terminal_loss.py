@@ -80,7 +80,10 @@ class HmiOnTerminal:
         while text.encode() not in self.output[start:]:
             ready, _, _ = select.select([self.fd], [], [], max(0.0, deadline - time.monotonic()))
             assert ready, f"{text!r} not shown within {WAIT_S} s; last output: {bytes(self.output[-400:])!r}"
-            self.output += os.read(self.fd, 65536)
+            try:
+                self.output += os.read(self.fd, 65536)
+            except OSError:  # EIO: the HMI has ended and closed its side
+                pytest.fail(f"hmi ended before {text!r} was shown; last output: {bytes(self.output[-400:])!r}")
 
     def close_terminal(self) -> None:
         """The terminal goes away (window closed, connection dropped)."""
@@ -182,3 +185,16 @@ def test_sigterm_with_a_running_program_ends_without_asking(tmp_path: Path, term
     assert os.WIFEXITED(status) and os.WEXITSTATUS(status) == 128 + signal.SIGTERM
     assert b"Quit the HMI?" not in hmi.output and b"Traceback" not in hmi.output
     assert_lock_free(data_dir)
+
+
+def test_sigusr1_writes_the_thread_stacks_and_the_hmi_goes_on(tmp_path: Path, terminals) -> None:
+    """``kill -USR1``: the stacks of a running (or hung) HMI land in ``<data dir>/hmi/thread-stacks.txt``."""
+    data_dir = tmp_path / "data"
+    hmi = start_hmi(terminals, data_dir)
+    os.kill(hmi.pid, signal.SIGUSR1)
+    hmi.type(ALT_N)  # the signal is handled before the HMI can read this key
+    hmi.wait_for("PROGRAM MANAGER")
+    stacks = (data_dir / "hmi" / "thread-stacks.txt").read_text()
+    assert "run_input_thread" in stacks and "Current thread" in stacks
+    hmi.close_terminal()
+    assert os.WEXITSTATUS(hmi.wait_exit()) == 128 + signal.SIGHUP
