@@ -92,19 +92,26 @@ def atomic_writer(path: Path | str) -> Iterator[BinaryIO]:
     """
     path = Path(path)
     temp = _temp_path(path)
-    try:
+    with _removed_on_failure(temp):
         with open(os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666), "wb") as handle:
             yield handle
             handle.flush()
             os.fsync(handle.fileno())
         os.replace(temp, path)
+    fsync_directory(path.parent)
+
+
+@contextmanager
+def _removed_on_failure(temp: Path) -> Iterator[None]:
+    """Remove ``temp`` when the block raises (anything, also KeyboardInterrupt), then re-raise."""
+    try:
+        yield
     except BaseException:
         try:
             temp.unlink()
         except OSError:
             pass
         raise
-    fsync_directory(path.parent)
 
 
 def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False,
@@ -123,19 +130,13 @@ def atomic_write_bytes(path: Path | str, data: bytes, *, backup: bool = False,
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     temp = _temp_path(path)
-    try:
+    with _removed_on_failure(temp):
         _write_synced(temp, data, 0o600 if private else 0o666)
         if backup and _is_regular_file(path):  # a link's target is never copied into the backup
             _make_backup(path)
             if private:
                 os.chmod(backup_path(path), 0o600)
         os.replace(temp, path)
-    except BaseException:
-        try:
-            temp.unlink()
-        except OSError:
-            pass
-        raise
     fsync_directory(path.parent)
 
 

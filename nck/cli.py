@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from nck import __version__, canon
+from nck.cli_parser import CliError, CliParser
 from nck.errors import NcAlarmError
 from nck.headless import CHECK_BLOCK_BUDGET, alarm_message, check_outcome, format_alarm, run_program
 from nck.motion.tracefile import start_trace, write_trace_csv
@@ -38,17 +39,8 @@ STDOUT_CLOSED_EXIT = 141
 """Exit code when the reader of stdout went away: 128 + SIGPIPE, what a shell reports for such tools."""
 
 
-class CliError(Exception):
-    """A command-line or file problem (exit code 2)."""
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> None:  # type: ignore[override]
-        raise CliError(message)
-
-
 def _build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="nck", description="Headless SINUMERIK NCK simulator")
+    parser = CliParser(prog="nck", description="Headless SINUMERIK NCK simulator")
     sub = parser.add_subparsers(dest="command")
     check = sub.add_parser("check", help="check programs without moving anything")
     check.add_argument("programs", nargs="+")

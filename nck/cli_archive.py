@@ -23,6 +23,7 @@ import sys
 from typing import Callable, TextIO
 
 from nck.access import level_name
+from nck.cli_parser import CliError, CliParser
 from nck.cli_password import level_of_password
 from nck.datalock import DataDirLockError, lock_data_dir
 from nck.machine import MachineFileError, load_machine
@@ -31,17 +32,8 @@ from nck.persistence import ArchiveError, ArchiveRefused, Session
 from nck.resources import alarm_text
 
 
-class _UsageError(Exception):
-    """A problem with the command line (exit code 2)."""
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> None:  # type: ignore[override]
-        raise _UsageError(message)
-
-
 def _parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="nck archive", description="Export or import all NC data as one file")
+    parser = CliParser(prog="nck archive", description="Export or import all NC data as one file")
     parser.add_argument("action", choices=["export", "import"])
     parser.add_argument("file")
     parser.add_argument("--machine", help="machine name or TOML file (default: the 3-axis mill)")
@@ -57,7 +49,7 @@ def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], Non
     try:
         options = _parser().parse_args(argv)
         machine = load_machine(options.machine)
-    except (_UsageError, MachineFileError) as exc:
+    except (CliError, MachineFileError) as exc:
         print(f"nck archive: {exc}", file=err)
         return 2
     except SystemExit as exc:  # --help
@@ -76,10 +68,7 @@ def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], Non
     except ArchiveRefused as exc:
         print(f"nck archive: {exc}", file=err)
         return 1
-    except ArchiveError as exc:
-        print(f"nck archive: {exc}", file=err)
-        return 2
-    except DataDirLockError as exc:
+    except (ArchiveError, DataDirLockError) as exc:
         print(f"nck archive: {exc}", file=err)
         return 2
     except OSError as exc:

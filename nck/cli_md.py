@@ -23,6 +23,7 @@ import sys
 from typing import Any, Callable, TextIO
 
 from nck.access import AccessDenied, level_name
+from nck.cli_parser import CliError, CliParser
 from nck.cli_password import level_of_password
 from nck.machine import MachineFileError, load_machine
 from nck.machine_data import (
@@ -40,17 +41,8 @@ from nck.persistence import Session
 from nck.resources import alarm_text
 
 
-class _UsageError(Exception):
-    """A problem with the command line (exit code 2)."""
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> None:  # type: ignore[override]
-        raise _UsageError(message)
-
-
 def _parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="nck md", description="Read and write machine and setting data")
+    parser = CliParser(prog="nck md", description="Read and write machine and setting data")
     parser.add_argument("--machine", help="machine name or TOML file (default: the 3-axis mill)")
     parser.add_argument("--data-dir", help="NC data directory (default: the user data directory)")
     parser.add_argument("--ephemeral", action="store_true",
@@ -88,7 +80,7 @@ def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], Non
     """
     try:
         options = _parser().parse_args(argv)
-    except _UsageError as exc:
+    except CliError as exc:
         print(f"nck md: {exc}", file=err)
         return 2
     except SystemExit as exc:  # --help
