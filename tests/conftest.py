@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import faulthandler
 import os
 import tempfile
 from pathlib import Path
@@ -19,3 +20,32 @@ import pytest  # noqa: E402
 def _run_in_a_temporary_directory(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Exports (programs, alarm log, trace CSV) go to the current directory: keep them out of the tree."""
     monkeypatch.chdir(tmp_path)
+
+
+# ------------------------------------------------------------------ hang watchdog
+HANG_WATCHDOG_S = float(os.environ.get("NCK_TEST_HANG_S", "420"))
+"""A test still running after this many seconds has hung past pytest-timeout's reach.
+
+pytest-timeout (``timeout = 300`` in pyproject.toml) interrupts a test with a signal,
+which Python handles only when the main thread runs Python code. A test blocked where
+no signal handler can run (a C-level lock, a deadlock on the interpreter lock) would
+stall the whole suite until CI's limit. This watchdog is faulthandler's C thread: it
+writes every thread's stack to the terminal and ends the worker process, so the run
+goes on (pytest-xdist reports the test as crashed and starts a new worker) and the log
+shows where the test hung. ``NCK_TEST_HANG_S`` sets it (the watchdog's own test)."""
+
+_watchdog_stream = None
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    global _watchdog_stream
+    _watchdog_stream = os.fdopen(os.dup(2), "w")  # the real stderr, not the per-test capture
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None):
+    faulthandler.dump_traceback_later(HANG_WATCHDOG_S, exit=True, file=_watchdog_stream)
+    try:
+        yield
+    finally:
+        faulthandler.cancel_dump_traceback_later()
