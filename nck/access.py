@@ -74,6 +74,7 @@ class Action(enum.Enum):
     PRESET = "preset"
     OVERSTORE = "overstore"
     TEACH_IN = "teach_in"
+    WRITE_MACHINE_SETUP = "write_machine_setup"
 
 
 @dataclass(frozen=True, slots=True)

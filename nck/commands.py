@@ -9,6 +9,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from nck.workpiece import Box, Cylinder, MachineSetup
+
+__all__ = ["Box", "Cylinder", "MachineSetup"]  # re-exported: screens build a WriteMachineSetup with them
+
 
 @dataclass(frozen=True, slots=True)
 class Accepted:
@@ -191,9 +195,23 @@ class ActivateMachineData:
     """NEW CONFIG ("Set MD active"): stored machine data of activation cf (and re) take effect."""
 
 
+@dataclass(frozen=True, slots=True)
+class WriteMachineSetup:
+    """Replace what is clamped on the machine: ``setup`` is a :class:`MachineSetup` (a blank
+    :class:`Box` or :class:`Cylinder` or none, a reference :class:`Box` or none, the
+    instructor's ``hidden`` switch), all positions in the MCS in mm.
+
+    Needs protection level 3 (``write_machine_setup`` in data/access.toml); refused while
+    the channel is active. Read it back with ``nck.queries.MachineSetupData``. Retained.
+    """
+
+    setup: MachineSetup
+
+
 Command = (
     SelectMode | SelectMachineFunction | SelectIncrement | CycleStart | CycleStop | Reset
     | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
     | CancelAlarms | Jog | StartBlockSearch | WriteData | EnterPassword | DeletePassword
     | SetKeyswitch | ChangePassword | DeleteToolEdge | ClearRParameters | ActivateMachineData
+    | WriteMachineSetup
 )

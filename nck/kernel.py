@@ -63,7 +63,7 @@ ALARM_START_UNREFERENCED = 10203
 ALARM_CONTINUE_WITH_START = 10208
 MDA_NAME = "MDA"
 _LOGBOOK_COMMANDS = (cmd.WriteData, cmd.SetKeyswitch, cmd.EnterPassword, cmd.DeletePassword,
-                     cmd.ChangePassword, cmd.ActivateMachineData)
+                     cmd.ChangePassword, cmd.ActivateMachineData, cmd.WriteMachineSetup)
 
 
 class _NoPrograms:
@@ -280,6 +280,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
             return
         if isinstance(command, cmd.ActivateMachineData):
             self.logbook.append(LogbookEntry(self._time_s, "data", "machine data activated (NEW CONFIG)"))
+            return
+        if isinstance(command, cmd.WriteMachineSetup):
+            self.logbook.append(LogbookEntry(self._time_s, "data", "machine set-up changed"))
             return
         if isinstance(command, cmd.ChangePassword):
             self.logbook.append(LogbookEntry(self._time_s, "access",
@@ -612,6 +615,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         cmd.DeleteToolEdge: "_delete_tool_edge",
         cmd.ClearRParameters: "_clear_r_parameters",
         cmd.ActivateMachineData: "_activate_machine_data",
+        cmd.WriteMachineSetup: "_write_machine_setup",
     }
 
     # ------------------------------------------------------------- cycle

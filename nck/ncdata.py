@@ -10,6 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from nck.workpiece import MachineSetup
+
 R_PARAMETER_COUNT = 100  # MD28050 MM_NUM_R_PARAM default
 
 
@@ -74,6 +76,11 @@ class NcData:
     # Positions of the machine control panel's override switches in % by switch (feed, rapid,
     # spindle). A switch stays where it was turned, over power off/on, like the keyswitch.
     override_switches: dict[str, float] = field(default_factory=dict)
+    # What is clamped on the machine (blank, reference block; nck.workpiece). Empty in a bare
+    # NcData; a data directory starts with the default of its machine kind.
+    machine_setup: MachineSetup = field(default_factory=MachineSetup)
+    # The system frame for PRESET and scratching, $P_SETFR (002 L30600-30612): translations only.
+    setframe: WorkOffset = field(default_factory=WorkOffset)
 
     def edge(self, tool: int, edge: int) -> ToolEdge | None:
         """Return the cutting edge ``D<edge>`` of tool ``T<tool>``, if it exists."""

@@ -15,6 +15,7 @@ that a damaged file costs only that section:
 ``mda``            the MDA buffer
 ``panel``          positions of the override switches of the machine control panel
 ``alarm_log``      the alarm log (bounded)
+``machine_setup``  what is clamped: blank, reference block, the instructor's hidden switch
 =================  ==========================================================
 
 File format (version 1)::
@@ -67,6 +68,7 @@ from nck.regular_files import check_export_target, plain_directory, read_regular
 from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError, check_program_size
+from nck.workpiece import default_machine_setup, setup_from_plain, setup_to_plain
 from nck.writes import DataWriter, WriteRefused
 
 FORMAT = "sinumerik-trainer/retained"
@@ -215,14 +217,16 @@ def _load_tools(data: Mapping[str, Any], rd: RetainedData) -> None:
 
 def _dump_offsets(rd: RetainedData) -> dict[str, Any]:
     return {"settable": {name: _dump_offset(o) for name, o in rd.ncdata.settable_frames.items()},
-            "base": _dump_offset(rd.ncdata.base_frame)}
+            "base": _dump_offset(rd.ncdata.base_frame), "setframe": _dump_offset(rd.ncdata.setframe)}
 
 
 def _load_offsets(data: Mapping[str, Any], rd: RetainedData) -> None:
     settable = {str(name): _load_offset(o) for name, o in _mapping(data["settable"]).items()}
     base = _load_offset(data["base"])
+    setframe = _load_offset(data.get("setframe", {}))  # files written before $P_SETFR existed lack it
     rd.ncdata.settable_frames = settable
     rd.ncdata.base_frame = base
+    rd.ncdata.setframe = setframe
 
 
 def _dump_r(rd: RetainedData) -> dict[str, Any]:
@@ -352,6 +356,14 @@ def _load_alarm_log(data: Mapping[str, Any], rd: RetainedData) -> None:
     rd.alarm_log = entries[-ALARM_LOG_LIMIT:]
 
 
+def _dump_machine_setup(rd: RetainedData) -> dict[str, Any]:
+    return setup_to_plain(rd.ncdata.machine_setup)
+
+
+def _load_machine_setup(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.ncdata.machine_setup = setup_from_plain(data)
+
+
 SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, RetainedData], None]]] = {
     "tools": (_dump_tools, _load_tools),
     "work_offsets": (_dump_offsets, _load_offsets),
@@ -364,6 +376,7 @@ SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, Ret
     "mda": (_dump_mda, _load_mda),
     "panel": (_dump_panel, _load_panel),
     "alarm_log": (_dump_alarm_log, _load_alarm_log),
+    "machine_setup": (_dump_machine_setup, _load_machine_setup),
 }
 
 
@@ -531,6 +544,8 @@ class Session:
                     "a link, not a folder" if kept.is_symlink() else "not a folder",
                     kept.relative_to(data_dir).as_posix()))
         fresh_tools = not (retained_dir / "tools.json").exists()
+        setup_file = retained_dir / "machine_setup.json"
+        fresh_setup = not os.path.lexists(setup_file) and not os.path.lexists(backup_path(setup_file))
         samples_installed = bool(install_samples and files.install_samples(
             samples if samples is not None else data_path("programs")))
         rd = RetainedData()
@@ -543,9 +558,12 @@ class Session:
         if samples_installed and fresh_tools:  # the training programs come with their tools
             rd.ncdata.tools = {key: ToolEdge(params=dict(params))
                                for key, params in read_tool_table(data_path(SAMPLE_TOOLS)).items()}
+        machine = machine or load_machine()
+        if fresh_setup:  # a new data directory: the default blank of the machine kind is clamped
+            rd.ncdata.machine_setup = default_machine_setup(machine.kind)
         if not rd.access.password_hashes:  # fresh, or the access file was lost
             rd.access.password_hashes = default_password_hashes()
-        session = cls(data_dir, machine or load_machine(), rd, files, alarms)
+        session = cls(data_dir, machine, rd, files, alarms)
         for name in SECTIONS:
             path = retained_dir / f"{name}.json"
             if name not in damaged and path.exists() and not (

@@ -109,6 +109,15 @@ class ProgramNames:
     """
 
 
+@dataclass(frozen=True)
+class MachineSetupData:
+    """What is clamped on the machine: ``nck.commands.MachineSetup`` (blank, reference block,
+    ``hidden``), positions in the MCS; ``None`` for a kernel without NC data.
+
+    A trainee's screen must not show the blank's position when ``hidden`` is set.
+    """
+
+
 def _reader(nck: Any, name: str) -> Callable[..., Any] | None:
     reader = getattr(nck, name, None)
     return reader if callable(reader) else None
@@ -172,6 +181,10 @@ def _program_names(nck: Any, query: ProgramNames) -> list[str]:
     return []
 
 
+def _machine_setup(nck: Any, query: MachineSetupData) -> Any:
+    return getattr(getattr(nck, "data", None), "machine_setup", None)
+
+
 ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     AlarmHistory: _alarm_history,
     AlarmLogSince: _alarm_log_since,
@@ -184,6 +197,7 @@ ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     ActionLevel: _action_level,
     ProgramSource: _program_source,
     ProgramNames: _program_names,
+    MachineSetupData: _machine_setup,
 }
 """Question type -> the function that answers it from a kernel."""
 

@@ -1,0 +1,152 @@
+"""What is clamped on the machine: the blank and the tool-setting reference block.
+
+Plain data only (no geometry of contact, no persistence): :mod:`nck.contact` finds
+contacts with these solids, :mod:`nck.persistence` keeps them in the retained data
+(section ``machine_setup``), a material-removal simulation may take the blank as its
+stock. All coordinates are machine coordinates (MCS) of the geometry axes X, Y, Z in
+mm; a lathe has no Y axis, its Y coordinate is 0.
+
+* :class:`Box` — a rectangular blank or block, faces parallel to the axes, given by
+  its smallest and its largest corner.
+* :class:`Cylinder` — a round blank with its axis parallel to Z (on a mill standing on
+  the table, on a lathe the bar in the chuck on the turning axis), given by the centre
+  of its lower (lathe: chuck-side) face, its diameter and its length along Z.
+* :class:`MachineSetup` — the blank (or none), the reference block (or none) and the
+  instructor's switch ``hidden`` (the trainee's screens do not show where the blank is:
+  the trainee must find it by measuring; only the data and the switch live here).
+
+Trainer choice (the manuals are silent on a simulated workpiece): the shipped default on
+a mill is a 100 × 80 × 30 mm block in the middle of the table with its top at Z −220 and a
+reference block of 50 mm height beside it (:func:`default_machine_setup`); on a lathe a
+bar of 60 mm diameter standing out 100 mm from the chuck face at Z 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+Point = tuple[float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Box:
+    """A block with faces parallel to the axes: ``low_mcs`` ≤ points ≤ ``high_mcs`` (X, Y, Z)."""
+
+    low_mcs: Point
+    high_mcs: Point
+
+    @property
+    def top_z_mcs(self) -> float:
+        """The Z of the top face."""
+        return self.high_mcs[2]
+
+
+@dataclass(frozen=True, slots=True)
+class Cylinder:
+    """A round bar with its axis parallel to Z: lower face centre ``base_mcs``, diameter, length."""
+
+    base_mcs: Point
+    diameter_mm: float
+    length_mm: float
+
+    @property
+    def top_z_mcs(self) -> float:
+        """The Z of the upper (lathe: free) face."""
+        return self.base_mcs[2] + self.length_mm
+
+
+Solid = Box | Cylinder
+
+
+@dataclass(frozen=True, slots=True)
+class MachineSetup:
+    """What is clamped: ``blank`` and ``reference`` (a block of known height), each optional.
+
+    ``hidden`` is the instructor's switch: the blank's position is not shown to the trainee.
+    """
+
+    blank: Solid | None = None
+    reference: Box | None = None
+    hidden: bool = False
+
+    def solids(self) -> tuple[tuple[str, Solid], ...]:
+        """The solids a tool can touch, named ``"blank"`` / ``"reference"``."""
+        named = (("blank", self.blank), ("reference", self.reference))
+        return tuple((name, solid) for name, solid in named if solid is not None)
+
+
+def default_machine_setup(machine_kind: str) -> MachineSetup:
+    """The set-up a fresh data directory starts with on a ``mill`` or a ``lathe`` (module docstring)."""
+    if machine_kind == "lathe":
+        return MachineSetup(blank=Cylinder((0.0, 0.0, 0.0), 60.0, 100.0))
+    return MachineSetup(
+        blank=Box((-50.0, -40.0, -250.0), (50.0, 40.0, -220.0)),
+        reference=Box((150.0, -20.0, -250.0), (190.0, 20.0, -200.0)),
+    )
+
+
+# --------------------------------------------------------------------- plain form
+def solid_to_plain(solid: Solid | None) -> dict[str, Any] | None:
+    """A solid as JSON-ready data (``None`` stays ``None``)."""
+    if isinstance(solid, Box):
+        return {"shape": "box", "low_mcs": list(solid.low_mcs), "high_mcs": list(solid.high_mcs)}
+    if isinstance(solid, Cylinder):
+        return {"shape": "cylinder", "base_mcs": list(solid.base_mcs), "diameter_mm": solid.diameter_mm,
+                "length_mm": solid.length_mm}
+    return None
+
+
+def _point(value: Any) -> Point:
+    if not isinstance(value, (list, tuple)) or len(value) != 3:
+        raise ValueError("a position is three numbers X, Y, Z")
+    return (_finite(value[0]), _finite(value[1]), _finite(value[2]))
+
+
+def _finite(value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ValueError(f"{value!r} is not a finite number")
+    return float(value)
+
+
+def _positive(value: Any, what: str) -> float:
+    number = _finite(value)
+    if number <= 0.0:
+        raise ValueError(f"the {what} must be greater than 0")
+    return number
+
+
+def solid_from_plain(data: Any) -> Solid | None:
+    """The solid of :func:`solid_to_plain`'s form; ``ValueError`` when it is not one."""
+    if data is None:
+        return None
+    if not isinstance(data, Mapping):
+        raise ValueError("a solid is a table")
+    shape = data.get("shape")
+    if shape == "box":
+        low, high = _point(data["low_mcs"]), _point(data["high_mcs"])
+        if any(h <= lo for lo, h in zip(low, high)):
+            raise ValueError("a box's high corner must lie above its low corner on every axis")
+        return Box(low, high)
+    if shape == "cylinder":
+        return Cylinder(_point(data["base_mcs"]), _positive(data["diameter_mm"], "diameter"),
+                        _positive(data["length_mm"], "length"))
+    raise ValueError(f"unknown shape {shape!r}")
+
+
+def setup_to_plain(setup: MachineSetup) -> dict[str, Any]:
+    """The whole set-up as JSON-ready data."""
+    return {"blank": solid_to_plain(setup.blank), "reference": solid_to_plain(setup.reference),
+            "hidden": setup.hidden}
+
+
+def setup_from_plain(data: Mapping[str, Any]) -> MachineSetup:
+    """The set-up of :func:`setup_to_plain`'s form; ``ValueError`` when it is not one."""
+    reference = solid_from_plain(data.get("reference"))
+    if reference is not None and not isinstance(reference, Box):
+        raise ValueError("the reference block is a box")
+    hidden = data.get("hidden", False)
+    if not isinstance(hidden, bool):
+        raise ValueError("hidden is true or false")
+    return MachineSetup(solid_from_plain(data.get("blank")), reference, hidden)
