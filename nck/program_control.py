@@ -259,10 +259,6 @@ class ProgramRun:
                 if len(self.segments) > PUSHED_HISTORY:
                     self.segments.pop(next(iter(self.segments)))
                 self._push(motion, command)
-                if isinstance(command, Motion) and self._single_segment_stop(options, commands):
-                    self._index += 1
-                    self._stop_at_idle("single block")
-                    return False
             elif isinstance(command, StopPoint):
                 kind = command.kind.upper()
                 if kind in ("M0", "M00"):
@@ -283,15 +279,25 @@ class ProgramRun:
             else:
                 self._deferred.append((self._pushed_total, RunEvent("output", command=command)))
             self._index += 1
+            if self._single_segment_stop(options, commands):
+                self._stop_at_idle("single block")
+                return False
         return True
 
     def _single_segment_stop(self, options: RunOptions, commands: tuple) -> bool:
         """SBL1 stops after every segment, also one the NC inserted or one an earlier block
-        released late (radius compensation, RND), when more motion of the block follows
-        (002 L18071-18094): the stops keep in step with the motion."""
+        released late (radius compensation, RND), and after the outputs of a block without
+        path motion that waited for such a motion (M8, G4 between two rounded blocks), when
+        more motion follows (002 L18071-18094): the stops keep in step with the motion."""
         if options.single_block != "SBL1" or self._pending is None or self._pending.extras.get("single_block_off"):
             return False
-        return any(isinstance(c, (Motion, Dwell)) for c in commands[self._index + 1:])
+        done, rest = commands[self._index - 1], commands[self._index:]
+        if not any(isinstance(c, (Motion, Dwell, ExactStop)) for c in rest):
+            return False  # the block's own end: the stop after the block
+        after = rest[0]
+        if isinstance(done, Motion):
+            return isinstance(after, (Motion, Dwell, ExactStop)) or after.source != done.source
+        return done.source != after.source and done.source != self._pending.source
 
     def _block_done(self, options: RunOptions) -> None:
         assert self._pending is not None

@@ -62,6 +62,9 @@ class GeometryState:
         contour_first: the first block of a two-line contour definition (``ANG=`` without a
             plane axis) as (angle in degrees, plane code, the block's words), waiting for the
             block that ends the contour; None otherwise.
+        waiting: outputs of blocks that wait for a motion held back before them (chamfer,
+            rounding, radius compensation look-ahead), in block order; see
+            :mod:`nck.interp.waiting_outputs`.
     """
 
     frames: FrameChain = field(default_factory=FrameChain)
@@ -82,6 +85,7 @@ class GeometryState:
     accel_pct: dict[str, float] = field(default_factory=dict)
     loaded: bool = False
     contour_first: tuple[float, str, Any] | None = None
+    waiting: tuple[Any, ...] = ()
 
     def __deepcopy__(self, memo: dict) -> "GeometryState":
         """Snapshots before each block: frames, pole and elements are immutable and shared."""
@@ -112,3 +116,4 @@ class GeometryState:
         self.accel_pct = {}
         self.loaded = False
         self.contour_first = None
+        self.waiting = ()

@@ -168,6 +168,11 @@ class RadiusCompensator:
         """True while compensation is selected (including a pending selection)."""
         return self._state != "off"
 
+    @property
+    def holding(self) -> bool:
+        """True while a programmed block waits in the look-ahead (selection or buffered pieces)."""
+        return self._state == "selecting" or bool(self._pieces)
+
     # ----------------------------------------------------------------- feeding
 
     def feed(self, element: ContourElement) -> list[CompensatedElement]:

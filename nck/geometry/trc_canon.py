@@ -329,6 +329,13 @@ def flush(modal: Any, path: Any, data: Any) -> list[canon.Motion]:
     return _writable(modal, found).flush(modal, path, data)
 
 
+def holding(modal: Any) -> bool:
+    """True while the compensation look-ahead holds a programmed block back."""
+    geo = getattr(modal, "geometry", None)
+    found = getattr(geo, STAGE_ATTRIBUTE, None) if geo is not None else None
+    return found is not None and found.compensator.holding
+
+
 def _writable(modal: Any, found: TrcStage) -> TrcStage:
     """Copy on write: the interpreter's snapshot of the geometry state shares its
     attributes, so the stage is replaced by a copy before it changes (an alarm then

@@ -41,7 +41,7 @@ from nck.geometry.path_builder import ALARM_NOT_AVAILABLE, SD_THREAD_START_ANGLE
 from nck.geometry.path_state import GeometryState
 from nck.geometry.rounding_distance import AID
 from nck.geometry.tool_length import ALARM_T_NOT_DEFINED
-from nck.interp import aux_timing
+from nck.interp import aux_timing, waiting_outputs
 from nck.interp.modal import ModalState
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
@@ -150,7 +150,30 @@ class MotionBuilder:
             outputs.append(canon.AuxFunction(src, "H", float(value), ext))
             modal.aux["H"] = _fmt(value)
         earlier, own = self._geometry(words, modal, geo, src)
-        return earlier + self._place_outputs(outputs, own, src)
+        out = self._released(earlier, modal, geo)
+        if not own and (geo.waiting or self._holding(modal, geo)):
+            # Something before this block is held back: its outputs wait for it.
+            moves = self.path.has_path_words(words, modal)
+            if moves or outputs:
+                waiting = tuple(outputs) if moves else tuple(self._place_outputs(outputs, [], src))
+                geo.waiting = geo.waiting + (waiting_outputs.WaitingBlock(src, waiting, moves),)
+            return out
+        return out + self._place_outputs(outputs, own, src)
+
+    def _holding(self, modal: ModalState, geo: GeometryState) -> bool:
+        """True while a programmed motion is held back (chamfer, rounding, contour, compensation)."""
+        return geo.pending is not None or geo.contour_first is not None or trc_canon.holding(modal)
+
+    def _released(self, released: list[canon.CanonCommand], modal: ModalState,
+                  geo: GeometryState) -> list[canon.CanonCommand]:
+        """Motions released now with the outputs waiting for them (:mod:`nck.interp.waiting_outputs`)."""
+        if not geo.waiting:
+            return released
+        out, geo.waiting = waiting_outputs.release(released, geo.waiting, self._place_outputs)
+        if geo.waiting and not self._holding(modal, geo):
+            out += waiting_outputs.release_all(geo.waiting, self._place_outputs)
+            geo.waiting = ()
+        return out
 
     def _geometry(self, words: BlockWords, modal: ModalState, geo: GeometryState,
                   src: canon.Source) -> tuple[list[canon.CanonCommand], list[canon.CanonCommand]]:
@@ -262,7 +285,7 @@ class MotionBuilder:
         held = list(self.path.flush(modal))
         if held:
             held = trc_canon.process(held, modal, self.path, self.data, self.machine)
-        return held
+        return self._released(held, modal, self.path.state(modal))
 
     def _rounding_distances(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> None:
         """ADIS= / ADISPOS= (G641 rounding distances, modal; 16500 when negative)."""
@@ -285,7 +308,8 @@ class MotionBuilder:
         held = list(self.path.flush(modal))
         if held:
             held = trc_canon.process(held, modal, self.path, self.data, self.machine)
-        return held + trc_canon.flush(modal, self.path, self.data)
+        held += trc_canon.flush(modal, self.path, self.data)
+        return self._released(held, modal, self.path.state(modal)) if geo is not None else held
 
     def sync_position(self, modal: ModalState, position_mcs: dict[str, float]) -> None:
         """Take over actual machine positions; the programmed WCS follows via frames and tool."""
@@ -300,8 +324,9 @@ class MotionBuilder:
         """G4 F… (seconds) or G4 S… (revolutions of the master spindle); F and S stay as they were."""
         held = self.release_held(modal)
         # With radius compensation G4 is a block without plane motion, not a stop of the look-ahead.
-        out: list[canon.CanonCommand] = held + trc_canon.process(
-            [], modal, self.path, self.data, self.machine, words.source)
+        geo = self.path.state(modal)
+        out: list[canon.CanonCommand] = held + self._released(trc_canon.process(
+            [], modal, self.path, self.data, self.machine, words.source), modal, geo)
         seconds = words.words.get("F")
         revolutions = words.words.get("S")
         if seconds is None and revolutions is None:
@@ -313,8 +338,12 @@ class MotionBuilder:
         for value in (seconds, revolutions):
             if value is not None and value < 0:
                 raise NcAlarmError(12160, "G4")
-        out.append(canon.Dwell(words.source, seconds=seconds, revolutions=revolutions,
-                               gcodes=dict(modal.gcodes), feed=modal.feed))
+        dwell = canon.Dwell(words.source, seconds=seconds, revolutions=revolutions,
+                            gcodes=dict(modal.gcodes), feed=modal.feed)
+        if geo.waiting or self._holding(modal, geo):  # the dwell comes after the motion held back
+            geo.waiting = geo.waiting + (waiting_outputs.WaitingBlock(words.source, (dwell,), False),)
+        else:
+            out.append(dwell)
         return out
 
     # ------------------------------------------------------------------ feed

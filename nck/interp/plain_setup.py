@@ -101,7 +101,8 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
     modal = interp.modal
     geo = modal.geometry
     gcodes = modal.gcodes
-    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None:
+    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None \
+            or geo.waiting:
         return None
     if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
         return None  # every corner is rounded: the path builder holds each element back

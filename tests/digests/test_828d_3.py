@@ -130,3 +130,63 @@ def test_digest_828d_3_rank_20_missing_edge_is_corrected_and_the_block_runs_agai
     assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
     assert [a.number for a in nck.status().alarms] == []
     assert nck.positions_mcs()["Z"] == pytest.approx(50.0, abs=1e-3)
+
+
+def _first_cycle_with(program: str, found, data: NcData | None = None) -> tuple[float, float]:
+    """(X, Y) setpoint in the IPO cycle where ``found(status)`` first holds (real interpreter and motion)."""
+    nck = Nck(machine=load_machine(), programs=MemorySource({"P.MPF": program}), data=data, referenced=True,
+              batch_cycles=1)
+    assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
+    assert nck.submit(c.SelectProgram("P.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    for _ in range(20000):
+        nck.step(1)
+        status = nck.status()
+        if found(status):
+            position = nck.positions_mcs()
+            return round(position["X"], 3), round(position["Y"], 3)
+        assert nck.situation.channel != "reset", "the program ended first"
+    raise AssertionError("never found")
+
+
+def test_digest_828d_3_rank_06_m8_between_rounded_blocks_goes_out_after_the_rounding() -> None:
+    """Digest 828d-3 rank 6 (single block and the blocks held back): N35 M8 stands between
+    N30, whose motion RND holds back, and N40. A block without path motion ends the block
+    before it with exact stop and goes out there (002 L4797-4809); the rounding belongs to N30
+    and blocks without motion may stand between the two rounded blocks (002 L56859-56868). So
+    M8 comes when the axes stand at the end of the rounding arc: RND=2 between X and Y lines
+    at the corner (10, 0) ends the arc 2 mm up the Y line, at (10, 2). Before, M8 went out
+    before N30 moved. The status shows the output in the IPO cycle after it went out, when N40
+    has just started from standstill (well under 0.05 mm)."""
+    program = "N20 G0 X0 Y0\nN30 G1 X10 RND=2 F3000\nN35 M8\nN40 Y10\nN50 M30\n"
+    assert _first_cycle_with(program, lambda s: s.channel.modal.aux.get("M") == "8") == pytest.approx(
+        (10.0, 2.0), abs=0.05)
+
+
+def test_digest_828d_3_rank_06_dwell_under_g41_comes_at_the_compensated_corner() -> None:
+    """Digest 828d-3 rank 6: with G41 the look-ahead holds N40 back until N50 is known. The
+    block outside the compensation plane (N45 G4) is output at the end of N40's compensated
+    segment (001 L7752-7757: the functions of the block in between go out at point S1, the end
+    of the block before it). Tool radius 2, G41 inside the square (10,10)-(30,10)-(30,30):
+    N40 ends at the intersection of the offset lines Y = 12 and X = 28, (28, 12); the dwell
+    is the first time the channel shows a dwell. Before, it dwelt at (10, 12), before N40."""
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120.0, 6: 2.0})
+    program = ("N10 T1 M6 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 Y10 F3000\nN40 X30\nN45 G4 F0.5\nN50 Y30\n"
+               "N60 X10\nN70 G40 X0 Y0\nN80 M30\n")
+    assert _first_cycle_with(program, lambda s: (s.channel.current_block is not None
+                                                 and s.channel.current_block.line == 5), data) == (28.0, 12.0)
+
+
+def test_digest_828d_3_rank_06_single_block_stops_at_the_block_without_motion_in_its_place() -> None:
+    """Digest 828d-3 rank 6: one stop per action (002 L18071-18094): the line of N30 to 2 mm
+    before the corner (8, 0), the rounding arc to (10, 2), then N35 M8 there (its own stop, an
+    auxiliary output is an action), then N40 to (10, 10). Before, N35 stopped at (0, 0)."""
+    from tests.kernel.test_single_block_motion import stops
+
+    text = "N20 G0 X0 Y0\nN30 G1 X10 RND=2 F1000\nN35 M8\nN40 Y10\nN50 M30\n"
+    assert stops(text) == [(0.0, 0.0, 1), (8.0, 0.0, 2), (10.0, 2.0, 2), (10.0, 2.0, 3), (10.0, 10.0, 4)]
+    text = ("N10 T1 M6 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 Y10 F1000\nN40 X30\nN45 M8\nN50 Y30\nN60 X10\n"
+            "N70 G40 X0 Y0\nN80 M30\n")
+    assert stops(text) == [(0.0, 0.0, 1), (0.0, 0.0, 2), (10.0, 12.0, 3), (28.0, 12.0, 4), (28.0, 12.0, 5),
+                           (28.0, 28.0, 6), (10.0, 28.0, 7), (0.0, 0.0, 8)]
