@@ -15,10 +15,18 @@ in a worker thread and shows the results as they come):
 
 :func:`run_text` is the second pass on its own and also returns the canonical
 motions, for the toolpath simulation.
+
+Both run on a machine and NC data they are given (the default mill and fresh data
+when none). The HMI's editor takes the session's through :class:`CheckContext`, the
+answer of the query ``nck.queries.CheckSetting``: the session's machine and a copy of
+its NC data (tools, work offsets, R parameters, setting data, GUD), so a program
+that is valid only with the session's data checks clean and simulates the path
+the run would take.
 """
 
 from __future__ import annotations
 
+import copy
 import functools
 import re
 from dataclasses import dataclass, field
@@ -287,3 +295,33 @@ def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:
 def commands_of(result: RunResult) -> list[CanonCommand]:
     """The collected motions as canonical commands (for sinks and golden files)."""
     return list(result.motions)
+
+
+@dataclass(frozen=True)
+class CheckContext:
+    """The machine and NC data a check or a simulation of a program text runs on.
+
+    ``data`` is a private copy of the session's NC data, taken when the context was
+    asked for (in the thread that owns the kernel); each check or run works on its own
+    copy of it, so a program that writes R parameters or tool data changes neither
+    the session nor the next run, and the context may be used from a worker thread.
+    ``None`` means the default machine or fresh NC data.
+    """
+
+    machine: Any = None
+    data: NcData | None = None
+
+    def _fresh_data(self) -> NcData:
+        return copy.deepcopy(self.data) if self.data is not None else NcData()
+
+    def iter_check(self, name: str, text: str, *, programs: Any = None,
+                   should_stop: Callable[[], bool] | None = None) -> Iterator[CheckAlarm]:
+        """Every problem of ``text`` on this machine and data (see :func:`iter_check`)."""
+        return iter_check(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
+                          should_stop=should_stop)
+
+    def run_text(self, name: str, text: str, *, programs: Any = None,
+                 should_stop: Callable[[], bool] | None = None) -> RunResult:
+        """Interpret ``text`` headless on this machine and data (see :func:`run_text`)."""
+        return run_text(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
+                        should_stop=should_stop)

@@ -14,9 +14,12 @@ level 7), as the screens always treated such kernels.
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 from typing import Any, Callable
 
+from nck.check import CheckContext
+from nck.ncdata import NcData
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry
 
 UNPROTECTED_LEVEL = 7
@@ -96,6 +99,16 @@ class ActionLevel:
 
 
 @dataclass(frozen=True)
+class CheckSetting:
+    """What the editor's check and simulation run on: :class:`nck.check.CheckContext`.
+
+    The session's machine and a copy of its NC data (tool table, work offsets, R
+    parameters, setting data) taken now; the check and the simulation may then run
+    in a worker thread without touching the kernel.
+    """
+
+
+@dataclass(frozen=True)
 class ProgramSource:
     """The kernel's program source (``read_program``, ``all_programs`` …); ``None`` without one."""
 
@@ -165,6 +178,11 @@ def _action_level(nck: Any, query: ActionLevel) -> int:
     return int(reader(query.action)) if reader else UNPROTECTED_LEVEL
 
 
+def _check_setting(nck: Any, query: CheckSetting) -> CheckContext:
+    data = getattr(nck, "data", None)
+    return CheckContext(getattr(nck, "machine", None), copy.deepcopy(data) if isinstance(data, NcData) else None)
+
+
 def _program_source(nck: Any, query: ProgramSource) -> Any:
     return getattr(nck, "programs", None)
 
@@ -195,6 +213,7 @@ ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     AccessStatus: _access_status,
     RequiredLevel: _required_level,
     ActionLevel: _action_level,
+    CheckSetting: _check_setting,
     ProgramSource: _program_source,
     ProgramNames: _program_names,
     MachineSetupData: _machine_setup,

@@ -5,6 +5,11 @@ on a copy of the text: the check streams its alarms back in batches (each
 faulty line gets its mark as soon as it is known; a newer check makes an older
 one stop), the simulation interprets the program headless and draws the
 collected motions.
+
+Both run on the session's machine and a copy of its NC data (tools, work offsets,
+R parameters, setting data): :meth:`CheckAndSimulation.check_setting` asks the
+bridge for them (query ``CheckSetting``) in the UI thread, before the worker
+starts; the answer's ``iter_check`` and ``run_text`` are what the workers call.
 """
 
 from __future__ import annotations
@@ -16,6 +21,8 @@ from typing import Any
 from textual import work
 from textual.timer import Timer
 from textual.worker import get_current_worker
+
+from nck.queries import CheckSetting
 
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import ErrorMark
@@ -64,6 +71,7 @@ class CheckAndSimulation:
     files: Any
     status: Any
     app: Any
+    ask: Any
 
     def _simulation_menu(self) -> SoftkeyMenu:
         view = lambda v: (lambda s: s.toolpath.view == v)  # noqa: E731
@@ -87,6 +95,11 @@ class CheckAndSimulation:
             ],
         )
 
+    def check_setting(self) -> Any:
+        """The session's machine and a copy of its NC data for one check or simulation
+        (``nck.check.CheckContext``: ``iter_check``, ``run_text``); ask in the UI thread."""
+        return self.ask(CheckSetting())
+
     # -- checks ---------------------------------------------------------------------------------
     def schedule_check(self) -> None:
         """Run the check after a short quiet time (debounce)."""
@@ -109,12 +122,10 @@ class CheckAndSimulation:
         self._check_running = True
         self._show_cursor_message()
         self._check_worker(self._generation, self.program, self.editor.text,
-                           self.files.program_source(self.program))
+                           self.files.program_source(self.program), self.check_setting())
 
     @work(thread=True, exclusive=True, group="program-check", exit_on_error=False)
-    def _check_worker(self, generation: int, program: str, text: str, programs: Any) -> None:
-        from nck.check import iter_check
-
+    def _check_worker(self, generation: int, program: str, text: str, programs: Any, setting: Any) -> None:
         worker = get_current_worker()
 
         pause = _Breather()
@@ -126,7 +137,7 @@ class CheckAndSimulation:
         batch: list[ErrorMark] = []
         name = Path(program).name
         try:
-            for alarm in iter_check(name, text, programs=programs, should_stop=stale):
+            for alarm in setting.iter_check(name, text, programs=programs, should_stop=stale):
                 if stale():
                     return
                 line = (alarm.line or 1) - 1
@@ -178,12 +189,11 @@ class CheckAndSimulation:
         if self.program is None:
             return
         self.toolpath.set_pieces([], "calculating …")
-        self._simulate_worker(self.program, self.editor.text, self.files.program_source(self.program))
+        self._simulate_worker(self.program, self.editor.text, self.files.program_source(self.program),
+                              self.check_setting())
 
     @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
-    def _simulate_worker(self, program: str, text: str, programs: Any) -> None:
-        from nck.check import run_text
-
+    def _simulate_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
         worker = get_current_worker()
         try:
             pause = _Breather()
@@ -192,7 +202,7 @@ class CheckAndSimulation:
                 pause()
                 return worker.is_cancelled
 
-            result = run_text(Path(program).name, text, programs=programs, should_stop=cancelled)
+            result = setting.run_text(Path(program).name, text, programs=programs, should_stop=cancelled)
             pieces = path_from_motions(result.motions)
         except Exception as exc:  # never crash the screen
             self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
