@@ -221,16 +221,21 @@ class MotionBuilder:
                              modal: ModalState, geo: GeometryState, released: list[canon.CanonCommand],
                              own: list[canon.CanonCommand]) -> BlockWords:
         """The block after ``ANG=`` without a plane axis ends a two-line contour (000 L4133-4155):
-        both plane axes and its own ``ANG=``, in the same plane. The first line runs to the
-        corner of the two lines (with its chamfer or rounding; its commands go to ``released``
-        and ``own``); returns this block's words without ``ANG``. Anything else is 12550
-        (000 L4066, L4075, L4079-4080)."""
+        its own ``ANG=`` in the same plane, with both plane axes, one (the other keeps the
+        position reached before the contour) or none (000 L4056-4063). The first line runs to
+        the corner of the two lines (with its chamfer or rounding; its commands go to
+        ``released`` and ``own``); returns this block's words without ``ANG``, a plane axis
+        not written taken as that position. Anything else is 12550 (000 L4066, L4075,
+        L4079-4080)."""
         angle_deg, plane_code, first = first_block
         geo.contour_first = None
         plane = self.path.plane(modal)
-        if ("ANG" not in words.words or not {plane.abscissa, plane.ordinate} <= set(words.axes)
-                or plane.code != plane_code or modal.gcodes.get(1) not in ("G0", "G1")):
+        if ("ANG" not in words.words or plane.code != plane_code
+                or modal.gcodes.get(1) not in ("G0", "G1")):
             raise NcAlarmError(ALARM_NOT_AVAILABLE, "ANG")
+        reached = {axis: modal.position_wcs.get(axis, 0.0) for axis in (plane.abscissa, plane.ordinate)
+                   if axis not in words.axes}
+        words = replace(words, axes={**words.axes, **{axis: (v, "AC") for axis, v in reached.items()}})
         corner = self.path.two_line_corner(angle_deg, words, modal, geo)
         first_line = replace(first, axes={**first.axes, **{axis: (v, "AC") for axis, v in corner.items()}},
                              words={k: v for k, v in first.words.items() if k != "ANG"})

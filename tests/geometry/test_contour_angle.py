@@ -114,3 +114,26 @@ def test_three_straight_lines_round_the_second_corner() -> None:
     assert (first.end_wcs["Z"], first.end_wcs["X"]) == pytest.approx(
         (corner[0] - 7.5 * d1[0], corner[1] - 7.5 * d1[1]))
     assert check_text("TEST.MPF", text) == []
+
+
+@pytest.mark.parametrize("text, end", [
+    # 000 L4059-4060: the abscissa only; the ordinate Y keeps the position reached before, 0
+    ("N10 G1 G17 X0 Y0 F1000\nN20 ANG=45\nN30 X20 ANG=-45\nM30\n", (20.0, 0.0)),
+    # the ordinate only; X keeps 0
+    ("N10 G1 G17 X0 Y0 F1000\nN20 ANG=30\nN30 Y10 ANG=135\nM30\n", (0.0, 10.0)),
+])
+def test_second_block_of_two_lines_with_one_plane_axis(text: str, end: tuple[float, float]) -> None:
+    """Issue 20 (000 L4059-4063): the block that ends a two-line contour may name one axis of
+    the plane; the missing coordinate is the last position reached. Corner by Cramer's rule
+    from the start (0, 0) and the completed end point (by hand: (10, 10) for 45°/-45° to
+    (20, 0); 10 / (0.5 + cos 30°) = 7.3205 along 30°, (6.340, 3.660), for 30°/135° to (0, 10)).
+    Before, check and run refused the block with 12550."""
+    angles = [float(part.split("ANG=")[1].split()[0]) for part in text.splitlines() if "ANG=" in part]
+    corner, _, _ = _corner((0.0, 0.0), angles[0], end, angles[1])
+    assert corner == pytest.approx((10.0, 10.0) if end == (20.0, 0.0) else (6.340, 3.660), abs=1e-3)
+    result = run_text(text)
+    assert result.status == "ended", result.alarms
+    points = [(m.source.n, m.end_wcs["X"], m.end_wcs["Y"]) for m in result.segments[1:]]
+    assert points == [(20, pytest.approx(corner[0]), pytest.approx(corner[1])),
+                      (30, pytest.approx(end[0]), pytest.approx(end[1]))]
+    assert check_text("TEST.MPF", text) == []
