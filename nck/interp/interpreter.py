@@ -195,7 +195,7 @@ class Interpreter:
         from nck.interp.sources import DirectorySource
         from nck.resources import data_path
 
-        if not name.upper().startswith("CYCLE"):
+        if not name.upper().startswith("CYCLE") and name.upper() != "WORKPIECE":  # the blank statement
             return None
         return DirectorySource(data_path("cycles")).read_program(name)
 

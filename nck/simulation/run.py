@@ -1,0 +1,284 @@
+"""Simulate a milling program: the AUTO run's motions swept through a Z-map over the blank.
+
+The program runs through the kernel exactly as ``nck run`` runs it (AUTOMATIC, axes
+referenced, NC START; :func:`nck.headless.run_program`), so the simulation stops with the same
+alarm at the same block as the machine would, and the machining time is the interpolator's
+own simulated time (acceleration, look-ahead, dwells). The executed motions — with tool radius
+compensation, cycles and frames already applied — are taken as the kernel hands them to the
+motion: line and arc segments of the tool tip in the workpiece coordinate system. Arcs are
+sampled with the motion's own arc geometry (:func:`nck.motion.path.arc`) into chords whose
+sagitta stays below a fraction of a cell.
+
+Per-tool times: the run's machining time split in proportion to each tool's share of the
+motions' nominal times (path length over the programmed feed, rapid moves at the rapid
+traverse estimate of ``nck check``). Our choice: the kernel reports one time for the run,
+not one per block.
+
+Events found while sweeping, each naming its block: a rapid move (G0) that cuts material,
+and a feed move that cuts while the spindle stands.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+import numpy as np
+
+from nck import canon
+from nck.errors import NcAlarmError
+from nck.headless import DEFAULT_RAPID_MM_MIN, run_program
+from nck.interp.api import ProgramSource
+from nck.machine import MachineConfig, load_machine
+from nck.motion.path import arc as arc_segment
+from nck.ncdata import NcData
+from nck.simulation.blank import Blank, blank_around, blank_from_text
+from nck.simulation.cutter import Cutter
+from nck.simulation.zmap import ZMap
+
+DEFAULT_RESOLUTION_MM = 0.5
+CUT_EPSILON_MM = 0.01
+"""A move cuts when it lowers some cell by more than this (below: rounding, a touch)."""
+
+_PLANE_INDEX = {"G17": (0, 1), "G18": (2, 0), "G19": (1, 2)}
+_LINEAR_MASK = np.array([True, True, True])
+
+
+@dataclass(frozen=True, slots=True)
+class SimEvent:
+    """Something the sweep found: ``kind`` is ``rapid_cut`` or ``spindle_stopped``."""
+
+    kind: str
+    line: int | None
+    n: int | None
+    depth_mm: float
+
+    @property
+    def text(self) -> str:
+        """The event in the panel's words."""
+        where = f"N{self.n}" if self.n is not None else f"line {self.line}"
+        if self.kind == "rapid_cut":
+            return f"{where}: rapid traverse into material ({self.depth_mm:.2f} mm deep)"
+        return f"{where}: cutting with the spindle stopped ({self.depth_mm:.2f} mm deep)"
+
+
+@dataclass
+class Toolpath:
+    """The executed path as straight chords of the tool tip (WCS), one row per chord."""
+
+    starts: np.ndarray
+    ends: np.ndarray
+    lines: np.ndarray  # 1-based source line of the block (0: unknown)
+    rapid: np.ndarray  # bool
+    tools: np.ndarray  # T number active
+    cutters: list[Cutter | None] = field(default_factory=list)  # the cutters chords index into
+    cutter_of: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int32))
+    spindle_on: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    numbers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))  # N (-1: none)
+
+
+@dataclass
+class Simulation:
+    """The outcome of :func:`simulate`."""
+
+    blank: Blank
+    zmap: ZMap
+    path: Toolpath
+    events: list[SimEvent]
+    alarms: list[NcAlarmError]
+    status: str  # ended, alarm, timeout
+    machine_time_s: float
+    tool_times_s: dict[int, float]
+    blocks: int
+
+
+class _Recorder:
+    """Collects the executed motions with the tool, edge and spindle state in force."""
+
+    def __init__(self, data: NcData, chord_tol_mm: float) -> None:
+        self.data = data
+        self.tol = chord_tol_mm
+        self.tool = 0
+        self.selected = 0
+        self.edge = 1
+        self.spindle_on = False
+        self.tool_times: dict[int, float] = {}
+        self.position: np.ndarray | None = None
+        self.starts: list[np.ndarray] = []
+        self.ends: list[np.ndarray] = []
+        self.meta: list[tuple[int, bool, int, int, bool, int]] = []  # line, rapid, tool, cutter, spindle, N per motion
+        self.counts: list[int] = []
+        self.cutters: list[Cutter | None] = []
+        self._cutter_index: dict[tuple[int, int], int] = {}
+
+    def _cutter(self) -> int:
+        key = (self.tool, self.edge)
+        if key not in self._cutter_index:
+            edge = self.data.edge(self.tool, self.edge if self.edge > 0 else 1) if self.tool else None
+            self._cutter_index[key] = len(self.cutters)
+            self.cutters.append(Cutter.from_edge(self.tool, dict(edge.params)) if edge is not None else None)
+        return self._cutter_index[key]
+
+    def _no_cutter(self) -> int:
+        if (-1, -1) not in self._cutter_index:
+            self._cutter_index[(-1, -1)] = len(self.cutters)
+            self.cutters.append(None)
+        return self._cutter_index[(-1, -1)]
+
+    def __call__(self, command: canon.CanonCommand) -> None:
+        if isinstance(command, canon.ToolSelect):
+            self.selected = command.tool
+            if command.change:
+                self.tool = command.tool
+        elif isinstance(command, canon.AuxFunction) and command.address == "M" and int(command.value) == 6:
+            self.tool = self.selected
+        elif isinstance(command, canon.EdgeSelect):
+            self.edge = command.edge
+        elif isinstance(command, canon.SpindleCommand):
+            if command.state in ("M3", "M4"):
+                self.spindle_on = command.speed_rpm is None or command.speed_rpm > 0.0
+            elif command.state is not None:
+                self.spindle_on = False
+            elif command.speed_rpm is not None and command.speed_rpm <= 0.0:
+                self.spindle_on = False
+        elif isinstance(command, canon.Motion):
+            self._motion(command)
+
+    def _motion(self, motion: canon.Motion) -> None:
+        end_wcs = dict(motion.end_wcs)
+        end_mcs = dict(motion.end_mcs)
+        if self.position is None:
+            start_mcs = dict(motion.start_mcs)
+            self.position = np.array([
+                float(start_mcs.get(a, end_mcs.get(a, 0.0))) + float(end_wcs.get(a, 0.0)) - float(end_mcs.get(a, 0.0))
+                if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ"])
+        start = self.position
+        first = not self.starts
+        end = np.array([float(end_wcs.get(a, start[i])) for i, a in enumerate("XYZ")])
+        points = self._points(motion, start, end)
+        length = float(np.linalg.norm(np.diff(np.vstack([start[None, :], points]), axis=0), axis=1).sum())
+        feed = DEFAULT_RAPID_MM_MIN if motion.kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
+        self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
+        self.starts.append(np.vstack([start[None, :], points[:-1]]))
+        self.ends.append(points)
+        self.counts.append(len(points))
+        # The first motion comes from wherever the machine stands (the reference point, beyond
+        # the blank): it is drawn but cuts nothing (our choice; a real set-up starts clear).
+        cutter = self._cutter() if not first else self._no_cutter()
+        n = motion.source.n if motion.source.n is not None else -1
+        self.meta.append((motion.source.line or 0, motion.kind == "G0", self.tool, cutter, self.spindle_on, n))
+        self.position = end
+
+    def _points(self, motion: canon.Motion, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+        if motion.kind not in ("G2", "G3") or not motion.center_wcs:
+            return end[None, :]
+        plane = _PLANE_INDEX.get(motion.plane, (0, 1))
+        centre = dict(motion.center_wcs)
+        names = "XYZ"
+        c = (float(centre.get(names[plane[0]], start[plane[0]])), float(centre.get(names[plane[1]], start[plane[1]])))
+        segment = arc_segment(start, end, c, plane, motion.kind == "G2", motion.turns, _LINEAR_MASK)
+        if segment.arc is None:
+            return end[None, :]
+        radius = max(segment.arc[4], segment.arc[5])
+        sweep = abs(segment.arc[7])
+        step = 2.0 * math.acos(max(1.0 - self.tol / max(radius, 1e-9), -1.0)) if radius > self.tol else math.pi
+        count = max(1, int(math.ceil(sweep / max(step, 1e-6))))
+        points = segment.positions(np.linspace(0.0, segment.length, count + 1)[1:])
+        points[-1] = end
+        return points
+
+    def toolpath(self) -> Toolpath:
+        if not self.starts:
+            empty = np.zeros((0, 3))
+            return Toolpath(empty, empty, np.zeros(0, np.int32), np.zeros(0, bool), np.zeros(0, np.int32),
+                            self.cutters)
+        counts = np.array(self.counts)
+        meta = np.array(self.meta, dtype=np.int64).reshape(-1, 6)
+        return Toolpath(
+            starts=np.vstack(self.starts), ends=np.vstack(self.ends),
+            lines=np.repeat(meta[:, 0], counts).astype(np.int32),
+            rapid=np.repeat(meta[:, 1].astype(bool), counts),
+            tools=np.repeat(meta[:, 2], counts).astype(np.int32),
+            cutters=self.cutters,
+            cutter_of=np.repeat(meta[:, 3], counts).astype(np.int32),
+            spindle_on=np.repeat(meta[:, 4].astype(bool), counts),
+            numbers=np.repeat(meta[:, 5], counts).astype(np.int64),
+        )
+
+
+def simulate(
+    name: str,
+    text: str,
+    *,
+    machine: MachineConfig | None = None,
+    programs: ProgramSource | None = None,
+    data: NcData | None = None,
+    resolution_mm: float = DEFAULT_RESOLUTION_MM,
+    blank: Blank | None = None,
+    timeout_s: float | None = None,
+) -> Simulation:
+    """Run ``text`` as main program ``name`` as AUTO runs it and cut the blank with it.
+
+    ``blank`` overrides the program's ``WORKPIECE``; without either the blank is a box around
+    the cutting moves. ``data`` (tools, offsets) is used as the run's NC data: pass a copy.
+    """
+    machine = machine or load_machine()
+    data = data if data is not None else NcData()
+    source = programs if programs is not None else _NoPrograms()
+    recorder = _Recorder(data, chord_tol_mm=resolution_mm / 8.0)
+    run = run_program(machine, source, data, name, text=text, timeout_s=timeout_s,
+                      on_command=recorder, keep_commands=False)
+    path = recorder.toolpath()
+    blank = blank or blank_from_text(text) or _blank_for(path)
+    zmap = ZMap(blank, resolution_mm)
+    events = sweep_path(zmap, path)
+    nominal = sum(recorder.tool_times.values())
+    share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
+    tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
+    return Simulation(blank, zmap, path, events, list(run.alarms), run.status, run.machine_time_s,
+                      tool_times, run.blocks)
+
+
+def sweep_path(zmap: ZMap, path: Toolpath, upto: int | None = None) -> list[SimEvent]:
+    """Sweep the first ``upto`` chords of ``path`` (all: None) through ``zmap``; return the events.
+
+    Rapid moves and moves with the spindle stopped are swept on their own (so that their cut
+    is theirs alone); runs of cutting chords with the same cutter go in one batch.
+    """
+    total = len(path.starts) if upto is None else min(upto, len(path.starts))
+    events: list[SimEvent] = []
+    if total == 0:
+        return events
+    cutter_of = path.cutter_of[:total]
+    alone = path.rapid[:total] | ~path.spindle_on[:total]
+    # A new batch starts where the cutter changes or at every chord that must go alone.
+    breaks = np.flatnonzero((np.diff(cutter_of) != 0) | alone[1:] | alone[:-1]) + 1
+    bounds = np.concatenate(([0], breaks, [total]))
+    for begin, end in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
+        cutter = path.cutters[int(cutter_of[begin])] if len(path.cutters) else None
+        if cutter is None:
+            continue
+        depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)
+        if alone[begin] and depth.size and float(depth.max()) > CUT_EPSILON_MM:
+            kind = "rapid_cut" if path.rapid[begin] else "spindle_stopped"
+            line = int(path.lines[begin]) or None
+            number = int(path.numbers[begin]) if len(path.numbers) and path.numbers[begin] >= 0 else None
+            if not events or events[-1].line != line or events[-1].kind != kind:
+                events.append(SimEvent(kind, line, number, float(depth.max())))
+            else:
+                last = events[-1]
+                events[-1] = SimEvent(kind, line, number, max(last.depth_mm, float(depth.max())))
+    return events
+
+
+def _blank_for(path: Toolpath) -> Blank:
+    cutting = ~path.rapid
+    points = path.ends[cutting] if np.any(cutting) else path.ends
+    reach = max((c.reach_mm for c in path.cutters if c is not None), default=0.0)
+    return blank_around(points, reach)
+
+
+class _NoPrograms:
+    """A program source without programs (subprogram calls are 14011)."""
+
+    def read_program(self, name: str) -> tuple[str, str] | None:
+        return None

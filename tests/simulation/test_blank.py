@@ -1,0 +1,53 @@
+"""The blank from ``WORKPIECE(...)`` (parameter facts in nck/simulation/blank.py's docstring)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from nck.ncdata import NcData, ToolEdge
+from nck.simulation.blank import blank_from_text
+from nck.simulation.run import simulate
+
+
+def test_box_with_absolute_corners() -> None:
+    blank = blank_from_text('G17\nWORKPIECE(,"",,"BOX",240,25,0,0,-30,-20,30,20)\nM30\n')
+    assert blank is not None and blank.kind == "box" and blank.line == 2
+    assert (blank.x_mm, blank.y_mm, blank.z_mm) == ((-30.0, 30.0), (-20.0, 20.0), (0.0, 25.0))
+
+
+def test_box_with_lengths_and_relative_bottom() -> None:
+    # bits 0: X1/Y1 are lengths from X0/Y0, Z1 is measured from Z0: X -2..182, Y -2..168, Z -28..2.
+    blank = blank_from_text('WORKPIECE(,"",,"BOX",0,2,-30,-80,-2,-2,184,170)')
+    assert blank is not None
+    assert (blank.x_mm, blank.y_mm, blank.z_mm) == ((-2.0, 182.0), (-2.0, 168.0), (-28.0, 2.0))
+
+
+def test_cylinder() -> None:
+    blank = blank_from_text('N10 WORKPIECE(,,,"CYLINDER",192,0,-50,-80,60)')
+    assert blank is not None and blank.kind == "cylinder" and blank.diameter_mm == 60.0
+    assert blank.z_mm == (-50.0, 0.0)
+    assert blank.volume_mm3 == pytest.approx(math.pi * 900.0 * 50.0)
+
+
+def test_other_forms_are_not_read() -> None:
+    assert blank_from_text('WORKPIECE(,"",,"PIPE",192,0,-50,-80,60,40)') is None
+    assert blank_from_text("G0 X10\nM30\n") is None
+
+
+def test_the_control_runs_the_statement_as_a_no_op_and_the_simulation_uses_it() -> None:
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 60.0, 6: 5.0})
+    text = ('N10 WORKPIECE(,,,"CYLINDER",192,0,-20,-80,60)\nN20 T1 M6\nN30 D1 S1000 M3\n'
+            "N40 G0 X-40 Y0 Z2\nN50 G1 Z-5 F300\nN60 X40\nN70 G0 Z10\nN80 M30\n")
+    result = simulate("P.MPF", text, data=data, resolution_mm=0.1)
+    assert result.status == "ended" and result.alarms == []
+    assert result.blank.kind == "cylinder"
+    zmap = result.zmap
+    # Outside the cylinder there is no material; the slot across it (width 10, 5 deep) cuts
+    # the chord band |y| <= 5 of the D60 disc: 2 * (y sqrt(R² - y²) + R² asin(y / R)) at y = 5
+    # = 2 * (5 * sqrt(875) + 900 * asin(1/6)) = 2 * (147.902 + 150.699) = 597.20 mm², 5 deep.
+    band = 2.0 * (5.0 * math.sqrt(875.0) + 900.0 * math.asin(5.0 / 30.0))
+    assert zmap.removed_volume_mm3() == pytest.approx(band * 5.0, rel=0.01)
+    assert zmap.height_at(29.0, 29.0) == pytest.approx(-20.0)  # outside the disc: no material
