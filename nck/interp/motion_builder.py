@@ -59,6 +59,8 @@ ALARM_ADDRESS_TOO_OFTEN = 12010  # address type programmed too often
 AUX_LIMITS = {"M": 5, "S": 3, "H": 3, "T": 1, "D": 1, "F": 6}  # per block (H2, 828D)
 AUX_LIMIT_TOTAL = 10
 CIRCLE_WORDS = ("CR", "AR", "TURN")  # radius, opening angle, helix turns: G2/G3 only
+CENTRE_WORDS = ("I", "J", "K")  # interpolation parameters: a circle's centre or a thread's lead
+LINEAR_KINDS = ("G0", "G1")  # straight lines, where I/J/K mean nothing (001 L3137-3155)
 UNAVAILABLE_WORDS = ("SR", "OVRA")  # retraction on a fast NCK input; override of FA / a spindle
 
 
@@ -603,7 +605,9 @@ class MotionBuilder:
 def _refuse_words_without_effect(words: BlockWords, modal: ModalState) -> None:
     """12550 for a word that would change nothing in this block (issue 20: never parse and drop).
 
-    ``CR=``/``AR=``/``TURN=`` only describe a G2/G3 circle; ``RPL=`` is the plane angle of a
+    ``CR=``/``AR=``/``TURN=`` only describe a G2/G3 circle, ``I``/``J``/``K`` a circle's centre
+    or a thread's lead, so they mean nothing under G0/G1 (the manuals name no alarm: our
+    choice, the number of the other words without effect); ``RPL=`` is the plane angle of a
     ``ROT``/``AROT`` in the same block. ``SR=`` needs the fast NCK inputs of "multiple feedrates
     in one block" (002 L56700-56712) and ``OVRA[]`` positioning axes or a programmable spindle
     override (002 L56523-56527, L54153); this control has neither. The number is the one the
@@ -612,6 +616,10 @@ def _refuse_words_without_effect(words: BlockWords, modal: ModalState) -> None:
     present = words.words
     if modal.gcodes.get(1) not in ("G2", "G3"):
         for key in CIRCLE_WORDS:
+            if key in present:
+                raise NcAlarmError(ALARM_NOT_AVAILABLE, key)
+    if modal.gcodes.get(1, "G1") in LINEAR_KINDS:
+        for key in CENTRE_WORDS:
             if key in present:
                 raise NcAlarmError(ALARM_NOT_AVAILABLE, key)
     if "RPL" in present and words.gcodes.get(3) not in ("ROT", "AROT"):

@@ -14,6 +14,9 @@ and in ``nck check`` alike — never parsed and then dropped (issue 20).
   ``ROT``/``AROT`` in the plane (002 L29255). In a block without a circle or without the
   rotation they would change nothing: refused with 12550, the choice the control already made
   for ``ANG=`` in a circle block (tests/geometry/test_contour_angle.py).
+* ``I``, ``J``, ``K`` are interpolation parameters: the centre of a circle (001 L3137-3155) or
+  the lead of a thread (G33). Under G0/G1 they mean nothing (``G1 X10 I5`` was taken and
+  dropped): refused with 12550 as well; the manuals name no alarm for it.
 """
 
 from __future__ import annotations
@@ -36,6 +39,22 @@ def first_alarm(text: str) -> tuple[tuple[int, int | None] | None, tuple[int, in
 def test_circle_words_in_a_linear_block_are_refused(word: str, motion: str) -> None:
     text = f"N10 {motion} X10 Y0 F100 {word}\nN20 M30\n"
     assert first_alarm(text) == ((12550, 1), (12550, 1))
+
+
+@pytest.mark.parametrize("word", ["I5", "J=AC(3)", "K-2"])
+@pytest.mark.parametrize("motion", ["G1", "G0"])
+def test_interpolation_parameters_in_a_linear_block_are_refused(word: str, motion: str) -> None:
+    text = f"N10 G17 G0 X0 Y0\nN20 {motion} X10 F100 {word}\nN30 M30\n"
+    assert first_alarm(text) == ((12550, 2), (12550, 2))
+
+
+def test_interpolation_parameters_still_give_the_centre_and_the_lead() -> None:
+    # G2 with I: centre 10 mm along X from the start (001 L3148); G33 with K: the lead.
+    result = run_text("N10 G17 G0 X0 Y0\nN20 G2 X20 Y0 I10 J0 F100\nN30 M30\n")
+    assert result.status == "ended", result.alarms
+    assert result.segments[-1].center_wcs["X"] == pytest.approx(10.0)
+    result = run_text("N10 G0 X0 Y0 Z0 S100 M3\nN20 G33 Z-10 K2\nN30 M30\n")
+    assert result.status == "ended", result.alarms
 
 
 def test_circle_words_in_a_circle_block_still_act() -> None:
