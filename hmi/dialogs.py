@@ -62,32 +62,43 @@ class ChoiceDialog(AreaDialog[str | None]):
 
 
 class ValueDialog(AreaDialog[str | None]):
-    """Enter one value (Enter confirms, F10 or Escape cancels); returns the text typed."""
+    """Enter one value or a password: Enter confirms, F10 or Esc cancels; returns the text typed.
 
+    ``hint`` is a line about the value (unit, limits, activation) above the field. A value
+    is returned without surrounding blanks; a password exactly as typed.
+    """
+
+    DEFAULT_CSS = """
+    #value-hint { height: auto; color: $secondary; }
+    """
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
 
-    def __init__(self, title: str, initial: str = "", hint: str = "") -> None:
+    def __init__(self, title: str, value: str = "", hint: str = "", password: bool = False) -> None:
         super().__init__(classes="value-dialog")
         self._title = title
-        self._initial = initial
+        self._value = value
         self._hint = hint
+        self._password = password
 
     def compose(self) -> ComposeResult:
-        """Title, field and the key hint."""
+        """Title, hint, input field, keys."""
         with Vertical(id="value-box"):
-            yield Static(self._title, id="value-title")
-            yield Input(self._initial, id="value-input")
-            yield Static(self._hint or "Enter confirm   F10 cancel", id="value-keys")
+            yield Static(self._title, id="value-title", markup=False)
+            if self._hint:
+                yield Static(self._hint, id="value-hint", markup=False)
+            yield Input(self._value, password=self._password, id="value-input")
+            yield Static("Enter confirm   F10 / Esc cancel", id="value-keys")
 
     def on_mount(self) -> None:
-        """The field has the focus, its text selected for overtyping."""
+        """The field has the focus; no blinking cursor (stable screenshots)."""
         field = self.query_one(Input)
         field.cursor_blink = False
         field.focus()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
-        """Enter: return the value."""
-        self.dismiss(event.value.strip())
+        """Enter: return the text."""
+        event.stop()
+        self.dismiss(event.value if self._password else event.value.strip())
 
     def action_cancel(self) -> None:
         """Close without a value."""

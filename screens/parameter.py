@@ -22,10 +22,10 @@ from nck.commands import Accepted
 from nck.status import NckStatus
 
 from hmi.area import AreaBase
-from hmi.dialogs import ConfirmDialog
+from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.softkeys import Softkey, SoftkeyMenu
-from screens.parameter_tables import (
-    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, ValueDialog,
+from hmi.widgets.data_table import (
+    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow,
 )
 from screens.parameter_views import (
     active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,

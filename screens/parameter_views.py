@@ -1,6 +1,6 @@
 """The tables of the Parameter area, built from the NC data (an :class:`nck.queries.DataView`, read only).
 
-Each ``*_table`` function returns a :class:`~screens.parameter_tables.DataTable`
+Each ``*_table`` function returns a :class:`~hmi.widgets.data_table.DataTable`
 whose editable cells name the datum for ``WriteData``: ``$TC_DP<n>[t,d]``,
 ``$P_UIFR[n,axis,comp]``, ``$P_UBFR[axis,comp]``, ``R<n>``, ``GUD:<name>``,
 ``SD…``. ``levels(name)`` returns the access level a write needs (from the
@@ -15,7 +15,7 @@ from nck.number_text import fixed, trimmed
 from nck.queries import DataView
 from nck.status import NckStatus
 
-from screens.parameter_tables import Cell, Column, DataTable
+from hmi.widgets.data_table import Cell, Column, DataTable
 
 LevelOf = Callable[[str], int]
 

@@ -26,10 +26,10 @@ from nck.commands import Accepted
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
-from hmi.dialogs import ConfirmDialog
+from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.softkeys import Softkey, SoftkeyMenu
-from screens.parameter_tables import (
-    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, ValueDialog,
+from hmi.widgets.data_table import (
+    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow,
 )
 
 MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",

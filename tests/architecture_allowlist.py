@@ -50,7 +50,6 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
         ("screens.program_manager", "nck.access"),
         ("screens.program_manager", "nck.storage"),
         ("screens.program_manager", "screens.program_files"),
-        ("screens.setup", "screens.parameter_tables"),
     }
 )
 """(importer, imported) pairs that break the layer contract."""

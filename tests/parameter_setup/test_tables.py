@@ -5,7 +5,7 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from screens.parameter_tables import Cell, Column, DataTable, TableCursor, render_table
+from hmi.widgets.data_table import Cell, Column, DataTable, TableCursor, render_table
 
 
 def table(rows: int) -> DataTable:

@@ -1,8 +1,8 @@
-"""Editable data tables of the Parameter and Setup areas, and their input dialogs.
+"""Editable data tables of the Parameter and Setup areas.
 
 A :class:`DataTable` is a list of rows of :class:`Cell` s; a cell that names a
 datum (``R10``, ``$TC_DP3[1,1]``, ``MD32000[X]`` …) can be edited: the area
-opens a :class:`ValueDialog` and sends ``WriteData`` to the kernel, which checks
+opens a :class:`hmi.dialogs.ValueDialog` and sends ``WriteData`` to the kernel, which checks
 the access level and the limits. :class:`TableCursor` keeps the selected row
 and column and the first row on display; :func:`render_table` draws a table as
 fixed-width text with the selected cell in inverse video and data the current
@@ -14,13 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from rich.text import Text
-from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Vertical
 from textual.widget import Widget
-from textual.widgets import Input, Static
-
-from hmi.dialog import AreaDialog
 
 
 EDIT_BINDINGS = [  # the keys of an editable table (screen bindings)
@@ -186,46 +181,3 @@ class TableWindow(Widget):
         drawn = render_table(table, cursor, self.size.height or 30, level, show_cursor)
         self._shown_key = (table, cursor.row, cursor.column, cursor.top, level, show_cursor)  # clamped
         return drawn
-
-
-class ValueDialog(AreaDialog[str | None]):
-    """Enter a value (or a password): Enter confirms, F10 or Esc cancels."""
-
-    DEFAULT_CSS = """
-    ValueDialog { align: center middle; }
-    #value-box { width: 72; height: auto; background: $surface; border: thick $primary; padding: 0 1; }
-    #value-title { height: 1; background: $panel; color: $primary; text-style: bold; }
-    #value-hint, #value-keys { height: auto; color: $secondary; }
-    """
-    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
-
-    def __init__(self, title: str, value: str = "", hint: str = "", password: bool = False) -> None:
-        super().__init__(classes="value-dialog")
-        self._title = title
-        self._value = value
-        self._hint = hint
-        self._password = password
-
-    def compose(self) -> ComposeResult:
-        """Title, hint, input field, keys."""
-        with Vertical(id="value-box"):
-            yield Static(self._title, id="value-title", markup=False)
-            if self._hint:
-                yield Static(self._hint, id="value-hint", markup=False)
-            yield Input(self._value, password=self._password, id="value-input")
-            yield Static("Enter confirm   F10 / Esc cancel", id="value-keys")
-
-    def on_mount(self) -> None:
-        """Focus the field; no blinking cursor (stable screenshots)."""
-        field_ = self.query_one(Input)
-        field_.cursor_blink = False
-        field_.focus()
-
-    def on_input_submitted(self, message: Input.Submitted) -> None:
-        """Enter: return the text."""
-        message.stop()
-        self.dismiss(message.value)
-
-    def action_cancel(self) -> None:
-        """Close without a value."""
-        self.dismiss(None)
