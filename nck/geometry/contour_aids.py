@@ -150,11 +150,11 @@ def _chord_point_forward(flat: FlatElement, dist: float) -> float | None:
     return u if u <= flat.length + 1e-12 else None
 
 
-def corner_turn(first: FlatElement, second: FlatElement) -> float:
+def corner_turn(first: FlatElement, second: FlatElement) -> tuple[float, float]:
     """(cross, dot) of the end tangent of ``first`` and the start tangent of ``second`` in the plane."""
     t1 = first.tangent(first.length)
     t2 = second.tangent(0.0)
-    return t1[0] * t2[1] - t1[1] * t2[0], t1[0] * t2[0] + t1[1] * t2[1]  # type: ignore[return-value]
+    return t1[0] * t2[1] - t1[1] * t2[0], t1[0] * t2[0] + t1[1] * t2[1]
 
 
 def _check(value: float) -> None:
