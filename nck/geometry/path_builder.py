@@ -52,7 +52,8 @@ ALARM_FRAME_INSTRUCTION = 18311  # G58/G59 without MD24000 FRAME_ADD_COMPONENTS
 ALARM_FINE_NOT_CONFIGURED = 18312  # G58/G59 without a fine offset (MD18600 MM_FRAME_FINE_TRANS)
 ROTARY_MODES = ("DC", "ACP", "ACN")
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
-PATH_KINDS = ("G0", "G1", "G33") + ARC_KINDS
+THREAD_KINDS = ("G33", "G331", "G332")  # G331/G332: rigid tapping with the spindle in position control
+PATH_KINDS = ("G0", "G1") + THREAD_KINDS + ARC_KINDS
 INTERP_LETTERS = "IJK"
 ROUND_DIGITS = 9
 
@@ -298,14 +299,14 @@ class PathBuilder:
         else:
             element = LineElement(self._vec(start), self._vec(end))
         lead = None
-        if kind == "G33":
+        if kind in THREAD_KINDS:
             lead = self._thread_lead(words, geo, units)
             self._check_thread_frame(words, geo.frames.transform(), start, end)
         context = {
             "kind": kind, "source": words.source, "plane": pl.code, "programmed": programmed,
             "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
             "feed": feed, "lead": lead, "gcodes": dict(modal.gcodes),
-            "thread_start": self._thread_start_deg() if lead is not None else None,
+            "thread_start": self._thread_start_deg() if kind == "G33" else None,
             "exact": modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9",
             "window": modal.gcodes.get(12, "G601"), "units": units,
             "end_other": {a: end[a] for a in end if a not in self.geo_axes},

@@ -188,15 +188,14 @@ class Interpreter:
         self.builder.sync_position(modal, known)  # WCS via frames and tool offset
 
     def read_cycle(self, name: str) -> tuple[str, str] | None:
-        """A standard cycle shipped as an NC program in ``data/cycles`` (CYCLE81 …), or None.
+        """A standard cycle shipped as an NC program in ``data/cycles`` (CYCLE81 …, HOLES2,
+        WORKPIECE, and the cycles' own helpers such as CYC_DRILL), or None.
 
         Programs of the program source with the same name win (a user's own cycle).
         """
         from nck.interp.sources import DirectorySource
         from nck.resources import data_path
 
-        if not name.upper().startswith("CYCLE") and name.upper() != "WORKPIECE":  # the blank statement
-            return None
         return DirectorySource(data_path("cycles")).read_program(name)
 
     def needs_preprocessing_stop(self) -> bool:

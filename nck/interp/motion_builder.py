@@ -413,6 +413,12 @@ class MotionBuilder:
             # Feed = spindle speed x lead; a stopped spindle means the axes wait (no alarm).
             return {"feed": modal.feed or None, "feed_mm_min": 0.0, "inverse_time": False,
                     "per_rev_rpm": _turning_rpm(modal), "feed_mm_rev": None}
+        if kind in ("G331", "G332"):
+            # Rigid tapping: the spindle is in position control (after SPOS) and turns with the
+            # axis at the programmed S, so the path feed is S x lead (002 L19681, tapping without
+            # compensating chuck; the lead's sign, right/left hand, is not simulated).
+            return {"feed": modal.feed or None, "feed_mm_min": 0.0, "inverse_time": False,
+                    "per_rev_rpm": modal.spindle_speed_rpm, "feed_mm_rev": None}
         if modal.feed <= 0:
             raise NcAlarmError(ALARM_NO_FEED)
         feed_type = modal.gcodes.get(15, "G94")

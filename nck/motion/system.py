@@ -34,6 +34,7 @@ from nck.motion.spindle import Spindle
 
 ALARM_VALUE_RANGE = 12160  # a target position that is not a finite number or out of range
 POSITION_RANGE_MM = 1e9  # far beyond the value range of any axis (±999 999.999 mm at MD10200 = 1000)
+RIGID_TAPPING = frozenset({"G331", "G332"})  # the spindle is interpolated with the axis: feed = S x lead from the block
 
 
 class PlannedMotion(PathInterpolator):
@@ -136,7 +137,7 @@ class PlannedMotion(PathInterpolator):
         if not rapid:
             planned.kind = item.kind
             planned.programmed_mm_min = item.feed_mm_min if item.feed_mm_min and item.feed_mm_min > 0 else None
-            if item.feed_mm_rev is not None and self._master() is not None:
+            if item.feed_mm_rev is not None and self._master() is not None and item.kind not in RIGID_TAPPING:
                 planned.feed_mm_rev = item.feed_mm_rev  # the feed follows the master spindle
             planned.dry_run = self.dry_run
             planned.feed_mm_s = self._segment_feed_mm_s(planned)
