@@ -9,9 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from nck.workpiece import Box, Cylinder, MachineSetup
-
-__all__ = ["Box", "Cylinder", "MachineSetup"]  # re-exported: screens build a WriteMachineSetup with them
+# Re-exported: screens build a WriteMachineSetup with them.
+from nck.workpiece import Box as Box, Cylinder as Cylinder, MachineSetup as MachineSetup
 
 
 @dataclass(frozen=True, slots=True)
@@ -208,10 +207,52 @@ class WriteMachineSetup:
     setup: MachineSetup
 
 
+@dataclass(frozen=True, slots=True)
+class SetActualValue:
+    """Set WO / PRESET / scratching: from now on ``axis`` reads ``value_mm`` in the WCS.
+
+    ``point_mcs`` ``None``: the actual position of the tool (its WCS value through frames
+    and tool length, as displayed) is set — "Set WO" in JOG. Given (a dict of MCS positions
+    of the geometry axes, e.g. a measured edge, corner or centre from ``nck.measuring``):
+    that workpiece point gets ``value_mm`` on ``axis`` (no tool offset) — the "Set WO" of the
+    measuring screens.
+
+    ``target``: ``None`` = as the control does it: the active settable frame (G54 … G599),
+    under G500 the system frame for PRESET and scratching ``$P_SETFR`` (needs MD28082 bit 0);
+    or ``"G54"`` … ``"G599"`` / ``"SETFR"`` explicitly. The translation of that frame changes
+    by what removes the difference (with rotated frames along the rotated axes); the change
+    is active at once. Refused while the channel is active; needs the level of "write work
+    offset" (MD9210) for a settable frame, of PRESET (MD9220) for ``$P_SETFR``.
+    """
+
+    axis: str
+    value_mm: float
+    target: str | None = None
+    point_mcs: dict[str, float] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class SetWorkOffsetRotation:
+    """Write the rotation of a work offset (degrees about ``axis``, "Z" in G17), e.g. the angle
+    of a rotated corner from ``nck.measuring.rotated_corner``; ``target`` as in
+    :class:`SetActualValue` (``$P_SETFR`` holds no rotation: a G500 target is refused).
+    Write the rotation first, then set the corner with :class:`SetActualValue`."""
+
+    angle_deg: float
+    axis: str = "Z"
+    target: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class DeleteActiveWorkOffset:
+    """"Delete active WO": the translations of the active settable frame (G54 …) become 0;
+    under G500 those of ``$P_SETFR``. Active at once; same levels as :class:`SetActualValue`."""
+
+
 Command = (
     SelectMode | SelectMachineFunction | SelectIncrement | CycleStart | CycleStop | Reset
     | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
     | CancelAlarms | Jog | StartBlockSearch | WriteData | EnterPassword | DeletePassword
     | SetKeyswitch | ChangePassword | DeleteToolEdge | ClearRParameters | ActivateMachineData
-    | WriteMachineSetup
+    | WriteMachineSetup | SetActualValue | SetWorkOffsetRotation | DeleteActiveWorkOffset
 )

@@ -45,6 +45,7 @@ from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
 from nck.kernel_manual import ManualControl
 from nck.kernel_settings import ControlSettings
+from nck.kernel_setup import JobSetup
 from nck.kernel_status import StatusView
 from nck.machine import MachineConfig, load_machine
 from nck.motion.instant import InstantMotion, instant_motion_factory
@@ -81,7 +82,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data)
 
 
-class Nck(ManualControl, ControlSettings, StatusView):
+class Nck(ManualControl, ControlSettings, StatusView, JobSetup):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -522,6 +523,7 @@ class Nck(ManualControl, ControlSettings, StatusView):
         if not self._pc["program_test"]:
             self._test_motion = None
         self._activate_data("reset")  # stored MD of activation re/cf take effect
+        self._reset_system_frames()
         return Accepted()
 
     def _emergency_stop(self, command: cmd.EmergencyStop) -> SubmitResult:
@@ -616,6 +618,9 @@ class Nck(ManualControl, ControlSettings, StatusView):
         cmd.ClearRParameters: "_clear_r_parameters",
         cmd.ActivateMachineData: "_activate_machine_data",
         cmd.WriteMachineSetup: "_write_machine_setup",
+        cmd.SetActualValue: "_set_actual_value",
+        cmd.SetWorkOffsetRotation: "_set_work_offset_rotation",
+        cmd.DeleteActiveWorkOffset: "_delete_active_work_offset",
     }
 
     # ------------------------------------------------------------- cycle

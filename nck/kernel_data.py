@@ -24,7 +24,6 @@ from nck import commands as cmd
 from nck.access import AccessDenied, AccessError, Action
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.machine_data import DataError, MachineDataStore
-from nck.workpiece import MachineSetup
 from nck.writes import DataWriter, WriteRefused
 
 
@@ -106,18 +105,6 @@ class DataWrites:
             return Rejected(f"T{command.tool} is the active tool of a running program")
         for key in keys:
             del tools[key]
-        return Accepted()
-
-    def _write_machine_setup(self, command: cmd.WriteMachineSetup) -> SubmitResult:
-        try:
-            self._require(Action.WRITE_MACHINE_SETUP)
-        except AccessError as error:
-            return Rejected(str(error))
-        if not isinstance(command.setup, MachineSetup):
-            return Rejected("not a machine set-up")
-        if self._sit.channel == "active":  # type: ignore[attr-defined]
-            return Rejected("The machine set-up can be changed only while the channel is not active")
-        self.data.machine_setup = command.setup  # type: ignore[attr-defined]
         return Accepted()
 
     def _clear_r_parameters(self, command: cmd.ClearRParameters) -> SubmitResult:

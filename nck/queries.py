@@ -20,6 +20,12 @@ from typing import Any, Callable
 
 from nck.check import CheckContext
 from nck.ncdata import NcData
+# The measuring screens' arithmetic (pure functions on touch positions, nck.measuring),
+# re-exported here so that screens reach it through the façade.
+from nck.measuring import (Circle as Circle, Corner as Corner, circle as circle, corner as corner,
+                           edge_position as edge_position, offset_for as offset_for,
+                           rotated_corner as rotated_corner, tool_length as tool_length,
+                           tool_radius as tool_radius, z_surface as z_surface)
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry
 
 UNPROTECTED_LEVEL = 7

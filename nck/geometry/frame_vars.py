@@ -5,6 +5,9 @@
   selected again (G500/G54…);
 * ``$P_PFRAME[axis, comp]`` — the programmable frame, effective at once;
 * ``$P_UBFR[axis, comp]`` — the (first) channel basic frame in the NC data;
+* ``$P_SETFR[axis, TR]`` — the system frame for PRESET and scratching in the NC data
+  (translations only; exists when MD28082 bit 0 is set, else alarm 12550: 002 L30640-30650);
+  active again with G500/G54… or after RESET as MD24006 says;
 * ``$P_UIFRNUM`` — index of the active settable frame;
 * ``$AA_IW[axis]`` — the actual position in the WCS (through frames and tool length).
 
@@ -25,7 +28,8 @@ from nck.geometry.frames import Frame, as_matrix3, rpy_matrix
 from nck.ncdata import WorkOffset
 
 COMPONENTS = frozenset(("TR", "FI", "RT", "SC", "MI"))
-NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_IFRAME", "$P_UIFRNUM", "$AA_IW"))
+NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_IFRAME", "$P_UIFRNUM", "$AA_IW", "$P_SETFR"))
+SETFR_MASK_BIT = 1  # MD28082 bit 0: the system frame for PRESET and scratching is configured
 ALARM_INDEX = 17020  # illegal array index
 ALARM_SCALE_ZERO = 18309
 
@@ -67,6 +71,9 @@ def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
         # G700/G710 in the programmed one (002 L11680-11697, table L11793-11817).
         units = path.units(modal)
         return value * units.position_mm / units.data_mm
+    if name == "$P_SETFR":
+        axis, comp = _setframe_address(interp, name, indices)
+        return _stored_component(interp.data.setframe, axis, comp, path.units(modal).data_mm)
     whole = _whole_frame_read(interp, name, indices)
     if whole is not None:
         return whole
@@ -100,6 +107,11 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     number = float(to_number(value, name))
     modal = interp.modal
     path = interp.builder.path
+    if name == "$P_SETFR":
+        axis, comp = _setframe_address(interp, name, indices)
+        _guard_setframe(interp)
+        _set_stored(interp.data.setframe, axis, comp, number, path.units(modal).data_mm)
+        return
     if name == "$P_PFRAME":
         axis, comp = _address(interp, name, indices)
         _guard_active(interp)
@@ -147,6 +159,26 @@ def _guard_active(interp: Any) -> None:
 
     def undo() -> None:
         geo.frames = frames
+
+    _journal(interp, undo)
+
+
+def _setframe_address(interp: Any, name: str, indices: tuple[Any, ...]) -> tuple[str, str]:
+    """``$P_SETFR[axis, TR]``: configured by MD28082 bit 0, translations only (our model)."""
+    if not int(interp.machine.md_value("MD28082", None, 33) or 0) & SETFR_MASK_BIT:
+        raise NcAlarmError(12550, name)
+    axis, comp = _address(interp, name, indices)
+    if comp != "TR":
+        raise NcAlarmError(ALARM_INDEX, name)
+    return axis, comp
+
+
+def _guard_setframe(interp: Any) -> None:
+    data = interp.data
+    old = copy.deepcopy(data.setframe)
+
+    def undo() -> None:
+        data.setframe = old
 
     _journal(interp, undo)
 

@@ -92,7 +92,8 @@ class PathBuilder:
             modal.geometry = geo
         code = modal.gcodes.get(8, "G500")
         if not geo.loaded:
-            geo.frames = geo.frames.with_base(self._base_frame(modal))
+            geo.setframe_active = bool(int(self.machine.md_value("MD24006", None, 1) or 0) & 1)
+            geo.frames = geo.frames.with_base(self._base_frame(modal, geo.setframe_active))
             geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
             geo.feed_type = modal.gcodes.get(15, "G94")
             geo.loaded = True
@@ -105,7 +106,16 @@ class PathBuilder:
     def select_settable(self, modal: Any, geo: GeometryState) -> None:
         """G500/G54… written in the block: (re)activate the settable frame from the NC data."""
         code = modal.gcodes.get(8, "G500")
+        geo.setframe_active = True  # G500/G54… activate the system frames of the data (002 L30660-30664)
+        geo.frames = geo.frames.with_base(self._base_frame(modal, True))
         geo.frames = geo.frames.with_settable(code, self._settable_frame(code, modal))
+
+    def activate_stored_frames(self, modal: Any, position_mcs: Mapping[str, float]) -> None:
+        """A work offset or ``$P_SETFR`` changed by an operator action (Set WO, PRESET, measuring
+        in JOG): take the stored frames into the active chain at once; the WCS follows from the MCS."""
+        geo = self.state(modal)
+        self.select_settable(modal, geo)
+        self._resync(modal, geo, position_mcs)
 
     def _settable_frame(self, code: str, modal: Any) -> Frame:
         offset = self.data.settable_frames.get(code)
@@ -113,8 +123,19 @@ class PathBuilder:
             return Frame(geometry_axes=self.geo_axes)
         return frame_from_work_offset(offset, self.geo_axes, self.units(modal).basic_mm)
 
-    def _base_frame(self, modal: Any) -> Frame:
+    def _base_frame(self, modal: Any, with_setframe: bool) -> Frame:
+        """The basic frame, with the PRESET/scratching system frame ``$P_SETFR`` outside it when
+        active: both sit between the BCS and the settable frame and G153/SUPA suppress both
+        (002 L28330-28345). ``$P_SETFR`` holds translations only, so it adds to the basic
+        frame's translation (applied after its rotation)."""
         offset: WorkOffset = self.data.base_frame
+        setframe = getattr(self.data, "setframe", None)
+        if with_setframe and setframe is not None and any(setframe.trans.values()):
+            trans = dict(offset.trans)
+            for axis, value in setframe.trans.items():
+                trans[axis] = trans.get(axis, 0.0) + float(value)
+            offset = WorkOffset(trans=trans, fine=dict(offset.fine), rot=dict(offset.rot),
+                                scale=dict(offset.scale), mirror=dict(offset.mirror))
         return frame_from_work_offset(offset, self.geo_axes, self.units(modal).basic_mm)
 
     def units(self, modal: Any) -> UnitSystem:

@@ -59,6 +59,8 @@ class GeometryState:
         accel_pct: ACC[axis] acceleration factors in percent (002 L7433-7450), axes not at 100;
             reduced to 100 by RESET/M30 (MD32320 bit 0 = 0, the only setting modelled).
         loaded: False after RESET: settable and basic frame are read again from the NC data.
+        setframe_active: the system frame for PRESET and scratching (``$P_SETFR``) is part of
+            the chain; after RESET as MD24006 bit 0 says, again with G500/G54… (002 L30660-30664).
         contour_first: the first block of a two-line contour definition (``ANG=`` without a
             plane axis) as (angle in degrees, plane code, the block's words), waiting for the
             block that ends the contour; None otherwise.
@@ -84,6 +86,7 @@ class GeometryState:
     feed_override_pct: float = 100.0
     accel_pct: dict[str, float] = field(default_factory=dict)
     loaded: bool = False
+    setframe_active: bool = True
     contour_first: tuple[float, str, Any] | None = None
     waiting: tuple[Any, ...] = ()
 
