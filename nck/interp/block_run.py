@@ -25,6 +25,7 @@ from nck.interp.values import (GUD_VALUES_MEM_KB, LUD_VALUES_MEM_KB, Axis, Cell,
 from nck.iso import macros, subprograms
 from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES
+from nck.resources import load_toml
 
 if TYPE_CHECKING:
     from nck.interp.interpreter import Interpreter
@@ -554,6 +555,9 @@ class BlockRun:
         frame.display_off = self.frame.display_off or bool(program.proc and program.proc.displof)
         self._bind_parameters(program, call, frame)
         frame.locals = dict(frame.params)
+        if self.frame.modal_call is not None and call is not self.frame.modal_call \
+                and call.name.upper() in load_toml("cycles", "cycles.toml")["modal_call"]["passed_into"]:
+            frame.modal_call = self.frame.modal_call  # a position pattern cycle (HOLES1 …) calls it
         state.frames.append(frame)
 
     def _bind_parameters(self, program: Program, call: ast.Call, frame: Frame) -> None:
@@ -561,6 +565,7 @@ class BlockRun:
         args = call.args or ()
         if len(args) > len(params):
             raise NcAlarmError(12340, call.name)
+        frame.given_params = tuple(i < len(args) and args[i] is not None for i in range(len(params)))
         for position, param in enumerate(params):
             name = param.name or f"_P{position}"
             arg = args[position] if position < len(args) else None

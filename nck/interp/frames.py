@@ -65,6 +65,7 @@ class Frame:
     single_block_off: bool = False  # SBLOF active at this level (inherited by calls)
     display_off: bool = False  # DISPLOF: blocks of this level are not displayed
     modal_call: Any = None  # MCALL: the ast.Call made after every motion block of this level
+    given_params: tuple[bool, ...] = ()  # $P_SUBPAR: which PROC parameters the call programmed
     iso_macro: Any = None  # ISO G65/G66: the $C_… arguments of this level (nck.iso.macros)
     # active REPEAT sections: (last line index, first line index, passes left, return index)
     repeats: list[tuple[int, int, int, int]] = field(default_factory=list)

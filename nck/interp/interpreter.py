@@ -531,6 +531,12 @@ class Interpreter:
         """Program name of the current level."""
         return self._state.frames[-1].program.name if self._state.frames else ""
 
+    def parameter_given(self, number: int) -> bool | None:
+        """``$P_SUBPAR[n]``: whether the call of the current level programmed parameter ``n``
+        (1 = first); None when the level has no parameter ``n``."""
+        given = self._state.frames[-1].given_params if self._state.frames else ()
+        return given[number - 1] if 1 <= number <= len(given) else None
+
     def flag(self, name: str) -> bool:
         """Program-control flags for ``$P_SEARCH``, ``$P_ISTEST``, ``$P_DRYRUN``."""
         return bool(self.flags.get(name, False))

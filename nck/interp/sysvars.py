@@ -74,6 +74,9 @@ class SysContext(Protocol):
     def flag(self, name: str) -> bool:
         """Program-control flags: ``search``, ``test``, ``dry_run``."""
 
+    def parameter_given(self, number: int) -> bool | None:
+        """``$P_SUBPAR[n]``: parameter ``n`` of the current PROC programmed in its call."""
+
     def write_setting_data(self, name: str, indices: tuple[Any, ...], value: Any) -> None:
         """Write a setting datum (``SC_WEAR_SIGN``) at the current protection level."""
 
@@ -115,6 +118,12 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     if name == "$P_EP":
         axis = _axis_arg(ctx, name, indices)
         return float(modal.position_wcs.get(axis, 0.0))
+    if name == "$P_SUBPAR":  # was parameter n (1, 2, …) of this PROC programmed in the call?
+        number = to_number(indices[0], name) if len(indices) == 1 else 0
+        given = ctx.parameter_given(int(number)) if number == int(number) else None
+        if given is None:
+            raise NcAlarmError(17020, name)
+        return given
     if indices and name not in ("$P_GG", "$P_S") and not _TC_DP.match(name) and not _MD.match(name):
         raise NcAlarmError(12550, name)
     if name == "$P_F":
