@@ -54,7 +54,7 @@ def release(released: list[canon.CanonCommand], waiting: tuple[WaitingBlock, ...
     queue = list(waiting)
     for source, run in _runs(released):
         index = next((i for i, block in enumerate(queue) if block.moves and block.source == source), None)
-        if index is None:
+        if index is None or source is None:
             out.extend(run)
             continue
         for block in queue[:index]:

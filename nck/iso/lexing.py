@@ -25,7 +25,7 @@ class Word:
 
 
 _WORD = re.compile(r"\s*([A-Z])\s*([+-]?(?:\d+\.?\d*|\.\d+))")
-_COMMA_WORD = re.compile(r"\s*,\s*([RC])\s*([+-]?(?:\d+\.?\d*|\.\d+))")
+_COMMA_WORD = re.compile(r"\s*,\s*([RCA])\s*([+-]?(?:\d+\.?\d*|\.\d+))")  # ,R ,C ,A (000 L4034-4041)
 
 
 def strip_comments(text: str) -> str:

@@ -333,6 +333,8 @@ def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSetting
             values["D"] = values.pop("H")
         elif code == "G49":
             values.setdefault("D", 0)
+    if modal.turning and modal.motion == "G1" and cycle_code is None and modal.cycle.code is None:
+        _turning_corner_words(values)
     if cycle_code is not None:
         if modal.cycle.code is None:
             modal.cycle.initial_captured = False
@@ -346,6 +348,16 @@ def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSetting
     head = framing.head(siemens_g, modal.absolute, any(a in values for a in AXES))  # SD 42440
     block = (_plain_block(number, siemens_g, values, others, modal) + " " + polar).strip()
     return head + poles + ([block] if block else [])
+
+
+def _turning_corner_words(values: dict[str, float]) -> None:
+    """ISO T, in a straight-line block: R is the radius and C, I or K the chamfer inserted
+    at the end of the block, without a comma (000 L4875, L4893-4900; C is no axis here); the
+    sign means nothing, the next block gives the direction. The last radius written wins
+    over a chamfer (000 L4871), as with the comma forms."""
+    for letter, marked in (("R", ",R"), ("C", ",C"), ("I", ",C"), ("K", ",C")):
+        if letter in values:
+            values.setdefault(marked, abs(values.pop(letter)))
 
 
 def _cycle_code(code: str) -> int | None:
@@ -375,10 +387,12 @@ def _plain_block(number: str, siemens_g: list[str], values: dict[str, float],
             parts.append(f"{letter}{trimmed(values[letter])}")
     if "R" in values:
         parts.append(f"CR={trimmed(values['R'])}")
-    if ",R" in values:
+    if ",A" in values:  # the angle of a contour definition (000 L4034-4041, L4056-4080)
+        parts.append(f"ANG={trimmed(values[',A'])}")
+    if ",R" in values:  # a radius and a chamfer together: the radius is inserted (000 L4039)
         parts.append(f"RND={trimmed(values[',R'])}")
-    if ",C" in values:
-        parts.append(f"CHF={trimmed(values[',C'])}")
+    elif ",C" in values:  # the chamfer along the direction of motion, Siemens CHR (000 L5251-5256)
+        parts.append(f"CHR={trimmed(values[',C'])}")
     for letter in ("F", "S", "T", "D"):
         if letter in values:
             value = values[letter]

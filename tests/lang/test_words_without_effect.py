@@ -108,3 +108,19 @@ def test_sf_is_kept_in_sd42000_for_the_next_thread() -> None:
 def test_sf_outside_0_to_360_degrees_is_refused() -> None:
     # SD42000 holds 0 … 359.999° (the datum's range).
     assert first_alarm("N10 S100 M3\nN20 G33 Z-10 K2 SF=400\nN30 M30\n") == ((12160, 2), (12160, 2))
+
+
+@pytest.mark.parametrize("word", ["RND=2", "CHF=2", "CHR=2"])
+def test_rounding_on_the_last_motion_before_m30_is_not_inserted_without_an_alarm(word: str) -> None:
+    """No chamfer or rounding is inserted when no straight line or circle follows in the plane
+    (003 L1015-1019, the ISO milling manual's rule for the Siemens and ISO forms alike); the
+    manuals name no alarm for it. The block runs to its programmed end point (10, 0) in one
+    straight line, and the check, like the run, finds nothing (our reading of the manual,
+    issue 20 audit: the word acts as the manual says, it is not dropped against it)."""
+    text = f"N10 G17 G0 X0 Y0\nN20 G1 X10 F1000 {word}\nN30 M30\n"
+    result = run_text(text)
+    assert result.status == "ended", result.alarms
+    last = result.segments[-1]
+    assert (last.source.n, last.end_wcs["X"], last.end_wcs["Y"]) == (20, pytest.approx(10.0), pytest.approx(0.0))
+    assert [m.source.n for m in result.segments].count(20) == 1
+    assert first_alarm(text) == (None, None)
