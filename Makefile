@@ -25,8 +25,8 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 -p no:cacheprovider --durations=15
 
 fuzz: $(STAMP)
-	$(BIN)/python -m pytest -q -m fuzz -p no:cacheprovider -o timeout=0
-	ISO_RS274_PROGRAMS=600 $(BIN)/python -m pytest -q -n 2 -p no:cacheprovider -o timeout=0 tests/iso/test_rs274_diff.py
+	$(BIN)/python -m pytest -q -m fuzz -p no:cacheprovider -o timeout=0 --hypothesis-profile=fuzz
+	ISO_RS274_PROGRAMS=600 $(BIN)/python -m pytest -q -n 2 -p no:cacheprovider -o timeout=0 --hypothesis-profile=fuzz tests/iso/test_rs274_diff.py
 
 bench: $(STAMP)
 	$(COMPILE)

@@ -605,6 +605,27 @@ def report_on_stderr(text: str) -> None:
         pass
 
 
+def detach_lost_terminal() -> None:
+    """Point stdout and stderr at the null device when their terminal has gone away.
+
+    Python flushes both streams as it ends; a flush to a hung-up terminal fails
+    (EIO) and turns any exit code into 120, so a lost terminal's ``128 + SIGHUP``
+    would not reach the process that watches the HMI. What is still buffered
+    then goes to the null device: nobody is left to read it.
+    """
+    for stream in {id(s): s for s in (sys.stdout, sys.stderr, sys.__stdout__, sys.__stderr__) if s}.values():
+        try:
+            stream.flush()
+        except ValueError:  # closed: Python will not flush it again
+            continue
+        except OSError:
+            null = os.open(os.devnull, os.O_WRONLY)
+            try:
+                os.dup2(null, stream.fileno())
+            finally:
+                os.close(null)
+
+
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
              *, nck: Any = None, program: str | None = None, realtime: bool = True,
              confirm: Callable[[str], bool] | None = None) -> HmiApp:
@@ -669,4 +690,5 @@ def main(argv: list[str] | None = None) -> int:
         app.run()
         for note in app.exit_notes:
             report_on_stderr(note)
+        detach_lost_terminal()
     return app.return_code or 0

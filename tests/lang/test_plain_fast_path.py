@@ -29,8 +29,14 @@ from nck.ncdata import NcData
 
 MACHINE = load_machine()
 
+BLOCK_BUDGET = 2_000
+"""Blocks a random program may run: ``GOTOB START`` after ``START:`` loops for ever without
+motion (no machine time passes), so both paths end at this budget instead (found in CI, whose
+fixed Hypothesis seed drew such a program)."""
+
 
 def _run(text: str, fast: bool, **limits: Any) -> dict[str, Any]:
+    limits.setdefault("max_blocks", BLOCK_BUDGET)
     program_module._RECENT.clear()
     Interpreter.fast_path = fast
     try:
@@ -220,7 +226,7 @@ def test_a_cam_program_runs_in_batches(monkeypatch: pytest.MonkeyPatch) -> None:
         original(self, count)
 
     monkeypatch.setattr(plain_run.PlainBatch, "commit", spy)
-    result = _same(_cam(3000))
+    result = _same(_cam(3000), max_blocks=None)  # no budget: the whole program runs
     assert result["status"] == "ended" and result["blocks"] == 3002
     assert sum(committed) >= 2999  # everything but the header and M30
 
