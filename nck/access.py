@@ -26,6 +26,7 @@ import enum
 from dataclasses import dataclass, field
 from typing import Callable, Mapping
 
+from nck.md_catalog import catalog
 from nck.resources import load_toml
 
 LEVEL_MOST_RIGHTS = 0
@@ -128,8 +129,6 @@ def required_level(action: Action, user_class: UserClassLookup | None = None) ->
     if rule.md_number is not None:
         value = user_class(rule.md_number) if user_class is not None else None
         if value is None:
-            from nck.machine_data import catalog  # local import: machine_data imports us
-
             value = catalog().get_md(rule.md_number).default
         return int(value)
     return rule.level

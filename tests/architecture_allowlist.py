@@ -56,9 +56,6 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
 
 CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
     {
-        # circle of 2 modules: nck.access, nck.machine_data
-        ("nck.access", "nck.machine_data"),
-        ("nck.machine_data", "nck.access"),
         # circle of 16 modules across nck.interp and nck.iso (interp asks iso at load and run time)
         ("nck.interp.block_run", "nck.interp.frames"),
         ("nck.interp.block_run", "nck.interp.interpreter"),
