@@ -95,8 +95,8 @@ class MachineControlPanel:
         """CYCLE START (NC START); in MDA the editor's text is the program."""
         area = self.area_screen
         before = getattr(area, "before_cycle_start", None)
-        if callable(before):
-            before()
+        if callable(before) and before() is False:
+            return  # the area said why there is nothing to start (a JOG window with a wrong entry)
         self.submit(cmd.CycleStart())
 
     def action_cycle_stop(self) -> None:

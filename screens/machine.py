@@ -29,6 +29,7 @@ from hmi.widgets.header import increment_text
 from hmi.widgets.positions import PositionWindow
 
 from hmi.widgets.tfs import TfsWindow
+from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
 
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
 SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times")
@@ -62,6 +63,8 @@ class MachineScreen(AreaBase):
         self.view: str | None = None
         self._shown_mode: str | None = None
         self._mda_loaded = False
+        self.jog = JogWindows(self)
+        """The setting-up windows of JOG (T,S,M, Set WO, Position, Settings)."""
 
     # -- layout --------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
@@ -97,6 +100,7 @@ class MachineScreen(AreaBase):
             with Vertical(id="view-times", classes="view"):
                 yield Static(" Times / Counter", classes="view-title", markup=False)
                 yield Static("", id="times-table", markup=False)
+            yield from self.jog.compose()
 
     def on_mount(self) -> None:
         """Cursor blink off (calm display, stable snapshots), then the base class."""
@@ -167,6 +171,8 @@ class MachineScreen(AreaBase):
             return [Softkey("auto.select", "Select\nprogram", "select_program",
                             level=PROGRAM_SELECTION_LEVEL,
                             enabled=lambda s: s._reset_state())]
+        if view == "view-jog" or view in JOG_WINDOWS:
+            return self.jog.vertical_softkeys(self.view)
         return []
 
     # -- softkey actions ------------------------------------------------------------------
@@ -178,7 +184,13 @@ class MachineScreen(AreaBase):
     def action_show_view(self, view: str) -> None:
         """Show a softkey view; the same softkey again returns to the mode's view."""
         self.view = None if self.view == view else view
+        if self.view in JOG_WINDOWS:
+            self.jog.opened(self.view)
         self._redraw()
+
+    def action_jog(self, what: str, *args: str) -> None:
+        """A softkey of a setting-up window of JOG (:meth:`JogWindows.run`)."""
+        self.jog.run(what, *args)
 
     def menu_recall(self) -> bool:
         """F10: leave a softkey view first, then softkey levels."""
@@ -283,12 +295,19 @@ class MachineScreen(AreaBase):
             if self.status is None or text != self.status.channel.mda_text:
                 self.submit(cmd.SetMdaProgram(text))
 
-    def before_cycle_start(self) -> None:
-        """CYCLE START in MDA runs what the editor holds: make sure the kernel has it."""
+    def before_cycle_start(self) -> bool:
+        """CYCLE START in MDA runs what the editor holds: make sure the kernel has it.
+
+        In a JOG window (T,S,M, Position) its blocks become the MDA job; False when the
+        window cannot be run (the dialog line says why) and no NC START is to be given.
+        """
+        if self.view in JOG_WINDOWS:
+            return self.jog.before_cycle_start(self.view)
         if self._mode() == "MDA" and self._reset_state():
             text = self.query_one("#mda-editor", TextArea).text
             if self.status is not None and text != self.status.channel.mda_text:
                 self.submit(cmd.SetMdaProgram(text))
+        return True
 
     # -- status ------------------------------------------------------------------------------
     def update_status(self, status: NckStatus) -> None:
@@ -299,7 +318,11 @@ class MachineScreen(AreaBase):
             self._mda_loaded = True
         if status.channel.mode != self._shown_mode:
             self._shown_mode = status.channel.mode
-            self.view = None
+            # a setting-up window stays while its MDA job runs and when JOG comes back
+            if not self.jog.keeps_window(self.view):
+                self.view = None
+        if self.jog.follow(status):
+            return  # the job ended: JOG was selected and shown meanwhile
         self._redraw()
 
     def _redraw(self) -> None:
@@ -334,6 +357,8 @@ class MachineScreen(AreaBase):
             show_text(self.query_one("#progctl-table", Static), self._progctl_text(status))
         elif view_id == "view-times":
             show_text(self.query_one("#times-table", Static), self._times_text(status))
+        elif self.view in JOG_WINDOWS:
+            self.jog.show(self.view, status)
         elif view_id == "view-search":
             show_text(self.query_one("#search-info", Static), 
                 f" Program: {channel.selected_program or '—'}   {channel.stop_reason}")
@@ -349,6 +374,8 @@ class MachineScreen(AreaBase):
             field = self.query_one("#search-input", Input)
             if focused is not field:
                 field.focus()
+        elif self.view in JOG_WINDOWS:
+            pass  # the window puts the focus into its fields (JogWindows.show)
         elif focused is not None:
             self.set_focus(None)
 

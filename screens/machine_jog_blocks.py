@@ -1,0 +1,102 @@
+"""The NC blocks the JOG windows T,S,M and Position hand to the kernel, from what was typed.
+
+Pure text functions: each returns the blocks, or raises :class:`EntryError` with
+the panel's words for a field that cannot be used. The kernel checks the rest
+(an unknown tool is its alarm 17191, a speed beyond the limit its clamp) when
+the blocks run, as it does for blocks typed in MDA.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+SPINDLE_FUNCTIONS = ("—", "M3", "M4", "M5")
+"""Spindle direction of the T,S,M window: unchanged, clockwise, counter-clockwise, stop."""
+
+_NUMBER = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)$")
+_TOOL_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+
+
+class EntryError(ValueError):
+    """A field holds something the window cannot turn into a block (message for the dialog line)."""
+
+
+@dataclass(frozen=True)
+class TsmEntry:
+    """What the T,S,M window holds (texts as typed, choices as shown)."""
+
+    tool: str = ""
+    edge: str = ""
+    speed_rpm: str = ""
+    spindle: str = "—"
+    m_function: str = ""
+
+
+def _number(text: str, field: str) -> str:
+    value = text.strip()
+    if not _NUMBER.match(value):
+        raise EntryError(f"{field}: enter a number")
+    return value
+
+
+def _whole(text: str, field: str, low: int, high: int) -> int:
+    value = text.strip()
+    if not value.isdigit() or not low <= int(value) <= high:
+        raise EntryError(f"{field}: enter a whole number {low} … {high}")
+    return int(value)
+
+
+def tool_word(text: str) -> str:
+    """``T5`` for a number, ``T="CUTTER_10"`` for a name (002 tool names are identifiers)."""
+    value = text.strip().strip('"')
+    if value.isdigit():
+        return f"T{int(value)}"
+    if _TOOL_NAME.match(value):
+        return f'T="{value}"'
+    raise EntryError("T: enter a tool number or a tool name")
+
+
+def tsm_blocks(entry: TsmEntry) -> str:
+    """The blocks of the T,S,M window: tool change, spindle, M function.
+
+    An empty field or ``—`` leaves that function as it is. Raises :class:`EntryError`
+    when nothing is asked for or a field cannot be used.
+    """
+    blocks: list[str] = []
+    if entry.tool.strip():
+        words = [tool_word(entry.tool), "M6"]
+        if entry.edge.strip():
+            words.append(f"D{_whole(entry.edge, 'D', 1, 12)}")
+        blocks.append(" ".join(words))
+    elif entry.edge.strip():
+        blocks.append(f"D{_whole(entry.edge, 'D', 1, 12)}")
+    spindle = []
+    if entry.speed_rpm.strip():
+        speed = _number(entry.speed_rpm, "Spindle speed")
+        if float(speed) < 0:
+            raise EntryError("Spindle speed: enter a speed of 0 or more")
+        spindle.append(f"S{speed}")
+    if entry.spindle in ("M3", "M4", "M5"):
+        spindle.append(entry.spindle)
+    if spindle:
+        blocks.append(" ".join(spindle))
+    if entry.m_function.strip():
+        blocks.append(f"M{_whole(entry.m_function, 'Other M function', 0, 99)}")
+    if not blocks:
+        raise EntryError("T,S,M: fill in at least one field")
+    return "\n".join(blocks) + "\n"
+
+
+def position_blocks(axis: str, position: str, feed_mm_min: str, rapid: bool) -> str:
+    """The block of the Position window: ``axis`` to ``position`` in the WCS, G90.
+
+    With ``rapid`` the axis moves with G0, else with G1 at ``feed_mm_min`` (G94).
+    """
+    target = _number(position, f"{axis} position")
+    if rapid:
+        return f"G90 G0 {axis}{target}\n"
+    feed = _number(feed_mm_min, "Feed")
+    if float(feed) <= 0:
+        raise EntryError("Feed: enter a feed greater than 0")
+    return f"G90 G94 G1 {axis}{target} F{feed}\n"

@@ -1,0 +1,157 @@
+"""An input window of the JOG screens (T,S,M, Set WO, Position, Settings): labelled fields.
+
+A field is either a text field (:class:`textual.widgets.Input`) or a choice field
+(:class:`ChoiceField`: the panel's toggle field, ←/→ or Space switch the value).
+↑/↓ move between the fields, Enter goes to the next one. The keys of the keymap
+(F keys, Alt and Ctrl keys) are app bindings with priority: they never reach a
+field as text.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical
+from textual.widget import Widget
+from textual.widgets import Input, Static
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    """One field of a window: ``key`` names it, ``choices`` make it a choice field."""
+
+    key: str
+    label: str
+    unit: str = ""
+    choices: tuple[str, ...] = ()
+    initial: str = ""
+
+
+FIELD_KEYS = [
+    Binding("down", "app.focus_next", "Next field", show=False),
+    Binding("up", "app.focus_previous", "Previous field", show=False),
+]
+"""↑/↓ go from field to field (an Input would scroll with them)."""
+
+
+class FieldInput(Input):
+    """A text field of a window."""
+
+    BINDINGS = FIELD_KEYS
+
+
+class ChoiceField(Static, can_focus=True):
+    """A toggle field: one of ``choices``; ←/→ or Space choose the next or previous value."""
+
+    BINDINGS = [
+        Binding("right,space", "step(1)", "Next value", show=False),
+        Binding("left", "step(-1)", "Previous value", show=False),
+        *FIELD_KEYS,
+    ]
+
+    def __init__(self, choices: tuple[str, ...], initial: str = "", *, id: str) -> None:  # noqa: A002
+        super().__init__("", id=id, classes="jog-choice", markup=False)
+        self.choices = choices
+        self.value = initial if initial in choices else choices[0]
+
+    def on_mount(self) -> None:
+        """Show the value."""
+        self._show()
+
+    def action_step(self, step: int) -> None:
+        """Choose the next (+1) or previous (−1) value, round the list."""
+        index = (self.choices.index(self.value) + step) % len(self.choices)
+        self.value = self.choices[index]
+        self._show()
+
+    def choose(self, value: str) -> None:
+        """Set ``value`` (one of the choices)."""
+        if value in self.choices:
+            self.value = value
+            self._show()
+
+    def _show(self) -> None:
+        self.update(Text(f"◂ {self.value} ▸"))
+
+
+class JogForm(Vertical):
+    """A titled window of labelled fields with a line of hints below."""
+
+    DEFAULT_CSS = """
+    JogForm { height: 1fr; background: $surface; }
+    JogForm .jog-row { height: 1; }
+    JogForm .jog-label { width: 26; padding: 0 1; }
+    JogForm .jog-unit { width: 12; padding: 0 1; color: $secondary; }
+    JogForm FieldInput { width: 24; height: 1; border: none; padding: 0 1; background: $panel; }
+    JogForm FieldInput:focus { border: none; background: $boost; text-style: bold; }
+    JogForm .jog-choice { width: 24; height: 1; padding: 0 1; background: $panel; }
+    JogForm .jog-choice:focus { background: $boost; text-style: bold; }
+    JogForm .jog-info { height: auto; padding: 0 1; }
+    """
+
+    def __init__(self, title: str, fields: tuple[FieldSpec, ...], hint: str, *, id: str) -> None:  # noqa: A002
+        super().__init__(id=id)
+        self.title = title
+        self.fields = fields
+        self.hint = hint
+
+    def compose(self) -> ComposeResult:
+        """Title, one row per field, the info line and the hint."""
+        yield Static(f" {self.title}", classes="view-title", markup=False)
+        for spec in self.fields:
+            with Horizontal(classes="jog-row"):
+                yield Static(spec.label, classes="jog-label", markup=False)
+                if spec.choices:
+                    yield ChoiceField(spec.choices, spec.initial, id=self.field_id(spec.key))
+                else:
+                    field = FieldInput(spec.initial, id=self.field_id(spec.key))
+                    field.cursor_blink = False
+                    yield field
+                yield Static(spec.unit, classes="jog-unit", markup=False)
+        yield Static("", classes="jog-info", id=f"{self.id}-info", markup=False)
+        yield Static(f" {self.hint}", classes="jog-info", markup=False)
+
+    def field_id(self, key: str) -> str:
+        """The widget id of field ``key``."""
+        return f"{self.id}-{key}"
+
+    def field(self, key: str) -> Widget:
+        """The widget of field ``key`` (an Input or a ChoiceField)."""
+        return self.query_one(f"#{self.field_id(key)}")
+
+    def value(self, key: str) -> str:
+        """The text or choice of field ``key``."""
+        widget = self.field(key)
+        if isinstance(widget, Input):
+            return widget.value
+        assert isinstance(widget, ChoiceField)
+        return widget.value
+
+    def set_value(self, key: str, value: str) -> None:
+        """Put ``value`` into field ``key``."""
+        widget = self.field(key)
+        if isinstance(widget, Input):
+            widget.value = value
+        elif isinstance(widget, ChoiceField):
+            widget.choose(value)
+
+    def show_info(self, content: Text | str) -> None:
+        """The line under the fields (current values, what will happen)."""
+        info = self.query_one(f"#{self.id}-info", Static)
+        if getattr(info, "_shown_content", None) != content:
+            info._shown_content = content  # type: ignore[attr-defined]
+            info.update(content)
+
+    def focus_first(self) -> None:
+        """Put the focus on the first field unless a field of this window has it."""
+        focused = self.screen.focused
+        if focused is None or self not in focused.ancestors:
+            self.screen.set_focus(self.field(self.fields[0].key))  # at once: the next key of a burst goes there
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Enter in a field goes to the next field."""
+        event.stop()
+        self.screen.focus_next()

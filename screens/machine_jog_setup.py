@@ -1,0 +1,208 @@
+"""The setting-up windows of JOG: T,S,M, Set WO, Position and Settings (issue 22).
+
+The Machine area shows them as views of its lower half (the position window
+stays in sight) and reaches them by the vertical softkeys of JOG, as SINUMERIK
+Operate does: ``T,S,M`` · ``Set WO`` · ``Meas. workpiece`` · ``Meas. tool`` ·
+``Position`` · ``Settings``. :class:`JogWindows` composes the windows, names their
+softkeys and does what they ask, through the area's ``submit`` and ``ask`` only.
+
+- T,S,M and Position: CYCLE START runs what the window says as NC blocks
+  (:mod:`screens.machine_jog_blocks`), as an MDA job (:class:`hmi.manual_job.ManualJob`).
+- Set WO is shown but not usable yet: the actual-value setting needs the kernel's
+  Set WO/PRESET command (its JOG display reads the frames of the program
+  interpreter, which a written offset does not reach until a program runs there).
+- T,S,M has no work offset and unit fields yet: the kernel sets the G groups to
+  their reset values when the job ends (MD20152 GCODE_RESET_MODE, 002 L2771, is
+  not modelled), so a G54 or G70 selected there would not stay.
+- Settings: the JOG feed (SD41110) and the variable increment (SD41010) — setting
+  data written with ``WriteData``.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Callable
+
+from rich.text import Text
+from textual.app import ComposeResult
+
+from nck import commands as cmd
+from nck.queries import ReadData
+from nck.status import NckStatus
+
+from hmi.manual_job import ManualJob
+from hmi.softkeys import Softkey
+from screens.machine_jog_blocks import (
+    SPINDLE_FUNCTIONS, EntryError, TsmEntry, position_blocks, tsm_blocks,
+)
+from screens.machine_jog_form import FieldSpec, JogForm
+
+if TYPE_CHECKING:
+    from hmi.area import AreaBase
+
+JOG_WINDOWS = ("tsm", "position", "settings")
+"""The views of the setting-up windows (``view-tsm`` …)."""
+
+RUNS_ON_CYCLE_START = ("tsm", "position")
+"""Windows whose content CYCLE START runs."""
+
+
+def trimmed(value: float) -> str:
+    """A value with at most 3 decimals and no trailing zeros (``1200``, ``0.25``)."""
+    return f"{value:.3f}".rstrip("0").rstrip(".")
+
+
+class JogWindows:
+    """The setting-up windows of one Machine area screen."""
+
+    def __init__(self, screen: AreaBase) -> None:
+        self.screen = screen
+        self.job = ManualJob(screen.submit)
+
+    # -- layout ----------------------------------------------------------------------------
+    def axes(self) -> tuple[str, ...]:
+        """The path axes (not spindles), as the kernel reports them."""
+        return tuple(a.name for a in self.screen.hmi.bridge.status.axes if a.kind != "spindle")
+
+    def compose(self) -> ComposeResult:
+        """The four windows (each a view of the Machine area's content switcher)."""
+        yield JogForm("T, S, M — tool change, spindle, M function", (
+            FieldSpec("tool", "T  tool (number or name)"),
+            FieldSpec("edge", "D  cutting edge", initial="1"),
+            FieldSpec("speed", "Spindle S", "rev/min"),
+            FieldSpec("spindle", "Spindle M function", choices=SPINDLE_FUNCTIONS),
+            FieldSpec("m", "Other M function"),
+        ), "↑/↓ field   ←/→ choice   CYCLE START (Alt+G) runs it   F10 back", id="view-tsm")
+        yield JogForm("Position — traverse one axis to a position (WCS)", (
+            FieldSpec("axis", "Axis", choices=self.axes()),
+            FieldSpec("target", "Position", "mm"),
+            FieldSpec("feed", "Feed F", "mm/min", initial="1000"),
+            FieldSpec("rapid", "Traverse", choices=("feed", "rapid")),
+        ), "↑/↓ field   ←/→ choice   CYCLE START (Alt+G) traverses   F10 back", id="view-position")
+        yield JogForm("Settings for manual mode", (
+            FieldSpec("jog_feed", "JOG feed (SD41110)", "mm/min"),
+            FieldSpec("var_incr", "Variable increment (SD41010)", "mm"),
+        ), "↑/↓ field   ⇧F1 save (setting data)   F10 back", id="view-settings")
+
+    # -- softkeys --------------------------------------------------------------------------
+    def vertical_softkeys(self, view: str | None) -> list[Softkey | None]:
+        """The vertical softkeys of the JOG main view (``view`` None) or of a window."""
+        if view == "settings":
+            return [Softkey("settings.save", "Save\nsettings", "jog('save_settings')")]
+        if view in RUNS_ON_CYCLE_START:
+            return []
+        return [
+            Softkey("jog.tsm", "T,S,M", "show_view('tsm')", active=lambda s: s.view == "tsm"),
+            Softkey("jog.setwo", "Set\nWO", "jog('not_yet')", enabled=lambda s: False),
+            Softkey("jog.measure_workpiece", "Meas.\nworkpiece", "jog('not_yet')", enabled=lambda s: False),
+            Softkey("jog.measure_tool", "Meas.\ntool", "jog('not_yet')", enabled=lambda s: False),
+            Softkey("jog.position", "Position", "show_view('position')",
+                    active=lambda s: s.view == "position"),
+            Softkey("jog.settings", "Settings", "show_view('settings')",
+                    active=lambda s: s.view == "settings"),
+        ]
+
+    def run(self, what: str, *args: str) -> None:
+        """A softkey of a window: ``save_settings``."""
+        actions: dict[str, Callable[..., None]] = {"save_settings": self._save_settings}
+        action = actions.get(what)
+        if action is not None:
+            action(*args)
+
+    # -- windows shown -------------------------------------------------------------------------
+    def form(self, view: str) -> JogForm:
+        """The window of ``view``."""
+        return self.screen.query_one(f"#view-{view}", JogForm)
+
+    def opened(self, view: str) -> None:
+        """A window was shown: fill in what it shows of the current state."""
+        if view == "settings":
+            data = self._setting_data()
+            form = self.form(view)
+            form.set_value("jog_feed", trimmed(data("SD41110")))
+            form.set_value("var_incr", trimmed(data("SD41010")))
+
+    def show(self, view: str, status: NckStatus) -> None:
+        """Redraw the info line of window ``view`` from ``status``."""
+        form = self.form(view)
+        form.focus_first()
+        modal = status.channel.modal
+        if view == "tsm":
+            tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
+            form.show_info(Text(
+                f" Active: {tool} D{modal.edge}   S {trimmed(modal.spindle_speed_rpm)} rev/min "
+                f"{modal.spindle_state}   {modal.gcodes.get(8, 'G500')}   "
+                f"{'inch' if modal.gcodes.get(13) == 'G70' else 'mm'}   {self._job_state(status)}"))
+        elif view == "position":
+            form.show_info(Text(f" {self._job_state(status)}"))
+        elif view == "settings":
+            data = self._setting_data()
+            form.show_info(Text(f" Stored: JOG feed {trimmed(data('SD41110'))} mm/min "
+                                f"(0 = MD32020)   variable increment {trimmed(data('SD41010'))} mm"))
+
+    def _job_state(self, status: NckStatus) -> str:
+        if self.job.running:
+            return f"running as MDA job: {self.job.blocks.strip().replace(chr(10), ' · ')}"
+        return ""
+
+    # -- CYCLE START -----------------------------------------------------------------------
+    def before_cycle_start(self, view: str) -> bool:
+        """CYCLE START in the T,S,M or Position window: prepare its blocks as the MDA job.
+
+        False when there is nothing to start (the dialog line says why); True to let
+        NC START go to the kernel (the prepared job, or JOG's own NC START elsewhere).
+        """
+        status = self.screen.status
+        if status is None or view not in RUNS_ON_CYCLE_START or self.job.running:
+            return True  # NC START continues a stopped job or does what it does in JOG
+        if status.channel.mode != "JOG" or status.channel.channel_state != "reset":
+            return True
+        try:
+            blocks = self._blocks(view)
+        except EntryError as error:
+            self.screen.say(str(error))
+            return False
+        result = self.job.prepare(blocks, status)
+        if isinstance(result, cmd.Rejected):
+            self.screen.say(result.reason)
+            return False
+        self.screen.call_later(self._arm_job)  # the app gives NC START right after this
+        return True
+
+    def _arm_job(self) -> None:
+        self.job.arm()
+        self.job.follow(self.screen.hmi.bridge.status)
+
+    def _blocks(self, view: str) -> str:
+        form = self.form(view)
+        if view == "tsm":
+            return tsm_blocks(TsmEntry(
+                tool=form.value("tool"), edge=form.value("edge"), speed_rpm=form.value("speed"),
+                spindle=form.value("spindle"), m_function=form.value("m")))
+        return position_blocks(form.value("axis"), form.value("target"), form.value("feed"),
+                               form.value("rapid") == "rapid")
+
+    def keeps_window(self, view: str | None) -> bool:
+        """True when the window ``view`` stays over a mode change: while its job runs in MDA
+        and when JOG is back (the kernel's newest state decides, not a snapshot still queued)."""
+        return view in JOG_WINDOWS and (self.job.running
+                                        or self.screen.hmi.bridge.status.channel.mode == "JOG")
+
+    def follow(self, status: NckStatus) -> bool:
+        """A new snapshot: end the MDA job once its blocks are done (back to JOG); True if it ended."""
+        return self.job.follow(self.screen.hmi.bridge.status)
+
+    # -- Settings --------------------------------------------------------------------------------
+    def _setting_data(self) -> Callable[[str], float]:
+        machine_data = self.screen.ask(ReadData()).machine_data
+
+        def value(name: str) -> float:
+            return float(machine_data.value(name)) if machine_data is not None else 0.0
+        return value
+
+    def _save_settings(self) -> None:
+        form = self.form("settings")
+        for key, name in (("jog_feed", "SD41110"), ("var_incr", "SD41010")):
+            text = form.value(key).strip()
+            if text and isinstance(self.screen.submit(cmd.WriteData(name, text)), cmd.Rejected):
+                return
+        self.screen.say("Settings saved")

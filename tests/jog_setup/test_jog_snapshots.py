@@ -1,0 +1,32 @@
+"""SVG snapshots of the setting-up windows of JOG (fake kernel, 160×48, no clock, no blink)."""
+
+from __future__ import annotations
+
+from hmi.app import HmiApp
+from tests.hmi.conftest import SIZE
+from tests.hmi.fake_nck import FakeNck
+
+
+def app_on_referenced_fake() -> HmiApp:
+    """The HMI on a referenced fake kernel at a few positions."""
+    fake = FakeNck(referenced=True)
+    fake.pos.update({"X": -125.35, "Y": 42.0, "Z": 100.0})
+    return HmiApp(fake, realtime=False)
+
+
+def test_tsm_window_filled_in(snap_compare) -> None:
+    """T,S,M: T 1, D 1, S 1200, M3, M8 typed; the spindle choice field has the focus."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f1", "1", "down", "down", "1", "2", "0", "0", "down", "right",
+                               "down", "8", "up"])
+
+
+def test_position_window(snap_compare) -> None:
+    """Position: axis Y, position 25, feed 1000 (preset), traverse with feed."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f5", "right", "down", "2", "5"])
+
+
+def test_settings_window(snap_compare) -> None:
+    """Settings for manual mode: JOG feed and variable increment fields, ⇧F1 Save."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE, press=["shift+f6"])
