@@ -8,7 +8,7 @@ in panel order. The screen of area ``<id>`` comes from the module
 ``screens/<id>.py``, which exposes a module attribute ``AreaScreen``: a
 subclass of :class:`hmi.area.AreaBase` (see that module for what a subclass
 provides). When the module does not exist yet, the app shows
-:class:`screens.placeholder.PlaceholderScreen` for the area.
+:class:`hmi.placeholder.PlaceholderScreen` for the area.
 
 Keys
 ----
@@ -58,6 +58,7 @@ from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
+from hmi.placeholder import PlaceholderScreen
 from hmi.program_lines import ProgramLines
 from hmi.messages import CommandRejected, NckStatusChanged, TerminalClosed
 from hmi.startup import start_session
@@ -125,8 +126,6 @@ def area_screen_factory(area: Area) -> Callable[[], Screen]:
     def build() -> Screen:
         screen_class, problem = load_area_screen(area)
         if screen_class is None:
-            from screens.placeholder import PlaceholderScreen
-
             return PlaceholderScreen(area.id, area.title, problem)
         return screen_class()
 

@@ -9,7 +9,6 @@ from __future__ import annotations
 LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
     {
         ("hmi.app", "nck.termination"),
-        ("hmi.app", "screens.placeholder"),
         ("hmi.journal", "nck.atomic"),
         ("hmi.journal", "nck.regular_files"),
         ("hmi.journal", "nck.storage"),
