@@ -144,7 +144,7 @@ class SpindleCommand:
     """Spindle speed / direction / positioning for spindle number ``spindle``.
 
     ``state`` is ``M3``, ``M4``, ``M5`` or ``M19``/``SPOS`` for positioning to
-    ``position_deg`` along ``approach``.
+    ``position_deg`` along ``approach`` at ``positioning_rpm`` (None: the configured speed).
     """
 
     source: Source
@@ -153,6 +153,7 @@ class SpindleCommand:
     speed_rpm: float | None = None
     position_deg: float | None = None
     approach: str | None = None  # SPOS approach: DC (shortest), AC, ACP (+), ACN (-), IC
+    positioning_rpm: float | None = None  # FA[S<n>] for SPOS/M19; None: MD35300 (002 L51375-51385)
 
 
 @dataclass(frozen=True, slots=True)

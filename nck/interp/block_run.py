@@ -10,6 +10,7 @@ finally applies jumps, subprogram calls and program/subprogram ends.
 from __future__ import annotations
 
 import math
+import re
 from typing import TYPE_CHECKING, Any
 
 from nck import canon
@@ -35,6 +36,7 @@ MAX_PASSES = 9999
 MAX_ARRAY_ELEMENTS = 1_000_000  # one array's elements (each dimension <= 65535); 17020 beyond
 PROGRAM_CONTROL_M = {0: "M0", 1: "M1", 2: "M2", 17: "M17", 30: "M30"}
 MODE_WORDS = frozenset(("I", "J", "K", "RP", "AP"))  # non-axis words that take AC()/IC()
+SPINDLE_NAME = re.compile(r"S[1-9][0-9]?")  # S<n>: spindle n as the index of FA[…]
 SPINDLE_POSITION_WORDS = frozenset(("SPOS", "SPOSA"))  # also DC()/ACP()/ACN() (002 L51117-51160)
 
 # ----------------------------------------------------------------------------- block run
@@ -231,7 +233,12 @@ class BlockRun:
         elif address not in VALUE_ADDRESSES and not (address[0] in "IJK" and address[1:].isdigit()):
             raise NcAlarmError(12550, address)
         if word.indices and address in ("FA", "ACC"):  # FA[X]=…, ACC[X]=…: one value per axis
-            address = f"{address}[{to_string(self._index_value(word.indices[0]))}]"
+            index = word.indices[0]
+            if address == "FA" and isinstance(index, ast.Name) and SPINDLE_NAME.fullmatch(index.name) \
+                    and self.interp.lookup(index.name) is None:
+                address = f"FA[{index.name}]"  # FA[S1]: positioning speed of spindle 1 (002 L51379)
+            else:
+                address = f"{address}[{to_string(self._index_value(index))}]"
         if address in self.words.words:
             raise NcAlarmError(12000, address)
         self.words.words[address] = float(number)

@@ -368,10 +368,19 @@ class MotionBuilder:
             modal.feed = feed
             geo.feed_unit_mm = self.path.units(modal).feed_mm
         for key, value in words.words.items():
-            if key.startswith("FA[") and key.endswith("]"):
-                if value <= 0:
+            if key.startswith("FA[S") and key.endswith("]"):
+                # 002 L51375-51385: the positioning speed of a spindle in degrees/min; 0 gives
+                # the configured MD35300 back.
+                if value < 0:
                     raise NcAlarmError(ALARM_PATH_VELOCITY)
-                geo.axis_feeds[key[3:-1]] = value * self.path.units(modal).feed_mm
+                if value:
+                    geo.axis_feeds[key[3:-1]] = value
+                else:
+                    geo.axis_feeds.pop(key[3:-1], None)
+            elif key.startswith("FA[") and key.endswith("]"):
+                # FA[axis] is the feed of a positioning axis (POS/POSA, 002 L8737, L11159);
+                # this control has no positioning axes (POS is 12550), so it would act on nothing.
+                raise NcAlarmError(ALARM_NOT_AVAILABLE, "FA")
             elif key.startswith("ACC[") and key.endswith("]"):
                 # 002 L7433-7450: 0 < factor ≤ 200 % of the axis' maximum acceleration, modal.
                 axis = key[4:-1]
@@ -549,9 +558,11 @@ class MotionBuilder:
                     modal.spindle_speed_rpm = speed
                 if state is not None:
                     modal.spindle_state = state if state != "SPOS" else "M19"
+            speed_deg_min = geo.axis_feeds.get(f"S{spindle}") if spindle in positions else None
             out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed,
                                             position_deg=positions.get(spindle),
-                                            approach=modes.get(spindle)))
+                                            approach=modes.get(spindle),
+                                            positioning_rpm=None if speed_deg_min is None else speed_deg_min / 360.0))
             if spindle == 1 and spindle in positions:
                 modal.spindle_position_deg = positions[spindle]
 

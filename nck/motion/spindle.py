@@ -53,8 +53,9 @@ class Spindle:
         self._positioning: _Positioning | None = None
 
     def command(self, state: str | None, speed_rpm: float | None, position_deg: float | None = None,
-                approach: str | None = None) -> None:
-        """M3/M4/M5/M19 and S: set the speed setpoint (or position the spindle)."""
+                approach: str | None = None, positioning_rpm: float | None = None) -> None:
+        """M3/M4/M5/M19 and S: set the speed setpoint (or position the spindle at
+        ``positioning_rpm``, None: MD35300)."""
         st = self.state
         if speed_rpm is not None:
             rpm = abs(float(speed_rpm))
@@ -65,10 +66,11 @@ class Spindle:
         elif state in ("M19", "SPOS"):
             st.state = "M5"
             target = st.angle_deg if position_deg is None else float(position_deg) % 360.0
-            self._positioning = self._plan_positioning(target, approach or "DC")
+            self._positioning = self._plan_positioning(target, approach or "DC",
+                                                       positioning_rpm or self.params.posctrl_rpm)
         self._update_setpoint()
 
-    def _plan_positioning(self, target_deg: float, approach: str) -> "_Positioning":
+    def _plan_positioning(self, target_deg: float, approach: str, speed_rpm: float) -> "_Positioning":
         """Brake from the speed now, then turn to ``target_deg`` (times in s, angles in degrees)."""
         st = self.state
         p = self.params
@@ -83,13 +85,13 @@ class Spindle:
             travel = -((360.0 - ahead) % 360.0)
         else:  # DC, AC, IC from standstill: the shortest way
             travel = ahead if ahead <= 180.0 else ahead - 360.0
-        speed = p.posctrl_rpm * 6.0
+        speed = speed_rpm * 6.0
         distance = abs(travel)
         if distance >= speed * speed / accel:
             move_s = distance / speed + speed / accel
         else:
             move_s = 2.0 * math.sqrt(distance / accel)
-        return _Positioning(st.angle_deg, stop_deg, travel, target_deg, brake_s, move_s)
+        return _Positioning(st.angle_deg, stop_deg, travel, target_deg, brake_s, move_s, speed_rpm)
 
     @property
     def positioning(self) -> bool:
@@ -214,7 +216,7 @@ class Spindle:
         else:
             share = (t - move.brake_s) / move.move_s
             st.angle_deg = (move.stop_deg + move.travel_deg * share) % 360.0
-            st.actual_rpm = math.copysign(self.params.posctrl_rpm, move.travel_deg) if move.travel_deg else 0.0
+            st.actual_rpm = math.copysign(move.speed_rpm, move.travel_deg) if move.travel_deg else 0.0
 
     @property
     def moving(self) -> bool:
@@ -233,6 +235,7 @@ class _Positioning:
     target_deg: float
     brake_s: float
     move_s: float
+    speed_rpm: float
     elapsed_s: float = 0.0
 
     @property

@@ -561,7 +561,7 @@ class PlannedMotion(PathInterpolator):
             return
         index = min(max(command.spindle, 1), len(names)) - 1
         self.spindles[names[index]].command(command.state, command.speed_rpm, command.position_deg,
-                                            command.approach)
+                                            command.approach, command.positioning_rpm)
         if index == 0:
             self._follow_spindle()
 

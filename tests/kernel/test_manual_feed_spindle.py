@@ -188,9 +188,10 @@ def machine_datum(nck: Nck, key: str) -> float:
     return float(nck.machine.md_value(key, "SP", catalog().get(key).default))
 
 
-def positioning_s(nck: Nck, degrees: float) -> float:
-    """Hand formula: a move of ``degrees`` from standstill at MD35300 with MD35210 (trapezoid)."""
-    speed = machine_datum(nck, "MD35300") * 6.0  # rpm -> deg/s
+def positioning_s(nck: Nck, degrees: float, speed_rpm: float | None = None) -> float:
+    """Hand formula: a move of ``degrees`` from standstill at MD35300 (or ``speed_rpm``) with
+    MD35210 (trapezoid)."""
+    speed = (speed_rpm or machine_datum(nck, "MD35300")) * 6.0  # rpm -> deg/s
     accel = machine_datum(nck, "MD35210") * 360.0  # rev/s² -> deg/s²
     if degrees >= speed * speed / accel:
         return degrees / speed + speed / accel
@@ -216,6 +217,34 @@ def test_spos_takes_its_positioning_time(word: str, travel: float, end: float) -
     assert run_time_s(nck, "P.MPF") - run_time_s(base, "P.MPF") == pytest.approx(
         positioning_s(nck, travel), abs=0.01)
     assert spindle_angle(nck) == pytest.approx(end)
+
+
+@pytest.mark.parametrize("rate_deg_min", [3600.0, 36000.0])
+def test_fa_of_the_spindle_is_its_positioning_speed(rate_deg_min: float) -> None:
+    """Digest 828d-3 rank 17: FA[S1] sets the positioning speed in degrees/min, FA[S1]=0 gives
+    MD35300 back (002 L51375-51385, L54149-54151). 3600 deg/min = 10 rpm, 36000 = 100 rpm:
+    the 180° move takes the trapezoid time at that speed (timed cycle by cycle). Before,
+    FA[S1] was refused (12550)."""
+    base = make({"P.MPF": "N20 M30"}, batch_cycles=1)
+    nck = make({"P.MPF": f"N10 FA[S1]={rate_deg_min:g} SPOS=180\nN20 M30"}, batch_cycles=1)
+    assert run_time_s(nck, "P.MPF") - run_time_s(base, "P.MPF") == pytest.approx(
+        positioning_s(nck, 180.0, rate_deg_min / 360.0), abs=0.01)
+    assert spindle_angle(nck) == pytest.approx(180.0)
+    back = make({"P.MPF": f"N10 FA[S1]={rate_deg_min:g}\nN15 FA[S1]=0 SPOS=180\nN20 M30"}, batch_cycles=1)
+    base = make({"P.MPF": f"N10 FA[S1]={rate_deg_min:g}\nN20 M30"}, batch_cycles=1)
+    assert run_time_s(back, "P.MPF") - run_time_s(base, "P.MPF") == pytest.approx(
+        positioning_s(back, 180.0), abs=0.01)
+
+
+def test_fa_of_a_path_axis_is_refused_without_positioning_axes() -> None:
+    """FA[X] is the feed of a positioning axis (POS/POSA, 002 L8737, L11159); without
+    positioning axes (POS is refused) it was stored and never used: now 12550."""
+    nck = make({"P.MPF": "N10 FA[X]=500\nN20 M30"})
+    nck.submit(c.SelectMode("AUTO"))
+    assert nck.submit(c.SelectProgram("P.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.program != "running", 60.0)
+    assert [a.number for a in nck.status().alarms] == [12550]
 
 
 def test_spos_ic_is_relative_to_the_last_programmed_position() -> None:

@@ -51,10 +51,9 @@ def test_cip_with_the_intermediate_point_between_is_a_straight_line() -> None:
 
 def test_inverse_time_and_axis_feed() -> None:
     """Digest 828d-3 rank 13: G93 F2 -> block time 0.5 min whatever the length."""
-    r = run(lines("N10 G93 G1 X30 Y40 F2", "N20 G94 FA[X]=500 G1 X0 F100", "N30 M30"))
+    r = run(lines("N10 G93 G1 X30 Y40 F2", "N20 G94 G1 X0 F100", "N30 M30"))
     # G93 F2: the block takes 1/2 min; length 50 mm -> 100 mm/min.
     assert r.block(10)[0].feed_mm_min == pytest.approx(100.0)
-    assert r.interp.modal.geometry.axis_feeds == {"X": 500.0}
 
 
 def test_m19_spindle_position_and_lims() -> None:
