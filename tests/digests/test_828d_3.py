@@ -190,3 +190,17 @@ def test_digest_828d_3_rank_06_single_block_stops_at_the_block_without_motion_in
             "N70 G40 X0 Y0\nN80 M30\n")
     assert stops(text) == [(0.0, 0.0, 1), (0.0, 0.0, 2), (10.0, 12.0, 3), (28.0, 12.0, 4), (28.0, 12.0, 5),
                            (28.0, 28.0, 6), (10.0, 28.0, 7), (0.0, 0.0, 8)]
+
+
+def test_digest_828d_3_rank_11_g95_with_the_spindle_at_rest_stands_without_an_alarm() -> None:
+    """Digest 828d-3 rank 11: the path velocity under G95 is the actual speed of the master
+    spindle times F (002 L55411-55420); with the spindle at rest it is 0, so the axes stand and
+    the block does not end, as on the control, without an alarm (the manual names none; the
+    digest: spindle stopped, no motion). RESET ends the program."""
+    nck = start("N10 G95 G1 X10 F0.2\nN20 M30\n")
+    assert not nck.run_until(lambda k: k.situation.program != "running", 2.0)
+    assert nck.positions_mcs()["X"] == pytest.approx(0.0)
+    assert nck.situation.program == "running"
+    assert nck.status().alarms == ()
+    assert nck.submit(c.Reset()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 5.0)

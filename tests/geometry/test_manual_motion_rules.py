@@ -34,6 +34,23 @@ def test_g93_is_refused_while_radius_compensation_is_active(text: str) -> None:
     assert alarms(text) == ([10798], [10798])
 
 
+def test_position_after_10798_is_where_the_axes_stand() -> None:
+    """Issue 20 audit: after a block refused while the compensation look-ahead holds blocks
+    back, the reported position is where the axes are, not a programmed target. G41 with
+    radius 2 inside the square: the approach N30 ends at (10, 12) (perpendicular to N40);
+    N40 and N45 wait in the look-ahead (their end points need the blocks after them, 002
+    L18071-18073) when N50 is refused (002 L55402), so they never run: the axes stand at
+    (10, 12), the machine position and the last executed segment say so."""
+    text = ("N10 T1 M6 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 Y10 F1000\nN40 X30\nN45 Y30\n"
+            "N50 G93 X10 F2\nN60 M30\n")
+    run = run_program(load_machine(), MemorySource({}), data_with_tool(), "P.MPF", text=text)
+    assert [a.number for a in run.alarms] == [10798]
+    assert run.position_mcs is not None
+    assert (run.position_mcs["X"], run.position_mcs["Y"]) == (pytest.approx(10.0), pytest.approx(12.0))
+    last = run.segments[-1]
+    assert (last.source.line, last.end_mcs["X"], last.end_mcs["Y"]) == (3, pytest.approx(10.0), pytest.approx(12.0))
+
+
 def test_g93_without_radius_compensation_runs() -> None:
     assert alarms("N10 G93 G1 X10 F2\nM30\n") == ([], [])
 
