@@ -37,7 +37,7 @@ def test_there_are_samples() -> None:
 
 def test_a_data_directory_with_samples_already_installed_gets_no_tools_again(tmp_path: Path) -> None:
     session = Session.open(tmp_path / "data")
-    assert sorted(session.ncdata.tools) == [(1, 1), (2, 1)]
+    assert sorted(session.ncdata.tools) == [(1, 1), (2, 1), (3, 1), (4, 1)]
     session.ncdata.tools.clear()  # the operator deleted them
     session.save()
     assert Session.open(tmp_path / "data").ncdata.tools == {}
