@@ -174,7 +174,7 @@ class _OverlaySource:
 
 
 def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: Any) -> Any:
-    from nck.interp.interpreter import Interpreter  # type: ignore[import-not-found]
+    from nck.interp.interpreter import Interpreter
 
     source = _OverlaySource(name, text, programs)
     return Interpreter(machine or load_machine(), source, data if data is not None else NcData())

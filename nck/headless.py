@@ -340,9 +340,9 @@ def interpret_only(
             elif isinstance(command, canon.Dwell) and command.seconds:
                 clock += command.seconds
             elif isinstance(command, canon.UserAlarm):
-                alarm = NcAlarmError(command.number, *command.params, file=command.source.file,
-                                     line=command.source.line, n=command.source.n)
-                result.alarms.append(alarm)
+                set_alarm = NcAlarmError(command.number, *command.params, file=command.source.file,
+                                         line=command.source.line, n=command.source.n)
+                result.alarms.append(set_alarm)
                 stop = True
         if stop:
             result.status = "alarm"

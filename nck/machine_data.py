@@ -321,6 +321,7 @@ class MachineDataStore:
         d = ref.definition
         target = layer if d.kind == "md" else self.setting_data
         if d.array:
+            assert ref.index is not None, "an array element is written by its index (checked by write)"
             current = self._full(layer, d, ref.axis)
             elements = list(current) if isinstance(current, list) else [current] * d.array
             elements += [elements[-1]] * (d.array - len(elements))

@@ -239,7 +239,8 @@ def _load_r(data: Mapping[str, Any], rd: RetainedData) -> None:
     values = {int(i): _number(v) for i, v in _mapping(data["values"]).items()}
     if count < 0 or any(i < 0 for i in values):
         raise ValueError("negative R parameter index")
-    limit = catalog().get("MD28050").max
+    limit = catalog().get_md(28050).max
+    assert limit is not None, "MD28050 MM_NUM_R_PARAM has an upper limit in the catalogue"
     if count > limit or any(i >= limit for i in values):
         raise ValueError(f"more than {limit:g} R parameters (the most MD28050 allows)")
     r = [0.0] * max(count, max(values, default=-1) + 1)
@@ -590,7 +591,10 @@ class Session:
     def record_alarms(self, entries: Iterable[Any]) -> None:
         """Append alarm-log entries (``nck.status.AlarmEntry`` objects or dicts), bounded."""
         for entry in entries:
-            data = dataclasses.asdict(entry) if dataclasses.is_dataclass(entry) else dict(entry)
+            if dataclasses.is_dataclass(entry) and not isinstance(entry, type):
+                data = dataclasses.asdict(entry)
+            else:
+                data = dict(entry)
             self.retained.alarm_log.append(_plain({k: v for k, v in data.items()}))
         del self.retained.alarm_log[:-ALARM_LOG_LIMIT]
 

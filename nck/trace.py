@@ -26,7 +26,7 @@ bare axis name, as in ``nck run --trace``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any, Callable, Iterable, Mapping, Sequence
 
 from nck.number_text import fixed
 
@@ -230,7 +230,7 @@ class TraceRecorder:
         return trace_csv(self.times_s, {csv_column(n): c for n, c in self.columns.items()})
 
 
-def trace_csv(times_s: Sequence[float], columns: dict[str, Sequence[float]]) -> str:
+def trace_csv(times_s: Sequence[float], columns: Mapping[str, Sequence[float]]) -> str:
     """CSV: a header ``t_s,<columns…>``, then one row per sample (time in ms steps, values 6 decimals)."""
     lines = [",".join(["t_s", *columns])]
     values = list(columns.values())
