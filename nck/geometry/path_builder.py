@@ -33,7 +33,7 @@ from nck.geometry.contour_aids import LineElement
 from nck.geometry.frames import Frame
 from nck.geometry.path_state import GeometryState
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane, plane
-from nck.geometry.tool_length import length_offset, resolve_edge
+from nck.geometry.tool_length import active_wear_sign, length_offset, resolve_edge
 from nck.geometry.transform import Transform
 from nck.geometry.units import UnitSystem
 from nck.machine import MachineConfig
@@ -203,9 +203,13 @@ class PathBuilder:
             self.geo_axes,
             length_const=int(sd.get("SD42940", 0) or 0),
             length_type=int(sd.get("SD42950", 0) or 0),
-            wear_sign=int(sd.get("SD42930", 0) or 0),
+            wear_sign=active_wear_sign(modal, sd),
             data_mm=self.units(modal).data_mm,
         )
+
+    def wear_sign(self) -> int:
+        """SD42930 now (taken over by the next edge selection)."""
+        return active_wear_sign(None, self.data.setting_data)
 
     # ================================================================ frames / pole
     def frame_block(self, words: Any, modal: Any, geo: GeometryState) -> list[canon.Motion]:

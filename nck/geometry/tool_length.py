@@ -22,7 +22,9 @@ machine position is ``MCS = BCS (tool tip) + offset vector``.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 from nck.errors import NcAlarmError
 from nck.ncdata import NcData, ToolEdge
@@ -61,6 +63,15 @@ def length_axes(
     if key not in table:
         key = 18 if turning else 17
     return table[key]
+
+
+def active_wear_sign(modal: Any, setting_data: Mapping[str, Any]) -> int:
+    """SD42930 for the active edge: the value at its selection (``modal.wear_sign``; a change
+    of the datum acts from the next D or tool change on, 002 L62080-62083), else the datum now."""
+    frozen = getattr(modal, "wear_sign", None)
+    if frozen is not None:
+        return int(frozen)
+    return int(setting_data.get("SD42930", 0) or 0)
 
 
 def effective_lengths(edge: ToolEdge, wear_sign: int = 0) -> tuple[float, float, float]:

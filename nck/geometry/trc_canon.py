@@ -39,7 +39,7 @@ from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry.cutting_edge import effective_radius, reference_offset
 from nck.geometry.radius_comp import CompensatedElement, ContourElement, RadiusCompensator, TrcSettings
-from nck.geometry.tool_length import resolve_edge
+from nck.geometry.tool_length import active_wear_sign, resolve_edge
 from nck.geometry.trc_geometry import plane_axes, same_point
 
 STAGE_ATTRIBUTE = "trc_stage"
@@ -88,7 +88,7 @@ class TrcStage:
         a, b, c = plane_axes(plane)
         side = _member(gcodes, SIDES, "G40")
         edge = resolve_edge(data, modal.tool, modal.edge) if side != "G40" else None
-        radius = effective_radius(edge, int(data.setting_data.get("SD42930", 0) or 0))
+        radius = effective_radius(edge, active_wear_sign(modal, data.setting_data))
         if edge is not None:
             self.tips[key.serial] = reference_offset(edge.tool_type, int(edge.get(2)), radius)
         state = dict(

@@ -36,6 +36,8 @@ class ModalState:
         tool_selected: T programmed (preselected) but not yet changed in.
         tool: active tool (after the change, M6 or T with change mode 0).
         edge: active cutting edge D (0 = no offset).
+        wear_sign: SD42930 as it was when the edge was selected (the wear is evaluated at the
+            selection, 002 L62080-62083); None: not selected since power on, read SD42930.
         aux: last output value per aux address (``M``, ``H``), for display.
     """
 
@@ -49,6 +51,7 @@ class ModalState:
     tool_selected: int = 0
     tool: int = 0
     edge: int = 0
+    wear_sign: int | None = None
     aux: dict[str, str] = field(default_factory=dict)
     geometry: Any = None  # nck.geometry.path_state.GeometryState, created by the motion builder
 

@@ -476,6 +476,7 @@ class MotionBuilder:
             if edge < 0:
                 raise NcAlarmError(12160, "D")
             modal.edge = edge
+            modal.wear_sign = self.path.wear_sign()
             self.path.tool_vector(modal)  # a D that does not exist for the tool: alarm 17180
             out.append(canon.EdgeSelect(src, edge))
 
@@ -491,6 +492,7 @@ class MotionBuilder:
         """The tool change: new tool, and the default edge of MD20270 unless D is in the block
         (output, so that the channel shows the edge the compensation uses)."""
         modal.tool = modal.tool_selected
+        modal.wear_sign = self.path.wear_sign()
         if edge_programmed:
             return
         if not modal.tool:

@@ -107,6 +107,36 @@ def test_digest_828d_3_rank_21_effective_length_is_geometry_plus_wear_plus_base(
     assert r.end_mcs(30)["Y"] == pytest.approx(104.8)
 
 
+def test_digest_828d_3_rank_21_wear_sign_acts_from_the_next_edge_selection() -> None:
+    """Digest 828d-3 rank 21: SD42930 = 1 inverts the sign of every wear value, but the tool
+    components are evaluated when an edge is selected, so the change acts only after D1 is
+    programmed again (002 L62074-62083, the manual's example N200/N300). L1 = 100, wear
+    -0.2, base 5: Z10 at 10 + 104.8 = 114.8; after $SC_WEAR_SIGN=1 still 114.8; after D1
+    again 10 + 100 + 0.2 + 5 = 115.2. The radius follows the same rule (G41 below)."""
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 100.0, 12: -0.2, 21: 5.0})
+    r = run(lines("N10 T1 M6 D1", "N20 G17 G0 X0 Y0 Z10", "N30 $SC_WEAR_SIGN=1", "N40 Z10.5",
+                  "N50 D1", "N60 Z10", "N70 M30"), data)
+    assert r.end_mcs(20)["Z"] == pytest.approx(114.8)
+    assert r.end_mcs(40)["Z"] == pytest.approx(115.3)  # 10.5 + 104.8: not yet inverted
+    assert r.end_mcs(60)["Z"] == pytest.approx(115.2)
+
+
+def test_digest_828d_3_rank_21_wear_sign_on_the_radius_after_d1_again() -> None:
+    """002 L62085-62106 in small: radius 10 ($TC_DP6), wear 1 ($TC_DP15): radius 11; with
+    SD42930 = 1 the radius is 9, from the next D1 on. G41 along X from the left (Y0 line,
+    tool left of it): the tool centre runs at Y = radius."""
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120.0, 6: 10.0, 15: 1.0})
+    r = run(lines("N10 T1 M6 D1", "N20 G17 G0 X-50 Y0 Z0", "N30 G41 G1 X0 Y0 F1000", "N40 X100",
+                  "N50 G40 X150 Y0", "N60 $SC_WEAR_SIGN=1", "N70 G0 X-50 Y0", "N80 G41 G1 X0 Y0",
+                  "N90 X100", "N100 G40 X150 Y0", "N110 D1", "N120 G0 X-50 Y0", "N130 G41 G1 X0 Y0",
+                  "N140 X100", "N150 G40 X150 Y0", "N160 M30"), data)
+    assert r.end_mcs(40)["Y"] == pytest.approx(11.0)
+    assert r.end_mcs(90)["Y"] == pytest.approx(11.0)  # SD42930 changed, D1 not programmed again
+    assert r.end_mcs(140)["Y"] == pytest.approx(9.0)
+
+
 def test_digest_828d_3_rank_20_missing_edge_is_corrected_and_the_block_runs_again() -> None:
     """Digest 828d-3 rank 20: a D that does not exist interrupts the program at that block
     (17180, with T and D); the operator loads the missing data set and NC START executes the
