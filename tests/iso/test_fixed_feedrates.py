@@ -2,21 +2,26 @@
 
 from __future__ import annotations
 
+import pytest
+
+from nck import commands as c
 from nck.headless import interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
+from nck.interp.interpreter import Interpreter
+from nck.kernel import Nck
 from nck.ncdata import NcData
 
 # 003 L645-652: the manual's example
 PROGRAM = "N10 X10. Y10. Z10. F0 G94\nN20 G01 X150. Y30. F1\nN30 X160. F2\nN40 X170. F2.\nM30\n"
 
 
-def _run(md22920: bool, program: str = PROGRAM):
+def _run(md22920: bool, program: str = PROGRAM, subprograms: dict[str, str] | None = None):
     machine = load_machine(None)
     machine.md.update({"MD22920": md22920})
     data = NcData()
     data.setting_data["SD42160"] = [5000.0, 1000.0, 500.0] + [0.0] * 7
-    return interpret_only(machine, MemorySource({}), data, "TEST.MPF", text=program,
+    return interpret_only(machine, MemorySource(subprograms or {}), data, "TEST.MPF", text=program,
                           max_blocks=1000, timeout_s=1e6, dialect="iso-m")
 
 
@@ -45,3 +50,38 @@ def test_f0_without_md22920_is_14800() -> None:
     # 003 L629-631: F0 without the fixed-feedrate function → 14800 (path velocity <= 0).
     result = _run(False, "N10 G01 X10. F0\nM30\n")
     assert [a.number for a in result.alarms] == [14800]
+
+
+def test_digest_iso_milling_rank_08_the_feed_override_scales_a_fixed_feedrate() -> None:
+    """Digest iso-milling-828d rank 8: the feed override acts on F0…F9 as well (003 L678).
+    F1 = SD42160[1] = 1000 mm/min; at 50 % override the path runs at 500 mm/min (the
+    interpreter's ISO M on the real motion; the ramp is over after 0.2 s)."""
+    machine = load_machine(None)
+    machine.md.update({"MD22920": True})
+    data = NcData()
+    data.setting_data["SD42160"] = [5000.0, 1000.0, 500.0] + [0.0] * 7
+    programs = MemorySource({"P.MPF": "N10 G01 G94 X300. F1\nM30\n"})
+    nck = Nck(machine, data, programs, referenced=True,
+              interpreter_factory=lambda m, p, d: Interpreter(m, p, d, dialect="iso-m"))
+    assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
+    assert nck.submit(c.SelectProgram("P.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    nck.tick(1.0)
+    assert nck.status().channel.path_feed_mm_min == pytest.approx(1000.0, abs=1e-6)
+    assert nck.submit(c.SetOverride("feed", 50.0)) == c.Accepted()
+    nck.tick(1.0)
+    assert nck.status().channel.path_feed_mm_min == pytest.approx(500.0, abs=1e-6)
+
+
+def test_digest_iso_milling_rank_08_macro_call_gets_the_digit_and_a_cycle_the_feed() -> None:
+    """Digest iso-milling-828d rank 8: in a G65 call F1 is handed over as the number 1 in
+    $C_F, the address carries a value, not a feed (003 L680-681, L694-697); in a drilling
+    cycle block F1 is the fixed feed read from SD42160[1] = 1000 (003 L682-683): the drilling
+    move (the third of the G81 block) runs at 1000 mm/min."""
+    macro = _run(True, "N10 G65 P10 F1\nM30\n", {"O0010": "G290\nR2=$C_F\nG291\nM99\n"})
+    assert macro.status == "ended", macro.alarms
+    assert macro.interpreter.r(2) == 1.0
+    drilled = _run(True, "N10 G90 G00 X0 Y0 Z10.\nN20 G81 X10. Y10. Z-5. R2. F1\nN30 G80\nM30\n")
+    assert drilled.status == "ended", drilled.alarms
+    feeds = [m.feed for m in drilled.segments if m.source.line == 2]
+    assert feeds[2] == 1000.0
