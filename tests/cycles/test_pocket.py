@@ -76,3 +76,58 @@ def test_pocket4_alarms(body: str, tool: str, alarm: int) -> None:
     case = run_with_tool(body, tool)
     assert case.alarms == [alarm]
     assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
+
+
+def _rounded_rectangle_ccw(cx: float, cy: float, a: float, b: float, r: float, z: float) -> list[tuple]:
+    """The counterclockwise tool centre rectangle from the middle of its +X side, by hand."""
+    if r == 0:
+        return [("G1", cx + a, cy + b, z), ("G1", cx - a, cy + b, z), ("G1", cx - a, cy - b, z),
+                ("G1", cx + a, cy - b, z), ("G1", cx + a, cy, z)]
+    return [("G1", cx + a, cy + b - r, z), ("G3", cx + a - r, cy + b, z, (cx + a - r, cy + b - r)),
+            ("G1", cx - a + r, cy + b, z), ("G3", cx - a, cy + b - r, z, (cx - a + r, cy + b - r)),
+            ("G1", cx - a, cy - b + r, z), ("G3", cx - a + r, cy - b, z, (cx - a + r, cy - b + r)),
+            ("G1", cx + a - r, cy - b, z), ("G3", cx + a, cy - b + r, z, (cx + a - r, cy - b + r)),
+            ("G1", cx + a, cy, z)]
+
+
+def test_pocket3_roughing_rectangles() -> None:
+    """60 x 40 pocket, corner radius 10, centre (50, 40), one level to -4 (no allowances),
+    tool radius 5: final tool centre rectangle half 30-5 = 25 by 20-5 = 15 with corner radius
+    10-5 = 5. First the centre line (length 25-15 = 10 each side: X 40 … 60), then
+    ceil(15/8) = 2 rectangles 7.5 apart: inset 7.5 → half 17.5 x 7.5, corner 5-7.5 < 0 → sharp;
+    inset 0 → the final one. Each is entered straight from the centre line along +X."""
+    case = run_with_tool("POCKET3(10, 0, 2, -4, 60, 40, 10, 50, 40, 0, 0, 0, 0, 300, 80, 0, 1, 8)").ended()
+    z = -4
+    expected = [("G0", 0, 0, 10), ("G0", 50, 40, 10), ("G0", 50, 40, 2), ("G1", 50, 40, z),
+                ("G1", 40, 40, z), ("G1", 60, 40, z),
+                ("G1", 67.5, 40, z), *_rounded_rectangle_ccw(50, 40, 17.5, 7.5, 0, z),
+                ("G1", 75, 40, z), *_rounded_rectangle_ccw(50, 40, 25, 15, 5, z),
+                ("G1", 50, 40, z), ("G0", 50, 40, 10)]
+    got = _path(case)
+    # zero-length moves (a rectangle starts where the step out ended) are not motion
+    assert [p for p in got] == [p for i, p in enumerate(expected) if i == 0 or p[:4] != expected[i - 1][:4]]
+
+
+def test_pocket3_finishing_turned_by_90_degrees_clockwise() -> None:
+    """40 x 30 pocket turned by 90° (its length along Y), corner radius 8, finishing at -4:
+    half 20-5 = 15 along Y, 15-5 = 10 along X, corner 8-5 = 3. _CDIR 1: clockwise (G2) from
+    the middle of the +length side (0, 15): to (7, 15), arc to (10, 12) about (7, 12), down to
+    (10, -12), arc to (7, -15) …"""
+    got = _path(run_with_tool("POCKET3(10, 0, 2, -4, 40, 30, 8, 0, 0, 90, 0, 0, 0, 300, 80, 1, 2)").ended())
+    assert got[3:] == [
+        ("G1", 0, 0, -4), ("G1", 0, 15, -4), ("G1", 7, 15, -4), ("G2", 10, 12, -4, (7, 12)),
+        ("G1", 10, -12, -4), ("G2", 7, -15, -4, (7, -12)), ("G1", -7, -15, -4), ("G2", -10, -12, -4, (-7, -12)),
+        ("G1", -10, 12, -4), ("G2", -7, 15, -4, (-7, 12)), ("G1", 0, 15, -4), ("G1", 0, 0, -4), ("G0", 0, 0, 10)]
+
+
+@pytest.mark.parametrize("body, tool, alarm", [
+    ("POCKET3(10, 0, 2, -4, 60, 40, 10, 0, 0, 0, 0, 0, 0, 300, 80, 0, 1)", "T1 M6 D0\n", 61000),
+    ("POCKET3(10, 0, 2, -4, 60, 40, 10, 0, 0, 0, 0, 0, 0, 300, 80, 0, 21)", TOOL, 61002),
+    ("POCKET3(10, 0, 2, 4, 60, 40, 10, 0, 0, 0, 0, 0, 0, 300, 80, 0, 1)", TOOL, 61101),
+    ("POCKET3(10, 0, 2, -4, 60, 8, 2, 0, 0, 0, 0, 0, 0, 300, 80, 0, 1)", TOOL, 61105),   # width 8 < 10
+    ("POCKET3(10, 0, 2, -4, 60, 40, 10, 0, 0, 0, 0, 0, 0, 300, 80, 5, 1)", TOOL, 61109),
+])
+def test_pocket3_alarms(body: str, tool: str, alarm: int) -> None:
+    case = run_with_tool(body, tool)
+    assert case.alarms == [alarm]
+    assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
