@@ -43,6 +43,7 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
+from nck.kernel_contact import ContactState, ContactWatch
 from nck.kernel_manual import ManualControl
 from nck.kernel_settings import ControlSettings
 from nck.kernel_setup import JobSetup
@@ -82,7 +83,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data)
 
 
-class Nck(ManualControl, ControlSettings, StatusView, JobSetup):
+class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -165,6 +166,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup):
         self.cycles_done = 0  # IPO cycles since power on (system utilisation)
         self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
         self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
+        self._contact = ContactState()  # contacts with the blank / reference block (nck.kernel_contact)
         self._apply_overrides()
 
     # ------------------------------------------------------------------ API
@@ -665,7 +667,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup):
             if events:
                 fed = False
                 self._handle_events(run, events)
-        cycles = self._batch_size(limit, fed)
+        cycles = self._contact_cycle_limit(self._batch_size(limit, fed))
+        before = self._contact_positions()
         if cycles > 1 and self._event_batching():
             cycles = self.motion.advance_cycles(cycles, self._feed_between_cycles)
         else:
@@ -677,6 +680,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup):
             self._test_motion.advance(dt_s)
         for error in self.motion.drain_alarms():
             self._motion_alarm(error)
+        self._watch_contact(before)
         cleared = getattr(self.motion, "drain_cleared_alarms", None)
         if cleared is not None:
             for number in cleared():

@@ -25,6 +25,7 @@ class ManualControl:
     machine: Any
     motion: Any
     _jog_targets: dict[str, float]  # axis -> MCS end of the increments pressed so far
+    _contact: Any  # nck.kernel_contact.ContactState
 
     def _select_machine_function(self, command: cmd.SelectMachineFunction) -> SubmitResult:
         function = command.function.upper() if command.function else None
@@ -91,6 +92,7 @@ class ManualControl:
         else:
             self.motion.jog_continuous(axis, direction, self._jog_velocity(axis, command.rapid))
         self._jog_rest.clear()
+        self._contact.jog_rapid = command.rapid  # a rapid move into the blank is a crash (nck.kernel_contact)
         if not self._jogging:
             self._jogging = True
             self._transition("jog_start")

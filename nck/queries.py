@@ -137,6 +137,23 @@ class MachineSetupData:
     """
 
 
+@dataclass(frozen=True)
+class ContactEvents:
+    """Contacts of the tool with the blank or the reference block after ``seq`` (oldest first,
+    bounded): ``tuple[nck.kernel_contact.ContactEvent, ...]`` — each with ``kind`` ``"probe"``
+    (a 3D probe switched: ``position_mcs`` is its trigger position, the touch for the
+    measuring arithmetic), ``"scratch"`` (a turning cutter touched: no alarm) or ``"crash"``
+    (alarm 90001-90003, trainer numbers), ``solid``, ``position_mcs`` (machine positions at
+    the exact point of contact), ``tool``, ``edge``, ``seq``, ``time_s``."""
+
+    seq: int = 0
+
+
+@dataclass(frozen=True)
+class ProbeDeflected:
+    """True while the active tool is a 3D probe (type 710) touching the blank or the reference."""
+
+
 def _reader(nck: Any, name: str) -> Callable[..., Any] | None:
     reader = getattr(nck, name, None)
     return reader if callable(reader) else None
@@ -209,6 +226,16 @@ def _machine_setup(nck: Any, query: MachineSetupData) -> Any:
     return getattr(getattr(nck, "data", None), "machine_setup", None)
 
 
+def _contact_events(nck: Any, query: ContactEvents) -> tuple[Any, ...]:
+    reader = _reader(nck, "contact_events")
+    return tuple(reader(query.seq)) if reader else ()
+
+
+def _probe_deflected(nck: Any, query: ProbeDeflected) -> bool:
+    reader = _reader(nck, "probe_deflected")
+    return bool(reader()) if reader else False
+
+
 ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     AlarmHistory: _alarm_history,
     AlarmLogSince: _alarm_log_since,
@@ -223,6 +250,8 @@ ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     ProgramSource: _program_source,
     ProgramNames: _program_names,
     MachineSetupData: _machine_setup,
+    ContactEvents: _contact_events,
+    ProbeDeflected: _probe_deflected,
 }
 """Question type -> the function that answers it from a kernel."""
 

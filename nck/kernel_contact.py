@@ -1,0 +1,224 @@
+"""Contact of the tool with the blank or the reference block during motion (a mixin of ``Nck``).
+
+Every kernel step, when something is clamped (``NcData.machine_setup``) and the axes move,
+the straight segment the tool tip travelled in that step is intersected with each solid
+(:func:`nck.contact.first_contact`). Steps are kept short enough near a solid: a step of
+``n`` IPO cycles may run only while the tip cannot reach any solid within them (the gap
+function is a lower bound of the distance, the path velocity at most the axes' MD32000
+velocities), so every step that can touch is a single IPO cycle — one straight segment
+between two interpolation setpoints, at any feed, override, in JOG, INC, MDA and AUTO.
+
+What a contact is (issue 22; the manuals do not describe a simulated workpiece):
+
+* a 3D probe (tool type 710) **switches**: its trigger position (the machine positions at
+  the exact point of contact) is recorded; JOG motion stops. Driven on more than
+  :data:`PROBE_OVERTRAVEL_MM` into the surface it is a crash (alarm 90003);
+* a cutter touching while the spindle turns (M3/M4, speed > 0) and the axes do not move at
+  rapid traverse is **scratching**: recorded, no alarm, the motion goes on;
+* anything else — a cutter with the spindle at rest (90001), a rapid move into a solid
+  (90002) — is a **crash**: an alarm of the trainer's own number range 90000 … 90099 (not a
+  SINUMERIK number; data/alarms/contact.toml), in the alarm log; the motion stops.
+
+A tool already in contact moving deeper is judged the same way (a turning cutter goes on
+cutting; material removal is not modelled here).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from nck.contact import BALL, CUTTER, ToolBody, clearance, first_contact
+from nck.errors import NcAlarmError
+from nck.workpiece import Point
+
+PROBE_TOOL_TYPE = 710  # 3D probe (milling)
+PROBE_OVERTRAVEL_MM = 2.0  # trainer choice: how far a probe's stylus may be deflected
+ALARM_CRASH_SPINDLE_STOPPED = 90001
+ALARM_CRASH_RAPID = 90002
+ALARM_CRASH_PROBE_OVERTRAVEL = 90003
+EVENT_LIMIT = 100
+STEP_MARGIN = 1.25  # the servo setpoints may exceed the path velocity a little
+DEEPER_MM = 1e-9
+
+
+@dataclass(frozen=True, slots=True)
+class ContactEvent:
+    """A contact of the tool with a solid: ``kind`` ``"probe"`` (switched), ``"scratch"`` or
+    ``"crash"``; ``solid`` ``"blank"``/``"reference"``; ``position_mcs`` the machine
+    positions of the path axes at the exact point of contact; ``tool``/``edge`` T and D;
+    ``seq`` counts events since power on; ``time_s`` the control time."""
+
+    seq: int
+    kind: str
+    solid: str
+    position_mcs: dict[str, float]
+    tool: int
+    edge: int
+    time_s: float
+
+
+@dataclass
+class ContactState:
+    """The kernel's contact bookkeeping: the events (bounded) and the solids touched now."""
+
+    events: list[ContactEvent] = field(default_factory=list)
+    touching: set[str] = field(default_factory=set)
+    seq: int = 0
+    jog_rapid: bool = False
+    rapid: bool = False  # the step being judged started at rapid traverse
+
+
+class ContactWatch:
+    """Contact detection in the kernel cycle; mixed into ``Nck`` (uses its state)."""
+
+    data: Any
+    machine: Any
+    motion: Any
+    _contact: ContactState
+
+    # ---------------------------------------------------------------- reading
+    def contact_events(self, since_seq: int = 0) -> tuple[ContactEvent, ...]:
+        """The contact events after ``since_seq`` (oldest first, bounded)."""
+        return tuple(event for event in self._contact.events if event.seq > since_seq)
+
+    def probe_deflected(self) -> bool:
+        """True while the active tool is a 3D probe in contact with a solid."""
+        return bool(self._contact.touching) and self._tool_body()[0].shape == BALL
+
+    # ---------------------------------------------------------------- the tool
+    def _tool_body(self) -> tuple[ToolBody, Point]:
+        """The active tool's body and its tip offset (machine position − tip) in X, Y, Z."""
+        edge = self.data.edge(self._tool, self._edge) if self._edge else None  # type: ignore[attr-defined]
+        if edge is None:
+            return ToolBody(CUTTER, 0.0, 0.0), (0.0, 0.0, 0.0)
+        radius = max(edge.get(6) + edge.get(15), 0.0)
+        length1, length2 = edge.get(3) + edge.get(12), edge.get(4) + edge.get(13)
+        if self.machine.kind == "lathe":  # L1 along X, L2 along Z; the cutting edge a ball
+            return ToolBody(BALL, radius), (length1, 0.0, length2)
+        shape = BALL if edge.tool_type == PROBE_TOOL_TYPE else CUTTER
+        return ToolBody(shape, radius, max(length1, 0.0)), (0.0, 0.0, length1)  # G17: the tool along Z
+
+    def _tip(self, positions: dict[str, float], offset: Point) -> Point:
+        return (positions.get("X", 0.0) - offset[0], positions.get("Y", 0.0) - offset[1],
+                positions.get("Z", 0.0) - offset[2])
+
+    def _contact_watched(self) -> bool:
+        return bool(self.data.machine_setup.solids()) and not self._pc["program_test"]  # type: ignore[attr-defined]
+
+    # ---------------------------------------------------------------- the cycle
+    def _contact_cycle_limit(self, cycles: int) -> int:
+        """At most as many IPO cycles as the tool surely cannot reach a solid in."""
+        if cycles <= 1 or not self._contact_watched():
+            return cycles
+        if (self._run is None and self._overlay is None and not self._jogging  # type: ignore[attr-defined]
+                and self.motion.is_idle()):
+            return cycles  # nothing can start moving inside this step
+        body, offset = self._tool_body()
+        tip = self._tip(self._path_positions(self.motion), offset)  # type: ignore[attr-defined]
+        gap = min(clearance(body, solid, tip) for _, solid in self.data.machine_setup.solids())
+        step_mm = self._max_path_mm_s() * self._ipo_s * STEP_MARGIN  # type: ignore[attr-defined]
+        return max(1, min(cycles, int(gap / step_mm))) if gap > 0.0 else 1
+
+    def _max_path_mm_s(self) -> float:
+        speeds = [float(self.machine.md_value("MD32000", axis, 10000.0) or 10000.0)
+                  for axis in self.machine.path_axes]
+        return math.sqrt(sum(v * v for v in speeds)) / 60.0
+
+    def _contact_positions(self) -> dict[str, float] | None:
+        """Before a step: the machine positions (``None`` when nothing is watched); notes
+        whether the motion of the step starts at rapid traverse."""
+        if not self._contact_watched():
+            return None
+        self._contact.rapid = self._moving_at_rapid()
+        return self._path_positions(self.motion)  # type: ignore[attr-defined]
+
+    def _watch_contact(self, before: dict[str, float] | None) -> None:
+        """After a step: judge the tip's segment from ``before`` to now against every solid."""
+        if before is None:
+            return
+        after = self._path_positions(self.motion)  # type: ignore[attr-defined]
+        if all(abs(after[a] - before.get(a, after[a])) <= 0.0 for a in after):
+            return
+        body, offset = self._tool_body()
+        start, end = self._tip(before, offset), self._tip(after, offset)
+        for name, solid in self.data.machine_setup.solids():
+            touching_before = name in self._contact.touching
+            t = first_contact(body, solid, start, end)
+            if t is None:
+                self._contact.touching.discard(name)
+                continue
+            if t > 0.0 or not touching_before:
+                self._contact.touching.add(name)
+                self._on_contact(name, body, before, after, t)
+            elif clearance(body, solid, end) < clearance(body, solid, start) - DEEPER_MM:
+                self._on_deeper(name, body, solid, before, after, start, end)
+            if clearance(body, solid, end) > 0.0:
+                self._contact.touching.discard(name)
+
+    def _on_contact(self, name: str, body: ToolBody, before: dict[str, float], after: dict[str, float],
+                    t: float) -> None:
+        at = {a: before.get(a, after[a]) + (after[a] - before.get(a, after[a])) * t for a in after}
+        if body.shape == BALL and self.machine.kind != "lathe":
+            self._record("probe", name, at)
+            self._halt_jog()
+            return
+        crash = self._crash_number()
+        if crash is None:
+            self._record("scratch", name, at)
+        else:
+            self._crash(crash, name, at)
+
+    def _on_deeper(self, name: str, body: ToolBody, solid: Any, before: dict[str, float],
+                   after: dict[str, float], start: Point, end: Point) -> None:
+        if body.shape == BALL and self.machine.kind != "lathe":
+            t = first_contact(body, solid, start, end, PROBE_OVERTRAVEL_MM)
+            if t is not None:
+                self._crash(ALARM_CRASH_PROBE_OVERTRAVEL, name,
+                            {a: before.get(a, after[a]) + (after[a] - before.get(a, after[a])) * t for a in after})
+            return
+        crash = self._crash_number()
+        if crash is not None:
+            self._crash(crash, name, dict(after))
+
+    def _crash_number(self) -> int | None:
+        """The crash alarm for a cutter touching now, ``None`` when it is scratching."""
+        if self._contact.rapid:
+            return ALARM_CRASH_RAPID
+        turning = self._spindle_state in ("M3", "M4") and self._spindle_rpm > 0.0  # type: ignore[attr-defined]
+        return None if turning else ALARM_CRASH_SPINDLE_STOPPED
+
+    def _moving_at_rapid(self) -> bool:
+        if self._jogging:  # type: ignore[attr-defined]
+            return self._contact.jog_rapid
+        run = self._overlay or self._run  # type: ignore[attr-defined]
+        source = self._path_motion().current_source() if run is not None else None  # type: ignore[attr-defined]
+        segment = run.segments.get(id(source)) if source is not None else None
+        return getattr(segment, "kind", None) == "G0"
+
+    def _record(self, kind: str, name: str, at: dict[str, float]) -> None:
+        state = self._contact
+        state.seq += 1
+        state.events.append(ContactEvent(state.seq, kind, name, at, self._tool, self._edge,  # type: ignore[attr-defined]
+                                         self._time_s))  # type: ignore[attr-defined]
+        del state.events[:-EVENT_LIMIT]
+
+    def _crash(self, number: int, name: str, at: dict[str, float]) -> None:
+        if any(entry.number == number for entry in self.alarms.active):  # type: ignore[attr-defined]
+            self._halt_jog()  # still crashed (braking, or driven on): one event, one alarm
+            return
+        self._record("crash", name, at)
+        what = "blank" if name == "blank" else "reference block"
+        self._motion_alarm(NcAlarmError(number, f"T{self._tool}", what))  # type: ignore[attr-defined]
+        self._halt_jog()
+
+    def _halt_jog(self) -> None:
+        """Brake every JOG motion (an increment is not continued); the channel ends JOG when
+        the axes stand, as after a released key."""
+        if not self._jogging:  # type: ignore[attr-defined]
+            return
+        for axis in self.machine.path_axes:
+            self.motion.jog_continuous(axis, 0, 0.0)
+        self._jog_targets.clear()  # type: ignore[attr-defined]
+        self._jog_rest.clear()  # type: ignore[attr-defined]
