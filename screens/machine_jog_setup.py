@@ -8,9 +8,11 @@ softkeys and does what they ask, through the area's ``submit`` and ``ask`` only.
 
 - T,S,M and Position: CYCLE START runs what the window says as NC blocks
   (:mod:`screens.machine_jog_blocks`), as an MDA job (:class:`hmi.manual_job.ManualJob`).
-- Set WO is shown but not usable yet: the actual-value setting needs the kernel's
-  Set WO/PRESET command (its JOG display reads the frames of the program
-  interpreter, which a written offset does not reach until a program runs there).
+- Set WO: the actual value of an axis (X=0 … or a value typed) through the kernel's
+  ``SetActualValue``: the active settable offset G54… takes the difference, under
+  G500 the system frame for PRESET and scratching ``$P_SETFR`` (002 L28667); "Delete
+  active WO" is ``DeleteActiveWorkOffset``. Active at once: the WCS display and the
+  work offset screens show it with the next snapshot.
 - T,S,M has no work offset and unit fields yet: the kernel sets the G groups to
   their reset values when the job ends (MD20152 GCODE_RESET_MODE, 002 L2771, is
   not modelled), so a G54 or G70 selected there would not stay.
@@ -39,11 +41,17 @@ from screens.machine_jog_form import FieldSpec, JogForm
 if TYPE_CHECKING:
     from hmi.area import AreaBase
 
-JOG_WINDOWS = ("tsm", "position", "settings")
+JOG_WINDOWS = ("tsm", "setwo", "position", "settings")
 """The views of the setting-up windows (``view-tsm`` …)."""
 
 RUNS_ON_CYCLE_START = ("tsm", "position")
 """Windows whose content CYCLE START runs."""
+
+
+def _ready_in_jog(screen: AreaBase) -> bool:
+    status = screen.status
+    return (status is not None and status.channel.mode == "JOG"
+            and status.channel.channel_state == "reset")
 
 
 def trimmed(value: float) -> str:
@@ -72,6 +80,9 @@ class JogWindows:
             FieldSpec("spindle", "Spindle M function", choices=SPINDLE_FUNCTIONS),
             FieldSpec("m", "Other M function"),
         ), "↑/↓ field   ←/→ choice   CYCLE START (Alt+G) runs it   F10 back", id="view-tsm")
+        yield JogForm("Set WO — actual value in the active work offset", tuple(
+            FieldSpec(axis, f"{axis}  new actual value (WCS)", "mm") for axis in self.axes()
+        ), "⇧F1… axis = 0   ⇧F5 Set WO (values typed)   ⇧F6 delete active WO   F10 back", id="view-setwo")
         yield JogForm("Position — traverse one axis to a position (WCS)", (
             FieldSpec("axis", "Axis", choices=self.axes()),
             FieldSpec("target", "Position", "mm"),
@@ -86,13 +97,23 @@ class JogWindows:
     # -- softkeys --------------------------------------------------------------------------
     def vertical_softkeys(self, view: str | None) -> list[Softkey | None]:
         """The vertical softkeys of the JOG main view (``view`` None) or of a window."""
+        if view == "setwo":
+            keys: list[Softkey | None] = [
+                Softkey(f"setwo.{axis.lower()}0", f"{axis}=0", f"jog('set_zero', '{axis}')",
+                        enabled=_ready_in_jog) for axis in self.axes()[:3]]
+            keys += [None] * (3 - len(keys))
+            return keys + [
+                Softkey("setwo.all0", "=0\nall axes", "jog('set_zero', '*')", enabled=_ready_in_jog),
+                Softkey("setwo.set", "Set\nWO", "jog('set_typed')", enabled=_ready_in_jog),
+                Softkey("setwo.delete", "Delete\nactive WO", "jog('delete_active')", enabled=_ready_in_jog),
+            ]
         if view == "settings":
             return [Softkey("settings.save", "Save\nsettings", "jog('save_settings')")]
         if view in RUNS_ON_CYCLE_START:
             return []
         return [
             Softkey("jog.tsm", "T,S,M", "show_view('tsm')", active=lambda s: s.view == "tsm"),
-            Softkey("jog.setwo", "Set\nWO", "jog('not_yet')", enabled=lambda s: False),
+            Softkey("jog.setwo", "Set\nWO", "show_view('setwo')", active=lambda s: s.view == "setwo"),
             Softkey("jog.measure_workpiece", "Meas.\nworkpiece", "jog('not_yet')", enabled=lambda s: False),
             Softkey("jog.measure_tool", "Meas.\ntool", "jog('not_yet')", enabled=lambda s: False),
             Softkey("jog.position", "Position", "show_view('position')",
@@ -102,8 +123,11 @@ class JogWindows:
         ]
 
     def run(self, what: str, *args: str) -> None:
-        """A softkey of a window: ``save_settings``."""
-        actions: dict[str, Callable[..., None]] = {"save_settings": self._save_settings}
+        """A softkey of a window: ``set_zero``, ``set_typed``, ``delete_active``, ``save_settings``."""
+        actions: dict[str, Callable[..., None]] = {
+            "set_zero": self._set_zero, "set_typed": self._set_typed,
+            "delete_active": self._delete_active, "save_settings": self._save_settings,
+        }
         action = actions.get(what)
         if action is not None:
             action(*args)
@@ -132,6 +156,8 @@ class JogWindows:
                 f" Active: {tool} D{modal.edge}   S {trimmed(modal.spindle_speed_rpm)} rev/min "
                 f"{modal.spindle_state}   {modal.gcodes.get(8, 'G500')}   "
                 f"{'inch' if modal.gcodes.get(13) == 'G70' else 'mm'}   {self._job_state(status)}"))
+        elif view == "setwo":
+            form.show_info(self._setwo_info(status))
         elif view == "position":
             form.show_info(Text(f" {self._job_state(status)}"))
         elif view == "settings":
@@ -143,6 +169,18 @@ class JogWindows:
         if self.job.running:
             return f"running as MDA job: {self.job.blocks.strip().replace(chr(10), ' · ')}"
         return ""
+
+    def _setwo_info(self, status: NckStatus) -> Text:
+        active = status.channel.modal.gcodes.get(8, "G500")
+        text = Text()
+        text.append(f" Active work offset: {active}", style="bold")
+        if active == "G500":
+            text.append("   (Set WO writes the system frame for PRESET and scratching)")
+        text.append("\n Actual values WCS:")
+        for axis in status.axes:
+            if axis.kind != "spindle":
+                text.append(f"  {axis.name} {axis.position_wcs:.3f}")
+        return text
 
     # -- CYCLE START -----------------------------------------------------------------------
     def before_cycle_start(self, view: str) -> bool:
@@ -190,6 +228,35 @@ class JogWindows:
     def follow(self, status: NckStatus) -> bool:
         """A new snapshot: end the MDA job once its blocks are done (back to JOG); True if it ended."""
         return self.job.follow(self.screen.hmi.bridge.status)
+
+    # -- Set WO ------------------------------------------------------------------------------
+    def _set_zero(self, axis: str) -> None:
+        for name in (self.axes()[:3] if axis == "*" else (axis,)):
+            if isinstance(self.screen.submit(cmd.SetActualValue(name, 0.0)), cmd.Rejected):
+                return
+
+    def _set_typed(self) -> None:
+        form = self.form("setwo")
+        wanted: dict[str, float] = {}
+        for axis in self.axes():
+            text = form.value(axis).strip()
+            if not text:
+                continue
+            try:
+                wanted[axis] = float(text)
+            except ValueError:
+                self.screen.say(f"{axis}: enter a number")
+                return
+        if not wanted:
+            self.screen.say("Set WO: enter the new actual value of an axis")
+            return
+        for axis, value in wanted.items():
+            if isinstance(self.screen.submit(cmd.SetActualValue(axis, value)), cmd.Rejected):
+                return
+            form.set_value(axis, "")
+
+    def _delete_active(self) -> None:
+        self.screen.submit(cmd.DeleteActiveWorkOffset())
 
     # -- Settings --------------------------------------------------------------------------------
     def _setting_data(self) -> Callable[[str], float]:

@@ -166,11 +166,14 @@ def details_table(view: DataView, frame: str, levels: LevelOf) -> DataTable:
 
 
 def active_chain_table(view: DataView, status: NckStatus | None) -> DataTable:
-    """The active frame chain: base frame, active settable frame, and the total offset."""
+    """The active frame chain: system frame for PRESET/scratching, base frame, active settable
+    frame, and the total offset."""
     axes = path_axes(view)
     columns = [Column("Frame", 30, "<")] + [Column(f"{a} [mm]", 11) for a in axes]
     active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
     rows = []
+    setframe = view.data.setframe  # the system frame for PRESET and scratching (Set WO under G500)
+    rows.append([Cell("PRESET / scratching ($P_SETFR)")] + [Cell(fixed(setframe.trans.get(a, 0.0))) for a in axes])
     base = view.data.base_frame
     rows.append([Cell("Base frame")] + [Cell(fixed(base.trans.get(a, 0.0))) for a in axes])
     settable = view.data.settable_frames.get(active) if active != "G500" else None

@@ -30,3 +30,9 @@ def test_position_window(snap_compare) -> None:
 def test_settings_window(snap_compare) -> None:
     """Settings for manual mode: JOG feed and variable increment fields, ⇧F1 Save."""
     assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE, press=["shift+f6"])
+
+
+def test_set_wo_window(snap_compare) -> None:
+    """Set WO: one field per axis, X typed 0.5, softkeys X=0 … Delete active WO."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f2", "0", ".", "5"])
