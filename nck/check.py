@@ -32,6 +32,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterator
 
+from nck.alarm_ids import BLOCK_TOO_COMPLEX
 from nck.canon import CanonCommand, Motion, UserAlarm
 from nck.errors import NcAlarmError
 from nck.machine import load_machine
@@ -235,7 +236,7 @@ def run_text(
     except NcAlarmError as error:
         result.alarms.append(_alarm(error))
     except RecursionError:
-        result.alarms.append(_alarm(NcAlarmError(12540)))
+        result.alarms.append(_alarm(NcAlarmError(BLOCK_TOO_COMPLEX)))
     return result
 
 

@@ -16,6 +16,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
+from nck.alarm_ids import INTERNAL_ERROR, PROGRAM_NOT_FOUND
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.interp.api import ProgramSource
@@ -156,14 +157,14 @@ def run_on_kernel(
     nck.submit(cmd.SelectMode("AUTO"))
     if isinstance(nck.submit(cmd.SelectProgram(program_name)), cmd.Rejected):
         result.status = "alarm"
-        result.alarms.append(NcAlarmError(14011, program_name).located(program_name, None, None))
+        result.alarms.append(NcAlarmError(PROGRAM_NOT_FOUND, program_name).located(program_name, None, None))
         return result
     started = nck.submit(cmd.CycleStart())
     result.interpreter = interpreters[0] if interpreters else None
     if isinstance(started, cmd.Rejected):
         result.status = "alarm"
         if not result.alarms:
-            result.alarms.append(NcAlarmError(1, started.reason))
+            result.alarms.append(NcAlarmError(INTERNAL_ERROR, started.reason))
         return result
     while True:
         elapsed = nck.time_s
@@ -181,8 +182,8 @@ def run_on_kernel(
             nck.submit(cmd.CycleStart())
             continue
         break
-    if nck.internal_errors and not any(a.number == 1 for a in result.alarms):
-        result.alarms.append(NcAlarmError(1, "internal error"))
+    if nck.internal_errors and not any(a.number == INTERNAL_ERROR for a in result.alarms):
+        result.alarms.append(NcAlarmError(INTERNAL_ERROR, "internal error"))
     if result.status != "timeout" and (result.alarms or nck.situation.channel != "reset"):
         result.status = "alarm"
     result.machine_time_s = nck.time_s

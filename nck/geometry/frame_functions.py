@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
+from nck.alarm_ids import NAME_NOT_DEFINED, TYPE_CONVERSION_IMPOSSIBLE
 from nck.errors import NcAlarmError
 from nck.geometry.frames import Frame
 from nck.geometry.planes import Plane, plane
@@ -61,7 +62,7 @@ def call(name: str, args: Sequence[Any], length_mm: float = 1.0,
         return _value(Frame.crot(pairs))
     if name == "CSCALE":
         return _value(Frame.cscale(pairs))
-    raise NcAlarmError(12550, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, name)
 
 
 def _crpl(args: Sequence[Any], active_plane: Plane) -> Frame:
@@ -88,7 +89,7 @@ def as_frame(value: Any, name: str) -> Frame:
         return value.frame
     if isinstance(value, FrameValue):
         return Frame.ctrans(value.trans).arot(value.rot) if value.rot else Frame.ctrans(value.trans)
-    raise NcAlarmError(14096, name)
+    raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, name)
 
 
 def _value(frame: Frame) -> GeoFrameValue:

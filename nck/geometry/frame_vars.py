@@ -22,6 +22,7 @@ from __future__ import annotations
 import copy
 from typing import Any
 
+from nck.alarm_ids import DATA_WRITE_PROTECTED, NAME_NOT_DEFINED, WRONG_AXIS_TYPE
 from nck.errors import NcAlarmError
 from nck.geometry.chain import frame_from_work_offset
 from nck.geometry.frames import Frame, as_matrix3, rpy_matrix
@@ -94,7 +95,7 @@ def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
     if name == "$P_UBFR":
         axis, comp = _address(interp, name, indices)
         return _stored_component(interp.data.base_frame, axis, comp, path.units(modal).data_mm)
-    raise NcAlarmError(12550, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, name)
 
 
 def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
@@ -142,7 +143,7 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
         axis, comp = _address(interp, name, rest)
         _set_stored(offset, axis, comp, number, path.units(modal).data_mm)
         return
-    raise NcAlarmError(17070, name)
+    raise NcAlarmError(DATA_WRITE_PROTECTED, name)
 
 
 # --------------------------------------------------------------------------- rollback
@@ -166,7 +167,7 @@ def _guard_active(interp: Any) -> None:
 def _setframe_address(interp: Any, name: str, indices: tuple[Any, ...]) -> tuple[str, str]:
     """``$P_SETFR[axis, TR]``: configured by MD28082 bit 0, translations only (our model)."""
     if not int(interp.machine.md_value("MD28082", None, 33) or 0) & SETFR_MASK_BIT:
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
     axis, comp = _address(interp, name, indices)
     if comp != "TR":
         raise NcAlarmError(ALARM_INDEX, name)
@@ -324,7 +325,7 @@ def _set_component(frame: Frame, axis: str, comp: str, value: float, length_mm: 
     if comp == "RT":
         geo = frame.geometry_axes
         if axis not in geo:
-            raise NcAlarmError(14092, axis)
+            raise NcAlarmError(WRONG_AXIS_TYPE, axis)
         angles = list(frame.rotation_deg)
         angles[geo.index(axis)] = value
         return frame._replace(rotation=as_matrix3(rpy_matrix((angles[0], angles[1], angles[2]))))

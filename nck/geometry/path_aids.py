@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from nck.alarm_ids import CHAMFER_OR_ROUNDING_NEGATIVE
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry.circles import Arc
@@ -31,13 +32,13 @@ def aid_of(words: Any, geo: GeometryState, units: UnitSystem) -> tuple[str, floa
     if "RNDM" in w:
         value = float(w["RNDM"]) * units.position_mm
         if value < 0:
-            raise NcAlarmError(16500)
+            raise NcAlarmError(CHAMFER_OR_ROUNDING_NEGATIVE)
         geo.rndm_mm = value
     for key in ("CHF", "CHR", "RND"):
         if key in w:
             value = float(w[key]) * units.position_mm
             if value < 0:
-                raise NcAlarmError(16500)
+                raise NcAlarmError(CHAMFER_OR_ROUNDING_NEGATIVE)
             return (key, value)
     if geo.rndm_mm > 0:
         return ("RND", geo.rndm_mm)

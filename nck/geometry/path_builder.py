@@ -24,6 +24,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from nck.alarm_ids import NAME_NOT_DEFINED
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry import circles, path_aids
@@ -305,7 +306,7 @@ class PathBuilder:
         """
         kind = modal.gcodes.get(1, "G1")
         if kind not in PATH_KINDS:
-            raise NcAlarmError(12550, kind)
+            raise NcAlarmError(NAME_NOT_DEFINED, kind)
         units = self.units(modal)
         pl = self.plane(modal)
         suppress = words.gcodes.get(9)

@@ -7,6 +7,7 @@ builds on it.
 
 from __future__ import annotations
 
+from nck.alarm_ids import ARRAY_TOO_MANY_DIMENSIONS, IDENTIFIER_TOO_LONG, SYNTAX_ERROR, VALUE_OUTSIDE_LIMITS, VALUE_RANGE_EXCEEDED
 from nck.errors import NcAlarmError
 from nck.lang import ast
 from nck.lang.expressions import (
@@ -78,7 +79,7 @@ class DeclarationParser(TokenParser):
             if attr.startswith("AP"):
                 level = self._small_int()
                 if not 0 <= level <= 7:
-                    raise NcAlarmError(12560, f"{attr} {level}")
+                    raise NcAlarmError(VALUE_OUTSIDE_LIMITS, f"{attr} {level}")
                 if attr in ("APRP", "APR"):
                     read_level = level
                 elif attr in ("APWP", "APW"):
@@ -94,7 +95,7 @@ class DeclarationParser(TokenParser):
             string_len = self._small_int()
             self.expect_op("]")
             if not 1 <= string_len <= 200:
-                raise NcAlarmError(12160, f"STRING[{string_len}]")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, f"STRING[{string_len}]")
         lower = upper = None
         while self.tok.kind == NAME and self.tok.text in ("LLI", "ULI", "PHU"):
             attr = self.advance().text
@@ -125,12 +126,12 @@ class DeclarationParser(TokenParser):
             raise syntax_error(tok)
         name = self.advance().text
         if len(name) > MAX_NAME_CHARS:
-            raise NcAlarmError(12420, name[:MAX_NAME_CHARS])
+            raise NcAlarmError(IDENTIFIER_TOO_LONG, name[:MAX_NAME_CHARS])
         dims: tuple[ast.Expr, ...] = ()
         if self.is_op("["):
             dims = self._indices()
             if len(dims) > 3:
-                raise NcAlarmError(12190, name)
+                raise NcAlarmError(ARRAY_TOO_MANY_DIMENSIONS, name)
         init = None
         rep = False
         if self.is_op("="):
@@ -169,7 +170,7 @@ class DeclarationParser(TokenParser):
                 raise syntax_error(tok)
             name = self.advance().text
             if len(name) < 2 or name in VALUE_ADDRESSES or name.startswith("$"):
-                raise NcAlarmError(12080, name)
+                raise NcAlarmError(SYNTAX_ERROR, name)
         dims = 0
         if self.is_op("["):
             self.advance()

@@ -9,6 +9,7 @@ addresses that take a value with ``=``.
 
 from __future__ import annotations
 
+from nck.alarm_ids import BLOCK_TOO_COMPLEX, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.lang import ast
 from nck.lang.lexer import ADDR, EOL, NAME, NUMBER, OP, STRING, Token
@@ -51,7 +52,7 @@ _LEVELS: tuple[tuple[str, ...], ...] = (
 
 
 def syntax_error(tok: Token, text: str | None = None) -> NcAlarmError:
-    return NcAlarmError(12080, text if text is not None else (tok.text or "end of block"))
+    return NcAlarmError(SYNTAX_ERROR, text if text is not None else (tok.text or "end of block"))
 
 
 class TokenParser:
@@ -96,7 +97,7 @@ class TokenParser:
     def expression(self) -> ast.Expr:
         self.depth += 1
         if self.depth > MAX_NESTING:
-            raise NcAlarmError(12540)
+            raise NcAlarmError(BLOCK_TOO_COMPLEX)
         try:
             return self._binary(0)
         finally:
@@ -119,7 +120,7 @@ class TokenParser:
             self.advance()
             self.depth += 1
             if self.depth > MAX_NESTING * 4:
-                raise NcAlarmError(12540)
+                raise NcAlarmError(BLOCK_TOO_COMPLEX)
             try:
                 operand = self._unary()
             finally:

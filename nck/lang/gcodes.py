@@ -10,6 +10,7 @@ import functools
 import re
 from dataclasses import dataclass
 
+from nck.alarm_ids import G_FUNCTION_UNKNOWN
 from nck.errors import NcAlarmError
 from nck.resources import load_toml
 
@@ -41,7 +42,7 @@ class GTable:
         """Return the group of a (normalised) G code; alarm 12470 if unknown."""
         number = self.group_of.get(code)
         if number is None:
-            raise NcAlarmError(12470, code)
+            raise NcAlarmError(G_FUNCTION_UNKNOWN, code)
         return self.groups[number]
 
     def is_gcode(self, name: str) -> bool:

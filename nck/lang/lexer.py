@@ -19,6 +19,7 @@ import math
 import re
 from dataclasses import dataclass
 
+from nck.alarm_ids import BLOCK_TOO_COMPLEX, SYNTAX_ERROR, VALUE_RANGE_EXCEEDED
 from nck.errors import NcAlarmError
 
 MAX_BLOCK_CHARS = 512  # block length limit of the 840D sl block buffer (alarm 12540)
@@ -63,7 +64,7 @@ def _read_number(text: str, pos: int) -> tuple[int, float | int]:
             pos += 1
     mantissa = text[start:pos]
     if mantissa in (".", ""):
-        raise NcAlarmError(12080, text[start:start + 8])
+        raise NcAlarmError(SYNTAX_ERROR, text[start:start + 8])
     exponent = 0
     # Exponential notation: 1.874EX8, 8.2EX-3
     if text.startswith("EX", pos):
@@ -76,18 +77,18 @@ def _read_number(text: str, pos: int) -> tuple[int, float | int]:
         while q < n and text[q].isdigit() and text[q].isascii():
             q += 1
         if q == p:
-            raise NcAlarmError(12080, text[start:q])
+            raise NcAlarmError(SYNTAX_ERROR, text[start:q])
         if q - p > 3:
-            raise NcAlarmError(12160, text[start:q])
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, text[start:q])
         exponent = sign * int(text[p:q])
         pos = q
         is_real = True
     if len(mantissa) > 20:
-        raise NcAlarmError(12160, mantissa[:20])
+        raise NcAlarmError(VALUE_RANGE_EXCEEDED, mantissa[:20])
     if is_real:
         value: float | int = float(f"{mantissa}e{exponent}")
         if math.isinf(value):  # beyond the REAL range (1EX400): value range exceeded, as a long exponent
-            raise NcAlarmError(12160, text[start:pos])
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, text[start:pos])
     else:
         value = int(mantissa)
     return pos, value
@@ -97,7 +98,7 @@ def _read_radix_constant(text: str, pos: int) -> tuple[int, int]:
     """Read ``'H1F'`` (hex) or ``'B1010'`` (binary) starting at the quote."""
     end = text.find("'", pos + 1)
     if end < 0:
-        raise NcAlarmError(12080, text[pos:pos + 10])
+        raise NcAlarmError(SYNTAX_ERROR, text[pos:pos + 10])
     body = text[pos + 1:end]
     try:
         if body[:1] == "H" and 1 < len(body) <= 9:
@@ -106,7 +107,7 @@ def _read_radix_constant(text: str, pos: int) -> tuple[int, int]:
             return end + 1, int(body[1:], 2)
     except ValueError:
         pass
-    raise NcAlarmError(12080, text[pos:end + 1])
+    raise NcAlarmError(SYNTAX_ERROR, text[pos:end + 1])
 
 
 def split_comment(line: str) -> tuple[str, str | None]:
@@ -143,7 +144,7 @@ def tokenize(code: str) -> list[Token]:
     12540 for blocks longer than :data:`MAX_BLOCK_CHARS`.
     """
     if len(code) > MAX_BLOCK_CHARS:
-        raise NcAlarmError(12540)
+        raise NcAlarmError(BLOCK_TOO_COMPLEX)
     if '"' not in code and "'" not in code:
         text = code.translate(_ASCII_UPPER)
         fast = _tokenize_plain(text)
@@ -229,7 +230,7 @@ def _tokenize_slow(code: str, text: str) -> list[Token]:
         if ch == '"':
             end = text.find('"', pos + 1)
             if end < 0:
-                raise NcAlarmError(12080, text[pos:pos + 12])
+                raise NcAlarmError(SYNTAX_ERROR, text[pos:pos + 12])
             tokens.append(Token(STRING, code[pos + 1:end], code[pos + 1:end], pos))
             pos = end + 1
             continue
@@ -267,7 +268,7 @@ def _tokenize_slow(code: str, text: str) -> list[Token]:
             tokens.append(Token(OP, ch, None, pos))
             pos += 1
             continue
-        raise NcAlarmError(12080, _printable(code[pos:pos + 10]))
+        raise NcAlarmError(SYNTAX_ERROR, _printable(code[pos:pos + 10]))
     tokens.append(Token(EOL, "", None, n))
     return tokens
 

@@ -10,6 +10,7 @@ specific number applies); nothing else escapes :func:`parse_block`.
 
 from __future__ import annotations
 
+from nck.alarm_ids import BLOCK_TOO_COMPLEX, G_FUNCTION_UNKNOWN, IDENTIFIER_TOO_LONG, NAME_NOT_DEFINED, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.lang import ast
 from nck.lang.declarations import DeclarationParser
@@ -47,7 +48,7 @@ class BlockParser(DeclarationParser):
             stmts.append(self._case())
             return
         if name == "REDEF":  # 004 L529-536: attribute redefinition is not offered by this NC
-            raise NcAlarmError(12550, "REDEF")
+            raise NcAlarmError(NAME_NOT_DEFINED, "REDEF")
         if name in ("WHILE", "UNTIL"):
             self.advance()
             stmts.append(ast.Control(name, cond=self.expression()))
@@ -135,7 +136,7 @@ class BlockParser(DeclarationParser):
             stmts.append(ast.GWord(name))
             return
         if len(name) > MAX_NAME_CHARS:
-            raise NcAlarmError(12420, name[:MAX_NAME_CHARS])
+            raise NcAlarmError(IDENTIFIER_TOO_LONG, name[:MAX_NAME_CHARS])
         if self.is_op("("):
             stmts.append(ast.Call(name, self._arguments()))
             return
@@ -164,7 +165,7 @@ class BlockParser(DeclarationParser):
             raise syntax_error(self.tok, letter + self.tok.text)
         value = self.advance().value
         if letter == "G":
-            raise NcAlarmError(12470, f"G{'-' if sign < 0 else ''}{value}")
+            raise NcAlarmError(G_FUNCTION_UNKNOWN, f"G{'-' if sign < 0 else ''}{value}")
         return ast.AddressWord(letter, ast.Num(sign * value))  # type: ignore[operator]
 
     def _address_statement(self, stmts: list[ast.Statement]) -> None:
@@ -186,7 +187,7 @@ class BlockParser(DeclarationParser):
             return
         if letter == "G":
             if isinstance(num.value, float):
-                raise NcAlarmError(12470, "G" + num.text)
+                raise NcAlarmError(G_FUNCTION_UNKNOWN, "G" + num.text)
             stmts.append(ast.GWord(normalize("G" + num.text)))
             return
         if letter == "L":
@@ -224,9 +225,9 @@ def parse_block(text: str, line: int = 1, inserted: bool = False) -> ast.Block:
     except NcAlarmError:
         raise
     except RecursionError:
-        raise NcAlarmError(12540, line=line) from None
+        raise NcAlarmError(BLOCK_TOO_COMPLEX, line=line) from None
     except (ValueError, OverflowError, TypeError, IndexError) as exc:
-        raise NcAlarmError(12080, str(exc)[:20], line=line) from None
+        raise NcAlarmError(SYNTAX_ERROR, str(exc)[:20], line=line) from None
 
 
 def _parse_block(text: str, line: int, inserted: bool = False) -> ast.Block:
@@ -247,7 +248,7 @@ def _parse_block(text: str, line: int, inserted: bool = False) -> ast.Block:
         if parser.tok.kind == NUMBER and parser.tok.col == tokens[0].col + 1:
             value = parser.tok.value
             if not isinstance(value, int) or value > 9:
-                raise NcAlarmError(12080, "/" + parser.tok.text)
+                raise NcAlarmError(SYNTAX_ERROR, "/" + parser.tok.text)
             skip_level = value
             parser.advance()
     for _ in range(2):
@@ -263,7 +264,7 @@ def _parse_block(text: str, line: int, inserted: bool = False) -> ast.Block:
             if candidate in RESERVED or candidate.startswith("$") or len(candidate) < 2:
                 raise syntax_error(parser.tok)
             if len(candidate) > MAX_NAME_CHARS:
-                raise NcAlarmError(12420, candidate[:MAX_NAME_CHARS])
+                raise NcAlarmError(IDENTIFIER_TOO_LONG, candidate[:MAX_NAME_CHARS])
             label = candidate
             parser.advance()
             parser.advance()
@@ -291,6 +292,6 @@ def _check_single_statements(stmts: list[ast.Statement], inserted: bool = False)
     for stmt in stmts:
         if isinstance(stmt, (ast.Def, ast.Proc, ast.Extern, ast.Control, ast.SectionRepeat)):
             label = stmt.kind if isinstance(stmt, ast.Control) else type(stmt).__name__.upper()
-            raise NcAlarmError(12080, label)
+            raise NcAlarmError(SYNTAX_ERROR, label)
         if isinstance(stmt, ast.GWord) and stmt.code in LANGUAGE_SWITCHES and not inserted:
-            raise NcAlarmError(12080, stmt.code)
+            raise NcAlarmError(SYNTAX_ERROR, stmt.code)
