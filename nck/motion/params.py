@@ -121,6 +121,7 @@ class MotionParams:
     jog_incr_weight_mm: float
     axes: tuple[AxisParams, ...]
     spindles: tuple[SpindleParams, ...]
+    dwell_resumes: bool = False  # MD11470 bit 0: NC START resumes an interrupted dwell
 
     def axis(self, name: str) -> AxisParams:
         """The parameters of path axis ``name``."""
@@ -236,4 +237,5 @@ def motion_params(machine: MachineConfig) -> MotionParams:
         jog_incr_weight_mm=md("MD31090", None, 0.001),
         axes=axes,
         spindles=spindles,
+        dwell_resumes=bool(int(md("MD11470", None, 0)) & 1),
     )

@@ -68,6 +68,7 @@ class PlannedMotion(PathInterpolator):
         self.v_path = 0.0
         self.plan_pos: np.ndarray | None = None
         self.wait_cycles = 0
+        self.dwell_rest_cycles = 0  # the rest of a dwell interrupted by NC STOP (MD11470 bit 0)
         self.wait_source: Source | None = None
         self.exact_wait: tuple[np.ndarray, np.ndarray] | None = None
         # The window of the last segment that ended without its exact-stop wait (continuous path):
@@ -321,14 +322,21 @@ class PlannedMotion(PathInterpolator):
         return bool(np.all(np.abs(self.servo.v_set) <= 1e-9) and np.all(np.abs(self.servo.e) <= self._coarse))
 
     def hold(self) -> None:
-        """NC STOP: brake along the path and stay interrupted."""
+        """NC STOP: brake along the path and stay interrupted.
+
+        A running dwell (G4) is cancelled (001 L6467-6469), or, with MD11470 bit 0, its rest
+        runs after NC START (002 L19242-19243)."""
         self.held = True
         if self.run is not None and self.run.kind == "segment":
             self._brake_path("brake")
+        if self.wait_cycles and self.exact_wait is None and not self.spindle_wait:
+            self.dwell_rest_cycles = self.wait_cycles if self.params.dwell_resumes else 0
+            self.wait_cycles = 0
 
     def resume(self) -> None:
         """NC START: continue the interrupted segment (after the REPOS approach, if any)."""
         self.held = False
+        self.wait_cycles, self.dwell_rest_cycles = max(self.wait_cycles, self.dwell_rest_cycles), 0
         if self.repos_pending and self.hold_point is not None:
             self.repos_pending = False
             start = self.cmd.copy()
@@ -350,6 +358,7 @@ class PlannedMotion(PathInterpolator):
         self.stop_source = None
         self.spindle_wait = False
         self.wait_cycles = 0
+        self.dwell_rest_cycles = 0
         self.exact_wait = None
         self.unsettled = None
         self.settle_point = None

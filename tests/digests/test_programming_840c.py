@@ -78,3 +78,34 @@ def test_digest_programming_840c_rank_18_dwell_alone_in_its_block() -> None:
     assert dwells == [(2.5, None), (None, 10.0)]
     assert alarm_of("G4 F1 X5\nM30\n") == 12080
     assert alarm_of("G4 F1 M8\nM30\n") == 12080
+
+
+@pytest.mark.parametrize(("md11470", "rest_s"), [(0, 0.0), (1, 4.0)])
+def test_digest_programming_840c_rank_18_nc_stop_cancels_a_dwell(md11470: int, rest_s: float) -> None:
+    """Digest programming-840c rank 18: NC STOP during ``G04 X`` cancels the dwell (001
+    L6467-6469); on the 840D MD11470 bit 0 makes NC START resume the rest of it instead (002
+    L19242-19243). G4 F5, NC STOP after 1 s, 0.5 s stopped, NC START: the rest is 0 s, or the
+    4 s left (the time stopped does not count); then N20 moves X by 10 mm at 600 mm/min, 1 s.
+    Before, the dwell went on counting while the channel was stopped."""
+    import dataclasses
+
+    from nck import commands as c
+    from nck.interp.sources import MemorySource
+    from nck.kernel import Nck
+    from nck.machine import load_machine
+
+    machine = load_machine()
+    machine = dataclasses.replace(machine, md={**machine.md, "MD11470": md11470})
+    nck = Nck(machine=machine, programs=MemorySource({"P.MPF": "N10 G4 F5\nN20 G1 X10 F600\nN30 M30\n"}),
+              referenced=True, batch_cycles=1)
+    assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
+    assert nck.submit(c.SelectProgram("P.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    nck.tick(1.0)
+    assert nck.submit(c.CycleStop()) == c.Accepted()
+    nck.tick(0.5)
+    assert nck.situation.program == "stopped"
+    restart_s = nck.time_s
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 30.0)
+    assert nck.time_s - restart_s == pytest.approx(rest_s + 1.0, abs=0.05)
