@@ -84,3 +84,39 @@ def test_digest_job_planning_rank_06_def_syntax_rules() -> None:
     assert alarm_of("DEF INT A1B\nM30\n") == 12080  # second character a digit
     assert run_text("DEF INT _AB\nM30\n").status == "ended"
     assert alarm_of("R1=1\nDEF INT LATE\nM30\n") == 14500  # definitions first (004 L407-410)
+
+
+@pytest.mark.parametrize("ending", ["M30", "RESET"])
+def test_digest_job_planning_rank_04_pud_is_gone_after_program_end_or_reset(ending: str) -> None:
+    """Digest job-planning-variables rank 4: a PUD lives as long as its main program; with
+    MD11120 = 1 the subprograms called from it see it (004 L509-516), and after M30 or NC
+    RESET it is gone: the same subprogram called from the next program gets 12550 (name not
+    defined). Run in one channel of the kernel, programs selected one after the other."""
+    import dataclasses
+
+    from nck import commands as c
+    from nck.interp.sources import MemorySource
+    from nck.kernel import Nck
+    from nck.machine import load_machine
+
+    machine = load_machine()
+    machine = dataclasses.replace(machine, md={**machine.md, "MD11120": 1})
+    first = "DEF INT PU=5\nSUB3\nM0\nM30\n"
+    programs = MemorySource({"A.MPF": first, "B.MPF": "SUB3\nM30\n", "SUB3.SPF": "PROC SUB3\nR1=PU\nRET\n"})
+    nck = Nck(machine=machine, programs=programs, referenced=True)
+    assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
+    assert nck.submit(c.SelectProgram("A.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.program == "stopped", 10.0)  # at M0
+    assert nck.status().alarms == ()
+    assert nck.data.r[1] == 5.0  # the subprogram read the PUD of its main program
+    if ending == "M30":
+        assert nck.submit(c.CycleStart()) == c.Accepted()
+        assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+    else:
+        assert nck.submit(c.Reset()) == c.Accepted()
+        assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+    assert nck.submit(c.SelectProgram("B.MPF")) == c.Accepted()
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.program != "running", 10.0)
+    assert [a.number for a in nck.status().alarms] == [12550]
