@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from bench.contour import contour_program
+from bench.material import write_material_program
 from bench.measure import ChildRun, alternate, environment_note, median, run_child
 from bench.peers import ensure_ncgi, ensure_rs274, nck_check_command, nck_run_command
 from bench.programs import CAM_BLOCKS, write_cam_program
@@ -113,6 +114,24 @@ def simulation_rows(folder: Path, program: Path, notes: list[str], big: bool) ->
     return rows
 
 
+def material_rows(folder: Path, notes: list[str]) -> list[Row]:
+    """Issue 24: the 200 × 150 mm plate at 0.2 mm cut by the 200,000-block CAM program
+    (8 mm ball end mill): the AUTO run through the kernel, then the sweep through the Z-map."""
+    program = write_material_program(folder)
+    run = run_child([sys.executable, "-m", "bench.material", str(program)], timeout_s=3600.0)
+    if run.returncode != 0:
+        notes.append(f"material removal exited {run.returncode}: {run.stderr.strip()[-300:]}")
+        return []
+    figures = json.loads(run.stdout.strip().splitlines()[-1])
+    return [
+        Row("material removal, 200×150 plate at 0.2 mm, 200,000 blocks", f"{run.wall_s:,.1f} s",
+            "< 10 s", "", f"run {figures['run_s']:,.1f} s + sweep {figures['sweep_s']:,.1f} s, "
+            f"{figures['chords']:,} chords", "yes" if run.wall_s < 10.0 else "NO"),
+        Row("  peak RSS, material removal", f"{run.peak_rss_mb:,.0f} MB", "< 500 MB", "", "",
+            "yes" if run.peak_rss_mb < 500.0 else "NO"),
+    ]
+
+
 def hmi_rows(program: Path | None, notes: list[str]) -> list[Row]:
     """HMI start-to-first-frame, refresh CPU, key latency (Pilot), and RSS with the long program."""
     rows: list[Row] = []
@@ -163,6 +182,8 @@ def run_suite() -> str:
         print(format_table(rows), flush=True)
         rows += simulation_rows(folder, program, notes, big=not quick)
         rows += hmi_rows(None if quick else program, notes)
+        if not quick:
+            rows += material_rows(folder, notes)
     stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     text = (f"# Benchmark results\n\n{stamp} on {environment_note()}; "
             f"{repeats} alternating run(s) per interpreter, medians; suite took "

@@ -39,6 +39,7 @@ from nck.machine import load_machine
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
 from nck.resources import alarm_text
+from nck.simulation.run import Simulation, simulate
 
 _BLOCK_NUMBER = re.compile(r"\s*(?:/\d?\s*)?[Nn](\d+)\b")
 
@@ -320,6 +321,13 @@ class CheckContext:
         """Every problem of ``text`` on this machine and data (see :func:`iter_check`)."""
         return iter_check(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
                           should_stop=should_stop)
+
+    def simulate(self, name: str, text: str, *, programs: Any = None,
+                 resolution_mm: float | None = None) -> Simulation:
+        """Run ``text`` as AUTO runs it on this machine and data and cut the blank with it
+        (see :func:`nck.simulation.run.simulate`)."""
+        return simulate(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
+                        resolution_mm=resolution_mm)
 
     def run_text(self, name: str, text: str, *, programs: Any = None,
                  should_stop: Callable[[], bool] | None = None) -> RunResult:

@@ -38,6 +38,7 @@ from hmi.area import AreaBase
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import NcEditor
+from hmi.widgets.stock_view import StockView
 from hmi.widgets.toolpath import ToolpathView
 from screens.program_edit import EditActions
 from screens.program_files import ProgramFiles, decode_program
@@ -82,6 +83,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         self.read_only_reason = ""
         self.binary = False
         self.simulating = False
+        self.sim_material = True
         self.search_open = False
         self._dirty = False
         self._generation = 0
@@ -101,6 +103,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             yield Static("", id="prog-title", markup=False)
             yield NcEditor("", id="prog-editor", read_only=True)
             yield ToolpathView(id="prog-toolpath")
+            yield StockView(id="prog-stock")
             with Horizontal(id="prog-search"):
                 yield Input(placeholder="search", id="prog-find")
                 yield Input(placeholder="replace with", id="prog-replace")
@@ -115,6 +118,11 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
     def toolpath(self) -> ToolpathView:
         """The simulation widget."""
         return self.query_one("#prog-toolpath", ToolpathView)
+
+    @property
+    def stock(self) -> StockView:
+        """The material-removal view of the simulation."""
+        return self.query_one("#prog-stock", StockView)
 
     @property
     def files(self) -> ProgramFiles:
@@ -565,7 +573,8 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
         if not self._ready:
             return
         self.editor.display = not self.simulating
-        self.toolpath.display = self.simulating
+        self.toolpath.display = self.simulating and not self.sim_material
+        self.stock.display = self.simulating and self.sim_material
         self.query_one("#prog-search").display = self.search_open and not self.simulating
 
 

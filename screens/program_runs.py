@@ -26,6 +26,7 @@ from nck.queries import CheckSetting
 
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import ErrorMark
+from hmi.widgets.stock_view import StockPicture
 from hmi.widgets.toolpath import path_from_motions
 
 CHECK_DEBOUNCE_S = 0.4
@@ -56,6 +57,35 @@ class _Breather:
             self._since = time.perf_counter()
 
 
+def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
+    """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it and the
+    path drawn up to chord ``chords`` (the tool stands at that chord's end)."""
+    path = simulation.path
+    tool = tuple(float(v) for v in path.ends[chords - 1]) if chords else None
+    cutter = path.cutters[int(path.cutter_of[chords - 1])] if chords and len(path.cutters) else None
+    blank = simulation.blank
+    return StockPicture(
+        heights=zmap.heights, x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm, resolution_mm=zmap.resolution_mm,
+        z_mm=blank.z_mm, blank_x_mm=blank.x_mm, blank_y_mm=blank.y_mm, starts=path.starts,
+        ends=path.ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,  # type: ignore[arg-type]
+        tool_radius_mm=cutter.radius_mm if cutter is not None else 0.0)
+
+
+def material_note(simulation: Any) -> str:
+    """One line: how the run ended (its alarm), the events, the machining time."""
+    minutes, seconds = divmod(simulation.machine_time_s, 60.0)
+    parts = [f"time {int(minutes)}:{seconds:04.1f}"]
+    if simulation.alarms:
+        alarm = simulation.alarms[0]
+        parts.append(f"alarm {alarm.number} at line {alarm.line}")
+    if simulation.events:
+        parts.append(simulation.events[0].text + (f" (+{len(simulation.events) - 1} more)"
+                                                  if len(simulation.events) > 1 else ""))
+    if not simulation.alarms and not simulation.events:
+        parts.append("no alarms")
+    return ", ".join(parts)
+
+
 class CheckAndSimulation:
     """Checks as you type, next error, and the simulation view (mixin)."""
 
@@ -68,6 +98,11 @@ class CheckAndSimulation:
     _check_timer: Timer | None
     editor: Any
     toolpath: Any
+    stock: Any
+    sim_material: bool
+    _material: Any = None
+    _material_blocks: list[tuple[int, int]] = []
+    _material_step: int = 0
     files: Any
     status: Any
     app: Any
@@ -89,9 +124,12 @@ class CheckAndSimulation:
             [
                 Softkey("sim.pan_up", "Pan ↑", "sim_pan(0, 1)"),
                 Softkey("sim.pan_down", "Pan ↓", "sim_pan(0, -1)"),
-                None,  # VSK3 free
+                Softkey("sim.material", "Material", "sim_material", active=lambda s: s.sim_material),
                 Softkey("sim.pan_left", "Pan ←", "sim_pan(-1, 0)"),
                 Softkey("sim.pan_right", "Pan →", "sim_pan(1, 0)"),
+                Softkey("sim.step_back", "Block ◀", "sim_step(-1)"),
+                Softkey("sim.step_forward", "Block ▶", "sim_step(1)"),
+                Softkey("sim.overlay", "Path\non/off", "sim_overlay", active=lambda s: s.stock.overlay),
             ],
         )
 
@@ -180,7 +218,7 @@ class CheckAndSimulation:
         if self.simulating:
             self._mark_current_block(self.status)
             self.action_simulate_run()
-            self.toolpath.focus()
+            (self.stock if self.sim_material else self.toolpath).focus()
         else:
             self.editor.focus()
 
@@ -189,8 +227,70 @@ class CheckAndSimulation:
         if self.program is None:
             return
         self.toolpath.set_pieces([], "calculating …")
-        self._simulate_worker(self.program, self.editor.text, self.files.program_source(self.program),
-                              self.check_setting())
+        self.stock.set_picture(StockPicture(), "calculating …")
+        self._material = None
+        self.stock.highlight_line = self.editor.cursor_location[0] + 1
+        setting = self.check_setting()
+        programs = self.files.program_source(self.program)
+        self._simulate_worker(self.program, self.editor.text, programs, setting)
+        self._material_worker(self.program, self.editor.text, programs, setting)
+
+    @work(thread=True, exclusive=True, group="program-material", exit_on_error=False)
+    def _material_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
+        """The AUTO run and the material removal, off the key path (a worker thread)."""
+        worker = get_current_worker()
+        try:
+            simulation = setting.simulate(Path(program).name, text, programs=programs)
+        except Exception as exc:  # never crash the screen
+            self.app.call_from_thread(self.stock.set_picture, StockPicture(), f"simulation failed: {exc!r}")
+            return
+        if not worker.is_cancelled:
+            self.app.call_from_thread(self._show_material, simulation)
+
+    def _show_material(self, simulation: Any) -> None:
+        """A finished simulation: show the whole program cut, the note says how it ended."""
+        self._material = simulation
+        self._material_blocks = simulation.blocks_in_order()
+        self._material_step = len(self._material_blocks) - 1
+        self.stock.set_picture(picture_of(simulation, simulation.zmap, len(simulation.path.starts)),
+                               material_note(simulation))
+
+    def action_sim_step(self, direction: int) -> None:
+        """Block ◀ / Block ▶: show the blank as cut up to the block before / after; the editor
+        cursor follows the block shown."""
+        if self._material is None or not self._material_blocks:
+            return
+        step = min(max(self._material_step + direction, 0), len(self._material_blocks) - 1)
+        self._material_step = step
+        line, chords = self._material_blocks[step]
+        self.stock.highlight_line = line
+        self.editor.move_cursor((max(line - 1, 0), 0), center=True)
+        self._step_worker(self._material, chords, step)
+
+    @work(thread=True, exclusive=True, group="program-material-step", exit_on_error=False)
+    def _step_worker(self, simulation: Any, chords: int, step: int) -> None:
+        zmap = simulation.cut_until(chords)
+        if not get_current_worker().is_cancelled:
+            self.app.call_from_thread(self._show_step, simulation, zmap, chords, step)
+
+    def _show_step(self, simulation: Any, zmap: Any, chords: int, step: int) -> None:
+        if simulation is not self._material or step != self._material_step:
+            return  # a newer step or simulation is on its way
+        line = self._material_blocks[step][0]
+        self.stock.set_picture(picture_of(simulation, zmap, chords),
+                               f"block {step + 1}/{len(self._material_blocks)}, line {line}")
+
+    def action_sim_overlay(self) -> None:
+        """Path on/off: the toolpath over the material."""
+        self.stock.action_overlay()
+        self.refresh_softkeys()
+
+    def action_sim_material(self) -> None:
+        """Material: the blank being cut (on) or the toolpath alone (off)."""
+        self.sim_material = not self.sim_material
+        self._show_view()
+        (self.stock if self.sim_material else self.toolpath).focus()
+        self.refresh_softkeys()
 
     @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
     def _simulate_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
@@ -218,18 +318,22 @@ class CheckAndSimulation:
             self.app.call_from_thread(self.toolpath.set_pieces, pieces, note)
 
     def action_sim_view(self, view: str) -> None:
-        """Choose the projection."""
+        """Choose the projection (top view or a section)."""
         self.toolpath.action_view(view)
+        self.stock.action_view(view)
         self.refresh_softkeys()
 
     def action_sim_zoom(self, direction: int) -> None:
         """Zoom in/out."""
         self.toolpath.action_zoom(direction)
+        self.stock.action_zoom(direction)
 
     def action_sim_pan(self, dh: int, dv: int) -> None:
         """Pan the view."""
         self.toolpath.action_pan(dh, dv)
+        self.stock.action_pan(dh, dv)
 
     def action_sim_fit(self) -> None:
         """Fit the whole path."""
         self.toolpath.action_fit()
+        self.stock.action_fit()

@@ -26,7 +26,7 @@ import numpy as np
 
 from nck import canon
 from nck.errors import NcAlarmError
-from nck.headless import DEFAULT_RAPID_MM_MIN, run_program
+from nck.headless import DEFAULT_RAPID_MM_MIN, RunResult, run_program
 from nck.interp.api import ProgramSource
 from nck.machine import MachineConfig, load_machine
 from nck.motion.path import arc as arc_segment
@@ -36,6 +36,9 @@ from nck.simulation.cutter import Cutter
 from nck.simulation.zmap import ZMap
 
 DEFAULT_RESOLUTION_MM = 0.5
+AUTO_CELLS = 400
+AUTO_CHORD_RESOLUTION_MM = 0.4
+"""Without a resolution, arcs are cut into chords as for this cell size (sagitta 0.05 mm)."""
 CUT_EPSILON_MM = 0.01
 """A move cuts when it lowers some cell by more than this (below: rounding, a touch)."""
 
@@ -89,6 +92,21 @@ class Simulation:
     machine_time_s: float
     tool_times_s: dict[int, float]
     blocks: int
+
+    def blocks_in_order(self) -> list[tuple[int, int]]:
+        """The executed blocks as (source line, number of chords up to and including it), in order."""
+        lines = self.path.lines
+        if len(lines) == 0:
+            return []
+        change = np.flatnonzero(lines[1:] != lines[:-1]) + 1
+        ends = np.concatenate((change, [len(lines)]))
+        return [(int(lines[end - 1]), int(end)) for end in ends.tolist()]
+
+    def cut_until(self, chords: int) -> ZMap:
+        """A fresh Z-map of the blank cut by the first ``chords`` chords (stepping through the program)."""
+        zmap = ZMap(self.blank, self.zmap.resolution_mm)
+        sweep_path(zmap, self.path, upto=chords)
+        return zmap
 
 
 class _Recorder:
@@ -205,7 +223,7 @@ class _Recorder:
         )
 
 
-def simulate(
+def record(
     name: str,
     text: str,
     *,
@@ -213,6 +231,30 @@ def simulate(
     programs: ProgramSource | None = None,
     data: NcData | None = None,
     resolution_mm: float = DEFAULT_RESOLUTION_MM,
+    timeout_s: float | None = None,
+) -> tuple[RunResult, Toolpath, dict[int, float]]:
+    """Run ``text`` as AUTO runs it; return the run, its executed toolpath (arcs as chords of at
+    most an eighth of ``resolution_mm`` sagitta) and the machining time per tool."""
+    machine = machine or load_machine()
+    data = data if data is not None else NcData()
+    source = programs if programs is not None else _NoPrograms()
+    recorder = _Recorder(data, chord_tol_mm=resolution_mm / 8.0)
+    run = run_program(machine, source, data, name, text=text, timeout_s=timeout_s,
+                      on_command=recorder, keep_commands=False)
+    nominal = sum(recorder.tool_times.values())
+    share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
+    tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
+    return run, recorder.toolpath(), tool_times
+
+
+def simulate(
+    name: str,
+    text: str,
+    *,
+    machine: MachineConfig | None = None,
+    programs: ProgramSource | None = None,
+    data: NcData | None = None,
+    resolution_mm: float | None = DEFAULT_RESOLUTION_MM,
     blank: Blank | None = None,
     timeout_s: float | None = None,
 ) -> Simulation:
@@ -220,22 +262,21 @@ def simulate(
 
     ``blank`` overrides the program's ``WORKPIECE``; without either the blank is a box around
     the cutting moves. ``data`` (tools, offsets) is used as the run's NC data: pass a copy.
+    ``resolution_mm`` None: chosen from the blank's size (:func:`auto_resolution`).
     """
-    machine = machine or load_machine()
-    data = data if data is not None else NcData()
-    source = programs if programs is not None else _NoPrograms()
-    recorder = _Recorder(data, chord_tol_mm=resolution_mm / 8.0)
-    run = run_program(machine, source, data, name, text=text, timeout_s=timeout_s,
-                      on_command=recorder, keep_commands=False)
-    path = recorder.toolpath()
-    blank = blank or blank_from_text(text) or _blank_for(path)
-    zmap = ZMap(blank, resolution_mm)
+    run, path, tool_times = record(name, text, machine=machine, programs=programs, data=data,
+                                   resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s)
+    blank = blank or blank_from_text(text) or blank_for(path)
+    zmap = ZMap(blank, resolution_mm or auto_resolution(blank))
     events = sweep_path(zmap, path)
-    nominal = sum(recorder.tool_times.values())
-    share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
-    tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
     return Simulation(blank, zmap, path, events, list(run.alarms), run.status, run.machine_time_s,
                       tool_times, run.blocks)
+
+
+def auto_resolution(blank: Blank) -> float:
+    """A cell size for showing ``blank``: about 400 cells along its longer side, 0.1 … 2 mm."""
+    longest = max(blank.x_mm[1] - blank.x_mm[0], blank.y_mm[1] - blank.y_mm[0])
+    return min(max(longest / AUTO_CELLS, 0.1), 2.0)
 
 
 def sweep_path(zmap: ZMap, path: Toolpath, upto: int | None = None) -> list[SimEvent]:
@@ -270,7 +311,8 @@ def sweep_path(zmap: ZMap, path: Toolpath, upto: int | None = None) -> list[SimE
     return events
 
 
-def _blank_for(path: Toolpath) -> Blank:
+def blank_for(path: Toolpath) -> Blank:
+    """A box around the cutting moves of ``path`` (see :func:`blank_around`)."""
     cutting = ~path.rapid
     points = path.ends[cutting] if np.any(cutting) else path.ends
     reach = max((c.reach_mm for c in path.cutters if c is not None), default=0.0)

@@ -68,7 +68,7 @@ def test_simulation_side_view(snap_compare, pinned: Path) -> None:
         await settle(pilot)
         await pilot.press("f5")
         await settle(pilot)
-        await pilot.press("f2")
+        await pilot.press("shift+f3", "f2")  # Material off: the toolpath alone
         await pilot.pause()
 
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
@@ -83,5 +83,7 @@ def test_simulation_top_view(snap_compare, pinned: Path) -> None:
         await settle(pilot)
         await pilot.press("f5")
         await settle(pilot)
+        await pilot.press("shift+f3")  # Material off: the toolpath alone
+        await pilot.pause()
 
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)

@@ -1,0 +1,333 @@
+"""The blank being cut, drawn in the terminal with half-block cells in true colour.
+
+Every character cell shows two pixels, one above the other (``▀`` with the upper pixel as
+foreground and the lower as background), so the pixels are about square. Three layers:
+
+* :class:`StockPicture` — what is shown, as plain numpy data: the Z-map heights over the
+  blank, the executed path as chords, the tool; set by the screen from a simulation result;
+* :func:`render_pixels` — one view of it as an RGB pixel image: the top view shaded by depth
+  ("the deeper, the darker"; no material: background), the front section (XZ, through the
+  tool's Y) or the side section (YZ, through the tool's X); the blank's extents outlined;
+  the path overlay (feed, rapid dimmed, the highlighted block bright); the tool at its place;
+* :class:`StockView` — the widget: zoom, pan, fit, the view, the overlay switch.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from rich.style import Style
+from rich.text import Text
+from textual.binding import Binding
+from textual.reactive import reactive
+from textual.widget import Widget
+
+BACKGROUND = np.array([16, 20, 28], dtype=np.uint8)
+MATERIAL_TOP = np.array([214, 218, 226], dtype=np.float64)
+MATERIAL_DEEP = np.array([52, 58, 70], dtype=np.float64)
+SECTION = np.array([168, 174, 186], dtype=np.uint8)
+OUTLINE = np.array([120, 200, 120], dtype=np.uint8)
+FEED = np.array([70, 190, 255], dtype=np.uint8)
+RAPID = np.array([110, 118, 130], dtype=np.uint8)
+HIGHLIGHT = np.array([255, 215, 0], dtype=np.uint8)
+TOOL = np.array([255, 140, 40], dtype=np.uint8)
+TOOL_HEIGHT_MM = 30.0
+"""How much of the tool the sections draw above its tip."""
+
+VIEW_TITLES = {"XY": "Top view XY", "XZ": "Front section XZ", "YZ": "Side section YZ"}
+VIEW_AXES = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
+
+
+@dataclass
+class StockPicture:
+    """What the view shows (mm, workpiece coordinates)."""
+
+    heights: np.ndarray = field(default_factory=lambda: np.zeros((0, 0), dtype=np.float32))
+    x0_mm: float = 0.0
+    y0_mm: float = 0.0
+    resolution_mm: float = 1.0
+    z_mm: tuple[float, float] = (0.0, 0.0)  # bottom, top
+    blank_x_mm: tuple[float, float] = (0.0, 0.0)
+    blank_y_mm: tuple[float, float] = (0.0, 0.0)
+    starts: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    ends: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    rapid: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    lines: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int32))
+    shown_chords: int = 0  # chords drawn (the path up to the shown block)
+    tool_mm: tuple[float, float, float] | None = None
+    tool_radius_mm: float = 0.0
+
+    @property
+    def empty(self) -> bool:
+        """True before any simulation result arrived."""
+        return self.heights.size == 0
+
+    def extents(self, view: str) -> tuple[float, float, float, float]:
+        """(h_min, h_max, v_min, v_max) of the blank and the path in ``view``."""
+        h, v = VIEW_AXES[view]
+        box = [(self.blank_x_mm[0], self.blank_y_mm[0], self.z_mm[0]),
+               (self.blank_x_mm[1], self.blank_y_mm[1], self.z_mm[1])]
+        points = np.vstack([np.array(box), self.ends[: self.shown_chords]]) if len(self.ends) else np.array(box)
+        return (float(points[:, h].min()), float(points[:, h].max()),
+                float(points[:, v].min()), float(points[:, v].max()))
+
+
+@dataclass
+class Viewport:
+    """Pixel ↔ mm: the view's centre and the size of a pixel."""
+
+    centre_h: float
+    centre_v: float
+    mm_per_pixel: float
+
+
+def fit_viewport(picture: StockPicture, view: str, width_px: int, height_px: int) -> Viewport:
+    """The viewport that shows the blank and the path with a small margin."""
+    h0, h1, v0, v1 = picture.extents(view)
+    span = max((h1 - h0) / max(width_px - 2, 1), (v1 - v0) / max(height_px - 2, 1), 1e-3)
+    return Viewport((h0 + h1) / 2.0, (v0 + v1) / 2.0, span * 1.05)
+
+
+def _shade(depth_fraction: np.ndarray) -> np.ndarray:
+    """Colour of material by its depth below the top (0: top, 1: bottom): the deeper, the darker."""
+    f = np.clip(depth_fraction, 0.0, 1.0)[..., None]
+    return (MATERIAL_TOP * (1.0 - f) + MATERIAL_DEEP * f).astype(np.uint8)
+
+
+def render_pixels(picture: StockPicture, view: str, port: Viewport, width_px: int, height_px: int,
+                  overlay: bool = True, highlight_line: int | None = None) -> np.ndarray:
+    """The RGB image (height_px, width_px, 3) of ``view``."""
+    image = np.empty((height_px, width_px, 3), dtype=np.uint8)
+    image[:] = BACKGROUND
+    if picture.empty:
+        return image
+    scale = port.mm_per_pixel
+    hs = port.centre_h + (np.arange(width_px) - width_px / 2.0 + 0.5) * scale
+    vs = port.centre_v - (np.arange(height_px) - height_px / 2.0 + 0.5) * scale
+    heights = picture.heights
+    ny, nx = heights.shape
+    res = picture.resolution_mm
+    bottom, top = picture.z_mm
+    if view == "XY":
+        ix = np.floor((hs - picture.x0_mm) / res).astype(np.int64)
+        iy = np.floor((vs - picture.y0_mm) / res).astype(np.int64)
+        inside = ((iy >= 0) & (iy < ny))[:, None] & ((ix >= 0) & (ix < nx))[None, :]
+        values = heights[np.clip(iy, 0, ny - 1)[:, None], np.clip(ix, 0, nx - 1)[None, :]]
+        material = inside & (values > bottom + 1e-6)
+        colours = _shade((top - values) / max(top - bottom, 1e-9))
+        image[material] = colours[material]
+    else:
+        along = hs
+        across = picture.tool_mm[1 if view == "XZ" else 0] if picture.tool_mm else None
+        if across is None:
+            across = sum(picture.blank_y_mm if view == "XZ" else picture.blank_x_mm) / 2.0
+        if view == "XZ":
+            ix = np.floor((along - picture.x0_mm) / res).astype(np.int64)
+            row = int(math.floor((across - picture.y0_mm) / res))
+            valid = (ix >= 0) & (ix < nx) & (0 <= row < ny)
+            column = heights[min(max(row, 0), ny - 1), np.clip(ix, 0, nx - 1)]
+        else:
+            iy = np.floor((along - picture.y0_mm) / res).astype(np.int64)
+            col = int(math.floor((across - picture.x0_mm) / res))
+            valid = (iy >= 0) & (iy < ny) & (0 <= col < nx)
+            column = heights[np.clip(iy, 0, ny - 1), min(max(col, 0), nx - 1)]
+        material = valid[None, :] & (vs[:, None] <= column[None, :]) & (vs[:, None] >= bottom)
+        image[material] = SECTION
+    _outline(image, picture, view, port)
+    if overlay:
+        _draw_path(image, picture, view, port, highlight_line)
+    _draw_tool(image, picture, view, port)
+    return image
+
+
+def _to_pixels(port: Viewport, width_px: int, height_px: int, h: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    px = np.floor((h - port.centre_h) / port.mm_per_pixel + width_px / 2.0).astype(np.int64)
+    py = np.floor((port.centre_v - v) / port.mm_per_pixel + height_px / 2.0).astype(np.int64)
+    return px, py
+
+
+def _plot(image: np.ndarray, px: np.ndarray, py: np.ndarray, colour: np.ndarray) -> None:
+    height_px, width_px = image.shape[:2]
+    keep = (px >= 0) & (px < width_px) & (py >= 0) & (py < height_px)
+    image[py[keep], px[keep]] = colour
+
+
+def _segments(image: np.ndarray, port: Viewport, a: np.ndarray, b: np.ndarray, colour: np.ndarray) -> None:
+    """Draw straight lines a[i] → b[i] (rows h, v in mm) by sampling at half a pixel."""
+    if len(a) == 0:
+        return
+    height_px, width_px = image.shape[:2]
+    length = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]) / port.mm_per_pixel
+    steps = np.minimum(np.ceil(length * 2.0).astype(np.int64) + 1, 4 * (width_px + height_px))
+    owner = np.repeat(np.arange(len(a)), steps)
+    first = np.concatenate(([0], np.cumsum(steps)[:-1]))
+    f = (np.arange(len(owner)) - first[owner]) / np.maximum(steps[owner] - 1, 1)
+    h = a[owner, 0] + (b[owner, 0] - a[owner, 0]) * f
+    v = a[owner, 1] + (b[owner, 1] - a[owner, 1]) * f
+    px, py = _to_pixels(port, width_px, height_px, h, v)
+    _plot(image, px, py, colour)
+
+
+def _outline(image: np.ndarray, picture: StockPicture, view: str, port: Viewport) -> None:
+    h, v = VIEW_AXES[view]
+    lows = (picture.blank_x_mm[0], picture.blank_y_mm[0], picture.z_mm[0])
+    highs = (picture.blank_x_mm[1], picture.blank_y_mm[1], picture.z_mm[1])
+    h0, h1, v0, v1 = lows[h], highs[h], lows[v], highs[v]
+    corners = np.array([[h0, v0], [h1, v0], [h1, v1], [h0, v1]])
+    _segments(image, port, corners, np.roll(corners, -1, axis=0), OUTLINE)
+
+
+def _draw_path(image: np.ndarray, picture: StockPicture, view: str, port: Viewport, highlight_line: int | None) -> None:
+    count = picture.shown_chords
+    if count == 0:
+        return
+    h, v = VIEW_AXES[view]
+    a = picture.starts[:count][:, [h, v]]
+    b = picture.ends[:count][:, [h, v]]
+    rapid = picture.rapid[:count]
+    _segments(image, port, a[rapid], b[rapid], RAPID)
+    _segments(image, port, a[~rapid], b[~rapid], FEED)
+    if highlight_line is not None:
+        mine = picture.lines[: len(picture.starts)] == highlight_line
+        _segments(image, port, picture.starts[mine][:, [h, v]], picture.ends[mine][:, [h, v]], HIGHLIGHT)
+
+
+def _draw_tool(image: np.ndarray, picture: StockPicture, view: str, port: Viewport) -> None:
+    if picture.tool_mm is None:
+        return
+    height_px, width_px = image.shape[:2]
+    x, y, z = picture.tool_mm
+    radius = max(picture.tool_radius_mm, port.mm_per_pixel)
+    if view == "XY":
+        angles = np.linspace(0.0, 2.0 * math.pi, 180)
+        px, py = _to_pixels(port, width_px, height_px, x + radius * np.cos(angles), y + radius * np.sin(angles))
+        _plot(image, px, py, TOOL)
+        return
+    centre = x if view == "XZ" else y
+    corners = np.array([[centre - radius, z], [centre + radius, z], [centre + radius, z + TOOL_HEIGHT_MM],
+                        [centre - radius, z + TOOL_HEIGHT_MM]])
+    _segments(image, port, corners, np.roll(corners, -1, axis=0), TOOL)
+
+
+def pixels_to_text(image: np.ndarray) -> Text:
+    """Half-block cells: the upper pixel as the foreground of ``▀``, the lower as its background."""
+    height_px = image.shape[0] - image.shape[0] % 2
+    text = Text()
+    styles: dict[tuple[int, ...], Style] = {}
+    for row in range(0, height_px, 2):
+        upper, lower = image[row], image[row + 1]
+        pairs = np.concatenate([upper, lower], axis=1)
+        # runs of equal cells become one span
+        change = np.any(pairs[1:] != pairs[:-1], axis=1)
+        bounds = np.concatenate(([0], np.flatnonzero(change) + 1, [len(pairs)]))
+        for begin, end in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
+            key = tuple(pairs[begin].tolist())
+            style = styles.get(key)
+            if style is None:
+                style = Style(color=f"rgb({key[0]},{key[1]},{key[2]})", bgcolor=f"rgb({key[3]},{key[4]},{key[5]})")
+                styles[key] = style
+            text.append("▀" * (end - begin), style)
+        if row + 2 < height_px:
+            text.append("\n")
+    return text
+
+
+class StockView(Widget, can_focus=True):
+    """The blank being cut: top view or sections, with zoom, pan, fit and the path overlay."""
+
+    BINDINGS = [
+        Binding("plus,equals_sign", "zoom(1)", "Zoom +", show=False),
+        Binding("minus", "zoom(-1)", "Zoom -", show=False),
+        Binding("left", "pan(-1, 0)", "Pan left", show=False),
+        Binding("right", "pan(1, 0)", "Pan right", show=False),
+        Binding("up", "pan(0, 1)", "Pan up", show=False),
+        Binding("down", "pan(0, -1)", "Pan down", show=False),
+        Binding("f", "fit", "Fit", show=False),
+        Binding("1", "view('XY')", "XY", show=False),
+        Binding("2", "view('XZ')", "XZ", show=False),
+        Binding("3", "view('YZ')", "YZ", show=False),
+        Binding("o", "overlay", "Path", show=False),
+    ]
+
+    view: reactive[str] = reactive("XY")
+    overlay: reactive[bool] = reactive(True)
+    highlight_line: reactive[int | None] = reactive(None)
+    status_text: reactive[str] = reactive("")
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__(**kwargs)  # type: ignore[arg-type]
+        self.picture = StockPicture()
+        self._zoom_steps = 0
+        self._pan_px = (0, 0)
+
+    @property
+    def zoom(self) -> float:
+        """Magnification relative to fit (1 = fit)."""
+        return 1.5 ** self._zoom_steps
+
+    def set_picture(self, picture: StockPicture, status_text: str = "") -> None:
+        """Show a new picture (the view, zoom and pan stay)."""
+        self.picture = picture
+        self.status_text = status_text
+        self.refresh()
+
+    def action_zoom(self, direction: int) -> None:
+        """Zoom in (+1) or out (-1) about the centre."""
+        self._zoom_steps = max(-6, min(12, self._zoom_steps + direction))
+        self.refresh()
+
+    def action_pan(self, dh: int, dv: int) -> None:
+        """Move the view by a quarter of its size."""
+        self._pan_px = (self._pan_px[0] + dh, self._pan_px[1] + dv)
+        self.refresh()
+
+    def action_fit(self) -> None:
+        """Show the whole blank and path."""
+        self._zoom_steps = 0
+        self._pan_px = (0, 0)
+        self.refresh()
+
+    def action_view(self, view: str) -> None:
+        """Top view or a section."""
+        if view in VIEW_TITLES:
+            self.view = view
+
+    def action_overlay(self) -> None:
+        """Path overlay on/off."""
+        self.overlay = not self.overlay
+
+    def viewport(self, width_px: int, height_px: int) -> Viewport:
+        """The fitted viewport with this widget's zoom and pan."""
+        port = fit_viewport(self.picture, self.view, width_px, height_px)
+        scale = port.mm_per_pixel / self.zoom
+        return Viewport(port.centre_h + self._pan_px[0] * width_px / 4.0 * scale,
+                        port.centre_v + self._pan_px[1] * height_px / 4.0 * scale, scale)
+
+    def render(self) -> Text:
+        """Caption line, then the picture."""
+        width = max(self.size.width, 1)
+        rows = max(self.size.height - 1, 1)
+        caption = Text(f"{VIEW_TITLES[self.view]}  zoom {self.zoom:.2f}  path {'on' if self.overlay else 'off'}"
+                       f"  {self.status_text}"[:width], style="bold")
+        if self.picture.empty:
+            return caption
+        width_px, height_px = width, rows * 2
+        image = render_pixels(self.picture, self.view, self.viewport(width_px, height_px), width_px, height_px,
+                              self.overlay, self.highlight_line)
+        caption.append("\n")
+        caption.append_text(pixels_to_text(image))
+        return caption
+
+    def watch_view(self) -> None:
+        self.refresh()
+
+    def watch_overlay(self) -> None:
+        self.refresh()
+
+    def watch_highlight_line(self) -> None:
+        self.refresh()
+
+    def watch_status_text(self) -> None:
+        self.refresh()

@@ -1,0 +1,187 @@
+"""The simulation's material view (issue 24): the blank being cut, stepping, the editor link.
+
+Real kernel, the editor's simulation worker (the AUTO run and the sweep off the key path);
+keys one at a time and in bursts. The program defines its own tool (``$TC_DP…``, 002
+L62525-62558) so that it runs on a kernel without tool data.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from hmi.widgets.stock_view import (
+    FEED,
+    HIGHLIGHT,
+    SECTION,
+    StockPicture,
+    Viewport,
+    render_pixels,
+)
+from tests.program_screens.conftest import SIZE, make_program_app, settle
+
+SLOTS = (
+    'N10 WORKPIECE(,"",,"BOX",112,0,-20,-20,-10,-10,110,80)\n'
+    "N12 $TC_DP1[1,1]=120 $TC_DP3[1,1]=75 $TC_DP6[1,1]=5\n"
+    "N20 G17 G90 G54 T1 M6\n"
+    "N30 D1 S3000 M3\n"
+    "N40 G0 X10 Y10 Z2\n"
+    "N50 G1 Z-5 F300\n"
+    "N60 X90 F800\n"
+    "N70 Y60\n"
+    "N80 X10\n"
+    "N90 Y10\n"
+    "N100 G0 Z5\n"
+    "N110 X50 Y35\n"
+    "N120 G1 Z-8 F200\n"
+    "N130 G2 X50 Y35 I15 J0 F600\n"
+    "N140 G0 Z20\n"
+    "N150 M30\n"
+)
+
+
+@pytest.fixture
+def slots_dir(data_dir: Path) -> Path:
+    (data_dir / "MPF" / "DEMO.MPF").write_text(SLOTS)
+    return data_dir
+
+
+async def open_simulation(pilot) -> None:
+    await pilot.press("alt+n", "f3")
+    await settle(pilot)
+    await pilot.press("f5")
+    await settle(pilot)
+
+
+def _picture() -> StockPicture:
+    heights = np.zeros((10, 20), dtype=np.float32)
+    heights[:, 10:] = -4.0  # the right half cut 4 deep of 8
+    return StockPicture(heights=heights, x0_mm=0.0, y0_mm=0.0, resolution_mm=1.0, z_mm=(-8.0, 0.0),
+                        blank_x_mm=(0.0, 20.0), blank_y_mm=(0.0, 10.0),
+                        starts=np.array([[2.0, 5.0, -4.0]]), ends=np.array([[18.0, 5.0, -4.0]]),
+                        rapid=np.array([False]), lines=np.array([7]), shown_chords=1)
+
+
+def test_top_view_is_darker_where_deeper() -> None:
+    image = render_pixels(_picture(), "XY", Viewport(10.0, 5.0, 0.5), 40, 20, overlay=False)
+    top = image[4, 6].astype(int)  # x 3.25, y 7.75: uncut
+    cut = image[4, 30].astype(int)  # x 15.25: 4 deep
+    assert cut.sum() < top.sum()
+
+
+def test_front_section_shows_the_material_below_the_surface() -> None:
+    picture = _picture()
+    picture.tool_mm = (5.0, 5.0, 10.0)  # the section runs through Y 5
+    image = render_pixels(picture, "XZ", Viewport(10.0, -4.0, 0.5), 40, 20, overlay=False)
+    # v of row r: -4 - (r - 10 + 0.5) * 0.5; Z -2 is row 5, Z -6 row 13.
+    assert (image[5, 6] == SECTION).all()  # x 3.25, z -2.25: under the uncut top
+    assert not (image[5, 30] == SECTION).all()  # x 15.25: cut away down to -4
+    assert (image[13, 30] == SECTION).all()  # z -6.25 is still there
+
+
+def test_path_overlay_switches_and_highlights_the_block() -> None:
+    port = Viewport(10.0, 5.0, 0.5)
+    row = 10  # y 5 - (10 - 10 + 0.5) * 0.5 = 4.75: the row of the path at y 5
+    with_path = render_pixels(_picture(), "XY", port, 40, 20, overlay=True)
+    assert any((with_path[row - 1:row + 1, 10] == FEED).all(axis=1))
+    without = render_pixels(_picture(), "XY", port, 40, 20, overlay=False)
+    assert not any((without[row - 1:row + 1, 10] == FEED).all(axis=1))
+    marked = render_pixels(_picture(), "XY", port, 40, 20, overlay=True, highlight_line=7)
+    assert any((marked[row - 1:row + 1, 10] == HIGHLIGHT).all(axis=1))
+
+
+async def test_simulation_cuts_the_blank_and_steps_block_by_block(slots_dir: Path) -> None:
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        assert screen.stock.display and not screen.toolpath.display
+        simulation = screen._material
+        assert simulation is not None and simulation.alarms == [] and simulation.events == []
+        assert "no alarms" in screen.stock.status_text
+        full = screen.stock.picture
+        assert full.shown_chords == len(simulation.path.starts)
+        assert float(full.heights.min()) == pytest.approx(-8.0)
+        # three steps back in one burst: the block before is shown, the editor follows
+        await pilot.press("shift+f6", "shift+f6", "shift+f6")
+        await settle(pilot)
+        blocks = simulation.blocks_in_order()
+        line, chords = blocks[-4]
+        assert screen.stock.highlight_line == line
+        assert screen.editor.cursor_location[0] == line - 1
+        assert screen.stock.picture.shown_chords == chords
+        assert f"block {len(blocks) - 3}/{len(blocks)}" in screen.stock.status_text
+        # one forward, singly
+        await pilot.press("shift+f7")
+        await settle(pilot)
+        assert screen.stock.highlight_line == blocks[-3][0]
+        # back to the start of the cut: the circle's pocket is not cut yet
+        for _ in range(len(blocks)):
+            await pilot.press("shift+f6")
+        await settle(pilot)
+        assert screen.stock.picture.shown_chords == blocks[0][1]
+        assert float(screen.stock.picture.heights.min()) == pytest.approx(0.0)
+
+
+async def test_view_keys_singly_and_in_a_burst(slots_dir: Path) -> None:
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        stock = pilot.app.screen.stock
+        await pilot.press("f2")
+        assert stock.view == "XZ"
+        await pilot.press("f3", "f4", "f4", "shift+f8")
+        await pilot.pause()
+        assert stock.view == "YZ" and stock.zoom == pytest.approx(2.25) and not stock.overlay
+        await pilot.press("f6", "shift+f8", "f1")
+        await pilot.pause()
+        assert stock.view == "XY" and stock.zoom == 1 and stock.overlay
+        await pilot.press("shift+f3")  # Material off: the toolpath alone
+        await pilot.pause()
+        assert pilot.app.screen.toolpath.display and not stock.display
+
+
+async def test_simulation_reports_the_alarm_auto_stops_with(data_dir: Path) -> None:
+    (data_dir / "MPF" / "DEMO.MPF").write_text("N10 G0 X10\nN20 G1 X20\nN30 M30\n")  # no feed: 10860
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        assert "alarm 10860 at line 2" in pilot.app.screen.stock.status_text
+
+
+def test_snapshot_top_view_partly_cut(snap_compare, slots_dir: Path) -> None:
+    """SLOTS: the frame slot cut, the tool at the end of block N100, the circle still to come."""
+    app = make_program_app(slots_dir)
+
+    async def run_before(pilot) -> None:
+        await open_simulation(pilot)
+        await pilot.press("shift+f6", "shift+f6", "shift+f6", "shift+f6")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_snapshot_front_section_partly_cut(snap_compare, slots_dir: Path) -> None:
+    """The front section XZ through the tool, after the frame slot (N90)."""
+    app = make_program_app(slots_dir)
+
+    async def run_before(pilot) -> None:
+        await open_simulation(pilot)
+        await pilot.press("shift+f6", "shift+f6", "shift+f6", "shift+f6", "shift+f6", "f2")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_snapshot_side_section_partly_cut(snap_compare, slots_dir: Path) -> None:
+    """The side section YZ through the tool during the circle's plunge (N120), path off."""
+    app = make_program_app(slots_dir)
+
+    async def run_before(pilot) -> None:
+        await open_simulation(pilot)
+        await pilot.press("shift+f6", "shift+f6", "f3", "shift+f8")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
