@@ -210,7 +210,10 @@ class ContactWatch:
             return
         self._record("crash", name, at)
         what = "blank" if name == "blank" else "reference block"
-        self._motion_alarm(NcAlarmError(number, f"T{self._tool}", what))  # type: ignore[attr-defined]
+        run = self._overlay or self._run  # type: ignore[attr-defined]
+        source = self._path_motion().current_source() if run is not None else None  # type: ignore[attr-defined]
+        where = {"file": source.file, "line": source.line, "n": source.n} if source is not None else {}
+        self._motion_alarm(NcAlarmError(number, f"T{self._tool}", what, **where))  # type: ignore[attr-defined]
         self._halt_jog()
 
     def _halt_jog(self) -> None:

@@ -18,7 +18,8 @@ mm; a lathe has no Y axis, its Y coordinate is 0.
 Trainer choice (the manuals are silent on a simulated workpiece): the shipped default on
 a mill is a 100 × 80 × 30 mm block in the middle of the table with its top at Z −220 and a
 reference block of 50 mm height beside it (:func:`default_machine_setup`); on a lathe a
-bar of 60 mm diameter standing out 100 mm from the chuck face at Z 0.
+bar of 60 mm diameter standing out 100 mm from the chuck face at Z 200 (free end at Z 300;
+the reference point X 0 Z 0 of the shipped lathe stays clear of it).
 """
 
 from __future__ import annotations
@@ -80,7 +81,7 @@ class MachineSetup:
 def default_machine_setup(machine_kind: str) -> MachineSetup:
     """The set-up a fresh data directory starts with on a ``mill`` or a ``lathe`` (module docstring)."""
     if machine_kind == "lathe":
-        return MachineSetup(blank=Cylinder((0.0, 0.0, 0.0), 60.0, 100.0))
+        return MachineSetup(blank=Cylinder((0.0, 0.0, 200.0), 60.0, 100.0))
     return MachineSetup(
         blank=Box((-50.0, -40.0, -250.0), (50.0, 40.0, -220.0)),
         reference=Box((150.0, -20.0, -250.0), (190.0, 20.0, -200.0)),

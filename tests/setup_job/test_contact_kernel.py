@@ -18,6 +18,7 @@ from nck.commands import (Accepted, CycleStart, Jog, Reset, SelectIncrement, Sel
 from nck.contact import clearance
 from nck.kernel import Nck
 from nck.kernel_contact import ContactWatch
+from nck.machine import load_machine
 from nck.ncdata import NcData, ToolEdge
 from nck.queries import AlarmHistory, ContactEvents, ProbeDeflected, answer
 from nck.workpiece import Box, MachineSetup, default_machine_setup
@@ -158,3 +159,22 @@ def probe_blank(x: float, y: float, angle: float, feed: int, override: float) ->
         at = event.position_mcs
         assert clearance(body, blank, (at["X"], at["Y"], at["Z"] - offset[2])) == pytest.approx(-depth, abs=1e-6)
     assert nck.situation.channel == "interrupted"  # the crash stopped the program
+
+
+def lathe_kernel() -> Nck:
+    data = NcData()
+    data.machine_setup = default_machine_setup("lathe")  # bar Ø60, chuck face Z 200, free end Z 300
+    data.tools[(1, 1)] = ToolEdge({1: 500.0, 2: 3.0, 6: 0.8})  # roughing tool, cutting edge radius 0.8
+    return Nck(machine=load_machine("lathe2"), data=data, referenced=True)
+
+
+def test_lathe_tool_scratches_the_turning_bar_and_crashes_into_a_standing_one() -> None:
+    nck = lathe_kernel()
+    mda(nck, "T1 D1\nG0 X100\nZ250\nM3 S500\nG1 X29.99 F100\nG0 X100\nM30\n")
+    (scratch,) = events(nck)  # the edge's radius touches the bar's radius 30 at X 30.8
+    assert scratch.kind == "scratch" and scratch.position_mcs["X"] == pytest.approx(30.8, abs=1e-6)
+    assert nck.alarms.active == ()
+    nck = lathe_kernel()
+    mda(nck, "T1 D1\nG0 X100\nZ320\nX20\nG94 G1 Z250 F300\n")  # the free end face, spindle at rest
+    assert [a.number for a in nck.alarms.active] == [90001]
+    assert events(nck)[0].position_mcs["Z"] == pytest.approx(300.8, abs=1e-6)
