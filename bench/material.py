@@ -66,7 +66,8 @@ def main(argv: list[str]) -> int:
     data = NcData()
     data.tools[(1, 1)] = ToolEdge({1: 110.0, 3: 80.0, 6: 4.0})  # ball end mill D8
     started = time.perf_counter()
-    run, toolpath, _ = record(path.name, text, data=data, resolution_mm=RESOLUTION_MM)
+    recording = record(path.name, text, data=data, resolution_mm=RESOLUTION_MM)
+    run, toolpath = recording.run, recording.path
     recorded = time.perf_counter()
     blank = blank_from_text(text)
     assert blank is not None

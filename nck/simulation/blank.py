@@ -15,8 +15,8 @@ Operate (no manual in our library describes it):
   X -30…30, Y -20…20, Z 0…25; ``"BOX",0,2,-30,-80,-2,-2,184,170`` is X -2…182, Y -2…168,
   Z -28…2.
 
-The tube and polygon forms are not simulated (our choice: such a program falls back to a box
-around the path and says so).
+The tube and polygon forms are not simulated (our choice: such a program falls back to the
+clamped blank of the machine set-up, else a box around the path).
 """
 
 from __future__ import annotations
@@ -24,8 +24,11 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+
+from nck.workpiece import Cylinder
 
 X1_ABSOLUTE = 16
 Y1_ABSOLUTE = 32
@@ -60,7 +63,8 @@ class Blank:
         inside = ((xs >= self.x_mm[0]) & (xs <= self.x_mm[1])) & ((ys >= self.y_mm[0]) & (ys <= self.y_mm[1]))
         if self.kind == "cylinder":
             radius = self.diameter_mm / 2.0
-            inside = inside & (xs * xs + ys * ys <= radius * radius)
+            cx, cy = sum(self.x_mm) / 2.0, sum(self.y_mm) / 2.0
+            inside = inside & ((xs - cx) ** 2 + (ys - cy) ** 2 <= radius * radius)
         return inside
 
     @property
@@ -113,6 +117,19 @@ def blank_from_text(text: str) -> Blank | None:
             y1 = y0 + y1
         return Blank("box", (min(x0, x1), max(x0, x1)), (min(y0, y1), max(y0, y1)), z_mm, 0.0, line)
     return None
+
+
+def blank_from_setup(solid: Any, mcs_minus_wcs_mm: tuple[float, float, float]) -> Blank:
+    """The machine set-up's clamped blank (``nck.workpiece`` Box or Cylinder, MCS) in the
+    workpiece coordinate system: shifted by the work offset ``mcs_minus_wcs_mm`` (no rotation)."""
+    dx, dy, dz = mcs_minus_wcs_mm
+    if isinstance(solid, Cylinder):
+        radius = solid.diameter_mm / 2.0
+        cx, cy, bz = solid.base_mcs[0] - dx, solid.base_mcs[1] - dy, solid.base_mcs[2] - dz
+        return Blank("cylinder", (cx - radius, cx + radius), (cy - radius, cy + radius),
+                     (bz, bz + solid.length_mm), solid.diameter_mm)
+    low, high = solid.low_mcs, solid.high_mcs
+    return Blank("box", (low[0] - dx, high[0] - dx), (low[1] - dy, high[1] - dy), (low[2] - dz, high[2] - dz))
 
 
 def blank_around(points: np.ndarray, reach_mm: float) -> Blank:

@@ -31,7 +31,7 @@ from nck.interp.api import ProgramSource
 from nck.machine import MachineConfig, load_machine
 from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
-from nck.simulation.blank import Blank, blank_around, blank_from_text
+from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_from_text
 from nck.simulation.cutter import Cutter
 from nck.simulation.zmap import ZMap
 
@@ -121,6 +121,7 @@ class _Recorder:
         self.spindle_on = False
         self.tool_times: dict[int, float] = {}
         self.position: np.ndarray | None = None
+        self.mcs_minus_wcs: tuple[float, float, float] | None = None  # the work offset, tool length taken out
         self.starts: list[np.ndarray] = []
         self.ends: list[np.ndarray] = []
         self.meta: list[tuple[int, bool, int, int, bool, int]] = []  # line, rapid, tool, cutter, spindle, N per motion
@@ -171,6 +172,11 @@ class _Recorder:
                 if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ"])
         start = self.position
         first = not self.starts
+        if self.mcs_minus_wcs is None and all(a in end_wcs and a in end_mcs for a in "XYZ"):
+            edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
+            length = edge.get(3) + edge.get(12) if edge is not None else 0.0
+            self.mcs_minus_wcs = (float(end_mcs["X"]) - float(end_wcs["X"]), float(end_mcs["Y"]) - float(end_wcs["Y"]),
+                                  float(end_mcs["Z"]) - float(end_wcs["Z"]) - length)
         end = np.array([float(end_wcs.get(a, start[i])) for i, a in enumerate("XYZ")])
         points = self._points(motion, start, end)
         length = float(np.linalg.norm(np.diff(np.vstack([start[None, :], points]), axis=0), axis=1).sum())
@@ -223,6 +229,16 @@ class _Recorder:
         )
 
 
+@dataclass
+class Recording:
+    """What :func:`record` collected from the AUTO run."""
+
+    run: RunResult
+    path: Toolpath
+    tool_times_s: dict[int, float]
+    mcs_minus_wcs_mm: tuple[float, float, float] | None  # the work offset seen (no rotation)
+
+
 def record(
     name: str,
     text: str,
@@ -232,9 +248,10 @@ def record(
     data: NcData | None = None,
     resolution_mm: float = DEFAULT_RESOLUTION_MM,
     timeout_s: float | None = None,
-) -> tuple[RunResult, Toolpath, dict[int, float]]:
+) -> Recording:
     """Run ``text`` as AUTO runs it; return the run, its executed toolpath (arcs as chords of at
-    most an eighth of ``resolution_mm`` sagitta) and the machining time per tool."""
+    most an eighth of ``resolution_mm`` sagitta), the machining time per tool and the work
+    offset (MCS − WCS of the tool tip without the tool length, from the first motion)."""
     machine = machine or load_machine()
     data = data if data is not None else NcData()
     source = programs if programs is not None else _NoPrograms()
@@ -244,7 +261,7 @@ def record(
     nominal = sum(recorder.tool_times.values())
     share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
     tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
-    return run, recorder.toolpath(), tool_times
+    return Recording(run, recorder.toolpath(), tool_times, recorder.mcs_minus_wcs)
 
 
 def simulate(
@@ -260,13 +277,21 @@ def simulate(
 ) -> Simulation:
     """Run ``text`` as main program ``name`` as AUTO runs it and cut the blank with it.
 
-    ``blank`` overrides the program's ``WORKPIECE``; without either the blank is a box around
-    the cutting moves. ``data`` (tools, offsets) is used as the run's NC data: pass a copy.
+    ``blank`` overrides the program's ``WORKPIECE``; without either the blank is the machine
+    set-up's clamped blank (unless the instructor hid it), else a box around the cutting moves. ``data`` (tools, offsets) is used as the run's NC data: pass a copy.
     ``resolution_mm`` None: chosen from the blank's size (:func:`auto_resolution`).
     """
-    run, path, tool_times = record(name, text, machine=machine, programs=programs, data=data,
-                                   resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s)
-    blank = blank or blank_from_text(text) or blank_for(path)
+    data = data if data is not None else NcData()
+    setup = data.machine_setup
+    recording = record(name, text, machine=machine, programs=programs, data=data,
+                       resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s)
+    run, path, tool_times = recording.run, recording.path, recording.tool_times_s
+    if blank is None:
+        blank = blank_from_text(text)
+    if blank is None and setup.blank is not None and not setup.hidden and recording.mcs_minus_wcs_mm is not None:
+        blank = blank_from_setup(setup.blank, recording.mcs_minus_wcs_mm)
+    if blank is None:
+        blank = blank_for(path)
     zmap = ZMap(blank, resolution_mm or auto_resolution(blank))
     events = sweep_path(zmap, path)
     return Simulation(blank, zmap, path, events, list(run.alarms), run.status, run.machine_time_s,

@@ -51,3 +51,32 @@ def test_the_control_runs_the_statement_as_a_no_op_and_the_simulation_uses_it() 
     band = 2.0 * (5.0 * math.sqrt(875.0) + 900.0 * math.asin(5.0 / 30.0))
     assert zmap.removed_volume_mm3() == pytest.approx(band * 5.0, rel=0.01)
     assert zmap.height_at(29.0, 29.0) == pytest.approx(-20.0)  # outside the disc: no material
+
+
+def _slot_data(hidden: bool = False):
+    from nck.workpiece import Box, MachineSetup
+
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 60.0, 6: 5.0})
+    # Clamped in the MCS: X 100..200, Y 50..130, Z -230..-200; G54 puts the workpiece zero at
+    # its top left corner (X100 Y50 Z-200).
+    data.machine_setup = MachineSetup(blank=Box((100.0, 50.0, -230.0), (200.0, 130.0, -200.0)), hidden=hidden)
+    data.settable_frame("G54").trans.update({"X": 100.0, "Y": 50.0, "Z": -200.0})
+    return data
+
+
+SETUP_SLOT = ("N10 G54 T1 M6\nN20 D1 S1000 M3\nN30 G0 X20 Y40 Z2\nN40 G1 Z-5 F300\nN50 X80\n"
+              "N60 G0 Z10\nN70 M30\n")
+
+
+def test_without_workpiece_the_clamped_blank_of_the_machine_set_up_is_the_stock() -> None:
+    result = simulate("P.MPF", SETUP_SLOT, data=_slot_data(), resolution_mm=0.1)
+    assert result.status == "ended" and result.alarms == []
+    # MCS box minus the work offset (100, 50, -200): X 0..100, Y 0..80, Z -30..0 in the WCS.
+    assert (result.blank.x_mm, result.blank.y_mm, result.blank.z_mm) == ((0.0, 100.0), (0.0, 80.0), (-30.0, 0.0))
+    assert result.zmap.removed_volume_mm3() == pytest.approx((60.0 * 10.0 + math.pi * 25.0) * 5.0, rel=0.01)
+
+
+def test_a_hidden_blank_is_not_shown() -> None:
+    result = simulate("P.MPF", SETUP_SLOT, data=_slot_data(hidden=True), resolution_mm=0.5)
+    assert result.blank.kind == "path"
