@@ -29,6 +29,7 @@ from hmi.widgets.header import increment_text
 from hmi.widgets.positions import PositionWindow
 
 from hmi.widgets.tfs import TfsWindow
+from screens.machine_jog_form import FieldEdited
 from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
 
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
@@ -186,6 +187,10 @@ class MachineScreen(AreaBase):
         self.view = None if self.view == view else view
         if self.view in JOG_WINDOWS:
             self.jog.opened(self.view)
+        self._redraw()
+
+    def on_field_edited(self, event: FieldEdited) -> None:
+        """A field of a JOG window changed: redraw its preview."""
         self._redraw()
 
     def action_jog(self, what: str, *args: str) -> None:

@@ -15,6 +15,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
+from textual.message import Message
 from textual.widget import Widget
 from textual.widgets import Input, Static
 
@@ -28,6 +29,10 @@ class FieldSpec:
     unit: str = ""
     choices: tuple[str, ...] = ()
     initial: str = ""
+
+
+class FieldEdited(Message):
+    """A field of a window changed (typed or chosen): the window may redraw what it derives."""
 
 
 FIELD_KEYS = [
@@ -66,6 +71,7 @@ class ChoiceField(Static, can_focus=True):
         index = (self.choices.index(self.value) + step) % len(self.choices)
         self.value = self.choices[index]
         self._show()
+        self.post_message(FieldEdited())
 
     def choose(self, value: str) -> None:
         """Set ``value`` (one of the choices)."""
@@ -150,6 +156,11 @@ class JogForm(Vertical):
         focused = self.screen.focused
         if focused is None or self not in focused.ancestors:
             self.screen.set_focus(self.field(self.fields[0].key))  # at once: the next key of a burst goes there
+
+    def on_input_changed(self, event: Input.Changed) -> None:
+        """Typing in a field: tell the screen (a preview may depend on it)."""
+        event.stop()
+        self.post_message(FieldEdited())
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         """Enter in a field goes to the next field."""

@@ -37,11 +37,12 @@ from screens.machine_jog_blocks import (
     SPINDLE_FUNCTIONS, EntryError, TsmEntry, position_blocks, tsm_blocks,
 )
 from screens.machine_jog_form import FieldSpec, JogForm
+from screens.machine_jog_measure import MEASURE_WINDOWS, MeasureWindows
 
 if TYPE_CHECKING:
     from hmi.area import AreaBase
 
-JOG_WINDOWS = ("tsm", "setwo", "position", "settings")
+JOG_WINDOWS = ("tsm", "setwo", "position", "settings", *MEASURE_WINDOWS)
 """The views of the setting-up windows (``view-tsm`` …)."""
 
 RUNS_ON_CYCLE_START = ("tsm", "position")
@@ -65,6 +66,7 @@ class JogWindows:
     def __init__(self, screen: AreaBase) -> None:
         self.screen = screen
         self.job = ManualJob(screen.submit)
+        self.measure = MeasureWindows(screen)
 
     # -- layout ----------------------------------------------------------------------------
     def axes(self) -> tuple[str, ...]:
@@ -93,6 +95,7 @@ class JogWindows:
             FieldSpec("jog_feed", "JOG feed (SD41110)", "mm/min"),
             FieldSpec("var_incr", "Variable increment (SD41010)", "mm"),
         ), "↑/↓ field   ⇧F1 save (setting data)   F10 back", id="view-settings")
+        yield from self.measure.compose(self.axes())
 
     # -- softkeys --------------------------------------------------------------------------
     def vertical_softkeys(self, view: str | None) -> list[Softkey | None]:
@@ -107,6 +110,8 @@ class JogWindows:
                 Softkey("setwo.set", "Set\nWO", "jog('set_typed')", enabled=_ready_in_jog),
                 Softkey("setwo.delete", "Delete\nactive WO", "jog('delete_active')", enabled=_ready_in_jog),
             ]
+        if view in MEASURE_WINDOWS:
+            return self.measure.vertical_softkeys(view)
         if view == "settings":
             return [Softkey("settings.save", "Save\nsettings", "jog('save_settings')")]
         if view in RUNS_ON_CYCLE_START:
@@ -114,8 +119,10 @@ class JogWindows:
         return [
             Softkey("jog.tsm", "T,S,M", "show_view('tsm')", active=lambda s: s.view == "tsm"),
             Softkey("jog.setwo", "Set\nWO", "show_view('setwo')", active=lambda s: s.view == "setwo"),
-            Softkey("jog.measure_workpiece", "Meas.\nworkpiece", "jog('not_yet')", enabled=lambda s: False),
-            Softkey("jog.measure_tool", "Meas.\ntool", "jog('not_yet')", enabled=lambda s: False),
+            Softkey("jog.measure_workpiece", "Meas.\nworkpiece", "show_view('measwp')",
+                    active=lambda s: s.view == "measwp"),
+            Softkey("jog.measure_tool", "Meas.\ntool", "show_view('meastool')",
+                    active=lambda s: s.view == "meastool"),
             Softkey("jog.position", "Position", "show_view('position')",
                     active=lambda s: s.view == "position"),
             Softkey("jog.settings", "Settings", "show_view('settings')",
@@ -127,6 +134,7 @@ class JogWindows:
         actions: dict[str, Callable[..., None]] = {
             "set_zero": self._set_zero, "set_typed": self._set_typed,
             "delete_active": self._delete_active, "save_settings": self._save_settings,
+            "measure_set": self._measure_set,
         }
         action = actions.get(what)
         if action is not None:
@@ -158,6 +166,8 @@ class JogWindows:
                 f"{'inch' if modal.gcodes.get(13) == 'G70' else 'mm'}   {self._job_state(status)}"))
         elif view == "setwo":
             form.show_info(self._setwo_info(status))
+        elif view in MEASURE_WINDOWS:
+            self.measure.show(view, status)
         elif view == "position":
             form.show_info(Text(f" {self._job_state(status)}"))
         elif view == "settings":
@@ -254,6 +264,11 @@ class JogWindows:
             if isinstance(self.screen.submit(cmd.SetActualValue(axis, value)), cmd.Rejected):
                 return
             form.set_value(axis, "")
+
+    def _measure_set(self) -> None:
+        view = getattr(self.screen, "view", None)
+        if view in MEASURE_WINDOWS:
+            self.measure.set_value(view, self.screen.say)
 
     def _delete_active(self) -> None:
         self.screen.submit(cmd.DeleteActiveWorkOffset())

@@ -36,3 +36,14 @@ def test_set_wo_window(snap_compare) -> None:
     """Set WO: one field per axis, X typed 0.5, softkeys X=0 … Delete active WO."""
     assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
                         press=["shift+f2", "0", ".", "5"])
+
+
+def test_measure_workpiece_window(snap_compare) -> None:
+    """Measure workpiece: edge in Y approached in − direction, setpoint 0, the preview."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f3", "right", "down", "right"])
+
+
+def test_measure_tool_window(snap_compare) -> None:
+    """Measure tool without a tool: the window says to load one."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE, press=["shift+f4"])

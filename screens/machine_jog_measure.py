@@ -1,0 +1,212 @@
+"""The measuring windows of JOG: Measure workpiece (edge, Z surface) and Measure tool (length).
+
+Manual measuring ("scratching", 002 L31279-31290): the operator jogs the tool (a cutter
+turning, or a 3D probe) to the surface and presses the window's softkey. The touch is the
+tool's position now (the centre of the cutter in the plane, the tool carrier on Z); the
+arithmetic is the kernel's (``nck.queries``: ``edge_position``, ``z_surface``,
+``tool_length``, ``offset_for``). The window shows the values before anything is written:
+
+- Measure workpiece: the edge (X/Y: one tool radius beyond the centre in the approach
+  direction; Z: the tool tip) in the MCS and the translation that makes it read the
+  setpoint; ⇧F5 "Set WO" writes it with ``SetActualValue(point_mcs=…)`` into the active
+  offset (under G500 the PRESET/scratching frame).
+- Measure tool: the length of the active edge from touching a surface whose Z is known —
+  typed as its WCS value (Z0, as on the panel), or the top of the reference block of the
+  machine set-up (its fixed-point value); ⇧F5 writes it into the geometry (``$TC_DP3``) or,
+  by choice, the difference into the wear (``$TC_DP12``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Callable
+
+from rich.text import Text
+from textual.app import ComposeResult
+
+from nck import commands as cmd
+from nck.queries import MachineSetupData, ReadData, edge_position, offset_for, tool_length, z_surface
+from nck.status import NckStatus
+
+from hmi.softkeys import Softkey
+from screens.machine_jog_form import FieldSpec, JogForm
+
+if TYPE_CHECKING:
+    from hmi.area import AreaBase
+
+MEASURE_WINDOWS = ("measwp", "meastool")
+"""The views of the measuring windows."""
+
+APPROACHES = ("+", "−")
+"""The direction the tool moved in when it touched (+: towards larger values)."""
+
+REFERENCES = ("Z0 typed (WCS)", "reference block")
+"""Where the surface touched for the tool length is known from."""
+
+TOOL_DATA = ("geometry", "wear")
+
+
+@dataclass(frozen=True)
+class EdgePreview:
+    """What "Set WO" of Measure workpiece would write: the edge in the MCS and the offset."""
+
+    axis: str
+    edge_mcs: float
+    setpoint: float
+    translation: float
+
+
+@dataclass(frozen=True)
+class LengthPreview:
+    """What Measure tool would write: the length of ``tool``/``edge`` and the surface used."""
+
+    tool: int
+    edge: int
+    surface_mcs: float
+    length: float
+
+
+def _number(text: str) -> float | None:
+    try:
+        return float(text.strip())
+    except ValueError:
+        return None
+
+
+class MeasureWindows:
+    """The measuring windows of one Machine area screen."""
+
+    def __init__(self, screen: AreaBase) -> None:
+        self.screen = screen
+
+    def compose(self, axes: tuple[str, ...]) -> ComposeResult:
+        """The two windows."""
+        yield JogForm("Measure workpiece — edge or Z surface (touch, then ⇧F5 Set WO)", (
+            FieldSpec("axis", "Edge in axis (Z: surface)", choices=axes),
+            FieldSpec("approach", "Approached in direction", choices=APPROACHES),
+            FieldSpec("setpoint", "Setpoint of the edge (WCS)", "mm", initial="0"),
+        ), "Jog to the surface   ←/→ choice   ⇧F5 Set WO   F10 back", id="view-measwp")
+        yield JogForm("Measure tool — length of the active tool (touch, then ⇧F5 Set length)", (
+            FieldSpec("reference", "Surface known from", choices=REFERENCES),
+            FieldSpec("z0", "Z0 of the surface (WCS)", "mm", initial="0"),
+            FieldSpec("target", "Write into", choices=TOOL_DATA),
+        ), "Touch the surface with the tool tip   ⇧F5 Set length   F10 back", id="view-meastool")
+
+    def vertical_softkeys(self, view: str) -> list[Softkey | None]:
+        """⇧F5 writes what the window previews."""
+        if view == "measwp":
+            return [None] * 4 + [Softkey("measwp.set", "Set\nWO", "jog('measure_set')")]
+        return [None] * 4 + [Softkey("meastool.set", "Set\nlength", "jog('measure_set')")]
+
+    # -- previews --------------------------------------------------------------------------
+    def _form(self, view: str) -> JogForm:
+        return self.screen.query_one(f"#view-{view}", JogForm)
+
+    def edge_preview(self, status: NckStatus) -> EdgePreview | str:
+        """The edge from the tool's position now, or what is missing (panel words)."""
+        form = self._form("measwp")
+        axis = form.value("axis")
+        setpoint = _number(form.value("setpoint"))
+        if setpoint is None:
+            return "Setpoint: enter a number"
+        by_name = {a.name: a for a in status.axes}
+        if axis not in by_name:
+            return f"{axis}: no such axis"
+        modal = status.channel.modal
+        touch = by_name[axis].position_mcs
+        if axis == "Z":
+            edge = z_surface(touch, modal.tool_length_mm)
+        else:
+            approach = 1 if form.value("approach") == "+" else -1
+            edge = edge_position(touch, approach, modal.tool_radius_mm)
+        return EdgePreview(axis, edge, setpoint, offset_for(edge, setpoint))
+
+    def length_preview(self, status: NckStatus) -> LengthPreview | str:
+        """The active tool's length from the tool's position now, or what is missing."""
+        modal = status.channel.modal
+        if modal.tool <= 0 or modal.edge <= 0:
+            return "No tool active: load one with T,S,M"
+        by_name = {a.name: a for a in status.axes}
+        if "Z" not in by_name:
+            return "No Z axis"
+        z = by_name["Z"]
+        form = self._form("meastool")
+        if form.value("reference") == REFERENCES[1]:
+            setup = self.screen.ask(MachineSetupData())
+            reference = getattr(setup, "reference", None)
+            if reference is None:
+                return "No reference block in the machine set-up"
+            surface = reference.top_z_mcs
+        else:
+            z0 = _number(form.value("z0"))
+            if z0 is None:
+                return "Z0: enter a number"
+            # the surface's MCS is its WCS value Z0 plus the translations in force (from the
+            # offsets themselves: the JOG display of the WCS leaves the tool length out)
+            surface = z0 + self._translation_in_force("Z", status)
+        return LengthPreview(modal.tool, modal.edge, surface, tool_length(z.position_mcs, surface))
+
+    def show(self, view: str, status: NckStatus) -> None:
+        """Redraw the preview of window ``view``."""
+        form = self._form(view)
+        preview = self.edge_preview(status) if view == "measwp" else self.length_preview(status)
+        text = Text()
+        if isinstance(preview, str):
+            text.append(f" {preview}")
+        elif isinstance(preview, EdgePreview):
+            modal = status.channel.modal
+            text.append(f" Tool radius {modal.tool_radius_mm:.3f}   length {modal.tool_length_mm:.3f}\n")
+            text.append(f" Edge {preview.axis} (MCS) {preview.edge_mcs:.3f}   → "
+                        f"{preview.axis} {preview.setpoint:.3f} in the WCS: translation "
+                        f"{preview.translation:.3f} (no other offset active)", style="bold")
+        else:
+            text.append(f" T{preview.tool} D{preview.edge}   surface Z (MCS) {preview.surface_mcs:.3f}\n")
+            text.append(f" Length 1 = {preview.length:.3f}", style="bold")
+        form.show_info(text)
+
+    # -- writing ---------------------------------------------------------------------------
+    def set_value(self, view: str, say: Callable[[str], None]) -> None:
+        """⇧F5: write the previewed value (Set WO / tool length)."""
+        status = self.screen.status
+        if status is None:
+            return
+        if view == "measwp":
+            preview = self.edge_preview(status)
+            if isinstance(preview, str):
+                say(preview)
+                return
+            point = {a.name: a.position_mcs for a in status.axes if a.kind != "spindle"}
+            point[preview.axis] = preview.edge_mcs
+            if isinstance(self.screen.submit(cmd.SetActualValue(preview.axis, preview.setpoint,
+                                                                point_mcs=point)), cmd.Accepted):
+                say(f"Set WO: edge {preview.axis} = {preview.setpoint:.3f}")
+            return
+        length = self.length_preview(status)
+        if isinstance(length, str):
+            say(length)
+            return
+        t, d = length.tool, length.edge
+        geometry, wear = self._tool_value(t, d, 3), self._tool_value(t, d, 12)
+        # the measured length is geometry + wear: the chosen part takes the difference
+        if self._form("meastool").value("target") == "wear":
+            name, value = f"$TC_DP12[{t},{d}]", length.length - geometry
+        else:
+            name, value = f"$TC_DP3[{t},{d}]", length.length - wear
+        if isinstance(self.screen.submit(cmd.WriteData(name, value)), cmd.Accepted):
+            say(f"T{t} D{d}: {name} = {value:.3f}")
+
+    def _translation_in_force(self, axis: str, status: NckStatus) -> float:
+        """PRESET frame + base frame + active settable offset (coarse and fine) along ``axis``."""
+        data = self.screen.ask(ReadData()).data
+        if data is None:
+            return 0.0
+        offsets = [data.setframe, data.base_frame]
+        active = status.channel.modal.gcodes.get(8, "G500")
+        if active in data.settable_frames:
+            offsets.append(data.settable_frames[active])
+        return sum(float(o.trans.get(axis, 0.0)) + float(o.fine.get(axis, 0.0)) for o in offsets)
+
+    def _tool_value(self, tool: int, edge: int, index: int) -> float:
+        data = self.screen.ask(ReadData()).data
+        found = data.tools.get((tool, edge)) if data is not None else None
+        return float(found.get(index)) if found is not None else 0.0
