@@ -400,6 +400,12 @@ class MachineScreen(AreaBase):
             text.append("  REPOS — repositioning to the interruption point\n", style="bold")
             for axis, way in channel.repos_offsets.items():
                 text.append(f"   {axis:<4}{fixed(way, 3, 12)}\n")
+        elif function == "INC" and channel.increment is None:
+            size_mm = self.jog.variable_increment_mm()
+            text.append(f"  INC VAR — variable increment {size_mm:g} mm (SD41010)\n", style="bold")
+            if size_mm == 0:
+                text.append(" SD41010 is 0: the axis keys do not move. Set the variable increment "
+                            "in Settings (⇧F6).\n", style="bold #f39200")
         elif function == "INC":
             text.append(f"  {increment_text(channel.increment)} (x 0.001 mm)\n", style="bold")
         else:

@@ -281,6 +281,10 @@ class JogWindows:
             return float(machine_data.value(name)) if machine_data is not None else 0.0
         return value
 
+    def variable_increment_mm(self) -> float:
+        """SD41010 JOG_VAR_INCR_SIZE: the size of INC VAR (0 when the kernel has no setting data)."""
+        return self._setting_data()("SD41010")
+
     def _save_settings(self) -> None:
         form = self.form("settings")
         for key, name in (("jog_feed", "SD41110"), ("var_incr", "SD41010")):

@@ -107,3 +107,19 @@ async def test_settings_write_jog_feed_and_variable_increment() -> None:
         machine_data = app.bridge.nck.machine_data
         assert float(machine_data.value("SD41110")) == 500.0
         assert float(machine_data.value("SD41010")) == 0.25
+
+
+async def test_inc_var_shows_the_variable_increment_and_a_hint_when_it_is_zero() -> None:
+    """INC VAR (Alt+I five times: 1, 10, 100, 1000, 10000, VAR) with SD41010 = 0: the JOG
+    view says the axis keys do not move and where to set it; after Settings wrote 0.5 the
+    view shows 0.5 mm and no hint."""
+    app = HmiApp(Nck(referenced=True), realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, *(["alt+i"] * 6))
+        assert app.bridge.status.channel.increment is None
+        jog_info = str(app.screen.query_one("#jog-info").render())
+        assert "SD41010 is 0" in jog_info
+        await burst(pilot, "shift+f6", "down", "ctrl+a", "ctrl+k", "0", ".", "5", "shift+f1", "f10")
+        jog_info = str(app.screen.query_one("#jog-info").render())
+        assert "variable increment 0.5 mm" in jog_info
+        assert "SD41010 is 0" not in jog_info
