@@ -89,7 +89,7 @@ class JogForm(Vertical):
     DEFAULT_CSS = """
     JogForm { height: 1fr; background: $surface; }
     JogForm .jog-row { height: 1; }
-    JogForm .jog-label { width: 26; padding: 0 1; }
+    JogForm .jog-label { width: 32; padding: 0 1; }
     JogForm .jog-unit { width: 12; padding: 0 1; color: $secondary; }
     JogForm FieldInput { width: 24; height: 1; border: none; padding: 0 1; background: $panel; }
     JogForm FieldInput:focus { border: none; background: $boost; text-style: bold; }
