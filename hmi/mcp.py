@@ -186,6 +186,22 @@ class MachineControlPanel:
                 delay = self.keymap.switches.jog_release_ms / 1000
                 self._jog_release_timer = self.set_timer(delay, self._release_jog)
 
+    def action_handwheel(self, detents: int) -> None:
+        """Handwheel on the keyboard: one detent moves the selected axis by the INC increment.
+
+        The increment keys give the handwheel its weighting, so it moves only with INC
+        selected (our reading of the panel: INC 1/10/100… weights the handwheel); in
+        continuous JOG the dialog line says so. Detents add up like INC presses.
+        """
+        axis = self.selected_axis
+        if axis is None:
+            self.set_hint("No axis selected")
+            return
+        if self._status().channel.machine_function != "INC":
+            self.set_hint("Handwheel: select its weighting with INC (Alt+I) first")
+            return
+        self.submit(cmd.Jog(axis, 1 if detents > 0 else -1))
+
     def _release_jog(self) -> None:
         """The + / − key was let go: stop continuous JOG."""
         if self._jog_release_timer is not None:

@@ -22,6 +22,7 @@ def _sequences() -> dict[str, str]:
     table |= {f"shift+f{n}": f"\x1b[{code};2~" for n, code in _FUNCTION_CODE.items() if n <= 8}
     table |= {name: f"\x1b[{final}" for name, final in _CURSOR.items()}
     table |= {f"ctrl+{name}": f"\x1b[1;5{final}" for name, final in _CURSOR.items()}
+    table |= {f"alt+{name}": f"\x1b[1;3{final}" for name, final in _CURSOR.items()}  # the handwheel keys
     table |= {name: f"\x1b[{code}~" for name, code in _EDIT.items()}
     table |= {"ctrl+pageup": "\x1b[5;5~", "ctrl+pagedown": "\x1b[6;5~", "home": "\x1b[H",
               "end": "\x1b[F", "enter": "\r", "tab": "\t", "shift+tab": "\x1b[Z",
