@@ -192,10 +192,14 @@ class ContactWatch:
     def _moving_at_rapid(self) -> bool:
         if self._jogging:  # type: ignore[attr-defined]
             return self._contact.jog_rapid
-        run = self._overlay or self._run  # type: ignore[attr-defined]
-        source = self._path_motion().current_source() if run is not None else None  # type: ignore[attr-defined]
-        segment = run.segments.get(id(source)) if source is not None else None
+        run, source = self._executing()
+        segment = run.segments.get(id(source)) if run is not None and source is not None else None
         return getattr(segment, "kind", None) == "G0"
+
+    def _executing(self) -> tuple[Any, Any]:
+        """The program run whose block executes now and that block's source (``None``s in JOG)."""
+        run = self._overlay or self._run  # type: ignore[attr-defined]
+        return run, (self._path_motion().current_source() if run is not None else None)  # type: ignore[attr-defined]
 
     def _record(self, kind: str, name: str, at: dict[str, float]) -> None:
         state = self._contact
@@ -210,8 +214,7 @@ class ContactWatch:
             return
         self._record("crash", name, at)
         what = "blank" if name == "blank" else "reference block"
-        run = self._overlay or self._run  # type: ignore[attr-defined]
-        source = self._path_motion().current_source() if run is not None else None  # type: ignore[attr-defined]
+        _, source = self._executing()
         where = {"file": source.file, "line": source.line, "n": source.n} if source is not None else {}
         self._motion_alarm(NcAlarmError(number, f"T{self._tool}", what, **where))  # type: ignore[attr-defined]
         self._halt_jog()
