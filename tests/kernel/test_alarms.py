@@ -22,8 +22,8 @@ def test_raise_fills_channel_and_block_parameters() -> None:
     assert entry.params == ("1", "Z")
     assert "Channel 1" in entry.text and "Z" in entry.text
     assert entry.came_s == 1.5
-    user = server.raise_alarm(61000, (), now_s=2.0, block="N20")
-    assert user.params[:2] == ("1", "N20") and "61000" in user.text
+    user = server.raise_alarm(65000, (), now_s=2.0, block="N20")  # a user alarm not in the catalogue
+    assert user.params[:2] == ("1", "N20") and "65000" in user.text
 
 
 def test_same_alarm_is_not_raised_twice() -> None:
