@@ -38,7 +38,7 @@ async def _open_in_editor(app: Any, pilot: Any, path: str) -> Any:
 
     Returns the Program area's screen (its check of the text runs on in a worker thread).
     """
-    from screens.program_files import ProgramFiles
+    from hmi.program_files import ProgramFiles
 
     ProgramFiles.of_app(app).request_open(path)
     await pilot.press("alt+p")

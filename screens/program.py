@@ -16,7 +16,7 @@ manager, or the last one again with the PROGRAM key Alt+P):
   read-only with a message.
 
 Files are read and written only through the NC file system (``nck.storage``);
-:mod:`screens.program_files` finds it in the app.
+:mod:`hmi.program_files` finds it in the app.
 """
 
 from __future__ import annotations
@@ -36,12 +36,12 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
+from hmi.program_files import ProgramFiles, decode_program
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import NcEditor
 from hmi.widgets.stock_view import StockView
 from hmi.widgets.toolpath import ToolpathView
 from screens.program_edit import EditActions
-from screens.program_files import ProgramFiles, decode_program
 from screens.program_runs import CheckAndSimulation
 
 

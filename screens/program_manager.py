@@ -32,10 +32,9 @@ from nck.status import NckStatus
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
+from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
 from nck.storage import ProgramEntry
-
-from screens.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 
 
 def _level(action: str, fallback: int) -> int:

@@ -13,6 +13,7 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
         ("hmi.journal", "nck.regular_files"),
         ("hmi.journal", "nck.storage"),
         ("hmi.keymap", "nck.resources"),
+        ("hmi.program_files", "nck.storage"),
         ("hmi.startup", "nck.access"),
         ("hmi.startup", "nck.datalock"),
         ("hmi.startup", "nck.kernel"),
@@ -45,10 +46,8 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
         ("screens.machine", "nck.number_text"),
         ("screens.parameter_views", "nck.number_text"),
         ("screens.program", "nck.access"),
-        ("screens.program_files", "nck.storage"),
         ("screens.program_manager", "nck.access"),
         ("screens.program_manager", "nck.storage"),
-        ("screens.program_manager", "screens.program_files"),
     }
 )
 """(importer, imported) pairs that break the layer contract."""

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from nck.storage import NcFileSystem, StorageError
-from screens.program_files import ProgramFiles, decode_program
+from hmi.program_files import ProgramFiles, decode_program
 
 
 def test_decode_program_flags_binary_and_non_utf8() -> None:

@@ -1,7 +1,7 @@
 """What the Program manager and the Program editor need from the NC file system.
 
 Not a screen: a small adapter shared by ``screens/program_manager.py`` and
-``screens/program.py`` (a screen never imports another screen). The NC file
+``screens/program.py`` (a screen never imports another area's module, so it lives in ``hmi``). The NC file
 system itself is the kernel's :class:`nck.storage.NcFileSystem` (atomic writes,
 name rules, the program-in-use rule); this module only finds it in the app,
 formats its entries for the list, and carries the little state the two screens
