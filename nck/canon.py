@@ -61,6 +61,8 @@ class Motion:
             point of the block (``end_wcs`` is then the compensated tool path); None
             otherwise and for NC-inserted segments.
         contour_center_wcs: likewise the programmed arc centre (arcs only).
+        measure: ``"MEAS"`` (measuring with delete distance to go) or ``"MEAW"`` (without)
+            when the block programmed ``MEAS=``/``MEAW=`` for the probe; None otherwise.
     """
 
     kind: str
@@ -85,6 +87,7 @@ class Motion:
     arc_normal_mcs: Mapping[str, float] | None = None
     contour_end_wcs: Mapping[str, float] | None = None
     contour_center_wcs: Mapping[str, float] | None = None
+    measure: str | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -885,6 +885,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             if hasattr(interp, "position_source"):
                 # Read only after the implicit STOPRE of needs_preprocessing_stop().
                 interp.position_source = self._actual_position  # type: ignore[attr-defined]
+            if hasattr(interp, "measurement_source"):  # MEAS/MEAW results (nck.kernel_contact)
+                interp.measurement_source = self._measurement  # type: ignore[attr-defined]
             if hasattr(interp, "access_level"):  # setting-data writes of part programs
                 interp.access_level = self._access_level  # type: ignore[attr-defined]
             self._apply_skip_levels(interp)

@@ -21,6 +21,14 @@ What a contact is (issue 22; the manuals do not describe a simulated workpiece):
 
 A tool already in contact moving deeper is judged the same way (a turning cutter goes on
 cutting; material removal is not modelled here).
+
+In a program, ``MEAS=1``/``MEAW=1`` make a block a measuring block for the probe (002 L32646-32663
+names their results): when the probe switches in it, the trigger position is ``$AA_MM[axis]``
+(MCS) and ``$AA_MW[axis]`` (WCS of that block), the probe status ``$AC_MEA[1]`` is 1;
+``MEAS`` deletes the distance to go (the axes brake inside the overtravel, the next block —
+interpreted only after the axes stand — starts from there), ``MEAW`` runs the block to its
+end. A measuring block that reaches its end without a switch leaves ``$AC_MEA[1]`` at 0 and
+the last results unchanged, without an alarm (our choice: the manuals at hand do not say more).
 """
 
 from __future__ import annotations
@@ -68,6 +76,11 @@ class ContactState:
     seq: int = 0
     jog_rapid: bool = False
     rapid: bool = False  # the step being judged started at rapid traverse
+    measuring: Any = None  # the MEAS/MEAW segment executing at the start of the step, else None
+    measured_block: int | None = None  # id of the measuring block the results below belong to
+    switched: bool = False  # $AC_MEA[1]: the probe switched in that block
+    measured_mcs: dict[str, float] = field(default_factory=dict)  # $AA_MM
+    measured_wcs: dict[str, float] = field(default_factory=dict)  # $AA_MW
 
 
 class ContactWatch:
@@ -132,6 +145,7 @@ class ContactWatch:
         if not self._contact_watched():
             return None
         self._contact.rapid = self._moving_at_rapid()
+        self._note_measuring_block()
         return self._path_positions(self.motion)  # type: ignore[attr-defined]
 
     def _watch_contact(self, before: dict[str, float] | None) -> None:
@@ -163,6 +177,7 @@ class ContactWatch:
         if body.shape == BALL and self.machine.kind != "lathe":
             self._record("probe", name, at)
             self._halt_jog()
+            self._measured(at)
             return
         crash = self._crash_number()
         if crash is None:
@@ -195,6 +210,42 @@ class ContactWatch:
         run, source = self._executing()
         segment = run.segments.get(id(source)) if run is not None and source is not None else None
         return getattr(segment, "kind", None) == "G0"
+
+    # ---------------------------------------------------------------- MEAS / MEAW
+    def _note_measuring_block(self) -> None:
+        """A measuring block (``MEAS=``/``MEAW=``) starts: its probe status begins at 0."""
+        run, source = self._executing()
+        segment = run.segments.get(id(source)) if run is not None and source is not None else None
+        measuring = segment if getattr(segment, "measure", None) else None
+        state = self._contact
+        state.measuring = measuring
+        if measuring is not None and id(measuring) != state.measured_block:
+            state.measured_block = id(measuring)
+            state.switched = False
+
+    def _measured(self, at: dict[str, float]) -> None:
+        """The probe switched: in a measuring block its trigger position is the result
+        (``$AA_MM`` MCS, ``$AA_MW`` WCS of that block), ``$AC_MEA[1]`` = 1; ``MEAS`` deletes
+        the distance to go (the axes brake; the next block starts where they stop)."""
+        state = self._contact
+        segment = state.measuring
+        if segment is None or state.switched:
+            return
+        state.switched = True
+        state.measured_mcs = dict(at)
+        offsets = {a: float(segment.end_mcs[a]) - float(segment.end_wcs[a])
+                   for a in segment.end_mcs if a in segment.end_wcs}
+        state.measured_wcs = {a: value - offsets.get(a, 0.0) for a, value in at.items()}
+        if segment.measure == "MEAS":
+            self._path_motion().abort(keep_spindles=self.machine.spindles)  # type: ignore[attr-defined]
+
+    def _measurement(self, name: str, axis: str) -> float:
+        """The interpreter's ``$AA_MM[axis]``, ``$AA_MW[axis]``, ``$AC_MEA[1]``."""
+        state = self._contact
+        if name == "$AC_MEA":
+            return 1.0 if state.switched else 0.0
+        values = state.measured_mcs if name == "$AA_MM" else state.measured_wcs
+        return float(values.get(axis, 0.0))
 
     def _executing(self) -> tuple[Any, Any]:
         """The program run whose block executes now and that block's source (``None``s in JOG)."""

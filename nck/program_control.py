@@ -177,6 +177,7 @@ class ProgramRun:
                     break
                 if self._must_wait_for_main_run(motion):
                     break  # implicit STOPRE: the block reads main-run data ($AA_IM …)
+                self._after_measuring(motion)
                 try:
                     result = self.interp.step()
                 except NcAlarmError as error:
@@ -223,11 +224,25 @@ class ProgramRun:
         return not self._must_wait_for_main_run(motion)
 
     def _must_wait_for_main_run(self, motion: MotionSystem) -> bool:
-        """True while the next block needs the main run to catch up first."""
+        """True while the next block needs the main run to catch up first.
+
+        After a ``MEAS`` block too: the probe may delete its distance to go, so the next block
+        starts from where the axes stopped (our model of MEAS; the interpreter takes over
+        the actual position before it, :meth:`_after_measuring`)."""
+        measuring = self.last_motion is not None and self.last_motion.measure == "MEAS"
         needs = getattr(self.interp, "needs_preprocessing_stop", None)
-        if needs is None or not needs():
+        if not measuring and (needs is None or not needs()):
             return False
         return bool(self._deferred) or not motion.is_idle()
+
+    def _after_measuring(self, motion: MotionSystem) -> None:
+        """Before the block after a ``MEAS`` block: the interpreter continues from the actual position."""
+        if self.last_motion is None or self.last_motion.measure != "MEAS":
+            return
+        sync = getattr(self.interp, "sync_position", None)
+        if sync is not None:
+            sync(motion.positions_mcs())
+        self.last_motion = replace(self.last_motion, measure=None)
 
     def _take(self, result: BlockResult) -> None:
         if self.listener is not None:

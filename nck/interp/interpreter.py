@@ -109,6 +109,8 @@ class Interpreter:
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
         self.position_source: Callable[[str], float] | None = None
+        # The kernel's probe results for $AA_MM/$AA_MW/$AC_MEA: (name, axis) -> value.
+        self.measurement_source: Callable[[str, str], float] | None = None
         # protection level the program runs with (setting-data writes); the kernel installs its own
         self.access_level: Callable[[], int] = lambda: LEVEL_FEWEST_RIGHTS
         self._axis_names = frozenset(a.name for a in machine.axes)
@@ -517,6 +519,13 @@ class Interpreter:
         self.data.gud[name] = value
 
     # ---------------------------------------------------------------- sysvar context
+    def measurement(self, name: str, axis: str) -> float:
+        """``$AA_MM[axis]``, ``$AA_MW[axis]`` or ``$AC_MEA[1]`` of the last measuring block
+        (from :attr:`measurement_source`; 0 without one)."""
+        if self.measurement_source is not None:
+            return float(self.measurement_source(name, axis))
+        return 0.0
+
     def actual_position(self, axis: str) -> float:
         """Actual machine position of an axis (position source, else programmed)."""
         if self.position_source is not None:

@@ -214,6 +214,9 @@ class MotionBuilder:
         motions = self.path.motion(words, modal, geo, feed)
         motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
         earlier, motions = trc_canon.split_released(motions, src)
+        measure = next((key for key in ("MEAS", "MEAW") if key in words.words), None)
+        if measure is not None:  # the probe measures in this block's motion (nck.kernel_contact)
+            motions = [replace(m, measure=measure) if isinstance(m, canon.Motion) else m for m in motions]
         own: list[canon.CanonCommand] = list(motions)
         if modal.gcodes.get(15) == "G96" and motions:
             self._constant_cutting_speed(modal, geo, own, src)

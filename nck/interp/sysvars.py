@@ -4,6 +4,8 @@ Supported now:
 
 * ``$AA_IM[ax]``, ``$AA_IW[ax]`` — actual machine / workpiece position of an axis
   (from the position source the channel installs; the programmed position otherwise);
+* ``$AA_MM[ax]``, ``$AA_MW[ax]``, ``$AC_MEA[1]`` — the probe's trigger position (MCS / WCS)
+  and status of the last ``MEAS``/``MEAW`` block (from the kernel, ``nck.kernel_contact``);
 * ``$P_EP[ax]`` programmed end point, ``$P_F`` feed, ``$P_S`` spindle speed,
   ``$P_TOOLNO`` active tool, ``$P_TOOL`` active edge, ``$P_GG[g]`` position of the
   active G code in group g, ``$P_AXN1..3`` geometry axes, ``$P_SEARCH``,
@@ -65,6 +67,9 @@ class SysContext(Protocol):
     def actual_position(self, axis: str) -> float:
         """Actual machine position of ``axis`` (mm or degrees)."""
 
+    def measurement(self, name: str, axis: str) -> float:
+        """``$AA_MM[axis]`` / ``$AA_MW[axis]`` / ``$AC_MEA[1]`` of the last measuring block."""
+
     def program_level(self) -> int:
         """Current program level (main program = 1)."""
 
@@ -115,6 +120,14 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
         axis = _axis_arg(ctx, name, indices)
         return float(ctx.actual_position(axis))
+    if name in ("$AA_MM", "$AA_MW"):  # the probe's trigger position of MEAS/MEAW (MCS / WCS)
+        axis = _axis_arg(ctx, name, indices)
+        return float(ctx.measurement(name, axis))
+    if name == "$AC_MEA":  # probe status of the last measuring block: 1 switched, 0 not
+        number = to_number(indices[0], name) if len(indices) == 1 else 0
+        if number != 1:
+            raise NcAlarmError(17020, name)
+        return float(ctx.measurement(name, ""))
     if name == "$P_EP":
         axis = _axis_arg(ctx, name, indices)
         return float(modal.position_wcs.get(axis, 0.0))

@@ -32,7 +32,7 @@ RESERVED = frozenset(
 # Addresses that take a value with "=" and are never variables.
 VALUE_ADDRESSES = frozenset(
     ("CR", "AR", "RP", "AP", "TURN", "SPOS", "SPOSA", "FA", "LIMS", "ANG", "RND", "RNDM", "RPL",
-     "CHF", "CHR", "ADIS", "ADISPOS", "SF", "SR", "OVR", "OVRA", "ACC")
+     "CHF", "CHR", "ADIS", "ADISPOS", "SF", "SR", "OVR", "OVRA", "ACC", "MEAS", "MEAW")
 )
 
 # Binary operator levels, lowest priority first.

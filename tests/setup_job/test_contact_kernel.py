@@ -178,3 +178,23 @@ def test_lathe_tool_scratches_the_turning_bar_and_crashes_into_a_standing_one() 
     mda(nck, "T1 D1\nG0 X100\nZ320\nX20\nG94 G1 Z250 F300\n")  # the free end face, spindle at rest
     assert [a.number for a in nck.alarms.active] == [90001]
     assert events(nck)[0].position_mcs["Z"] == pytest.approx(300.8, abs=1e-6)
+
+
+def test_meas_and_meaw_in_a_program_give_the_trigger_position_and_the_probe_status() -> None:
+    nck = kernel()
+    nck.data.settable_frame("G54").trans["X"] = -100.0  # WCS X = MCS X + 100
+    mda(nck, "T1 D1 M6\nG54 G0 X20 Y0 Z-230\n"       # machine X -80
+             "MEAS=1 G1 X100 F500\n"                  # towards machine X 0: switches at -52
+             "R1=$AA_MM[X]\nR2=$AA_MW[X]\nR3=$AC_MEA[1]\nR7=$AA_IM[X]\n"
+             "G1 X30\n"
+             "MEAW=1 G1 X49 F300\n"                   # machine -51: switches at -52, goes on
+             "R4=$AA_MM[X]\nR5=$AC_MEA[1]\nR8=$AA_IM[X]\n"
+             "G0 X20\nMEAS=1 G1 X40\nR6=$AC_MEA[1]\nM30\n")  # ends before the face: no switch
+    r = nck.data.r
+    assert nck.alarms.active == ()
+    assert (r[1], r[2], r[3]) == pytest.approx((-52.0, 48.0, 1.0), abs=1e-6)
+    assert -52.0 < r[7] < -50.0  # MEAS deleted the distance to go: braked within the overtravel
+    assert (r[4], r[5]) == pytest.approx((-52.0, 1.0), abs=1e-6)
+    assert r[8] == pytest.approx(-51.0, abs=1e-6)  # MEAW: the block ran to its end
+    assert r[6] == 0.0  # reached its end without a switch: status 0, no alarm (trainer choice)
+    assert nck.positions_mcs()["X"] == pytest.approx(-60.0)
