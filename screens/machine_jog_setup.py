@@ -17,7 +17,9 @@ softkeys and does what they ask, through the area's ``submit`` and ``ask`` only.
   their reset values when the job ends (MD20152 GCODE_RESET_MODE, 002 L2771, is
   not modelled), so a G54 or G70 selected there would not stay.
 - Settings: the JOG feed (SD41110) and the variable increment (SD41010) — setting
-  data written with ``WriteData``.
+  data written with ``WriteData``. The retraction plane and safety distance of the
+  panel's manual-mode settings are not there: no NC datum holds them yet and the
+  windows here do not retract.
 """
 
 from __future__ import annotations
