@@ -13,7 +13,8 @@ arithmetic is the kernel's (``nck.queries``: ``edge_position``, ``z_surface``,
 - Measure tool: the length of the active edge from touching a surface whose Z is known —
   typed as its WCS value (Z0, as on the panel), or the top of the reference block of the
   machine set-up (its fixed-point value); ⇧F5 writes it into the geometry (``$TC_DP3``) or,
-  by choice, the difference into the wear (``$TC_DP12``).
+  by choice, the difference into the wear (``$TC_DP12``). The radius from touching an edge
+  of known X (X0 typed, WCS) in the chosen direction: ``$TC_DP6`` or the wear ``$TC_DP15``.
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ from rich.text import Text
 from textual.app import ComposeResult
 
 from nck import commands as cmd
-from nck.queries import MachineSetupData, ReadData, edge_position, offset_for, tool_length, z_surface
+from nck.queries import (MachineSetupData, ReadData, edge_position, offset_for, tool_length, tool_radius,
+                         z_surface)
 from nck.status import NckStatus
 
 from hmi.softkeys import Softkey
@@ -45,6 +47,9 @@ REFERENCES = ("Z0 typed (WCS)", "reference block")
 
 TOOL_DATA = ("geometry", "wear")
 
+TOOL_MEASURES = ("length", "radius")
+"""What Measure tool measures: the length (touch from above) or the radius (touch an X edge)."""
+
 
 @dataclass(frozen=True)
 class EdgePreview:
@@ -58,12 +63,14 @@ class EdgePreview:
 
 @dataclass(frozen=True)
 class LengthPreview:
-    """What Measure tool would write: the length of ``tool``/``edge`` and the surface used."""
+    """What Measure tool would write: the length (or radius) of ``tool``/``edge`` and the
+    surface (or edge) in the MCS it was measured against."""
 
     tool: int
     edge: int
     surface_mcs: float
     length: float
+    radius: bool = False
 
 
 def _number(text: str) -> float | None:
@@ -86,17 +93,21 @@ class MeasureWindows:
             FieldSpec("approach", "Approached in direction", choices=APPROACHES),
             FieldSpec("setpoint", "Setpoint of the edge (WCS)", "mm", initial="0"),
         ), "Jog to the surface   ←/→ choice   ⇧F5 Set WO   F10 back", id="view-measwp")
-        yield JogForm("Measure tool — length of the active tool (touch, then ⇧F5 Set length)", (
-            FieldSpec("reference", "Surface known from", choices=REFERENCES),
-            FieldSpec("z0", "Z0 of the surface (WCS)", "mm", initial="0"),
+        yield JogForm("Measure tool — length or radius of the active tool (touch, then ⇧F5)", (
+            FieldSpec("measure", "Measure", choices=TOOL_MEASURES),
+            FieldSpec("reference", "Length: surface known from", choices=REFERENCES),
+            FieldSpec("z0", "Length: Z0 of the surface (WCS)", "mm", initial="0"),
+            FieldSpec("approach", "Radius: approached X edge in", choices=APPROACHES),
+            FieldSpec("x0", "Radius: X0 of the edge (WCS)", "mm", initial="0"),
             FieldSpec("target", "Write into", choices=TOOL_DATA),
-        ), "Touch the surface with the tool tip   ⇧F5 Set length   F10 back", id="view-meastool")
+        ), "Touch with the tool tip (length) or its side (radius)   ⇧F5 Set   F10 back",
+            id="view-meastool")
 
     def vertical_softkeys(self, view: str) -> list[Softkey | None]:
         """⇧F5 writes what the window previews."""
         if view == "measwp":
             return [None] * 4 + [Softkey("measwp.set", "Set\nWO", "jog('measure_set')")]
-        return [None] * 4 + [Softkey("meastool.set", "Set\nlength", "jog('measure_set')")]
+        return [None] * 4 + [Softkey("meastool.set", "Set\nlength/radius", "jog('measure_set')")]
 
     # -- previews --------------------------------------------------------------------------
     def _form(self, view: str) -> JogForm:
@@ -131,6 +142,14 @@ class MeasureWindows:
             return "No Z axis"
         z = by_name["Z"]
         form = self._form("meastool")
+        if form.value("measure") == "radius":
+            x0 = _number(form.value("x0"))
+            if x0 is None or "X" not in by_name:
+                return "X0: enter a number"
+            edge_mcs = x0 + self._translation_in_force("X", status)
+            approach = 1 if form.value("approach") == "+" else -1
+            return LengthPreview(modal.tool, modal.edge, edge_mcs,
+                                 tool_radius(by_name["X"].position_mcs, approach, edge_mcs), radius=True)
         if form.value("reference") == REFERENCES[1]:
             setup = self.screen.ask(MachineSetupData())
             reference = getattr(setup, "reference", None)
@@ -159,6 +178,9 @@ class MeasureWindows:
             text.append(f" Edge {preview.axis} (MCS) {preview.edge_mcs:.3f}   → "
                         f"{preview.axis} {preview.setpoint:.3f} in the WCS: translation "
                         f"{preview.translation:.3f} (no other offset active)", style="bold")
+        elif preview.radius:
+            text.append(f" T{preview.tool} D{preview.edge}   edge X (MCS) {preview.surface_mcs:.3f}\n")
+            text.append(f" Radius = {preview.length:.3f}", style="bold")
         else:
             text.append(f" T{preview.tool} D{preview.edge}   surface Z (MCS) {preview.surface_mcs:.3f}\n")
             text.append(f" Length 1 = {preview.length:.3f}", style="bold")
@@ -186,12 +208,13 @@ class MeasureWindows:
             say(length)
             return
         t, d = length.tool, length.edge
-        geometry, wear = self._tool_value(t, d, 3), self._tool_value(t, d, 12)
-        # the measured length is geometry + wear: the chosen part takes the difference
+        geometry_index, wear_index = (6, 15) if length.radius else (3, 12)
+        geometry, wear = self._tool_value(t, d, geometry_index), self._tool_value(t, d, wear_index)
+        # the measured value is geometry + wear: the chosen part takes the difference
         if self._form("meastool").value("target") == "wear":
-            name, value = f"$TC_DP12[{t},{d}]", length.length - geometry
+            name, value = f"$TC_DP{wear_index}[{t},{d}]", length.length - geometry
         else:
-            name, value = f"$TC_DP3[{t},{d}]", length.length - wear
+            name, value = f"$TC_DP{geometry_index}[{t},{d}]", length.length - wear
         if isinstance(self.screen.submit(cmd.WriteData(name, value)), cmd.Accepted):
             say(f"T{t} D{d}: {name} = {value:.3f}")
 

@@ -88,9 +88,9 @@ async def test_tool_length_from_a_surface_of_known_z0() -> None:
     nck = kernel_with_t1_at(0.0, 175.0)
     app = HmiApp(nck, realtime=False)
     async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "down", "ctrl+a", "ctrl+k", "9", "5")
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "down", "down", "ctrl+a", "ctrl+k", "9", "5")
         assert "Length 1 = 80.000" in info(app, "meastool"), info(app, "meastool")
-        await burst(pilot, "down", "right", "shift+f5")
+        await burst(pilot, "down", "down", "down", "right", "shift+f5")
         assert nck.data.tools[(1, 1)].get(12) == 5.0
         assert nck.data.tools[(1, 1)].get(3) == 75.0
 
@@ -100,7 +100,7 @@ async def test_tool_length_into_the_geometry() -> None:
     nck = kernel_with_t1_at(0.0, 175.0)
     app = HmiApp(nck, realtime=False)
     async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "down", "ctrl+a", "ctrl+k", "9", "5",
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "down", "down", "ctrl+a", "ctrl+k", "9", "5",
                     "shift+f5")
         assert nck.data.tools[(1, 1)].get(3) == 80.0
         assert nck.data.tools[(1, 1)].get(12) == 0.0
@@ -122,8 +122,22 @@ async def test_tool_length_on_the_reference_block() -> None:
     assert nck.submit(cmd.WriteMachineSetup(cmd.MachineSetup(reference=block))) == cmd.Accepted()
     app = HmiApp(nck, realtime=False)
     async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "right")
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "down", "right")
         assert "surface Z (MCS) 95.000" in info(app, "meastool")
         assert "Length 1 = 80.000" in info(app, "meastool")
         await burst(pilot, "shift+f5")
         assert nck.data.tools[(1, 1)].get(3) == 80.0
+
+
+async def test_tool_radius_from_an_edge_of_known_x0() -> None:
+    """The cutter's centre at MCS X −120.2 touches, moving +, an edge at X0 −115 (G500, no
+    offset: MCS = WCS): radius = −115 − (−120.2) = 5.2 into $TC_DP6 (the geometry said 5)."""
+    nck = kernel_with_t1_at(-120.2, 200.0)
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "right", "down", "down", "down", "down",
+                    "ctrl+a", "ctrl+k", "-", "1", "1", "5")
+        assert "Radius = 5.200" in info(app, "meastool"), info(app, "meastool")
+        await burst(pilot, "shift+f5")
+        assert abs(nck.data.tools[(1, 1)].get(6) - 5.2) < 1e-9
+        assert nck.data.tools[(1, 1)].get(15) == 0.0
