@@ -148,8 +148,11 @@ class MeasureWindows:
                 return "X0: enter a number"
             edge_mcs = x0 + self._translation_in_force("X", status)
             approach = 1 if form.value("approach") == "+" else -1
-            return LengthPreview(modal.tool, modal.edge, edge_mcs,
-                                 tool_radius(by_name["X"].position_mcs, approach, edge_mcs), radius=True)
+            radius = tool_radius(by_name["X"].position_mcs, approach, edge_mcs)
+            if radius <= 0:
+                return (f"Radius {radius:.3f}: the tool centre is not before the edge X0 in the "
+                        "approach direction — touch the edge, or check X0 and the direction")
+            return LengthPreview(modal.tool, modal.edge, edge_mcs, radius, radius=True)
         if form.value("reference") == REFERENCES[1]:
             setup = self.screen.ask(MachineSetupData())
             reference = getattr(setup, "reference", None)

@@ -141,3 +141,15 @@ async def test_tool_radius_from_an_edge_of_known_x0() -> None:
         await burst(pilot, "shift+f5")
         assert abs(nck.data.tools[(1, 1)].get(6) - 5.2) < 1e-9
         assert nck.data.tools[(1, 1)].get(15) == 0.0
+
+
+async def test_tool_radius_that_would_be_negative_is_not_written() -> None:
+    """Centre at X 0 'approaching' + an edge at X0 −10: the edge lies behind the tool
+    (0 − 10 < 0): the window says so and ⇧F5 writes nothing (the radius stays 5)."""
+    nck = kernel_with_t1_at(0.0, 200.0)
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "shift+f4", "right", "down", "down", "down", "down",
+                    "ctrl+a", "ctrl+k", "-", "1", "0", "shift+f5")
+        assert "Radius -10.000: the tool centre is not before the edge" in info(app, "meastool")
+        assert nck.data.tools[(1, 1)].get(6) == 5.0
