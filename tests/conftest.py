@@ -42,7 +42,8 @@ stall the whole suite until CI's limit. This watchdog is faulthandler's C thread
 writes every thread's stack to the terminal and ends the worker process, so the run
 goes on (pytest-xdist reports the test as crashed and starts a new worker) and the log
 shows where the test hung. Seen: a property test looping for ever — Hypothesis takes
-pytest-timeout's exception for a failing example and goes on shrinking. ``NCK_TEST_HANG_S`` sets it (the watchdog's own test)."""
+pytest-timeout's exception for a failing example and goes on shrinking.
+``NCK_TEST_HANG_S`` sets it (the watchdog's own test)."""
 
 _watchdog_stream = None
 
