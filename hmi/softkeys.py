@@ -67,6 +67,11 @@ class Softkey:
             return False
 
 
+def view_softkey(softkey_id: str, label: str, view: str, **options: Any) -> Softkey:
+    """A softkey that shows ``view`` of its area and is shown pressed while that view is up."""
+    return Softkey(softkey_id, label, f"show_view('{view}')", active=lambda s: s.view == view, **options)
+
+
 def _pad(keys: Iterable[Softkey | None]) -> tuple[Softkey | None, ...]:
     items = list(keys)[:8]
     return tuple(items + [None] * (8 - len(items)))

@@ -22,7 +22,7 @@ from nck.number_text import fixed, trimmed
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
-from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.blocks import BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
 from hmi.widgets.header import increment_text
@@ -120,19 +120,14 @@ class MachineScreen(AreaBase):
         """Horizontal softkeys of the Machine area; vertical ones depend on the view."""
         horizontal = [
             Softkey("machine.mcs", "Act. val.\nMCS", "toggle_mcs", active=lambda s: s.show_mcs),
-            Softkey("machine.gfunc", "G\nfunctions", "show_view('gfunc')",
-                    active=lambda s: s.view == "gfunc"),
-            Softkey("machine.aux", "Auxiliary\nfunctions", "show_view('aux')",
-                    active=lambda s: s.view == "aux"),
-            Softkey("machine.progctl", "Program\ncontrol", "show_view('progctl')",
-                    enabled=lambda s: s._mode() in ("AUTO", "MDA"),
-                    active=lambda s: s.view == "progctl"),
-            Softkey("machine.search", "Block\nsearch", "show_view('search')",
-                    enabled=lambda s: s._mode() == "AUTO" and s._reset_state()
-                    and bool(s.status.channel.selected_program),
-                    active=lambda s: s.view == "search"),
-            Softkey("machine.times", "Times/\nCounter", "show_view('times')",
-                    active=lambda s: s.view == "times"),
+            view_softkey("machine.gfunc", "G\nfunctions", "gfunc"),
+            view_softkey("machine.aux", "Auxiliary\nfunctions", "aux"),
+            view_softkey("machine.progctl", "Program\ncontrol", "progctl",
+                         enabled=lambda s: s._mode() in ("AUTO", "MDA")),
+            view_softkey("machine.search", "Block\nsearch", "search",
+                         enabled=lambda s: s._mode() == "AUTO" and s._reset_state()
+                         and bool(s.status.channel.selected_program)),
+            view_softkey("machine.times", "Times/\nCounter", "times"),
             Softkey("machine.select", "Select\nprogram", "select_program",
                     level=PROGRAM_SELECTION_LEVEL,
                     enabled=lambda s: s._mode() == "AUTO" and s._reset_state()),

@@ -34,7 +34,7 @@ from nck.queries import ReadData
 from nck.status import NckStatus
 
 from hmi.manual_job import ManualJob
-from hmi.softkeys import Softkey
+from hmi.softkeys import Softkey, view_softkey
 from screens.machine_jog_blocks import (
     SPINDLE_FUNCTIONS, EntryError, TsmEntry, position_blocks, tsm_blocks,
 )
@@ -119,16 +119,12 @@ class JogWindows:
         if view in RUNS_ON_CYCLE_START:
             return []
         return [
-            Softkey("jog.tsm", "T,S,M", "show_view('tsm')", active=lambda s: s.view == "tsm"),
-            Softkey("jog.setwo", "Set\nWO", "show_view('setwo')", active=lambda s: s.view == "setwo"),
-            Softkey("jog.measure_workpiece", "Meas.\nworkpiece", "show_view('measwp')",
-                    active=lambda s: s.view == "measwp"),
-            Softkey("jog.measure_tool", "Meas.\ntool", "show_view('meastool')",
-                    active=lambda s: s.view == "meastool"),
-            Softkey("jog.position", "Position", "show_view('position')",
-                    active=lambda s: s.view == "position"),
-            Softkey("jog.settings", "Settings", "show_view('settings')",
-                    active=lambda s: s.view == "settings"),
+            view_softkey("jog.tsm", "T,S,M", "tsm"),
+            view_softkey("jog.setwo", "Set\nWO", "setwo"),
+            view_softkey("jog.measure_workpiece", "Meas.\nworkpiece", "measwp"),
+            view_softkey("jog.measure_tool", "Meas.\ntool", "meastool"),
+            view_softkey("jog.position", "Position", "position"),
+            view_softkey("jog.settings", "Settings", "settings"),
         ]
 
     def run(self, what: str, *args: str) -> None:

@@ -23,7 +23,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.dialogs import ConfirmDialog, ValueDialog
-from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow,
 )
@@ -132,10 +132,8 @@ class ParameterScreen(AreaBase):
             ]
         if self.view.startswith("wo_"):
             return [
-                Softkey("param.wo.active", "Active", "show_view('wo_active')",
-                        active=lambda s: s.view == "wo_active"),
-                Softkey("param.wo.overview", "Overview", "show_view('wo_overview')",
-                        active=lambda s: s.view == "wo_overview"),
+                view_softkey("param.wo.active", "Active", "wo_active"),
+                view_softkey("param.wo.overview", "Overview", "wo_overview"),
                 Softkey("param.wo.details", "Details", "frame_details",
                         active=lambda s: s.view == "wo_details"),
                 None, None, None, None, None if self.view == "wo_active" else edit,

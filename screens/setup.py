@@ -27,7 +27,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
-from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow,
 )
@@ -123,16 +123,13 @@ class SetupScreen(AreaBase):
     # -- softkeys ---------------------------------------------------------------------------------
     def softkey_menu(self) -> SoftkeyMenu:
         """Lists and the password view on the horizontal keys, their own keys on the vertical ones."""
-        def view_key(key_id: str, label: str, view: str) -> Softkey:
-            return Softkey(key_id, label, f"show_view('{view}')", active=lambda s: s.view == view)
-
         horizontal = [
-            view_key("setup.general", "General\nMD", "general"),
-            view_key("setup.channel", "Channel\nMD", "channel"),
-            view_key("setup.axis", "Axis\nMD", "axis"),
-            view_key("setup.display", "Display\nMD", "display"),
+            view_softkey("setup.general", "General\nMD", "general"),
+            view_softkey("setup.channel", "Channel\nMD", "channel"),
+            view_softkey("setup.axis", "Axis\nMD", "axis"),
+            view_softkey("setup.display", "Display\nMD", "display"),
             None,
-            view_key("setup.password", "Password", "password"),
+            view_softkey("setup.password", "Password", "password"),
             Softkey("setup.new_config", "Set MD\nactive (cf)", "new_config",
                     enabled=lambda s: s.status is not None and s.status.channel.channel_state == "reset"),
             Softkey("setup.power_on", "Reset\n(po)", "power_on"),

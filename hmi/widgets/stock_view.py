@@ -24,6 +24,8 @@ from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
 
+from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
+
 BACKGROUND = np.array([16, 20, 28], dtype=np.uint8)
 MATERIAL_TOP = np.array([214, 218, 226], dtype=np.float64)
 MATERIAL_DEEP = np.array([52, 58, 70], dtype=np.float64)
@@ -237,19 +239,7 @@ def pixels_to_text(image: np.ndarray) -> Text:
 class StockView(Widget, can_focus=True):
     """The blank being cut: top view or sections, with zoom, pan, fit and the path overlay."""
 
-    BINDINGS = [
-        Binding("plus,equals_sign", "zoom(1)", "Zoom +", show=False),
-        Binding("minus", "zoom(-1)", "Zoom -", show=False),
-        Binding("left", "pan(-1, 0)", "Pan left", show=False),
-        Binding("right", "pan(1, 0)", "Pan right", show=False),
-        Binding("up", "pan(0, 1)", "Pan up", show=False),
-        Binding("down", "pan(0, -1)", "Pan down", show=False),
-        Binding("f", "fit", "Fit", show=False),
-        Binding("1", "view('XY')", "XY", show=False),
-        Binding("2", "view('XZ')", "XZ", show=False),
-        Binding("3", "view('YZ')", "YZ", show=False),
-        Binding("o", "overlay", "Path", show=False),
-    ]
+    BINDINGS = [*VIEW_BINDINGS, Binding("o", "overlay", "Path", show=False)]
 
     view: reactive[str] = reactive("XY")
     overlay: reactive[bool] = reactive(True)
@@ -265,7 +255,7 @@ class StockView(Widget, can_focus=True):
     @property
     def zoom(self) -> float:
         """Magnification relative to fit (1 = fit)."""
-        return 1.5 ** self._zoom_steps
+        return ZOOM_STEP ** self._zoom_steps
 
     def set_picture(self, picture: StockPicture, status_text: str = "") -> None:
         """Show a new picture (the view, zoom and pan stay)."""

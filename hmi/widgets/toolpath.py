@@ -287,6 +287,21 @@ def draw_path(
 # Widget
 # ---------------------------------------------------------------------------------------------
 
+VIEW_BINDINGS = [
+    Binding("plus,equals_sign", "zoom(1)", "Zoom +", show=False),
+    Binding("minus", "zoom(-1)", "Zoom -", show=False),
+    Binding("left", "pan(-1, 0)", "Pan left", show=False),
+    Binding("right", "pan(1, 0)", "Pan right", show=False),
+    Binding("up", "pan(0, 1)", "Pan up", show=False),
+    Binding("down", "pan(0, -1)", "Pan down", show=False),
+    Binding("f", "fit", "Fit", show=False),
+    Binding("1", "view('XY')", "XY", show=False),
+    Binding("2", "view('XZ')", "XZ", show=False),
+    Binding("3", "view('YZ')", "YZ", show=False),
+]
+"""Keys of a focused simulation view (the toolpath and the material view alike): zoom, pan,
+fit and the three projections; the screen's softkeys call the same actions."""
+
 ZOOM_STEP = 1.5
 PAN_FRACTION = 0.1
 
@@ -302,18 +317,7 @@ class ToolpathView(Widget, can_focus=True):
     ToolpathView { height: 1fr; width: 1fr; }
     """
 
-    BINDINGS = [
-        Binding("plus,equals_sign", "zoom(1)", "Zoom +", show=False),
-        Binding("minus", "zoom(-1)", "Zoom -", show=False),
-        Binding("left", "pan(-1, 0)", "Pan left", show=False),
-        Binding("right", "pan(1, 0)", "Pan right", show=False),
-        Binding("up", "pan(0, 1)", "Pan up", show=False),
-        Binding("down", "pan(0, -1)", "Pan down", show=False),
-        Binding("f", "fit", "Fit", show=False),
-        Binding("1", "view('XY')", "XY", show=False),
-        Binding("2", "view('XZ')", "XZ", show=False),
-        Binding("3", "view('YZ')", "YZ", show=False),
-    ]
+    BINDINGS = VIEW_BINDINGS
 
     view: reactive[str] = reactive("XY")
     """The projection shown: ``XY``, ``XZ`` or ``YZ``."""

@@ -12,6 +12,7 @@ from nck.kernel import Nck
 
 from hmi.app import HmiApp
 from tests.burst import burst
+from tests.jog_setup.kernels import run_in_mda_then_jog
 from tests.jog_setup.test_tsm_window import kernel_with_tools
 
 SIZE = (160, 48)
@@ -20,15 +21,7 @@ SIZE = (160, 48)
 def kernel_with_t1_at(x: float, z: float) -> Nck:
     """T1 D1 loaded, the tool at MCS X ``x``, Z ``z`` (carrier), G500, JOG."""
     nck = kernel_with_tools()
-    blocks = f"T1 M6 D1\nG0 G53 X{x} Z{z - 75.0}\n"  # G53: no work offset, the tool length stays
-    for command in (cmd.SelectMode("MDA"), cmd.SetMdaProgram(blocks), cmd.CycleStart()):
-        assert nck.submit(command) == cmd.Accepted()
-    for _ in range(3000):
-        nck.tick(0.01)
-        if nck.status().channel.channel_state == "reset":
-            break
-    assert nck.submit(cmd.SetMdaProgram("")) == cmd.Accepted()
-    assert nck.submit(cmd.SelectMode("JOG")) == cmd.Accepted()
+    run_in_mda_then_jog(nck, f"T1 M6 D1\nG0 G53 X{x} Z{z - 75.0}\n")  # G53: no work offset, the tool length stays
     status = nck.status()
     assert status.channel.modal.tool == 1
     assert {a.name: a.position_mcs for a in status.axes}["X"] == x

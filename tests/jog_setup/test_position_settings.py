@@ -9,11 +9,11 @@ set up by hand, not numbers read from the kernel.
 
 from __future__ import annotations
 
-from nck import commands as cmd
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
 from tests.burst import burst
+from tests.jog_setup.kernels import run_in_mda_then_jog
 from tests.hmi.test_machine_area import screen_text
 from tests.jog_setup.test_tsm_window import run_job
 
@@ -22,16 +22,7 @@ SIZE = (160, 48)
 
 def kernel_at(x: float, y: float, z: float) -> Nck:
     """A referenced mill standing at (x, y, z) MCS, in JOG."""
-    nck = Nck(referenced=True)
-    for command in (cmd.SelectMode("MDA"), cmd.SetMdaProgram(f"G0 X{x} Y{y} Z{z}\n"), cmd.CycleStart()):
-        assert nck.submit(command) == cmd.Accepted()
-    for _ in range(2000):
-        nck.tick(0.01)
-        if nck.status().channel.channel_state == "reset":
-            break
-    assert nck.submit(cmd.SetMdaProgram("")) == cmd.Accepted()
-    assert nck.submit(cmd.SelectMode("JOG")) == cmd.Accepted()
-    return nck
+    return run_in_mda_then_jog(Nck(referenced=True), f"G0 X{x} Y{y} Z{z}\n", max_ticks=2000)
 
 
 def wcs(app: HmiApp) -> dict[str, float]:

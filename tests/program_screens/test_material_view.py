@@ -151,37 +151,28 @@ async def test_simulation_reports_the_alarm_auto_stops_with(data_dir: Path) -> N
         assert "alarm 10860 at line 2" in pilot.app.screen.stock.status_text
 
 
-def test_snapshot_top_view_partly_cut(snap_compare, slots_dir: Path) -> None:
-    """SLOTS: the frame slot cut, the tool at the end of block N100, the circle still to come."""
-    app = make_program_app(slots_dir)
-
+def simulation_then(*keys: str):
+    """A snapshot's ``run_before``: open the simulation, press ``keys``, wait for the picture."""
     async def run_before(pilot) -> None:
         await open_simulation(pilot)
-        await pilot.press("shift+f6", "shift+f6", "shift+f6", "shift+f6")
+        await pilot.press(*keys)
         await settle(pilot)
+    return run_before
 
-    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+def test_snapshot_top_view_partly_cut(snap_compare, slots_dir: Path) -> None:
+    """SLOTS: the frame slot cut, the tool at the end of block N100, the circle still to come."""
+    assert snap_compare(make_program_app(slots_dir), terminal_size=SIZE,
+                        run_before=simulation_then("shift+f6", "shift+f6", "shift+f6", "shift+f6"))
 
 
 def test_snapshot_front_section_partly_cut(snap_compare, slots_dir: Path) -> None:
     """The front section XZ through the tool, after the frame slot (N90)."""
-    app = make_program_app(slots_dir)
-
-    async def run_before(pilot) -> None:
-        await open_simulation(pilot)
-        await pilot.press("shift+f6", "shift+f6", "shift+f6", "shift+f6", "shift+f6", "f2")
-        await settle(pilot)
-
-    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+    assert snap_compare(make_program_app(slots_dir), terminal_size=SIZE,
+                        run_before=simulation_then("shift+f6", "shift+f6", "shift+f6", "shift+f6", "shift+f6", "f2"))
 
 
 def test_snapshot_side_section_partly_cut(snap_compare, slots_dir: Path) -> None:
     """The side section YZ through the tool during the circle's plunge (N120), path off."""
-    app = make_program_app(slots_dir)
-
-    async def run_before(pilot) -> None:
-        await open_simulation(pilot)
-        await pilot.press("shift+f6", "shift+f6", "f3", "shift+f8")
-        await settle(pilot)
-
-    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+    assert snap_compare(make_program_app(slots_dir), terminal_size=SIZE,
+                        run_before=simulation_then("shift+f6", "shift+f6", "f3", "shift+f8"))

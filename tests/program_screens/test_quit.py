@@ -88,17 +88,21 @@ async def test_termination_with_interrupted_program_quits_without_asking(data_di
         assert app.return_code == 128 + signal.SIGTERM  # ended, nothing asked
 
 
+def refuse_journal_writes(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every journal write fails as on a full disk."""
+    def refuse(*args: object, **kwargs: object) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(EditorJournal, "write", refuse)
+
+
 async def test_journal_write_failure_at_quit_is_reported_and_the_hmi_stays(
         data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The journal cannot be written at quit: the HMI does not quit and says why."""
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_demo_and_type(app, pilot, "N5")
-
-        def refuse(*args: object, **kwargs: object) -> None:
-            raise OSError(28, "No space left on device")
-
-        monkeypatch.setattr(EditorJournal, "write", refuse)
+        refuse_journal_writes(monkeypatch)
         await burst(pilot, "ctrl+q", "y")
         assert app.is_running
         line = str(app.screen.query_one("#dialog-line").render())
@@ -115,11 +119,7 @@ async def test_unattended_quit_with_a_journal_write_failure_still_ends_and_says_
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_demo_and_type(app, pilot, "N5")
-
-        def refuse(*args: object, **kwargs: object) -> None:
-            raise OSError(28, "No space left on device")
-
-        monkeypatch.setattr(EditorJournal, "write", refuse)
+        refuse_journal_writes(monkeypatch)
         app.quit_unattended(143)
         await pilot.pause()
         assert app.return_code == 143
