@@ -81,6 +81,7 @@ class ContactState:
     switched: bool = False  # $AC_MEA[1]: the probe switched in that block
     measured_mcs: dict[str, float] = field(default_factory=dict)  # $AA_MM
     measured_wcs: dict[str, float] = field(default_factory=dict)  # $AA_MW
+    free: tuple[float, ToolBody, Point] | None = None  # at the step's start: gap to every solid, tool body, tip offset
 
 
 class ContactWatch:
@@ -123,6 +124,7 @@ class ContactWatch:
     # ---------------------------------------------------------------- the cycle
     def _contact_cycle_limit(self, cycles: int) -> int:
         """At most as many IPO cycles as the tool surely cannot reach a solid in."""
+        self._contact.free = None
         if cycles <= 1 or not self._contact_watched():
             return cycles
         if (self._run is None and self._overlay is None and not self._jogging  # type: ignore[attr-defined]
@@ -131,6 +133,7 @@ class ContactWatch:
         body, offset = self._tool_body()
         tip = self._tip(self._path_positions(self.motion), offset)  # type: ignore[attr-defined]
         gap = min(clearance(body, solid, tip) for _, solid in self.data.machine_setup.solids())
+        self._contact.free = (gap, body, offset)
         step_mm = self._max_path_mm_s() * self._ipo_s * STEP_MARGIN  # type: ignore[attr-defined]
         return max(1, min(cycles, int(gap / step_mm))) if gap > 0.0 else 1
 
@@ -150,6 +153,7 @@ class ContactWatch:
 
     def _watch_contact(self, before: dict[str, float] | None) -> None:
         """After a step: judge the tip's segment from ``before`` to now against every solid."""
+        free, self._contact.free = self._contact.free, None
         if before is None:
             return
         after = self._path_positions(self.motion)  # type: ignore[attr-defined]
@@ -157,6 +161,9 @@ class ContactWatch:
             return
         body, offset = self._tool_body()
         start, end = self._tip(before, offset), self._tip(after, offset)
+        if (free is not None and not self._contact.touching and free[1:] == (body, offset)
+                and math.dist(start, end) < free[0]):
+            return  # the tool moved less than its gap to every solid: nothing can be touched
         for name, solid in self.data.machine_setup.solids():
             touching_before = name in self._contact.touching
             t = first_contact(body, solid, start, end)
