@@ -8,7 +8,7 @@ from nck import canon
 from nck.headless import RunResult, interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
-from nck.ncdata import NcData
+from nck.ncdata import NcData, ToolEdge
 
 PROLOGUE = "G17 G90 G0 X0 Y0 Z50 F100 S1000 M3\n"  # feed 100 mm/min, 1000 rpm right
 
@@ -64,3 +64,26 @@ def run(body: str, prologue: str = PROLOGUE) -> Cycled:
     result = interpret_only(load_machine(None), MemorySource({"main.mpf": text}), NcData(), "main.mpf",
                             text=text, max_blocks=20_000)
     return Cycled(result)
+
+
+TOOL = "T1 M6 D1\n"  # end mill T1 D1 of radius 5 mm ($TC_DP6), see run_with_tool
+
+
+def run_with_tool(body: str, tool: str = TOOL) -> Cycled:
+    """Run ``prologue + tool + body + M30`` with the tool T1 D1: length 50 mm, radius 5 mm."""
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 50.0, 6: 5.0})
+    text = PROLOGUE + tool + body + "\nM30\n"
+    return Cycled(interpret_only(load_machine(None), MemorySource({"main.mpf": text}), data, "main.mpf",
+                                 text=text, max_blocks=20_000))
+
+
+def tool_path(case: Cycled) -> list[tuple]:
+    """The motions after the prologue's G0: (kind, x, y, z) and, for arcs, the centre (x, y)
+    as a fifth item; rounded to 0.001 mm."""
+    out = []
+    for m in case.result.segments[1:]:
+        end = tuple(round(m.end_wcs[a], 3) for a in "XYZ")
+        centre = tuple(round(m.center_wcs[a], 3) for a in "XY") if m.center_wcs else None
+        out.append((m.kind, *end, centre) if centre else (m.kind, *end))
+    return out

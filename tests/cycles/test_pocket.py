@@ -6,30 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from nck.headless import interpret_only
-from nck.interp.sources import MemorySource
-from nck.machine import load_machine
-from nck.ncdata import NcData, ToolEdge
-from tests.cycles.helpers import PROLOGUE, Cycled
-
-TOOL = "T1 M6 D1\n"  # end mill, radius 5 mm ($TC_DP6)
-
-
-def run_with_tool(body: str, tool: str = TOOL) -> Cycled:
-    data = NcData()
-    data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 50.0, 6: 5.0})
-    text = PROLOGUE + tool + body + "\nM30\n"
-    return Cycled(interpret_only(load_machine(None), MemorySource({"main.mpf": text}), data, "main.mpf",
-                                 text=text, max_blocks=20_000))
-
-
-def _path(case: Cycled) -> list[tuple]:
-    out = []
-    for m in case.result.segments[1:]:  # after the prologue's G0
-        end = tuple(round(m.end_wcs[a], 3) for a in "XYZ")
-        centre = tuple(round(m.center_wcs[a], 3) for a in "XY") if m.center_wcs else None
-        out.append((m.kind, *end, centre) if centre else (m.kind, *end))
-    return out
+from tests.cycles.helpers import TOOL, run_with_tool, tool_path
 
 
 def test_pocket4_roughing_in_two_levels() -> None:
@@ -45,7 +22,7 @@ def test_pocket4_roughing_in_two_levels() -> None:
         for r in (4, 8, 12, 14.5):
             level += [("G1", 50 + r, 40, z), ("G3", 50 + r, 40, z, (50, 40))]
         level.append(("G1", 50, 40, z))
-    assert _path(case) == [("G0", 0, 0, 10), ("G0", 50, 40, 10), ("G0", 50, 40, 2), *level, ("G0", 50, 40, 10)]
+    assert tool_path(case) == [("G0", 0, 0, 10), ("G0", 50, 40, 10), ("G0", 50, 40, 2), *level, ("G0", 50, 40, 10)]
     feeds = [m.feed_mm_min for m in case.result.segments if m.kind != "G0"]
     assert feeds[0] == 80 and feeds[1] == 300
 
@@ -54,14 +31,14 @@ def test_pocket4_finishing_pass_and_conventional_direction() -> None:
     """_VARI 2: one pass at the depth -6 on the radius 20-5 = 15 (allowances removed); _CDIR 1:
     G2. Default circle step (_MIDA 0) does not matter for one circle."""
     case = run_with_tool("POCKET4(10, 0, 2, -6, 20, 50, 40, 3, 0.5, 0.2, 300, 80, 1, 2)").ended()
-    assert _path(case)[3:] == [("G1", 50, 40, -6), ("G1", 65, 40, -6), ("G2", 65, 40, -6, (50, 40)),
+    assert tool_path(case)[3:] == [("G1", 50, 40, -6), ("G1", 65, 40, -6), ("G2", 65, 40, -6, (50, 40)),
                                ("G1", 50, 40, -6), ("G0", 50, 40, 10)]
 
 
 def test_pocket4_default_circle_step_is_80_percent_of_the_diameter() -> None:
     """_MIDA 0: 0.8 x 10 = 8 mm: radii 8 and then 14.5 (one level, _MID 0)."""
     case = run_with_tool("POCKET4(10, 0, 2, -6, 20, 0, 0, 0, 0.5, 0, 300, 80, 3, 1)").ended()
-    assert [p[1] for p in _path(case) if p[0] == "G3"] == [8, 14.5]
+    assert [p[1] for p in tool_path(case) if p[0] == "G3"] == [8, 14.5]
 
 
 @pytest.mark.parametrize("body, tool, alarm", [
@@ -103,7 +80,7 @@ def test_pocket3_roughing_rectangles() -> None:
                 ("G1", 67.5, 40, z), *_rounded_rectangle_ccw(50, 40, 17.5, 7.5, 0, z),
                 ("G1", 75, 40, z), *_rounded_rectangle_ccw(50, 40, 25, 15, 5, z),
                 ("G1", 50, 40, z), ("G0", 50, 40, 10)]
-    got = _path(case)
+    got = tool_path(case)
     # zero-length moves (a rectangle starts where the step out ended) are not motion
     assert [p for p in got] == [p for i, p in enumerate(expected) if i == 0 or p[:4] != expected[i - 1][:4]]
 
@@ -113,7 +90,7 @@ def test_pocket3_finishing_turned_by_90_degrees_clockwise() -> None:
     half 20-5 = 15 along Y, 15-5 = 10 along X, corner 8-5 = 3. _CDIR 1: clockwise (G2) from
     the middle of the +length side (0, 15): to (7, 15), arc to (10, 12) about (7, 12), down to
     (10, -12), arc to (7, -15) …"""
-    got = _path(run_with_tool("POCKET3(10, 0, 2, -4, 40, 30, 8, 0, 0, 90, 0, 0, 0, 300, 80, 1, 2)").ended())
+    got = tool_path(run_with_tool("POCKET3(10, 0, 2, -4, 40, 30, 8, 0, 0, 90, 0, 0, 0, 300, 80, 1, 2)").ended())
     assert got[3:] == [
         ("G1", 0, 0, -4), ("G1", 0, 15, -4), ("G1", 7, 15, -4), ("G2", 10, 12, -4, (7, 12)),
         ("G1", 10, -12, -4), ("G2", 7, -15, -4, (7, -12)), ("G1", -7, -15, -4), ("G2", -10, -12, -4, (-7, -12)),
