@@ -32,13 +32,12 @@ class DataDirLockError(Exception):
 
 
 class LockFileRefused(DataDirLockError):
-    """``.lock`` is not a regular file (a link, pipe or device): it is never opened through."""
+    """``.lock`` is not a regular file of its own (a link, pipe or device, or a file with
+    further hard links): it is never truncated or written."""
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, kind: str = "not a regular file (a link, pipe or device)") -> None:
         self.path = path
-        super().__init__(
-            f"{path} is not a regular file (a link, pipe or device); the lock is never taken "
-            "through it — remove it and start again")
+        super().__init__(f"{path} is {kind}; the lock is never taken through it — remove it and start again")
 
 
 class DataDirInUse(DataDirLockError):
@@ -104,8 +103,8 @@ def lock_data_dir(directory: str | Path) -> DataDirLock:
     """Take the lock of ``directory`` (created if missing).
 
     Raises :class:`DataDirInUse` while another process holds it and
-    :class:`LockFileRefused` when ``.lock`` is a link, pipe or device (the
-    file it points to is never opened, truncated or written).
+    :class:`LockFileRefused` when ``.lock`` is a link, pipe or device, or a
+    hard link of another file (the file it points to is never truncated or written).
     """
     root = Path(directory)
     root.mkdir(parents=True, exist_ok=True)
@@ -116,6 +115,9 @@ def lock_data_dir(directory: str | Path) -> DataDirLock:
         handle = open_regular(path, os.O_RDWR | os.O_CREAT, 0o644)
     except NotARegularFile:
         raise LockFileRefused(path) from None
+    if os.fstat(handle).st_nlink != 1:  # a hard link shares its content with a file elsewhere
+        os.close(handle)
+        raise LockFileRefused(path, "linked to another file (a hard link)")
     try:
         fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except OSError:

@@ -41,6 +41,19 @@ def test_a_lock_file_linked_outside_is_neither_truncated_nor_written(tmp_path: P
     assert victim.read_text() == VICTIM_TEXT
 
 
+def test_a_lock_file_hard_linked_to_an_outside_file_is_neither_truncated_nor_written(tmp_path: Path) -> None:
+    """A hard link is a regular file too, but its content is the outside file's: truncating it
+    and writing the PID would destroy that file (found trying the door by hand)."""
+    victim = _victim(tmp_path)
+    data_dir = tmp_path / "data"
+    data_dir.mkdir()
+    os.link(victim, data_dir / ".lock")
+    with pytest.raises(LockFileRefused) as refused:
+        lock_data_dir(data_dir)
+    assert ".lock" in str(refused.value) and "linked" in str(refused.value)
+    assert victim.read_text() == VICTIM_TEXT
+
+
 def test_a_dangling_lock_link_creates_nothing_outside(tmp_path: Path) -> None:
     data_dir = tmp_path / "data"
     data_dir.mkdir()
