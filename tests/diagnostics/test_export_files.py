@@ -36,3 +36,21 @@ async def test_alarm_log_export_refuses_a_link_and_asks_before_replacing(tmp_pat
         await pilot.pause()
         assert (tmp_path / "alarm_log.txt").read_text() != "older export\n"
         assert "Alarm log written" in str(app.screen.query_one("#dialog-line").render())
+
+
+async def test_an_existing_alarm_log_csv_is_replaced_only_when_the_operator_says_yes(tmp_path: Path) -> None:
+    (tmp_path / "alarm_log.csv").write_text("older export\n")
+    app = app_on(kernel())
+    async with app.run_test(size=SIZE) as pilot:
+        screen = await open_diagnostics(pilot)
+        screen.export_dir = tmp_path
+        await pilot.press("f3", "shift+f3", "escape")  # Alarm log, Export CSV, then No (Esc)
+        await pilot.pause()
+        assert (tmp_path / "alarm_log.csv").read_text() == "older export\n"
+        assert type(app.screen).__name__ != "ConfirmDialog"
+        await pilot.press("shift+f3")
+        await pilot.pause()
+        assert type(app.screen).__name__ == "ConfirmDialog"
+        await pilot.press("enter")  # Yes
+        await pilot.pause()
+        assert (tmp_path / "alarm_log.csv").read_text().splitlines()[0] != "older export"

@@ -22,6 +22,7 @@ from hmi.app import main as hmi_main
 from nck.cli import main as nck_main
 from nck.paths import EPHEMERAL_PREFIX, EphemeralDataDir
 from nck.persistence import Session
+from tests.reliability.test_terminal_loss import start_hmi, terminals  # noqa: F401 (a fixture)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -131,3 +132,18 @@ def test_a_data_directory_the_operator_names_through_a_link_is_copied(tmp_path: 
     (tmp_path / "link").symlink_to(real, target_is_directory=True)
     with EphemeralDataDir(tmp_path / "link") as copy:
         assert (copy / "retained" / "tools.json").read_text() == "{}"
+
+
+@pytest.mark.skipif(not hasattr(os, "pidfd_open"), reason="needs Linux pidfd_open")
+def test_sigterm_to_the_hmi_removes_its_copy(tmp_path: Path, private_temp: Path, monkeypatch: pytest.MonkeyPatch,
+                                             terminals) -> None:
+    """The HMI's door: ``hmi --ephemeral`` told to end (a service manager, the classroom server)."""
+    data_dir = _data_dir(tmp_path)
+    monkeypatch.setenv("TMPDIR", str(private_temp))
+    hmi = start_hmi(terminals, data_dir, "--ephemeral")
+    assert len(_copies(private_temp)) == 1
+    os.kill(hmi.pid, signal.SIGTERM)
+    status = hmi.wait_exit()
+    assert os.WIFEXITED(status) and os.WEXITSTATUS(status) == 128 + signal.SIGTERM
+    assert b"Traceback" not in hmi.output
+    assert _copies(private_temp) == []
