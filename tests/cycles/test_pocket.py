@@ -108,3 +108,53 @@ def test_pocket3_alarms(body: str, tool: str, alarm: int) -> None:
     case = run_with_tool(body, tool)
     assert case.alarms == [alarm]
     assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
+
+
+def _helix_level(cx: float, cy: float, rad1: float, z_from: float, zs: list[float]) -> list[tuple]:
+    """Helical insertion by hand: out to the helix start, full turns down to each of zs, a
+    flat circle at the last, back to the centre (G3, climb milling)."""
+    z = zs[-1]
+    return [("G1", cx + rad1, cy, z_from), *[("G3", cx + rad1, cy, zi, (cx, cy)) for zi in zs],
+            ("G3", cx + rad1, cy, z, (cx, cy)), ("G1", cx, cy, z)]
+
+
+def _circles(z: float) -> list[tuple]:
+    """The roughing circles of the first POCKET4 test at the level z: radii 4, 8, 12, 14.5."""
+    return [p for r in (4, 8, 12, 14.5) for p in (("G1", 50 + r, 40, z), ("G3", 50 + r, 40, z, (50, 40)))]
+
+
+def test_pocket4_helical_insertion() -> None:
+    """_VARI 11: roughing with helical insertion, helix radius _RAD1 3, at most _DP1 2 per turn.
+    Levels -2.9 and -5.8 as in the first test. Level 1 from the safety plane 2 down 4.9:
+    ceil(4.9/2) = 3 turns of 4.9/3 (to 0.367, -1.267, -2.9); level 2 down 2.9: 2 turns of 1.45
+    (-4.35, -5.8). Helix at FFD 80, the flat circle and the pocket circles at FFP1 300."""
+    case = run_with_tool("POCKET4(10, 0, 2, -6, 20, 50, 40, 3, 0.5, 0.2, 300, 80, 0, 11, 4, 0, 0, 3, 2)")
+    expected = [("G0", 0, 0, 10), ("G0", 50, 40, 10), ("G0", 50, 40, 2),
+                *_helix_level(50, 40, 3, 2, [0.367, -1.267, -2.9]), *_circles(-2.9), ("G1", 50, 40, -2.9),
+                *_helix_level(50, 40, 3, -2.9, [-4.35, -5.8]), *_circles(-5.8), ("G1", 50, 40, -5.8),
+                ("G0", 50, 40, 10)]
+    assert tool_path(case.ended()) == expected
+    feeds = [m.feed_mm_min for m in case.result.segments if m.kind != "G0"]
+    assert feeds[:6] == [80, 80, 80, 80, 300, 300]
+
+
+def test_pocket3_helical_insertion() -> None:
+    """POCKET3 60 x 40 about (50, 40), one level to -4 (no allowances), _VARI 11 with _RAD1 4
+    and _DP1 5: from the safety plane 2 down 6 in ceil(6/5) = 2 turns of 3 (-1, -4), flat
+    circle, back to the centre; then the centre line and rectangles as in the roughing test."""
+    got = tool_path(run_with_tool(
+        "POCKET3(10, 0, 2, -4, 60, 40, 10, 50, 40, 0, 0, 0, 0, 300, 80, 0, 11, 8, 0, 0, 0, 4, 5)").ended())
+    assert got[3:8] == _helix_level(50, 40, 4, 2, [-1, -4])
+    assert got[8:10] == [("G1", 40, 40, -4), ("G1", 60, 40, -4)]
+
+
+@pytest.mark.parametrize("body, alarm", [
+    ("POCKET4(10, 0, 2, -6, 20, 50, 40, 3, 0.5, 0.2, 300, 80, 0, 11, 4, 0, 0, 3, 0)", 61002),     # no depth per turn
+    ("POCKET4(10, 0, 2, -6, 20, 50, 40, 3, 0.5, 0.2, 300, 80, 0, 11, 4, 0, 0, 15, 2)", 61105),    # 15 > 14.5
+    ("POCKET3(10, 0, 2, -4, 60, 40, 10, 50, 40, 0, 0, 0, 0, 300, 80, 0, 11, 8, 0, 0, 0, 0, 5)", 61002),
+    ("POCKET3(10, 0, 2, -4, 60, 40, 10, 50, 40, 0, 0, 0, 0, 300, 80, 0, 11, 8, 0, 0, 0, 16, 5)", 61105),  # 16 > 15
+])
+def test_helical_insertion_alarms(body: str, alarm: int) -> None:
+    case = run_with_tool(body)
+    assert case.alarms == [alarm]
+    assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
