@@ -136,9 +136,14 @@ class SetControllerEnable:
 
 @dataclass(frozen=True, slots=True)
 class StartBlockSearch:
-    """Block search with calculation to block number ``n`` or to a block containing ``text``."""
+    """Block search to block number ``target`` (``N260``) or to the first block containing
+    the text ``target``; ``search_type`` names the type (:mod:`nck.block_search`):
+    ``contour`` (with calculation, approach to the start of the target block),
+    ``end_point`` (with calculation, to the block end point), ``without_calculation``,
+    ``serupro`` (search run by program test)."""
 
     target: str
+    search_type: str = "contour"
 
 
 @dataclass(frozen=True, slots=True)

@@ -33,6 +33,7 @@ from typing import Any, Callable, Collection
 from nck import commands as cmd
 from nck.access import AccessControl
 from nck.alarms import AlarmServer
+from nck.block_search import SEARCH_TYPES, circle_tolerance
 from nck.canon import (END_COMMANDS, AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand,
                        ToolSelect, UserAlarm)
 from nck.channel import (
@@ -410,7 +411,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             self._raise_number(ALARM_CONTINUE_WITH_START)
             return Accepted()
         if run.phase == SEARCH_ACTIONS_DONE:
-            approach = run.search_approach()
+            approach = run.search_approach(self._path_positions(self._path_motion()),
+                                           circle_tolerance(self.machine))
             self._path_motion().resume()
             if approach is not None:
                 run.requeue([], replace(approach, start_mcs=self._path_positions(self._path_motion())))
@@ -571,6 +573,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             return Rejected("Block search is possible in AUTOMATIC only")
         if self._selected is None:
             return Rejected("No program selected")
+        if command.search_type not in SEARCH_TYPES:
+            return Rejected(f"Unknown block search type {command.search_type}")
         cascaded = self._run is not None and self._run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
         if self._sit.channel != RESET and not cascaded:
             return Rejected("Block search is possible only in channel reset")
@@ -579,7 +583,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
         interp.start(self._selected)
         run = self._new_run("AUTO", self._selected, interp)
         try:
-            result = run.search(command.target, self._path_positions(self.motion))
+            result = run.search(command.target, self._path_positions(self.motion), command.search_type)
         except NcAlarmError:
             interp.reset()
             raise

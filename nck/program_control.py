@@ -13,7 +13,10 @@ Block search with calculation (:meth:`ProgramRun.search`) interprets up to the
 target block without moving anything, collecting the last position and the
 auxiliary functions (the action blocks), and keeps the target block pending;
 NC START outputs the actions, alarm 10208 follows, the next NC START
-approaches the start of the target block and continues.
+approaches the start of the target block (type 2) or runs the target block from
+where the axes stand (type 4) and continues. Block search without calculation
+(type 1) places the program at the target block; its NC STARTs output no action
+and approach nothing. The types: :mod:`nck.block_search`.
 """
 
 from __future__ import annotations
@@ -23,11 +26,13 @@ from collections import deque
 from dataclasses import dataclass, field, replace
 from typing import Callable, Mapping
 
+from nck.block_search import CONTOUR, END_POINT, WITHOUT_CALCULATION, EndPointStart
 from nck.canon import (
     AuxFunction, Dwell, EdgeSelect, ExactStop, Message, Motion, ProgramEnd, SpindleCommand, StopPoint,
     Source, ToolSelect, UserAlarm,
 )
 from nck.errors import NcAlarmError
+from nck.geometry.circles import CircleTolerance
 from nck.interp.api import BlockResult, Interpreter
 from nck.motion.api import MotionSystem
 from nck.status import BlockView
@@ -75,9 +80,10 @@ class RunOptions:
 
 @dataclass
 class SearchResult:
-    """What a block search with calculation collected."""
+    """What a block search collected (``search_type``: a name of :mod:`nck.block_search`)."""
 
     found: bool
+    search_type: str = CONTOUR
     position_mcs: dict[str, float] = field(default_factory=dict)
     position_wcs: dict[str, float] = field(default_factory=dict)
     actions: list[object] = field(default_factory=list)
@@ -137,6 +143,7 @@ class ProgramRun:
         self._stop_after: str | None = None
         self._end_kind: str | None = None
         self._search: SearchResult | None = None
+        self._end_point: EndPointStart | None = None  # type 4: how the target block's motion starts
 
     # -- feeding ------------------------------------------------------------
     def feed(self, motion: MotionSystem, options: RunOptions, budget_s: float) -> list[RunEvent]:
@@ -265,6 +272,18 @@ class ProgramRun:
             if isinstance(command, (Motion, Dwell)):
                 if not motion.can_accept():
                     return False
+                if isinstance(command, Motion) and self._end_point is not None:
+                    try:
+                        started = self._start_at_end_point(command)
+                    except NcAlarmError as error:
+                        events.append(RunEvent("alarm", alarm=error))
+                        self._pending = None
+                        self._stop_at_idle("alarm")
+                        return False
+                    if started is None:
+                        self._index += 1
+                        continue
+                    command = started
                 if isinstance(command, Motion):
                     command = self._transform(command)
                     self.last_motion = command
@@ -298,6 +317,20 @@ class ProgramRun:
                 self._stop_at_idle("single block")
                 return False
         return True
+
+    def _start_at_end_point(self, motion: Motion) -> Motion | None:
+        """After a search to the block end point: the target block's motion starts where the
+        axes stand; motion of a searched block that radius compensation held back until
+        the target (same program, earlier line) is not run (None), nor a corner the NC
+        inserts before the target's own motion: the approach uses the target block's
+        interpolation (002 L18296-18297)."""
+        start = self._end_point
+        assert start is not None
+        source, target = motion.source, start.target
+        if (source.file == target.file and source.line < target.line) or (source == target and motion.inserted):
+            return None
+        self._end_point = None
+        return start.apply(motion) if source == target else motion
 
     def _single_segment_stop(self, options: RunOptions, commands: tuple) -> bool:
         """SBL1 stops after every segment, also one the NC inserted or one an earlier block
@@ -414,23 +447,37 @@ class ProgramRun:
         return tuple(self.history)
 
     # -- block search --------------------------------------------------------
-    def search(self, target: str, start_positions: Mapping[str, float]) -> SearchResult:
-        """Block search with calculation to block number or text ``target``.
+    def search(self, target: str, start_positions: Mapping[str, float],
+               search_type: str = CONTOUR) -> SearchResult:
+        """Block search of ``search_type`` to block number or text ``target``.
 
         The interpreter must be positioned at the program start. Raises
-        :class:`NcAlarmError` when a block before the target fails.
+        :class:`NcAlarmError` when a block before the target fails (with calculation)
+        or the target block itself fails.
         """
         number, text = parse_search_target(target)
-        result = SearchResult(found=False, position_mcs=dict(start_positions))
+        result = SearchResult(found=False, search_type=search_type, position_mcs=dict(start_positions))
         flags = getattr(self.interp, "flags", None)
         if isinstance(flags, dict):
             flags["search"] = True
         try:
-            self._search_blocks(number, text, result)
+            if search_type == WITHOUT_CALCULATION:
+                self._search_without_calculation(number, text, result)
+            else:
+                self._search_blocks(number, text, result)
         finally:
             if isinstance(flags, dict):
                 flags["search"] = False
         return result
+
+    def _search_without_calculation(self, number: int | None, text: str, result: SearchResult) -> None:
+        """Type 1: place the program at the target and interpret only the target block."""
+        if not self.interp.skip_to(number, text):
+            return
+        block = self.interp.step()
+        result.blocks_searched = 1
+        result.position_mcs = {}  # nothing to approach
+        self._found(block, result)
 
     def _search_blocks(self, number: int | None, text: str, result: SearchResult) -> None:
         spindles: dict[int, SpindleCommand] = {}
@@ -443,9 +490,7 @@ class ProgramRun:
             block = self.interp.step()
             result.blocks_searched += 1
             if self._is_target(block, number, text):
-                result.found = True
-                self._take(block)
-                self.blocks_executed -= 1
+                self._found(block, result)
                 break
             ended = False
             for command in block.commands:
@@ -472,9 +517,15 @@ class ProgramRun:
             actions += [c for c in (tool, edge) if c is not None]
             actions += list(spindles.values())
             result.actions = actions
-            self._search = result
-            self.phase = SEARCH_FOUND
-            self.stop_reason = "search target found"
+
+    def _found(self, block: BlockResult, result: SearchResult) -> None:
+        """The target block is pending; the channel shows "search target found"."""
+        result.found = True
+        self._take(block)
+        self.blocks_executed -= 1
+        self._search = result
+        self.phase = SEARCH_FOUND
+        self.stop_reason = "search target found"
 
     @staticmethod
     def _is_target(block: BlockResult, number: int | None, text: str) -> bool:
@@ -493,12 +544,18 @@ class ProgramRun:
         self.stop_reason = "10208"
         return events
 
-    def search_approach(self) -> Motion | None:
-        """Second NC START: the approach to the start of the target block (None if none)."""
+    def search_approach(self, actual_mcs: Mapping[str, float], tolerance: CircleTolerance) -> Motion | None:
+        """Second NC START: the approach to the start of the target block (type 2), or None:
+        type 4 starts the target block itself from ``actual_mcs`` (a circle there may fail
+        with 14040 when it is output), type 1 approaches nothing."""
         search = self._search
         self._search = None
         self.phase = FEEDING
         self.stop_reason = ""
+        block = self._pending
+        if search is not None and search.search_type == END_POINT and block is not None:
+            self._end_point = EndPointStart(block.source, block.text, dict(actual_mcs), tolerance)
+            return None
         if search is None or not search.position_mcs:
             return None
         source = self._pending.source if self._pending is not None else None

@@ -68,6 +68,10 @@ class Interpreter(Protocol):
     def reset(self) -> None:
         """Abort the program and restore the reset state of every G group and modal value."""
 
+    def skip_to(self, number: int | None, text: str) -> bool:
+        """Place the main program before block ``number`` (or the first block containing
+        ``text``) without interpreting anything before it; False if there is none."""
+
     @property
     def finished(self) -> bool:
         """True when the program has ended or none is loaded."""

@@ -278,6 +278,26 @@ class Interpreter:
             self.flags["search"] = False
         return SearchResult(False, blocks, tuple(collected), dict(self._state.modal.position_wcs))
 
+    def skip_to(self, number: int | None, text: str) -> bool:
+        """Block search without calculation: place the main program before its first block
+        numbered ``number`` (or, with ``number`` None, the first block whose text contains
+        ``text``) without interpreting a block before it, so the modal state stays what it
+        was (002 L18284-18288). False (nothing changed) when no such block exists."""
+        if self._state.finished or not self._state.frames:
+            return False
+        main = self._state.frames[0]
+        program = main.program
+        if number is not None:
+            index = program.find_number(number, -1, "F")
+        else:
+            index = program.find_text(text)
+        if index is None:
+            return False
+        del self._state.frames[1:]
+        main.pc = index
+        self._skip_run = None
+        return True
+
     def plain_batch(self, max_blocks: int) -> Any:
         """The next run of plain blocks planned as one batch (:mod:`nck.interp.plain_run`), or None.
 

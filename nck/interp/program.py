@@ -124,6 +124,16 @@ class Program:
             return _search(self._numbered().get(number, ()), start, direction)
         return _search(self.numbers.get(number, ()), start, direction)
 
+    def find_text(self, text: str) -> int | None:
+        """Index of the first line whose text contains ``text`` (any case), or None."""
+        lines = self.lines
+        wanted = text.upper()
+        for index in range(len(lines)):
+            raw = lines.raw(index) if isinstance(lines, TextLines) else lines[index].text
+            if wanted in raw.upper():
+                return index
+        return None
+
     def _numbered(self) -> dict[int, list[int]]:
         """Block number → line indices of a scanned program (built on the first jump to a number)."""
         cache = self.__dict__.get("_numbers_all")

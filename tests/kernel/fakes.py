@@ -73,6 +73,13 @@ class FakeInterpreter:
         self._lines = []
         self._reset_modal()
 
+    def skip_to(self, number: int | None, text: str) -> bool:
+        for index, line in enumerate(self._lines):
+            if re.match(rf"N{number}(?!\d)", line.strip()) if number is not None else text in line:
+                self._index = index
+                return True
+        return False
+
     def set_skip_levels(self, levels: frozenset[int]) -> None:
         self.skip_levels = frozenset(levels)
 
