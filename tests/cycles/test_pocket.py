@@ -158,3 +158,22 @@ def test_helical_insertion_alarms(body: str, alarm: int) -> None:
     case = run_with_tool(body)
     assert case.alarms == [alarm]
     assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
+
+
+def test_pocket4_premachined_blank_leaves_out_the_inner_circles() -> None:
+    """_AP1 9 (blank radius), _AD 3 (its depth below RFP): the level -2.9 lies inside the
+    blank's depth, so the circle of radius 4 (tool reaching 4 + 5 = 9, not beyond the blank)
+    is left out; 8, 12, 14.5 remain. The level -5.8 is below the blank: all four circles."""
+    case = run_with_tool("POCKET4(10, 0, 2, -6, 20, 50, 40, 3, 0.5, 0.2, 300, 80, 0, 1, 4, 9, 3)")
+    radii = [(round(p[1] - 50, 3), p[3]) for p in tool_path(case.ended()) if p[0] == "G3"]
+    assert radii == [(8, -2.9), (12, -2.9), (14.5, -2.9), (4, -5.8), (8, -5.8), (12, -5.8), (14.5, -5.8)]
+
+
+def test_pocket3_premachined_blank_leaves_out_what_it_covers() -> None:
+    """The roughing test's pocket with a pre-machined pocket 50 x 30, 4 deep (the whole level
+    -4): the centre line (reaching 10 + 5 = 15 ≤ 25 along, 5 ≤ 15 across) and the inner
+    rectangle (17.5 + 5 = 22.5 ≤ 25, 7.5 + 5 = 12.5 ≤ 15) are left out; the tool goes from
+    the centre straight to the final rectangle."""
+    got = tool_path(run_with_tool("POCKET3(10, 0, 2, -4, 60, 40, 10, 50, 40, 0, 0, 0, 0, 300, 80, 0, 1, 8, 50, 30, 4)").ended())
+    assert got == [("G0", 0, 0, 10), ("G0", 50, 40, 10), ("G0", 50, 40, 2), ("G1", 50, 40, -4), ("G1", 75, 40, -4),
+                   *_rounded_rectangle_ccw(50, 40, 25, 15, 5, -4), ("G1", 50, 40, -4), ("G0", 50, 40, 10)]
