@@ -16,6 +16,7 @@ from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from hmi.dialog import AreaDialog
+from hmi.focus import focus_now
 
 
 class ChoiceDialog(AreaDialog[str | None]):
@@ -50,7 +51,7 @@ class ChoiceDialog(AreaDialog[str | None]):
                 lst.highlighted = self._choices.index(self._selected)
             else:
                 lst.highlighted = 0
-            lst.focus()
+            focus_now(lst)
 
     def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
         """Enter on an entry: return it."""
@@ -93,7 +94,7 @@ class ValueDialog(AreaDialog[str | None]):
         """The field has the focus; no blinking cursor (stable screenshots)."""
         field = self.query_one(Input)
         field.cursor_blink = False
-        field.focus()
+        focus_now(field)
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         """Enter: return the text."""

@@ -10,6 +10,7 @@ from textual.containers import VerticalScroll
 from textual.widgets import Static
 
 from hmi.dialog import AreaDialog
+from hmi.focus import focus_now
 from hmi.keymap import Keymap
 from hmi.softkeys import SoftkeyMenu
 
@@ -54,7 +55,7 @@ class HelpScreen(AreaDialog[None]):
 
     def on_mount(self) -> None:
         """Focus the list so the arrow keys and PgUp/PgDn scroll it."""
-        self.query_one("#help-box").focus()
+        focus_now(self.query_one("#help-box"))
 
     def action_dismiss_help(self) -> None:
         """Close the overlay."""

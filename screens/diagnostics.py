@@ -29,6 +29,7 @@ from nck.trace import TraceError
 
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog
+from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -197,7 +198,7 @@ class DiagnosticsScreen(AreaBase):
 
     def action_focus_filter(self) -> None:
         """Put the cursor into the log filter field."""
-        self.query_one("#log-filter", Input).focus()
+        focus_now(self.query_one("#log-filter", Input))
 
     def action_clear_filter(self) -> None:
         """Show every log entry again."""

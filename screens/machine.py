@@ -22,6 +22,7 @@ from nck.number_text import fixed, trimmed
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
+from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.blocks import BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
@@ -369,11 +370,11 @@ class MachineScreen(AreaBase):
         if view_id == "view-mda":
             editor = self.query_one("#mda-editor", TextArea)
             if focused is not editor:
-                editor.focus()
+                focus_now(editor)
         elif view_id == "view-search":
             field = self.query_one("#search-input", Input)
             if focused is not field:
-                field.focus()
+                focus_now(field)
         elif self.view in JOG_WINDOWS:
             pass  # the window puts the focus into its fields (JogWindows.show)
         elif focused is not None:

@@ -35,6 +35,7 @@ from nck.commands import Rejected
 from nck.status import NckStatus
 
 from hmi.area import AreaBase
+from hmi.focus import focus_now
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.program_files import ProgramFiles, decode_program
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -253,7 +254,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
             self.say(f"{self.program} is not a UTF-8 text file: opened read-only")
         self._update_title()
         self.refresh_softkeys()
-        editor.focus()
+        focus_now(editor)
         if not binary:
             self.check_now()
             entry = self.journal.entry(self.program) if offer_journal else None

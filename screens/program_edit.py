@@ -14,6 +14,7 @@ from typing import Any
 from textual.widgets import Input
 from textual.widgets.text_area import Selection
 
+from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import find_text, renumber_blocks
 
@@ -56,12 +57,12 @@ class EditActions:
     def action_cursor_start(self) -> None:
         """Cursor to the start of the program."""
         self.editor.move_cursor((0, 0), center=True)
-        self.editor.focus()
+        focus_now(self.editor)
 
     def action_cursor_end(self) -> None:
         """Cursor to the end of the program."""
         self.editor.move_cursor(self.editor.document.end, center=True)
-        self.editor.focus()
+        focus_now(self.editor)
 
     def action_mark(self) -> None:
         """Mark: start (or end) marking a block from the cursor."""
@@ -72,7 +73,7 @@ class EditActions:
             self._mark_anchor = None
             self.editor.selection = Selection.cursor(self.editor.cursor_location)
             self.say("")
-        self.editor.focus()
+        focus_now(self.editor)
 
     def _selected_text(self) -> str:
         return self.editor.selected_text
@@ -109,7 +110,7 @@ class EditActions:
 
     def _end_mark(self) -> None:
         self._mark_anchor = None
-        self.editor.focus()
+        focus_now(self.editor)
         self.refresh_softkeys()
 
     def action_undo(self) -> None:
@@ -141,14 +142,14 @@ class EditActions:
         self.search_open = True
         self._show_view()
         self.push_softkeys(self._search_menu())
-        self.query_one("#prog-find", Input).focus()
+        focus_now(self.query_one("#prog-find", Input))
 
     def action_close_search(self) -> None:
         """Close the search bar."""
         self.search_open = False
         self._show_view()
         self.pop_softkeys()
-        self.editor.focus()
+        focus_now(self.editor)
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         """Enter in the search field finds the next occurrence."""

@@ -32,6 +32,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
+from hmi.focus import focus_now
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
 from nck.storage import ProgramEntry
@@ -83,7 +84,7 @@ class PromptDialog(AreaDialog[str | None]):
 
     def on_mount(self) -> None:
         """Focus the field."""
-        self.query_one(Input).focus()
+        focus_now(self.query_one(Input))
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         """Enter: return the text."""
@@ -178,7 +179,7 @@ class ProgramManagerScreen(AreaBase):
         table.add_column("Date", key="date", width=16)
         self.rebuild_tree()
         self.show_directory("MPF")
-        table.focus()
+        focus_now(table)
         self._hint_unsaved_journal()
 
     def _hint_unsaved_journal(self) -> None:
@@ -262,7 +263,7 @@ class ProgramManagerScreen(AreaBase):
         path = event.node.data
         if path and path != "/" and path != "NC":
             self.show_directory(path)
-            self.table.focus()
+            focus_now(self.table)
 
     def show_directory(self, directory: str) -> None:
         """List ``directory`` in the right window."""
@@ -272,7 +273,7 @@ class ProgramManagerScreen(AreaBase):
     def action_show_directory(self, directory: str) -> None:
         """Directory softkeys."""
         self.show_directory(directory)
-        self.table.focus()
+        focus_now(self.table)
 
     def action_refresh_listing(self) -> None:
         """Refresh softkey."""
@@ -499,7 +500,7 @@ class ProgramManagerScreen(AreaBase):
                 if needle in entry.name.upper() and entry.kind != "WPD":
                     self.directory = folder
                     self.refresh_listing(select=entry.path)
-                    self.table.focus()
+                    focus_now(self.table)
                     self.say(f"Found {entry.path}")
                     return True
         self.say(f"No program name contains '{text}'")

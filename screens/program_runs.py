@@ -24,6 +24,7 @@ from textual.worker import get_current_worker
 
 from nck.queries import CheckSetting
 
+from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import ErrorMark
 from hmi.widgets.stock_view import StockPicture
@@ -205,7 +206,7 @@ class CheckAndSimulation:
             self.say("No errors found")
             return
         self.editor.move_cursor((line, 0), center=True)
-        self.editor.focus()
+        focus_now(self.editor)
         self._show_cursor_message()
 
     # -- simulation ----------------------------------------------------------------------------
@@ -218,9 +219,9 @@ class CheckAndSimulation:
         if self.simulating:
             self._mark_current_block(self.status)
             self.action_simulate_run()
-            (self.stock if self.sim_material else self.toolpath).focus()
+            focus_now(self.stock if self.sim_material else self.toolpath)
         else:
-            self.editor.focus()
+            focus_now(self.editor)
 
     def action_simulate_run(self) -> None:
         """Interpret the text headless and draw its toolpath."""
@@ -289,7 +290,7 @@ class CheckAndSimulation:
         """Material: the blank being cut (on) or the toolpath alone (off)."""
         self.sim_material = not self.sim_material
         self._show_view()
-        (self.stock if self.sim_material else self.toolpath).focus()
+        focus_now(self.stock if self.sim_material else self.toolpath)
         self.refresh_softkeys()
 
     @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)

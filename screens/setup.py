@@ -27,6 +27,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
+from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow,
@@ -176,7 +177,7 @@ class SetupScreen(AreaBase):
 
     def action_focus_search(self) -> None:
         """Put the cursor into the search field."""
-        self.query_one("#md-search", Input).focus()
+        focus_now(self.query_one("#md-search", Input))
 
     def action_clear_search(self) -> None:
         """Show every datum of the list again."""

@@ -214,3 +214,17 @@ async def test_cursor_keys_in_a_burst_apply_in_order_in_the_program_editor(tmp_p
         await post_burst(app, pilot, [*"G12", "backspace", "backspace", "3", "left", "left",
                                       "delete", "N"])
         assert find.value == "N3"
+
+
+async def test_text_typed_right_behind_the_mode_key_goes_into_mda(fake: FakeNck,
+                                                                  fake_app: HmiApp) -> None:
+    """Issue 18 repro as one burst from JOG: Alt+D, Shift+F1, ``G4 F1``. The MDA editor took
+    the focus only after the keys already queued (Textual's ``focus()`` waits its turn at the
+    app), so the text went nowhere (found in tmux: the MDA stayed empty)."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await post_burst(fake_app, pilot, ["alt+d", "shift+f1", *"G4 F1"])
+        assert fake.mda_text == "G4 F1"
+        await post_burst(fake_app, pilot, ["alt+j", "alt+d", "shift+f1", *"X1"])
+        assert fake.mda_text == "X1"
+        await feed_terminal(fake_app, pilot, "\x1bj" + ALT_D + SHIFT_F1 + "G4 F2" + ALT_G + ALT_G)
+        assert fake.mda_text == "G4 F2"
