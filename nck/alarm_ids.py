@@ -55,3 +55,9 @@ CHAMFER_OR_ROUNDING_NEGATIVE = 16500
 
 DATA_WRITE_PROTECTED = 17070
 """Data item %3 is write-protected."""
+
+WRONG_CALL_ARGUMENTS = 14020
+"""Wrong value or wrong number of parameters in a function or procedure call."""
+
+STOCK_REMOVAL_CONTOUR_ERROR = 10931
+"""Error in the stock removal contour (a turning cycle's contour subprogram)."""

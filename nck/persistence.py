@@ -92,6 +92,7 @@ ARCHIVE_LIMIT_BYTES = 256 * 1024 * 1024
 """Largest archive imported (all programs and data of a data directory)."""
 """Largest integer magnitude in a retained file (the control's data are at most 64 bit)."""
 SAMPLE_TOOLS = "sample_tools.toml"  # the tools of the training programs (data/)
+SAMPLE_TOOLS_BY_KIND = {"lathe": "sample_tools_lathe.toml"}  # machines of another kind than the mill
 PRIVATE_SECTIONS = frozenset({"access"})  # password hashes: readable by the owner only
 
 
@@ -556,10 +557,10 @@ class Session:
             alarms += found
             if any(a.number == ALARM_DEFAULTS_LOADED for a in found):
                 damaged.append(name)
-        if samples_installed and fresh_tools:  # the training programs come with their tools
-            rd.ncdata.tools = {key: ToolEdge(params=dict(params))
-                               for key, params in read_tool_table(data_path(SAMPLE_TOOLS)).items()}
         machine = machine or load_machine()
+        if samples_installed and fresh_tools:  # the training programs come with their tools
+            table = data_path(SAMPLE_TOOLS_BY_KIND.get(machine.kind, SAMPLE_TOOLS))
+            rd.ncdata.tools = {key: ToolEdge(params=dict(params)) for key, params in read_tool_table(table).items()}
         if fresh_setup:  # a new data directory: the default blank of the machine kind is clamped
             rd.ncdata.machine_setup = default_machine_setup(machine.kind)
         if not rd.access.password_hashes:  # fresh, or the access file was lost

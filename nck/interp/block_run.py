@@ -16,7 +16,9 @@ from typing import TYPE_CHECKING, Any
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
+from nck.alarm_ids import PROGRAM_NOT_FOUND, STOCK_REMOVAL_CONTOUR_ERROR, WRONG_CALL_ARGUMENTS
 from nck.interp import sysvars
+from nck.interp.contour_table import ROW_WIDTH, contour_rows
 from nck.interp.evaluator import equal, evaluate
 from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, journal_cell, write_binding
 from nck.interp.motion_builder import BlockWords
@@ -653,6 +655,30 @@ class BlockRun:
             self.frame.single_block_off = name == "SBLOF"
         elif name in ("DISPLOF", "DISPLON"):
             self.frame.display_off = name == "DISPLOF"
+        elif name == "CONTOURTAB":
+            self._contour_table(stmt.args)
+
+    def _contour_table(self, args: tuple[ast.Expr | None, ...]) -> None:
+        """``CONTOURTAB(NAME, TAB, NN)``: the contour subprogram NAME read into the REAL
+        array TAB[n, 7], NN its number of rows (nck.interp.contour_table)."""
+        if len(args) != 3 or args[0] is None or not all(isinstance(a, ast.Name) for a in args[1:]):
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, "CONTOURTAB")
+        interp = self.interp
+        name = to_string(self.eval(args[0])).strip().upper()
+        table, count = (interp.lookup(a.name) for a in args[1:])  # type: ignore[union-attr]
+        if not isinstance(table, Cell) or len(table.dims) != 2 or table.dims[1] != ROW_WIDTH or count is None:
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, "CONTOURTAB")
+        found = interp.programs.read_program(name) if name else None
+        if found is None:
+            raise NcAlarmError(PROGRAM_NOT_FOUND, name or "CONTOURTAB")
+        diameter = interp.modal.gcodes.get(29) in ("DIAMON", "DIAM90")
+        rows = contour_rows(found[1], name, lambda expr: to_number(self.eval(expr), name), diameter)
+        if not rows or len(rows) > table.dims[0]:  # no element, or more than the table holds
+            raise NcAlarmError(STOCK_REMOVAL_CONTOUR_ERROR, name)
+        for row_index, row in enumerate(rows):
+            for column, value in enumerate(row):
+                write_binding(interp, table, (row_index, column), value)
+        write_binding(interp, count, (), len(rows))
 
 
 def _whole(number: Any, address: str) -> int:

@@ -99,7 +99,7 @@ class BlockParser(DeclarationParser):
             self.advance()
             stmts.append(ast.ModalCall(self._modal_call_target()))
             return
-        if name in ("MSG", "SETAL"):
+        if name in ("MSG", "SETAL", "CONTOURTAB"):
             self.advance()
             if not self.is_op("("):
                 raise syntax_error(self.tok)
