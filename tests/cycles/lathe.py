@@ -16,7 +16,7 @@ PROLOGUE = "G18 G90 DIAMON G95 S1000 M4 F0.2\nG0 X70 Z5\n"
 
 class Turned(Cycled):
     """Steps as ("G0", x_diameter, z), ("G1", x, z, feed_mm_min), ("G2"/"G3", x, z, feed),
-    ("DWELL", s), ("G33", x, z, lead); the prologue is left out."""
+    ("DWELL", s), ("G33", x, z, lead, start angle); the prologue is left out."""
 
     def steps(self) -> list[tuple]:  # type: ignore[override]
         out: list[tuple] = []
@@ -28,7 +28,7 @@ class Turned(Cycled):
                 if command.kind == "G0":
                     out.append(("G0", x, z))
                 elif command.lead_mm is not None:
-                    out.append((command.kind, x, z, round(command.lead_mm, 4)))
+                    out.append((command.kind, x, z, round(command.lead_mm, 4), command.thread_start_deg))
                 else:
                     out.append((command.kind, x, z, round(command.feed_mm_min or 0.0, 4)))
             elif isinstance(command, canon.Dwell) and command.seconds:
