@@ -7,7 +7,7 @@ from nck import canon
 from nck.headless import interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
-from nck.ncdata import NcData
+from nck.ncdata import NcData, ToolEdge
 from tests.cycles.helpers import Cycled
 
 # 1000 rpm at a constant speed, feeds per revolution: F0.3 is 300 mm/min
@@ -36,10 +36,14 @@ class Turned(Cycled):
         return out
 
 
-def run_lathe(body: str, files: dict[str, str] | None = None, prologue: str = PROLOGUE) -> Turned:
-    """Run ``prologue + body + M30`` on the lathe with the subprograms ``files``."""
+def run_lathe(body: str, files: dict[str, str] | None = None, prologue: str = PROLOGUE,
+              tools: dict[tuple[int, int], dict[int, float]] | None = None) -> Turned:
+    """Run ``prologue + body + M30`` on the lathe with the subprograms ``files`` and the tool
+    edges ``tools`` ({(t, d): {$TC_DP number: value}})."""
     text = prologue + body.strip() + "\nM30\n"
     programs = {"main.mpf": text, **(files or {})}
-    result = interpret_only(load_machine("lathe2"), MemorySource(programs), NcData(), "main.mpf",
+    data = NcData()
+    data.tools = {key: ToolEdge(params=dict(params)) for key, params in (tools or {}).items()}
+    result = interpret_only(load_machine("lathe2"), MemorySource(programs), data, "main.mpf",
                             text=text, max_blocks=50_000)
     return Turned(result)
