@@ -215,11 +215,18 @@ class _ExecutedCommands:
         self.pending: list[canon.CanonCommand] = []
 
     def interpreted(self, commands: Any, executing: canon.Source | None) -> None:
-        """New commands of the interpreter; those before the ``executing`` block are done."""
+        """New commands of the interpreter; those before the ``executing`` block are done.
+
+        ``executing`` None: the machine is idle, so every block before this one has run
+        (a loop of messages or dwells must not pile its commands up until the run ends).
+        """
         if not self.keep and self.on_command is None:
             return
+        if executing is None:
+            self._release(self.pending)
+            self.pending.clear()
         self.pending.extend(commands)
-        index = self._index_of(executing)
+        index = self._index_of(executing, (canon.Motion, canon.Dwell))
         if index:
             self._release(self.pending[:index])
             del self.pending[:index]
@@ -242,12 +249,13 @@ class _ExecutedCommands:
                     end_wcs={a: position_wcs.get(a, v) for a, v in stopped.end_wcs.items()})])
         self.pending.clear()
 
-    def _index_of(self, source: canon.Source | None) -> int | None:
-        """Index of the first pending motion of block ``source`` (None: not pending)."""
+    def _index_of(self, source: canon.Source | None,
+                  kinds: tuple[type, ...] = (canon.Motion,)) -> int | None:
+        """Index of the first pending command of ``kinds`` of block ``source`` (None: not pending)."""
         if source is None:
             return None
         for index, command in enumerate(self.pending):
-            if isinstance(command, canon.Motion) and command.source is source:
+            if isinstance(command, kinds) and command.source is source:
                 return index
         return None
 

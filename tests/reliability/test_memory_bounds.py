@@ -93,3 +93,26 @@ def test_the_editor_check_of_the_hostile_program_stays_small() -> None:
     found, peak = _peak(lambda: check_text("HOSTILE.MPF", text))
     assert [a.number for a in found] == [14099]
     assert peak < PEAK_BYTES
+
+
+@pytest.mark.parametrize("loop", [
+    'LBL: MSG("A"<<R1)\nR1=R1+1\nGOTOB LBL\nM30\n',  # no motion at all: the machine is idle
+    'LBL: G4 F0.001\nMSG("A"<<R1)\nR1=R1+1\nGOTOB LBL\nM30\n',  # a dwell executes, no path motion
+    'G91 G1 F1000\nLBL: X0.001\nMSG("A"<<R1)\nR1=R1+1\nGOTOB LBL\nM30\n',
+])
+def test_a_run_hands_commands_on_as_they_execute_and_holds_none_back(loop: str) -> None:
+    """``nck run`` hands every command on (``on_command``: --segments) once the machine has
+    executed it; what the interpreter ran ahead is held back, never more than the look-ahead.
+    Found in the attack pass: a loop of messages or dwells held every command until the run
+    ended (nck run: +0.8 MB per simulated second, 168 MB after two minutes)."""
+    data = NcData()
+    lags: list[int] = []
+
+    def on_command(command) -> None:
+        if type(command).__name__ == "Message":  # "A<R1 when interpreted>"; R1 counts on
+            lags.append(int(data.r[1]) - int(command.text[1:]))
+
+    run = run_program(load_machine(), MemorySource({}), data, "P.MPF", text=loop, timeout_s=1.0,
+                      keep_commands=False, on_command=on_command)
+    assert run.status == "timeout" and data.r[1] > 150 and len(lags) > 100
+    assert max(lags) <= 100, max(lags)  # the look-ahead: 64 passes of the motion loop, 1 without motion
