@@ -36,6 +36,12 @@ from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
 SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times")
 PROGRAM_SELECTION_LEVEL = 6
+SEARCH_MODES = {
+    "contour": "with calculation, contour",
+    "end_point": "with calculation, end point",
+    "without_calculation": "without calculation",
+}
+"""The block search types the search view offers (002 L18283-18302; :mod:`nck.block_search`)."""
 """Program selection needs keyswitch position 1 (access level 6) or better."""
 
 
@@ -63,6 +69,8 @@ class MachineScreen(AreaBase):
         # MD9424 only chooses which workpiece system (WCS or SZS) the softkey switches to.
         self.show_mcs = True
         self.view: str | None = None
+        self.search_type = "contour"
+        """The block search type chosen on the search view (a key of SEARCH_MODES)."""
         self._shown_mode: str | None = None
         self._mda_loaded = False
         self.jog = JogWindows(self)
@@ -94,9 +102,10 @@ class MachineScreen(AreaBase):
                 yield Static(" Program control", classes="view-title", markup=False)
                 yield Static("", id="progctl-table", markup=False)
             with Vertical(id="view-search", classes="view"):
-                yield Static(" Block search with calculation", classes="view-title", markup=False)
+                yield Static("", id="search-title", classes="view-title", markup=False)
                 yield Static(" Search target: a block number (N70) or text in the block; "
-                             "Enter or ⇧F1 starts the search.", markup=False)
+                             "Enter or ⇧F1 starts the search, ⇧F2-⇧F4 choose the search mode.",
+                             markup=False)
                 yield Input(placeholder="N…", id="search-input")
                 yield Static("", id="search-info", markup=False)
             with Vertical(id="view-times", classes="view"):
@@ -126,7 +135,7 @@ class MachineScreen(AreaBase):
             view_softkey("machine.progctl", "Program\ncontrol", "progctl",
                          enabled=lambda s: s._mode() in ("AUTO", "MDA")),
             view_softkey("machine.search", "Block\nsearch", "search",
-                         enabled=lambda s: s._mode() == "AUTO" and s._reset_state()
+                         enabled=lambda s: s._mode() == "AUTO" and s._search_allowed()
                          and bool(s.status.channel.selected_program)),
             view_softkey("machine.times", "Times/\nCounter", "times"),
             Softkey("machine.select", "Select\nprogram", "select_program",
@@ -154,8 +163,13 @@ class MachineScreen(AreaBase):
                 Softkey("progctl.skip", "Skip\nlevels …", "choose_skip_level"),
             ]
         if view == "search":
-            return [Softkey("search.start", "Start\nsearch", "start_search",
-                            enabled=lambda s: s._reset_state())]
+            return [
+                Softkey("search.start", "Start\nsearch", "start_search",
+                        enabled=lambda s: s._search_allowed()),
+                self._search_mode_key("search.contour", "Contour", "contour"),
+                self._search_mode_key("search.end_point", "End\npoint", "end_point"),
+                self._search_mode_key("search.without", "Without\ncalculation", "without_calculation"),
+            ]
         if view == "times":
             return [
                 Softkey("times.reset_parts", "Reset\npart count", "set_counter('$AC_ACTUAL_PARTS', 0)"),
@@ -171,6 +185,17 @@ class MachineScreen(AreaBase):
         if view == "view-jog" or view in JOG_WINDOWS:
             return self.jog.vertical_softkeys(self.view)
         return []
+
+    def _search_allowed(self) -> bool:
+        """A block search may start in RESET, and again from "search target found" (cascaded
+        search, 002 L18329-18332)."""
+        return self._reset_state() or (
+            self.status is not None and self.status.channel.stop_reason == "search target found")
+
+    @staticmethod
+    def _search_mode_key(key_id: str, label: str, search_type: str) -> Softkey:
+        return Softkey(key_id, label, f"choose_search_type('{search_type}')",
+                       active=lambda s: s.search_type == search_type)
 
     # -- softkey actions ------------------------------------------------------------------
     def action_toggle_mcs(self) -> None:
@@ -252,13 +277,18 @@ class MachineScreen(AreaBase):
             ChoiceDialog("Select program", names, selected, empty_text="no part programs"), select
         )
 
+    def action_choose_search_type(self, search_type: str) -> None:
+        """A search mode softkey: the type the next search uses."""
+        self.search_type = search_type
+        self._redraw()
+
     def action_start_search(self) -> None:
-        """Start the block search to the target typed in the search field."""
+        """Start the block search of the chosen type to the target typed in the search field."""
         target = self.query_one("#search-input", Input).value.strip()
         if not target:
             self.show_hint("Enter a block number or text to search for")
             return
-        if isinstance(self.submit(cmd.StartBlockSearch(target)), Accepted):
+        if isinstance(self.submit(cmd.StartBlockSearch(target, self.search_type)), Accepted):
             self.view = None
             self._redraw()
 
@@ -361,6 +391,8 @@ class MachineScreen(AreaBase):
         elif self.view in JOG_WINDOWS:
             self.jog.show(self.view, status)
         elif view_id == "view-search":
+            show_text(self.query_one("#search-title", Static),
+                      f" Block search {SEARCH_MODES[self.search_type]}")
             show_text(self.query_one("#search-info", Static), 
                 f" Program: {channel.selected_program or '—'}   {channel.stop_reason}")
         self.refresh_softkeys()

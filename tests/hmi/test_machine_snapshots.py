@@ -114,6 +114,12 @@ def test_block_search(snap_compare) -> None:
                         press=["alt+q", "f5", "N", "7", "0"])
 
 
+def test_block_search_end_point(snap_compare) -> None:
+    """Block search view with the search mode "End point" chosen (⇧F3) and a target typed."""
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE,
+                        press=["alt+q", "f5", "shift+f3", "N", "7", "0"])
+
+
 def test_times_counter(snap_compare) -> None:
     """Times/Counter: program runtime and part count."""
     fake = auto_fake()
