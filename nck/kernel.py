@@ -510,6 +510,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
                 interp.reset()
             except NcAlarmError as error:
                 self._raise(error)
+        if self._run is not None:
+            self._share_kept_gcodes(self._run.interp)
         self._run = None
         self._overlay = None
         self._owner = None
@@ -760,6 +762,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             run.interp.reset()
         except NcAlarmError as error:
             self._raise(error)
+        self._share_kept_gcodes(run.interp)
         if run.kind == "AUTO":
             self.counters.on_program_end(bool(self._pc["program_test"]))
             self.runtime.program_end()
@@ -894,6 +897,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             if hasattr(interp, "access_level"):  # setting-data writes of part programs
                 interp.access_level = self._access_level  # type: ignore[attr-defined]
             self._apply_skip_levels(interp)
+            self._take_kept_gcodes(interp)
             self._interpreters[kind] = interp
         return interp
 

@@ -23,6 +23,7 @@ from nck import commands as cmd
 from nck.access import AccessError, Action
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.geometry.preset import TARGET_SETFRAME, TARGET_SETTABLE, translation_change, wcs_of_point
+from nck.interp.modal import kept_groups
 from nck.ncdata import SETTABLE_FRAME_NAMES, WorkOffset
 from nck.workpiece import MachineSetup
 
@@ -131,6 +132,34 @@ class JobSetup:
             path = getattr(getattr(interp, "builder", None), "path", None)
             if path is not None:
                 path.activate_stored_frames(interp.modal, positions)
+
+    # ------------------------------------------------------------ G groups kept at RESET
+    def _share_kept_gcodes(self, ended: Any) -> None:
+        """A program ended or was reset in interpreter ``ended``: the G groups of MD20152 = 1
+        (e.g. the work offset chosen in T,S,M) hold for the channel, so every interpreter
+        (MDA, AUTO, the JOG display's) takes them over; one whose codes change loads its
+        frames at once."""
+        modal = getattr(ended, "modal", None)  # an interpreter without G codes keeps none
+        if modal is None:
+            return
+        keeps = kept_groups(self.machine)
+        codes = {group: code for group, code in modal.gcodes.items() if group in keeps}
+        self._kept_gcodes = codes
+        positions = self._path_positions(self.motion)  # type: ignore[attr-defined]
+        for interp in self._interpreters.values():
+            other = getattr(interp, "modal", None)
+            if interp is ended or other is None or all(other.gcodes.get(g) == c for g, c in codes.items()):
+                continue  # nothing changes there: its frames stay as they are (MD24006 …)
+            self._take_kept_gcodes(interp)
+            path = getattr(getattr(interp, "builder", None), "path", None)
+            if path is not None:
+                path.activate_stored_frames(interp.modal, positions)
+
+    def _take_kept_gcodes(self, interp: Any) -> None:
+        """Give ``interp`` the channel's kept G codes (none before a program has ended)."""
+        sync = getattr(interp, "sync_gcodes", None)
+        if sync is not None:
+            sync(getattr(self, "_kept_gcodes", {}))
 
     def _reset_system_frames(self) -> None:
         """RESET: MD24007 bit 0 deletes ``$P_SETFR`` in the data (002 L31398-31408)."""

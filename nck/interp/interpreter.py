@@ -474,6 +474,11 @@ class Interpreter:
         self._state.modal.spindle_state = state
         self._state.modal.spindle_speed_rpm = float(speed_rpm)
 
+    def sync_gcodes(self, codes: Mapping[int, str]) -> None:
+        """Take over G codes the channel keeps over RESET (MD20152 = 1): ``{group: code}``;
+        the frames follow when the kernel activates them."""
+        self._state.modal.gcodes.update(codes)
+
     def sync_tool(self, tool: int, edge: int, preselected: int) -> None:
         """Take over the tool in the spindle, its active edge and the preselected tool (MDA
         and AUTO have interpreters of their own; the machine has one spindle): before

@@ -85,16 +85,30 @@ class ModalState:
         return new
 
     def reset(self, machine: MachineConfig, table: GTable) -> None:
-        """RESET / program end: G groups to their reset members, F deleted.
+        """RESET / program end: G groups to their reset members (those of MD20152 = 1 keep
+        theirs), F deleted.
 
         Positions, the active tool/edge and the spindle are kept (they are
         physical states or are reset by the channel according to machine data).
         """
+        keeps = kept_groups(machine)
+        kept = {group: code for group, code in self.gcodes.items() if group in keeps}
         self.gcodes = table.reset_state(reset_overrides(machine, table), machine.kind)
+        self.gcodes.update(kept)
         self.feed = 0.0
         self.tool_selected = self.tool
         if self.geometry is not None:
             self.geometry.reset()  # programmable frame, pole, RNDM; settable frame re-read
+
+
+def kept_groups(machine: MachineConfig) -> frozenset[int]:
+    """The G groups that keep their current code at RESET and program end: MD20152
+    GCODE_RESET_MODE[group − 1] = 1 (0: back to the reset member of MD20150; 002 L2770-2782,
+    L21518-21530). An array given as one value holds for every group."""
+    values = machine.md.get("MD20152", 0)
+    if isinstance(values, list):
+        return frozenset(index + 1 for index, mode in enumerate(values) if mode == 1)
+    return frozenset(range(1, 61)) if values == 1 else frozenset()
 
 
 def reset_overrides(machine: MachineConfig, table: GTable) -> dict[int, str]:

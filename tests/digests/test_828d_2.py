@@ -13,6 +13,7 @@ import pytest
 from nck import commands as c
 from nck.interp.sources import MemorySource
 from nck.kernel import Nck
+from nck.machine import load_machine
 
 
 def make(programs: dict[str, str]) -> Nck:
@@ -86,8 +87,13 @@ def test_digest_828d_2_rank_20_frame_chain_g53_g500_and_rotation() -> None:
 def test_digest_828d_2_rank_22_reset_deletes_programmable_and_settable_frame() -> None:
     """Digest 828d-2 rank 22: at RESET the programmable frame is deleted and, with the default
     MD20110/MD20152, the settable frame returns to its reset value G500 (002 L24182,
-    L28350): after RESET the WCS equals the MCS."""
-    nck = make({"P.MPF": "N10 G54 TRANS X10\nN20 G0 X40\nN30 M0\nN40 M30"})
+    L28350): after RESET the WCS equals the MCS. The shipped mill keeps group 8 (MD20152[7] = 1,
+    for T,S,M of JOG): here the machine has the control's default 0."""
+    machine = load_machine("mill3")
+    machine.md["MD20152"] = 0
+    nck = Nck(machine=machine, programs=MemorySource({"P.MPF": "N10 G54 TRANS X10\nN20 G0 X40\nN30 M0\nN40 M30"}),
+              referenced=True)
+    assert nck.submit(c.WriteData("$P_UIFR[1,X,TR]", 100)) == c.Accepted()
     start(nck, "P.MPF")
     assert until_stop(nck).startswith("N30")
     assert (mcs(nck), wcs(nck)) == (pytest.approx(150.0), pytest.approx(40.0))

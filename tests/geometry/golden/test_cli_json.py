@@ -32,10 +32,10 @@ def test_json_final_state_and_segments(tmp_path: Path, capsys: pytest.CaptureFix
     state = json.loads(out.strip().splitlines()[-1])
     # G54 (100,50,0) + tool length 100 on Z: WCS (12,5,-1) is machine (112,55,99).
     assert state["position"]["mcs"] == pytest.approx({"X": 112.0, "Y": 55.0, "Z": 99.0})
-    # The program end resets group 8 to G500 (MD20150[7]); the WCS then follows from the
-    # machine position without the settable frame, tool length still active: (112, 55, -1).
-    assert state["gcodes"]["8"] == "G500"
-    assert state["position"]["wcs"] == pytest.approx({"X": 112.0, "Y": 55.0, "Z": -1.0})
+    # The program end keeps group 8 on the shipped mill (MD20152[7] = 1; the cli.md example shows
+    # "8": "G54" after the run): the WCS still reads through G54 (12, 5, -1).
+    assert state["gcodes"]["8"] == "G54"
+    assert state["position"]["wcs"] == pytest.approx({"X": 12.0, "Y": 5.0, "Z": -1.0})
     assert state["tool"] == {"T": 1, "D": 1}
     # The program runs out without M2/M30: no program end in the sense of MD35040 (002
     # L51017-51035), so the spindle keeps S and direction (nck.canon.SPINDLE_RESET_ENDS).

@@ -145,7 +145,9 @@ def test_jog_sync_and_reset_recompute_the_wcs_from_the_machine_position() -> Non
     from nck.machine import load_machine
 
     data = mill_data({"X": 100.0})
-    interp = Interpreter(load_machine("mill3"), MemorySource({}), data)
+    machine = load_machine("mill3")
+    machine.md["MD20152"] = 0  # the control's default: group 8 back to G500 (the shipped mill keeps it)
+    interp = Interpreter(machine, MemorySource({}), data)
     interp.start_text("A.MPF", "N10 G54 T1 M6 D1\nN20 G0 X5 Y0 Z0\n")
     while not interp.finished:
         interp.step()
