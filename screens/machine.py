@@ -217,6 +217,7 @@ class MachineScreen(AreaBase):
     def action_jog(self, what: str, *args: str) -> None:
         """A softkey of a setting-up window of JOG (:meth:`JogWindows.run`)."""
         self.jog.run(what, *args)
+        self._redraw()  # a window's preview shows what the softkey did (a point saved …)
 
     def menu_recall(self) -> bool:
         """F10: leave a softkey view first, then softkey levels."""

@@ -14,6 +14,12 @@ from dataclasses import dataclass
 SPINDLE_FUNCTIONS = ("—", "M3", "M4", "M5")
 """Spindle direction of the T,S,M window: unchanged, clockwise, counter-clockwise, stop."""
 
+UNCHANGED = "—"
+"""A choice field's value that leaves its function as it is."""
+
+UNITS = {UNCHANGED: "", "mm": "G71", "inch": "G70"}
+"""Unit of the T,S,M window and the G code that selects it (G group 13)."""
+
 _NUMBER = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)$")
 _TOOL_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
@@ -31,6 +37,8 @@ class TsmEntry:
     speed_rpm: str = ""
     spindle: str = "—"
     m_function: str = ""
+    work_offset: str = UNCHANGED
+    unit: str = UNCHANGED
 
 
 def _number(text: str, field: str) -> str:
@@ -58,12 +66,15 @@ def tool_word(text: str) -> str:
 
 
 def tsm_blocks(entry: TsmEntry) -> str:
-    """The blocks of the T,S,M window: tool change, spindle, M function.
+    """The blocks of the T,S,M window: work offset and unit, tool change, spindle, M function.
 
     An empty field or ``—`` leaves that function as it is. Raises :class:`EntryError`
     when nothing is asked for or a field cannot be used.
     """
     blocks: list[str] = []
+    modal = [code for code in (entry.work_offset, UNITS.get(entry.unit, "")) if code and code != UNCHANGED]
+    if modal:  # kept after the job: MD20152 of groups 8 and 13
+        blocks.append(" ".join(modal))
     if entry.tool.strip():
         words = [tool_word(entry.tool), "M6"]
         if entry.edge.strip():

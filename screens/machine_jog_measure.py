@@ -32,12 +32,21 @@ from nck.status import NckStatus
 
 from hmi.softkeys import Softkey
 from screens.machine_jog_form import FieldSpec, JogForm
+from screens.machine_jog_points import POINT_WINDOWS, PointWindows
+from screens.machine_jog_touch import touch_now
 
 if TYPE_CHECKING:
     from hmi.area import AreaBase
 
-MEASURE_WINDOWS = ("measwp", "meastool")
+WORKPIECE_WINDOWS = ("measwp", *POINT_WINDOWS)
+"""The views of Measure workpiece: edge / Z surface, corner, rotated corner, hole and spigot."""
+
+MEASURE_WINDOWS = (*WORKPIECE_WINDOWS, "meastool")
 """The views of the measuring windows."""
+
+WORKPIECE_FUNCTIONS = (("edge", "Edge /\nZ surface", "measwp"), ("corner", "Corner", "meascorner"),
+                       ("rotated", "Rotated\ncorner", "measrot"), ("circle", "Hole /\nspigot", "meascircle"))
+"""The vertical softkeys ⇧F1 … ⇧F4 of Measure workpiece: the measuring function (its window)."""
 
 APPROACHES = ("+", "−")
 """The direction the tool moved in when it touched (+: towards larger values)."""
@@ -85,6 +94,7 @@ class MeasureWindows:
 
     def __init__(self, screen: AreaBase) -> None:
         self.screen = screen
+        self.points = PointWindows(screen)
 
     def compose(self, axes: tuple[str, ...]) -> ComposeResult:
         """The two windows."""
@@ -102,11 +112,21 @@ class MeasureWindows:
             FieldSpec("target", "Write into", choices=TOOL_DATA),
         ), "Touch with the tool tip (length) or its side (radius)   ⇧F5 Set   F10 back",
             id="view-meastool")
+        yield from self.points.compose()
 
     def vertical_softkeys(self, view: str) -> list[Softkey | None]:
-        """⇧F5 writes what the window previews."""
-        if view == "measwp":
-            return [None] * 4 + [Softkey("measwp.set", "Set\nWO", "jog('measure_set')")]
+        """Measure workpiece: ⇧F1 … ⇧F4 the function, ⇧F5 Set WO, ⇧F6 save point, ⇧F7 delete
+        the points; Measure tool: ⇧F5 writes what the window previews."""
+        if view in WORKPIECE_WINDOWS:
+            def showing(wanted: str) -> Callable[[AreaBase], bool]:
+                return lambda screen: getattr(screen, "view", None) == wanted
+            with_points = lambda screen: getattr(screen, "view", None) in POINT_WINDOWS  # noqa: E731
+            return [*(Softkey(f"measwp.{name}", label, f"jog('measure_function', '{window}')",
+                              active=showing(window)) for name, label, window in WORKPIECE_FUNCTIONS),
+                    Softkey("measwp.set", "Set\nWO", "jog('measure_set')"),
+                    Softkey("measwp.save_point", "Save\npoint", "jog('measure_point')", enabled=with_points),
+                    Softkey("measwp.delete_points", "Delete\npoints", "jog('measure_delete')",
+                            enabled=with_points)]
         return [None] * 4 + [Softkey("meastool.set", "Set\nlength/radius", "jog('measure_set')")]
 
     # -- previews --------------------------------------------------------------------------
@@ -124,9 +144,12 @@ class MeasureWindows:
         if axis not in by_name:
             return f"{axis}: no such axis"
         modal = status.channel.modal
-        touch = by_name[axis].position_mcs
-        if axis == "Z":
-            edge = z_surface(touch, modal.tool_length_mm)
+        found = touch_now(self.screen.ask, status)
+        if isinstance(found, str):
+            return found
+        touch = found.position_mcs[axis]
+        if axis == "Z":  # a probe's length is to its ball's centre: the surface is a radius lower
+            edge = z_surface(touch, modal.tool_length_mm, modal.tool_radius_mm if found.probe else 0.0)
         else:
             approach = 1 if form.value("approach") == "+" else -1
             edge = edge_position(touch, approach, modal.tool_radius_mm)
@@ -170,6 +193,9 @@ class MeasureWindows:
 
     def show(self, view: str, status: NckStatus) -> None:
         """Redraw the preview of window ``view``."""
+        if view in POINT_WINDOWS:
+            self.points.show(view, status)
+            return
         form = self._form(view)
         preview = self.edge_preview(status) if view == "measwp" else self.length_preview(status)
         text = Text()
@@ -194,6 +220,9 @@ class MeasureWindows:
         """⇧F5: write the previewed value (Set WO / tool length)."""
         status = self.screen.status
         if status is None:
+            return
+        if view in POINT_WINDOWS:
+            self.points.set_wo(view, say)
             return
         if view == "measwp":
             preview = self.edge_preview(status)

@@ -13,9 +13,9 @@ softkeys and does what they ask, through the area's ``submit`` and ``ask`` only.
   G500 the system frame for PRESET and scratching ``$P_SETFR`` (002 L28667); "Delete
   active WO" is ``DeleteActiveWorkOffset``. Active at once: the WCS display and the
   work offset screens show it with the next snapshot.
-- T,S,M has no work offset and unit fields yet: the kernel sets the G groups to
-  their reset values when the job ends (MD20152 GCODE_RESET_MODE, 002 L2771, is
-  not modelled), so a G54 or G70 selected there would not stay.
+- T,S,M selects the work offset (G500, G54 …) and the unit (G71 mm / G70 inch) too: they
+  stay active after the job because the shipped machines keep G groups 8 and 13 at RESET
+  and program end (MD20152 GCODE_RESET_MODE = 1, 002 L2770-2782).
 - Settings: the JOG feed (SD41110) and the variable increment (SD41010) — setting
   data written with ``WriteData``. The retraction plane and safety distance of the
   panel's manual-mode settings are not there: no NC datum holds them yet and the
@@ -36,7 +36,7 @@ from nck.status import NckStatus
 from hmi.manual_job import ManualJob
 from hmi.softkeys import Softkey, view_softkey
 from screens.machine_jog_blocks import (
-    SPINDLE_FUNCTIONS, EntryError, TsmEntry, position_blocks, tsm_blocks,
+    SPINDLE_FUNCTIONS, UNCHANGED, UNITS, EntryError, TsmEntry, position_blocks, tsm_blocks,
 )
 from screens.machine_jog_form import FieldSpec, JogForm
 from screens.machine_jog_measure import MEASURE_WINDOWS, MeasureWindows
@@ -75,6 +75,12 @@ class JogWindows:
         """The path axes (not spindles), as the kernel reports them."""
         return tuple(a.name for a in self.screen.hmi.bridge.status.axes if a.kind != "spindle")
 
+    def _work_offsets(self) -> tuple[str, ...]:
+        """The settable work offsets the NC data holds (G54 … G57, G505 …)."""
+        data = self.screen.ask(ReadData()).data
+        frames = getattr(data, "settable_frames", None) or {}
+        return tuple(frames) or ("G54", "G55", "G56", "G57")
+
     def compose(self) -> ComposeResult:
         """The four windows (each a view of the Machine area's content switcher)."""
         yield JogForm("T, S, M — tool change, spindle, M function", (
@@ -83,6 +89,8 @@ class JogWindows:
             FieldSpec("speed", "Spindle S", "rev/min"),
             FieldSpec("spindle", "Spindle M function", choices=SPINDLE_FUNCTIONS),
             FieldSpec("m", "Other M function"),
+            FieldSpec("work_offset", "Work offset", choices=(UNCHANGED, "G500", *self._work_offsets())),
+            FieldSpec("unit", "Unit of measurement", choices=tuple(UNITS)),
         ), "↑/↓ field   ←/→ choice   CYCLE START (Alt+G) runs it   F10 back", id="view-tsm")
         yield JogForm("Set WO — actual value in the active work offset", tuple(
             FieldSpec(axis, f"{axis}  new actual value (WCS)", "mm") for axis in self.axes()
@@ -132,7 +140,8 @@ class JogWindows:
         actions: dict[str, Callable[..., None]] = {
             "set_zero": self._set_zero, "set_typed": self._set_typed,
             "delete_active": self._delete_active, "save_settings": self._save_settings,
-            "measure_set": self._measure_set,
+            "measure_set": self._measure_set, "measure_function": self._measure_function,
+            "measure_point": self._measure_point, "measure_delete": self._measure_delete,
         }
         action = actions.get(what)
         if action is not None:
@@ -223,7 +232,8 @@ class JogWindows:
         if view == "tsm":
             return tsm_blocks(TsmEntry(
                 tool=form.value("tool"), edge=form.value("edge"), speed_rpm=form.value("speed"),
-                spindle=form.value("spindle"), m_function=form.value("m")))
+                spindle=form.value("spindle"), m_function=form.value("m"),
+                work_offset=form.value("work_offset"), unit=form.value("unit")))
         return position_blocks(form.value("axis"), form.value("target"), form.value("feed"),
                                form.value("rapid") == "rapid")
 
@@ -267,6 +277,16 @@ class JogWindows:
         view = getattr(self.screen, "view", None)
         if view in MEASURE_WINDOWS:
             self.measure.set_value(view, self.screen.say)
+
+    def _measure_function(self, view: str) -> None:
+        if getattr(self.screen, "view", None) != view:
+            self.screen.action_show_view(view)
+
+    def _measure_point(self) -> None:
+        self.measure.points.save_point(getattr(self.screen, "view", ""), self.screen.say)
+
+    def _measure_delete(self) -> None:
+        self.measure.points.delete_points(getattr(self.screen, "view", ""))
 
     def _delete_active(self) -> None:
         self.screen.submit(cmd.DeleteActiveWorkOffset())

@@ -47,3 +47,22 @@ def test_measure_workpiece_window(snap_compare) -> None:
 def test_measure_tool_window(snap_compare) -> None:
     """Measure tool without a tool: the window says to load one."""
     assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE, press=["shift+f4"])
+
+
+def test_measure_corner_window(snap_compare) -> None:
+    """Measure workpiece, corner: X edge approached −, setpoints X0 100; no point saved yet."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f3", "shift+f2", "right", "down", "down", "ctrl+a", "ctrl+k", "1", "0", "0"])
+
+
+def test_measure_rotated_corner_window(snap_compare) -> None:
+    """Measure workpiece, rotated corner: the edge directions, one point saved (the cutter's
+    position of the fake: no probe)."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f3", "shift+f3", "right", "right", "shift+f6"])
+
+
+def test_measure_hole_window(snap_compare) -> None:
+    """Measure workpiece, hole / spigot: spigot chosen, no point saved yet."""
+    assert snap_compare(app_on_referenced_fake(), terminal_size=SIZE,
+                        press=["shift+f3", "shift+f4", "right"])

@@ -104,3 +104,28 @@ async def test_tsm_empty_window_says_so_and_stays_in_jog() -> None:
         await pilot.pause()
         assert app.bridge.status.channel.mode == "JOG"
         assert "fill in at least one field" in str(app.screen.query_one("#dialog-line").render())
+
+
+async def test_tsm_work_offset_and_unit_stay_active_after_the_job() -> None:
+    """G55 (X −200 in the data) and inch chosen in one burst: CYCLE START runs "G55 G70"; back in
+    JOG both are still active (MD20152 keeps groups 8 and 13 on the shipped mill, 002
+    L2770-2782) and the WCS display reads through G55: MCS X 0 → WCS X 200 mm, shown in inch: 200 / 25.4."""
+    nck = kernel_with_tools()
+    nck.data.settable_frame("G55").trans["X"] = -200.0
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "shift+f1", "down", "down", "down", "down", "down", "right", "right", "right",
+                    "down", "right", "right")
+        form = app.screen.query_one("#view-tsm-work_offset", ChoiceField)
+        assert form.value == "G55"
+        assert app.screen.query_one("#view-tsm-unit", ChoiceField).value == "inch"
+        await burst(pilot, "alt+g")
+        run_job(app)
+        await pilot.pause()
+        await pilot.pause()
+        status = app.bridge.status
+        assert status.channel.mode == "JOG"
+        assert (status.channel.modal.gcodes[8], status.channel.modal.gcodes[13]) == ("G55", "G70")
+        x = {a.name: a for a in status.axes}["X"]
+        assert abs(x.position_wcs - 200.0 / 25.4) < 1e-6  # G70: the display in inch
+        assert "G55" in str(app.screen.query_one("#view-tsm-info").render())
