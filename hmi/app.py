@@ -316,16 +316,19 @@ class HmiApp(MachineControlPanel, App):
         if target.is_attached:
             await wait_until_handled(self, target)
 
-    def on_cursor_position(self, event: events.CursorPosition) -> None:
-        """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3).
+    async def on_cursor_position(self, event: events.CursorPosition) -> None:
+        """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3), in its place among the keys.
 
         Terminals send Shift+F3 as ``ESC [1;2R``, which Textual's parser reads as a cursor
         position report (row 1, column 2). The HMI never asks for a cursor position in
-        full-screen mode, so such a report can only be the key.
+        full-screen mode, so such a report can only be the key. It is handled now, not
+        posted: posted, it came behind the keys of the same burst.
         """
         if (event.x, event.y) == (1, 0):
             event.stop()
-            self.post_message(events.Key("shift+f3", None))
+            key = events.Key("shift+f3", None)
+            key.set_sender(self)
+            await self.on_event(key)
 
     # -- kernel ---------------------------------------------------------------------------
     def submit(self, command: Any) -> SubmitResult:

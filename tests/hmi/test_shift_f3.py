@@ -32,3 +32,19 @@ async def test_other_cursor_reports_are_ignored(fake_app: HmiApp) -> None:
         fake_app.post_message(events.CursorPosition(5, 3))
         await pilot.pause()
     assert pressed == []
+
+
+async def test_shift_f3_keeps_its_place_in_a_burst(fake_app: HmiApp) -> None:
+    """Shift+F3 then Shift+F2 sent in one go (tmux send-keys S-F3 S-F2): VSK3 is pressed first.
+    Found in tmux: the key made from the report was queued behind Shift+F2, so the second key
+    met the first key's softkey level (JOG: Measure workpiece, then Corner opened Set WO)."""
+    pressed: list[str] = []
+    async with fake_app.run_test(size=SIZE) as pilot:
+        fake_app.screen.press_softkey = pressed.append  # type: ignore[attr-defined]
+        second = events.Key("shift+f2", None)
+        second.set_sender(fake_app)
+        fake_app.post_message(events.CursorPosition(1, 0))
+        fake_app.post_message(second)
+        await pilot.pause()
+        await pilot.pause()
+    assert pressed == ["v3", "v2"]
