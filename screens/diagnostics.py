@@ -50,6 +50,10 @@ TITLES = {
     "logbook": "Logbook",
 }
 LOG_PAGE = 30
+UTILISATION_REFRESH_S = 1.0
+"""System utilisation redraws its measured figures once per second of control time (our
+choice where the manuals are silent: they are means over the last calls, and a redraw with
+every snapshot, 20 a second, only floods the terminal)."""
 
 
 def _view_key(key_id: str, label: str, view: str) -> Softkey:
@@ -80,6 +84,7 @@ class DiagnosticsScreen(AreaBase):
         self.export_dir = Path.cwd()
         self.trace: TraceSession | None = None
         self._log_seq = -1
+        self._utilisation_cycle: int | None = None  # IPO cycle of the figures on display
 
     # -- kernel data (read-only questions through the bridge) ------------------------------
     def _history(self) -> tuple:
@@ -343,6 +348,7 @@ class DiagnosticsScreen(AreaBase):
         self.query_one("#diag-views", ContentSwitcher).current = f"view-{self.view}"
         self.set_focus(None)
         self._log_seq = -1
+        self._utilisation_cycle = None
         self._refresh_view()
         self.refresh_softkeys()
 
@@ -403,6 +409,10 @@ class DiagnosticsScreen(AreaBase):
     def _render_utilisation(self, status: NckStatus) -> None:
         counters = self.ask(queries.Counters())
         ipo = counters.ipo_cycle_s or 0.004
+        shown = self._utilisation_cycle
+        if shown is not None and 0 <= counters.cycles_done - shown < UTILISATION_REFRESH_S / ipo:
+            return  # a new kernel (Reset (po)) counts from 0 again: drawn at once
+        self._utilisation_cycle = counters.cycles_done
         rows = utilisation_rows(self.hmi.bridge.utilisation, ipo, self.ask(queries.BufferFill()),
                                 counters.cycles_done, counters.blocks_interpreted)
         show_text(self._body("utilisation"), rows_text(

@@ -217,9 +217,9 @@ async def test_every_view_renders_and_softkeys_switch(tmp_path: Path) -> None:
         await pilot.press("f8", "f1")
         await pilot.pause()
         assert screen.view == "utilisation"
-        await advance(pilot, 0.5)
+        await advance(pilot, 1.0)  # the figures are redrawn once a second of control time
         assert "IPO cycle load" in body(app, "utilisation")
-        assert "125" in body(app, "utilisation")  # 0.5 s = 125 IPO cycles of 4 ms
+        assert "250" in body(app, "utilisation")  # 1 s = 250 IPO cycles of 4 ms
         app.submit(cmd.SetKeyswitch(3))
         await pilot.press("f3")
         await pilot.pause()

@@ -76,11 +76,12 @@ def test_service_drive(snap_compare) -> None:
 
 
 def test_system_utilisation(snap_compare) -> None:
-    """Figures from the replaced clock: 1 ms per reading, 10 ticks of 10 IPO cycles."""
+    """Figures from the replaced clock: 1 ms per reading, 25 ticks of 10 IPO cycles (one second
+    of control time: the view redraws its figures once a second)."""
 
     async def run(pilot) -> None:
         await _open(pilot, "f8", "f1")
-        for _ in range(10):
+        for _ in range(25):
             pilot.app.bridge.advance(0.04)
         await pilot.pause()
 
