@@ -384,6 +384,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             self._raise_number(ALARM_START_UNREFERENCED, unreferenced[0])
             return Rejected("Axes not referenced: " + " ".join(unreferenced), alarm=ALARM_START_UNREFERENCED)
         self._apply_dry_run()  # SD42100/SD42101 written during the interruption
+        self._apply_offset_edits()  # MD9440: work offsets edited during the interruption
         if mode == "AUTO":
             return self._start_auto()
         return self._start_mda()

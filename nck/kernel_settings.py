@@ -14,7 +14,7 @@ from __future__ import annotations
 from typing import Any
 
 from nck import commands as cmd
-from nck.access import ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessState
+from nck.access import ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessState, Action, action_for_write
 from nck.alarms import AlarmServer
 from nck.canon import Motion
 from nck.channel import ACTIVE, RESET
@@ -39,6 +39,7 @@ class ControlSettings(DataWrites):
     alarms: AlarmServer
     _time_s: float
     _overrides: dict[str, float]  # override switch positions in % (feed, rapid, spindle)
+    _offsets_edited = False  # a work offset was edited while stopped with MD9440 = 1
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
@@ -99,6 +100,9 @@ class ControlSettings(DataWrites):
     def _write_data(self, command: cmd.WriteData) -> SubmitResult:
         handled = self._write_nc_datum(command)  # protection, MD/SD, tools, frames, GUD
         if handled is not None:
+            if isinstance(handled, Accepted) and (action_for_write(command.name) == Action.WRITE_WORK_OFFSET
+                                                  or command.name.strip().upper().startswith("$P_UBFR")):
+                self._work_offset_edited()
             return handled
         name = command.name.strip().upper()
         try:
@@ -172,6 +176,23 @@ class ControlSettings(DataWrites):
             if axis in motion.end_wcs:
                 self._wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
         return motion
+
+    def _work_offset_edited(self) -> None:
+        """An edited work offset stays inactive until the program selects it again, RESET or
+        program start; with MD9440 = 1 it is active at once in RESET and from the next NC
+        START when entered while the program is stopped (002 L28128-28137, L31541-31546)."""
+        if not int(self.machine_data.active_value("MD9440") or 0):
+            return
+        if self._sit.channel == RESET:  # type: ignore[attr-defined]
+            self._activate_stored_frames()  # type: ignore[attr-defined]
+        else:
+            self._offsets_edited = True
+
+    def _apply_offset_edits(self) -> None:
+        """NC START: offsets edited while stopped under MD9440 = 1 become active."""
+        if self._offsets_edited:
+            self._offsets_edited = False
+            self._activate_stored_frames()  # type: ignore[attr-defined]
 
     def _apply_dry_run(self) -> None:
         """Hand the dry run (SD42100 feed, SD42101 mode) or its absence to the motion systems

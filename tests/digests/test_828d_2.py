@@ -59,6 +59,41 @@ def test_digest_828d_2_rank_19_settable_frame_edit_waits_for_reselection() -> No
     assert (mcs(nck), wcs(nck)) == (pytest.approx(150.0), pytest.approx(30.0))
 
 
+@pytest.mark.parametrize("md9440, wcs_after_start", [(0, 50.0), (1, 30.0)])
+def test_digest_828d_2_rank_19_md9440_activates_the_edit_at_the_next_nc_start(
+        md9440: int, wcs_after_start: float) -> None:
+    """Digest 828d-2 rank 19: with MD9440 = 1 a work offset entered while the program is stopped
+    becomes active when the program continues (002 L31541-31546): after NC START the WCS is
+    150 - 120 = 30 before any block selects G54 again; with MD9440 = 0 it stays 50."""
+    nck = make({"P.MPF": "N10 G54 G0 X50\nN20 M0\nN30 G4 F0.5\nN40 M0\nN50 M30"})
+    assert nck.submit(c.WriteData("MD9440", md9440)) == c.Accepted()
+    start(nck, "P.MPF")
+    assert until_stop(nck).startswith("N20")
+    assert nck.submit(c.WriteData("$P_UIFR[1,X,TR]", 120)) == c.Accepted()
+    nck.tick(0.1)
+    assert wcs(nck) == pytest.approx(50.0)  # stopped: not yet, with either value
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert until_stop(nck).startswith("N40")  # N30 moves nothing and selects no offset
+    assert (mcs(nck), wcs(nck)) == (pytest.approx(150.0), pytest.approx(wcs_after_start))
+
+
+@pytest.mark.parametrize("md9440, wcs_after_edit", [(0, 150.0), (1, 130.0)])
+def test_digest_828d_2_rank_19_md9440_activates_the_edit_at_once_in_reset(
+        md9440: int, wcs_after_edit: float) -> None:
+    """Digest 828d-2 rank 19: with MD9440 = 1 values entered in the RESET state are active at
+    once (002 L28133-28137, L31541-31544): the base frame X = 20 entered at machine X150 shows
+    WCS 150 - 20 = 130 at once; with MD9440 = 0 the display stays 150."""
+    nck = make({"P.MPF": "N10 G500 G0 X150\nN20 M30"})
+    assert nck.submit(c.WriteData("MD9440", md9440)) == c.Accepted()
+    start(nck, "P.MPF")
+    assert nck.run_until(lambda k: k.situation.program == "aborted", 60.0)
+    nck.tick(0.5)
+    assert (mcs(nck), wcs(nck)) == (pytest.approx(150.0), pytest.approx(150.0))
+    assert nck.submit(c.WriteData("$P_UBFR[X,TR]", 20)) == c.Accepted()
+    nck.tick(0.1)
+    assert wcs(nck) == pytest.approx(wcs_after_edit)
+
+
 def test_digest_828d_2_rank_20_frame_chain_g53_g500_and_rotation() -> None:
     """Digest 828d-2 rank 20: G54 X100 + TRANS X10 at machine X150 gives WCS 40; G53 suppresses
     the frames for its block only (002 L28329, L26952); G500 drops the settable part
