@@ -17,6 +17,10 @@ from nck import commands as cmd
 from nck.commands import Accepted, Rejected
 from nck.status import NckStatus
 
+AXIS_KEY_NAMES = ("X", "Y", "Z")
+"""The axis keys 1-3 of the machine control panel select the axis of this name (a lathe's
+panel has X and Z keys); the key after them selects the 4th axis by its position."""
+
 if TYPE_CHECKING:
     from hmi.area import AreaBase
     from hmi.bridge import NckBridge
@@ -126,8 +130,14 @@ class MachineControlPanel:
         return axes[self.selected_axis_index] if self.selected_axis_index < len(axes) else None
 
     def action_select_axis(self, index: int) -> None:
-        """Axis keys X, Y, Z, 4th axis."""
+        """Axis keys X, Y, Z (the axis of that name: on the lathe X and Z), 4th axis (by position)."""
         axes = self.axis_names()
+        if index < len(AXIS_KEY_NAMES):
+            name = AXIS_KEY_NAMES[index]
+            if name not in axes:
+                self.set_hint(f"This machine has no axis {name}")
+                return
+            index = axes.index(name)
         if index >= len(axes):
             self.set_hint(f"This machine has no axis {index + 1}")
             return
