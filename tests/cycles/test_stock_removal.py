@@ -106,3 +106,17 @@ def test_finishing_only_needs_no_infeed_depth() -> None:
     """VARI 5: MID 0 is fine; the tool goes to Z1, X20 and along the contour."""
     steps = run_lathe('CYCLE95("SHAFT_A", 0, 0, 0, 0, 0.3, 0.1, 0.1, 5)', FILES).ended().steps()
     assert steps[:3] == [("G0", 70, 1), ("G0", 20, 1), ("G1", 20, 0, 100)]
+
+
+def test_longitudinal_inside_roughing_cuts_outwards() -> None:
+    """VARI 3 (longitudinal, inside), MID 5, called in the bore at X18 Z5: the bore contour X40 Z0
+    → Z-10 → X30 Z-20 → Z-30 → X20 spans radius 10 … 20, material inside it: 2 cuts of 5 at
+    radius 15 (X30, ending on the taper at Z-20) and 20 (X40, ending at the start Z0), each from
+    the approach line Z1; lift-off 1 mm towards the axis and +Z; back X first, then Z."""
+    bore = "PROC BORE_A\nG1 X40 Z0\nZ-10\nX30 Z-20\nZ-30\nX20\nM17\n"
+    steps = run_lathe('G0 X18 Z5\nCYCLE95("BORE_A", 5, 0, 0, 0, 0.3, 0.1, 0.1, 3, 0, 0, 1)',
+                      {"BORE_A.SPF": bore}).ended().steps()
+    assert steps == [("G0", 18, 5), ("G0", 18, 1),
+                     ("G0", 30, 1), ("G1", 30, -20, 300), ("G0", 28, -19), ("G0", 28, 1),
+                     ("G0", 40, 1), ("G1", 40, 0, 300), ("G0", 38, 1), ("G0", 38, 1),
+                     ("G0", 18, 1), ("G0", 18, 5)]
