@@ -120,3 +120,22 @@ def test_longitudinal_inside_roughing_cuts_outwards() -> None:
                      ("G0", 30, 1), ("G1", 30, -20, 300), ("G0", 28, -19), ("G0", 28, 1),
                      ("G0", 40, 1), ("G1", 40, 0, 300), ("G0", 38, 1), ("G0", 38, 1),
                      ("G0", 18, 1), ("G0", 18, 5)]
+
+
+def test_relief_cut_is_not_roughed_and_never_cut_into() -> None:
+    """A contour with a relief cut: X20 Z0 → Z-10 → X16 Z-14 → Z-20 → X40 Z-25 → X50. The
+    roughing reaches down to the start radius 10 only (depth 15, MID 4: 4 cuts of 3.75 at radius
+    21.25, 17.5, 13.75, 10); each cut ends where the contour first rises to its level: X42.5 on
+    the shoulder X50 at Z-25, the others on the taper X16 Z-20 → X40 Z-25 (radius 8 + 12/5 per
+    mm of Z): Z = -20 - (r - 8)·5/12, i.e. -23.9583 and -22.3958; the cut at radius 10 ends at
+    the start Z0 (the contour there is already at the level). The relief X16 is left to the
+    finishing pass, which follows the whole contour."""
+    relief = "PROC RELIEF_A\nG1 X20 Z0\nZ-10\nX16 Z-14\nZ-20\nX40 Z-25\nX50\nM17\n"
+    steps = run_lathe('CYCLE95("RELIEF_A", 4, 0, 0, 0, 0.3, 0.1, 0.1, 9)', {"RELIEF_A.SPF": relief}).ended().steps()
+    rough = [("G0", 52, 1)]
+    for x, z in ((42.5, -25), (35, -23.9583), (27.5, -22.3958), (20, 0)):
+        rough += [("G0", x, 1), ("G1", x, z, 300), ("G0", x + 2, round(z + 1, 4)), ("G0", x + 2, 1)]
+    finish = [("G0", 22, 1), ("G0", 20, 1), ("G1", 20, 0, 100), ("G1", 20, -10, 100), ("G1", 16, -14, 100),
+              ("G1", 16, -20, 100), ("G1", 40, -25, 100), ("G1", 50, -25, 100),
+              ("G0", 52, -25), ("G0", 70, -25), ("G0", 70, 5)]
+    assert steps == rough + finish
