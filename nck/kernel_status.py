@@ -47,6 +47,8 @@ class StatusView:
 
     machine: Any
     motion: Any
+    _parked: list | None
+    _overlay: Any
 
     def _access_level(self) -> int:
         if self._access is not None:
@@ -58,6 +60,11 @@ class StatusView:
         positions = shown.positions_mcs()
         run = self._overlay or self._run
         current_source = self._path_motion().current_source() if run is not None else None
+        # A program parked by a mode change (NC STOP, JOG) is still at the block it was
+        # interrupted in: its first unexecuted item, not the interpreter's look-ahead.
+        parked = self._parked[0] if self._parked and run is not None and run is not self._overlay else None
+        if current_source is None and parked is not None:
+            current_source = parked.source
         if current_source is None and run is not None:
             current_source = run.last_executed_source()
         current = None
@@ -72,7 +79,8 @@ class StatusView:
                     if view.file == current_source.file and view.line == current_source.line:
                         current = view
                         break
-                segment = run.segments.get(id(current_source))
+                segment = parked if parked is not None and current_source is parked.source \
+                    else run.segments.get(id(current_source))
                 if segment is not None and segment.source is current_source:
                     executing_state = segment
                     if isinstance(segment, Motion):

@@ -283,3 +283,30 @@ def test_a_fresh_data_directory_does_not_clamp_a_normal_spindle_speed(tmp_path, 
     nck.tick(2.0)
     assert spindle_view(nck) == ("M3", 1150.0, 1150)
     nck.submit(c.Reset())
+
+
+def test_interrupted_program_shows_its_block_g_codes_and_wcs_in_jog() -> None:
+    """NC STOP in N10 under G54, then JOG and back to AUTO: the control still shows the
+    interrupted block N10, G54 in group 8 and the WCS with the G54 translation (WCS = MCS -
+    50 mm; 002 L31561-31566: the active frame lies between MCS and WCS). The interpreter had
+    read ahead to M30, whose reset state (G500, no frame) was shown (found in the operator
+    day: X showed the MCS, 'G500', after Alt+H Alt+J)."""
+    nck = Nck(programs=MemorySource({"P.MPF": "N5 G54 G90 G0 X0 Y0 Z0\nN10 G1 X100 F100\nN20 M30"}),
+              referenced=True)
+    assert nck.submit(c.WriteData("$P_UIFR[1,X,TR]", 50)) == c.Accepted()
+    for command in (c.SelectMode("AUTO"), c.SelectProgram("P.MPF"), c.CycleStart()):
+        assert nck.submit(command) == c.Accepted()
+    nck.tick(4.0)
+    assert nck.submit(c.CycleStop()) == c.Accepted()
+    nck.tick(0.5)
+    for mode in ("JOG", "AUTO"):
+        assert nck.submit(c.SelectMode(mode)) == c.Accepted()
+        nck.tick(0.1)
+        status = nck.status()
+        x = status.axes[0]
+        assert status.channel.modal.gcodes[8] == "G54", mode
+        assert x.position_wcs == pytest.approx(x.position_mcs - 50.0), mode
+        assert status.channel.current_block.text == "N10 G1 X100 F100", mode
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 120.0)
+    assert nck.status().axes[0].position_mcs == pytest.approx(150.0, abs=1e-3)
