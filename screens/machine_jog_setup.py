@@ -30,6 +30,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 
 from nck import commands as cmd
+from nck.number_text import fixed, trimmed
 from nck.queries import ReadData
 from nck.status import NckStatus
 
@@ -55,11 +56,6 @@ def _ready_in_jog(screen: AreaBase) -> bool:
     status = screen.status
     return (status is not None and status.channel.mode == "JOG"
             and status.channel.channel_state == "reset")
-
-
-def trimmed(value: float) -> str:
-    """A value with at most 3 decimals and no trailing zeros (``1200``, ``0.25``)."""
-    return f"{value:.3f}".rstrip("0").rstrip(".")
 
 
 class JogWindows:
@@ -157,8 +153,8 @@ class JogWindows:
         if view == "settings":
             data = self._setting_data()
             form = self.form(view)
-            form.set_value("jog_feed", trimmed(data("SD41110")))
-            form.set_value("var_incr", trimmed(data("SD41010")))
+            form.set_value("jog_feed", trimmed(data("SD41110"), 3))
+            form.set_value("var_incr", trimmed(data("SD41010"), 3))
 
     def show(self, view: str, status: NckStatus) -> None:
         """Redraw the info line of window ``view`` from ``status``."""
@@ -168,7 +164,7 @@ class JogWindows:
         if view == "tsm":
             tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
             form.show_info(Text(
-                f" Active: {tool} D{modal.edge}   S {trimmed(modal.spindle_speed_rpm)} rev/min "
+                f" Active: {tool} D{modal.edge}   S {trimmed(modal.spindle_speed_rpm, 3)} rev/min "
                 f"{modal.spindle_state}   {modal.gcodes.get(8, 'G500')}   "
                 f"{'inch' if modal.gcodes.get(13) == 'G70' else 'mm'}   {self._job_state(status)}"))
         elif view == "setwo":
@@ -179,8 +175,8 @@ class JogWindows:
             form.show_info(Text(f" {self._job_state(status)}"))
         elif view == "settings":
             data = self._setting_data()
-            form.show_info(Text(f" Stored: JOG feed {trimmed(data('SD41110'))} mm/min "
-                                f"(0 = MD32020)   variable increment {trimmed(data('SD41010'))} mm"))
+            form.show_info(Text(f" Stored: JOG feed {trimmed(data('SD41110'), 3)} mm/min "
+                                f"(0 = MD32020)   variable increment {trimmed(data('SD41010'), 3)} mm"))
 
     def _job_state(self, status: NckStatus) -> str:
         if self.job.running:
@@ -196,7 +192,7 @@ class JogWindows:
         text.append("\n Actual values WCS:")
         for axis in status.axes:
             if axis.kind != "spindle":
-                text.append(f"  {axis.name} {axis.position_wcs:.3f}")
+                text.append(f"  {axis.name} {fixed(axis.position_wcs)}")
         return text
 
     # -- CYCLE START -----------------------------------------------------------------------

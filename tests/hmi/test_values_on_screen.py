@@ -50,6 +50,10 @@ async def test_machine_screen_shows_no_negative_zero() -> None:
         await pilot.press("f1")  # MCS
         await pilot.pause()
         assert "-0.000" not in screen_text(app)
+        for window in ("shift+f2", "shift+f1", "shift+f6"):  # Set WO, T,S,M, Settings
+            await pilot.press(window)
+            await pilot.pause()
+            assert "-0.000" not in screen_text(app) and "-0 " not in screen_text(app), window
 
 
 async def test_tfs_window_shows_tool_once_and_the_edge_size_with_wear(tmp_path) -> None:
