@@ -26,6 +26,9 @@ VALUE_RANGE_EXCEEDED = 12160
 ARRAY_TOO_MANY_DIMENSIONS = 12190
 """Variable %3 of type ARRAY has too many dimensions."""
 
+MEMORY_CAPACITY_REACHED = 12380
+"""Variable memory (MD28040, MD18150) or tool offset memory (MD18100) used up."""
+
 IDENTIFIER_TOO_LONG = 12420
 """Identifier %3 too long."""
 

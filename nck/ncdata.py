@@ -13,6 +13,7 @@ from typing import Any
 from nck.workpiece import MachineSetup
 
 R_PARAMETER_COUNT = 100  # MD28050 MM_NUM_R_PARAM default
+TOOL_EDGE_COUNT = 600  # MD18100 MM_NUM_CUTTING_EDGES_IN_TOA default (data/md/general.toml)
 
 
 @dataclass
@@ -85,6 +86,12 @@ class NcData:
     def edge(self, tool: int, edge: int) -> ToolEdge | None:
         """Return the cutting edge ``D<edge>`` of tool ``T<tool>``, if it exists."""
         return self.tools.get((tool, edge))
+
+    def has_room_for_edge(self, tool: int, edge: int, edge_count: int) -> bool:
+        """True when ``D<edge>`` of ``T<tool>`` exists or the tool offset memory holds fewer than
+        ``edge_count`` edges (MD18100: a D number written for the first time stores a new
+        data block, 002 L58292-58296)."""
+        return (tool, edge) in self.tools or len(self.tools) < edge_count
 
     def settable_frame(self, name: str) -> WorkOffset:
         """Return the settable frame ``G54`` … ``G599`` (created empty when first used)."""

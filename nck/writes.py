@@ -206,6 +206,10 @@ class DataWriter:
             raise WriteRefused("cutting edge position outside 0 … 9")
         if abs(number) > TOOL_VALUE_LIMIT_MM:
             raise WriteRefused(f"$TC_DP{param} outside ±{TOOL_VALUE_LIMIT_MM:g}")
+        edge_count = int(self.store.value("MD18100"))
+        if not self.data.has_room_for_edge(tool, edge, edge_count):
+            raise WriteRefused(f"the tool offset memory holds {edge_count} cutting edges (MD18100): "
+                               f"no room for T{tool} D{edge}")
         tools = self.data.tools
         edge_data = tools.get((tool, edge))
         if edge_data is None:

@@ -16,7 +16,9 @@ from typing import TYPE_CHECKING, Any
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
-from nck.alarm_ids import PROGRAM_NOT_FOUND, STOCK_REMOVAL_CONTOUR_ERROR, WRONG_CALL_ARGUMENTS
+from nck.alarm_ids import (
+    MEMORY_CAPACITY_REACHED, PROGRAM_NOT_FOUND, STOCK_REMOVAL_CONTOUR_ERROR, WRONG_CALL_ARGUMENTS,
+)
 from nck.interp import sysvars
 from nck.interp.contour_table import ROW_WIDTH, contour_rows
 from nck.interp.evaluator import equal, evaluate
@@ -411,7 +413,7 @@ class BlockRun:
             limit_kb = interp.machine.md_value("MD28040", default=LUD_VALUES_MEM_KB)
             what = "MD28040 LUD memory"
         if used + size > int(limit_kb) * 1024:
-            raise NcAlarmError(12380, f"{what} {int(limit_kb)} KB: {name}")
+            raise NcAlarmError(MEMORY_CAPACITY_REACHED, f"{what} {int(limit_kb)} KB: {name}")
         if not global_data:
             self.frame.lud_bytes += size
 

@@ -41,6 +41,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
 from nck import canon
+from nck.alarm_ids import MEMORY_CAPACITY_REACHED
 from nck.errors import NcAlarmError
 from nck.access import LEVEL_FEWEST_RIGHTS
 from nck.interp import data_writes
@@ -58,7 +59,7 @@ from nck.interp.values import convert, to_number
 from nck.lang import ast
 from nck.lang.gcodes import gtable
 from nck.machine import MachineConfig
-from nck.ncdata import NcData
+from nck.ncdata import TOOL_EDGE_COUNT, NcData
 from nck.status import ModalView
 
 BLOCK_COST_S = 0.001  # simulated time one interpreted block costs (1 ms)
@@ -526,6 +527,10 @@ class Interpreter:
         from nck.ncdata import ToolEdge
 
         key = (tool, edge)
+        edge_count = int(self.machine.md_value("MD18100", default=TOOL_EDGE_COUNT))
+        if not self.data.has_room_for_edge(tool, edge, edge_count):
+            raise NcAlarmError(MEMORY_CAPACITY_REACHED,
+                               f"MD18100 tool offset memory {edge_count} cutting edges: T{tool} D{edge}")
         if key not in self.data.tools:
             self._journal.append(("tool", (tool, edge, param), _MISSING_EDGE))
             self.data.tools[key] = ToolEdge()

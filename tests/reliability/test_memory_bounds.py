@@ -18,7 +18,9 @@ from nck.check import check_text
 from nck.headless import run_program
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
+from nck.machine_data import MachineDataStore
 from nck.ncdata import NcData
+from nck.writes import DataWriter, WriteRefused
 from tests.reliability.harness import run_hostile
 
 PEAK_BYTES = 20_000_000
@@ -116,3 +118,32 @@ def test_a_run_hands_commands_on_as_they_execute_and_holds_none_back(loop: str) 
                       keep_commands=False, on_command=on_command)
     assert run.status == "timeout" and data.r[1] > 150 and len(lags) > 100
     assert max(lags) <= 100, max(lags)  # the look-ahead: 64 passes of the motion loop, 1 without motion
+
+
+def test_the_tool_offset_memory_holds_md18100_cutting_edges() -> None:
+    """002 L58292-58296: a D number written for the first time stores a new data block; MD18100
+    sets how many the memory holds. A program filling it ends with 12380, not with a tool list
+    that grows without end (found beyond the issue's list: 30,000 edges from a 6-line loop)."""
+    fill = "DEF INT CNT\nFOR CNT=1 TO 3\n$TC_DP1[CNT,1]=120\nENDFOR\n"
+    machine = dataclasses.replace(load_machine(), md={**load_machine().md, "MD18100": 3})
+    full = NcData()
+    assert run_program(machine, MemorySource({}), full, "P.MPF", text=fill + "$TC_DP3[2,1]=50\nM30\n",
+                       timeout_s=60.0).alarms == []  # three edges fit; writing one of them again too
+    assert len(full.tools) == 3
+    over = run_program(machine, MemorySource({}), NcData(), "P.MPF", text=fill + "$TC_DP3[3,2]=50\nM30\n",
+                       timeout_s=60.0)
+    assert [a.number for a in over.alarms] == [12380]
+    assert "MD18100" in over.alarms[0].params[-1]
+
+
+def test_a_data_write_beyond_md18100_is_refused() -> None:
+    """The same bound on the one write path of the panel, nck md/run --tools and archive import."""
+    machine = dataclasses.replace(load_machine(), md={**load_machine().md, "MD18100": 2})
+    data = NcData()
+    writer = DataWriter(data, MachineDataStore(machine), None)
+    writer.write("$TC_DP1[1,1]", 120)
+    writer.write("$TC_DP1[2,1]", 120)
+    writer.write("$TC_DP3[2,1]", 50)
+    with pytest.raises(WriteRefused, match="MD18100"):
+        writer.write("$TC_DP1[3,1]", 120)
+    assert sorted(data.tools) == [(1, 1), (2, 1)]
