@@ -680,7 +680,8 @@ def main(argv: list[str] | None = None) -> int:
             app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program,
                            confirm=ask_on_terminal)
         except Exception as exc:  # a CLI/file problem: a clear message, no traceback
-            print(f"hmi: {exc}", file=sys.stderr)
+            # an exception without text (MemoryError) must not leave a bare "hmi: "
+            print(f"hmi: {str(exc) or f'cannot start: internal error ({type(exc).__name__})'}", file=sys.stderr)
             return 2
         app.started_at = started  # type: ignore[attr-defined]
         app.freeze_gc_at_start = True

@@ -82,3 +82,17 @@ def test_a_hostile_backup_behind_a_bad_file_gives_4060(template, hostile, tmp_pa
     assert [a.number for a in session.startup_alarms] == [4060]
     assert (data_dir / "retained" / f"{hostile.section}.json.bad-1").exists()
     assert os.path.lexists(data_dir / "retained" / f"{hostile.section}.json.bak.bad-1")
+
+
+def test_the_hmi_start_never_ends_with_an_empty_message(tmp_path: Path, monkeypatch, capsys) -> None:
+    """An exception without text at the start (MemoryError of an R count of 10^10 did it) printed
+    'hmi: ' and nothing more; the line names what went wrong, without a traceback."""
+    import hmi.app
+
+    def fail(*_args: object, **_kwargs: object) -> None:
+        raise MemoryError()
+
+    monkeypatch.setattr(hmi.app, "make_app", fail)
+    assert hmi.app.main(["--data-dir", str(tmp_path / "data")]) == 2
+    err = capsys.readouterr().err
+    assert err == "hmi: cannot start: internal error (MemoryError)\n"
