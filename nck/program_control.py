@@ -50,6 +50,7 @@ WAIT_STOP = "wait_stop"  # stop at block end: wait until the motion is done
 WAIT_END = "wait_end"  # program end: wait until the motion is done
 STOPPED = "stopped"  # stopped at a block boundary; NC START continues
 ENDED = "ended"
+REFUSED = "refused"  # the motion refused a block (10720 …): no block after it is prepared
 SEARCH_FOUND = "search_found"  # target found; NC START outputs the action blocks
 SEARCH_ACTIONS_DONE = "search_actions_done"  # 10208 pending; NC START approaches and continues
 
@@ -293,6 +294,12 @@ class ProgramRun:
                 if len(self.segments) > PUSHED_HISTORY:
                     self.segments.pop(next(iter(self.segments)))
                 self._push(motion, command)
+                if getattr(motion, "refused_source", None) is command.source:
+                    # Block preparation checks the end point (10720, 10730 …) and goes no further;
+                    # the alarm comes when the main run reaches the block.
+                    self._pending = None
+                    self.phase = REFUSED
+                    return False
             elif isinstance(command, StopPoint):
                 kind = command.kind.upper()
                 if kind in ("M0", "M00"):

@@ -79,6 +79,7 @@ class PlannedMotion(PathInterpolator):
         self.held = False
         self.faulted = False
         self.stop_source: Source | None = None  # the block a motion alarm stopped (refused or tripped)
+        self.refused_source: Source | None = None  # the block whose segment a push refused last
         self.spindle_wait = False  # a WAITS/SPOS wait: checked again when its cycles ran out
         self.hold_point: np.ndarray | None = None
         self.repos_feed: float | None = None
@@ -121,6 +122,7 @@ class PlannedMotion(PathInterpolator):
         segment, alarm = self._checked_segment(item, self._plan_start())
         if alarm is not None:
             self.la.append(AlarmItem(alarm, item.source))
+            self.refused_source = item.source
             return
         if segment is None:
             return
@@ -356,6 +358,7 @@ class PlannedMotion(PathInterpolator):
         self.held = False
         self.faulted = False
         self.stop_source = None
+        self.refused_source = None
         self.spindle_wait = False
         self.wait_cycles = 0
         self.dwell_rest_cycles = 0

@@ -40,6 +40,9 @@ OWN = {
     "angle in a circle": "N10 G2 G17 X10 Y0 CR=20 ANG=30 F100\nN20 M30\n",
     "chamfer without motion": "N10 G1 X10 F100\nN20 CHF=2\nN30 X20\nN40 M30\n",
     "beyond the software limit": "N10 G1 X400 F5000\nN20 X600\nN30 M30\n",
+    # Block preparation stops at the block whose end point is refused (Y480 > MD36110 Y = 400):
+    # the zero feed of the next block is never read, in the run as in the check.
+    "beyond the limit before a refused feed": "N10 G0 X-20 Y480\nN20 G1 X-20 F0\nN30 M30\n",
     "no feed": "N10 G1 X10\nN20 M30\n",
     "dwell with an axis": "N10 G4 F1 X10\nN20 M30\n",
     "g93 with radius compensation": "N10 T1 M6 D1\nN20 G41 G1 X10 Y10 F100\nN30 G93 X20 F2\nN40 M30\n",
