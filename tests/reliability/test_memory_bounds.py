@@ -10,6 +10,7 @@ The budgets are measured with tracemalloc (memory, never time).
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 import tracemalloc
 
 import pytest
@@ -147,3 +148,34 @@ def test_a_data_write_beyond_md18100_is_refused() -> None:
     with pytest.raises(WriteRefused, match="MD18100"):
         writer.write("$TC_DP1[3,1]", 120)
     assert sorted(data.tools) == [(1, 1), (2, 1)]
+
+
+
+def _rss_kb(field: str) -> int:
+    """``VmRSS`` (now) or ``VmHWM`` (peak since the last reset) of this process in KB (Linux)."""
+    status = Path("/proc/self/status").read_text()
+    return int(next(line.split()[1] for line in status.splitlines() if line.startswith(field + ":")))
+
+
+async def test_opening_the_hostile_program_in_the_editor_stays_small(tmp_path: Path) -> None:
+    """Issue 19: merely opening the 3-line SPRINT program in the editor took the HMI from 79 MB
+    to 1.9 GB (the background check formatted the 1 GB string). Open it as an operator does
+    (Program manager, Open) and let the check finish: 14099 on line 2, and the process's peak
+    resident memory (reset before the opening: ``/proc/self/clear_refs``) grows by little."""
+    from tests.program_screens.conftest import SIZE, make_program_app, nc_files, settle
+
+    root = tmp_path / "nc"
+    nc_files(root)
+    (root / "MPF" / "HOSTILE.MPF").write_text('DEF STRING[200] TXT\nTXT=SPRINT("%.999999999F",1)\nM30\n')
+    app = make_program_app(root)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        Path("/proc/self/clear_refs").write_text("5")  # the peak starts again from what is resident now
+        before_kb = _rss_kb("VmRSS")
+        await pilot.press("alt+n", "f3")  # Program manager, Open the selected program
+        await settle(pilot)
+        grown_kb = _rss_kb("VmHWM") - before_kb
+        screen = app.screen
+        assert screen.program == "MPF/HOSTILE.MPF"
+        assert [(m.line, m.number) for m in screen.editor.error_marks.values()] == [(1, 14099)]
+    assert grown_kb < 100 * 1024, f"{grown_kb} KB"
