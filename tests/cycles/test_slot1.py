@@ -73,6 +73,8 @@ def test_slot1_conventional_milling_runs_clockwise() -> None:
     ("SLOT1(10, 0, 2, -5, 0, 2, 30, 12, 50, 40, 25, 0, 90, 80, 300, 3, 3, 0.5, 31)", TOOL, 61002),  # oscillating
     ("SLOT1(10, 0, 2, -5, 0, 2, 30, 12, 50, 40, 25, 0, 90, 80, 300, 3, 3, 0.5, 3)", TOOL, 61002),
     ("SLOT1(10, 0, 2, 5, 0, 2, 30, 12, 50, 40, 25, 0, 90, 80, 300, 3, 3, 0.5, 0)", TOOL, 61101),   # depth above
+    # bottom allowance 5 not less than the depth 5: nothing left to rough
+    ("SLOT1(10, 0, 2, -5, 0, 2, 30, 12, 50, 40, 25, 0, 90, 80, 300, 3, 3, 0.5, 1, 0, 0, 0, 5)", TOOL, 61101),
     ("SLOT1(10, 0, 2, -5, 0, 0, 30, 12, 50, 40, 25, 0, 90, 80, 300, 3, 3, 0.5, 0)", TOOL, 61103),  # NUM 0
     # inner ends 25 - 9 = 16 from the centre, 30° apart: 2 × 16 × sin 15° = 8.3 < 12
     ("SLOT1(10, 0, 2, -5, 0, 2, 30, 12, 50, 40, 25, 0, 30, 80, 300, 3, 3, 0.5, 0)", TOOL, 61104),
