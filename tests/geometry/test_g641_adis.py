@@ -163,6 +163,11 @@ def _zigzag(mode: str) -> str:
     return "\n".join(lines + ["M30"]) + "\n"
 
 
+RUN_BUDGET_S = 600.0
+"""Simulated seconds a traced run may take (the drawn contours need under 100 s): a property
+test that runs programs has a time budget."""
+
+
 def _run_traced(text: str):
     motions: list = []
 
@@ -170,7 +175,8 @@ def _run_traced(text: str):
         motion.enable_trace()
         motions.append(motion)
 
-    result = run_program(MILL, MemorySource({"P.MPF": text}), NcData(), "P.MPF", on_motion=trace)
+    result = run_program(MILL, MemorySource({"P.MPF": text}), NcData(), "P.MPF", on_motion=trace,
+                         timeout_s=RUN_BUDGET_S)
     assert result.status == "ended" and not result.alarms
     return result, motions[-1]
 
