@@ -335,6 +335,33 @@ def try_door(template: Path, hostile: Hostile, door: str, work: Path) -> None:
     assert GENERATION[hostile.section](again) == 1
 
 
+def try_door_without_backup(template: Path, hostile: Hostile, door: str, work: Path) -> None:
+    """The main file damaged and ``hostile`` planted as its backup: 4060 (standard values) on
+    ``door``, both kept aside, nothing outside touched, the next start clean."""
+    data_dir = work / "data"
+    shutil.copytree(template, data_dir, symlinks=True)
+    victim = work / "victim.txt"
+    victim.write_text(VICTIM_TEXT)
+    program = work / "P.MPF"
+    program.write_text("G0 X1\nM30\n")
+    retained = data_dir / "retained"
+    main = retained / f"{hostile.section}.json"
+    document = json.loads(main.read_text())
+    main.write_text("damaged")
+    hostile.plant(backup_path(main), document, victim)
+
+    numbers, text = DOORS[door](data_dir, program)
+
+    assert "Traceback" not in text and "Internal error" not in text, text
+    assert numbers.count(4060) == 1 and 4065 not in numbers, (numbers, text)
+    if text:
+        assert f"Retained data {hostile.section}.json unreadable" in text, text
+    assert (retained / f"{hostile.section}.json.bad-1").read_text() == "damaged"
+    assert os.path.lexists(retained / f"{hostile.section}.json.bak.bad-1"), "the bad backup was not kept aside"
+    assert victim.read_text() == VICTIM_TEXT
+    assert Session.open(data_dir, install_samples=False).startup_alarms == []
+
+
 GENERATION: dict[str, Callable[[Session], Any]] = {
     "tools": lambda s: sorted(t for t, _d in s.ncdata.tools) == [1] and 1,
     "work_offsets": lambda s: -250.0 - s.ncdata.settable_frames["G54"].trans["X"],

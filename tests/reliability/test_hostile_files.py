@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from tests.reliability.hostile_files import (
-    CORPUS, DOORS, FAST_SAMPLE, FOLDER_CORPUS, make_template, try_door, try_folder_door,
+    CORPUS, DOORS, FAST_SAMPLE, FOLDER_CORPUS, make_template, try_door, try_door_without_backup,
+    try_folder_door,
 )
 
 
@@ -43,6 +44,19 @@ def test_every_hostile_file_gives_4065_and_the_backup(template, hostile, tmp_pat
 @pytest.mark.parametrize("hostile", _cases())
 def test_the_hostile_corpus_through_every_door(template, hostile, door, tmp_path) -> None:
     try_door(template, hostile, door, tmp_path)
+
+
+@pytest.mark.parametrize("door", sorted(DOORS))
+@pytest.mark.parametrize("hostile", _cases(("gud nested 100000 deep", "FIFO")))
+def test_a_hostile_backup_gives_4060_on_every_door(template, hostile, door, tmp_path) -> None:
+    try_door_without_backup(template, hostile, door, tmp_path)
+
+
+@pytest.mark.fuzz
+@pytest.mark.parametrize("door", sorted(DOORS))
+@pytest.mark.parametrize("hostile", _cases())
+def test_the_hostile_corpus_as_backups_through_every_door(template, hostile, door, tmp_path) -> None:
+    try_door_without_backup(template, hostile, door, tmp_path)
 
 
 @pytest.mark.parametrize("folder, kind", [pytest.param(f, k, id=f"{f} {k}") for f, k in FOLDER_CORPUS])
