@@ -124,6 +124,9 @@ class JobSetup:
         run = self._overlay or self._run  # type: ignore[attr-defined]
         if run is not None:
             return run.interp
+        last = getattr(self, "_last_interp", None)  # the one that ran last holds the channel's state
+        if last is not None:
+            return last
         return self._interpreters.get("AUTO") or self._interpreters.get("MDA") or self._interpreter("MDA")  # type: ignore[attr-defined]
 
     def _activate_stored_frames(self) -> None:
@@ -133,23 +136,24 @@ class JobSetup:
             if path is not None:
                 path.activate_stored_frames(interp.modal, positions)
 
-    # ------------------------------------------------------------ G groups kept at RESET
+    # ------------------------------------------------------------ the channel after a program
     def _share_kept_gcodes(self, ended: Any) -> None:
-        """A program ended or was reset in interpreter ``ended``: the G groups of MD20152 = 1
-        (e.g. the work offset chosen in T,S,M) hold for the channel, so every interpreter
-        (MDA, AUTO, the JOG display's) takes them over; one whose codes change loads its
-        frames at once."""
+        """A program ended or was reset in interpreter ``ended``: it holds the channel's state
+        now (the WCS display and Set WO read it: its tool, its frames); the G groups of
+        MD20152 = 1 (e.g. the work offset chosen in T,S,M) go to the other interpreters (MDA,
+        AUTO) too; one whose G codes change loads its frames at once."""
         modal = getattr(ended, "modal", None)  # an interpreter without G codes keeps none
         if modal is None:
             return
         keeps = kept_groups(self.machine)
         codes = {group: code for group, code in modal.gcodes.items() if group in keeps}
         self._kept_gcodes = codes
+        self._last_interp = ended
         positions = self._path_positions(self.motion)  # type: ignore[attr-defined]
         for interp in self._interpreters.values():
             other = getattr(interp, "modal", None)
             if interp is ended or other is None or all(other.gcodes.get(g) == c for g, c in codes.items()):
-                continue  # nothing changes there: its frames stay as they are (MD24006 …)
+                continue  # no G code changes there: its frames stay as they are (MD24006 …)
             self._take_kept_gcodes(interp)
             path = getattr(getattr(interp, "builder", None), "path", None)
             if path is not None:

@@ -160,8 +160,8 @@ class StatusView:
         Uses the real interpreter's motion builder when it offers ``wcs_from_mcs``
         (display only; any failure falls back to the last executed segment's offset).
         """
-        interp = run.interp if run is not None else (
-            self._interpreters.get("AUTO") or self._interpreters.get("MDA"))
+        interp = run.interp if run is not None else (  # else the one that ran last (its tool)
+            getattr(self, "_last_interp", None) or self._interpreters.get("AUTO") or self._interpreters.get("MDA"))
         builder = getattr(interp, "builder", None)
         modal = getattr(interp, "modal", None)
         convert = getattr(builder, "wcs_from_mcs", None)

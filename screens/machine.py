@@ -32,6 +32,7 @@ from hmi.widgets.positions import PositionWindow
 from hmi.widgets.tfs import TfsWindow
 from screens.machine_jog_form import FieldEdited
 from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
+from screens.machine_jog_touch import contact_line
 
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
 SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times")
@@ -441,6 +442,9 @@ class MachineScreen(AreaBase):
             text.append("  continuous\n", style="bold")
         text.append(f"\n Selected axis: {app.selected_axis or '—'}      "
                     f"Rapid overlay: {'ON' if app.rapid_overlay else 'off'}\n")
+        contact = contact_line(self.ask)
+        if contact:
+            text.append(f" {contact}\n", style="bold")
         # Two lines: one would wrap at the 120-column minimum (the window is 104 wide there).
         text.append(" Keys: Alt+X/Y/Z/C/V axis   Ctrl+Right / Ctrl+Left traverse   Alt+W rapid\n"
                     "       Alt+I increment   Alt+R REF   Alt+E REPOS\n", style="dim")

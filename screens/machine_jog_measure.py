@@ -187,7 +187,7 @@ class MeasureWindows:
             if z0 is None:
                 return "Z0: enter a number"
             # the surface's MCS is its WCS value Z0 plus the translations in force (from the
-            # offsets themselves: the JOG display of the WCS leaves the tool length out)
+            # offsets themselves, independent of the tool whose length is being measured)
             surface = z0 + self._translation_in_force("Z", status)
         return LengthPreview(modal.tool, modal.edge, surface, tool_length(z.position_mcs, surface))
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from nck.queries import ContactEvents, ReadData
+from nck.queries import ContactEvents, ProbeDeflected, ReadData
 from nck.status import NckStatus
 
 PROBE_TOOL_TYPE = 710
@@ -53,3 +53,19 @@ def touch_now(ask: Callable[[object], Any], status: NckStatus, after_seq: int = 
     newest = switched[-1]
     return Touch({name: float(newest.position_mcs.get(name, value)) for name, value in axes.items()},
                  newest.seq, probe=True)
+
+
+CONTACT_WORDS = {"probe": "probe switched", "scratch": "scratching", "crash": "crash"}
+
+
+def contact_line(ask: Callable[[object], Any]) -> str:
+    """The JOG view's line about the newest contact with the blank or the reference block
+    (empty before the first): what happened, where (MCS), and whether the probe is deflected."""
+    events = ask(ContactEvents())
+    if not events:
+        return ""
+    newest = events[-1]
+    where = "  ".join(f"{axis} {value:.3f}" for axis, value in newest.position_mcs.items())
+    solid = "blank" if newest.solid == "blank" else "reference block"
+    line = f"Last contact: {CONTACT_WORDS.get(newest.kind, newest.kind)} on the {solid} at {where} (MCS)"
+    return line + ("   — probe deflected" if ask(ProbeDeflected()) else "")

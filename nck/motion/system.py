@@ -464,6 +464,8 @@ class PlannedMotion(PathInterpolator):
             i = self.index[axis]
             if direction and self._refuse_without_enable(i):
                 return
+            if direction:
+                self.plan_pos = None  # the axis leaves the planned end: the next path starts where it stands
             self.jog.continuous(i, direction, velocity_mm_min, float(self.cmd[i]))
 
     def jog_increment(self, axis: str, distance_mm: float, velocity_mm_min: float) -> None:
@@ -472,6 +474,7 @@ class PlannedMotion(PathInterpolator):
             i = self.index[axis]
             if self._refuse_without_enable(i):
                 return
+            self.plan_pos = None  # as for continuous JOG
             self.jog.increment(i, distance_mm, velocity_mm_min, float(self.cmd[i]))
 
     def set_controller_enable(self, axis: str, enabled: bool) -> None:

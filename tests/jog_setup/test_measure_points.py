@@ -242,3 +242,16 @@ async def test_edge_with_the_probe_uses_its_trigger_not_where_it_braked() -> Non
         await pilot.pause()
         await burst(pilot, "right", "right")
         assert "Edge Z (MCS) -220.000" in info(app, "measwp"), info(app, "measwp")
+
+
+async def test_jog_view_shows_the_probe_switching() -> None:
+    """The probe moving +X switches at −75.5 (face −73.5, ball 2): the JOG view says so, with
+    the trigger position, and that the probe is deflected (it braked inside the overtravel)."""
+    app = HmiApp(kernel(1), realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        move_to(app, -100.0, 0.0)
+        probe(app, "X", 1)
+        await pilot.pause()
+        text = str(app.screen.query_one("#jog-info").render())
+        assert "Last contact: probe switched on the blank at X -75.500  Y 0.000  Z -80.000 (MCS)" in text, text
+        assert "probe deflected" in text

@@ -12,6 +12,7 @@ import pytest
 from nck import commands as cmd
 from nck.kernel import Nck
 from nck.machine import load_machine
+from nck.ncdata import ToolEdge
 
 from tests.jog_setup.kernels import run_in_mda_then_jog
 
@@ -51,3 +52,14 @@ def test_other_groups_still_reset() -> None:
     nck = run_in_mda_then_jog(g54_kernel(), "G54 G91 G1 X1 F1000\n")
     modal = nck.status().channel.modal
     assert (modal.gcodes[8], modal.gcodes[14]) == ("G54", "G90")
+
+
+def test_jog_display_after_an_mda_tool_change_subtracts_the_new_tools_length() -> None:
+    """T1 (L 75) loaded in MDA, G53 Z−50 puts the tip at MCS −50 (carrier 25); back in JOG
+    (G54 has no Z) the WCS Z is the MCS Z − 75 = −50 (the JOG display read an interpreter that
+    had not seen the tool change: it showed 25)."""
+    nck = g54_kernel()
+    nck.data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 75.0, 6: 5.0})
+    run_in_mda_then_jog(nck, "G54 T1 M6 D1\nG0 G53 Z-50\n")
+    z = {a.name: a for a in nck.status().axes}["Z"]
+    assert (z.position_mcs, z.position_wcs) == (pytest.approx(25.0), pytest.approx(-50.0))
