@@ -94,7 +94,7 @@ class SetupScreen(AreaBase):
         self.search = ""
         self.cursors = {view: TableCursor() for view in MD_VIEWS}
         self.table: DataTable | None = None
-        self.power_on_at = wall_clock()
+        self.power_on_at: datetime | None = None  # wall clock at the NCK's power on, set when first shown
         self._drawn_key: tuple = ()
 
     @property
@@ -370,6 +370,8 @@ class SetupScreen(AreaBase):
         text.append("   Stored, not active     " + (", ".join(pending) if pending else "none") + "\n")
         text.append("\n Date and time of the control\n", style="bold underline")
         seconds = status.time_s if status is not None else 0.0
+        if self.power_on_at is None:  # the area may be built long after power on
+            self.power_on_at = wall_clock() - timedelta(seconds=seconds)
         moment = self.power_on_at + timedelta(seconds=seconds)
         text.append(f"   Date / time            {moment:%Y-%m-%d %H:%M:%S}\n")
         whole = int(seconds)
