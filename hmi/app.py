@@ -369,8 +369,13 @@ class HmiApp(MachineControlPanel, App):
         return True
 
     def on_nck_status_changed(self, message: NckStatusChanged) -> None:
-        """Hand a new snapshot to the area screens of the current stack."""
-        self.show_snapshot(message.status)
+        """Hand the newest snapshot to the area screens of the current stack.
+
+        Not the message's own: it was read when it was posted, and keys queued before it
+        may have changed the kernel since (their commands show their snapshot at once).
+        Shown after them, the older snapshot would undo on screen what they did.
+        """
+        self.show_snapshot(self.bridge.status)
 
     def show_snapshot(self, status: NckStatus) -> None:
         """Hand ``status`` to the area screens of the current stack (once per snapshot)."""
