@@ -33,7 +33,7 @@ from typing import Any, Callable, Collection
 from nck import commands as cmd
 from nck.access import AccessControl
 from nck.alarms import AlarmServer
-from nck.block_search import SEARCH_TYPES, circle_tolerance
+from nck.block_search import circle_tolerance
 from nck.canon import (END_COMMANDS, AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand,
                        ToolSelect, UserAlarm)
 from nck.channel import (
@@ -46,6 +46,7 @@ from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
 from nck.kernel_contact import ContactState, ContactWatch
 from nck.kernel_manual import ManualControl
+from nck.kernel_search import BlockSearchControl
 from nck.kernel_settings import ControlSettings
 from nck.kernel_setup import JobSetup
 from nck.kernel_status import StatusView
@@ -53,7 +54,9 @@ from nck.machine import MachineConfig, load_machine
 from nck.motion.instant import InstantMotion, instant_motion_factory
 from nck.motion.system import planned_motion_factory
 from nck.ncdata import NcData
-from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, ProgramRun, RunEvent, RunOptions
+from nck.program_control import (
+    SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun, RunEvent, RunOptions,
+)
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry, NckStatus
 
 DEFAULT_IPO_S = 0.004
@@ -84,7 +87,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data)
 
 
-class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
+class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, BlockSearchControl):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -419,6 +422,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
                 run.requeue([], replace(approach, start_mcs=self._path_positions(self._path_motion())))
             self._transition("program_start")
             return Accepted()
+        self._start_serupro_spindles()
         self._resume_motion(run)
         run.continue_after_stop()
         self._transition("program_start")
@@ -527,6 +531,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
             self._estop_active = False
         self.alarms.set_message("", self._time_s)
         self._sit = next_state(self._sit, "reset") or self._sit
+        self._end_serupro()
         if not self._pc["program_test"]:
             self._test_motion = None
         self._activate_data("reset")  # stored MD of activation re/cf take effect
@@ -569,37 +574,6 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
         if mda_busy and self._sit.channel != RESET:
             return Rejected("MDA program in progress: RESET first")
         self._mda_text = command.text
-        return Accepted()
-
-    def _start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
-        if self._sit.mode != "AUTO":
-            return Rejected("Block search is possible in AUTOMATIC only")
-        if self._selected is None:
-            return Rejected("No program selected")
-        if command.search_type not in SEARCH_TYPES:
-            return Rejected(f"Unknown block search type {command.search_type}")
-        cascaded = self._run is not None and self._run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
-        if self._sit.channel != RESET and not cascaded:
-            return Rejected("Block search is possible only in channel reset")
-        interp = self._interpreter("AUTO")
-        interp.reset()
-        interp.start(self._selected)
-        run = self._new_run("AUTO", self._selected, interp)
-        try:
-            result = run.search(command.target, self._path_positions(self.motion), command.search_type)
-        except NcAlarmError:
-            interp.reset()
-            raise
-        if not result.found:
-            interp.reset()
-            return Rejected(f"Search target {command.target} not found")
-        self._run = run
-        self._overlay = None
-        self._owner = "AUTO"
-        self._repos_point = None
-        self._parked = None
-        self.runtime.start_from_reset()
-        self._transition("search_found")
         return Accepted()
 
     _HANDLERS: dict[type, str] = {
@@ -751,6 +725,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
                 self._path_motion().hold()
                 self._mark_interrupted(run)
                 self._transition("block_stop")
+                if event.text == SEARCH_TARGET_FOUND:
+                    self._serupro_target_found(run)
             elif event.kind == "end":
                 self._program_end(run, event.text)
 
@@ -767,6 +743,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch):
         if run.kind == "AUTO":
             self.counters.on_program_end(bool(self._pc["program_test"]))
             self.runtime.program_end()
+            self._end_serupro()  # the target was not found
         if kind in END_COMMANDS:
             self._aux.pop("T", None)  # no preselection beyond M2 / M30
             self._reset_spindles_at_program_end(run.name)

@@ -43,6 +43,9 @@ class ControlSettings(DataWrites):
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
+        refused = self._refuse_selection_in_serupro(name)  # type: ignore[attr-defined]
+        if refused is not None:
+            return refused
         if name == "single_block":
             text = None if value in (None, False, "") else str(value).upper()
             if text == "SBL3":

@@ -53,6 +53,7 @@ ENDED = "ended"
 REFUSED = "refused"  # the motion refused a block (10720 …): no block after it is prepared
 SEARCH_FOUND = "search_found"  # target found; NC START outputs the action blocks
 SEARCH_ACTIONS_DONE = "search_actions_done"  # 10208 pending; NC START approaches and continues
+SEARCH_TARGET_FOUND = "search target found"  # the stop reason at a found search target
 
 
 @dataclass(frozen=True, slots=True)
@@ -145,6 +146,7 @@ class ProgramRun:
         self._end_kind: str | None = None
         self._search: SearchResult | None = None
         self._end_point: EndPointStart | None = None  # type 4: how the target block's motion starts
+        self._stop_before: tuple[int | None, str] | None = None  # SERUPRO: stop before this target
 
     # -- feeding ------------------------------------------------------------
     def feed(self, motion: MotionSystem, options: RunOptions, budget_s: float) -> list[RunEvent]:
@@ -194,6 +196,12 @@ class ProgramRun:
                     break
                 budget_s -= max(0.0, result.cost_s)
                 blocks += 1
+                if self._stop_before is not None and self._is_target(result, *self._stop_before):
+                    self._stop_before = None  # SERUPRO: stop at the beginning of the target block
+                    self._take(result)
+                    self.blocks_executed -= 1
+                    self._stop_at_idle(SEARCH_TARGET_FOUND)
+                    break
                 self._take(result)
             if not self._emit(motion, options, events):
                 break  # motion buffer full: continue next cycle
@@ -440,6 +448,8 @@ class ProgramRun:
         block = self.current
         if block is None or not self.pushed:
             return None
+        if block is self._pending and self.stop_reason == SEARCH_TARGET_FOUND:
+            return None  # SERUPRO stands before its target block: show it
         if not any(isinstance(c, (Motion, Dwell)) for c in block.commands):
             return None
         return self.pushed[-1].source
@@ -532,7 +542,11 @@ class ProgramRun:
         self.blocks_executed -= 1
         self._search = result
         self.phase = SEARCH_FOUND
-        self.stop_reason = "search target found"
+        self.stop_reason = SEARCH_TARGET_FOUND
+
+    def stop_before(self, target: str) -> None:
+        """SERUPRO: run, and stop (reason "search target found") before the block ``target``."""
+        self._stop_before = parse_search_target(target)
 
     @staticmethod
     def _is_target(block: BlockResult, number: int | None, text: str) -> bool:

@@ -41,8 +41,9 @@ SEARCH_MODES = {
     "contour": "with calculation, contour",
     "end_point": "with calculation, end point",
     "without_calculation": "without calculation",
+    "serupro": "by program test (SERUPRO)",
 }
-"""The block search types the search view offers (002 L18283-18302; :mod:`nck.block_search`)."""
+"""The block search types the search view offers (002 L18283-18309; :mod:`nck.block_search`)."""
 """Program selection needs keyswitch position 1 (access level 6) or better."""
 
 
@@ -105,7 +106,7 @@ class MachineScreen(AreaBase):
             with Vertical(id="view-search", classes="view"):
                 yield Static("", id="search-title", classes="view-title", markup=False)
                 yield Static(" Search target: a block number (N70) or text in the block; "
-                             "Enter or ⇧F1 starts the search, ⇧F2-⇧F4 choose the search mode.",
+                             "Enter or ⇧F1 starts the search, ⇧F2-⇧F5 choose the search mode.",
                              markup=False)
                 yield Input(placeholder="N…", id="search-input")
                 yield Static("", id="search-info", markup=False)
@@ -170,6 +171,7 @@ class MachineScreen(AreaBase):
                 self._search_mode_key("search.contour", "Contour", "contour"),
                 self._search_mode_key("search.end_point", "End\npoint", "end_point"),
                 self._search_mode_key("search.without", "Without\ncalculation", "without_calculation"),
+                self._search_mode_key("search.serupro", "SERUPRO", "serupro"),
             ]
         if view == "times":
             return [

@@ -168,3 +168,63 @@ def test_digest_828d_2_rank_25_cascaded_search_may_change_the_type() -> None:
 def test_block_search_refuses_an_unknown_type() -> None:
     nck = linear()
     assert isinstance(nck.submit(c.StartBlockSearch("N30", "sideways")), c.Rejected)
+
+
+SPINDLE_PROGRAM = "N10 G0 X10 Y10\nN20 T1 D1\nN30 S3000 M3\nN40 G1 X50 F1200\nN50 G1 Y40\nN60 G1 X0\nN70 M30"
+
+
+def spindle_program() -> Nck:
+    nck = Nck(programs=MemorySource({"P.MPF": SPINDLE_PROGRAM}), referenced=True)
+    assert nck.submit(c.WriteData("$TC_DP1[1,1]", 120)) == c.Accepted()
+    nck.submit(c.SelectMode("AUTO"))
+    nck.submit(c.SelectProgram("P.MPF"))
+    return nck
+
+
+def test_digest_828d_2_rank_25_serupro_runs_in_program_test_and_repositions_to_the_target() -> None:
+    """Digest 828d-2 rank 25, type 5 (002 L18994-19027): SERUPRO to N50 runs the program in
+    program test (channel active, the machine stands), stops at the beginning of N50 with
+    "search target found" and program test deselected; NC START starts the spindle (M3 S3000
+    of N30) and repositions to the start of N50 = the end of N40 (50, 10), then N50 and N60
+    run to (0, 40)."""
+    nck = spindle_program()
+    assert nck.submit(c.StartBlockSearch("N50", "serupro")) == c.Accepted()
+    assert (nck.situation.channel, nck.situation.program) == ("active", "running")
+    assert nck.run_until(lambda k: k.situation.program != "running", 30.0)
+    status = nck.status()
+    assert (nck.situation.channel, nck.situation.program) == ("interrupted", "stopped")
+    assert status.channel.stop_reason == "search target found"
+    assert status.channel.current_block.text.startswith("N50")
+    assert position(nck) == {"X": 0.0, "Y": 0.0, "Z": 0.0}  # nothing moved
+    assert not status.channel.program_control.get("program_test")
+    assert nck.submit(c.CycleStart()) == c.Accepted()  # one NC START: no 10208 in SERUPRO
+    assert alarms(nck) == []
+    assert nck.status().channel.modal.spindle_state == "M3"
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] >= 50.0 - 1e-6, 30.0)
+    assert position(nck) == pytest.approx({"X": 50.0, "Y": 10.0, "Z": 0.0})
+    assert nck.run_until(lambda k: k.situation.program == "aborted", 30.0)
+    assert position(nck) == pytest.approx({"X": 0.0, "Y": 40.0, "Z": 0.0})
+    assert alarms(nck) == []
+
+
+def test_digest_828d_2_rank_25_serupro_refuses_program_test_and_dry_run_with_16935() -> None:
+    """Digest 828d-2 rank 25, type 5 (002 L19011-19012): selecting program test or dry run while
+    SERUPRO runs is refused with 16935; RESET aborts SERUPRO (002 L19035-19036) and program
+    test is off again."""
+    nck = spindle_program()
+    assert nck.submit(c.StartBlockSearch("N50", "serupro")) == c.Accepted()
+    result = nck.submit(c.SetProgramControl("dry_run", True))
+    assert isinstance(result, c.Rejected) and result.alarm == 16935
+    assert 16935 in alarms(nck)
+    assert nck.submit(c.Reset()) == c.Accepted()
+    assert (nck.situation.channel, nck.situation.program) == ("reset", "aborted")
+    assert not nck.status().channel.program_control.get("program_test")
+
+
+def test_digest_828d_2_rank_25_serupro_is_no_cascaded_search() -> None:
+    """Digest 828d-2 rank 25, type 5: SERUPRO cannot be combined with another search type
+    (002 L18325-18332 lists cascading for types 1-4 only): from "search target found" it is
+    refused."""
+    nck = spindle_program()
+    assert nck.submit(c.StartBlockSearch("N40", "contour")) == c.Accepted()
+    assert isinstance(nck.submit(c.StartBlockSearch("N50", "serupro")), c.Rejected)

@@ -60,3 +60,22 @@ async def test_without_calculation_in_one_burst(programs) -> None:  # noqa: F811
         assert positions(status)["Z"] == pytest.approx(0.0, abs=TOL_MM)
         assert app.screen.search_type == "without_calculation"
         assert app.screen.query_one("#search-input", Input).value == "N20"  # ⇧F4 typed nothing
+
+
+async def test_serupro_softkey_runs_to_the_target_and_one_nc_start_repositions(programs) -> None:  # noqa: F811
+    """⇧F5 "SERUPRO", target N30 (002 L18994-19027): the program runs in program test (the
+    machine stands) and stops before N30; one NC START repositions to N30's start (X10 Y0 Z10,
+    the end of N20) and the program ends at X0 Y10 Z10."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await select_in_auto(pilot, "STEP.MPF")
+        await pilot.press("f5", "shift+f5", "N", "3", "0", "enter")
+        await pilot.pause()
+        status = app.bridge.run_until(lambda s: s.channel.stop_reason == "search target found", max_s=20)
+        assert positions(status) == pytest.approx({"X": 0.0, "Y": 0.0, "Z": 0.0, "SP": 0.0})
+        await pilot.press("alt+g")
+        status = app.bridge.run_until(lambda s: positions(s)["X"] >= 10.0 - TOL_MM, max_s=10)
+        assert positions(status)["Z"] == pytest.approx(10.0, abs=TOL_MM)
+        status = settle(app, lambda s: s.channel.channel_state == "reset", max_s=20)
+        assert positions(status)["X"] == pytest.approx(0.0, abs=TOL_MM)
+        assert positions(status)["Y"] == pytest.approx(10.0, abs=TOL_MM)
