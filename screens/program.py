@@ -35,6 +35,7 @@ from nck.commands import Rejected
 from nck.status import NckStatus
 
 from hmi.area import AreaBase
+from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.program_files import ProgramFiles, decode_program
@@ -343,6 +344,10 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
 
     def _ask_after_leave(self) -> None:
         if self.app.current_mode == self.AREA_ID or not self.is_modified():
+            return
+        if isinstance(self.app.screen, AreaDialog):
+            # A key behind the area key opened a dialog first (Ctrl+Q asks about this text
+            # too): no second question over it; the text waits in the editor and the journal.
             return
         self._ask_unsaved(after="stay")
 

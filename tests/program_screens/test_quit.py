@@ -125,3 +125,21 @@ async def test_unattended_quit_with_a_journal_write_failure_still_ends_and_says_
         assert app.return_code == 143
     assert app.exit_notes == [
         "hmi: unsaved text could not be kept in the journal: [Errno 28] No space left on device"]
+
+
+async def test_area_key_and_quit_in_one_burst_ask_once(data_dir: Path) -> None:
+    """Unsaved text, then Alt+M Ctrl+Q in one burst (found in tmux, issue 18): the quit question
+    is the one on top and the only one (it names the unsaved program); the leave-editor question,
+    asked after the area change, no longer lands over it so that Y went to the wrong dialog."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_demo_and_type(app, pilot, "N5")
+        journal_dir = app.screen.files.journal_dir
+        await burst(pilot, "alt+m", "ctrl+q")
+        await settle(pilot)
+        dialogs = [type(s).__name__ for s in app.screen_stack if type(s).__name__.endswith("Dialog")]
+        assert dialogs == ["ConfirmDialog"]
+        assert "Unsaved changes in MPF/DEMO.MPF." in str(app.screen.query_one("#confirm-question").render())
+        await burst(pilot, "y")
+        assert app.return_code == 0
+    assert [e.program for e in EditorJournal(journal_dir).entries()] == ["MPF/DEMO.MPF"]
