@@ -66,7 +66,9 @@ class ValueDialog(AreaDialog[str | None]):
     """Enter one value or a password: Enter confirms, F10 or Esc cancels; returns the text typed.
 
     ``hint`` is a line about the value (unit, limits, activation) above the field. A value
-    is returned without surrounding blanks; a password exactly as typed.
+    is returned without surrounding blanks; a password exactly as typed. The value shown is
+    selected, so that typing replaces it; ``typed`` is input already begun (a character typed
+    on a table cell): the cursor stands behind it and the typing goes on.
     """
 
     DEFAULT_CSS = """
@@ -74,10 +76,12 @@ class ValueDialog(AreaDialog[str | None]):
     """
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
 
-    def __init__(self, title: str, value: str = "", hint: str = "", password: bool = False) -> None:
+    def __init__(self, title: str, value: str = "", hint: str = "", password: bool = False,
+                 typed: str = "") -> None:
         super().__init__(classes="value-dialog")
         self._title = title
-        self._value = value
+        self._value = typed or value
+        self._typed = bool(typed)
         self._hint = hint
         self._password = password
 
@@ -87,7 +91,8 @@ class ValueDialog(AreaDialog[str | None]):
             yield Static(self._title, id="value-title", markup=False)
             if self._hint:
                 yield Static(self._hint, id="value-hint", markup=False)
-            yield Input(self._value, password=self._password, id="value-input")
+            yield Input(self._value, password=self._password, id="value-input",
+                        select_on_focus=not self._typed)
             yield Static("Enter confirm   F10 / Esc cancel", id="value-keys")
 
     def on_mount(self) -> None:

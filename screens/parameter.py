@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, ClassVar
 
+from textual import events
 from textual.app import ComposeResult
 
 from nck import commands as cmd
@@ -25,7 +26,7 @@ from hmi.area import AreaBase
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow,
+    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, typed_on_cell,
 )
 from screens.parameter_views import (
     active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,
@@ -182,8 +183,19 @@ class ParameterScreen(AreaBase):
         self.refresh_table()
         self.refresh_softkeys()
 
-    def action_edit(self) -> None:
-        """Enter / Edit: an input field for the selected value."""
+    def on_key(self, event: events.Key) -> None:
+        """A character typed on the selected cell starts its input (it replaces the value)."""
+        typed = typed_on_cell(event)
+        if typed is not None and self.table is not None:
+            event.stop()
+            event.prevent_default()
+            self.action_edit(typed)
+
+    def action_edit(self, typed: str = "") -> None:
+        """Enter / Edit: an input field for the selected value.
+
+        ``typed``: the character typed on the cell, which the field starts with instead of the value.
+        """
         if self.table is None:
             return
         cursor = self.cursors[self.view]
@@ -200,7 +212,7 @@ class ParameterScreen(AreaBase):
             if text is not None:
                 self.write(name, text.strip())
 
-        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint), write)
+        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint, typed=typed), write)
 
     def write(self, name: str, value: object) -> bool:
         """Send one ``WriteData``; True when the kernel took it."""

@@ -17,6 +17,7 @@ from datetime import datetime, timedelta
 from typing import Any, Callable, ClassVar
 
 from rich.text import Text
+from textual import events
 from textual.app import ComposeResult
 from textual.widgets import Input, Static
 
@@ -30,7 +31,7 @@ from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow,
+    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, typed_on_cell,
 )
 
 MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",
@@ -204,8 +205,19 @@ class SetupScreen(AreaBase):
             self.cursors[self.view].move(self.table, int(rows), int(columns))
             self.refresh_view()
 
-    def action_edit(self) -> None:
-        """Enter / Edit: an input field for the selected machine datum."""
+    def on_key(self, event: events.Key) -> None:
+        """A character typed on the selected cell starts its input (it replaces the value)."""
+        typed = typed_on_cell(event)
+        if typed is not None and self.table is not None:
+            event.stop()
+            event.prevent_default()
+            self.action_edit(typed)
+
+    def action_edit(self, typed: str = "") -> None:
+        """Enter / Edit: an input field for the selected machine datum.
+
+        ``typed``: the character typed on the cell, which the field starts with instead of the value.
+        """
         if self.table is None or self.view not in MD_VIEWS:
             return
         cursor = self.cursors[self.view]
@@ -235,7 +247,7 @@ class SetupScreen(AreaBase):
                 self.hmi.set_hint(f"{target} = {value}: takes effect {ACTIVATION_TEXT[definition.activation]}")
             self.refresh_view()
 
-        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint), write)
+        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint, typed=typed), write)
 
     def action_new_config(self) -> None:
         """Set MD active (cf): stored machine data of activation cf and re take effect."""

@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from rich.text import Text
+from textual import events
 from textual.binding import Binding
 from textual.widget import Widget
 
@@ -27,6 +28,19 @@ EDIT_BINDINGS = [  # the keys of an editable table (screen bindings)
     Binding("pagedown", "cursor(20, 0)", "Page down", show=False),
     Binding("enter", "edit", "Edit", show=False),
 ]
+
+
+def typed_on_cell(event: events.Key) -> str | None:
+    """The character a key types on the selected cell of an editable table, or None.
+
+    On the control, typing on a selected value starts its input: the typed character
+    replaces the value and the input goes on in the field (Enter, Tab and the keymap's
+    keys are no characters here; they arrive as bindings).
+    """
+    character = event.character
+    if event.is_printable and character is not None and len(character) == 1 and character.isprintable():
+        return character
+    return None
 
 
 @dataclass(frozen=True, slots=True)

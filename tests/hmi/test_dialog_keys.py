@@ -78,3 +78,21 @@ async def test_key_the_table_ignores_never_edits_the_dialog_opened_behind_it(tmp
             await burst(pilot, "escape")
             assert app.screen is screen
         assert table_cell(app, 0, 5) == "75.500"
+
+
+async def test_typing_on_a_selected_cell_starts_its_input(tmp_path: Path) -> None:
+    """A value typed on the selected cell replaces it, as on the control: the first
+    character opens the input field with itself in place of the old value, the rest and
+    Enter follow (issue 18, found in tmux: ``0.1`` Enter on Length 1 was dropped and Enter
+    wrote the old value back). Tool list and work offsets, each as one burst."""
+    app = trainer(tmp_path)
+    fill(app)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+t", "alt+t", "alt+t", "alt+o", "right")  # keyswitch 3, Length 1
+        screen = app.screen
+        await burst(pilot, *"120.5", "enter", "right", *"-2", "enter")
+        assert app.screen is screen
+        assert table_cell(app, 0, 5) == "120.500"
+        assert table_cell(app, 0, 6) == "-2.000"  # Length 2
+        await burst(pilot, "f3", "down", *"7.25", "enter")  # work offsets overview, G54 X
+        assert app.bridge.nck.data.settable_frames["G54"].trans["X"] == 7.25
