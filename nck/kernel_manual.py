@@ -133,6 +133,9 @@ class ManualControl:
     def _jog_velocity(self, axis: str, rapid: bool) -> float:
         if rapid:
             return float(self.machine.md_value("MD32010", axis, DEFAULT_JOG_RAPID_MM_MIN) or DEFAULT_JOG_RAPID_MM_MIN)
+        set_velo = float(self._setting("SD41110", 0.0) or 0.0)  # type: ignore[attr-defined]
+        if set_velo > 0.0 and self.machine.axis(axis).kind == "linear":
+            return set_velo  # SD41110 JOG_SET_VELO: the JOG feed of linear axes; 0 = MD32020
         return float(self.machine.md_value("MD32020", axis, DEFAULT_JOG_MM_MIN) or DEFAULT_JOG_MM_MIN)
 
     def _increment_mm(self) -> float:

@@ -33,3 +33,19 @@ def test_program_after_jog_inc_starts_at_the_actual_position(first_block: str) -
     run_in_mda_then_jog(nck, f"{first_block}\nG0 X10 Y10 Z5\n")
     assert nck.alarms.active == ()
     assert [nck.positions_mcs()[a] for a in "XYZ"] == pytest.approx([10.0, 10.0, 80.0])
+
+
+@pytest.mark.parametrize("set_velo, expected_mm_min", [(600.0, 600.0), (0.0, 2000.0)])
+def test_jog_feed_of_settings_sd41110_moves_the_axes(set_velo: float, expected_mm_min: float) -> None:
+    """Settings of JOG writes SD41110 JOG_SET_VELO; the axes then jog at it (0: MD32020, 2000
+    mm/min on the shipped mill) — the kernel read only MD32020 before. Velocity after 1 s of
+    continuous JOG (the ramp is over), feed override 100 %."""
+    nck = Nck(referenced=True)
+    nck.data.setting_data["SD41110"] = set_velo
+    assert nck.submit(cmd.SelectMode("JOG")) == cmd.Accepted()
+    assert nck.submit(cmd.Jog("X", 1)) == cmd.Accepted()
+    for _ in range(100):
+        nck.tick(0.01)
+    x = {a.name: a for a in nck.status().axes}["X"]
+    nck.submit(cmd.Jog("X", 0))
+    assert x.velocity == pytest.approx(expected_mm_min, rel=1e-3)
