@@ -64,3 +64,9 @@ WRONG_CALL_ARGUMENTS = 14020
 
 STOCK_REMOVAL_CONTOUR_ERROR = 10931
 """Error in the stock removal contour (a turning cycle's contour subprogram)."""
+
+VALUE_BELOW_LOWER_LIMIT = 17080
+"""Value of %3 below the lower limit."""
+
+VALUE_ABOVE_UPPER_LIMIT = 17090
+"""Value of %3 above the upper limit."""

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from nck.access import AccessControl, AccessDenied, Action, action_for_write, action_rules, required_level
+from nck.alarm_ids import VALUE_ABOVE_UPPER_LIMIT, VALUE_BELOW_LOWER_LIMIT
 from nck.machine_data import DataError, MachineDataStore, WriteResult
 from nck.ncdata import NcData, ToolEdge, WorkOffset
 from nck.value_text import InvalidValue, number_from_text
@@ -47,6 +48,53 @@ _R = re.compile(r"^R(?:(\d+)|\[\s*(\d+)\s*\])$")
 
 class WriteRefused(Exception):
     """The value does not fit the datum (type, limits) or the datum does not exist; nothing changed."""
+
+
+class ValueOutOfLimits(WriteRefused):
+    """A number outside the datum's limits; ``above`` says which (a part program's alarm:
+    17090 above the upper limit, else 17080 below the lower one)."""
+
+    def __init__(self, message: str, *, above: bool) -> None:
+        super().__init__(message)
+        self.above = above
+
+    @property
+    def alarm(self) -> int:
+        """The NC alarm of a part program's write: 17090 above the upper limit, 17080 below the lower."""
+        return VALUE_ABOVE_UPPER_LIMIT if self.above else VALUE_BELOW_LOWER_LIMIT
+
+
+def _within(number: float, low: float, high: float, message: str) -> None:
+    if not low <= number <= high:
+        raise ValueOutOfLimits(message, above=not number < low)
+
+
+def check_tool_value(param: int, number: float) -> None:
+    """Raise unless ``number`` fits ``$TC_DP<param>`` — the rule of every door, part programs too.
+
+    WriteRefused for a fraction in a whole-number datum (type, edge position), ValueOutOfLimits
+    for a number outside its limits.
+    """
+    if param in (1, 2) and not number.is_integer():
+        raise WriteRefused(f"$TC_DP{param} ({'tool type' if param == 1 else 'edge position'}) "
+                           "is a whole number")
+    if param == 1:
+        _within(number, 0, 999, "tool type outside 0 … 999")
+    if param == 2:
+        _within(number, 0, 9, "cutting edge position outside 0 … 9")
+    _within(number, -TOOL_VALUE_LIMIT_MM, TOOL_VALUE_LIMIT_MM, f"$TC_DP{param} outside ±{TOOL_VALUE_LIMIT_MM:g}")
+
+
+def check_frame_component(comp: str, number: float) -> None:
+    """Raise ValueOutOfLimits unless ``number`` (mm, degrees or a factor) fits frame component
+    ``comp`` (TR, FI, RT, SC) of a stored work offset — the rule of every door, part programs too."""
+    if comp in ("TR", "FI"):
+        _within(number, -FRAME_TRANSLATION_LIMIT_MM, FRAME_TRANSLATION_LIMIT_MM,
+                f"translation outside ±{FRAME_TRANSLATION_LIMIT_MM:g} mm")
+    elif comp == "RT":
+        _within(number, -360.0, 360.0, "rotation outside -360 … 360 degrees")
+    elif comp == "SC" and (number <= 0.0 or number > 1000.0):
+        raise ValueOutOfLimits("scale factor outside 0 … 1000 (0 not allowed)", above=number > 0.0)
 
 
 def settable_frame_name(index: int) -> str:
@@ -197,15 +245,7 @@ class DataWriter:
         if not 1 <= edge <= TOOL_EDGE_MAX:
             raise WriteRefused(f"cutting edge D{edge} outside 1 … {TOOL_EDGE_MAX}")
         number = finite_number(value, name)
-        if param in (1, 2) and not number.is_integer():
-            raise WriteRefused(f"$TC_DP{param} ({'tool type' if param == 1 else 'edge position'}) "
-                               "is a whole number")
-        if param == 1 and not 0 <= number <= 999:
-            raise WriteRefused("tool type outside 0 … 999")
-        if param == 2 and not 0 <= number <= 9:
-            raise WriteRefused("cutting edge position outside 0 … 9")
-        if abs(number) > TOOL_VALUE_LIMIT_MM:
-            raise WriteRefused(f"$TC_DP{param} outside ±{TOOL_VALUE_LIMIT_MM:g}")
+        check_tool_value(param, number)
         edge_count = int(self.store.value("MD18100"))
         if not self.data.has_room_for_edge(tool, edge, edge_count):
             raise WriteRefused(f"the tool offset memory holds {edge_count} cutting edges (MD18100): "
@@ -227,12 +267,7 @@ class DataWriter:
         if comp not in FRAME_COMPONENTS:
             raise WriteRefused(f"frame component {comp} does not exist (TR FI RT SC MI)")
         number = finite_number(value, f"{frame} {axis} {FRAME_COMPONENT_TEXT[comp]}")
-        if comp in ("TR", "FI") and abs(number) > FRAME_TRANSLATION_LIMIT_MM:
-            raise WriteRefused(f"translation outside ±{FRAME_TRANSLATION_LIMIT_MM:g} mm")
-        if comp == "RT" and not -360.0 <= number <= 360.0:
-            raise WriteRefused("rotation outside -360 … 360 degrees")
-        if comp == "SC" and (number <= 0.0 or number > 1000.0):
-            raise WriteRefused("scale factor outside 0 … 1000 (0 not allowed)")
+        check_frame_component(comp, number)
         if comp == "MI" and number not in (0.0, 1.0):
             raise WriteRefused("mirror is 0 or 1")
         if comp == "FI":
@@ -284,5 +319,5 @@ def _like(current: Any, value: Any, name: str) -> Any:
     raise WriteRefused(f"{name} cannot be written here")
 
 
-__all__ = ["DataWriter", "WriteRefused", "Written", "finite_number", "settable_frame_index",
-           "settable_frame_name"]
+__all__ = ["DataWriter", "ValueOutOfLimits", "WriteRefused", "Written", "check_frame_component",
+           "check_tool_value", "finite_number", "settable_frame_index", "settable_frame_name"]

@@ -27,6 +27,7 @@ from nck.errors import NcAlarmError
 from nck.geometry.chain import frame_from_work_offset
 from nck.geometry.frames import Frame, as_matrix3, rpy_matrix
 from nck.ncdata import WorkOffset
+from nck.writes import ValueOutOfLimits, check_frame_component
 
 COMPONENTS = frozenset(("TR", "FI", "RT", "SC", "MI"))
 NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_IFRAME", "$P_UIFRNUM", "$AA_IW", "$P_SETFR"))
@@ -111,7 +112,7 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     if name == "$P_SETFR":
         axis, comp = _setframe_address(interp, name, indices)
         _guard_setframe(interp)
-        _set_stored(interp.data.setframe, axis, comp, number, path.units(modal).data_mm)
+        _set_stored(interp.data.setframe, name, axis, comp, number, path.units(modal).data_mm)
         return
     if name == "$P_PFRAME":
         axis, comp = _address(interp, name, indices)
@@ -141,7 +142,7 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
             offset = interp.data.base_frame
             rest = indices
         axis, comp = _address(interp, name, rest)
-        _set_stored(offset, axis, comp, number, path.units(modal).data_mm)
+        _set_stored(offset, name, axis, comp, number, path.units(modal).data_mm)
         return
     raise NcAlarmError(DATA_WRITE_PROTECTED, name)
 
@@ -247,14 +248,23 @@ def _whole_frame_write(interp: Any, name: str, indices: tuple[Any, ...], value: 
         return
     if name == "$P_UBFR" and not indices:
         _guard_stored(interp, name, None)
-        interp.data.base_frame = work_offset_of(frame)
+        interp.data.base_frame = _checked_offset(name, frame)
         return
     if name == "$P_UIFR" and len(indices) == 1:
         code = settable_code(_int(indices[0], name))
         _guard_stored(interp, name, code)
-        interp.data.settable_frames[code] = work_offset_of(frame)
+        interp.data.settable_frames[code] = _checked_offset(name, frame)
         return
     raise NcAlarmError(ALARM_INDEX, name)
+
+
+def _checked_offset(name: str, frame: Frame) -> WorkOffset:
+    """``frame`` as a stored work offset, each component checked (:func:`_check_stored`)."""
+    offset = work_offset_of(frame)
+    for comp, values in (("TR", offset.trans), ("FI", offset.fine), ("RT", offset.rot), ("SC", offset.scale)):
+        for value in values.values():
+            _check_stored(name, comp, value)
+    return offset
 
 
 def work_offset_of(frame: Frame) -> WorkOffset:
@@ -351,7 +361,18 @@ def _stored_component(offset: WorkOffset, axis: str, comp: str, data_mm: float) 
     return _component(frame, axis, comp, 1.0)
 
 
-def _set_stored(offset: WorkOffset, axis: str, comp: str, value: float, data_mm: float) -> None:
+def _check_stored(name: str, comp: str, value: float) -> None:
+    """A stored frame takes what every door's write takes (nck.writes); else alarm 17080/17090."""
+    try:
+        check_frame_component(comp, value)
+    except ValueOutOfLimits as exc:
+        raise NcAlarmError(exc.alarm, name) from None
+
+
+def _set_stored(offset: WorkOffset, name: str, axis: str, comp: str, value: float, data_mm: float) -> None:
+    if comp == "SC" and value == 0.0:
+        raise NcAlarmError(ALARM_SCALE_ZERO, axis)
+    _check_stored(name, comp, value * data_mm if comp in ("TR", "FI") else value)
     if comp == "TR":
         offset.trans[axis] = value * data_mm
     elif comp == "FI":
@@ -359,8 +380,6 @@ def _set_stored(offset: WorkOffset, axis: str, comp: str, value: float, data_mm:
     elif comp == "RT":
         offset.rot[axis] = value
     elif comp == "SC":
-        if value == 0.0:
-            raise NcAlarmError(ALARM_SCALE_ZERO, axis)
         offset.scale[axis] = value
     else:
         offset.mirror[axis] = bool(value)
