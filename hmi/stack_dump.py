@@ -4,7 +4,7 @@ A stuck or busy ``hmi`` (a classroom server's session, an orphan after its
 terminal went away) is examined with ``kill -USR1 <pid>``; the stacks are
 appended to ``<data dir>/hmi/thread-stacks.txt``. They go to a file, not to
 stderr: the terminal shows the panel, or is gone. The file is emptied at each
-start and never written through a link.
+start and never written through a link (symbolic or hard).
 """
 
 from __future__ import annotations
@@ -41,9 +41,11 @@ def register_stack_dump(folder: Path) -> int | None:
         if exc.errno == errno.ELOOP:
             raise OSError(errno.EINVAL, "not a regular file (a link)", str(path)) from None
         raise
-    if not stat.S_ISREG(os.fstat(handle).st_mode):
+    status = os.fstat(handle)
+    if not stat.S_ISREG(status.st_mode) or status.st_nlink != 1:
         os.close(handle)
-        raise OSError(errno.EINVAL, "not a regular file (a pipe or device)", str(path))
+        kind = "a pipe or device" if not stat.S_ISREG(status.st_mode) else "a hard link of another file"
+        raise OSError(errno.EINVAL, f"not a regular file of its own ({kind})", str(path))
     os.ftruncate(handle, 0)  # only after the check: a device is never truncated
     os.set_blocking(handle, True)
     faulthandler.register(STACK_DUMP_SIGNAL, file=handle, all_threads=True)

@@ -45,6 +45,17 @@ def test_the_file_is_never_written_through_a_link(tmp_path: Path, restore_sigusr
     assert outside.read_text() == "keep"
 
 
+def test_a_hard_link_of_another_file_is_neither_truncated_nor_written(tmp_path: Path, restore_sigusr1) -> None:
+    """A hard link shares its content with the outside file: the start would truncate it."""
+    outside = tmp_path / "outside.txt"
+    outside.write_text("keep")
+    (tmp_path / "hmi").mkdir()
+    os.link(outside, tmp_path / "hmi" / STACK_FILE_NAME)
+    with pytest.raises(OSError, match="hard link"):
+        register_stack_dump(tmp_path / "hmi")
+    assert outside.read_text() == "keep"
+
+
 def test_a_fifo_in_its_place_is_refused_without_blocking(tmp_path: Path, restore_sigusr1) -> None:
     (tmp_path / "hmi").mkdir()
     os.mkfifo(tmp_path / "hmi" / STACK_FILE_NAME)
