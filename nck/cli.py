@@ -29,7 +29,7 @@ from nck.interp.sources import DirectorySource, read_text_file
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
 from nck.regular_files import export_text_stream
-from nck.termination import exit_on_termination
+from nck.termination import INTERRUPTED_EXIT, exit_on_termination
 
 
 wait_s = time.sleep
@@ -80,13 +80,16 @@ def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``nck`` console script; returns the exit code.
 
     SIGTERM and SIGHUP end a command like a normal exit (:mod:`nck.termination`),
-    so a temporary copy of the data directory is removed and the lock given free.
+    so a temporary copy of the data directory is removed and the lock given free;
+    Ctrl+C too, with exit code 130 and no traceback.
     """
     with exit_on_termination():
         try:
             return _main(sys.argv[1:] if argv is None else list(argv))
         except BrokenPipeError:
             return _stdout_closed()
+        except KeyboardInterrupt:  # the clean-up ran on the way out
+            return INTERRUPTED_EXIT
 
 
 def _stdout_closed() -> int:

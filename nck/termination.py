@@ -6,6 +6,8 @@ and SIGHUP (the terminal was closed) end a Python process at once by default:
 the data directory (``--ephemeral``) would stay behind. Inside
 :func:`exit_on_termination` such a signal raises ``SystemExit`` instead, with
 the exit code a shell shows for a process ended by that signal (128 + number).
+Ctrl+C raises ``KeyboardInterrupt`` on its own; a command that catches it at its
+entry point ends with :data:`INTERRUPTED_EXIT` after its clean-up ran.
 """
 
 from __future__ import annotations
@@ -13,6 +15,9 @@ from __future__ import annotations
 import signal
 from contextlib import contextmanager
 from typing import Iterator
+
+INTERRUPTED_EXIT = 128 + int(signal.SIGINT)
+"""Exit code of a command ended by Ctrl+C (``KeyboardInterrupt``), as a shell shows it."""
 
 TERMINATION_SIGNALS = tuple(getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name))
 

@@ -90,7 +90,9 @@ def test_a_failed_start_leaves_no_copy(tmp_path: Path, private_temp: Path, capsy
     assert _copies(private_temp) == []
 
 
-def test_sigterm_removes_the_copy(tmp_path: Path, private_temp: Path) -> None:
+@pytest.mark.parametrize("ending", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "Ctrl+C"])
+def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, ending: int) -> None:
+    """Ctrl+C (SIGINT) ends like SIGTERM: the copy goes, exit code 128 + signal, no traceback."""
     data_dir = _data_dir(tmp_path)
     (data_dir / "retained" / "mda.json").write_text("damaged")  # 4060 on stderr: the copy is made
     program = tmp_path / "LOOP.MPF"
@@ -102,9 +104,9 @@ def test_sigterm_removes_the_copy(tmp_path: Path, private_temp: Path) -> None:
     assert proc.stderr is not None
     assert "ALARM 4060" in proc.stderr.readline()
     assert len(_copies(private_temp)) == 1
-    proc.send_signal(signal.SIGTERM)
+    proc.send_signal(ending)
     rest = proc.stderr.read()
-    assert proc.wait(timeout=60) == 128 + signal.SIGTERM and "Traceback" not in rest
+    assert proc.wait(timeout=60) == 128 + ending and "Traceback" not in rest
     assert _copies(private_temp) == []
     assert (data_dir / "retained" / "mda.json").read_text() == "damaged"  # the original untouched
 
