@@ -21,12 +21,13 @@ import copy
 from typing import Any, Callable
 
 from nck.access import LEVEL_MOST_RIGHTS
+from nck.alarm_ids import VALUE_ABOVE_UPPER_LIMIT, VALUE_BELOW_LOWER_LIMIT
 from nck.errors import NcAlarmError
 from nck.machine_data import DataValueError, MachineDataStore, UnknownDataError
 
 ALARM_WRITE_PROTECTED = 17070
-ALARM_BELOW_LIMIT = 17080
-ALARM_ABOVE_LIMIT = 17090
+ALARM_BELOW_LIMIT = VALUE_BELOW_LOWER_LIMIT
+ALARM_ABOVE_LIMIT = VALUE_ABOVE_UPPER_LIMIT
 ALARM_UNKNOWN = 12550
 ALARM_WRONG_TYPE = 12150
 ALARM_INDEX = 17020

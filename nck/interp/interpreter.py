@@ -61,6 +61,7 @@ from nck.lang.gcodes import gtable
 from nck.machine import MachineConfig
 from nck.ncdata import TOOL_EDGE_COUNT, NcData
 from nck.status import ModalView
+from nck.writes import ValueOutOfLimits, check_tool_value
 
 BLOCK_COST_S = 0.001  # simulated time one interpreted block costs (1 ms)
 
@@ -523,9 +524,21 @@ class Interpreter:
         return i
 
     def write_tool(self, tool: int, edge: int, param: int, value: float) -> None:
-        """Write ``$TC_DP<param>[tool, edge]`` (creates the edge; journaled)."""
+        """Write ``$TC_DP<param>[tool, edge]`` (creates the edge; journaled).
+
+        The value obeys the one write path's rule (:func:`nck.writes.check_tool_value`, as on
+        the panel): outside the limits alarm 17080/17090 and nothing is written. Tool type and
+        edge position are INT data: a REAL is rounded as on every INT assignment.
+        """
         from nck.ncdata import ToolEdge
 
+        name = f"$TC_DP{param}"
+        if param in (1, 2):
+            value = float(convert(value, "INT", name))
+        try:
+            check_tool_value(param, value)
+        except ValueOutOfLimits as exc:
+            raise NcAlarmError(exc.alarm, name) from None
         key = (tool, edge)
         edge_count = int(self.machine.md_value("MD18100", default=TOOL_EDGE_COUNT))
         if not self.data.has_room_for_edge(tool, edge, edge_count):

@@ -25,10 +25,9 @@ from typing import Any, Protocol
 from nck.errors import NcAlarmError
 from nck.geometry import frame_vars
 from nck.interp.modal import ModalState
-from nck.interp.values import Axis, convert, to_number
+from nck.interp.values import Axis, to_number
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
-from nck.writes import ValueOutOfLimits, check_tool_value
 
 TOOL_PARAM_COUNT = 25
 
@@ -198,12 +197,7 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
     match = _TC_DP.match(name)
     if match:
         param, tool, edge = _tool_address(name, match, indices)
-        # tool type and edge position are INT data: a REAL is rounded as on every INT assignment
-        number = float(convert(value, "INT", name) if param in (1, 2) else to_number(value, name))
-        try:
-            check_tool_value(param, number)  # the one write path's rule (nck.writes)
-        except ValueOutOfLimits as exc:
-            raise NcAlarmError(exc.alarm, name) from None
+        number = float(to_number(value, name))
         ctx.write_tool(tool, edge, param, number)
         return
     md = _MD.match(name)

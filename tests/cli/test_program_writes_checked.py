@@ -68,3 +68,4 @@ def test_a_real_tool_type_is_rounded_and_the_archive_of_a_programmed_state_impor
     assert main(["archive", "export", "--data-dir", str(data_dir), str(archive)]) == 0
     assert main(["archive", "import", "--data-dir", str(data_dir), "--password", "SUNRISE", str(archive)]) == 0
     assert "bad content" not in capsys.readouterr().err
+

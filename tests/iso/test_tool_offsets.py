@@ -101,6 +101,15 @@ def test_g10_under_g91_adds_and_unknown_h_is_refused():
     assert result.alarms[0].number == 12550
 
 
+def test_g10_outside_the_tool_value_limit_is_alarm_17090_and_writes_nothing():
+    """The ISO door writes tool data under the same rule as every other door (issue 19: one
+    write path; nck/writes.py tool values within ±100,000 mm; 17090 data/alarms/language.toml)."""
+    data = NcData()
+    result = _run(SETUP + "G10 L10 P4 R200000.\nM30\n", data)
+    assert [a.number for a in result.alarms] == [17090]
+    assert data.tools[(2, 3)].get(3) != 200000.0
+
+
 def test_translation_selects_by_h_number():
     assert translate("T2 G43 H4 Z0")[0].blocks == ["Z0 T2 D=$TC_ISOH_EDGE[2,4]"]
     assert translate("G41 D7 X1.")[0].blocks == ["G41 X1 D=$TC_ISOH_EDGE[$P_TOOLNO,7]"]
