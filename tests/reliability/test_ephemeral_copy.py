@@ -92,7 +92,7 @@ def test_a_failed_start_leaves_no_copy(tmp_path: Path, private_temp: Path, capsy
 
 @pytest.mark.parametrize("ending", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "Ctrl+C"])
 def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, ending: int) -> None:
-    """Ctrl+C (SIGINT) ends like SIGTERM: the copy goes, exit code 128 + signal, no traceback."""
+    """Ctrl+C (SIGINT) ends like SIGTERM: the copy goes, exit status 128 + signal, no traceback."""
     data_dir = _data_dir(tmp_path)
     (data_dir / "retained" / "mda.json").write_text("damaged")  # 4060 on stderr: the copy is made
     program = tmp_path / "LOOP.MPF"
@@ -106,7 +106,9 @@ def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, 
     assert len(_copies(private_temp)) == 1
     proc.send_signal(ending)
     rest = proc.stderr.read()
-    assert proc.wait(timeout=60) == 128 + ending and "Traceback" not in rest
+    # a shell shows 128 + signal for both: the exit code nck returns, or (Ctrl+C caught by the
+    # interpreter while it was already ending) the end by the signal itself
+    assert proc.wait(timeout=60) in (128 + ending, -ending) and "Traceback" not in rest, rest[-2000:]
     assert _copies(private_temp) == []
     assert (data_dir / "retained" / "mda.json").read_text() == "damaged"  # the original untouched
 
