@@ -331,16 +331,18 @@ class HmiApp(MachineControlPanel, App):
             await self.on_event(key)
 
     # -- kernel ---------------------------------------------------------------------------
-    def submit(self, command: Any) -> SubmitResult:
+    def submit(self, command: Any, answers_refusal: bool = True) -> SubmitResult:
         """Send a command to the kernel; an accepted command clears the dialog line.
 
         The areas show the snapshot the command made at once, so that the next
         key of a burst (a softkey after the keyswitch) meets the new state.
+        ``answers_refusal`` False: the command follows from an earlier key (the + / −
+        key let go) and leaves the refusal of a later key on the dialog line.
         """
         result = self.bridge.submit(command)
         self.show_snapshot(self.bridge.status)
         area = self.area_screen
-        if isinstance(result, Accepted) and area is not None and area.area_hint:
+        if answers_refusal and isinstance(result, Accepted) and area is not None and area.area_hint:
             area.say("")  # the refusal it showed is no longer the last word
         if isinstance(result, Accepted) and isinstance(command, RETAINED_COMMANDS):
             self.save_nc_data()

@@ -43,7 +43,7 @@ class MachineControlPanel:
         focused: Any
         current_mode: str
 
-        def submit(self, command: Any) -> Any: ...
+        def submit(self, command: Any, answers_refusal: bool = True) -> Any: ...
         def set_hint(self, text: str) -> None: ...
         def set_timer(self, delay: float, callback: Any) -> Timer: ...
 
@@ -220,7 +220,7 @@ class MachineControlPanel:
         if self._jogging is not None:
             axis = self._jogging[0]
             self._jogging = None
-            self.submit(cmd.Jog(axis, 0))
+            self.submit(cmd.Jog(axis, 0), answers_refusal=False)
 
     def release_jog(self) -> None:
         """Tests: let go of the + / − key (the realtime app does this by timer)."""
