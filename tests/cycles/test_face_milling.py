@@ -63,3 +63,9 @@ def test_cycle61_alarms(body: str, tool: str, alarm: int) -> None:
     case = run_with_tool(body, tool)
     assert case.alarms == [alarm]
     assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
+
+
+def test_cycle61_tool_without_radius_is_61105() -> None:
+    case = run_with_tool("$TC_DP6[1, 1]=0\nCYCLE61(10, 0, 2, -3, 0, 0, 100, 60, 2, 8, 5, 0.5, 500, 31)")
+    assert case.alarms == [61105]
+    assert [s for s in case.steps() if s[0] in ("G0", "G1")] == []

@@ -93,6 +93,9 @@ def test_spigot_alarms(body: str, tool: str, alarm: int) -> None:
     assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
 
 
-def test_spigot_tool_without_radius_is_61105() -> None:
-    case = run_with_tool("$TC_DP6[1, 1]=0\nCYCLE77(10, 0, 2, -6, 0, 30, 50, 40, 0, 0.5, 0.2, 300, 80, 2, 1)")
+@pytest.mark.parametrize("call", ["CYCLE76(10, 0, 2, -6, 0, 40, 20, 5, 50, 40, 0, 3, 0.5, 0.2, 300, 80, 0, 1)",
+                                  "CYCLE77(10, 0, 2, -6, 0, 30, 50, 40, 0, 0.5, 0.2, 300, 80, 2, 1)"])
+def test_spigot_tool_without_radius_is_61105(call: str) -> None:
+    case = run_with_tool("$TC_DP6[1, 1]=0\n" + call)
     assert case.alarms == [61105]
+    assert [s for s in case.steps() if s[0] in ("G0", "G1", "G2", "G3")] == []
