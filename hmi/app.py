@@ -688,7 +688,8 @@ def main(argv: list[str] | None = None) -> int:
                            confirm=ask_on_terminal)
         except Exception as exc:  # a CLI/file problem: a clear message, no traceback
             # an exception without text (MemoryError) must not leave a bare "hmi: "
-            print(f"hmi: {str(exc) or f'cannot start: internal error ({type(exc).__name__})'}", file=sys.stderr)
+            message = str(exc) or f"cannot start: internal error ({type(exc).__name__})"
+            print(f"hmi: {message}", file=sys.stderr)
             return 2
         app.started_at = started  # type: ignore[attr-defined]
         app.freeze_gc_at_start = True
