@@ -44,6 +44,9 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
         ("screens.diagnostics_trace", "nck.regular_files"),
         ("screens.diagnostics_trace", "nck.trace"),
         ("screens.machine", "nck.number_text"),
+        # added with the Machine area's own break above: the JOG set-up windows print numbers
+        # as the position window does (no -0.000, issue 18); goes when number_text moves
+        ("screens.machine_jog_setup", "nck.number_text"),
         ("screens.parameter_views", "nck.number_text"),
         ("screens.program", "nck.access"),
         ("screens.program_manager", "nck.access"),
