@@ -123,6 +123,9 @@ class ProgramRun:
         self.stop_reason = ""
         self.current: BlockResult | None = None
         self.history: deque[BlockView] = deque(maxlen=DISPLAY_HISTORY)
+        # Blocks of a DISPLOF subprogram are not displayed: each one's source (by identity)
+        # maps to the displayed block that called it, shown while the main run executes it.
+        self._hidden_shown_as: dict[int, tuple[Source, BlockView | None]] = {}
         self.blocks_executed = 0
         self.last_motion: Motion | None = None
         # Recent segments by the identity of their block's Source: a line run several
@@ -268,6 +271,10 @@ class ProgramRun:
         if not result.extras.get("display_off"):
             self.current = result
             self.history.append(block_view(result))
+        else:
+            self._hidden_shown_as[id(result.source)] = (result.source, self.history[-1] if self.history else None)
+            if len(self._hidden_shown_as) > PUSHED_HISTORY:
+                self._hidden_shown_as.pop(next(iter(self._hidden_shown_as)))
         self.blocks_executed += 1
 
     def _emit(self, motion: MotionSystem, options: RunOptions, events: list[RunEvent]) -> bool:
@@ -462,6 +469,12 @@ class ProgramRun:
     def display_blocks(self) -> tuple[BlockView, ...]:
         """The recently interpreted blocks, oldest first."""
         return tuple(self.history)
+
+    def shown_for_hidden(self, source: Source) -> BlockView | None:
+        """The displayed block standing for ``source`` of a DISPLOF subprogram: the block that
+        called it (002 L21867-21868, L23164); None if ``source`` is not such a block."""
+        entry = self._hidden_shown_as.get(id(source))
+        return entry[1] if entry is not None and entry[0] is source else None
 
     # -- block search --------------------------------------------------------
     def search(self, target: str, start_positions: Mapping[str, float],
