@@ -27,6 +27,8 @@ from nck.measuring import (Circle as Circle, Corner as Corner, circle as circle,
                            rotated_corner as rotated_corner, tool_length as tool_length,
                            tool_radius as tool_radius, z_surface as z_surface)
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry
+# The data tables (data/*.toml) the HMI shows as they are, e.g. the cycle forms of the editor.
+from nck.resources import load_toml as load_toml
 
 UNPROTECTED_LEVEL = 7
 """The level a kernel without access control asks for (every function is free)."""

@@ -43,6 +43,7 @@ from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import NcEditor
 from hmi.widgets.stock_view import StockView
 from hmi.widgets.toolpath import ToolpathView
+from screens.program_cycles import CycleActions
 from screens.program_edit import EditActions
 from screens.program_runs import CheckAndSimulation
 
@@ -69,7 +70,7 @@ def _is_executing(status: NckStatus | None, program: str | None) -> bool:
     return same and (channel.channel_state != "reset" or channel.program_state != "aborted")
 
 
-class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
+class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
     """The program editor (area PROGRAM)."""
 
     AREA_ID: ClassVar[str] = "program"
@@ -194,7 +195,7 @@ class ProgramScreen(EditActions, CheckAndSimulation, AreaBase):
                 Softkey("program.end", "End of\nprogram", "cursor_end", enabled=has_program),
                 Softkey("program.undo", "Undo", "undo", enabled=writable),
                 Softkey("program.redo", "Redo", "redo", enabled=writable),
-                None,
+                Softkey("program.drilling", "Drilling", "cycle_form('drilling')", enabled=writable),
                 Softkey("program.restore", "Restore\nunsaved", "offer_restore_any"),
             ],
         )

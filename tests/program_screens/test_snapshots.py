@@ -87,3 +87,16 @@ def test_simulation_top_view(snap_compare, pinned: Path) -> None:
         await pilot.pause()
 
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_cycle_form_drilling(snap_compare, pinned: Path) -> None:
+    """Drilling softkey → CYCLE83 form: parameters with units and ranges, help and sketch of DAM."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3", "shift+f7", "down", "down", "enter")  # CYCLE83
+        await pilot.pause()
+        await pilot.press(*["down"] * 7)  # cursor on DAM
+        await pilot.pause()
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
