@@ -32,7 +32,7 @@ from nck.status import NckStatus
 
 from hmi.softkeys import Softkey
 from screens.machine_jog_form import FieldSpec, JogForm
-from screens.machine_jog_points import POINT_WINDOWS, PointWindows
+from screens.machine_jog_points import APPROACHES, POINT_WINDOWS, PointWindows
 from screens.machine_jog_touch import touch_now
 
 if TYPE_CHECKING:
@@ -47,9 +47,6 @@ MEASURE_WINDOWS = (*WORKPIECE_WINDOWS, "meastool")
 WORKPIECE_FUNCTIONS = (("edge", "Edge /\nZ surface", "measwp"), ("corner", "Corner", "meascorner"),
                        ("rotated", "Rotated\ncorner", "measrot"), ("circle", "Hole /\nspigot", "meascircle"))
 """The vertical softkeys ⇧F1 … ⇧F4 of Measure workpiece: the measuring function (its window)."""
-
-APPROACHES = ("+", "−")
-"""The direction the tool moved in when it touched (+: towards larger values)."""
 
 REFERENCES = ("Z0 typed (WCS)", "reference block")
 """Where the surface touched for the tool length is known from."""
@@ -80,6 +77,16 @@ class LengthPreview:
     surface_mcs: float
     length: float
     radius: bool = False
+
+
+def _showing(view: str) -> Callable[[object], bool]:
+    """A softkey predicate: the screen shows window ``view``."""
+    return lambda screen: getattr(screen, "view", None) == view
+
+
+def _with_points(screen: object) -> bool:
+    """A softkey predicate: the screen shows a window that measures from several points."""
+    return getattr(screen, "view", None) in POINT_WINDOWS
 
 
 def _number(text: str) -> float | None:
@@ -118,15 +125,12 @@ class MeasureWindows:
         """Measure workpiece: ⇧F1 … ⇧F4 the function, ⇧F5 Set WO, ⇧F6 save point, ⇧F7 delete
         the points; Measure tool: ⇧F5 writes what the window previews."""
         if view in WORKPIECE_WINDOWS:
-            def showing(wanted: str) -> Callable[[AreaBase], bool]:
-                return lambda screen: getattr(screen, "view", None) == wanted
-            with_points = lambda screen: getattr(screen, "view", None) in POINT_WINDOWS  # noqa: E731
             return [*(Softkey(f"measwp.{name}", label, f"jog('measure_function', '{window}')",
-                              active=showing(window)) for name, label, window in WORKPIECE_FUNCTIONS),
+                              active=_showing(window)) for name, label, window in WORKPIECE_FUNCTIONS),
                     Softkey("measwp.set", "Set\nWO", "jog('measure_set')"),
-                    Softkey("measwp.save_point", "Save\npoint", "jog('measure_point')", enabled=with_points),
+                    Softkey("measwp.save_point", "Save\npoint", "jog('measure_point')", enabled=_with_points),
                     Softkey("measwp.delete_points", "Delete\npoints", "jog('measure_delete')",
-                            enabled=with_points)]
+                            enabled=_with_points)]
         return [None] * 4 + [Softkey("meastool.set", "Set\nlength/radius", "jog('measure_set')")]
 
     # -- previews --------------------------------------------------------------------------

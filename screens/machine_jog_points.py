@@ -37,6 +37,8 @@ if TYPE_CHECKING:
     from hmi.area import AreaBase
 
 APPROACHES = ("+", "−")
+"""The direction the tool moved in when it touched an edge (+: towards larger values)."""
+
 DIRECTIONS = {"+X": (1.0, 0.0), "−X": (-1.0, 0.0), "+Y": (0.0, 1.0), "−Y": (0.0, -1.0)}
 """Approach directions of a rotated corner's edges (roughly: the edge need not be parallel)."""
 
