@@ -75,7 +75,7 @@ class StatusView:
         if run is not None:
             blocks = run.display_blocks()
             if current_source is not None:
-                current = run.shown_for_hidden(current_source)
+                current = run.shown_for(current_source)
                 for view in reversed(blocks if current is None else ()):
                     if view.file == current_source.file and view.line == current_source.line:
                         current = view

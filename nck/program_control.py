@@ -41,6 +41,9 @@ PUSHED_HISTORY = 256  # motion items remembered for REPOS (more than any look-ah
 MAX_BLOCKS_PER_CYCLE = 50  # interpretation blocks per IPO cycle when blocks cost no time
 SEARCH_BLOCK_LIMIT = 200_000
 DISPLAY_HISTORY = 8
+# Blocks remembered with the block the display shows for them: more than the interpreter reads
+# ahead of the main run (a cycle computes many blocks between two moves).
+BLOCKS_REMEMBERED = 8192
 NOT_OUTPUT_IN_SEARCH_M = {0, 1, 2, 17, 30}
 
 # Run phases.
@@ -123,9 +126,7 @@ class ProgramRun:
         self.stop_reason = ""
         self.current: BlockResult | None = None
         self.history: deque[BlockView] = deque(maxlen=DISPLAY_HISTORY)
-        # Blocks of a DISPLOF subprogram are not displayed: each one's source (by identity)
-        # maps to the displayed block that called it, shown while the main run executes it.
-        self._hidden_shown_as: dict[int, tuple[Source, BlockView | None]] = {}
+        self._shown_as: dict[int, tuple[Source, BlockView | None]] = {}  # see _take
         self.blocks_executed = 0
         self.last_motion: Motion | None = None
         # Recent segments by the identity of their block's Source: a line run several
@@ -271,10 +272,12 @@ class ProgramRun:
         if not result.extras.get("display_off"):
             self.current = result
             self.history.append(block_view(result))
-        else:
-            self._hidden_shown_as[id(result.source)] = (result.source, self.history[-1] if self.history else None)
-            if len(self._hidden_shown_as) > PUSHED_HISTORY:
-                self._hidden_shown_as.pop(next(iter(self._hidden_shown_as)))
+        # What the block display shows while the main run executes this block: the block itself,
+        # or for a block of a DISPLOF subprogram the block that called it. By identity of the
+        # source: the main run may be far behind the interpreter (more than the history holds).
+        self._shown_as[id(result.source)] = (result.source, self.history[-1] if self.history else None)
+        if len(self._shown_as) > BLOCKS_REMEMBERED:
+            self._shown_as.pop(next(iter(self._shown_as)))
         self.blocks_executed += 1
 
     def _emit(self, motion: MotionSystem, options: RunOptions, events: list[RunEvent]) -> bool:
@@ -470,10 +473,11 @@ class ProgramRun:
         """The recently interpreted blocks, oldest first."""
         return tuple(self.history)
 
-    def shown_for_hidden(self, source: Source) -> BlockView | None:
-        """The displayed block standing for ``source`` of a DISPLOF subprogram: the block that
-        called it (002 L21867-21868, L23164); None if ``source`` is not such a block."""
-        entry = self._hidden_shown_as.get(id(source))
+    def shown_for(self, source: Source) -> BlockView | None:
+        """The block the display shows while the main run executes ``source``: that block, or
+        for a block of a DISPLOF subprogram the block that called it (002 L21867-21868,
+        L23164); None if ``source`` is not remembered."""
+        entry = self._shown_as.get(id(source))
         return entry[1] if entry is not None and entry[0] is source else None
 
     # -- block search --------------------------------------------------------

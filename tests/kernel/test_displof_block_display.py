@@ -55,8 +55,19 @@ def test_nested_call_inside_a_displof_cycle_still_shows_the_calling_block() -> N
     assert _shown(nck) == "N20"
 
 
+def test_calling_block_is_shown_after_many_hidden_blocks_without_motion() -> None:
+    """A cycle computes a lot between two moves (here 600 blocks of a loop): the block in
+    execution still shows its call, however far the interpreter has read ahead."""
+    programs = {**PROGRAMS, "CYC1.SPF": "PROC CYC1 DISPLOF\nN100 G1 X10\nN105 R1=0\n"
+                "LOOP: R1=R1+1\nIF R1<300 GOTOB LOOP\nN110 X20\nN120 RET"}
+    nck = _started(programs)
+    nck.tick(0.6)
+    assert 4.0 < nck.positions_mcs()["X"] < 10.0  # in N100 of the cycle
+    assert _shown(nck) == "N20"
+
+
 def test_turn_shaft_shows_each_cycle_call_while_the_cycle_runs(tmp_path) -> None:
-    """The sample TURN_SHAFT on the lathe: while a cycle (DISPLOF) runs, the block display stays
+    """The sample TURN_SHAFT on the lathe (planned motion, as in AUTO): while a cycle (DISPLOF) runs, the block display stays
     on its call block (N50, N100, N150, N200) although the interpreter reads ahead: the shown
     block numbers never go back, and each cycle call is shown."""
     from pathlib import Path
@@ -68,8 +79,7 @@ def test_turn_shaft_shows_each_cycle_call_while_the_cycle_runs(tmp_path) -> None
 
     lathe = load_machine("lathe2")
     data = Session.open(tmp_path / "data", lathe).ncdata
-    nck = Nck(lathe, data, DirectorySource(Path(data_path("programs"))), referenced=True,
-              motion_factory=instant_motion_factory, batch_cycles=1)
+    nck = Nck(lathe, data, DirectorySource(Path(data_path("programs"))), referenced=True)  # planned motion
     assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
     assert nck.submit(c.SelectProgram("TURN_SHAFT.MPF")) == c.Accepted()
     assert nck.submit(c.CycleStart()) == c.Accepted()
