@@ -1,4 +1,4 @@
-"""Date and time of day of the alarm log's entries, stamped by the HMI.
+"""Date and time of day of the alarm log's and the logbook's entries, stamped by the HMI.
 
 The kernel is clock-free: it counts seconds since its power on. The operator
 reads alarms and messages "with date and time" (002 L74605-74607), so the HMI
@@ -6,7 +6,8 @@ stamps the wall clock when it reads an entry from the kernel's log (at most one
 refresh period after it happened) and keeps the stamps of the retained alarm log
 across restarts (``came_at`` / ``went_at`` in its entries, ISO 8601 text with the
 UTC offset). The log keeps its order by sequence, not by these stamps: a wall clock
-set back never reorders it.
+set back never reorders it. The diagnosis logbook (access-level and data changes) is
+stamped the same way; its entries live only since power on, so its stamps are not retained.
 """
 
 from __future__ import annotations
@@ -43,7 +44,8 @@ def _parsed(text: object) -> datetime | None:
 
 
 class AlarmTimes:
-    """The wall-clock stamps of the alarm log: when each alarm came and went, each message showed.
+    """The wall-clock stamps of the alarm log (when each alarm came and went, each message
+    showed) and of the logbook (when each change was made).
 
     Alarms are identified by their entry's ``seq`` (negative for entries retained from an
     earlier power on, see :mod:`nck.persistence`), messages by their log event's ``seq``.
@@ -57,6 +59,7 @@ class AlarmTimes:
         self._came: dict[int, datetime] = {}
         self._went: dict[int, datetime] = {}
         self._events: dict[int, datetime] = {}
+        self._logbook: list[datetime] = []
 
     def record(self, event: AlarmEvent) -> None:
         """Stamp a log event the HMI has just read (a second reading keeps the first stamp)."""
@@ -66,6 +69,16 @@ class AlarmTimes:
             self._came.setdefault(event.entry.seq, now)
         elif event.kind == "went":
             self._went.setdefault(event.entry.seq, now)
+
+    def record_logbook(self, count: int) -> None:
+        """Stamp the logbook entries the HMI has just seen (the kernel's logbook holds ``count``)."""
+        now = self.clock()
+        while len(self._logbook) < count:
+            self._logbook.append(now)
+
+    def logbook_at(self, index: int) -> datetime | None:
+        """When the logbook entry at ``index`` was made (None when the HMI never saw it)."""
+        return self._logbook[index] if 0 <= index < len(self._logbook) else None
 
     def came_at(self, entry: AlarmEntry) -> datetime | None:
         """When the alarm came (None when the HMI never saw it come)."""
@@ -93,6 +106,7 @@ class AlarmTimes:
         self._came.clear()
         self._went.clear()
         self._events.clear()
+        self._logbook.clear()
         for seq, stamps in retained.items():
             for name, table in (("came_at", self._came), ("went_at", self._went)):
                 stamp = _parsed(stamps.get(name))

@@ -196,6 +196,7 @@ class NckBridge:
             self._last_log_seq = max(self._last_log_seq, entry.seq)
             self.alarm_times.record(entry)
             self._post(AlarmLogged(entry))
+        self.alarm_times.record_logbook(len(getattr(self.nck, "logbook", ()) or ()))
 
     def _password_delay_s(self) -> float:
         """The wait the kernel's count of wrong passwords asks for (0 without access control)."""

@@ -27,13 +27,14 @@ from nck.status import NckStatus
 from nck.regular_files import write_export
 from nck.trace import TraceError
 
+from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog
 from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
-    LogFilter, alarm_list_text, clock_text, log_as_csv, log_as_text, log_rows, log_text, message_lines,
+    LogFilter, alarm_list_text, log_as_csv, log_as_text, log_rows, log_text, message_lines,
     messages_text, parse_filter,
 )
 from screens.diagnostics_service import (
@@ -465,11 +466,15 @@ class DiagnosticsScreen(AreaBase):
         entries = list(self.ask(queries.Logbook()))
         text = Text(no_wrap=True, end="")
         text.append(f" Current access level: {status.access_level}\n", style="bold")
-        text.append(f" {'Time':<12} {'Kind':<8} Change\n", style="bold")
+        text.append(f" {'Date / time':<20} {'Kind':<8} Change\n", style="bold")
         if not entries:
             text.append(" No access-level or machine-data changes since power on.", style="dim")
-        for entry in reversed(entries[-40:]):
-            text.append(f" {clock_text(entry.time_s):<12} {entry.kind:<8} {entry.text}\n")
+        times = self.hmi.bridge.alarm_times
+        first = max(len(entries) - 40, 0)
+        for index in reversed(range(first, len(entries))):
+            entry = entries[index]
+            stamp = date_time_text(times.logbook_at(index))
+            text.append(f" {stamp:<20} {entry.kind:<8} {entry.text}\n")
         show_text(self._body("logbook"), text)
 
 

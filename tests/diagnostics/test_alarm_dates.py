@@ -76,3 +76,18 @@ async def test_reset_po_keeps_the_dates_of_the_earlier_entries(tmp_path: Path) -
         newest, earlier = rows_with(body(app, "log"), "10203")
         assert newest.split()[:3] == ["2026-11-26", "10:05:00", "—"]
         assert earlier.split()[:5] == ["PO-", "2026-11-26", "10:00:00", "2026-11-26", "10:00:00"]
+
+
+async def test_logbook_shows_the_date_and_time_of_each_change(tmp_path: Path) -> None:
+    """The logbook's access-level changes carry the date and time of day they were made, as the
+    alarm log's entries do (002 L74605-74607), not the time since power on; newest first."""
+    clock = HandClock(datetime(2026, 11, 25, 16, 40, 5, tzinfo=ZONE))
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False)
+    app.bridge.alarm_times.clock = clock
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+t")
+        clock.now += timedelta(minutes=2)
+        await burst(pilot, "alt+t", "alt+a", "f8", "f3")
+        rows = [row for row in body(app, "logbook").splitlines() if row.split()[2:3] == ["access"]]
+        assert [row.split()[:2] for row in rows] == [["2026-11-25", "16:42:05"],
+                                                    ["2026-11-25", "16:40:05"]]

@@ -113,7 +113,7 @@ def test_logbook(snap_compare) -> None:
         pilot.app.submit(cmd.SetKeyswitch(2))
         await _open(pilot, "f8", "f3")
 
-    assert snap_compare(app_on(StagedKernel()), terminal_size=SIZE, run_before=run)
+    assert snap_compare(stamped(app_on(StagedKernel())), terminal_size=SIZE, run_before=run)
 
 
 def test_version(snap_compare) -> None:
