@@ -671,6 +671,14 @@ def ask_on_terminal(question: str) -> bool:
         return False
 
 
+def terminal_attached() -> bool:
+    """Whether the panel has a terminal to draw on: standard input and output are terminals,
+    or a Textual driver of its own is named (a browser served the panel, TEXTUAL_DRIVER)."""
+    if os.environ.get("TEXTUAL_DRIVER"):
+        return True
+    return sys.stdin.isatty() and sys.stdout.isatty()
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``hmi`` console script."""
     parser = argparse.ArgumentParser(prog="hmi", description="SINUMERIK Operate trainer")
@@ -690,6 +698,12 @@ def main(argv: list[str] | None = None) -> int:
             # an exception without text (MemoryError) must not leave a bare "hmi: "
             message = str(exc) or f"cannot start: internal error ({type(exc).__name__})"
             print(f"hmi: {message}", file=sys.stderr)
+            return 2
+        if not terminal_attached():
+            print("hmi: the panel needs a terminal on standard input and output "
+                  "(for work without one use nck)", file=sys.stderr)
+            if app.nc_session is not None:
+                app.nc_session.quit()
             return 2
         app.started_at = started  # type: ignore[attr-defined]
         app.freeze_gc_at_start = True
