@@ -26,7 +26,7 @@ from hmi.area import AreaBase
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, typed_on_cell,
+    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
 )
 from screens.parameter_views import (
     active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,
@@ -185,11 +185,8 @@ class ParameterScreen(AreaBase):
 
     def on_key(self, event: events.Key) -> None:
         """A character typed on the selected cell starts its input (it replaces the value)."""
-        typed = typed_on_cell(event)
-        if typed is not None and self.table is not None:
-            event.stop()
-            event.prevent_default()
-            self.action_edit(typed)
+        if self.table is not None:
+            edit_on_typed_key(event, self.action_edit)
 
     def action_edit(self, typed: str = "") -> None:
         """Enter / Edit: an input field for the selected value.

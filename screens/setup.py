@@ -31,7 +31,7 @@ from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, typed_on_cell,
+    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
 )
 
 MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",
@@ -207,11 +207,8 @@ class SetupScreen(AreaBase):
 
     def on_key(self, event: events.Key) -> None:
         """A character typed on the selected cell starts its input (it replaces the value)."""
-        typed = typed_on_cell(event)
-        if typed is not None and self.table is not None:
-            event.stop()
-            event.prevent_default()
-            self.action_edit(typed)
+        if self.table is not None:
+            edit_on_typed_key(event, self.action_edit)
 
     def action_edit(self, typed: str = "") -> None:
         """Enter / Edit: an input field for the selected machine datum.

@@ -12,6 +12,7 @@ access level may not write dimmed.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Callable
 
 from rich.text import Text
 from textual import events
@@ -41,6 +42,15 @@ def typed_on_cell(event: events.Key) -> str | None:
     if event.is_printable and character is not None and len(character) == 1 and character.isprintable():
         return character
     return None
+
+
+def edit_on_typed_key(event: events.Key, edit: Callable[[str], None]) -> None:
+    """Start the selected cell's input with the character ``event`` types (see :func:`typed_on_cell`)."""
+    typed = typed_on_cell(event)
+    if typed is not None:
+        event.stop()
+        event.prevent_default()
+        edit(typed)
 
 
 @dataclass(frozen=True, slots=True)
