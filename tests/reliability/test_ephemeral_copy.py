@@ -97,7 +97,8 @@ def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, 
     (data_dir / "retained" / "mda.json").write_text("damaged")  # 4060 on stderr: the copy is made
     program = tmp_path / "LOOP.MPF"
     program.write_text("LOOP\nR1=R1+1\nENDLOOP\nM30\n")
-    env = dict(os.environ, TMPDIR=str(private_temp))
+    # PYTHONFAULTHANDLER: should the signal not end the run, SIGABRT makes the child print where it was
+    env = dict(os.environ, TMPDIR=str(private_temp), PYTHONFAULTHANDLER="1")
     proc = subprocess.Popen([sys.executable, "-m", "nck", "run", "--ephemeral", "--data-dir", str(data_dir),
                              str(program)], cwd=ROOT, env=env, text=True, stdout=subprocess.DEVNULL,
                             stderr=subprocess.PIPE)
@@ -105,10 +106,15 @@ def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, 
     assert "ALARM 4060" in proc.stderr.readline()
     assert len(_copies(private_temp)) == 1
     proc.send_signal(ending)
-    rest = proc.stderr.read()
+    try:
+        _, rest = proc.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        proc.send_signal(signal.SIGABRT)
+        _, rest = proc.communicate(timeout=30)
+        pytest.fail(f"the run went on after signal {ending}; where it was:\n{rest[-4000:]}")
     # a shell shows 128 + signal for both: the exit code nck returns, or (Ctrl+C caught by the
     # interpreter while it was already ending) the end by the signal itself
-    assert proc.wait(timeout=60) in (128 + ending, -ending) and "Traceback" not in rest, rest[-2000:]
+    assert proc.returncode in (128 + ending, -ending) and "Traceback" not in rest, rest[-2000:]
     assert _copies(private_temp) == []
     assert (data_dir / "retained" / "mda.json").read_text() == "damaged"  # the original untouched
 
