@@ -90,6 +90,16 @@ def test_a_failed_start_leaves_no_copy(tmp_path: Path, private_temp: Path, capsy
     assert _copies(private_temp) == []
 
 
+FOREGROUND_NCK = (
+    "import runpy, signal, sys; signal.signal(signal.SIGINT, signal.default_int_handler); "
+    "sys.argv[0] = 'nck'; runpy.run_module('nck', run_name='__main__')"
+)
+"""``nck`` as a shell runs it in the foreground, where Ctrl+C is not ignored. A test runner started
+in the background by a non-interactive shell ignores SIGINT and its children inherit that: Python
+then installs no Ctrl+C handler, and the endless run would never see the signal (found in a CI-like
+run; Unix tools rightly keep an inherited 'ignore')."""
+
+
 @pytest.mark.parametrize("ending", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "Ctrl+C"])
 def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, ending: int) -> None:
     """Ctrl+C (SIGINT) ends like SIGTERM: the copy goes, exit status 128 + signal, no traceback."""
@@ -99,9 +109,9 @@ def test_sigterm_or_ctrl_c_removes_the_copy(tmp_path: Path, private_temp: Path, 
     program.write_text("LOOP\nR1=R1+1\nENDLOOP\nM30\n")
     # PYTHONFAULTHANDLER: should the signal not end the run, SIGABRT makes the child print where it was
     env = dict(os.environ, TMPDIR=str(private_temp), PYTHONFAULTHANDLER="1")
-    proc = subprocess.Popen([sys.executable, "-m", "nck", "run", "--ephemeral", "--data-dir", str(data_dir),
-                             str(program)], cwd=ROOT, env=env, text=True, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE)
+    proc = subprocess.Popen([sys.executable, "-c", FOREGROUND_NCK, "run", "--ephemeral", "--data-dir",
+                             str(data_dir), str(program)], cwd=ROOT, env=env, text=True,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     assert proc.stderr is not None
     assert "ALARM 4060" in proc.stderr.readline()
     assert len(_copies(private_temp)) == 1
