@@ -20,7 +20,7 @@ from nck.check import check_text
 from nck.headless import check_program, run_program
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
-from nck.ncdata import NcData, ToolEdge
+from tests.cli.test_check_run_differential import data, first
 
 MACHINE = load_machine(None)
 RUN_TIMEOUT_S = 120.0  # simulated: the drawn programs take seconds at their feeds
@@ -49,16 +49,6 @@ WORDS = st.one_of(
 )
 PROGRAMS = st.lists(WORDS, min_size=1, max_size=8).map(
     lambda blocks: "".join(f"N{10 * (k + 1)} {b}\n" for k, b in enumerate(blocks + ["M30"])))
-
-
-def data() -> NcData:
-    nc = NcData()
-    nc.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 50.0, 6: 4.0})  # T1 D1: end mill L1 = 50, R = 4
-    return nc
-
-
-def first(alarms) -> tuple[int, int | None] | None:
-    return (alarms[0].number, alarms[0].line) if alarms else None
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])

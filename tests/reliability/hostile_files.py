@@ -305,14 +305,20 @@ DOORS: dict[str, Callable[[Path, Path], tuple[list[int], str]]] = {
 
 
 # ---------------------------------------------------------------------- check
-def try_door(template: Path, hostile: Hostile, door: str, work: Path) -> None:
-    """Plant ``hostile`` in a copy of ``template``, open it through ``door``, check the answer."""
+def _scene(template: Path, work: Path) -> tuple[Path, Path, Path]:
+    """A copy of ``template`` as the data directory, a file outside it and a program to run."""
     data_dir = work / "data"
     shutil.copytree(template, data_dir, symlinks=True)
     victim = work / "victim.txt"
     victim.write_text(VICTIM_TEXT)
     program = work / "P.MPF"
     program.write_text("G0 X1\nM30\n")
+    return data_dir, victim, program
+
+
+def try_door(template: Path, hostile: Hostile, door: str, work: Path) -> None:
+    """Plant ``hostile`` in a copy of ``template``, open it through ``door``, check the answer."""
+    data_dir, victim, program = _scene(template, work)
     retained = data_dir / "retained"
     main = retained / f"{hostile.section}.json"
     backup = backup_path(main)
@@ -338,12 +344,7 @@ def try_door(template: Path, hostile: Hostile, door: str, work: Path) -> None:
 def try_door_without_backup(template: Path, hostile: Hostile, door: str, work: Path) -> None:
     """The main file damaged and ``hostile`` planted as its backup: 4060 (standard values) on
     ``door``, both kept aside, nothing outside touched, the next start clean."""
-    data_dir = work / "data"
-    shutil.copytree(template, data_dir, symlinks=True)
-    victim = work / "victim.txt"
-    victim.write_text(VICTIM_TEXT)
-    program = work / "P.MPF"
-    program.write_text("G0 X1\nM30\n")
+    data_dir, victim, program = _scene(template, work)
     retained = data_dir / "retained"
     main = retained / f"{hostile.section}.json"
     document = json.loads(main.read_text())
