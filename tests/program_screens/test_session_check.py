@@ -73,6 +73,9 @@ async def test_check_and_simulation_use_the_session_tools_offsets_and_r_paramete
         # Z 0 - 50 (the tool's length 1 along Z in G17)
         start = tuple(round(c, 3) for c in screen.toolpath.pieces[0].start)
         assert start == (-100.0, 0.0, -50.0)
+        # the material view's run (the AUTO run that cuts the blank) took the session's tool too:
+        # with fresh data it ends with 17191 in line 1
+        assert screen.stock.status_text.endswith(", no alarms")
     # the check and the simulation ran on copies: R8=99 did not reach the session
     assert nck.data.r[8] == 0.0 and nck.data.r[7] == 12.5
 
