@@ -1,6 +1,7 @@
 """The headless command line ``nck`` (contract: ``/work/shared/spec/cli.md``).
 
-``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck version``; ``nck md``
+``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck grade STUDENT --reference REF``
+(:mod:`nck.grade`), ``nck version``; ``nck md``
 is dispatched to its own module when present. Exit codes: 0 ok, 1 alarm or
 problems found, 2 command line / file problem, 3 timeout (``nck run``: one hour of
 simulated time unless ``--timeout`` says otherwise; ``nck check``: a program not ended
@@ -23,6 +24,7 @@ from typing import Any, TextIO
 from nck import __version__, canon
 from nck.cli_parser import CliError, CliParser
 from nck.errors import NcAlarmError
+from nck.grade import grade, grade_json, grade_text, summarize
 from nck.headless import CHECK_BLOCK_BUDGET, alarm_message, check_outcome, format_alarm, run_program
 from nck.motion.tracefile import start_trace, write_trace_csv
 from nck.interp.sources import DirectorySource, read_text_file
@@ -58,6 +60,16 @@ def _build_parser() -> argparse.ArgumentParser:
                      help=f"stop after S seconds of simulated time, exit 3 (default {DEFAULT_RUN_TIMEOUT_S:g}; "
                           "0 = no limit); every block costs time, so an endless loop ends too")
     run.add_argument("--realtime", action="store_true", help="(accepted; runs as fast as possible)")
+    grade = sub.add_parser("grade", help="run a trainee's program and a reference and compare them")
+    grade.add_argument("program", metavar="STUDENT")
+    grade.add_argument("--reference", required=True, metavar="REF", help="the reference program")
+    _common_options(grade)
+    grade.add_argument("--json", action="store_true", help="print the comparison as JSON")
+    grade.add_argument("--tolerance", type=float, default=0.01, metavar="MM",
+                       help="path deviation that still counts as the same path (default 0.01 mm)")
+    grade.add_argument("--timeout", type=float, default=DEFAULT_RUN_TIMEOUT_S, metavar="S",
+                       help=f"budget of simulated time per program (default {DEFAULT_RUN_TIMEOUT_S:g}); "
+                            "a program not ended by then is reported (exit 3), e.g. an endless loop")
     sub.add_parser("version", help="print the version")
     return parser
 
@@ -133,7 +145,9 @@ def _main(args: list[str]) -> int:
             return _check(options)
         if options.command == "run":
             return _run(options)
-        print("usage: nck {check,run,md,archive,version} ...", file=sys.stderr)
+        if options.command == "grade":
+            return _grade(options)
+        print("usage: nck {check,run,grade,md,archive,version} ...", file=sys.stderr)
         return 2
     except CliError as exc:
         print(f"nck: {exc}", file=sys.stderr)
@@ -380,6 +394,32 @@ def _run(options: argparse.Namespace) -> int:
     if options.json:
         print(json.dumps(final_state_json(result, machine, data)))
     return result.exit_code
+
+
+# ----------------------------------------------------------------------------- grade
+def _grade(options: argparse.Namespace) -> int:
+    """``nck grade``: exit 0 same in every respect, 1 differences, 2 input, 3 a program did not end."""
+    if options.timeout <= 0:
+        raise CliError("--timeout needs a number of seconds above 0 (a grade needs a budget)")
+    if options.tolerance < 0:
+        raise CliError("--tolerance needs a distance of 0 mm or more")
+    student, reference = _read_program(options.program), _read_program(options.reference)
+    summaries = []
+    for path, text in (student, reference):
+        env = _Environment(options)
+        try:
+            result = run_program(env.machine, _source(path, options, env), env.data, path.name, text=text,
+                                 timeout_s=options.timeout, dialect=options.dialect)
+        finally:
+            env.finish(save=False)  # grading changes nothing in the data directory
+        if result.status == "timeout":
+            print(f"nck grade: {path.name} did not end within {options.timeout:g} s of simulated time "
+                  "(an endless loop? --timeout S allows longer runs); nothing was graded", file=sys.stderr)
+            return 3
+        summaries.append(summarize(result, path.name))
+    graded = grade(student[0].name, summaries[0], reference[0].name, summaries[1], options.tolerance)
+    print(json.dumps(grade_json(graded)) if options.json else grade_text(graded))
+    return 0 if graded.all_same else 1
 
 
 def _output(outputs: ExitStack, name: str | None, option: str) -> TextIO | None:
