@@ -60,16 +60,21 @@ class _Breather:
 
 def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
     """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it and the
-    path drawn up to chord ``chords`` (the tool stands at that chord's end)."""
+    path drawn up to chord ``chords`` (the tool stands at that chord's end). A lathe's picture
+    is the half section: Z across, the radius up (``simulation.turning``)."""
     path = simulation.path
-    tool = tuple(float(v) for v in path.ends[chords - 1]) if chords else None
-    cutter = path.cutters[int(path.cutter_of[chords - 1])] if chords and len(path.cutters) else None
+    tool, tool_radius = simulation.tool_at(chords)
+    starts, ends = simulation.drawn_path()
     blank = simulation.blank
+    if simulation.turning:
+        extent_x, extent_y, extent_z = blank.z_mm, (0.0, 0.0), (0.0, blank.diameter_mm / 2.0)
+    else:
+        extent_x, extent_y, extent_z = blank.x_mm, blank.y_mm, blank.z_mm
     return StockPicture(
-        heights=zmap.heights, x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm, resolution_mm=zmap.resolution_mm,
-        z_mm=blank.z_mm, blank_x_mm=blank.x_mm, blank_y_mm=blank.y_mm, starts=path.starts,
-        ends=path.ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,  # type: ignore[arg-type]
-        tool_radius_mm=cutter.radius_mm if cutter is not None else 0.0)
+        heights=zmap.heights, x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm,
+        resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
+        starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
+        tool_radius_mm=tool_radius, turning=simulation.turning)
 
 
 def material_note(simulation: Any) -> str:

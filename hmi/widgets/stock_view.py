@@ -9,6 +9,8 @@ foreground and the lower as background), so the pixels are about square. Three l
   ("the deeper, the darker"; no material: background), the front section (XZ, through the
   tool's Y) or the side section (YZ, through the tool's X); the blank's extents outlined;
   the path overlay (feed, rapid dimmed, the highlighted block bright); the tool at its place;
+  a lathe's picture (``turning``) is the half section of the bar: Z across, the radius up,
+  the profile's heights being radii and the tool its nose circle;
 * :class:`StockView` — the widget: zoom, pan, fit, the view, the overlay switch.
 """
 
@@ -39,6 +41,9 @@ TOOL_HEIGHT_MM = 30.0
 """How much of the tool the sections draw above its tip."""
 
 VIEW_TITLES = {"XY": "Top view XY", "XZ": "Front section XZ", "YZ": "Side section YZ"}
+TURNING_TITLE = "Half section Z-X"
+TURNING_VIEW = "XZ"
+"""A lathe's picture is always drawn as this section (its "X" is Z, its "Z" the radius)."""
 VIEW_AXES = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
 
 
@@ -60,6 +65,7 @@ class StockPicture:
     shown_chords: int = 0  # chords drawn (the path up to the shown block)
     tool_mm: tuple[float, float, float] | None = None
     tool_radius_mm: float = 0.0
+    turning: bool = False  # a lathe's half section: heights are radii over Z, the tool a nose circle
 
     @property
     def empty(self) -> bool:
@@ -202,9 +208,10 @@ def _draw_tool(image: np.ndarray, picture: StockPicture, view: str, port: Viewpo
     height_px, width_px = image.shape[:2]
     x, y, z = picture.tool_mm
     radius = max(picture.tool_radius_mm, port.mm_per_pixel)
-    if view == "XY":
+    if view == "XY" or picture.turning:  # a lathe's tool is its nose circle in the half section
+        v = z if picture.turning else y
         angles = np.linspace(0.0, 2.0 * math.pi, 180)
-        px, py = _to_pixels(port, width_px, height_px, x + radius * np.cos(angles), y + radius * np.sin(angles))
+        px, py = _to_pixels(port, width_px, height_px, x + radius * np.cos(angles), v + radius * np.sin(angles))
         _plot(image, px, py, TOOL)
         return
     centre = x if view == "XZ" else y
@@ -280,9 +287,14 @@ class StockView(Widget, can_focus=True):
         self.refresh()
 
     def action_view(self, view: str) -> None:
-        """Top view or a section."""
+        """Top view or a section (a lathe's picture stays the half section)."""
         if view in VIEW_TITLES:
             self.view = view
+
+    @property
+    def shown_view(self) -> str:
+        """The view drawn: the chosen one, or a lathe's half section."""
+        return TURNING_VIEW if self.picture.turning else self.view
 
     def action_overlay(self) -> None:
         """Path overlay on/off."""
@@ -290,7 +302,7 @@ class StockView(Widget, can_focus=True):
 
     def viewport(self, width_px: int, height_px: int) -> Viewport:
         """The fitted viewport with this widget's zoom and pan."""
-        port = fit_viewport(self.picture, self.view, width_px, height_px)
+        port = fit_viewport(self.picture, self.shown_view, width_px, height_px)
         scale = port.mm_per_pixel / self.zoom
         return Viewport(port.centre_h + self._pan_px[0] * width_px / 4.0 * scale,
                         port.centre_v + self._pan_px[1] * height_px / 4.0 * scale, scale)
@@ -299,12 +311,13 @@ class StockView(Widget, can_focus=True):
         """Caption line, then the picture."""
         width = max(self.size.width, 1)
         rows = max(self.size.height - 1, 1)
-        caption = Text(f"{VIEW_TITLES[self.view]}  zoom {self.zoom:.2f}  path {'on' if self.overlay else 'off'}"
+        title = TURNING_TITLE if self.picture.turning else VIEW_TITLES[self.view]
+        caption = Text(f"{title}  zoom {self.zoom:.2f}  path {'on' if self.overlay else 'off'}"
                        f"  {self.status_text}"[:width], style="bold")
         if self.picture.empty:
             return caption
         width_px, height_px = width, rows * 2
-        image = render_pixels(self.picture, self.view, self.viewport(width_px, height_px), width_px, height_px,
+        image = render_pixels(self.picture, self.shown_view, self.viewport(width_px, height_px), width_px, height_px,
                               self.overlay, self.highlight_line)
         caption.append("\n")
         caption.append_text(pixels_to_text(image))

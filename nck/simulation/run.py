@@ -33,7 +33,9 @@ from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
 from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_from_text
 from nck.simulation.cutter import Cutter
+from nck.simulation.turning import Insert, TurnProfile, bar, bar_around, half_section
 from nck.simulation.zmap import ZMap
+from nck.workpiece import Cylinder
 
 DEFAULT_RESOLUTION_MM = 0.5
 AUTO_CELLS = 400
@@ -73,7 +75,7 @@ class Toolpath:
     lines: np.ndarray  # 1-based source line of the block (0: unknown)
     rapid: np.ndarray  # bool
     tools: np.ndarray  # T number active
-    cutters: list[Cutter | None] = field(default_factory=list)  # the cutters chords index into
+    cutters: list[Cutter | Insert | None] = field(default_factory=list)  # the cutters chords index into
     cutter_of: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int32))
     spindle_on: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
     numbers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))  # N (-1: none)
@@ -84,7 +86,7 @@ class Simulation:
     """The outcome of :func:`simulate`."""
 
     blank: Blank
-    zmap: ZMap
+    zmap: ZMap | TurnProfile  # the lathe's profile: radius per Z cell
     path: Toolpath
     events: list[SimEvent]
     alarms: list[NcAlarmError]
@@ -102,9 +104,34 @@ class Simulation:
         ends = np.concatenate((change, [len(lines)]))
         return [(int(lines[end - 1]), int(end)) for end in ends.tolist()]
 
-    def cut_until(self, chords: int) -> ZMap:
-        """A fresh Z-map of the blank cut by the first ``chords`` chords (stepping through the program)."""
-        zmap = ZMap(self.blank, self.zmap.resolution_mm)
+    @property
+    def turning(self) -> bool:
+        """True for a lathe's simulation (a rotational profile, not a Z-map)."""
+        return isinstance(self.zmap, TurnProfile)
+
+    def drawn_path(self) -> tuple[np.ndarray, np.ndarray]:
+        """The chords' starts and ends as a view draws them: the workpiece coordinates, on a
+        lathe the half section (Z, 0, radius)."""
+        if self.turning:
+            return half_section(self.path.starts), half_section(self.path.ends)
+        return self.path.starts, self.path.ends
+
+    def tool_at(self, chords: int) -> tuple[tuple[float, float, float] | None, float]:
+        """Where a view draws the tool after ``chords`` chords, and its radius: the tip (a
+        lathe: the nose centre in the half section) and the cutting (nose) radius."""
+        if chords <= 0:
+            return None, 0.0
+        cutter = self.path.cutters[int(self.path.cutter_of[chords - 1])] if len(self.path.cutters) else None
+        radius = cutter.radius_mm if cutter is not None else 0.0
+        if not self.turning:
+            return tuple(float(v) for v in self.path.ends[chords - 1]), radius  # type: ignore[return-value]
+        z, _y, r = half_section(self.path.ends[chords - 1])[0]
+        dz, dr = cutter.nose_centre_from_tip() if isinstance(cutter, Insert) else (0.0, 0.0)
+        return (float(z + dz), 0.0, float(r + dr)), radius
+
+    def cut_until(self, chords: int) -> ZMap | TurnProfile:
+        """The uncut blank cut by the first ``chords`` chords (stepping through the program)."""
+        zmap = self.zmap.fresh()
         sweep_path(zmap, self.path, upto=chords)
         return zmap
 
@@ -112,8 +139,9 @@ class Simulation:
 class _Recorder:
     """Collects the executed motions with the tool, edge and spindle state in force."""
 
-    def __init__(self, data: NcData, chord_tol_mm: float) -> None:
+    def __init__(self, data: NcData, chord_tol_mm: float, turning: bool = False) -> None:
         self.data = data
+        self.turning = turning
         self.tol = chord_tol_mm
         self.tool = 0
         self.selected = 0
@@ -126,15 +154,21 @@ class _Recorder:
         self.ends: list[np.ndarray] = []
         self.meta: list[tuple[int, bool, int, int, bool, int]] = []  # line, rapid, tool, cutter, spindle, N per motion
         self.counts: list[int] = []
-        self.cutters: list[Cutter | None] = []
+        self.cutters: list[Cutter | Insert | None] = []
         self._cutter_index: dict[tuple[int, int], int] = {}
 
     def _cutter(self) -> int:
         key = (self.tool, self.edge)
         if key not in self._cutter_index:
-            edge = self.data.edge(self.tool, self.edge if self.edge > 0 else 1) if self.tool else None
+            number = self.edge if self.edge > 0 else 1
+            edge = self.data.edge(self.tool, number) if self.tool else None
             self._cutter_index[key] = len(self.cutters)
-            self.cutters.append(Cutter.from_edge(self.tool, dict(edge.params)) if edge is not None else None)
+            if edge is None:
+                self.cutters.append(None)
+            elif self.turning:
+                self.cutters.append(Insert.from_edge(self.data, self.tool, number))
+            else:
+                self.cutters.append(Cutter.from_edge(self.tool, dict(edge.params)))
         return self._cutter_index[key]
 
     def _no_cutter(self) -> int:
@@ -172,6 +206,13 @@ class _Recorder:
                 if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ"])
         start = self.position
         first = not self.starts
+        if self.mcs_minus_wcs is None and self.turning and all(a in end_wcs and a in end_mcs for a in "XZ"):
+            # Lathe: MCS X in radius, WCS X a diameter (DIAMON); length 1 along X, 2 along Z (G18).
+            edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
+            along_x = edge.get(3) + edge.get(12) if edge is not None else 0.0
+            along_z = edge.get(4) + edge.get(13) if edge is not None else 0.0
+            self.mcs_minus_wcs = (float(end_mcs["X"]) - float(end_wcs["X"]) / 2.0 - along_x, 0.0,
+                                  float(end_mcs["Z"]) - float(end_wcs["Z"]) - along_z)
         if self.mcs_minus_wcs is None and all(a in end_wcs and a in end_mcs for a in "XYZ"):
             edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
             length = edge.get(3) + edge.get(12) if edge is not None else 0.0
@@ -255,7 +296,7 @@ def record(
     machine = machine or load_machine()
     data = data if data is not None else NcData()
     source = programs if programs is not None else _NoPrograms()
-    recorder = _Recorder(data, chord_tol_mm=resolution_mm / 8.0)
+    recorder = _Recorder(data, chord_tol_mm=resolution_mm / 8.0, turning=machine.kind == "lathe")
     run = run_program(machine, source, data, name, text=text, timeout_s=timeout_s,
                       on_command=recorder, keep_commands=False)
     nominal = sum(recorder.tool_times.values())
@@ -278,33 +319,50 @@ def simulate(
     """Run ``text`` as main program ``name`` as AUTO runs it and cut the blank with it.
 
     ``blank`` overrides the program's ``WORKPIECE``; without either the blank is the machine
-    set-up's clamped blank (unless the instructor hid it), else a box around the cutting moves. ``data`` (tools, offsets) is used as the run's NC data: pass a copy.
+    set-up's clamped blank (unless the instructor hid it), else a box around the cutting moves.
+    On a lathe (``machine.kind``) the blank is a bar and the model a rotational profile
+    (:mod:`nck.simulation.turning`). ``data`` (tools, offsets) is used as the run's NC data:
+    pass a copy.
     ``resolution_mm`` None: chosen from the blank's size (:func:`auto_resolution`).
     """
     data = data if data is not None else NcData()
     setup = data.machine_setup
+    machine = machine or load_machine()
+    turning = machine.kind == "lathe"
     recording = record(name, text, machine=machine, programs=programs, data=data,
                        resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s)
     run, path, tool_times = recording.run, recording.path, recording.tool_times_s
     if blank is None:
         blank = blank_from_text(text)
-    if blank is None and setup.blank is not None and not setup.hidden and recording.mcs_minus_wcs_mm is not None:
-        blank = blank_from_setup(setup.blank, recording.mcs_minus_wcs_mm)
+    offset = recording.mcs_minus_wcs_mm
+    if blank is None and setup.blank is not None and not setup.hidden and offset is not None:
+        if turning and isinstance(setup.blank, Cylinder):
+            back = setup.blank.base_mcs[2] - offset[2]
+            blank = bar(setup.blank.diameter_mm, back, back + setup.blank.length_mm)
+        elif not turning:
+            blank = blank_from_setup(setup.blank, offset)
     if blank is None:
-        blank = blank_for(path)
-    zmap = ZMap(blank, resolution_mm or auto_resolution(blank))
-    events = sweep_path(zmap, path)
-    return Simulation(blank, zmap, path, events, list(run.alarms), run.status, run.machine_time_s,
+        blank = blank_for(path, turning)
+    model: ZMap | TurnProfile
+    if turning:
+        model = TurnProfile(blank, resolution_mm or auto_resolution(blank, turning=True))
+    else:
+        model = ZMap(blank, resolution_mm or auto_resolution(blank))
+    events = sweep_path(model, path)
+    return Simulation(blank, model, path, events, list(run.alarms), run.status, run.machine_time_s,
                       tool_times, run.blocks)
 
 
-def auto_resolution(blank: Blank) -> float:
-    """A cell size for showing ``blank``: about 400 cells along its longer side, 0.1 … 2 mm."""
+def auto_resolution(blank: Blank, turning: bool = False) -> float:
+    """A cell size for showing ``blank``: about 400 cells along its longer side (a bar: along Z,
+    at least 0.05 mm), 0.1 … 2 mm."""
+    if turning:
+        return min(max((blank.z_mm[1] - blank.z_mm[0]) / AUTO_CELLS, 0.05), 2.0)
     longest = max(blank.x_mm[1] - blank.x_mm[0], blank.y_mm[1] - blank.y_mm[0])
     return min(max(longest / AUTO_CELLS, 0.1), 2.0)
 
 
-def sweep_path(zmap: ZMap, path: Toolpath, upto: int | None = None) -> list[SimEvent]:
+def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None) -> list[SimEvent]:
     """Sweep the first ``upto`` chords of ``path`` (all: None) through ``zmap``; return the events.
 
     Rapid moves and moves with the spindle stopped are swept on their own (so that their cut
@@ -323,7 +381,7 @@ def sweep_path(zmap: ZMap, path: Toolpath, upto: int | None = None) -> list[SimE
         cutter = path.cutters[int(cutter_of[begin])] if len(path.cutters) else None
         if cutter is None:
             continue
-        depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)
+        depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)  # type: ignore[arg-type]
         if alone[begin] and depth.size and float(depth.max()) > CUT_EPSILON_MM:
             kind = "rapid_cut" if path.rapid[begin] else "spindle_stopped"
             line = int(path.lines[begin]) or None
@@ -336,12 +394,13 @@ def sweep_path(zmap: ZMap, path: Toolpath, upto: int | None = None) -> list[SimE
     return events
 
 
-def blank_for(path: Toolpath) -> Blank:
-    """A box around the cutting moves of ``path`` (see :func:`blank_around`)."""
+def blank_for(path: Toolpath, turning: bool = False) -> Blank:
+    """A box (lathe: a bar) around the cutting moves of ``path`` (:func:`blank_around`,
+    :func:`nck.simulation.turning.bar_around`)."""
     cutting = ~path.rapid
     points = path.ends[cutting] if np.any(cutting) else path.ends
     reach = max((c.reach_mm for c in path.cutters if c is not None), default=0.0)
-    return blank_around(points, reach)
+    return bar_around(points, reach) if turning else blank_around(points, reach)
 
 
 class _NoPrograms:

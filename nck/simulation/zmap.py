@@ -46,6 +46,10 @@ class ZMap:
         self.heights = self.initial.copy()
         """Material height per cell, rows Y (index 0 at the lowest Y), columns X."""
 
+    def fresh(self) -> ZMap:
+        """The uncut blank at the same resolution."""
+        return ZMap(self.blank, self.resolution_mm)
+
     # ------------------------------------------------------------------ questions
     def removed_volume_mm3(self) -> float:
         """Volume cut away so far."""

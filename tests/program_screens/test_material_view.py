@@ -20,7 +20,12 @@ from hmi.widgets.stock_view import (
     Viewport,
     render_pixels,
 )
-from tests.program_screens.conftest import SIZE, make_program_app, settle
+from nck.commands import SetKeyswitch
+from nck.kernel import Nck
+from nck.machine import load_machine
+
+from hmi.app import HmiApp
+from tests.program_screens.conftest import SIZE, make_program_app, nc_files, settle
 
 SLOTS = (
     'N10 WORKPIECE(,"",,"BOX",112,0,-20,-20,-10,-10,110,80)\n'
@@ -176,3 +181,74 @@ def test_snapshot_side_section_partly_cut(snap_compare, slots_dir: Path) -> None
     """The side section YZ through the tool during the circle's plunge (N120), path off."""
     assert snap_compare(make_program_app(slots_dir), terminal_size=SIZE,
                         run_before=simulation_then("shift+f6", "shift+f6", "f3", "shift+f8"))
+
+
+# A bar Ø40 from Z-60 to the face Z0; a turning tool (type 500, cutting edge position 3, nose
+# 0.8, 002 L62525-62558) turns Ø36 to Z-30, then Ø30 to Z-15 (a shoulder), then returns.
+SHAFT = (
+    'N1 WORKPIECE(,"",,"CYLINDER",64,0,-60,-60,40)\n'
+    "N2 $TC_DP1[1,1]=500 $TC_DP2[1,1]=3 $TC_DP3[1,1]=20 $TC_DP4[1,1]=40 $TC_DP6[1,1]=0.8\n"
+    "N10 G18 G90 DIAMON G95 T1 D1\n"
+    "N20 G97 S1000 M4\n"
+    "N30 G0 X36 Z2\n"
+    "N40 G1 Z-30 F0.2\n"
+    "N50 X41\n"
+    "N60 G0 Z2\n"
+    "N70 X30\n"
+    "N80 G1 Z-15\n"
+    "N90 X41\n"
+    "N100 G0 X80 Z50\n"
+    "N110 M30\n"
+)
+
+
+def make_lathe_app(root: Path) -> HmiApp:
+    """The HMI on a real lathe kernel (``lathe2``) with the programs of ``root``."""
+    nck = Nck(machine=load_machine("lathe2"), programs=nc_files(root), referenced=True)
+    nck.submit(SetKeyswitch(3))
+    return HmiApp(nck, realtime=False)
+
+
+@pytest.fixture
+def shaft_dir(data_dir: Path) -> Path:
+    (data_dir / "MPF" / "DEMO.MPF").write_text(SHAFT)
+    return data_dir
+
+
+async def test_lathe_simulation_turns_the_bar_without_false_rapid_cuts(shaft_dir: Path) -> None:
+    """The lathe's material view is the half section of the bar; the rapid moves run outside
+    the material, so the note says "no alarms" (the mill's Z-map said "rapid traverse into
+    material" here), and the profile has the turned diameters."""
+    app = make_lathe_app(shaft_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        simulation = screen._material
+        assert simulation is not None and simulation.turning and simulation.events == []
+        assert "no alarms" in screen.stock.status_text
+        assert "rapid" not in screen.stock.status_text
+        picture = screen.stock.picture
+        assert picture.turning
+        assert simulation.zmap.radius_at(-7.5) == pytest.approx(15.0)
+        assert simulation.zmap.radius_at(-20.0) == pytest.approx(18.0)
+        await pilot.press("f2", "f1")  # the view softkeys leave a lathe's half section alone
+        await pilot.pause()
+        assert screen.stock.shown_view == "XZ"
+
+
+def test_half_section_draws_material_up_to_the_radius() -> None:
+    """A profile of radius 10 over Z -20…-10 and 5 over Z -10…0: section pixels below it only."""
+    heights = np.array([[10.0] * 10 + [5.0] * 10], dtype=np.float32)
+    picture = StockPicture(heights=heights, x0_mm=-20.0, y0_mm=-0.5, resolution_mm=1.0, z_mm=(0.0, 10.0),
+                           blank_x_mm=(-20.0, 0.0), blank_y_mm=(0.0, 0.0), turning=True)
+    image = render_pixels(picture, "XZ", Viewport(-10.0, 5.0, 0.5), 40, 24, overlay=False)
+    # pixel column c: z = -10 + (c - 20 + 0.5) * 0.5; row r: radius 5 - (r - 12 + 0.5) * 0.5
+    assert (image[6, 4] == SECTION).all()  # z -17.75, radius 7.75: under the Ø20 part
+    assert not (image[6, 30] == SECTION).all()  # z -4.75: turned down to radius 5
+    assert (image[16, 30] == SECTION).all()  # radius 2.75
+
+
+def test_snapshot_lathe_half_section_partly_cut(snap_compare, shaft_dir: Path) -> None:
+    """The half section after the first pass (Ø36 to Z-30 and up, N50), the shoulder still to come."""
+    assert snap_compare(make_lathe_app(shaft_dir), terminal_size=SIZE,
+                        run_before=simulation_then(*["shift+f6"] * 5))
