@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from bench.contour import contour_program
+from bench.corpus import CorpusProgram, corpus, write_program
 from bench.material import write_material_program
 from bench.measure import ChildRun, alternate, environment_note, median, run_child
 from bench.peers import ensure_ncgi, ensure_rs274, nck_check_command, nck_run_command
@@ -75,6 +76,54 @@ def interpreter_rows(program: Path, repeats: int, notes: list[str]) -> list[Row]
                         ncgi_note, f"{ratio:.3f}×", "yes" if ratio > 1.0 else "NO"))
     cpu = median([r.cpu_s for r in runs["nck"]])
     rows.append(Row("  nck check CPU time", f"{cpu:.2f} s", "", "", "", ""))
+    return rows
+
+
+def corpus_rows(folder: Path, scale: float, repeats: int, notes: list[str]) -> list[Row]:
+    """Every corpus program: ``nck check`` vs ``rs274 -g`` (LinuxCNC spelling) vs
+    nc-gcode-interpreter (SINUMERIK spelling), alternating; blocks/s of the whole command."""
+    rs274, rs_note = ensure_rs274()
+    ncgi, ncgi_note = ensure_ncgi()
+    rows: list[Row] = []
+    for program in corpus(scale):
+        main, ngc, tools, table = write_program(folder / "corpus", program)
+        commands = {"nck": nck_check_command() + [
+            "--ephemeral", "--password", "EVENING", "--machine", program.machine, "--tools", str(tools),
+            "--max-blocks", "50000000", str(main)]}
+        if rs274 is not None:
+            commands["rs274"] = rs274[:1] + ["-t", str(table)] + rs274[1:] + [str(ngc), os.devnull]
+        if ncgi is not None:
+            commands["ncgi"] = ncgi + [str(main)]
+        runs = alternate(commands, repeats)
+        rows += _corpus_program_rows(program, runs, rs_note if rs274 else "", ncgi_note, notes)
+    if rs274 is None:
+        notes.append(rs_note)
+    if ncgi is None:
+        notes.append(ncgi_note)
+    return rows
+
+
+def _corpus_program_rows(program: CorpusProgram, runs: dict[str, list[ChildRun]], rs_note: str,
+                         ncgi_note: str, notes: list[str]) -> list[Row]:
+    for name, name_runs in runs.items():
+        bad = [r for r in name_runs if r.returncode != 0]
+        if bad:
+            notes.append(f"{program.name}: {name} exited {bad[0].returncode}: {bad[0].stderr.strip()[-200:]}")
+    ours = _blocks_per_s(runs["nck"], program.blocks)
+    floor = 1.0 if program.name == "CAM_MILL" else 0.5
+    cpu = median([r.cpu_s for r in runs["nck"]])
+    rows = [Row(f"nck check, corpus {program.name} ({program.blocks:,} blocks)", f"{ours:,.0f} blocks/s",
+                f"≥ {floor}× rs274", "", f"CPU {cpu:.2f} s")]
+    if "rs274" in runs and not any(r.returncode for r in runs["rs274"]):
+        theirs = _blocks_per_s(runs["rs274"], program.blocks)
+        ratio = ours / theirs
+        rows.append(Row("  vs LinuxCNC rs274 -g", f"{theirs:,.0f} blocks/s", f"ratio ≥ {floor}", rs_note,
+                        f"{ratio:.3f}×", "yes" if ratio >= floor else "NO"))
+    if "ncgi" in runs and not any(r.returncode for r in runs["ncgi"]):
+        theirs = _blocks_per_s(runs["ncgi"], program.blocks)
+        ratio = ours / theirs
+        rows.append(Row("  vs nc-gcode-interpreter", f"{theirs:,.0f} blocks/s", "ratio > 1", ncgi_note,
+                        f"{ratio:.3f}×", "yes" if ratio > 1.0 else "NO"))
     return rows
 
 
@@ -180,12 +229,15 @@ def run_suite() -> str:
         program = write_cam_program(folder)
         rows += interpreter_rows(program, repeats, notes)
         print(format_table(rows), flush=True)
+        rows += corpus_rows(folder, 0.1 if quick else 1.0, repeats, notes)
+        print(format_table(rows), flush=True)
         rows += simulation_rows(folder, program, notes, big=not quick)
         rows += hmi_rows(None if quick else program, notes)
         if not quick:
             rows += material_rows(folder, notes)
     stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
-    text = (f"# Benchmark results\n\n{stamp} on {environment_note()}; "
+    text = (f"# Benchmark results\n\n{stamp} on {environment_note()}, load average "
+            f"{' '.join(f'{v:.2f}' for v in os.getloadavg())} at the end; "
             f"{repeats} alternating run(s) per interpreter, medians; suite took "
             f"{time.perf_counter() - started:,.0f} s.\n\n" + format_table(rows))
     if notes:
