@@ -70,3 +70,6 @@ VALUE_BELOW_LOWER_LIMIT = 17080
 
 VALUE_ABOVE_UPPER_LIMIT = 17090
 """Value of %3 above the upper limit."""
+
+JUMP_TARGET_NOT_FOUND = 14080
+"""Jump destination %3 not found."""

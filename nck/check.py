@@ -35,6 +35,7 @@ from typing import Any, Callable, Iterator
 from nck.alarm_ids import BLOCK_TOO_COMPLEX
 from nck.canon import CanonCommand, Motion, UserAlarm
 from nck.errors import NcAlarmError
+from nck.iso.dialect import dialect_for
 from nck.machine import load_machine
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
@@ -149,7 +150,7 @@ def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:
     except ImportError:
         return
     try:
-        problems = load_program(name, text).problems()
+        problems = load_program(name, text, dialect_for("siemens", None)).problems()
     except RecursionError:
         return
     for error in problems:
@@ -179,7 +180,9 @@ def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: A
     from nck.interp.interpreter import Interpreter
 
     source = _OverlaySource(name, text, programs)
-    return Interpreter(machine or load_machine(), source, data if data is not None else NcData())
+    machine = machine or load_machine()
+    return Interpreter(machine, source, data if data is not None else NcData(),
+                       dialect=dialect_for("siemens", machine))
 
 
 def run_text(

@@ -21,6 +21,7 @@ from nck import canon
 from nck.errors import NcAlarmError
 from nck.interp.api import ProgramSource
 from nck.interp.interpreter import Interpreter
+from nck.iso.dialect import dialect_for
 from nck.machine import MachineConfig
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
@@ -137,7 +138,7 @@ def run_on_kernel(
     interpreters: list[Interpreter] = []
 
     def factory(m: MachineConfig, p: ProgramSource, d: NcData) -> Interpreter:
-        interp = Interpreter(m, p, d, dialect=dialect)
+        interp = Interpreter(m, p, d, dialect=dialect_for(dialect, m))
         interpreters.append(interp)
         return interp
 
@@ -294,7 +295,7 @@ def interpret_only(
     ``on_command``), runs of plain motion blocks are interpreted as batches
     (:meth:`Interpreter.plain_batch`, :func:`batch_clock`) with the same result.
     """
-    interp = Interpreter(machine, programs, data, dialect=dialect)
+    interp = Interpreter(machine, programs, data, dialect=dialect_for(dialect, machine))
     interp.skip_levels = frozenset(skip_levels)
     result = RunResult(status="ended", interpreter=interp)
     try:
@@ -436,7 +437,7 @@ def check_outcome(machine: MachineConfig, programs: ProgramSource, name: str, te
     """As :func:`check_program`, and say whether the program ended within ``max_blocks``."""
     from nck.interp.program import load_program
 
-    found = load_program(name, text, dialect).problems()
+    found = load_program(name, text, dialect_for(dialect, machine)).problems()
     if found:
         return CheckOutcome(found, True, 0)
     data = data or NcData()

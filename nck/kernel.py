@@ -44,6 +44,7 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
+from nck.iso.dialect import dialect_for
 from nck.kernel_contact import ContactState, ContactWatch
 from nck.kernel_manual import ManualControl
 from nck.kernel_search import BlockSearchControl
@@ -84,7 +85,7 @@ def _default_interpreter_factory(
 ) -> Interpreter:
     from nck.interp.interpreter import Interpreter as RealInterpreter  # noqa: PLC0415
 
-    return RealInterpreter(machine, programs, data)
+    return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
 class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, BlockSearchControl):

@@ -25,9 +25,9 @@ from nck.interp.evaluator import equal, evaluate
 from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, journal_cell, write_binding
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
+from nck.interp.returns import prepare_return, resume_caller, return_target
 from nck.interp.values import (GUD_VALUES_MEM_KB, LUD_VALUES_MEM_KB, Axis, Cell, convert, memory_bytes,
                                stored_bytes, to_bool, to_number, to_string)
-from nck.iso import macros, subprograms
 from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES
 from nck.resources import load_toml
@@ -119,13 +119,13 @@ class BlockRun:
         interp = self.interp
         if self.call is not None:
             raise NcAlarmError(12080, self.end_kind)
-        if self.frame.is_main or subprograms.ends_whole_program(interp, self.end_kind):
+        if self.frame.is_main or interp.dialect.ends_whole_program(interp, self.end_kind):
             interp._program_end(self.end_kind or "M30")  # (ISO mode: M30 in a subprogram ends the whole program)
             return [canon.ProgramEnd(self.source, self.end_kind or "M30")]
-        subprograms.prepare_return(self.frame, self.ret_target)
+        prepare_return(self.frame, self.ret_target)
         interp._return_from(self.frame)
         if self.ret_target is not None:
-            subprograms.resume_caller(interp, *self.ret_target)
+            resume_caller(interp, *self.ret_target)
         return []
 
     # ------------------------------------------------------------ statements
@@ -558,7 +558,7 @@ class BlockRun:
         name, text = found
         program = _program_cache(interp, name, text)
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
-        macros.bind_call(self.frame, frame, call, interp.modal)  # ISO: $C_… arguments, PROC → G290
+        interp.dialect.bind_call(self.frame, frame, call, interp.modal)  # ISO: $C_… arguments, PROC → G290
         if program.proc is not None and program.proc.save:
             frame.saved_gcodes = dict(interp.modal.gcodes)  # PROC … SAVE
             frame.saved_pframe = interp.builder.path.state(interp.modal).frames.programmable
@@ -642,7 +642,7 @@ class BlockRun:
                                          feed=modal.feed))
         elif name == "RET":
             self.end_kind = "RET"
-            self.ret_target = subprograms.return_target(self.eval, stmt.args)
+            self.ret_target = return_target(self.eval, stmt.args)
         elif name == "CALL":
             # indirect call: CALL "NAME" / CALL <string variable>
             target = to_string(self.eval(stmt.args[0])).strip().upper()  # type: ignore[arg-type]
@@ -709,6 +709,6 @@ def _program_cache(interp: Interpreter, name: str, text: str) -> Program:
     if program is None:
         if len(cache) > 64:
             cache.clear()
-        program = load_program(name, text, getattr(interp, "dialect", "siemens"))
+        program = load_program(name, text, interp.dialect)
         cache[key] = program
     return program

@@ -408,7 +408,7 @@ def _arity(name: str, args: tuple, count: int) -> None:
 
 def _active_plane(scope: Scope) -> Plane | None:
     """The active working plane for CRPL(0, …); None without an interpreter."""
-    interp = getattr(scope, "interp", None)
+    interp: Any = getattr(scope, "interp", None)
     builder = getattr(interp, "builder", None)
     if builder is None:
         return None
@@ -417,7 +417,7 @@ def _active_plane(scope: Scope) -> Plane | None:
 
 def frame_functions_length_mm(scope: Scope) -> float:
     """mm per programmed length unit (G70/G700) for frame functions; 1 without an interpreter."""
-    interp = getattr(scope, "interp", None)
+    interp: Any = getattr(scope, "interp", None)
     builder = getattr(interp, "builder", None)
     if builder is None:
         return 1.0

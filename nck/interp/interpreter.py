@@ -57,6 +57,7 @@ from nck.interp.plain_step import step_plain
 from nck.interp.program import load_program
 from nck.interp.values import convert, to_number
 from nck.lang import ast
+from nck.lang.dialect import SIEMENS, Dialect
 from nck.lang.gcodes import gtable
 from nck.machine import MachineConfig
 from nck.ncdata import TOOL_EDGE_COUNT, NcData
@@ -100,13 +101,12 @@ class Interpreter:
     """Plain motion blocks take the fast path (:mod:`nck.interp.plain_run`); False: general path only."""
 
     def __init__(self, machine: MachineConfig, programs: ProgramSource, data: NcData,
-                 dialect: str = "siemens") -> None:
+                 dialect: Dialect = SIEMENS) -> None:
         self.machine = machine
         self.programs = programs
         self.data = data
-        from nck.iso import dialect_for
-        self.dialect = dialect_for(dialect, machine)  # ISO modes carry MD 10884/10886
-        self.table = gtable("siemens" if dialect in ("iso-m", "iso-t") else dialect)
+        self.dialect = dialect  # the language mode in front (ISO: nck.iso.dialect)
+        self.table = gtable(dialect.gcode_table)
         self.builder = MotionBuilder(machine, data)
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
@@ -130,6 +130,15 @@ class Interpreter:
     def modal(self) -> ModalState:
         """The live modal state (read-only use outside the interpreter)."""
         return self._state.modal
+
+    @property
+    def call_stack(self) -> list[Frame]:
+        """The program levels, main program first (for the dialect's hooks)."""
+        return self._state.frames
+
+    def journal_undo(self, undo: Callable[[], None]) -> None:
+        """Run ``undo`` if the current block is taken back (preprocessing repeats it)."""
+        self._journal.append(("undo", undo, None))
 
     def start(self, program_name: str) -> None:
         """Load main program ``program_name`` (alarm 14011 if it does not exist)."""
@@ -158,10 +167,7 @@ class Interpreter:
     def modal_view(self) -> ModalView:
         """The modal state a display needs."""
         modal = self._state.modal
-        iso = _iso_view(modal.gcodes, self.dialect, modal.geometry)
-        if iso:  # ISO groups 8 (G43/G49) and 12 (G66/G67)
-            from nck.iso.macros import display_codes
-            iso.update(display_codes(self._state.frames, modal, self.dialect == "iso-t"))
+        iso = self.dialect.gcode_display(modal, self._state.frames)
         return ModalView(
             gcodes=dict(modal.gcodes),
             tool=modal.tool,
@@ -504,9 +510,7 @@ class Interpreter:
         if frame.saved_pframe is not None:  # SAVE also restores the programmable frame
             geo = self.builder.path.state(self._state.modal)
             geo.frames = geo.frames.with_programmable(frame.saved_pframe)
-        if frame.iso_macro is not None:  # ISO: back to G291 after a Siemens-mode (PROC) program
-            from nck.iso.macros import after_return
-            after_return(self._state.modal, frame)
+        self.dialect.after_return(self._state.modal, frame)  # ISO: G291 again after a PROC program
 
     # ---------------------------------------------------------------- data writes
     def write_r(self, index: Any, value: Any) -> None:
@@ -627,18 +631,6 @@ _MODAL_SAFE = (ast.Control, ast.Goto, ast.IfGoto, ast.Case, ast.SectionRepeat, a
 
 
 _MAIN_RUN_PREFIXES = ("$A", "$V", "$$")
-
-
-def _iso_view(gcodes: Mapping[int, str], dialect: str, geometry: Any = None) -> dict[int, str]:
-    """ISO codes for the G-group display while ISO mode (G291) is active, else empty."""
-    if gcodes.get(47) != "G291":
-        return {}
-    from nck.iso.display import iso_gcodes
-    view = iso_gcodes(gcodes, "iso-t" if dialect == "iso-t" else "iso-m")
-    if dialect != "iso-t":  # ISO M frame groups 11/16/17/22 from the geometry state
-        from nck.iso.frames import display_codes
-        view.update(display_codes(geometry))
-    return view
 
 
 def _reads_main_run_data(block: ast.Block) -> bool:

@@ -20,7 +20,7 @@ from nck.errors import NcAlarmError
 from nck.geometry.path_builder import couples_axes
 from nck.geometry.trc_canon import STAGE_ATTRIBUTE
 from nck.geometry.units import UnitSystem
-from nck.interp.program_text import TextLines
+from nck.lang.lines import TextLines
 
 if TYPE_CHECKING:
     from nck.interp.interpreter import Interpreter
@@ -93,7 +93,7 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
     ``motion`` is the G0/G1 the block itself programs: it replaces the modal
     motion of group 1 (a ``G1 X… Y…`` after an arc is plain again).
     """
-    if interp.dialect != "siemens":
+    if interp.dialect.name != "siemens":
         return None
     machine = machine_axes(interp)
     if not machine.usable:

@@ -3,7 +3,7 @@
 A Siemens program is scanned once at load time: every line is checked (plain
 motion blocks by one pattern, :mod:`nck.lang.plain`; the rest by the parser),
 but only what the run needs is kept — the text, a line-start checkpoint every
-64 lines (:class:`~nck.interp.program_text.TextLines`), the alarms of lines
+64 lines (:class:`~nck.lang.lines.TextLines`), the alarms of lines
 that do not parse, labels, control-structure partners and the runs of plain
 lines. Lines are parsed again when execution reaches them (bounded cache), so
 the memory of a program does not grow with its length beyond its text. A line
@@ -21,8 +21,9 @@ from dataclasses import dataclass, field
 from typing import Any, Sequence
 
 from nck.errors import NcAlarmError
-from nck.interp.program_text import CACHE_LINES, CHECKPOINT_LINES, TextLines, remember_bounded
+from nck.lang.lines import CACHE_LINES, CHECKPOINT_LINES, Line, LineSequence, TextLines, remember_bounded
 from nck.lang import ast
+from nck.lang.dialect import SIEMENS, Dialect
 from nck.lang.gcodes import gtable
 from nck.lang.parser import parse_block
 from nck.lang.plain import NOT_PLAIN_LINE, has_statements, match_plain
@@ -31,18 +32,6 @@ MAX_STRUCTURE_DEPTH = 16  # nesting depth of control structures per program leve
 
 _OPENERS = {"IF": "ENDIF", "WHILE": "ENDWHILE", "FOR": "ENDFOR", "LOOP": "ENDLOOP", "REPEAT": "UNTIL"}
 _CLOSERS = {closer: opener for opener, closer in _OPENERS.items()}
-
-
-@dataclass
-class Line:
-    """One source line: its parsed block or the alarm its parsing raised."""
-
-    number: int  # 1-based line
-    text: str
-    block: ast.Block | None
-    error: NcAlarmError | None = None
-    touches_modal: bool | None = None  # cache for the interpreter's block snapshot
-    main_run_read: bool | None = None  # cache: the block reads $A…/$V… (preprocessing stop)
 
 
 @dataclass
@@ -67,7 +56,7 @@ class Program:
     """
 
     name: str
-    lines: Sequence[Line]
+    lines: LineSequence
     labels: dict[str, int] = field(default_factory=dict)
     numbers: dict[int, list[int]] = field(default_factory=dict)
     partner: dict[int, int] = field(default_factory=dict)
@@ -184,20 +173,19 @@ def _located(alarm: NcAlarmError, name: str, line: int, n: int | None) -> NcAlar
     return alarm.located(name, line, n)
 
 
-def load_program(name: str, text: str, dialect: str = "siemens", main: bool = False) -> Program:
+def load_program(name: str, text: str, dialect: Dialect = SIEMENS, main: bool = False) -> Program:
     """Scan ``text`` into a :class:`Program` called ``name`` (never raises).
 
-    In an ISO ``dialect`` (or a Siemens text that switches with G291) the
-    lines are first translated by :mod:`nck.iso.translate` (and kept parsed).
+    A text the ``dialect`` translates (ISO, or a Siemens text that switches with
+    G291) becomes the translated lines (kept parsed).
     """
-    from nck.iso import is_iso
-    from nck.iso.loader import iso_lines, wants_iso
-    key = (name, dialect, text)
+    key = (name, dialect.program_key(), text)
     cached = _RECENT.get(key)
     if cached is not None:
         return cached
-    if (is_iso(dialect) or "G291" in text or "g291" in text) and wants_iso(text, dialect):  # to ISO
-        program = Program(name=name, lines=iso_lines(name, text, dialect, _located, _guess_n, main))
+    translated = dialect.translated_lines(name, text, _located, _guess_n, main)
+    if translated is not None:
+        program = Program(name=name, lines=translated)
         indexer = _Indexer(program)
         for index, line in enumerate(program.lines):
             indexer.add(index, line.number, line.block)
@@ -208,7 +196,7 @@ def load_program(name: str, text: str, dialect: str = "siemens", main: bool = Fa
     return program
 
 
-_RECENT: dict[tuple[str, str, str], Program] = {}
+_RECENT: dict[tuple[str, object, str], Program] = {}
 _RECENT_SIZE = 4
 """Programs loaded last, by (name, dialect, text): a check followed by its run, or a
 subprogram called again, is scanned once. Loaded programs are immutable (the

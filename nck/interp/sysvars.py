@@ -26,6 +26,7 @@ from nck.errors import NcAlarmError
 from nck.geometry import frame_vars
 from nck.interp.modal import ModalState
 from nck.interp.values import Axis, to_number
+from nck.lang.dialect import Dialect, InterpreterContext
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
 
@@ -54,10 +55,11 @@ FALLBACK_MD_NUMBERS = {
 }
 
 
-class SysContext(Protocol):
+class SysContext(InterpreterContext, Protocol):
     """What the system variables need from the interpreter."""
 
     machine: MachineConfig
+    dialect: Dialect
     data: NcData
 
     @property
@@ -107,15 +109,9 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     """Read system variable ``name`` with evaluated ``indices``."""
     if name in frame_vars.NAMES:  # frames and $AA_IW (WCS through frames and tool length)
         return frame_vars.read(ctx, name, indices)
-    if name.startswith("$C_"):  # ISO G65/G66 macro arguments (nck.iso.macros)
-        from nck.iso import macros as iso_macros
-        return iso_macros.read(ctx, name, indices)
-    if name.startswith(("$TC_DPH", "$TC_ISOH_")):  # ISO H numbers (nck.iso.tool_offsets)
-        from nck.iso import tool_offsets as iso_tools
-        return iso_tools.read(ctx, name, indices)
-    if name == "$P_EXTGG":  # active ISO G code per ISO group (nck.iso.display)
-        from nck.iso import display as iso_display
-        return iso_display.read_extgg(ctx, indices)
+    dialect = ctx.dialect
+    if dialect.reads_variable(name):  # ISO: $C_… macro arguments, H numbers, $P_EXTGG
+        return dialect.read_variable(ctx, name, indices)
     modal = ctx.modal
     if name in ("$AA_IM", "$AA_IW", "$AA_IB"):
         axis = _axis_arg(ctx, name, indices)
@@ -182,17 +178,9 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
     if name in frame_vars.NAMES:  # $P_UIFR[n,ax,TR], $P_PFRAME[ax,RT], …
         frame_vars.write(ctx, name, indices, value)
         return
-    if name.startswith("$C_"):  # ISO G65/G66 macro arguments (nck.iso.macros)
-        from nck.iso import macros as iso_macros
-        iso_macros.write(ctx, name, indices, value)
-        return
-    if name.startswith(("$TC_DPH", "$TC_ISOH_")):  # ISO H numbers (nck.iso.tool_offsets)
-        from nck.iso import tool_offsets as iso_tools
-        iso_tools.write(ctx, name, indices, value)
-        return
-    if name.startswith("$P_ISOFR_"):  # ISO G68/G51/G51.1/G52 frames (nck.iso.frames)
-        from nck.iso import frames as iso_frames
-        iso_frames.write(ctx, name, indices, value)
+    dialect = ctx.dialect
+    if dialect.writes_variable(name):  # ISO: $C_…, H numbers, $P_ISOFR_… frames
+        dialect.write_variable(ctx, name, indices, value)
         return
     match = _TC_DP.match(name)
     if match:

@@ -181,9 +181,7 @@ def _install(interp: Any, geo: Any, new: IsoFrameState, trans: dict[str, float],
         geo.frames = old_frames
         geo.iso_frame = old_state
 
-    journal = getattr(interp, "_journal", None)
-    if journal is not None:
-        journal.append(("undo", undo, None))
+    interp.journal_undo(undo)
 
 
 def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
@@ -260,9 +258,7 @@ def _sync(interp: Any, geo: Any, always: bool = False) -> None:
         geo.wcs_mm = old_wcs
         modal.position_wcs = old_view
 
-    journal = getattr(interp, "_journal", None)
-    if journal is not None:
-        journal.append(("undo", undo, None))
+    interp.journal_undo(undo)
 
 
 def _polar_off(interp: Any, geo: Any) -> None:
@@ -275,9 +271,7 @@ def _polar_off(interp: Any, geo: Any) -> None:
     def undo() -> None:
         geo.polar = old
 
-    journal = getattr(interp, "_journal", None)
-    if journal is not None:
-        journal.append(("undo", undo, None))
+    interp.journal_undo(undo)
 
 
 def _set_polar_flag(interp: Any, geo: Any, on: bool) -> None:
@@ -287,9 +281,7 @@ def _set_polar_flag(interp: Any, geo: Any, on: bool) -> None:
     def undo() -> None:
         geo.iso_polar = old
 
-    journal = getattr(interp, "_journal", None)
-    if journal is not None:
-        journal.append(("undo", undo, None))
+    interp.journal_undo(undo)
 
 
 def display_codes(geo: Any) -> dict[int, str]:

@@ -6,9 +6,11 @@ import re
 from typing import Callable
 
 from nck.errors import NcAlarmError
-from nck.iso import is_iso
-from nck.iso.translate import translate
+from nck.iso import ISO_DIALECTS
+from nck.iso.translate import IsoSettings, translate
 from nck.iso.skipping import AlarmBlock
+from nck.lang.lines import Line
+from nck.lang.parser import parse_block
 
 _SWITCH_TO_ISO = re.compile(r"(?<![A-Z0-9_])G291(?![0-9])", re.IGNORECASE)
 _PROC_FIRST = re.compile(r"^\s*(N\d+\s+)?PROC\b", re.IGNORECASE)
@@ -22,25 +24,24 @@ def wants_iso(text: str, dialect: str) -> bool:
     ``PROC`` (cycles, macros written in Siemens); Siemens mode translates a
     program that switches to ISO with G291.
     """
-    if is_iso(dialect):
+    if dialect in ISO_DIALECTS:
         first = next((line for line in text.splitlines() if line.strip()), "")
         return not _PROC_FIRST.match(first) or bool(_NUMBERED_PROC.match(first))
     return bool(_SWITCH_TO_ISO.search(text))
 
 
-def iso_lines(name: str, text: str, dialect: str,
+def iso_lines(name: str, text: str, dialect: str, settings: IsoSettings | None,
               located: Callable[[NcAlarmError, str, int, int | None], NcAlarmError],
-              guess_n: Callable[[str], int | None], main: bool = False) -> list:
-    """The program's :class:`~nck.interp.program.Line` list, one or more per ISO line."""
-    from nck.interp.program import Line
-    from nck.lang.parser import parse_block
+              guess_n: Callable[[str], int | None], main: bool = False) -> list[Line]:
+    """The program's :class:`~nck.lang.lines.Line` list, one or more per ISO line.
 
-    lines: list = []
-    if is_iso(dialect) and _numbered_proc_lines(text, name, located, guess_n, lines):
+    ``dialect`` is the language mode (``siemens``: a text switching with G291)."""
+    lines: list[Line] = []
+    iso = dialect in ISO_DIALECTS
+    if iso and _numbered_proc_lines(text, name, located, guess_n, lines):
         return lines
-    settings = getattr(dialect, "iso_settings", None)
-    for iso_line in translate(text, str(dialect) if is_iso(dialect) else "iso-m", settings,
-                              start_in_iso=is_iso(dialect), main=main and is_iso(dialect)):
+    for iso_line in translate(text, dialect if iso else "iso-m", settings,
+                              start_in_iso=iso, main=main and iso):
         number, raw = iso_line.number, iso_line.text
         if iso_line.error is not None:
             lines.append(Line(number, raw, None, located(iso_line.error, name, number, guess_n(raw))))
@@ -59,13 +60,10 @@ def iso_lines(name: str, text: str, dialect: str,
 
 
 def _numbered_proc_lines(text: str, name: str, located: Callable, guess_n: Callable,
-                         lines: list) -> bool:
+                         lines: list[Line]) -> bool:
     """A Siemens-mode macro headed ``PROC 0010`` (the manual's form; Siemens names may not
     start with a digit): its lines are parsed as Siemens blocks, the PROC name read as
     ``_N_0010``. Returns False (nothing added) for any other program."""
-    from nck.interp.program import Line
-    from nck.lang.parser import parse_block
-
     raw_lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
     if raw_lines and raw_lines[-1] == "":
         raw_lines.pop()

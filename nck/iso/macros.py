@@ -41,14 +41,14 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Sequence
 
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso.lexing import Word
+from nck.lang.dialect import CallLevel, InterpreterContext
 
 if TYPE_CHECKING:
-    from nck.interp.frames import Frame
     from nck.iso.translate import IsoSettings
 
 ALARM_TOO_MANY_CALLS = 12722
@@ -350,7 +350,7 @@ class MacroState:
     substitution: bool = False  # this level runs an M/G-code macro (no substitution inside)
 
 
-def _state(frame: Frame) -> MacroState:
+def _state(frame: CallLevel) -> MacroState:
     return getattr(frame, "iso_macro", None) or MacroState()
 
 
@@ -367,9 +367,9 @@ def _key(name: str, indices: tuple[Any, ...]) -> tuple[str, tuple]:
     return name, ()
 
 
-def read(ctx: Any, name: str, indices: tuple[Any, ...]) -> Any:
+def read(ctx: InterpreterContext, name: str, indices: tuple[Any, ...]) -> Any:
     """Value of ``$C_…`` at the current program level (0 when not programmed)."""
-    frames = ctx._state.frames
+    frames = ctx.call_stack
     if name == SUBST_ACTIVE:
         return int(any(getattr(f, "iso_macro", None) is not None and f.iso_macro.substitution
                        for f in frames))
@@ -381,9 +381,9 @@ def read(ctx: Any, name: str, indices: tuple[Any, ...]) -> Any:
     return _state(frames[-1]).args.get(key, 0)
 
 
-def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
+def write(ctx: InterpreterContext, name: str, indices: tuple[Any, ...], value: Any) -> None:
     """Collect a ``$C_…`` argument for the next call (translated ISO blocks only)."""
-    frames = ctx._state.frames
+    frames = ctx.call_stack
     if not frames or ctx.modal.gcodes.get(ISO_MODE_GROUP) != "G291":
         raise NcAlarmError(17070, name)  # read-only in Siemens mode
     frame = frames[-1]
@@ -407,7 +407,7 @@ def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     frame.iso_macro = replace(state, pending=pending)
 
 
-def bind_call(caller: Frame, callee: Frame, call: Any, modal: Any = None) -> None:
+def bind_call(caller: CallLevel, callee: CallLevel, call: Any, modal: Any = None) -> None:
     """Give the called level its ``$C_…`` arguments (G65 pending ones or the G66 modal set).
 
     A program whose first line is ``PROC`` called from ISO mode runs in
@@ -432,14 +432,14 @@ def bind_call(caller: Frame, callee: Frame, call: Any, modal: Any = None) -> Non
         caller.iso_macro = replace(state, pending=None)
 
 
-def after_return(modal: Any, frame: Frame) -> None:
+def after_return(modal: Any, frame: CallLevel) -> None:
     """Back to ISO mode after a Siemens-mode (PROC) program called from ISO mode."""
     state = getattr(frame, "iso_macro", None)
     if state is not None and state.back_to_iso:
         modal.gcodes[ISO_MODE_GROUP] = "G291"
 
 
-def display_codes(frames: list[Frame], modal: Any, turning: bool) -> dict[int, str]:
+def display_codes(frames: Sequence[CallLevel], modal: Any, turning: bool) -> dict[int, str]:
     """ISO groups the Siemens G groups cannot show: 12 (G66 while a modal macro call of
     any level is active, else G67) and, in ISO M, 8 (G43 while a tool edge, and with it
     the length compensation, is active, else G49; G44 is shown as G43)."""

@@ -8,27 +8,20 @@ Translation side (used by :mod:`nck.iso.translate`):
 * ``M99 P<n>`` → ``RET("N<n>")`` in a subprogram (resume the caller at block
   N<n>), ``GOTO N<n>`` in a main program.
 
-Interpreter side (small hooks in :mod:`nck.interp.block_run`):
+Interpreter side (a hook of :class:`nck.iso.dialect.IsoDialect`):
 
-* :func:`return_target` / :func:`resume_caller`: ``RET("<block number or
-  label>"[, after])`` returns to the caller and continues at that block,
-  searched forward from the calling block first, then backward; with
-  ``after`` > 0 at the block after it (the extended RET of the manual);
 * :func:`ends_whole_program`: ``M30`` ends the whole program even in a
   subprogram while ISO mode (G291) is active; in Siemens mode it returns.
+
+``RET("N<n>")`` itself is Siemens (the extended RET, :mod:`nck.interp.returns`).
 
 M98 and M99 never reach the PLC: they become calls and returns, not M words.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
 from nck.errors import NcAlarmError
-
-if TYPE_CHECKING:
-    from nck.interp.frames import Frame
-    from nck.interp.interpreter import Interpreter
+from nck.lang.dialect import InterpreterContext
 
 MAX_PASSES = 9999
 ISO_MODE_GROUP = 47  # Siemens G group of G290/G291
@@ -60,54 +53,7 @@ def return_block(values: dict[str, float], main: bool) -> str:
 
 
 # ----------------------------------------------------------------------------- interpreter
-def return_target(evaluate: Any, args: tuple[Any, ...]) -> tuple[str, int] | None:
-    """``(target text, after)`` of ``RET(target[, after])``, or None for a plain RET."""
-    if not args or args[0] is None:
-        return None
-    from nck.interp.values import to_number, to_string
-
-    target = to_string(evaluate(args[0])).strip().upper()
-    if not target:
-        raise NcAlarmError(14080, "RET")
-    after = 0
-    if len(args) > 1 and args[1] is not None:
-        after = int(to_number(evaluate(args[1]), "RET"))
-    return target, after
-
-
-def resume_caller(interp: Interpreter, target: str, after: int) -> None:
-    """Continue the (now current) caller at block ``target`` (after it when ``after`` > 0).
-
-    The caller stands behind its calling block; the search starts at that
-    block, forward first, then backward. Not found: alarm 14080.
-    """
-    frames = interp._state.frames
-    if not frames:
-        return
-    caller = frames[-1]
-    program = caller.program
-    start = max(caller.pc - 1, 0)
-    found = None
-    if target[:1] == "N" and target[1:].isdigit():
-        found = program.find_number(int(target[1:]), start, "FB")
-    if found is None:
-        found = program.find_label(target.rstrip(":"), start, "FB")
-    if found is None:
-        raise NcAlarmError(14080, target)
-    if after > 0:  # behind every Siemens line of that source block
-        number = program.lines[found].number
-        while found < len(program.lines) and program.lines[found].number == number:
-            found += 1
-    caller.pc = found
-
-
-def prepare_return(frame: Frame, target: tuple[str, int] | None) -> None:
-    """A RET with a target ends the subprogram for good: no further passes."""
-    if target is not None:
-        frame.passes_left = 0
-
-
-def ends_whole_program(interp: Interpreter, end_kind: str | None) -> bool:
+def ends_whole_program(interp: InterpreterContext, end_kind: str | None) -> bool:
     """True if ``M30`` in a subprogram ends the whole program.
 
     That is ISO mode (G291 active) in a subprogram that is not a Siemens
@@ -115,5 +61,5 @@ def ends_whole_program(interp: Interpreter, end_kind: str | None) -> bool:
     """
     if end_kind != "M30" or interp.modal.gcodes.get(ISO_MODE_GROUP) != "G291":
         return False
-    frames = interp._state.frames
+    frames = interp.call_stack
     return not frames or frames[-1].program.proc is None

@@ -57,7 +57,7 @@ def _siemens_only_codes() -> frozenset[str]:
     from nck.lang.gcodes import gtable
     from nck.resources import load_toml
 
-    iso = set()
+    iso: set[str] = set()
     for name in ("iso_m.toml", "iso_t.toml"):
         for group in load_toml("gcode", name)["group"]:
             iso.update(str(code) for code in group.get("members", ()) if code)

@@ -235,8 +235,8 @@ def _tokenize_slow(code: str, text: str) -> list[Token]:
             pos = end + 1
             continue
         if ch == "'":
-            new_pos, value = _read_radix_constant(text, pos)
-            tokens.append(Token(NUMBER, text[pos:new_pos], value, pos))
+            new_pos, constant = _read_radix_constant(text, pos)
+            tokens.append(Token(NUMBER, text[pos:new_pos], constant, pos))
             pos = new_pos
             continue
         if (ch.isdigit() and ch.isascii()) or (ch == "." and pos + 1 < n and text[pos + 1].isdigit()):

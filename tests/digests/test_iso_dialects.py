@@ -4,6 +4,7 @@ elsewhere. ``tests/README.md`` lists where the other items are proved (mostly ``
 
 from __future__ import annotations
 
+from nck.iso.dialect import dialect_for
 from nck.headless import interpret_only
 from nck.interp.interpreter import Interpreter
 from nck.interp.sources import MemorySource
@@ -13,7 +14,7 @@ from nck.ncdata import NcData
 
 def first_view(dialect: str) -> tuple[dict[int, str], dict[int, str]]:
     """(ISO groups, Siemens groups) after the first block of a main program."""
-    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect)
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect_for(dialect, load_machine(None)))
     interp.start_text("T.MPF", "G00 X1.\nM30\n")
     interp.step()
     view = interp.modal_view()

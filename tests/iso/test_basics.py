@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from nck.iso.dialect import dialect_for
 from nck.iso.lexing import split_words, strip_comments
 from nck.iso.translate import IsoSettings, translate
 from tests.iso.conftest import ends, run_iso
@@ -197,7 +198,7 @@ def _step_views(text: str, dialect: str = "iso-m"):
     from nck.interp.sources import MemorySource
     from nck.machine import load_machine
     from nck.ncdata import NcData
-    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect)
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect_for(dialect, load_machine(None)))
     interp.start_text("T.MPF", text)
     views = []
     while not interp.finished:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from nck.iso.dialect import dialect_for
 from nck import commands as c
 from nck.headless import interpret_only
 from nck.interp.sources import MemorySource
@@ -62,7 +63,7 @@ def test_digest_iso_milling_rank_08_the_feed_override_scales_a_fixed_feedrate() 
     data.setting_data["SD42160"] = [5000.0, 1000.0, 500.0] + [0.0] * 7
     programs = MemorySource({"P.MPF": "N10 G01 G94 X300. F1\nM30\n"})
     nck = Nck(machine, data, programs, referenced=True,
-              interpreter_factory=lambda m, p, d: Interpreter(m, p, d, dialect="iso-m"))
+              interpreter_factory=lambda m, p, d: Interpreter(m, p, d, dialect=dialect_for("iso-m", m)))
     assert nck.submit(c.SelectMode("AUTO")) == c.Accepted()
     assert nck.submit(c.SelectProgram("P.MPF")) == c.Accepted()
     assert nck.submit(c.CycleStart()) == c.Accepted()

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+from nck.iso.dialect import dialect_for
 from nck import canon
 from nck.headless import interpret_only
 from nck.interp.interpreter import Interpreter
@@ -228,7 +229,7 @@ def _mcs_ends(interp: Interpreter) -> list[dict[str, float]]:
 
 def test_reset_clears_g51_1():
     """Digest iso-dialects-840d rank 13 (000 L1270)."""
-    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect="iso-m")
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect_for("iso-m", load_machine(None)))
     interp.start_text("A.MPF", "G51.1 X80.\nG00 X100.\nM30\n")
     assert _mcs_ends(interp)[-1]["X"] == 60.0
     interp.start_text("B.MPF", "G00 X100.\nM30\n")
@@ -295,7 +296,7 @@ def test_g15_deletes_pole_radius_and_angle_at_run_time():
 
 
 def _views(text: str) -> dict[int, dict[int, str]]:
-    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect="iso-m")
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect_for("iso-m", load_machine(None)))
     interp.start_text("T.MPF", text)
     views = {}
     while not interp.finished:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+from nck.iso.dialect import dialect_for
 from nck.iso.translate import translate
 from nck.ncdata import NcData, ToolEdge
 
@@ -167,7 +168,7 @@ def _modes_per_block(text: str, programs: dict[str, str]) -> list[tuple[str, str
     from nck.interp.sources import MemorySource
     from nck.machine import load_machine
     from nck.ncdata import NcData
-    interp = Interpreter(load_machine(None), MemorySource(programs), NcData(), dialect="iso-m")
+    interp = Interpreter(load_machine(None), MemorySource(programs), NcData(), dialect=dialect_for("iso-m", load_machine(None)))
     interp.start_text("T.MPF", text)
     seen = []  # (program of the next block, language mode it runs in)
     while not interp.finished:
@@ -322,7 +323,7 @@ def _iso_views(text: str, programs: dict[str, str], **md) -> list[tuple[str, int
     from nck.ncdata import NcData, ToolEdge
     machine = load_machine(None)
     machine.md.update(md)
-    interp = Interpreter(machine, MemorySource(programs), NcData(), dialect="iso-m")
+    interp = Interpreter(machine, MemorySource(programs), NcData(), dialect=dialect_for("iso-m", machine))
     interp.start_text("T.MPF", text)
     views = []
     while not interp.finished:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from nck.iso.dialect import dialect_for
 from nck import canon
 from nck.interp.interpreter import Interpreter
 from nck.interp.sources import MemorySource
@@ -38,7 +39,7 @@ def test_bare_slash_is_level_zero():
 
 
 def test_switch_read_at_run_time_in_one_loaded_program():
-    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect="iso-m")
+    interp = Interpreter(load_machine(None), MemorySource(), NcData(), dialect=dialect_for("iso-m", load_machine(None)))
     interp.start_text("T.MPF", "G00 X1. /1 Y1.\nX2. /1 Y2.\nM30\n")
     ends_seen = []
     while not interp.finished:

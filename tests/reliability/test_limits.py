@@ -93,7 +93,7 @@ def _load_peak_bytes(lines: int) -> int:
     text = "".join(f"N{i} R1=R1+1\n" for i in range(lines)) + "M30\n"
     tracemalloc.start()
     try:
-        program = load_program("BIG.MPF", text, "siemens", main=True)
+        program = load_program("BIG.MPF", text, main=True)
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
@@ -120,7 +120,7 @@ def test_a_million_line_program_is_scanned_not_kept_as_syntax_trees() -> None:
         "text = ''.join(chunks) + 'R1=R1+1\\nM30\\n'\n"
         "del chunks\n"
         "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
-        "program = load_program('MILLION.MPF', text, 'siemens', main=True)\n"
+        "program = load_program('MILLION.MPF', text, main=True)\n"
         "assert len(program.lines) == 1_000_002 and program.lines[999_999].block.number == 999_999\n"
         "assert not program.problems() and program.plain_run_end(0) == 1_000_000\n"
         "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base)\n"

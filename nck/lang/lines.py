@@ -1,4 +1,5 @@
-"""A program's lines kept as text: parsed on demand, with a bounded cache.
+"""Program lines: one :class:`Line` per source line, and :class:`TextLines`, a program's
+lines kept as text, parsed on demand with a bounded cache.
 
 A long program (a CAM file of a million lines) must not become a million
 syntax trees. :class:`TextLines` keeps the program text and a line-start
@@ -16,19 +17,40 @@ not parsed again.
 from __future__ import annotations
 
 from array import array
-from typing import TYPE_CHECKING, Any, Iterator
+from dataclasses import dataclass
+from typing import Any, Iterator, Protocol
 
 from nck.errors import NcAlarmError
+from nck.lang import ast
 from nck.lang.parser import parse_block
-
-if TYPE_CHECKING:
-    from nck.interp.program import Line
 
 CHECKPOINT_LINES = 64
 """A line-start offset is kept for every this many lines."""
 
 CACHE_LINES = 1024
 """Parsed lines kept per program."""
+
+
+@dataclass
+class Line:
+    """One source line: its parsed block or the alarm its parsing raised."""
+
+    number: int  # 1-based line
+    text: str
+    block: ast.Block | None
+    error: NcAlarmError | None = None
+    touches_modal: bool | None = None  # cache for the interpreter's block snapshot
+    main_run_read: bool | None = None  # cache: the block reads $A…/$V… (preprocessing stop)
+
+
+class LineSequence(Protocol):
+    """A program's lines, read-only: a list (translated ISO text) or :class:`TextLines`."""
+
+    def __len__(self) -> int: ...
+
+    def __getitem__(self, index: int) -> Line: ...
+
+    def __iter__(self) -> Iterator[Line]: ...
 
 
 def remember_bounded(cache: dict, key: Any, value: Any, limit: int) -> None:
@@ -46,7 +68,7 @@ def remember_bounded(cache: dict, key: Any, value: Any, limit: int) -> None:
 
 
 class TextLines:
-    """The lines of a program text as a read-only sequence of :class:`~nck.interp.program.Line`.
+    """The lines of a program text as a read-only sequence of :class:`Line`.
 
     ``text`` has its line ends normalised to ``\\n``. ``count`` is the number of
     lines (a last empty line after the final line end does not count).
@@ -75,8 +97,6 @@ class TextLines:
         found = self._cache.get(index)
         if found is not None:
             return found
-        from nck.interp.program import Line
-
         raw = self.raw(index)
         error = self.errors.get(index)
         if error is not None:

@@ -1,0 +1,135 @@
+"""ISO mode as a :class:`~nck.lang.dialect.Dialect`: the front end the interpreter is given.
+
+:class:`IsoDialect` translates ISO texts into Siemens lines (:mod:`nck.iso.loader`) and
+answers the interpreter's run-time questions of ISO mode: the ``$C_…`` macro arguments,
+the H numbers, ``$P_EXTGG`` and the ``$P_ISOFR_…`` frames, the ISO G groups of the
+display, the ``$C_…`` hand-over of G65/G66 calls and the ISO ``M30`` rule.
+
+It also serves Siemens mode (``name == "siemens"``) on a control with the ISO option:
+a Siemens text that switches with G291 is translated, everything else is Siemens.
+:func:`dialect_for` builds the dialect of a language mode for a machine.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+from nck.iso import ISO_DIALECTS, display, frames, macros, subprograms, tool_offsets
+from nck.iso.loader import iso_lines, wants_iso
+from nck.iso.macros import substitution_tables
+from nck.iso.switching import start_unit
+from nck.iso.translate import IsoSettings
+from nck.lang.dialect import CallLevel, GuessN, InterpreterContext, Located
+from nck.lang.lines import Line
+
+_MACRO_ARGUMENTS = "$C_"
+_H_NUMBERS = ("$TC_DPH", "$TC_ISOH_")
+_EXTGG = "$P_EXTGG"
+_ISO_FRAMES = "$P_ISOFR_"
+
+
+@dataclass(frozen=True, eq=False)
+class IsoDialect:
+    """ISO M / ISO T (or Siemens with the G291 switch) with the machine's ISO settings."""
+
+    name: str
+    settings: IsoSettings | None = None
+    gcode_table: str = "siemens"
+
+    def program_key(self) -> object:
+        """Programs are cached per mode (the settings belong to the machine)."""
+        return ("iso", self.name)
+
+    def translated_lines(self, name: str, text: str, located: Located, guess_n: GuessN,
+                         main: bool) -> list[Line] | None:
+        """The translated lines of an ISO text (or a Siemens text switching with G291)."""
+        if self.name == "siemens" and "G291" not in text and "g291" not in text:
+            return None
+        if not wants_iso(text, self.name):
+            return None
+        return iso_lines(name, text, self.name, self.settings, located, guess_n, main)
+
+    def gcode_display(self, modal: Any, levels: Sequence[CallLevel]) -> dict[int, str]:
+        """ISO codes for the G-group display while ISO mode (G291) is active, else empty."""
+        gcodes = modal.gcodes
+        if gcodes.get(subprograms.ISO_MODE_GROUP) != "G291":
+            return {}
+        turning = self.name == "iso-t"
+        view = display.iso_gcodes(gcodes, "iso-t" if turning else "iso-m")
+        if not turning:  # ISO M frame groups 11/16/17/22 from the geometry state
+            view.update(frames.display_codes(modal.geometry))
+        view.update(macros.display_codes(levels, modal, turning))  # groups 8 and 12
+        return view
+
+    def reads_variable(self, name: str) -> bool:
+        """``$C_…``, the H numbers and ``$P_EXTGG``."""
+        return name.startswith((_MACRO_ARGUMENTS, *_H_NUMBERS)) or name == _EXTGG
+
+    def read_variable(self, ctx: InterpreterContext, name: str, indices: tuple[Any, ...]) -> Any:
+        """Value of an ISO system variable."""
+        if name.startswith(_MACRO_ARGUMENTS):  # G65/G66 macro arguments
+            return macros.read(ctx, name, indices)
+        if name.startswith(_H_NUMBERS):
+            return tool_offsets.read(ctx, name, indices)
+        return display.read_extgg(ctx, indices)  # active ISO G code per ISO group
+
+    def writes_variable(self, name: str) -> bool:
+        """``$C_…``, the H numbers and the ``$P_ISOFR_…`` frame operations."""
+        return name.startswith((_MACRO_ARGUMENTS, *_H_NUMBERS, _ISO_FRAMES))
+
+    def write_variable(self, ctx: InterpreterContext, name: str, indices: tuple[Any, ...],
+                       value: Any) -> None:
+        """Write an ISO system variable."""
+        if name.startswith(_MACRO_ARGUMENTS):
+            macros.write(ctx, name, indices, value)
+        elif name.startswith(_H_NUMBERS):
+            tool_offsets.write(ctx, name, indices, value)
+        else:  # G68/G51/G51.1/G52 frames
+            frames.write(ctx, name, indices, value)
+
+    def bind_call(self, caller: CallLevel, callee: CallLevel, call: Any, modal: Any) -> None:
+        """``$C_…`` arguments for the called level; a PROC program runs in G290."""
+        macros.bind_call(caller, callee, call, modal)
+
+    def after_return(self, modal: Any, level: CallLevel) -> None:
+        """Back to G291 after a Siemens-mode (PROC) program called from ISO mode."""
+        if level.iso_macro is not None:
+            macros.after_return(modal, level)
+
+    def ends_whole_program(self, ctx: InterpreterContext, end_kind: str | None) -> bool:
+        """ISO mode: ``M30`` in a subprogram ends the whole program."""
+        return subprograms.ends_whole_program(ctx, end_kind)
+
+
+def is_iso(dialect: str) -> bool:
+    """True for the ISO language modes (``iso-m``, ``iso-t``)."""
+    return dialect in ISO_DIALECTS
+
+
+def dialect_for(name: str, machine: Any) -> IsoDialect:
+    """The dialect of language mode ``name`` with the machine's ISO machine data.
+
+    ``siemens`` gives Siemens mode with the G291 switch to ISO (no ISO settings, as
+    before: a switching program is translated with the defaults).
+    """
+    if not is_iso(name):
+        return IsoDialect(name)
+    md_value = getattr(machine, "md_value", None)
+    pocket = md_value("MD10884", None, True) if md_value else True
+    is_c = md_value("MD10886", None, 0) if md_value else 0
+    mask = md_value("MD20734", None, 0) if md_value else 0  # EXTERN_FUNCTION_MASK
+    system = md_value("MD10881", None, 0) if md_value else 0
+    digits = md_value("MD10888", None, 2) if md_value else 2
+    settings = IsoSettings(pocket_calculator=bool(pocket), increment_system_c=bool(is_c),
+                           gcode_system=int(system or 0), tool_digits=int(digits or 2),
+                           function_mask=int(mask or 0),
+                           fixed_feedrates=bool(md_value("MD22920", None, False)) if md_value else False,
+                           start_unit=_start_unit(md_value),
+                           **substitution_tables(md_value))
+    return IsoDialect(name, settings)
+
+
+def _start_unit(md_value: Any) -> str:
+    """MD 20154[5]: the inch/metric code an ISO main program starts with."""
+    return start_unit(md_value("MD20154", None, None)) if callable(md_value) else ""
