@@ -20,7 +20,10 @@ What a contact is (issue 22; the manuals do not describe a simulated workpiece):
   SINUMERIK number; data/alarms/contact.toml), in the alarm log; the motion stops.
 
 A tool already in contact moving deeper is judged the same way (a turning cutter goes on
-cutting; material removal is not modelled here).
+cutting). On a lathe the bar is turned: what a cutter removes cutting with the spindle turning
+is gone for the moves that follow (:mod:`nck.turned_bar`), so a rapid move back through space
+already turned is no crash; clamping a blank again (a new set-up) brings the whole bar back, as
+does a restart (the turned state is not retained data).
 
 In a program, ``MEAS=1``/``MEAW=1`` make a block a measuring block for the probe (002 L32646-32663
 names their results): when the probe switches in it, the trigger position is ``$AA_MM[axis]``
@@ -39,7 +42,8 @@ from typing import Any
 
 from nck.contact import BALL, CUTTER, ToolBody, clearance, first_contact
 from nck.errors import NcAlarmError
-from nck.workpiece import Point
+from nck.turned_bar import Z_GRID_MM, TurnedBar
+from nck.workpiece import Cylinder, Point
 
 PROBE_TOOL_TYPE = 710  # 3D probe (milling)
 PROBE_OVERTRAVEL_MM = 2.0  # trainer choice: how far a probe's stylus may be deflected
@@ -82,6 +86,8 @@ class ContactState:
     measured_mcs: dict[str, float] = field(default_factory=dict)  # $AA_MM
     measured_wcs: dict[str, float] = field(default_factory=dict)  # $AA_MW
     free: tuple[float, ToolBody, Point] | None = None  # at the step's start: gap to every solid, tool body, tip offset
+    turned: TurnedBar | None = None  # lathe: what is left of the bar (of the blank object ``turned_from``)
+    turned_from: Any = None
 
 
 class ContactWatch:
@@ -132,7 +138,9 @@ class ContactWatch:
             return cycles  # nothing can start moving inside this step
         body, offset = self._tool_body()
         tip = self._tip(self._path_positions(self.motion), offset)  # type: ignore[attr-defined]
-        gap = min(clearance(body, solid, tip) for _, solid in self.data.machine_setup.solids())
+        bar = self._turned_bar()
+        gap = min(bar.clearance(body, tip) if bar and name == "blank" else clearance(body, solid, tip)
+                  for name, solid in self.data.machine_setup.solids())
         self._contact.free = (gap, body, offset)
         step_mm = self._max_path_mm_s() * self._ipo_s * STEP_MARGIN  # type: ignore[attr-defined]
         return max(1, min(cycles, int(gap / step_mm))) if gap > 0.0 else 1
@@ -164,7 +172,11 @@ class ContactWatch:
         if (free is not None and not self._contact.touching and free[1:] == (body, offset)
                 and math.dist(start, end) < free[0]):
             return  # the tool moved less than its gap to every solid: nothing can be touched
+        bar = self._turned_bar()
         for name, solid in self.data.machine_setup.solids():
+            if bar is not None and name == "blank":
+                self._watch_turning(bar, body, before, after, start, end)
+                continue
             touching_before = name in self._contact.touching
             t = first_contact(body, solid, start, end)
             if t is None:
@@ -177,6 +189,34 @@ class ContactWatch:
                 self._on_deeper(name, body, solid, before, after, start, end)
             if clearance(body, solid, end) > 0.0:
                 self._contact.touching.discard(name)
+
+    def _watch_turning(self, bar: TurnedBar, body: ToolBody, before: dict[str, float], after: dict[str, float],
+                       start: Point, end: Point) -> None:
+        """A lathe's bar: a first touch is a contact event; while the tool stays on the surface it
+        turns, the cut goes on without new events (a crash still stops it); a cut removes material."""
+        touching = self._contact.touching
+        t = bar.first_contact(body, start, end)
+        if t is None:
+            if bar.clearance(body, end) > Z_GRID_MM:  # left the surface it turned (more than a cut's slack)
+                touching.discard("blank")
+            return
+        if "blank" not in touching:
+            touching.add("blank")
+            self._on_contact("blank", body, before, after, t)
+        elif (crash := self._crash_number()) is not None:
+            self._crash(crash, "blank", dict(after))
+        if self._crash_number() is None:
+            bar.cut(body, start, end)
+
+    def _turned_bar(self) -> TurnedBar | None:
+        """On a lathe with a bar clamped: what is left of it (whole again for a newly clamped blank)."""
+        blank = self.data.machine_setup.blank
+        if self.machine.kind != "lathe" or not isinstance(blank, Cylinder):
+            return None
+        state = self._contact
+        if state.turned is None or state.turned_from is not blank:
+            state.turned, state.turned_from = TurnedBar.of(blank), blank
+        return state.turned
 
     def _on_contact(self, name: str, body: ToolBody, before: dict[str, float], after: dict[str, float],
                     t: float) -> None:

@@ -68,7 +68,7 @@ from nck.regular_files import check_export_target, plain_directory, read_regular
 from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError, check_program_size
-from nck.workpiece import default_machine_setup, setup_from_plain, setup_to_plain
+from nck.workpiece import default_machine_setup, default_part_zero_mcs, setup_from_plain, setup_to_plain
 from nck.writes import DataWriter, WriteRefused
 
 FORMAT = "sinumerik-trainer/retained"
@@ -563,6 +563,9 @@ class Session:
             rd.ncdata.tools = {key: ToolEdge(params=dict(params)) for key, params in read_tool_table(table).items()}
         if fresh_setup:  # a new data directory: the default blank of the machine kind is clamped
             rd.ncdata.machine_setup = default_machine_setup(machine.kind)
+            part_zero = default_part_zero_mcs(machine.kind, rd.ncdata.machine_setup)
+            if part_zero and rd.ncdata.settable_frame("G54") == WorkOffset():  # a lathe: G54 on the bar's face
+                rd.ncdata.settable_frames["G54"] = WorkOffset(trans=part_zero)
         if not rd.access.password_hashes:  # fresh, or the access file was lost
             rd.access.password_hashes = default_password_hashes()
         session = cls(data_dir, machine, rd, files, alarms)

@@ -19,7 +19,10 @@ Trainer choice (the manuals are silent on a simulated workpiece): the shipped de
 a mill is a 100 × 80 × 30 mm block in the middle of the table with its top at Z −220 and a
 reference block of 50 mm height beside it (:func:`default_machine_setup`); on a lathe a
 bar of 60 mm diameter standing out 100 mm from the chuck face at Z 200 (free end at Z 300;
-the reference point X 0 Z 0 of the shipped lathe stays clear of it).
+the reference point X 0 Z 0 of the shipped lathe stays clear of it). A fresh lathe data
+directory also starts with G54 on the centre of the bar's free face
+(:func:`default_part_zero_mcs`), so a turning program's X0 Z0 (the face of the part, as the
+samples are written) lies on the bar in the chuck without a set-up step.
 """
 
 from __future__ import annotations
@@ -86,6 +89,15 @@ def default_machine_setup(machine_kind: str) -> MachineSetup:
         blank=Box((-50.0, -40.0, -250.0), (50.0, 40.0, -220.0)),
         reference=Box((150.0, -20.0, -250.0), (190.0, 20.0, -200.0)),
     )
+
+
+def default_part_zero_mcs(machine_kind: str, setup: MachineSetup) -> dict[str, float]:
+    """The G54 translation a fresh data directory starts with: on a lathe with a bar clamped
+    the centre of its free face (X on the turning axis, Z the face); elsewhere none (empty)."""
+    blank = setup.blank
+    if machine_kind != "lathe" or not isinstance(blank, Cylinder):
+        return {}
+    return {"X": blank.base_mcs[0], "Z": blank.top_z_mcs}
 
 
 # --------------------------------------------------------------------- plain form

@@ -14,6 +14,8 @@ PROGRAM = """G18 G90 DIAMON G54
 T1 D1
 G96 S200 LIMS=3000 M4
 G95 F0.2
+G0 X100
+Z2
 G0 X60 Z2
 G1 X40 Z0
 G1 Z-30
@@ -39,10 +41,12 @@ def test_a_fresh_mill_data_directory_keeps_the_milling_tools(tmp_path: Path) -> 
 
 def test_a_turning_program_with_t1_d1_runs_in_auto(tmp_path: Path) -> None:
     """T1 D1: length 1 = 20 along X (radius), length 2 = 40 along Z. The end point X80 Z50 under
-    DIAMON is radius 40, so the slide stands at MCS X 40+20 = 60, Z 50+40 = 90."""
+    DIAMON is radius 40, so the slide stands at MCS X 40+20 = 60, Z 50+300+40 = 390 (G54 Z 300:
+    the face of the bar a fresh lathe data directory has clamped; the tool goes out in X before
+    it comes along Z, clear of the bar Ø60, and cuts it without a crash)."""
     data = Session.open(tmp_path / "data", load_machine("lathe2")).ncdata
     result = run_on_kernel(load_machine("lathe2"), MemorySource({"TURN.MPF": PROGRAM}), data, "TURN.MPF",
                            timeout_s=600.0)
     assert result.status == "ended", result.alarms
     assert result.position_mcs is not None
-    assert (round(result.position_mcs["X"], 3), round(result.position_mcs["Z"], 3)) == (60, 90)
+    assert (round(result.position_mcs["X"], 3), round(result.position_mcs["Z"], 3)) == (60, 390)

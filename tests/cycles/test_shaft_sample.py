@@ -54,11 +54,25 @@ def test_shaft_sample_cuts_as_computed_by_hand(tmp_path: Path) -> None:
 
 
 def test_shaft_sample_runs_in_auto(tmp_path: Path) -> None:
-    """AUTO with NC START (as nck run): the program ends without an alarm at X100 Z100 with the
-    threading tool T4 (length 1 = 24 in radius, length 2 = 44): MCS X 50+24, Z 100+44."""
+    """AUTO with NC START (as nck run) on a fresh lathe data directory: the bar Ø60 from the chuck
+    face Z 200 to Z 300 is clamped and G54 is Z 300 (its face). The program cuts the bar without
+    a crash and ends at X100 Z100 with the threading tool T4 (length 1 = 24 in radius, length 2 =
+    44): MCS X 50+24, Z 300+100+44."""
     lathe = load_machine("lathe2")
     data = Session.open(tmp_path / "data", lathe).ncdata
     result = run_on_kernel(lathe, DirectorySource(SAMPLE.parent), data, SAMPLE.name, timeout_s=3600.0)
     assert result.status == "ended", result.alarms
     assert result.position_mcs is not None
-    assert (round(result.position_mcs["X"], 3), round(result.position_mcs["Z"], 3)) == (74, 144)
+    assert (round(result.position_mcs["X"], 3), round(result.position_mcs["Z"], 3)) == (74, 444)
+
+
+def test_shaft_sample_cuts_the_bar_in_the_chuck(tmp_path: Path) -> None:
+    """On a fresh lathe data directory the first roughing cut lies on the bar: it ends at WCS
+    Z-59.8 (see above), G54 Z 300 and T1's length 2 = 40 make MCS Z 300 - 59.8 + 40 = 280.2, and
+    its diameter 46.65 is inside the bar's 60, outside its chuck face Z 200."""
+    lathe = load_machine("lathe2")
+    data = Session.open(tmp_path / "data", lathe).ncdata
+    result = interpret_only(lathe, DirectorySource(SAMPLE.parent), data, SAMPLE.name, max_blocks=100_000)
+    first_cut = next(m for m in result.segments if m.kind == "G1")
+    assert round(first_cut.end_mcs["Z"], 3) == 280.2
+    assert round(first_cut.end_mcs["Z"] - 40 - 200, 3) == 40.2  # the tip 40.2 mm in front of the chuck
