@@ -737,19 +737,33 @@ class PathBuilder:
 
 
 def couples_axes(transform: Transform) -> bool:
-    """True when the linear part of ``transform`` mixes axes (a rotation, not only scaling/mirroring)."""
-    m = transform.matrix[:3, :3]
-    return bool(np.any(np.abs(m - np.diag(np.diag(m))) > 1e-12))
+    """True when the linear part of ``transform`` mixes axes (a rotation, not only scaling/mirroring).
+
+    Cached on the transform (immutable: a frame change makes a new one), as every motion asks.
+    """
+    cached = transform.__dict__.get("_couples_axes")
+    if cached is None:
+        m = transform.matrix[:3, :3]
+        cached = transform.__dict__["_couples_axes"] = bool(np.any(np.abs(m - np.diag(np.diag(m))) > 1e-12))
+    return cached
 
 
 def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[str, float]:
-    """Map an arc's turning axis through a linear map (cofactor rule keeps the turning sense)."""
-    a = transform.matrix[:3, :3]
-    cof = np.linalg.det(a) * np.linalg.inv(a).T
-    n = cof @ np.asarray(axis, dtype=float)
-    n = n / float(np.linalg.norm(n))
-    names = transform.geometry_axes
-    return {names[i]: _r(n[i]) for i in range(3)}
+    """Map an arc's turning axis through a linear map (cofactor rule keeps the turning sense).
+
+    Cached per transform and axis: an arc program turns about the same few axes.
+    """
+    normals = transform.__dict__.setdefault("_arc_normals", {})
+    key = tuple(float(v) for v in axis)
+    found = normals.get(key)
+    if found is None:
+        a = transform.matrix[:3, :3]
+        cof = np.linalg.det(a) * np.linalg.inv(a).T
+        n = cof @ np.asarray(axis, dtype=float)
+        n = n / float(np.linalg.norm(n))
+        names = transform.geometry_axes
+        found = normals[key] = {names[i]: _r(n[i]) for i in range(3)}
+    return dict(found)
 
 
 def end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:

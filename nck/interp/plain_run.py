@@ -42,6 +42,10 @@ if TYPE_CHECKING:
 BATCH_LINES = 32_768
 """At most this many blocks per batch (bounds the memory of the arrays)."""
 
+MIN_BATCH_LINES = 16
+"""Shorter runs of plain blocks go block by block (:mod:`nck.interp.plain_step`): the same
+result, without the fixed cost of the arrays (CAM code mixes a few lines between arcs)."""
+
 ROUND_SAFE_MM = 4.0e6  # below this, a value that numpy rounds to itself is Python-rounded to itself
 _NAN = math.nan
 
@@ -118,8 +122,8 @@ def plan(interp: Interpreter, max_blocks: int) -> PlainBatch | None:
     frame, lines = found
     first = frame.pc
     stop = min(frame.program.plain_run_end(first), first + max_blocks, first + BATCH_LINES)
-    if stop <= first:
-        return None
+    if stop - first < max(MIN_BATCH_LINES, 1):
+        return None  # a short run between arcs: block by block is cheaper than the arrays
     setup = simple_setup(interp)
     if setup is None:
         return None

@@ -19,6 +19,7 @@ ALARM_SW_LIMIT_AUTO = 10720
 ALARM_WORKAREA_AUTO = 10730
 ALARM_SW_LIMIT_JOG = 10621
 ALARM_WORKAREA_JOG = 10631
+ARC_BOX_MARGIN_MM = 1e-6  # covers the rounding of cos/sin in the sampled positions
 EDGE_MM = 1e-6
 
 
@@ -87,8 +88,9 @@ class Limits:
                 if value < w_minus - EDGE_MM:
                     return ALARM_WORKAREA_AUTO, name, "-"
             return None
-        else:
-            points = segment.positions(np.linspace(0.0, segment.length, 65))
+        if self._arc_inside(segment, referenced):
+            return None  # the arc's bounding box is inside every limit: no sample can be outside
+        points = segment.positions(np.linspace(0.0, segment.length, 65))
         low = points.min(axis=0)
         high = points.max(axis=0)
         moved = np.abs(segment.end - segment.start) > 0
@@ -108,6 +110,27 @@ class Limits:
             if low[i] < w_minus - EDGE_MM:
                 return ALARM_WORKAREA_AUTO, axis.name, "-"
         return None
+
+    def _arc_inside(self, segment: Segment, referenced: list[bool]) -> bool:
+        """True when a box around the whole arc (centre ± the larger radius in its plane, start
+        and end in the other axes) lies inside the software limits and the working area of every
+        referenced axis; then the sampled check below cannot find a violation."""
+        i1, i2, c1, c2, r0, r1, _, _ = segment.arc  # type: ignore[misc]
+        reach = max(abs(r0), abs(r1)) + ARC_BOX_MARGIN_MM
+        starts, ends = segment.start.tolist(), segment.end.tolist()
+        for i, axis in enumerate(self.axes):
+            if not referenced[i]:
+                continue
+            low, high = min(starts[i], ends[i]), max(starts[i], ends[i])
+            if i == i1:
+                low, high = min(low, c1 - reach), max(high, c1 + reach)
+            elif i == i2:
+                low, high = min(low, c2 - reach), max(high, c2 + reach)
+            minus, plus = self.software(i)
+            w_minus, w_plus = self.workarea(i)
+            if high > min(plus, w_plus) + EDGE_MM or low < max(minus, w_minus) - EDGE_MM:
+                return False
+        return True
 
     def jog_limit(self, i: int, direction: float, referenced: bool) -> tuple[float, int]:
         """The limit a JOG motion in ``direction`` stops at, and the alarm for pressing on."""

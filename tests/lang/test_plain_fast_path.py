@@ -17,6 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from bench.corpus import cam_milling
 from nck.headless import interpret_only
 from nck.interp import plain_run, plain_step
 from nck.interp import program as program_module
@@ -61,6 +62,16 @@ def _run(text: str, fast: bool, **limits: Any) -> dict[str, Any]:
         "state": (interp._state.blocks, interp._state.finished,
                   [(f.pc, f.def_open) for f in interp._state.frames]),
     }
+
+
+@pytest.fixture(autouse=True, scope="module")
+def batches_of_any_length() -> Any:
+    """Runs of every length take the batch path here (by default a run shorter than
+    ``MIN_BATCH_LINES`` goes block by block), so the random programs exercise the batches."""
+    default = plain_run.MIN_BATCH_LINES
+    plain_run.MIN_BATCH_LINES = 1
+    yield
+    plain_run.MIN_BATCH_LINES = default
 
 
 def _same(text: str, **limits: Any) -> dict[str, Any]:
@@ -285,3 +296,25 @@ def test_the_kernel_run_is_the_same_with_plain_steps() -> None:
         outcomes.append((result.status, result.blocks, result.machine_time_s, result.segments))
     assert outcomes[0] == outcomes[1]
     assert outcomes[1][0] == "ended" and len(outcomes[1][3]) == 300
+
+
+# ----------------------------------------------------------------------------- the bench corpus (issue 25)
+CORPUS_TOOLS = "".join(f"$TC_DP1[{t},1]=120\n$TC_DP3[{t},1]={60 + 5 * t}\n" for t in range(1, 5))
+
+
+@pytest.mark.parametrize("min_batch", [1, 16])
+def test_fast_path_agrees_on_the_cam_corpus(min_batch: int, monkeypatch: pytest.MonkeyPatch) -> None:
+    """CAM output (bench/corpus.py): N numbers, lines with F changes, arcs with I/J and CR=,
+    helices, comments, Z steps and tool changes give the general path's result, with batches
+    of any length and with the default threshold."""
+    monkeypatch.setattr(plain_run, "MIN_BATCH_LINES", min_batch)
+    text = CORPUS_TOOLS + cam_milling(1200, seed=3).siemens
+    result = _same(text, max_blocks=None)
+    assert result["status"] == "ended" and not result["alarms"]
+
+
+def test_plain_steps_agree_block_by_block_on_the_cam_corpus() -> None:
+    text = CORPUS_TOOLS + cam_milling(190, seed=4).siemens
+    results, alarms, state = _steps(text, True)
+    assert not alarms and len(results) == 190 + 8
+    assert (results, alarms, state) == _steps(text, False)
