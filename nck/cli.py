@@ -1,8 +1,8 @@
 """The headless command line ``nck`` (contract: ``/work/shared/spec/cli.md``).
 
 ``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck grade STUDENT --reference REF``
-(:mod:`nck.grade`), ``nck version``; ``nck md``
-is dispatched to its own module when present. Exit codes: 0 ok, 1 alarm or
+(:mod:`nck.grade`), ``nck version``; ``nck md``, ``nck setup`` and ``nck archive`` are
+dispatched to their own modules. Exit codes: 0 ok, 1 alarm or
 problems found, 2 command line / file problem, 3 timeout (``nck run``: one hour of
 simulated time unless ``--timeout`` says otherwise; ``nck check``: a program not ended
 after ``--max-blocks``, default 200,000 blocks), 141 the reader of the standard output
@@ -123,6 +123,10 @@ def _main(args: list[str]) -> int:
         from nck import cli_archive
 
         return cli_archive.main(args[1:], wait_s=wait_s)
+    if args[:1] == ["setup"]:
+        from nck import cli_setup
+
+        return cli_setup.main(args[1:], wait_s=wait_s)
     if args[:1] == ["md"]:
         try:
             from nck import cli_md  # type: ignore[attr-defined]
@@ -147,7 +151,7 @@ def _main(args: list[str]) -> int:
             return _run(options)
         if options.command == "grade":
             return _grade(options)
-        print("usage: nck {check,run,grade,md,archive,version} ...", file=sys.stderr)
+        print("usage: nck {check,run,grade,md,setup,archive,version} ...", file=sys.stderr)
         return 2
     except CliError as exc:
         print(f"nck: {exc}", file=sys.stderr)

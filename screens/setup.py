@@ -9,6 +9,8 @@ level, type and limits). ``Set MD active (cf)`` sends ``ActivateMachineData``;
 ``Reset (po)`` restarts the simulated NCK from the retained data so that
 power-on data take effect. The ``Password`` view shows the access level and
 offers set / change / delete password, and the date and time of the control.
+``Machine set-up`` lists what is clamped (:mod:`screens.setup_workpiece`): the
+instructor moves the blank by typing its position and hides it from the trainee.
 """
 
 from __future__ import annotations
@@ -33,9 +35,11 @@ from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
 )
+from screens.setup_workpiece import workpiece_table
 
 MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",
             "axis": "Axis machine data", "display": "Display machine data"}
+TABLE_VIEWS = (*MD_VIEWS, "workpiece")
 ACTIVATION_TEXT = {"so": "immediately", "re": "at RESET", "cf": "at NEW CONFIG (Set MD active) or RESET",
                    "po": "at POWER ON (Reset (po))"}
 LEVEL_NAMES = {0: "System", 1: "Manufacturer", 2: "Service", 3: "User"}
@@ -93,7 +97,7 @@ class SetupScreen(AreaBase):
         self.view = "general"
         self.axis_index = 0
         self.search = ""
-        self.cursors = {view: TableCursor() for view in MD_VIEWS}
+        self.cursors = {view: TableCursor() for view in TABLE_VIEWS}
         self.table: DataTable | None = None
         self.power_on_at: datetime | None = None  # wall clock at the NCK's power on, set when first shown
         self._drawn_key: tuple = ()
@@ -130,7 +134,7 @@ class SetupScreen(AreaBase):
             view_softkey("setup.channel", "Channel\nMD", "channel"),
             view_softkey("setup.axis", "Axis\nMD", "axis"),
             view_softkey("setup.display", "Display\nMD", "display"),
-            None,
+            view_softkey("setup.workpiece", "Machine\nset-up", "workpiece"),
             view_softkey("setup.password", "Password", "password"),
             Softkey("setup.new_config", "Set MD\nactive (cf)", "new_config",
                     enabled=lambda s: s.status is not None and s.status.channel.channel_state == "reset"),
@@ -145,6 +149,11 @@ class SetupScreen(AreaBase):
                 Softkey("setup.pw.change", "Change\npassword", "change_password", level=3),
                 Softkey("setup.pw.delete", "Delete\npassword", "delete_password"),
             ]
+        if self.view == "workpiece":
+            level = self.ask(queries.ActionLevel("WRITE_MACHINE_SETUP"))
+            return [Softkey("setup.workpiece.hide", "Hide\nblank", "toggle_hidden", level=level,
+                            active=lambda s: bool(s.machine_setup and s.machine_setup.hidden)),
+                    None, None, None, None, None, None, Softkey("setup.edit", "Edit\n(Enter)", "edit")]
         keys: list[Softkey | None] = [
             Softkey("setup.search", "Search", "focus_search"),
             Softkey("setup.search.clear", "Show\nall", "clear_search", enabled=lambda s: bool(s.search)),
@@ -163,8 +172,8 @@ class SetupScreen(AreaBase):
             self.say("")
         self.view = view
         if self.is_mounted:
-            table_view = view in MD_VIEWS
-            self.query_one("#md-search").display = table_view
+            table_view = view in TABLE_VIEWS
+            self.query_one("#md-search").display = view in MD_VIEWS
             self.query_one("#setup-table").display = table_view
             self.query_one("#setup-access").display = not table_view
         self.refresh_view()
@@ -188,7 +197,7 @@ class SetupScreen(AreaBase):
     def apply_search(self, text: str) -> None:
         """Filter the lists by number or part of the name."""
         self.search = text.strip()
-        self.cursors = {view: TableCursor() for view in MD_VIEWS}
+        self.cursors.update({view: TableCursor() for view in MD_VIEWS})
         self.refresh_view()
         self.refresh_softkeys()
 
@@ -201,7 +210,7 @@ class SetupScreen(AreaBase):
 
     def action_cursor(self, rows: int, columns: int) -> None:
         """Arrow keys: move the selected row."""
-        if self.table is not None and self.view in MD_VIEWS:
+        if self.table is not None and self.view in TABLE_VIEWS:
             self.cursors[self.view].move(self.table, int(rows), int(columns))
             self.refresh_view()
 
@@ -215,7 +224,7 @@ class SetupScreen(AreaBase):
 
         ``typed``: the character typed on the cell, which the field starts with instead of the value.
         """
-        if self.table is None or self.view not in MD_VIEWS:
+        if self.table is None or self.view not in TABLE_VIEWS:
             return
         cursor = self.cursors[self.view]
         cell = self.table.cell(cursor.row, cursor.column)
@@ -225,6 +234,10 @@ class SetupScreen(AreaBase):
             self.hmi.set_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
             return
         name = cell.name
+        if self.view == "workpiece":
+            self.app.push_screen(ValueDialog(f"Change {cell.hint.split(':')[0]}", cell.edit_text, cell.hint,
+                                             typed=typed), lambda text: self.write_setup_field(name, text))
+            return
         definition = self.data_view.machine_data.resolve(name).definition
 
         def write(text: str | None) -> None:
@@ -245,6 +258,32 @@ class SetupScreen(AreaBase):
             self.refresh_view()
 
         self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint, typed=typed), write)
+
+    @property
+    def machine_setup(self) -> Any:
+        """What is clamped (``nck.commands.MachineSetup``), or None for a kernel without NC data."""
+        return self.ask(queries.MachineSetupData())
+
+    def write_setup_field(self, name: str, text: str | None) -> None:
+        """Write one field of the machine set-up (the kernel checks the level)."""
+        setup = self.machine_setup
+        if text is None or setup is None:
+            return
+        try:
+            changed = queries.with_field(setup, name, text, self.data_view.machine.kind)
+        except queries.SetupFieldError as error:
+            self.hmi.set_hint(str(error))
+            return
+        if isinstance(self.submit(cmd.WriteMachineSetup(changed)), Accepted):
+            self.hmi.set_hint(f"Machine set-up: {name} = {text.strip()}")
+        self.refresh_view()
+        self.refresh_softkeys()
+
+    def action_toggle_hidden(self) -> None:
+        """Hide blank: the trainee no longer sees where the blank is (pressed again: shown)."""
+        setup = self.machine_setup
+        if setup is not None:
+            self.write_setup_field("hidden", "no" if setup.hidden else "yes")
 
     def action_new_config(self) -> None:
         """Set MD active (cf): stored machine data of activation cf and re take effect."""
@@ -341,7 +380,12 @@ class SetupScreen(AreaBase):
             self.table = DataTable("This kernel offers no machine data", [Column("", 1)], [])
             self.query_one("#setup-table", TableWindow).show(self.table, TableCursor(), self.access_level)
             return
-        if self.view in MD_VIEWS:
+        if self.view == "workpiece":
+            setup = self.machine_setup
+            self.table = (workpiece_table(setup, self.access_level, self.ask(queries.ActionLevel("WRITE_MACHINE_SETUP")))
+                          if setup is not None else DataTable("This kernel has no machine set-up", [Column("", 1)], []))
+            self.query_one("#setup-table", TableWindow).show(self.table, self.cursors[self.view], self.access_level)
+        elif self.view in MD_VIEWS:
             axis = self.axis if self.view == "axis" else None
             self.table = md_table(store, self.view, axis, self.search, self.access_level)
             self.query_one("#setup-table", TableWindow).show(self.table, self.cursors[self.view],

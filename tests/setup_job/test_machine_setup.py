@@ -1,5 +1,5 @@
 """Issue 22: what is clamped on the machine (blank, reference block, hidden switch) — kept
-in the retained data, read and written through the façade at protection level 3."""
+in the retained data, read and written through the façade at protection level 2 (service)."""
 
 from __future__ import annotations
 
@@ -71,7 +71,7 @@ def test_plain_form_round_trips_and_refuses_nonsense() -> None:
         raise AssertionError(f"accepted {bad}")
 
 
-def test_facade_reads_and_writes_the_setup_at_level_3() -> None:
+def test_facade_reads_and_writes_the_setup_at_level_2() -> None:
     data_kernel = Nck(access=AccessControl(AccessState(keyswitch_position=0)))
     assert answer(data_kernel, MachineSetupData()) == MachineSetup()
     refused = data_kernel.submit(WriteMachineSetup(CUSTOM))  # keyswitch 0 = level 7
@@ -80,6 +80,8 @@ def test_facade_reads_and_writes_the_setup_at_level_3() -> None:
     assert data_kernel.submit(SetKeyswitch(3)) == Accepted()  # keyswitch 3 = level 4: still too low
     assert isinstance(data_kernel.submit(WriteMachineSetup(CUSTOM)), Rejected)
     assert data_kernel.submit(EnterPassword("CUSTOMER")) == Accepted()  # level 3 (002 L1439-1449)
+    assert isinstance(data_kernel.submit(WriteMachineSetup(CUSTOM)), Rejected)  # a trainee may know it
+    assert data_kernel.submit(EnterPassword("EVENING")) == Accepted()  # level 2, service
     assert data_kernel.submit(WriteMachineSetup(CUSTOM)) == Accepted()
     assert answer(data_kernel, MachineSetupData()) == CUSTOM
     assert any("set-up" in entry.text for entry in data_kernel.logbook)
