@@ -6,7 +6,9 @@ Supported now:
   (from the position source the channel installs; the programmed position otherwise);
 * ``$AA_MM[ax]``, ``$AA_MW[ax]``, ``$AC_MEA[1]`` — the probe's trigger position (MCS / WCS)
   and status of the last ``MEAS``/``MEAW`` block (from the kernel, ``nck.kernel_contact``);
-* ``$P_EP[ax]`` programmed end point, ``$P_F`` feed, ``$P_S`` spindle speed,
+* ``$P_EP[ax]`` programmed end point, ``$P_F`` feed, ``$P_S`` spindle speed, ``$P_SDIR``
+  programmed direction of the master spindle (3 = M3, 4 = M4, 5 = stopped: M5 or SPOS, 002
+  L53786 names it among the spindle variables; the values are the M numbers, our reading),
   ``$P_TOOLNO`` active tool, ``$P_TOOL`` active edge, ``$P_GG[g]`` position of the
   active G code in group g, ``$P_AXN1..3`` geometry axes, ``$P_SEARCH``,
   ``$P_ISTEST``, ``$P_DRYRUN``, ``$P_STACK`` program level, ``$P_PROG`` program name;
@@ -133,12 +135,14 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
         if given is None:
             raise NcAlarmError(17020, name)
         return given
-    if indices and name not in ("$P_GG", "$P_S") and not _TC_DP.match(name) and not _MD.match(name):
+    if indices and name not in ("$P_GG", "$P_S", "$P_SDIR") and not _TC_DP.match(name) and not _MD.match(name):
         raise NcAlarmError(12550, name)
     if name == "$P_F":
         return float(modal.feed)
     if name == "$P_S":
         return float(modal.spindle_speed_rpm)
+    if name == "$P_SDIR":
+        return {"M3": 3, "M4": 4}.get(modal.spindle_state, 5)
     if name == "$P_TOOLNO":
         return int(modal.tool)
     if name == "$P_TOOL":

@@ -20,6 +20,7 @@ DECLARATION = f"DEF REAL {INITIAL_Z}, {R_PLANE_Z}"
 CYCLE_CODES = frozenset({73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 89})
 PECK_RETRACT_MM = 1.0  # G73 chip-break retract and G83 re-approach clearance (_ZSFR[1] <= 0)
 ALARM_CYCLE_PARAMETER = 61808
+ALARM_NO_SPINDLE_DIRECTION = 61102
 
 
 @dataclass
@@ -48,7 +49,8 @@ def expand(state: CycleState, absolute: bool, hole: list[str], feed: str | None,
     """Siemens blocks for one cycle call at the hole given by ``hole`` words (``X10`` …).
 
     ``absolute`` is G90 (R and Z absolute) or G91 (R from the initial plane, Z
-    from the R plane). Raises 61808 when Z (or Q for G73/G83) is missing.
+    from the R plane). Raises 61808 when Z (or Q for G73/G83) is missing; the blocks raise
+    61102 when the spindle does not turn (M3/M4) at the call.
     """
     params = state.params
     code = state.code
@@ -56,7 +58,9 @@ def expand(state: CycleState, absolute: bool, hole: list[str], feed: str | None,
         raise NcAlarmError(ALARM_CYCLE_PARAMETER, "Z")
     if code in (73, 83) and params.get("Q", 0.0) <= 0:
         raise NcAlarmError(ALARM_CYCLE_PARAMETER, "Q")
-    blocks: list[str] = []
+    # Like the control's shell cycles (000 L5891: 61102 "Spindle direction M03 or M04 missing"),
+    # every call checks that the spindle turns before the tool moves.
+    blocks: list[str] = ["IF ($P_SDIR<>3) AND ($P_SDIR<>4)", f"SETAL({ALARM_NO_SPINDLE_DIRECTION})", "ENDIF"]
     if not state.initial_captured:
         blocks.append(f"{INITIAL_Z}=$P_EP[Z]")
         state.initial_captured = True

@@ -7,7 +7,7 @@ import pytest
 from nck.iso.cycles import peck_depths
 from tests.iso.conftest import ends, run_iso
 
-HEAD = "G0 X0 Y0 Z50.\n"
+HEAD = "G0 X0 Y0 Z50. M3 S1000\n"  # the spindle turns: a drilling cycle without M3/M4 is 61102
 
 
 def _z_path(result):
@@ -122,3 +122,20 @@ def test_m98_l_takes_precedence_over_count_digits():
     assert result.status == "ended", result.alarms
     assert len(result.segments) == 2
 
+
+
+@pytest.mark.parametrize("code", ["G81 X10. Y20. Z-15. R5.", "G84 X10. Y20. Z-15. R5.",
+                                  "G86 X10. Y20. Z-15. R5.", "G83 X10. Y20. Z-15. R5. Q5."])
+@pytest.mark.parametrize("spindle", ["", "M5", "M3 S1000\nM5"])
+def test_a_drilling_cycle_without_spindle_direction_is_61102(code, spindle):
+    """000 L5891: 61102 "No spindle direction programmed" (spindle direction M03 or M04 missing)
+    in the shell cycles of G81 … G89: the cycle stops before any motion of the hole."""
+    result = run_iso(f"G0 X0 Y0 Z50.\n{spindle}\nG90 G99 {code} F1000\nG80\nM30\n".replace("\n\n", "\n"))
+    assert result.status == "alarm" and [a.number for a in result.alarms] == [61102]
+    assert all(point["Z"] == 50.0 for _, point in ends(result))  # not one move towards the hole
+
+
+@pytest.mark.parametrize("spindle", ["M3 S1000", "M4 S500"])
+def test_a_drilling_cycle_with_the_spindle_turning_runs(spindle):
+    result = run_iso(f"G0 X0 Y0 Z50. {spindle}\nG90 G99 G81 X10. Y20. Z-15. R5. F1000\nG80\nM30\n")
+    assert result.status == "ended", result.alarms

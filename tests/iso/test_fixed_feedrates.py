@@ -82,7 +82,7 @@ def test_digest_iso_milling_rank_08_macro_call_gets_the_digit_and_a_cycle_the_fe
     macro = _run(True, "N10 G65 P10 F1\nM30\n", {"O0010": "G290\nR2=$C_F\nG291\nM99\n"})
     assert macro.status == "ended", macro.alarms
     assert macro.interpreter.r(2) == 1.0
-    drilled = _run(True, "N10 G90 G00 X0 Y0 Z10.\nN20 G81 X10. Y10. Z-5. R2. F1\nN30 G80\nM30\n")
+    drilled = _run(True, "N10 G90 G00 X0 Y0 Z10. M3 S1000\nN20 G81 X10. Y10. Z-5. R2. F1\nN30 G80\nM30\n")
     assert drilled.status == "ended", drilled.alarms
     feeds = [m.feed for m in drilled.segments if m.source.line == 2]
     assert feeds[2] == 1000.0

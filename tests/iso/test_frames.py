@@ -325,7 +325,7 @@ def test_iso_t_has_no_milling_frames(code):
 def test_drilling_cycle_under_g16_is_61814():
     result = run_iso("G16 G81 X10. Y45. Z-5. R2. F100\nG80\nM30\n")
     assert result.status == "alarm" and result.alarms[0].number == 61814
-    result = run_iso("G16 X10. Y45.\nG15\nG81 X10. Y45. Z-5. R2. F100\nG80\nM30\n")
+    result = run_iso("M3 S1000\nG16 X10. Y45.\nG15\nG81 X10. Y45. Z-5. R2. F100\nG80\nM30\n")
     assert result.status == "ended", result.alarms
 
 
