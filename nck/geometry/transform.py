@@ -9,8 +9,9 @@ scale and mirror such axes but never rotate them.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -58,11 +59,40 @@ class Transform:
         return cls(geometry_axes=geometry_axes, matrix=matrix, axial=axial)
 
     # --- use ---------------------------------------------------------------------------
+    def axis_affine(self) -> tuple[tuple[float, float, float], tuple[float, float, float]] | None:
+        """(scale, offset) per geometry axis when the matrix maps every axis on its own, else None.
+
+        Only exactly diagonal matrices, per axis a scale of ±1 or no offset, and no offset of
+        -0.0: then ``matrix @ point`` is ``point_i * m_ii + t_i`` bit for bit, whatever the order
+        of the sum (the zero products add nothing, and a fused multiply-add rounds the same).
+        Cached (a transform is immutable).
+        """
+        cached = self.__dict__.get("_axis_affine", False)
+        if cached is not False:
+            return cached
+        matrix = self.matrix
+        linear = matrix[:3, :3]
+        found: Any = None
+        if not (np.count_nonzero(linear - np.diag(np.diag(linear)))
+                or np.count_nonzero(matrix[3] - (0.0, 0.0, 0.0, 1.0))):
+            scale = (float(matrix[0, 0]), float(matrix[1, 1]), float(matrix[2, 2]))
+            offset = (float(matrix[0, 3]), float(matrix[1, 3]), float(matrix[2, 3]))
+            negative_zero = [value == 0.0 and math.copysign(1.0, value) < 0.0 for value in offset]
+            if all((abs(scale[i]) == 1.0 or offset[i] == 0.0) and not negative_zero[i] for i in range(3)):
+                found = (scale, offset)
+        self.__dict__["_axis_affine"] = found
+        return found
+
     def apply(self, point: Mapping[str, float]) -> dict[str, float]:
         """Map a point (all geometry axes present, missing ones count as 0) to the parent."""
-        geo = np.array([float(point.get(a, 0.0)) for a in self.geometry_axes] + [1.0])
-        mapped = self.matrix @ geo
-        out = {axis: float(mapped[i]) for i, axis in enumerate(self.geometry_axes)}
+        values = [float(point.get(a, 0.0)) for a in self.geometry_axes]
+        affine = self.axis_affine()
+        if affine is not None and math.isfinite(values[0] + values[1] + values[2]):
+            scale, offset = affine  # the matrix product below, without numpy's call overhead
+            out = {axis: values[i] * scale[i] + offset[i] for i, axis in enumerate(self.geometry_axes)}
+        else:
+            mapped = self.matrix @ np.array(values + [1.0])
+            out = {axis: float(mapped[i]) for i, axis in enumerate(self.geometry_axes)}
         for axis, value in point.items():
             if axis in out:
                 continue

@@ -4,7 +4,7 @@ The modal state is *simple* for plain blocks (:mod:`nck.lang.plain`) when the
 motion type is G0/G1, the distance mode G90/G91, the feed type G94, radius
 compensation off (G40, nothing buffered), no chamfer or rounding pending or
 modal, the settable frame current, and the frame chain maps every geometry
-axis on its own (see :func:`axis_affine`). Then a plain block only moves the
+axis on its own (:meth:`~nck.geometry.transform.Transform.axis_affine`). Then a plain block only moves the
 programmed point: :mod:`nck.interp.plain_run` (batches) and
 :mod:`nck.interp.plain_step` (one block) compute it without the general path.
 """
@@ -14,10 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
 
 from nck.errors import NcAlarmError
-from nck.geometry.path_builder import couples_axes
 from nck.geometry.trc_canon import STAGE_ATTRIBUTE
 from nck.geometry.units import UnitSystem
 from nck.lang.lines import TextLines
@@ -116,7 +114,7 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
     stage = getattr(geo, STAGE_ATTRIBUTE, None)
     if stage is None or stage.compensator.active:
         return None
-    affine = axis_affine(geo.frames.transform())
+    affine = geo.frames.transform().axis_affine()
     if affine is None:
         return None
     path = interp.builder.path
@@ -154,29 +152,6 @@ def _units(interp: Interpreter, code: str) -> tuple[float, float]:
     if found is None:
         units = UnitSystem(code, basic_metric=interp.builder.path.basic_metric)
         found = table[code] = (units.position_mm, units.feed_mm)
-    return found
-
-
-def axis_affine(transform: Any) -> tuple[tuple[float, float, float], tuple[float, float, float]] | None:
-    """(scale, offset) per geometry axis of a frame that maps every axis on its own, else None.
-
-    Only exactly diagonal matrices, and per axis a scale of ±1 or no offset:
-    then ``matrix @ point`` is ``point_i * m_ii + t_i`` bit for bit, whatever
-    the order of the sum. Cached on the (immutable) transform.
-    """
-    cached = transform.__dict__.get("_plain_affine", False)
-    if cached is not False:
-        return cached
-    matrix = transform.matrix
-    linear = matrix[:3, :3]
-    found: Any = None
-    if not (couples_axes(transform) or np.count_nonzero(linear - np.diag(np.diag(linear)))
-            or np.count_nonzero(matrix[3] - (0.0, 0.0, 0.0, 1.0))):
-        scale = (float(matrix[0, 0]), float(matrix[1, 1]), float(matrix[2, 2]))
-        offset = (float(matrix[0, 3]), float(matrix[1, 3]), float(matrix[2, 3]))
-        if all(abs(scale[i]) == 1.0 or offset[i] == 0.0 for i in range(3)):
-            found = (scale, offset)
-    transform.__dict__["_plain_affine"] = found
     return found
 
 
