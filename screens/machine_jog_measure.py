@@ -26,7 +26,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 
 from nck import commands as cmd
-from nck.queries import (MachineSetupData, ReadData, edge_position, offset_for, tool_length, tool_radius,
+from nck.queries import (MachineSetupData, ReadData, edge_position, fixed, offset_for, tool_length, tool_radius,
                          z_surface)
 from nck.status import NckStatus
 
@@ -177,7 +177,7 @@ class MeasureWindows:
             approach = 1 if form.value("approach") == "+" else -1
             radius = tool_radius(by_name["X"].position_mcs, approach, edge_mcs)
             if radius <= 0:
-                return (f"Radius {radius:.3f}: the tool centre is not before the edge X0 in the "
+                return (f"Radius {fixed(radius)}: the tool centre is not before the edge X0 in the "
                         "approach direction — touch the edge, or check X0 and the direction")
             return LengthPreview(modal.tool, modal.edge, edge_mcs, radius, radius=True)
         if form.value("reference") == REFERENCES[1]:
@@ -207,16 +207,16 @@ class MeasureWindows:
             text.append(f" {preview}")
         elif isinstance(preview, EdgePreview):
             modal = status.channel.modal
-            text.append(f" Tool radius {modal.tool_radius_mm:.3f}   length {modal.tool_length_mm:.3f}\n")
-            text.append(f" Edge {preview.axis} (MCS) {preview.edge_mcs:.3f}   → "
-                        f"{preview.axis} {preview.setpoint:.3f} in the WCS: translation "
-                        f"{preview.translation:.3f} (no other offset active)", style="bold")
+            text.append(f" Tool radius {fixed(modal.tool_radius_mm)}   length {fixed(modal.tool_length_mm)}\n")
+            text.append(f" Edge {preview.axis} (MCS) {fixed(preview.edge_mcs)}   → "
+                        f"{preview.axis} {fixed(preview.setpoint)} in the WCS: translation "
+                        f"{fixed(preview.translation)} (no other offset active)", style="bold")
         elif preview.radius:
-            text.append(f" T{preview.tool} D{preview.edge}   edge X (MCS) {preview.surface_mcs:.3f}\n")
-            text.append(f" Radius = {preview.length:.3f}", style="bold")
+            text.append(f" T{preview.tool} D{preview.edge}   edge X (MCS) {fixed(preview.surface_mcs)}\n")
+            text.append(f" Radius = {fixed(preview.length)}", style="bold")
         else:
-            text.append(f" T{preview.tool} D{preview.edge}   surface Z (MCS) {preview.surface_mcs:.3f}\n")
-            text.append(f" Length 1 = {preview.length:.3f}", style="bold")
+            text.append(f" T{preview.tool} D{preview.edge}   surface Z (MCS) {fixed(preview.surface_mcs)}\n")
+            text.append(f" Length 1 = {fixed(preview.length)}", style="bold")
         form.show_info(text)
 
     # -- writing ---------------------------------------------------------------------------
@@ -237,7 +237,7 @@ class MeasureWindows:
             point[preview.axis] = preview.edge_mcs
             if isinstance(self.screen.submit(cmd.SetActualValue(preview.axis, preview.setpoint,
                                                                 point_mcs=point)), cmd.Accepted):
-                say(f"Set WO: edge {preview.axis} = {preview.setpoint:.3f}")
+                say(f"Set WO: edge {preview.axis} = {fixed(preview.setpoint)}")
             return
         length = self.length_preview(status)
         if isinstance(length, str):
@@ -252,7 +252,7 @@ class MeasureWindows:
         else:
             name, value = f"$TC_DP{geometry_index}[{t},{d}]", length.length - wear
         if isinstance(self.screen.submit(cmd.WriteData(name, value)), cmd.Accepted):
-            say(f"T{t} D{d}: {name} = {value:.3f}")
+            say(f"T{t} D{d}: {name} = {fixed(value)}")
 
     def _translation_in_force(self, axis: str, status: NckStatus) -> float:
         """PRESET frame + base frame + active settable offset (coarse and fine) along ``axis``."""

@@ -27,7 +27,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 
 from nck import commands as cmd
-from nck.queries import circle, corner, offset_for, rotated_corner
+from nck.queries import circle, corner, fixed, offset_for, rotated_corner
 from nck.status import NckStatus
 
 from screens.machine_jog_form import FieldSpec, JogForm
@@ -151,7 +151,7 @@ class PointWindows:
             found = rotated_corner(xy[0], xy[1], DIRECTIONS[form.value("first")], xy[2],
                                    DIRECTIONS[form.value("third")], radius)
             return PointsResult(found.x_mm, found.y_mm, (x0, y0), found.angle_deg,
-                                f"Corner, edge 1 at {found.angle_deg:.3f}°")
+                                f"Corner, edge 1 at {fixed(found.angle_deg)}°")
         hole = form.value("kind") == "hole"
         (ax, ay), (bx, by), (cx, cy) = xy[:3]
         if abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) < 1e-6:
@@ -160,15 +160,15 @@ class PointWindows:
         if found_circle.diameter_mm <= 0.0:
             return "No spigot that size: touch it from outside (or choose hole)"
         return PointsResult(found_circle.x_mm, found_circle.y_mm, (x0, y0), None,
-                            f"Centre of the {'hole' if hole else 'spigot'}, Ø {found_circle.diameter_mm:.3f}")
+                            f"Centre of the {'hole' if hole else 'spigot'}, Ø {fixed(found_circle.diameter_mm)}")
 
     def show(self, view: str, status: NckStatus) -> None:
         """Redraw the preview of window ``view``: the points and what they measured."""
         text = Text()
         modal = status.channel.modal
-        text.append(f" Tool radius {modal.tool_radius_mm:.3f}  ")
+        text.append(f" Tool radius {fixed(modal.tool_radius_mm)}  ")
         for number, point in enumerate(self.points[view], start=1):
-            text.append(f" P{number} X {point.position_mcs['X']:.3f} Y {point.position_mcs['Y']:.3f}"
+            text.append(f" P{number} X {fixed(point.position_mcs['X'])} Y {fixed(point.position_mcs['Y'])}"
                         f"{' (probe)' if point.probe else ''}")
         text.append("\n")
         found = self.result(view, status)
@@ -176,13 +176,13 @@ class PointWindows:
             text.append(f" {found}")
         else:
             tx, ty = offset_for(found.x_mcs, found.setpoint[0]), offset_for(found.y_mcs, found.setpoint[1])
-            text.append(f" {found.what}: X (MCS) {found.x_mcs:.3f}  Y (MCS) {found.y_mcs:.3f}\n", style="bold")
+            text.append(f" {found.what}: X (MCS) {fixed(found.x_mcs)}  Y (MCS) {fixed(found.y_mcs)}\n", style="bold")
             if found.angle_deg is None:
-                text.append(f" → X {found.setpoint[0]:.3f} Y {found.setpoint[1]:.3f} in the WCS: translation "
-                            f"X {tx:.3f} Y {ty:.3f} (no other offset active)", style="bold")
+                text.append(f" → X {fixed(found.setpoint[0])} Y {fixed(found.setpoint[1])} in the WCS: translation "
+                            f"X {fixed(tx)} Y {fixed(ty)} (no other offset active)", style="bold")
             else:
-                text.append(f" → rotation Z {found.angle_deg:.3f}°, corner X {found.setpoint[0]:.3f} "
-                            f"Y {found.setpoint[1]:.3f} in the WCS (into G54 …, not G500)", style="bold")
+                text.append(f" → rotation Z {fixed(found.angle_deg)}°, corner X {fixed(found.setpoint[0])} "
+                            f"Y {fixed(found.setpoint[1])} in the WCS (into G54 …, not G500)", style="bold")
         self._form(view).show_info(text)
 
     def set_wo(self, view: str, say: Callable[[str], None]) -> None:
@@ -202,5 +202,5 @@ class PointWindows:
         for axis, value in zip(("X", "Y"), found.setpoint):
             if not isinstance(self.screen.submit(cmd.SetActualValue(axis, value, point_mcs=point)), cmd.Accepted):
                 return
-        say(f"Set WO: X {found.setpoint[0]:.3f} Y {found.setpoint[1]:.3f}"
-            + (f", rotation {found.angle_deg:.3f}°" if found.angle_deg is not None else ""))
+        say(f"Set WO: X {fixed(found.setpoint[0])} Y {fixed(found.setpoint[1])}"
+            + (f", rotation {fixed(found.angle_deg)}°" if found.angle_deg is not None else ""))

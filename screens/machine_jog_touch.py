@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from nck.queries import ContactEvents, ProbeDeflected, ReadData
+from nck.queries import ContactEvents, ProbeDeflected, ReadData, fixed
 from nck.status import NckStatus
 
 PROBE_TOOL_TYPE = 710
@@ -65,7 +65,7 @@ def contact_line(ask: Callable[[object], Any]) -> str:
     if not events:
         return ""
     newest = events[-1]
-    where = "  ".join(f"{axis} {value:.3f}" for axis, value in newest.position_mcs.items())
+    where = "  ".join(f"{axis} {fixed(value)}" for axis, value in newest.position_mcs.items())
     solid = "blank" if newest.solid == "blank" else "reference block"
     line = f"Last contact: {CONTACT_WORDS.get(newest.kind, newest.kind)} on the {solid} at {where} (MCS)"
     return line + ("   — probe deflected" if ask(ProbeDeflected()) else "")

@@ -21,7 +21,8 @@ TITLE = "Machine set-up: what is clamped (positions in the MCS)"
 def workpiece_table(setup: Any, level: int, needed_level: int) -> DataTable:
     """The set-up ``setup`` as an editable table for access ``level``; edits need ``needed_level``."""
     concealed = setup.hidden and level > needed_level
-    columns = [Column("Field", 46, "<"), Column("Value", 14), Column("Unit", 5, "<"), Column("Name (nck setup)", 20, "<")]
+    columns = [Column("Field", 46, "<"), Column("Value", 14), Column("Unit", 5, "<"),
+               Column("Name (nck setup)", 20, "<")]
     rows = []
     for field in setup_fields(setup):
         secret = concealed and field.position

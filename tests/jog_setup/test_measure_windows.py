@@ -146,3 +146,15 @@ async def test_tool_radius_that_would_be_negative_is_not_written() -> None:
                     "ctrl+a", "ctrl+k", "-", "1", "0", "shift+f5")
         assert "Radius -10.000: the tool centre is not before the edge" in info(app, "meastool")
         assert nck.data.tools[(1, 1)].get(6) == 5.0
+
+
+async def test_measure_preview_never_shows_minus_zero() -> None:
+    """An edge 0.2 µm below MCS X 0 (centre at −5.0002 + radius 5, touched moving +) reads
+    0.000, as every position on the panel does, not −0.000; so do the translation and the
+    tool data lines."""
+    app = HmiApp(kernel_with_t1_at(-5.0002, 200.0), realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+t", "alt+t", "shift+f3", "down")
+        shown = info(app, "measwp")
+        assert "Edge X (MCS) 0.000" in shown and "translation 0.000" in shown, shown
+        assert "-0.000" not in shown
