@@ -46,7 +46,7 @@ from nck import commands as cmd
 from nck.commands import Accepted, SubmitResult
 from nck import queries
 from nck.status import NckStatus
-from nck.termination import TERMINATION_SIGNALS, exit_on_termination
+from nck import TERMINATION_SIGNALS, exit_on_termination
 
 from hmi.alarm_times import AlarmTimes
 from hmi.area import MIN_TERMINAL_SIZE, AreaBase

@@ -24,9 +24,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from nck.atomic import atomic_write_text
-from nck.regular_files import read_regular_bytes
-from nck.storage import MAX_IMPORT_BYTES
+from nck import MAX_IMPORT_BYTES, atomic_write_text, read_regular_bytes
 
 FORMAT_VERSION = 1
 AUTOSAVE_PERIOD_S = 3.0

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from textual.binding import Binding
 
-from nck.resources import load_toml
+from nck.queries import load_toml
 
 ACTIONS: frozenset[str] = frozenset(
     {

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from nck import queries
-from nck.storage import NcFileSystem, StorageError
+from nck import NcFileSystem, StorageError
 
 DIRECTORIES: tuple[tuple[str, str], ...] = (
     ("MPF", "Part programs"),

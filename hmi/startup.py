@@ -15,14 +15,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable
 
+from nck import AccessDenied, Action, build_session_kernel, open_data_session
 from nck import commands as cmd
 from nck.commands import Rejected
 
 from hmi.alarm_times import AlarmTimes
-
-
-PART_COUNTERS = ("TOTAL_PARTS", "REQUIRED_PARTS", "ACTUAL_PARTS", "SPECIAL_PARTS")
-"""Workpiece counters ``$AC_…`` that are retained (REQUIRED first: it bounds nothing but is set before ACTUAL)."""
 
 
 class NcDataSession:
@@ -36,26 +33,10 @@ class NcDataSession:
         self.nck = self._build_kernel()
 
     def _build_kernel(self) -> Any:
-        from nck.kernel import Nck
-
-        nck = Nck(**self.session.kernel_arguments())
-        nck.md_store = self.session.md
-        files = self.session.files
-        files.in_use_check = lambda: programs_in_execution(nck.status())
-        for alarm in self.session.startup_alarms:
-            nck.raise_alarm(alarm)
-        restore = getattr(self.session, "restore_alarm_log", None)
-        if callable(restore):
-            self.alarm_times.restart(restore(nck))
-        data = self.session.ncdata
-        for key in PART_COUNTERS:  # the kernel keeps them itself: hand it the retained values
-            if key in data.part_counters:
-                nck.submit(cmd.WriteData(f"$AC_{key}", int(data.part_counters[key])))
-        if data.mda_program:
-            nck.submit(cmd.SetMdaProgram(data.mda_program))
-        for switch, percent in data.override_switches.items():  # a switch stays where it was turned
-            nck.submit(cmd.SetOverride(switch, percent))
-        return nck
+        built = build_session_kernel(self.session)
+        if built.alarm_stamps is not None:
+            self.alarm_times.restart(built.alarm_stamps)
+        return built.nck
 
     def _collect(self) -> None:
         """Copy what the kernel keeps itself (part counters, MDA buffer, override switches) into the NC data."""
@@ -114,25 +95,16 @@ def build_session(machine: str | None = None, data_dir: str | None = None, ephem
     of program editing and ``confirm(question)`` (None: refused); the old program
     is kept as ``<name>_OLD<n>``.
     """
-    from nck.machine import load_machine
-    from nck.datalock import lock_data_dir
-    from nck.paths import open_data_dir
-    from nck.persistence import Session
-
-    config = load_machine(machine)
-    root, copy = open_data_dir(data_dir, ephemeral)
-    lock = None
+    opened = open_data_session(machine, data_dir, ephemeral)
     try:
-        # One process per data directory: a second HMI gets a clear message (DataDirInUse), not torn data.
-        lock = lock_data_dir(root) if copy is None else None
-        holder = NcDataSession(Session.open(root, config), copy)
-        holder.data_lock = lock
+        holder = NcDataSession(opened.session, opened.copy)
+        holder.data_lock = opened.lock
         _select_at_start(holder, program, confirm)
     except BaseException:  # a failed start leaves neither a lock nor a temporary copy
-        if lock is not None:
-            lock.release()
-        if copy is not None:
-            copy.cleanup()
+        if opened.lock is not None:
+            opened.lock.release()
+        if opened.copy is not None:
+            opened.copy.cleanup()
         raise
     return holder
 
@@ -152,8 +124,6 @@ def _select_at_start(holder: NcDataSession, program: str | None,
 
 def _import_at_start(holder: NcDataSession, local: Path, confirm: Callable[[str], bool] | None) -> str:
     """Import a local file for ``--program``; never replace another program unasked or unkept."""
-    from nck.access import AccessDenied, Action
-
     files = holder.session.files
     target = files.import_target(local)
     if files.exists(target):
@@ -176,15 +146,3 @@ def start_session(machine: str | None = None, data_dir: str | None = None, ephem
     """Open the NC data directory (:func:`build_session`); return the session and its kernel for the bridge."""
     session = build_session(machine, data_dir, ephemeral, program, confirm)
     return session, session.nck
-
-
-def programs_in_execution(status: Any) -> list[str]:
-    """The programs that may not be edited, renamed or deleted: the one being executed.
-
-    A program that is only selected (channel in reset, program aborted) stays editable, as on
-    the control; once started it is in use until RESET or program end.
-    """
-    channel = status.channel
-    if channel.selected_program and channel.program_state != "aborted":
-        return [channel.selected_program]
-    return []

@@ -23,6 +23,7 @@ from typing import Any
 from nck import commands as cmd
 from nck.access import AccessDenied, AccessError, Action
 from nck.commands import Accepted, Rejected, SubmitResult
+from nck.machine import MachineConfig
 from nck.machine_data import DataError, MachineDataStore
 from nck.writes import DataWriter, WriteRefused
 
@@ -32,6 +33,10 @@ class DataWrites:
 
     md_store: MachineDataStore | None = None
     """The machine/setting data store (the session's; created on first use when None)."""
+    machine: MachineConfig
+    """The active machine (set by ``Nck``; replaced when stored machine data come into effect)."""
+    motion: Any
+    """The motion system (set by ``Nck``; rebuilt for a new machine)."""
 
     # ---------------------------------------------------------------- access
     @property

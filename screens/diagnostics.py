@@ -24,8 +24,7 @@ import nck as nck_package
 from nck import commands as cmd
 from nck import queries
 from nck.status import NckStatus
-from nck.regular_files import write_export
-from nck.trace import TraceError
+from nck import TraceError, signal_unit, write_export
 
 from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
@@ -438,7 +437,6 @@ class DiagnosticsScreen(AreaBase):
         grown = recorder.sample_count - len(plot.times)
         if same_signals and recorder.state == "recording" and 0 < grown < max(25, len(plot.times) // 200):
             return  # while recording, redraw the curves in steps (the refresh budget)
-        from nck.trace import signal_unit  # noqa: PLC0415
 
         names = list(recorder.settings.signals)
         plot.set_data(recorder.times_s, names, [signal_unit(n) for n in names],

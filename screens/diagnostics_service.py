@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from rich.text import Text
 
-from nck.number_text import fixed
+from nck import fixed
 from nck.status import AxisStatus, NckStatus
 
 from hmi.utilisation import UtilisationMeter

@@ -11,8 +11,7 @@ from typing import Any, Callable
 
 from rich.text import Text
 
-from nck.regular_files import write_export
-from nck.trace import MAX_SIGNALS, TraceRecorder, TraceSettings, available_signals, signal_unit
+from nck import MAX_SIGNALS, TraceRecorder, TraceSettings, available_signals, signal_unit, write_export
 
 DURATIONS_S = (1.0, 2.0, 5.0, 10.0, 20.0, 60.0)
 TRIGGER_NAMES = {"now": "start now", "nc_start": "on NC START"}

@@ -18,7 +18,7 @@ from textual.widgets import ContentSwitcher, Input, Static, TextArea
 
 from nck import commands as cmd
 from nck.commands import Accepted
-from nck.number_text import fixed, trimmed
+from nck import fixed, trimmed
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text

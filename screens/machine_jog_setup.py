@@ -30,7 +30,7 @@ from rich.text import Text
 from textual.app import ComposeResult
 
 from nck import commands as cmd
-from nck.number_text import fixed, trimmed
+from nck import fixed, trimmed
 from nck.queries import ReadData
 from nck.status import NckStatus
 

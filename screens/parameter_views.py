@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
-from nck.number_text import fixed, trimmed
+from nck import fixed, trimmed
 from nck.queries import DataView
 from nck.status import NckStatus
 

@@ -30,6 +30,7 @@ from textual.timer import Timer
 from textual.widgets import Input, Static, TextArea
 from textual.widgets.text_area import Selection
 
+from nck import Action, required_level
 from nck import commands as cmd
 from nck.commands import Rejected
 from nck.status import NckStatus
@@ -51,10 +52,8 @@ from screens.program_runs import CheckAndSimulation
 def edit_level() -> int:
     """The access level that may edit programs (``data/access.toml``, 7 when unknown)."""
     try:
-        from nck.access import Action, required_level
-
         return required_level(Action.EDIT_PROGRAM)
-    except (ImportError, KeyError, ValueError):
+    except (KeyError, ValueError):
         return 7
 
 

@@ -25,6 +25,7 @@ from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.widgets import DataTable, Input, Static, Tree
 
+from nck import Action, ProgramEntry, required_level
 from nck import commands as cmd
 from nck.commands import Rejected
 from nck.status import NckStatus
@@ -35,16 +36,13 @@ from hmi.dialogs import ConfirmDialog
 from hmi.focus import focus_now
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
-from nck.storage import ProgramEntry
 
 
 def _level(action: str, fallback: int) -> int:
     """The access level an action needs (``data/access.toml``), or ``fallback``."""
     try:
-        from nck.access import Action, required_level
-
         return required_level(Action(action))
-    except (ImportError, KeyError, ValueError):
+    except (KeyError, ValueError):
         return fallback
 
 

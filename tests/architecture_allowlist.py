@@ -6,41 +6,7 @@ The structural plan that removes them is in issue 21 (one door, one direction).
 
 from __future__ import annotations
 
-LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset(
-    {
-        ("hmi.app", "nck.termination"),
-        ("hmi.journal", "nck.atomic"),
-        ("hmi.journal", "nck.regular_files"),
-        ("hmi.journal", "nck.storage"),
-        ("hmi.keymap", "nck.resources"),
-        ("hmi.program_files", "nck.storage"),
-        ("hmi.startup", "nck.access"),
-        ("hmi.startup", "nck.datalock"),
-        ("hmi.startup", "nck.kernel"),
-        ("hmi.startup", "nck.machine"),
-        ("hmi.startup", "nck.paths"),
-        ("hmi.startup", "nck.persistence"),
-        ("hmi.widgets.gfunctions", "nck.iso.display"),
-        ("hmi.widgets.gfunctions", "nck.resources"),
-        ("hmi.widgets.plot", "nck.number_text"),
-        ("hmi.widgets.positions", "nck.number_text"),
-        ("hmi.widgets.tfs", "nck.number_text"),
-        ("hmi.widgets.toolpath", "nck.canon"),
-        ("screens.diagnostics", "nck.regular_files"),
-        ("screens.diagnostics", "nck.trace"),
-        ("screens.diagnostics_service", "nck.number_text"),
-        ("screens.diagnostics_trace", "nck.regular_files"),
-        ("screens.diagnostics_trace", "nck.trace"),
-        ("screens.machine", "nck.number_text"),
-        # added with the Machine area's own break above: the JOG set-up windows print numbers
-        # as the position window does (no -0.000, issue 18); goes when number_text moves
-        ("screens.machine_jog_setup", "nck.number_text"),
-        ("screens.parameter_views", "nck.number_text"),
-        ("screens.program", "nck.access"),
-        ("screens.program_manager", "nck.access"),
-        ("screens.program_manager", "nck.storage"),
-    }
-)
+LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset()
 """(importer, imported) pairs that break the layer contract."""
 
 CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(

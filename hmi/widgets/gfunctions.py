@@ -9,7 +9,8 @@ from rich.table import Table
 from rich.text import Text
 from textual.widgets import Static
 
-from nck.resources import load_toml
+from nck import ISO_MAIN_GROUPS_M, iso_table
+from nck.queries import load_toml
 
 MAIN_GROUPS = (1, 6, 7, 8, 10, 13, 14, 15)
 """Groups of the G-functions window: motion, plane, TRC, WO, exact stop, unit, dimension, feed."""
@@ -67,7 +68,6 @@ class GFunctionsLine(Static):
         if key != self._key:
             self._key = key
             if iso_gcodes:
-                from nck.iso.display import ISO_MAIN_GROUPS_M
                 self.update(main_groups_line(iso_gcodes, ISO_MAIN_GROUPS_M), layout=False)
             else:
                 self.update(main_groups_line(gcodes), layout=False)
@@ -86,7 +86,6 @@ class GFunctionsTable(Static):
         if key != self._key:
             self._key = key
             if iso_gcodes:
-                from nck.iso.display import iso_table
                 meanings = iso_table("iso-t" if 16 in iso_gcodes and 8 not in iso_gcodes
                                      else "iso-m")[1]
                 self.update(all_groups_table(iso_gcodes, meanings), layout=False)

@@ -14,7 +14,7 @@ import numpy as np
 from rich.text import Text
 from textual.widget import Widget
 
-from nck.number_text import fixed
+from nck import fixed
 
 from hmi.widgets.toolpath import BrailleCanvas
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from rich.text import Text
 from textual.widgets import Static
 
-from nck.number_text import fixed
+from nck import fixed
 from nck.status import NckStatus
 
 from hmi.widgets.header import format_override

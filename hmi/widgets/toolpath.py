@@ -25,7 +25,7 @@ from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
 
-from nck.canon import Motion
+from nck import Motion
 
 Point3 = tuple[float, float, float]
 

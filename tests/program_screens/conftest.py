@@ -10,7 +10,7 @@ from nck.commands import SetKeyswitch
 from nck.kernel import Nck
 
 from hmi.app import HmiApp
-from hmi.startup import programs_in_execution
+from nck import programs_in_execution
 from nck.storage import NcFileSystem
 
 SIZE = (160, 48)
