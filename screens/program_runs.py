@@ -3,13 +3,14 @@
 A mixin of :class:`screens.program.ProgramScreen`. Both run in worker threads
 on a copy of the text: the check streams its alarms back in batches (each
 faulty line gets its mark as soon as it is known; a newer check makes an older
-one stop), the simulation interprets the program headless and draws the
-collected motions.
+one stop), the simulation runs the program once as AUTO runs it
+(``CheckContext.simulate``) and both views draw that one run: the material
+view the blank it cut, the toolpath view its executed path.
 
 Both run on the session's machine and a copy of its NC data (tools, work offsets,
 R parameters, setting data): :meth:`CheckAndSimulation.check_setting` asks the
 bridge for them (query ``CheckSetting``) in the UI thread, before the worker
-starts; the answer's ``iter_check`` and ``run_text`` are what the workers call.
+starts; the answer's ``iter_check`` and ``simulate`` are what the workers call.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import ErrorMark
 from hmi.widgets.stock_view import StockPicture
-from hmi.widgets.toolpath import path_from_motions
+from hmi.widgets.toolpath import PathPiece
 
 CHECK_DEBOUNCE_S = 0.4
 """Quiet time after the last keystroke before the check starts."""
@@ -75,6 +76,23 @@ def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
         resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
         starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
         tool_radius_mm=tool_radius, turning=simulation.turning)
+
+
+def pieces_of(simulation: Any) -> list[PathPiece]:
+    """The simulation's executed path as the toolpath view's straight pieces (WCS)."""
+    path = simulation.path
+    return [PathPiece(tuple(start), tuple(end), rapid, line)  # type: ignore[arg-type]
+            for start, end, rapid, line in zip(path.starts.tolist(), path.ends.tolist(),
+                                               path.rapid.tolist(), path.lines.tolist())]
+
+
+def path_note(simulation: Any) -> str:
+    """The toolpath view's note: where the run stopped, else its blocks and pieces."""
+    if simulation.alarms:
+        return f"stopped at line {simulation.alarms[0].line}: {simulation.alarm_text()}"
+    if simulation.status == "timeout":
+        return f"stopped after {simulation.blocks} blocks"
+    return f"{simulation.blocks} blocks, {len(simulation.path.starts)} moves"
 
 
 def material_note(simulation: Any) -> str:
@@ -141,7 +159,7 @@ class CheckAndSimulation:
 
     def check_setting(self) -> Any:
         """The session's machine and a copy of its NC data for one check or simulation
-        (``nck.check.CheckContext``: ``iter_check``, ``run_text``); ask in the UI thread."""
+        (``nck.check.CheckContext``: ``iter_check``, ``simulate``); ask in the UI thread."""
         return self.ask(CheckSetting())
 
     # -- checks ---------------------------------------------------------------------------------
@@ -238,7 +256,6 @@ class CheckAndSimulation:
         self.stock.highlight_line = self.editor.cursor_location[0] + 1
         setting = self.check_setting()
         programs = self.files.program_source(self.program)
-        self._simulate_worker(self.program, self.editor.text, programs, setting)
         self._material_worker(self.program, self.editor.text, programs, setting)
 
     @work(thread=True, exclusive=True, group="program-material", exit_on_error=False)
@@ -249,13 +266,16 @@ class CheckAndSimulation:
             simulation = setting.simulate(Path(program).name, text, programs=programs)
         except Exception as exc:  # never crash the screen
             self.app.call_from_thread(self.stock.set_picture, StockPicture(), f"simulation failed: {exc!r}")
+            self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
             return
         if not worker.is_cancelled:
             self.app.call_from_thread(self._show_material, simulation)
 
     def _show_material(self, simulation: Any) -> None:
-        """A finished simulation: show the whole program cut, the note says how it ended."""
+        """A finished simulation: show the whole program cut, the note says how it ended; the
+        toolpath view (Material off) draws the same run's path."""
         self._material = simulation
+        self.toolpath.set_pieces(pieces_of(simulation), path_note(simulation))
         self._material_blocks = simulation.blocks_in_order()
         self._material_step = len(self._material_blocks) - 1
         self.stock.set_picture(picture_of(simulation, simulation.zmap, len(simulation.path.starts)),
@@ -297,31 +317,6 @@ class CheckAndSimulation:
         self._show_view()
         focus_now(self.stock if self.sim_material else self.toolpath)
         self.refresh_softkeys()
-
-    @work(thread=True, exclusive=True, group="program-simulate", exit_on_error=False)
-    def _simulate_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
-        worker = get_current_worker()
-        try:
-            pause = _Breather()
-
-            def cancelled() -> bool:
-                pause()
-                return worker.is_cancelled
-
-            result = setting.run_text(Path(program).name, text, programs=programs, should_stop=cancelled)
-            pieces = path_from_motions(result.motions)
-        except Exception as exc:  # never crash the screen
-            self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
-            return
-        if result.alarms:
-            alarm = result.alarms[0]
-            note = f"stopped at line {alarm.line}: {alarm.number} {alarm.text}"
-        elif result.truncated:
-            note = f"stopped after {result.blocks} blocks"
-        else:
-            note = f"{result.blocks} blocks, {len(result.motions)} moves"
-        if not worker.is_cancelled:
-            self.app.call_from_thread(self.toolpath.set_pieces, pieces, note)
 
     def action_sim_view(self, view: str) -> None:
         """Choose the projection (top view or a section)."""

@@ -130,6 +130,25 @@ async def test_simulation_cuts_the_blank_and_steps_block_by_block(slots_dir: Pat
         assert float(screen.stock.picture.heights.min()) == pytest.approx(0.0)
 
 
+async def test_the_editor_runs_the_program_once_for_both_views(slots_dir: Path, monkeypatch) -> None:
+    """The toolpath view (Material off) draws the material simulation's own run: the program is
+    run once per Recalculate, not once more for the toolpath."""
+    from nck.check import CheckContext
+
+    calls: list[str] = []
+    simulate, run_text = CheckContext.simulate, CheckContext.run_text
+    monkeypatch.setattr(CheckContext, "simulate", lambda self, *a, **k: calls.append("simulate") or simulate(self, *a, **k))
+    monkeypatch.setattr(CheckContext, "run_text", lambda self, *a, **k: calls.append("run_text") or run_text(self, *a, **k))
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        assert calls == ["simulate"]
+        simulation = screen._material
+        assert len(screen.toolpath.pieces) == len(simulation.path.starts) > 0
+        assert screen.toolpath.pieces[-1].end == tuple(simulation.path.ends[-1].tolist())
+
+
 async def test_view_keys_singly_and_in_a_burst(slots_dir: Path) -> None:
     app = make_program_app(slots_dir)
     async with app.run_test(size=SIZE) as pilot:
