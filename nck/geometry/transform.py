@@ -88,8 +88,8 @@ class Transform:
         values = [float(point.get(a, 0.0)) for a in self.geometry_axes]
         affine = self.axis_affine()
         if affine is not None and math.isfinite(values[0] + values[1] + values[2]):
-            scale, offset = affine  # the matrix product below, without numpy's call overhead
-            out = {axis: values[i] * scale[i] + offset[i] for i, axis in enumerate(self.geometry_axes)}
+            scales, offsets = affine  # the matrix product below, without numpy's call overhead
+            out = {axis: values[i] * scales[i] + offsets[i] for i, axis in enumerate(self.geometry_axes)}
         else:
             mapped = self.matrix @ np.array(values + [1.0])
             out = {axis: float(mapped[i]) for i, axis in enumerate(self.geometry_axes)}
