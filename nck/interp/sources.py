@@ -7,6 +7,7 @@ regard to case; a name without extension is looked up as ``.SPF`` then ``.MPF``
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from nck.regular_files import read_regular_bytes
@@ -49,8 +50,10 @@ class DirectorySource:
         for directory in self.directories:
             if not directory.is_dir():
                 continue
-            try:
-                entries = {p.name.upper(): p for p in directory.iterdir() if p.is_file()}
+            try:  # only the wanted names are tested for being a file (one stat, not one per entry)
+                with os.scandir(directory) as scan:
+                    entries = {entry.name.upper(): Path(entry.path) for entry in scan
+                               if entry.name.upper() in wanted and entry.is_file()}
             except OSError:
                 continue
             for candidate in wanted:
