@@ -7,6 +7,7 @@ axes already stand in one interpreter and not in the other).
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import tempfile
@@ -65,8 +66,11 @@ def rs274_end_points(program: CorpusProgram, rs274: str = "rs274") -> list[Point
         output = Path(tmp) / "canon.txt"
         table = Path(tmp) / "rs274.tbl"
         table.write_text(RS274_TOOL_TABLE)
+        # rs274 keeps its tool table in $HOME/.tool.mmap, truncated by every start: a private
+        # HOME keeps runs at the same time (tests, benchmarks) from reading each other's table.
         done = subprocess.run([rs274, "-t", str(table), "-g", str(source), str(output)], cwd=tmp,
-                              stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=300)
+                              env=dict(os.environ, HOME=tmp), stdin=subprocess.DEVNULL,
+                              capture_output=True, text=True, timeout=300)
         text = output.read_text() if output.exists() else ""
     if done.returncode != 0:
         raise AssertionError(f"rs274 exited {done.returncode}: {done.stdout[-300:]} {done.stderr[-300:]} "

@@ -87,11 +87,14 @@ def corpus_rows(folder: Path, scale: float, repeats: int, notes: list[str]) -> l
     rows: list[Row] = []
     for program in corpus(scale):
         main, ngc, tools, table = write_program(folder / "corpus", program)
+        data_dir = _tool_data_dir(folder, program.machine, tools, notes)
         commands = {"nck": nck_check_command() + [
-            "--ephemeral", "--password", "EVENING", "--machine", program.machine, "--tools", str(tools),
-            "--max-blocks", "50000000", str(main)]}
-        if rs274 is not None:
-            commands["rs274"] = rs274[:1] + ["-t", str(table)] + rs274[1:] + [str(ngc), os.devnull]
+            "--data-dir", str(data_dir), "--machine", program.machine, "--max-blocks", "50000000", str(main)]}
+        if rs274 is not None:  # a private HOME: rs274 keeps its tool table in $HOME/.tool.mmap
+            home = folder / "rs274-home"
+            home.mkdir(exist_ok=True)
+            commands["rs274"] = ["env", f"HOME={home}"] + rs274[:1] + ["-t", str(table)] + rs274[1:] + [
+                str(ngc), os.devnull]
         if ncgi is not None:
             commands["ncgi"] = ncgi + [str(main)]
         runs = alternate(commands, repeats)
@@ -101,6 +104,21 @@ def corpus_rows(folder: Path, scale: float, repeats: int, notes: list[str]) -> l
     if ncgi is None:
         notes.append(ncgi_note)
     return rows
+
+
+def _tool_data_dir(folder: Path, machine: str, tools: Path, notes: list[str]) -> Path:
+    """A data directory of ``machine`` with the corpus tools written once (``nck run`` of an
+    empty program with ``--tools``), so the measured checks read tools as rs274 reads its table
+    (the password's key derivation would cost every check ~0.5 s)."""
+    data_dir = folder / f"data-{machine}"
+    if not data_dir.exists():
+        empty = folder / "EMPTY.MPF"
+        empty.write_text("M30\n")
+        done = run_child([sys.executable, "-m", "nck", "run", "--data-dir", str(data_dir), "--machine", machine,
+                          "--password", "EVENING", "--tools", str(tools), str(empty)])
+        if done.returncode != 0:
+            notes.append(f"tool set-up for {machine} exited {done.returncode}: {done.stderr.strip()[-200:]}")
+    return data_dir
 
 
 def _corpus_program_rows(program: CorpusProgram, runs: dict[str, list[ChildRun]], rs_note: str,
