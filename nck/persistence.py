@@ -68,6 +68,7 @@ from nck.regular_files import check_export_target, plain_directory, read_regular
 from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError, check_program_size
+from nck.sample_programs import sample_filter
 from nck.workpiece import default_machine_setup, default_part_zero_mcs, setup_from_plain, setup_to_plain
 from nck.writes import DataWriter, WriteRefused
 
@@ -548,8 +549,9 @@ class Session:
         fresh_tools = not (retained_dir / "tools.json").exists()
         setup_file = retained_dir / "machine_setup.json"
         fresh_setup = not os.path.lexists(setup_file) and not os.path.lexists(backup_path(setup_file))
+        machine = machine or load_machine()
         samples_installed = bool(install_samples and files.install_samples(
-            samples if samples is not None else data_path("programs")))
+            samples if samples is not None else data_path("programs"), wanted=sample_filter(machine.kind)))
         rd = RetainedData()
         damaged: list[str] = []
         for name in SECTIONS:
@@ -557,7 +559,6 @@ class Session:
             alarms += found
             if any(a.number == ALARM_DEFAULTS_LOADED for a in found):
                 damaged.append(name)
-        machine = machine or load_machine()
         if samples_installed and fresh_tools:  # the training programs come with their tools
             table = data_path(SAMPLE_TOOLS_BY_KIND.get(machine.kind, SAMPLE_TOOLS))
             rd.ncdata.tools = {key: ToolEdge(params=dict(params)) for key, params in read_tool_table(table).items()}

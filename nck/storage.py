@@ -501,13 +501,15 @@ class NcFileSystem:
         return ScopedProgramSource(self, context)
 
     # --------------------------------------------------------------- samples
-    def install_samples(self, source: Path | str, force: bool = False) -> list[str]:
+    def install_samples(self, source: Path | str, force: bool = False,
+                        wanted: Callable[[str], bool] | None = None) -> list[str]:
         """Copy the training programs of ``source`` into an NC file system once.
 
         ``*.MPF``/``*.SPF`` files go to MPF/SPF (from any sub-folder), ``*.WPD``
         folders to WKS. Existing programs are never overwritten, and after the
         first installation (a mark file in the root) nothing is installed again
-        unless ``force``. Returns the paths installed.
+        unless ``force``. ``wanted`` (given the upper-case file name) leaves out
+        programs of another machine. Returns the paths installed.
         """
         mark = self.root / SAMPLES_MARK
         if mark.exists() and not force:
@@ -523,7 +525,8 @@ class NcFileSystem:
                         if not self.exists(target):
                             self._disk(target).mkdir(parents=True)
                             installed.append(target)
-                    elif item.is_file() and upper.rpartition(".")[2] in PROGRAM_TYPES:
+                    elif (item.is_file() and upper.rpartition(".")[2] in PROGRAM_TYPES
+                          and (wanted is None or wanted(upper))):
                         parent = item.parent.name.upper()
                         folder = f"WKS/{parent}" if parent.endswith("." + WORKPIECE_SUFFIX) else ""
                         target = self.canonical(f"{folder}/{upper}" if folder else upper)

@@ -50,3 +50,14 @@ def test_a_turning_program_with_t1_d1_runs_in_auto(tmp_path: Path) -> None:
     assert result.status == "ended", result.alarms
     assert result.position_mcs is not None
     assert (round(result.position_mcs["X"], 3), round(result.position_mcs["Z"], 3)) == (60, 390)
+
+
+def test_each_machine_gets_its_own_sample_programs(tmp_path: Path) -> None:
+    """data/sample_programs.toml: the lathe gets the turned shaft (and its contour), not the
+    milling samples that use Y and the milling cycles; the mill gets those and not the shaft."""
+    lathe = Session.open(tmp_path / "lathe", load_machine("lathe2")).files
+    mill = Session.open(tmp_path / "mill", load_machine("mill3")).files
+    for name in ("TURN_SHAFT.MPF", "SHAFT_CONTOUR.SPF"):
+        assert lathe.exists(lathe.canonical(name)) and not mill.exists(mill.canonical(name))
+    for name in ("DRILL_FLANGE.MPF", "POCKET_PLATE.MPF", "FIRST_STEPS.MPF"):
+        assert mill.exists(mill.canonical(name)) and not lathe.exists(lathe.canonical(name))
