@@ -31,12 +31,6 @@ CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
         ("nck.iso.translate", "nck.iso.macros"),
         ("nck.iso.translate", "nck.iso.turning"),
         ("nck.iso.turning", "nck.iso.translate"),
-        # circle of 3 modules: nck.motion.servo, nck.motion.servo_defer, nck.motion.servo_paths
-        ("nck.motion.servo", "nck.motion.servo_defer"),
-        ("nck.motion.servo", "nck.motion.servo_paths"),
-        ("nck.motion.servo_defer", "nck.motion.servo"),
-        ("nck.motion.servo_defer", "nck.motion.servo_paths"),
-        ("nck.motion.servo_paths", "nck.motion.servo"),
     }
 )
 """Import edges that lie on a circle (inside a strongly connected component)."""

@@ -22,13 +22,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from nck.motion.params import AxisParams
-from nck.motion.servo_defer import bound_tables, quiet_bound, settle
-from nck.motion.servo_paths import AMBIENT_C, MOVING_MM_S, process_fast, process_small
+from nck.motion.servo_defer import quiet_bound, settle
+from nck.motion.servo_model import AMBIENT_C, MOVING_MM_S, Fault, ServoModel
+from nck.motion.servo_paths import process_fast, process_small
 
 __all__ = ["AMBIENT_C", "MOVING_MM_S", "AxisState", "Fault", "ServoBank", "Trip", "first_order"]
 SMALL_ROWS = 6  # blocks up to this many cycles go through the Python-float path
-FAST_ROWS = 2500  # longest block of the fast path (fewer when alpha^-k would grow past e^200)
 
 
 @dataclass(frozen=True, slots=True)
@@ -57,20 +56,6 @@ class AxisState:
     clamped: bool
     servo_parameter_set: int = 1
     extra: dict[str, float] = field(default_factory=dict)
-
-
-@dataclass
-class Fault:
-    """A simulated mechanical fault of one axis (tests and training)."""
-
-    jam_at_mm: float | None = None  # actual position frozen
-    offset_mm: float = 0.0  # steady deviation the controller cannot remove
-    runaway_mm_s: float = 0.0  # the actual drifts at this velocity
-    push_mm: float = 0.0  # one-off displacement, applied at the next cycle
-
-    @property
-    def active(self) -> bool:
-        return self.jam_at_mm is not None or self.offset_mm != 0.0 or self.runaway_mm_s != 0.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -103,105 +88,13 @@ def first_order(alpha: np.ndarray, u: np.ndarray, e0: np.ndarray) -> np.ndarray:
     return out
 
 
-class ServoBank:
-    """Position controllers, drives and monitors of all path axes."""
-
-    def __init__(self, axes: tuple[AxisParams, ...], ipo_cycle_s: float, positions: np.ndarray) -> None:
-        self.axes = axes
-        self.T = ipo_cycle_s
-        n = len(axes)
-        self.kv = np.array([a.kv_per_s for a in axes])
-        self.alpha = np.exp(-self.kv * self.T)
-        gain = np.array([1.0 - a.ffw_weight + a.ffw_weight * a.kv_per_s * a.equiv_speedctrl_time_s for a in axes])
-        self.b = (1.0 - self.alpha) / self.kv * gain
-        self.ffw = np.array([a.ffw_weight for a in axes])
-        self._ffw_net = np.array([a.ffw_weight * (1.0 - a.kv_per_s * a.equiv_speedctrl_time_s) for a in axes])
-        self.x_set = positions.astype(float).copy()
-        self.v_set = np.zeros(n)
-        self.e = np.zeros(n)
-        self.e_model = np.zeros(n)
-        self.v_act = np.zeros(n)
-        self.v_cmd = np.zeros(n)
-        self.a_set = np.zeros(n)
-        self.temperature = np.full(n, AMBIENT_C)
-        self.torque = np.zeros(n)
-        self.faults = [Fault() for _ in axes]
-        self.clamped = np.zeros(n, dtype=bool)
-        self.follow_up = False
-        self.monitoring = True
-        self.stop_cycles = np.full(n, 10**9, dtype=np.int64)  # cycles since the axis stopped
-        self.fine_since_stop = np.ones(n, dtype=bool)
-        self._rpm_per_mm_s = np.array([a.motor_rpm_per_mm_s for a in axes])
-        self._rated_rpm = np.array([max(a.rated_motor_rpm, 1.0) for a in axes])
-        self._limits = {
-            "contour": np.array([a.contour_tol_mm for a in axes]),
-            "ctrlout": np.array([a.ctrlout_limit_pct for a in axes]),
-            "velo": np.array([a.velo_limit_mm_s * (1.0 + 1e-9) for a in axes]),
-            "fine": np.array([a.stop_limit_fine_mm for a in axes]),
-            "pos_time": np.array([a.positioning_time_s for a in axes]),
-            "still_delay": np.array([a.standstill_delay_s for a in axes]),
-            "still": np.array([a.standstill_tol_mm for a in axes]),
-            "clamp": np.array([a.clamp_tol_mm for a in axes]),
-        }
-        self._has_ctrlout_time = any(a.ctrlout_limit_time_s > 0.0 for a in axes)
-        self._speed_pct_per_mm_s = self._rpm_per_mm_s / self._rated_rpm * 100.0
-        self._cycle_decay = np.exp(-ipo_cycle_s / np.array([max(a.thermal_time_s, 1e-6) for a in axes]))
-        self._mech = {
-            "mass": np.array([a.mass_kg for a in axes]),
-            "friction": np.array([a.friction_n for a in axes]),
-            "gravity": np.array([a.gravity_n for a in axes]),
-            "torque_per_n": np.array([
-                a.leadscrew_pitch_mm / 1000.0 / (2.0 * math.pi) / max(a.gear_ratio, 1e-9) for a in axes
-            ]),
-            "rated_torque": np.array([max(a.rated_torque_nm, 1e-9) for a in axes]),
-            "temp_rise": np.array([a.rated_temp_rise_k for a in axes]),
-            "thermal_time": np.array([max(a.thermal_time_s, 1e-6) for a in axes]),
-        }
-        # Fast path tables: alpha^k and alpha^-k for k = 1 … FAST_ROWS, and the
-        # following error below which no standstill monitor can respond.
-        ln_alpha = np.log(np.clip(self.alpha, 1e-300, 1.0))
-        rate = float(np.max(-ln_alpha)) if n else 0.0
-        self._fast_rows = FAST_ROWS if rate <= 1e-12 else max(1, min(FAST_ROWS, int(200.0 / rate)))
-        steps = np.arange(1, self._fast_rows + 1, dtype=float)[:, None]
-        self._powers = np.exp(ln_alpha[None, :] * steps)
-        self._inv_powers = np.exp(-ln_alpha[None, :] * steps)
-        self._b_inv_powers = self.b[None, :] * self._inv_powers
-        self._ones = np.ones(self._fast_rows)
-        self._cols = np.arange(n)
-        self._inv_t = 1.0 / ipo_cycle_s
-        with np.errstate(divide="ignore"):
-            self._ctrlout_mm_s = np.where(self._speed_pct_per_mm_s > 0.0,
-                                          self._limits["ctrlout"] / self._speed_pct_per_mm_s, np.inf)
-        mech = self._mech
-        self._torque_per_dv = mech["mass"] / 1000.0 * mech["torque_per_n"] / ipo_cycle_s
-        self._torque_friction = mech["friction"] * mech["torque_per_n"]
-        self._torque_gravity = mech["gravity"] * mech["torque_per_n"]
-        self._inv_rated_torque = 1.0 / mech["rated_torque"]
-        self._zero_cycles = np.zeros(n, dtype=np.int64)
-        self._no_fine = np.zeros(n, dtype=bool)
-        rows = np.arange(self._fast_rows + 1, dtype=float)
-        rows[0] = 1.0
-        self._temp_rise_per_m = mech["temp_rise"][None, :] / rows[:, None]
-        self._decay_pow = np.power(self._cycle_decay[None, :], np.arange(self._fast_rows + 1, dtype=float)[:, None])
-        # Per-axis constants of the small-block path, as Python floats.
-        self._small_limits = [
-            (float(self.alpha[i]), float(self.b[i]), float(self.kv[i]), float(self._ffw_net[i]),
-             float(self._limits["contour"][i]), float(self._ctrlout_mm_s[i]), float(self._limits["velo"][i]),
-             float(self._limits["fine"][i]), float(self._limits["pos_time"][i]),
-             float(self._limits["still_delay"][i]), float(self._limits["still"][i]), float(self._limits["clamp"][i]),
-             float(self._torque_per_dv[i]), float(self._torque_friction[i]), float(self._torque_gravity[i]),
-             float(self._inv_rated_torque[i]), float(mech["temp_rise"][i]), float(self._cycle_decay[i]))
-            for i in range(n)
-        ]
-        self._small_e = np.minimum(self._limits["fine"], np.minimum(self._limits["still"], self._limits["clamp"]))
-        # Deferred blocks (nck.motion.servo_defer): queued setpoints and their error bound.
-        self._bound_tables = bound_tables(self)
-        self._pending: list[np.ndarray] = []
-        self._pending_bound: list[float] | None = None
+class ServoBank(ServoModel):
+    """Position controllers, drives and monitors of all path axes: the behaviour over the
+    tables and state of :class:`nck.motion.servo_model.ServoModel`."""
 
     def settle(self) -> None:
         """Process queued setpoints now (every reader of the state calls this first)."""
-        if self._pending:
+        if self.pending:
             settle(self)
 
     # -- state ---------------------------------------------------------------
@@ -252,7 +145,7 @@ class ServoBank:
         self.v_cmd[:] = 0.0
         self.a_set[:] = 0.0
         self.stop_cycles = self.stop_cycles + n
-        mech = self._mech
+        mech = self.mech
         self.torque = mech["gravity"] * mech["torque_per_n"]
         load = (self.torque / mech["rated_torque"]) ** 2
         target = AMBIENT_C + mech["temp_rise"] * load
@@ -296,13 +189,13 @@ class ServoBank:
         if defer and self.monitoring and not self.follow_up and self._simple():
             bound = quiet_bound(self, setpoints)
             if bound is not None:
-                self._pending.append(setpoints)
-                self._pending_bound = bound
+                self.pending.append(setpoints)
+                self.pending_bound = bound
                 return setpoints, None
         self.settle()
         if m == 1 and self._simple():
             return self._process_one(setpoints[0])
-        if self.monitoring and not self.follow_up and m <= self._fast_rows and self._simple():
+        if self.monitoring and not self.follow_up and m <= self.fast_rows and self._simple():
             fast = process_small(self, setpoints) if m <= SMALL_ROWS else process_fast(self, setpoints)
             if fast is not None:
                 return fast, None
@@ -332,7 +225,7 @@ class ServoBank:
         prev_act = np.vstack([(self.x_set - self.e - pushed)[None, :], actual])
         v_act = np.diff(prev_act, axis=0) / T
         # Speed setpoint: P share on the error beyond what the feedforward path lags by itself.
-        v_cmd = self.kv[None, :] * e + self._ffw_net[None, :] * v
+        v_cmd = self.kv[None, :] * e + self.ffw_net[None, :] * v
         trip = None if (self.follow_up or not self.monitoring) else self._monitor(v, v_act, v_cmd, e, dev)
         last = m if trip is None else trip.index + 1
         self._commit(setpoints[:last], v[:last], e[:last], e_model[:last], v_act[:last], v_cmd[:last])
@@ -342,14 +235,14 @@ class ServoBank:
 
     def _simple(self) -> bool:
         """True when the one-cycle fast path applies (no faults, no delayed speed limit)."""
-        if self._has_ctrlout_time:
+        if self.has_ctrlout_time:
             return False
         return not any(f.active or f.push_mm for f in self.faults)
 
     def _process_one(self, x: np.ndarray) -> tuple[np.ndarray, Trip | None]:
         """One IPO cycle without faults: the same model and monitors as :meth:`process`."""
         T = self.T
-        lim = self._limits
+        lim = self.limits
         v = (x - self.x_set) / T
         e_model = self.alpha * self.e_model + self.b * v
         if self.follow_up:
@@ -360,7 +253,7 @@ class ServoBank:
         e = e_model + dev
         actual = x - e
         v_act = (actual - (self.x_set - self.e)) / T
-        v_cmd = self.kv * e + self._ffw_net * v
+        v_cmd = self.kv * e + self.ffw_net * v
         moving = np.abs(v) > MOVING_MM_S
         abs_e = np.abs(e)
         fine = (abs_e <= lim["fine"]) & ~moving
@@ -373,7 +266,7 @@ class ServoBank:
             bad = ~moving & reached & (t_since >= lim["still_delay"]) & (abs_e > tol)
             checks = (
                 (np.abs(dev) > lim["contour"], 25050),
-                (np.abs(v_cmd) * self._speed_pct_per_mm_s > lim["ctrlout"], 25060),
+                (np.abs(v_cmd) * self.speed_pct_per_mm_s > lim["ctrlout"], 25060),
                 (np.abs(v_act) > lim["velo"], 25030),
                 (~moving & ~reached & (t_since > lim["pos_time"]), 25080),
                 (bad & self.clamped, 26000),
@@ -393,17 +286,17 @@ class ServoBank:
         self.e_model = e_model
         self.v_act = v_act
         self.v_cmd = v_cmd
-        mech = self._mech
+        mech = self.mech
         torque = (mech["mass"] * a / 1000.0 + mech["friction"] * np.sign(v_act) + mech["gravity"]) * mech["torque_per_n"]
         self.torque = torque
         target = AMBIENT_C + mech["temp_rise"] * (torque / mech["rated_torque"]) ** 2
-        self.temperature = target + (self.temperature - target) * self._cycle_decay
+        self.temperature = target + (self.temperature - target) * self.cycle_decay
         return actual[None, :], trip
 
     def _monitor(self, v: np.ndarray, v_act: np.ndarray, v_cmd: np.ndarray, e: np.ndarray, dev: np.ndarray) -> Trip | None:
         """Evaluate every monitor on the block, all axes at once; return the earliest trip."""
         m = v.shape[0]
-        lim = self._limits
+        lim = self.limits
         candidates: list[tuple[int, int, int, int]] = []
 
         def earliest(mask: np.ndarray, number: int) -> None:
@@ -415,7 +308,7 @@ class ServoBank:
                     candidates.append((int(rows[col]), len(candidates), number, int(col)))
 
         earliest(np.abs(dev) > lim["contour"], 25050)
-        speed_pct = np.abs(v_cmd) * (self._rpm_per_mm_s / self._rated_rpm * 100.0)
+        speed_pct = np.abs(v_cmd) * (self.rpm_per_mm_s / self.rated_rpm * 100.0)
         over = speed_pct > lim["ctrlout"]
         if over.any():
             for col, axis in enumerate(self.axes):
@@ -469,7 +362,7 @@ class ServoBank:
         self.v_act = v_act[-1].copy()
         self.v_cmd = v_cmd[-1].copy()
         duration = x.shape[0] * T
-        mech = self._mech
+        mech = self.mech
         force = mech["mass"] * a / 1000.0 + mech["friction"] * np.sign(v_act) + mech["gravity"]
         torque = force * mech["torque_per_n"]
         self.torque = torque[-1].copy()
@@ -486,8 +379,8 @@ class ServoBank:
         v_set = float(self.v_set[i])
         fe = float(self.e[i])
         kv = abs(v_set) * 60.0 / 1000.0 / abs(fe) if abs(fe) > 1e-9 and abs(v_set) > MOVING_MM_S else 0.0
-        rpm = self._rpm_per_mm_s[i]
-        rated = self._rated_rpm[i]
+        rpm = self.rpm_per_mm_s[i]
+        rated = self.rated_rpm[i]
         return AxisState(
             name=axis.name,
             position_setpoint_mm=float(self.x_set[i]),

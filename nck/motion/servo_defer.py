@@ -22,43 +22,21 @@ fails them is processed at once, after the queue, exactly as before.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 
-from nck.motion.servo_paths import MOVING_MM_S, process_fast
+from nck.motion.servo_model import MOVING_MM_S, ServoModel
+from nck.motion.servo_paths import process_fast
 
-if TYPE_CHECKING:
-    from nck.motion.servo import ServoBank
-
-SAFETY = 1.0 - 1e-6  # the bounds must hold with room for rounding
-
-
-def bound_tables(bank: ServoBank) -> list[tuple[float, float, float, float, float, float, float, float]]:
-    """Per-axis constants of :func:`quiet_bound` as Python floats."""
-    limits = bank._limits
-    tables = []
-    for i in range(len(bank.axes)):
-        alpha, b = float(bank.alpha[i]), abs(float(bank.b[i]))
-        e_per_v = b / (1.0 - alpha) if alpha < 1.0 else float("inf")
-        tables.append((
-            e_per_v, float(bank.kv[i]), abs(float(bank._ffw_net[i])),
-            float(bank._ctrlout_mm_s[i]) * SAFETY, float(limits["velo"][i]) * SAFETY,
-            (1.0 - alpha) * bank._inv_t, b * bank._inv_t, float(bank._small_e[i]) * SAFETY,
-        ))
-    return tables
-
-
-def quiet_bound(bank: ServoBank, rows: np.ndarray) -> list[float] | None:
+def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
     """The following-error bound after ``rows`` when no monitor can respond in them, else None.
 
     Starts from the queued blocks' bound, or from the settled state (which
     must then have no contour deviation).
     """
-    pending = bank._pending
+    pending = bank.pending
     if pending:
         previous = pending[-1][-1]
-        start = bank._pending_bound
+        start = bank.pending_bound
     else:
         if not np.array_equal(bank.e, bank.e_model):
             return None  # a contour deviation: the full model decides
@@ -67,13 +45,13 @@ def quiet_bound(bank: ServoBank, rows: np.ndarray) -> list[float] | None:
     v = np.empty_like(rows)
     np.subtract(rows[0], previous, out=v[0])
     np.subtract(rows[1:], rows[:-1], out=v[1:])
-    v *= bank._inv_t
+    v *= bank.inv_t
     speed = np.abs(v)
     tops = speed.max(axis=0).tolist()
     lows = speed.min(axis=0).tolist()
     out = []
     for (e_per_v, kv, ffw, ctrlout, velo, decay_rate, b_rate, small_e), top, low, e0 in zip(
-            bank._bound_tables, tops, lows, start):
+            bank.bound_tables, tops, lows, start):
         bound = max(e0, e_per_v * top)
         if kv * bound + ffw * top > ctrlout or top + decay_rate * bound + b_rate * top > velo:
             return None
@@ -83,15 +61,15 @@ def quiet_bound(bank: ServoBank, rows: np.ndarray) -> list[float] | None:
     return out
 
 
-def settle(bank: ServoBank) -> None:
+def settle(bank: ServoModel) -> None:
     """Process the queued setpoints (in chunks the fast path can take)."""
-    pending = bank._pending
+    pending = bank.pending
     if not pending:
         return
     rows = pending[0] if len(pending) == 1 else np.concatenate(pending)
-    bank._pending = []
-    bank._pending_bound = None
-    step = bank._fast_rows
+    bank.pending = []
+    bank.pending_bound = None
+    step = bank.fast_rows
     for start in range(0, rows.shape[0], step):
         if process_fast(bank, rows[start:start + step]) is None:
             # The bound proved every monitor silent: this is a programming error.

@@ -7,43 +7,37 @@
 
 Both return None, with nothing changed, when a monitor might respond; the
 bank then runs its full model, which locates the responding cycle. The
-functions use the bank's state and its precomputed tables (``self`` is the
-bank: they are methods kept in their own module).
+functions read the tables and update the state of a
+:class:`nck.motion.servo_model.ServoModel` (the bank's).
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 
-if TYPE_CHECKING:
-    from nck.motion.servo import ServoBank
-
-AMBIENT_C = 25.0  # motor temperature at rest (°C)
-MOVING_MM_S = 1e-6  # below this setpoint velocity an axis counts as stopped
+from nck.motion.servo_model import AMBIENT_C, MOVING_MM_S, ServoModel
 
 
-def process_small(self: ServoBank, x: np.ndarray) -> np.ndarray | None:
+def process_small(model: ServoModel, x: np.ndarray) -> np.ndarray | None:
     """A few cycles without faults, cycle by cycle in Python floats (cheaper than numpy here).
 
     The same recurrence and monitors as :meth:`ServoBank._process_one`; when a
     monitor would respond, None is returned with nothing changed and the
     caller runs the full model, which locates the responding cycle.
     """
-    T = self.T
-    inv_t = self._inv_t
+    T = model.T
+    inv_t = model.inv_t
     m, n = x.shape
     rows = x.tolist()
-    lim = self._small_limits
-    x_set = self.x_set.tolist()
-    v_set = self.v_set.tolist()
-    e = self.e.tolist()
-    e_model = self.e_model.tolist()
-    stop_cycles = self.stop_cycles.tolist()
-    fine_since = self.fine_since_stop.tolist()
-    clamped = self.clamped.tolist()
-    temperature = self.temperature.tolist()
+    lim = model.small_limits
+    x_set = model.x_set.tolist()
+    v_set = model.v_set.tolist()
+    e = model.e.tolist()
+    e_model = model.e_model.tolist()
+    stop_cycles = model.stop_cycles.tolist()
+    fine_since = model.fine_since_stop.tolist()
+    clamped = model.clamped.tolist()
+    temperature = model.temperature.tolist()
     actual_rows = []
     a = v_act = v_cmd = torque = v_set
     for row in rows:
@@ -93,20 +87,20 @@ def process_small(self: ServoBank, x: np.ndarray) -> np.ndarray | None:
         v_set = v_row
         a, v_act, v_cmd, torque = a_row, v_act_row, v_cmd_row, torque_row
         actual_rows.append(out)
-    self.x_set = np.array(x_set)
-    self.v_set = np.array(v_set)
-    self.a_set = np.array(a)
-    self.e = np.array(e)
-    self.e_model = np.array(e_model)
-    self.v_act = np.array(v_act)
-    self.v_cmd = np.array(v_cmd)
-    self.torque = np.array(torque)
-    self.temperature = np.array(temperature)
-    self.stop_cycles = np.array(stop_cycles, dtype=np.int64)
-    self.fine_since_stop = np.array(fine_since, dtype=bool)
+    model.x_set = np.array(x_set)
+    model.v_set = np.array(v_set)
+    model.a_set = np.array(a)
+    model.e = np.array(e)
+    model.e_model = np.array(e_model)
+    model.v_act = np.array(v_act)
+    model.v_cmd = np.array(v_cmd)
+    model.torque = np.array(torque)
+    model.temperature = np.array(temperature)
+    model.stop_cycles = np.array(stop_cycles, dtype=np.int64)
+    model.fine_since_stop = np.array(fine_since, dtype=bool)
     return np.array(actual_rows)
 
-def process_fast(self: ServoBank, x: np.ndarray) -> np.ndarray | None:
+def process_fast(model: ServoModel, x: np.ndarray) -> np.ndarray | None:
     """The common block (no faults, monitors on): the model of :meth:`ServoBank.process`, cheaper.
 
     The monitors are checked through bounds that prove no monitor can
@@ -117,66 +111,66 @@ def process_fast(self: ServoBank, x: np.ndarray) -> np.ndarray | None:
     the full model, which locates the responding cycle.
     """
     m = x.shape[0]
-    inv_t = self._inv_t
-    lim = self._limits
+    inv_t = model.inv_t
+    lim = model.limits
     v = np.empty_like(x)
-    np.subtract(x[0], self.x_set, out=v[0])
+    np.subtract(x[0], model.x_set, out=v[0])
     np.subtract(x[1:], x[:-1], out=v[1:])
     v *= inv_t
-    powers = self._powers[:m]
+    powers = model.powers[:m]
     # e_model[k] = alpha^k (e_model0 + sum_j<=k b v[j] alpha^-j)
-    acc = np.cumsum(v * self._b_inv_powers[:m], axis=0)
-    acc += self.e_model
+    acc = np.cumsum(v * model.b_inv_powers[:m], axis=0)
+    acc += model.e_model
     e_model = acc
     e_model *= powers
-    dev0 = self.e - self.e_model
+    dev0 = model.e - model.e_model
     if dev0.any():
-        if (np.abs(dev0) * self.alpha > lim["contour"]).any():
+        if (np.abs(dev0) * model.alpha > lim["contour"]).any():
             return None  # the contour deviation only decays: its first cycle is its largest
         e = e_model + dev0 * powers
     else:
         e = e_model
-    v_cmd = self.kv * e
-    v_cmd += self._ffw_net * v
-    if (np.abs(v_cmd) > self._ctrlout_mm_s).any():
+    v_cmd = model.kv * e
+    v_cmd += model.ffw_net * v
+    if (np.abs(v_cmd) > model.ctrlout_mm_s).any():
         return None
     actual = x - e
     v_act = np.empty_like(x)
-    np.subtract(actual[0], self.x_set - self.e, out=v_act[0])
+    np.subtract(actual[0], model.x_set - model.e, out=v_act[0])
     np.subtract(actual[1:], actual[:-1], out=v_act[1:])
     v_act *= inv_t
     if (np.abs(v_act) > lim["velo"]).any():
         return None
     stopped = np.abs(v) <= MOVING_MM_S
     if stopped.any():
-        if (stopped & (np.abs(e) > self._small_e)).any():
+        if (stopped & (np.abs(e) > model.small_e)).any():
             return None  # a stopped axis outside its windows: the standstill monitors decide
         # Standstill book-keeping; every stopped cycle is inside the fine window here.
         last = m - 1 - np.argmax(~stopped[::-1], axis=0)
-        any_move = ~stopped[last, self._cols]
+        any_move = ~stopped[last, model.cols]
         fine_after = last < m - 1
-        self.stop_cycles = np.where(any_move, m - 1 - last, self.stop_cycles + m)
-        self.fine_since_stop = np.where(any_move, fine_after, self.fine_since_stop | fine_after)
+        model.stop_cycles = np.where(any_move, m - 1 - last, model.stop_cycles + m)
+        model.fine_since_stop = np.where(any_move, fine_after, model.fine_since_stop | fine_after)
     else:
-        self.stop_cycles = self._zero_cycles
-        self.fine_since_stop = self._no_fine
+        model.stop_cycles = model.zero_cycles
+        model.fine_since_stop = model.no_fine
     # Drive values: torque from acceleration, friction and weight; motor temperature.
     dv = np.empty_like(v)
-    np.subtract(v[0], self.v_set, out=dv[0])
+    np.subtract(v[0], model.v_set, out=dv[0])
     np.subtract(v[1:], v[:-1], out=dv[1:])
-    torque = self._torque_per_dv * dv
-    torque += self._torque_friction * np.sign(v_act)
-    torque += self._torque_gravity
-    load = self._ones[:m] @ np.square(torque * self._inv_rated_torque)
-    target = AMBIENT_C + self._temp_rise_per_m[m] * load if m < len(self._temp_rise_per_m) else (
-        AMBIENT_C + self._mech["temp_rise"] * load / m)
-    self.temperature = target + (self.temperature - target) * self._decay_pow[m]
-    self.torque = torque[-1]
-    self.a_set = dv[-1] * inv_t
-    self.x_set = x[-1].copy()
-    self.v_set = v[-1]
-    self.e = e[-1].copy()  # (e may be e_model itself: two separate arrays)
-    self.e_model = e_model[-1]
-    self.v_act = v_act[-1]
-    self.v_cmd = v_cmd[-1]
+    torque = model.torque_per_dv * dv
+    torque += model.torque_friction * np.sign(v_act)
+    torque += model.torque_gravity
+    load = model.ones[:m] @ np.square(torque * model.inv_rated_torque)
+    target = AMBIENT_C + model.temp_rise_per_m[m] * load if m < len(model.temp_rise_per_m) else (
+        AMBIENT_C + model.mech["temp_rise"] * load / m)
+    model.temperature = target + (model.temperature - target) * model.decay_pow[m]
+    model.torque = torque[-1]
+    model.a_set = dv[-1] * inv_t
+    model.x_set = x[-1].copy()
+    model.v_set = v[-1]
+    model.e = e[-1].copy()  # (e may be e_model itself: two separate arrays)
+    model.e_model = e_model[-1]
+    model.v_act = v_act[-1]
+    model.v_cmd = v_cmd[-1]
     return actual

@@ -29,9 +29,9 @@ def _states(program: str, enabled: bool, monkeypatch: pytest.MonkeyPatch, machin
     original = ServoBank.process
 
     def process(self: ServoBank, setpoints: np.ndarray, defer: bool = False) -> tuple:
-        before = len(self._pending)
+        before = len(self.pending)
         out = original(self, setpoints, enabled and defer)
-        queued[0] += len(self._pending) > before
+        queued[0] += len(self.pending) > before
         return out
 
     with monkeypatch.context() as patch:
@@ -87,7 +87,7 @@ def test_a_speed_setpoint_trip_after_queued_blocks_comes_in_the_same_cycle(monke
 def test_the_bound_refuses_a_block_beyond_the_velocity_limit() -> None:
     nck = Nck(programs=MemorySource({}), referenced=True)
     servo = nck.motion.servo
-    velo = float(servo._limits["velo"][0])
+    velo = float(servo.limits["velo"][0])
     fast = np.zeros((10, len(servo.axes)))
     fast[:, 0] = np.arange(1, 11) * velo * 1.5 * servo.T
     assert servo_defer.quiet_bound(servo, fast) is None
