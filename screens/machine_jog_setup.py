@@ -72,10 +72,11 @@ class JogWindows:
         return tuple(a.name for a in self.screen.hmi.bridge.status.axes if a.kind != "spindle")
 
     def _work_offsets(self) -> tuple[str, ...]:
-        """The settable work offsets the NC data holds (G54 … G57, G505 …)."""
+        """The settable work offsets the NC data holds, in the order of their numbers (G54 … G57,
+        G505 …; the retained data may hold them in any order)."""
         data = self.screen.ask(ReadData()).data
         frames = getattr(data, "settable_frames", None) or {}
-        return tuple(frames) or ("G54", "G55", "G56", "G57")
+        return tuple(sorted(frames, key=lambda name: int(name[1:]))) or ("G54", "G55", "G56", "G57")
 
     def compose(self) -> ComposeResult:
         """The four windows (each a view of the Machine area's content switcher)."""

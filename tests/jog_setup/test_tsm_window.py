@@ -129,3 +129,17 @@ async def test_tsm_work_offset_and_unit_stay_active_after_the_job() -> None:
         x = {a.name: a for a in status.axes}["X"]
         assert abs(x.position_wcs - 200.0 / 25.4) < 1e-6  # G70: the display in inch
         assert "G55" in str(app.screen.query_one("#view-tsm-info").render())
+
+
+async def test_tsm_work_offsets_in_the_order_of_their_numbers() -> None:
+    """The retained data hold the settable offsets sorted as text (G505 … G54 …): the choice
+    still goes — → G500 → G54 → G55 …, G505 after G57 (found in tmux: two → gave G505)."""
+    nck = kernel_with_tools()
+    nck.data.settable_frames = dict(sorted(nck.data.settable_frames.items()))
+    assert next(iter(nck.data.settable_frames)) != "G54"
+    app = HmiApp(nck, realtime=False)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "shift+f1", "down", "down", "down", "down", "down", "right", "right")
+        assert app.screen.query_one("#view-tsm-work_offset", ChoiceField).value == "G54"
+        await burst(pilot, *["right"] * 4)
+        assert app.screen.query_one("#view-tsm-work_offset", ChoiceField).value == "G505"
