@@ -55,6 +55,16 @@ STEP_MARGIN = 1.25  # the servo setpoints may exceed the path velocity a little
 DEEPER_MM = 1e-9
 
 
+SURFACE_SLACK_MM = 1e-6
+"""A tip at most this deep counts as on the surface, not in the solid (the sums of increments)."""
+
+
+def _leaving(body: ToolBody, solid: Any, start: Point, end: Point) -> bool:
+    """True when the tip starts on the surface of ``solid`` and the step takes it off (never in)."""
+    before = clearance(body, solid, start)
+    return before >= -SURFACE_SLACK_MM and clearance(body, solid, end) > before
+
+
 @dataclass(frozen=True, slots=True)
 class ContactEvent:
     """A contact of the tool with a solid: ``kind`` ``"probe"`` (switched), ``"scratch"`` or
@@ -182,6 +192,8 @@ class ContactWatch:
             if t is None:
                 self._contact.touching.discard(name)
                 continue
+            if t == 0.0 and not touching_before and _leaving(body, solid, start, end):
+                continue  # on the surface (not seen arriving: the solid or the tool changed) and moving off
             if t > 0.0 or not touching_before:
                 self._contact.touching.add(name)
                 self._on_contact(name, body, before, after, t)

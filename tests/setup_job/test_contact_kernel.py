@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from nck.commands import (Accepted, CycleStart, Jog, Reset, SelectIncrement, SelectMachineFunction, SelectMode,
-                          SetMdaProgram, SetOverride)
+                          SetMdaProgram, SetOverride, WriteMachineSetup)
 from nck.contact import clearance
 from nck.kernel import Nck
 from nck.kernel_contact import ContactWatch
@@ -198,3 +198,22 @@ def test_meas_and_meaw_in_a_program_give_the_trigger_position_and_the_probe_stat
     assert r[8] == pytest.approx(-51.0, abs=1e-6)  # MEAW: the block ran to its end
     assert r[6] == 0.0  # reached its end without a switch: status 0, no alarm (trainer choice)
     assert nck.positions_mcs()["X"] == pytest.approx(-60.0)
+
+
+@pytest.mark.parametrize("depth_mm", [0.0, 1e-9])
+def test_rapid_off_a_surface_the_tool_rests_on_is_no_crash(depth_mm: float) -> None:
+    """The cutter's tip rests on the blank's top without having been seen arriving (found in
+    tmux: ten INC 0.1 steps end a float's breadth from the top, then the tool length was
+    measured; here the instructor moves the blank under the resting tool, its top where the tip
+    is, WCS = MCS − L: tip Z -210): G0 up takes it off the surface, which is no contact — not
+    crash 90002; back down 0.5 mm into the blank at rapid is still one."""
+    nck = kernel()
+    mda(nck, "T2 D1 M6\nM3 S1000\nG0 X0 Y0 Z-210\n")
+    assert nck.alarms.active == () and events(nck) == []
+    top = -210.0 + depth_mm
+    assert nck.submit(WriteMachineSetup(MachineSetup(blank=Box((-50.0, -40.0, -250.0), (50.0, 40.0, top))))) \
+        == Accepted()
+    mda(nck, "G0 Z-150\n")
+    assert nck.alarms.active == () and events(nck) == []
+    mda(nck, "G0 Z-210.5\n")
+    assert [a.number for a in nck.alarms.active] == [90002]
