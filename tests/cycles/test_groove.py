@@ -73,3 +73,18 @@ def test_without_a_tool_offset_or_a_second_edge() -> None:
     call = "CYCLE93(40, -20, 10, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0)"
     assert _groove(call, select="").alarms == [61000]
     assert _groove(call, tools={(3, 1): TOOLS[(3, 1)]}).alarms == [61602]
+
+
+def test_the_second_edge_given_by_dn() -> None:
+    """_DN (18th parameter, "D number for the 2nd edge of the tool"): T3 with edges D1 (length 2
+    45) and D3 (41): tool width 4. SPD 40, SPL -20, width 10, depth 5 (X30), no allowances: span
+    10 - 4 = 6 needs ceil(6/4) + 1 = 3 plunges 3 apart at Z-20, -17, -14 from the safety plane
+    X42; finishing down at Z-20, along the base to Z-20+10-4 = -14, up to X42."""
+    tools = {(3, 1): {1: 520, 3: 25.0, 4: 45.0}, (3, 3): {1: 520, 3: 25.0, 4: 41.0}}
+    steps = _groove("CYCLE93(40, -20, 10, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 3)", tools=tools).ended().steps()
+    expected = []
+    for z in (-20, -17, -14):
+        expected += [("G0", 42, z), ("G1", 30, z, 200), ("G0", 42, z)]
+    expected += [("G0", 42, -20), ("G1", 30, -20, 200), ("G1", 30, -14, 200), ("G1", 42, -14, 200),
+                 ("G0", 42, -20)]
+    assert steps == expected
