@@ -6,9 +6,9 @@ so code reads ``NcAlarmError(SYNTAX_ERROR, text)`` instead of ``NcAlarmError(120
 Each name says what the catalogue text says; ``tests/test_alarm_ids.py`` checks that
 every number here has a catalogue entry and that no number has two names.
 
-Packages whose raises use these names: ``nck.lang``, ``nck.geometry`` (besides
-the module constants it already had) and the top-level kernel modules; the
-rest still use literals, counted by the test so that the number only goes down.
+Every package of ``nck`` raises with these names (or with module constants
+``ALARM_… = number`` that name catalogue entries); ``tests/test_alarm_ids.py``
+fails on a raise written with a bare number.
 """
 
 from __future__ import annotations
@@ -73,3 +73,75 @@ VALUE_ABOVE_UPPER_LIMIT = 17090
 
 JUMP_TARGET_NOT_FOUND = 14080
 """Jump destination %3 not found."""
+
+CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION = 10882
+"""Chamfer or rounding programmed in a block without path motion."""
+
+ADDRESS_PROGRAMMED_TWICE = 12000
+"""Address %3 programmed more than once."""
+
+G_GROUP_PROGRAMMED_TWICE = 12060
+"""G group %3 programmed more than once."""
+
+OPERATION_DOES_NOT_FIT_TYPE = 12150
+"""Operation %3 does not fit the data type."""
+
+NAME_DEFINED_TWICE = 12170
+"""Name %3 defined more than once."""
+
+STRING_TOO_LONG = 12210
+"""String %3 too long."""
+
+TOO_MANY_INITIAL_VALUES = 12260
+"""Too many initial values for %3."""
+
+PARAMETER_NOT_A_VARIABLE = 12320
+"""Parameter %3 is not a variable."""
+
+TOO_MANY_CALL_PARAMETERS = 12340
+"""Too many parameters in call of %3."""
+
+LABEL_DEFINED_TWICE = 12450
+"""Label %3 defined twice."""
+
+CONTROL_STRUCTURES_NOT_NESTED = 12640
+"""Control structures not correctly nested."""
+
+CONTROL_STRUCTURES_TOO_DEEP = 12641
+"""Control structures nested too deeply."""
+
+SUBPROGRAM_LEVEL_EXCEEDED = 14012
+"""Maximum subprogram level exceeded."""
+
+PASS_COUNT_NOT_ALLOWED = 14013
+"""Number of subprogram passes not allowed."""
+
+ARITHMETIC_ERROR = 14051
+"""Arithmetic error in the part program."""
+
+SKIP_LEVEL_NOT_ALLOWED = 14060
+"""Skip level %3 not allowed (only 1 to 9)."""
+
+STRING_NOT_AN_AXIS = 14097
+"""String %3 cannot be converted to type AXIS."""
+
+NO_VALID_NUMBER = 14098
+"""Conversion error, no valid number in %3."""
+
+STRING_RESULT_TOO_LONG = 14099
+"""Result of string operation %3 too long."""
+
+DEFINITION_AFTER_STATEMENT = 14500
+"""DEF or PROC not allowed after the first executable statement."""
+
+POSITION_OUTSIDE_MODULO_RANGE = 16830
+"""Position outside the modulo range 0 to 360 degrees."""
+
+ILLEGAL_ARRAY_INDEX_1 = 17020
+"""Illegal array index 1 %3."""
+
+ILLEGAL_ARRAY_INDEX_2 = 17030
+"""Illegal array index 2 %3."""
+
+ILLEGAL_AXIS_INDEX = 17040
+"""Illegal axis index %3."""

@@ -17,7 +17,12 @@ from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
 from nck.alarm_ids import (
-    MEMORY_CAPACITY_REACHED, PROGRAM_NOT_FOUND, STOCK_REMOVAL_CONTOUR_ERROR, WRONG_CALL_ARGUMENTS,
+    ADDRESS_PROGRAMMED_TWICE, ARRAY_TOO_MANY_DIMENSIONS, CONTROL_STRUCTURES_NOT_NESTED,
+    DEFINITION_AFTER_STATEMENT, G_GROUP_PROGRAMMED_TWICE, ILLEGAL_ARRAY_INDEX_1, JUMP_TARGET_NOT_FOUND,
+    MEMORY_CAPACITY_REACHED, NAME_DEFINED_TWICE, NAME_NOT_DEFINED, OPERATION_DOES_NOT_FIT_TYPE,
+    PARAMETER_NOT_A_VARIABLE, PASS_COUNT_NOT_ALLOWED, PROGRAM_NOT_FOUND, STOCK_REMOVAL_CONTOUR_ERROR,
+    SUBPROGRAM_LEVEL_EXCEEDED, SYNTAX_ERROR, TOO_MANY_CALL_PARAMETERS, TOO_MANY_INITIAL_VALUES,
+    VALUE_RANGE_EXCEEDED, WRONG_AXIS_TYPE, WRONG_CALL_ARGUMENTS,
 )
 from nck.interp import sysvars
 from nck.interp.contour_table import ROW_WIDTH, contour_rows
@@ -118,7 +123,7 @@ class BlockRun:
     def _end(self) -> list[canon.CanonCommand]:
         interp = self.interp
         if self.call is not None:
-            raise NcAlarmError(12080, self.end_kind)
+            raise NcAlarmError(SYNTAX_ERROR, self.end_kind)
         if self.frame.is_main or interp.dialect.ends_whole_program(interp, self.end_kind):
             interp._program_end(self.end_kind or "M30")  # (ISO mode: M30 in a subprogram ends the whole program)
             return [canon.ProgramEnd(self.source, self.end_kind or "M30")]
@@ -168,7 +173,7 @@ class BlockRun:
         elif kind is ast.Call:
             self.executable = True
             if self.call is not None:
-                raise NcAlarmError(12080, stmt.name)  # type: ignore[union-attr]
+                raise NcAlarmError(SYNTAX_ERROR, stmt.name)  # type: ignore[union-attr]
             self.call = stmt  # type: ignore[assignment]
         elif kind is ast.Builtin:
             self.executable = True
@@ -177,7 +182,7 @@ class BlockRun:
             self._def(stmt)  # type: ignore[arg-type]
         elif kind is ast.Proc:
             if self.index != 0 and self.frame.program.proc is not stmt:
-                raise NcAlarmError(14500)
+                raise NcAlarmError(DEFINITION_AFTER_STATEMENT)
         elif kind is ast.Extern:
             pass  # declarations only; calls are resolved by name at run time
 
@@ -188,25 +193,25 @@ class BlockRun:
         mode = None
         if isinstance(value_expr, ast.Func) and value_expr.name in ("AC", "IC", "DC", "ACP", "ACN"):
             if len(value_expr.args) != 1 or value_expr.args[0] is None:
-                raise NcAlarmError(12080, value_expr.name)
+                raise NcAlarmError(SYNTAX_ERROR, value_expr.name)
             mode = value_expr.name
             value_expr = value_expr.args[0]
         value = self.eval(value_expr)
         if address in interp.machine.path_axes:
             if address in self.words.axes:
-                raise NcAlarmError(12000, address)
+                raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, address)
             self.words.axes[address] = (float(to_number(value, address)), mode)
             return
         if mode is not None:
             spindle_mode = address in SPINDLE_POSITION_WORDS
             if not spindle_mode and mode in ("DC", "ACP", "ACN"):
-                raise NcAlarmError(12080, f"{address}={mode}")
+                raise NcAlarmError(SYNTAX_ERROR, f"{address}={mode}")
             if not spindle_mode and address not in MODE_WORDS and not (
                     address[0] in "IJK" and address[1:].isdigit()):
-                raise NcAlarmError(12080, f"{address}={mode}")
+                raise NcAlarmError(SYNTAX_ERROR, f"{address}={mode}")
             self.words.word_modes[address] = mode  # I=AC(…), AP=IC(…): read by the motion builder
         if address == "G":
-            raise NcAlarmError(12080, "G=")
+            raise NcAlarmError(SYNTAX_ERROR, "G=")
         number = to_number(value, address)
         if address == "M":
             m = _whole(number, "M")
@@ -218,13 +223,13 @@ class BlockRun:
         if address == "P":
             passes = _whole(number, "P")
             if not 1 <= passes <= MAX_PASSES:
-                raise NcAlarmError(14013)
+                raise NcAlarmError(PASS_COUNT_NOT_ALLOWED)
             self.passes = passes
             return
         if address in ("S", "T", "D", "F") and word.ext is not None:
             key = (address, word.ext)
             if key in self.words.extended:
-                raise NcAlarmError(12000, f"{address}{word.ext}")
+                raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, f"{address}{word.ext}")
             self.words.extended[key] = float(number)
             if word.ext == 1 or address in ("T", "D"):
                 self.words.words.setdefault(address, float(number))
@@ -233,9 +238,9 @@ class BlockRun:
             _whole(number, address)
         if len(address) == 1:
             if address not in "FSTDIJK":
-                raise NcAlarmError(12550, address)
+                raise NcAlarmError(NAME_NOT_DEFINED, address)
         elif address not in VALUE_ADDRESSES and not (address[0] in "IJK" and address[1:].isdigit()):
-            raise NcAlarmError(12550, address)
+            raise NcAlarmError(NAME_NOT_DEFINED, address)
         if word.indices and address in ("FA", "ACC"):  # FA[X]=…, ACC[X]=…: one value per axis
             index = word.indices[0]
             if address == "FA" and isinstance(index, ast.Name) and SPINDLE_NAME.fullmatch(index.name) \
@@ -244,14 +249,14 @@ class BlockRun:
             else:
                 address = f"{address}[{to_string(self._index_value(index))}]"
         if address in self.words.words:
-            raise NcAlarmError(12000, address)
+            raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, address)
         self.words.words[address] = float(number)
 
     def _gword(self, code: str) -> None:
         group = self.interp.table.lookup(code)
         present = self.words.gcodes.get(group.number)
         if present is not None and present != code:
-            raise NcAlarmError(12060, group.number)
+            raise NcAlarmError(G_GROUP_PROGRAMMED_TWICE, group.number)
         self.words.gcodes[group.number] = code
 
     def _apply_gcodes(self) -> None:
@@ -270,10 +275,10 @@ class BlockRun:
         if isinstance(target, ast.Index) and target.name == "AX" and self.interp.lookup("AX") is None:
             # AX[<axis expression>]=value: axis word with a computed axis name
             if len(target.indices) != 1:
-                raise NcAlarmError(17020, "AX")
+                raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "AX")
             axis = self._index_value(target.indices[0])
             if not isinstance(axis, str) or not self.interp.is_axis(axis):
-                raise NcAlarmError(14092, "AX")
+                raise NcAlarmError(WRONG_AXIS_TYPE, "AX")
             self._address(ast.AddressWord(str(axis), stmt.value))
             return
         if isinstance(target, ast.Name):
@@ -286,10 +291,10 @@ class BlockRun:
     def _assign_list(self, target: ast.Name | ast.Index | ast.RParam, func: ast.Func) -> None:
         """``ARR[i]=SET(a, b, …)`` fills from element i on; ``ARR[i]=REP(v)`` fills to the end."""
         if isinstance(target, ast.RParam) or any(a is None for a in func.args) or not func.args:
-            raise NcAlarmError(12080, func.name)
+            raise NcAlarmError(SYNTAX_ERROR, func.name)
         binding = self.interp.lookup(target.name)
         if not isinstance(binding, Cell) or not binding.dims:
-            raise NcAlarmError(12150, target.name)
+            raise NcAlarmError(OPERATION_DOES_NOT_FIT_TYPE, target.name)
         start = 0
         if isinstance(target, ast.Index):
             start = binding.offset(tuple(self._index_value(i) for i in target.indices))
@@ -297,10 +302,10 @@ class BlockRun:
         size = len(binding.value)
         if func.name == "REP":
             if len(values) != 1:
-                raise NcAlarmError(12080, "REP")
+                raise NcAlarmError(SYNTAX_ERROR, "REP")
             values = values * (size - start)
         elif start + len(values) > size:
-            raise NcAlarmError(17020, target.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, target.name)
         for position, value in enumerate(values, start=start):
             element = _unflatten(position, binding.dims)
             journal_cell(self.interp, binding, element)
@@ -318,7 +323,7 @@ class BlockRun:
             indices = tuple(self._index_value(i) for i in target.indices)
             if target.name == "R":
                 if len(indices) != 1:
-                    raise NcAlarmError(17020, "R")
+                    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "R")
                 interp.write_r(indices[0], value)
                 return
             binding = interp.lookup(target.name)
@@ -328,7 +333,7 @@ class BlockRun:
             if target.name.startswith("$"):
                 sysvars.write(interp, target.name, indices, value)  # type: ignore[arg-type]
                 return
-            raise NcAlarmError(12550, target.name)
+            raise NcAlarmError(NAME_NOT_DEFINED, target.name)
         binding = interp.lookup(target.name)
         if binding is not None:
             write_binding(interp, binding, (), value)
@@ -336,7 +341,7 @@ class BlockRun:
         if target.name.startswith("$"):
             sysvars.write(interp, target.name, (), value)  # type: ignore[arg-type]
             return
-        raise NcAlarmError(12550, target.name)
+        raise NcAlarmError(NAME_NOT_DEFINED, target.name)
 
     def _index_value(self, expr: ast.Expr) -> Any:
         if isinstance(expr, ast.Name) and self.interp.is_axis(expr.name) and self.interp.lookup(expr.name) is None:
@@ -349,47 +354,47 @@ class BlockRun:
     def _def(self, stmt: ast.Def) -> None:
         frame = self.frame
         if not frame.def_open:
-            raise NcAlarmError(14500)
+            raise NcAlarmError(DEFINITION_AFTER_STATEMENT)
         lower = float(to_number(self.eval(stmt.lower))) if stmt.lower is not None else None
         upper = float(to_number(self.eval(stmt.upper))) if stmt.upper is not None else None
         for decl in stmt.names:
             name = decl.name
             if len(name) < 2 or not all(c.isalpha() or c == "_" for c in name[:2]):
-                raise NcAlarmError(12080, name)
+                raise NcAlarmError(SYNTAX_ERROR, name)
             if name in RESERVED or self.interp.is_axis(name) or self.interp.table.is_gcode(name) \
                     or name in VALUE_ADDRESSES:
-                raise NcAlarmError(12170, name)
+                raise NcAlarmError(NAME_DEFINED_TWICE, name)
             scope_dict = frame.locals
             if stmt.scope is None and name in scope_dict:
-                raise NcAlarmError(12170, name)
+                raise NcAlarmError(NAME_DEFINED_TWICE, name)
             dims: list[int] = []
             for dim_expr in decl.dims:
                 size = to_number(self.eval(dim_expr), name)
                 if size != int(size) or not 1 <= int(size) <= 65535:
-                    raise NcAlarmError(17020, name)
+                    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
                 dims.append(int(size))
             if math.prod(dims) > MAX_ARRAY_ELEMENTS:  # every dimension allowed, the whole too big
-                raise NcAlarmError(17020, name)
+                raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
             self._reserve_memory(name, stmt, math.prod(dims), global_data=stmt.scope is not None)
             cell = Cell.create(name, stmt.type, tuple(dims), lower, upper, stmt.string_len)
             if decl.init is not None:
                 values = [self.eval(e) for e in decl.init]
                 if not dims:
                     if len(values) != 1:
-                        raise NcAlarmError(12260, name)
+                        raise NcAlarmError(TOO_MANY_INITIAL_VALUES, name)
                     cell.set(values[0])
                 else:
                     size = len(cell.value)
                     if decl.init_rep:
                         if len(values) != 1:
-                            raise NcAlarmError(12260, name)
+                            raise NcAlarmError(TOO_MANY_INITIAL_VALUES, name)
                         converted = convert(values[0], stmt.type, name, stmt.string_len)
                         for i in range(size):
                             cell.value[i] = converted
                         cell.set(values[0], tuple(0 for _ in dims))
                     else:
                         if len(values) > size:
-                            raise NcAlarmError(12260, name)
+                            raise NcAlarmError(TOO_MANY_INITIAL_VALUES, name)
                         for i, v in enumerate(values):
                             cell.set(v, _unflatten(i, tuple(dims)))
             if stmt.scope is not None:
@@ -424,7 +429,7 @@ class BlockRun:
             return
         value = list(cell.value) if cell.dims else cell.value
         if cell.dims and len(cell.dims) > 1:
-            raise NcAlarmError(12190, cell.name)
+            raise NcAlarmError(ARRAY_TOO_MANY_DIMENSIONS, cell.name)
         self.interp.write_gud(cell.name, value)
         levels = {k: v for k, v in (("read", stmt.read_level), ("write", stmt.write_level)) if v is not None}
         if levels:
@@ -463,7 +468,7 @@ class BlockRun:
             head = program.lines[opener].block.statements[0]  # type: ignore[union-attr]
             end = self.frame.for_ends.get(opener)
             if end is None:
-                raise NcAlarmError(12640)
+                raise NcAlarmError(CONTROL_STRUCTURES_NOT_NESTED)
             value = to_number(self._read_target(head.var), "FOR") + 1  # type: ignore[union-attr]
             self.assign(head.var, value)  # type: ignore[union-attr,arg-type]
             if to_number(self._read_target(head.var), "FOR") <= end:  # type: ignore[union-attr]
@@ -501,7 +506,7 @@ class BlockRun:
         if found is None:
             if goto.kind == "GOTOC":
                 return
-            raise NcAlarmError(14080, label if label is not None else f"N{number}")
+            raise NcAlarmError(JUMP_TARGET_NOT_FOUND, label if label is not None else f"N{number}")
         self.frame.pc = found
 
     def _start_repeat(self, stmt: ast.SectionRepeat) -> None:
@@ -511,13 +516,14 @@ class BlockRun:
         if start is None:
             start = program.find_label(stmt.start, self.index, "F")
         if start is None:
-            raise NcAlarmError(14080, stmt.start)
+            raise NcAlarmError(JUMP_TARGET_NOT_FOUND, stmt.start)
         if stmt.single_block:
             end = start
         elif stmt.end is not None:
-            end = program.find_label(stmt.end, start - 1, "F")
-            if end is None:
-                raise NcAlarmError(14080, stmt.end)
+            end_found = program.find_label(stmt.end, start - 1, "F")
+            if end_found is None:
+                raise NcAlarmError(JUMP_TARGET_NOT_FOUND, stmt.end)
+            end = end_found
             if start <= self.index <= end:  # REPEAT between its labels: up to the REPEAT block (002 L21385-21387)
                 end = self.index - 1
         else:
@@ -527,9 +533,9 @@ class BlockRun:
         if stmt.passes is not None:
             passes = _whole(self.eval(stmt.passes), "P")
             if not 1 <= passes <= MAX_PASSES:
-                raise NcAlarmError(14013)
+                raise NcAlarmError(PASS_COUNT_NOT_ALLOWED)
         if end < start:
-            raise NcAlarmError(14080, stmt.start)
+            raise NcAlarmError(JUMP_TARGET_NOT_FOUND, stmt.start)
         self.frame.repeats.append((end, start, passes, self.index + 1))
         self.frame.pc = start
 
@@ -551,10 +557,10 @@ class BlockRun:
         found = interp.programs.read_program(call.name) or interp.read_cycle(call.name)
         if found is None:
             if call.args is None and not call.name[:1] == "L" and self.passes is None:
-                raise NcAlarmError(12550, call.name)
-            raise NcAlarmError(14011, call.name)
+                raise NcAlarmError(NAME_NOT_DEFINED, call.name)
+            raise NcAlarmError(PROGRAM_NOT_FOUND, call.name)
         if len(state.frames) >= MAX_PROGRAM_LEVELS:
-            raise NcAlarmError(14012)
+            raise NcAlarmError(SUBPROGRAM_LEVEL_EXCEEDED)
         name, text = found
         program = _program_cache(interp, name, text)
         frame = Frame(program=program, passes_left=(self.passes or 1) - 1)
@@ -575,7 +581,7 @@ class BlockRun:
         params = program.proc.params if program.proc is not None else ()
         args = call.args or ()
         if len(args) > len(params):
-            raise NcAlarmError(12340, call.name)
+            raise NcAlarmError(TOO_MANY_CALL_PARAMETERS, call.name)
         frame.given_params = tuple(i < len(args) and args[i] is not None for i in range(len(params)))
         for position, param in enumerate(params):
             name = param.name or f"_P{position}"
@@ -597,36 +603,36 @@ class BlockRun:
         if isinstance(arg, ast.Name):
             binding = interp.lookup(arg.name)
             if binding is None:
-                raise NcAlarmError(12320, arg.name)
+                raise NcAlarmError(PARAMETER_NOT_A_VARIABLE, arg.name)
             return binding
         if isinstance(arg, ast.Index):
             indices = tuple(self._index_value(i) for i in arg.indices)
             if arg.name == "R":
                 if len(indices) != 1:
-                    raise NcAlarmError(17020, "R")
+                    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "R")
                 return RRef(interp.r_index(indices[0]))
             binding = interp.lookup(arg.name)
             if isinstance(binding, Cell) and binding.dims:
                 binding.offset(indices)  # validates
                 return ElemRef(binding, indices)
-            raise NcAlarmError(12320, arg.name)
-        raise NcAlarmError(12320, callee)
+            raise NcAlarmError(PARAMETER_NOT_A_VARIABLE, arg.name)
+        raise NcAlarmError(PARAMETER_NOT_A_VARIABLE, callee)
 
     # ------------------------------------------------------------ builtins
     def _builtin(self, stmt: ast.Builtin) -> None:
         name = stmt.name
         if name == "MSG":
             if len(stmt.args) > 1:
-                raise NcAlarmError(14020, "MSG")
+                raise NcAlarmError(WRONG_CALL_ARGUMENTS, "MSG")
             text = to_string(self.eval(stmt.args[0])) if stmt.args and stmt.args[0] is not None else ""
             self.interp._state.message = text
             self.early.append(canon.Message(self.source, text))
         elif name == "SETAL":
             if not stmt.args or stmt.args[0] is None:
-                raise NcAlarmError(14020, "SETAL")
+                raise NcAlarmError(WRONG_CALL_ARGUMENTS, "SETAL")
             number = _whole(to_number(self.eval(stmt.args[0]), "SETAL"), "SETAL")
             if not 60000 <= number <= 69999:
-                raise NcAlarmError(14020, "SETAL")
+                raise NcAlarmError(WRONG_CALL_ARGUMENTS, "SETAL")
             params = tuple(to_string(self.eval(a)) for a in stmt.args[1:] if a is not None)
             self.late.append(canon.UserAlarm(self.source, number, params))
         elif name == "STOPRE":
@@ -636,7 +642,7 @@ class BlockRun:
             for arg in stmt.args:
                 number = _whole(to_number(self.eval(arg), "WAITS"), "WAITS") if arg is not None else 1
                 if not 1 <= number <= len(self.interp.machine.spindles):
-                    raise NcAlarmError(12550, f"WAITS({number})")
+                    raise NcAlarmError(NAME_NOT_DEFINED, f"WAITS({number})")
             modal = self.interp.modal
             self.late.append(canon.Dwell(self.source, wait_spindle=True, gcodes=dict(modal.gcodes),
                                          feed=modal.feed))
@@ -647,7 +653,7 @@ class BlockRun:
             # indirect call: CALL "NAME" / CALL <string variable>
             target = to_string(self.eval(stmt.args[0])).strip().upper()  # type: ignore[arg-type]
             if not target or self.call is not None:
-                raise NcAlarmError(14011, target or "CALL")
+                raise NcAlarmError(PROGRAM_NOT_FOUND, target or "CALL")
             self.call = ast.Call(target, ())
         elif name == "GOTOS":
             # back to the start of the program (of this level), with an implicit STOPRE
@@ -687,10 +693,10 @@ def _whole(number: Any, address: str) -> int:
     value = to_number(number, address)
     if isinstance(value, float):
         if not value.is_integer():
-            raise NcAlarmError(12080, address)
+            raise NcAlarmError(SYNTAX_ERROR, address)
         value = int(value)
     if value < 0 or value > 99_999_999:
-        raise NcAlarmError(12160, address)
+        raise NcAlarmError(VALUE_RANGE_EXCEEDED, address)
     return value
 
 

@@ -11,6 +11,10 @@ import math
 import re
 from typing import Any, Callable, Protocol
 
+from nck.alarm_ids import (
+    ARITHMETIC_ERROR, NAME_NOT_DEFINED, NO_VALID_NUMBER, OPERATION_DOES_NOT_FIT_TYPE, STRING_NOT_AN_AXIS,
+    STRING_RESULT_TOO_LONG, SYNTAX_ERROR, WRONG_CALL_ARGUMENTS,
+)
 from nck.errors import NcAlarmError
 from nck.geometry import frame_functions
 from nck.geometry.planes import Plane
@@ -62,7 +66,7 @@ def evaluate(expr: ast.Expr, scope: Scope) -> Any:
         return _unary(expr, scope)  # type: ignore[arg-type]
     if kind is ast.Func:
         return call_function(expr, scope)  # type: ignore[arg-type]
-    raise NcAlarmError(12080, type(expr).__name__)
+    raise NcAlarmError(SYNTAX_ERROR, type(expr).__name__)
 
 
 def _index_value(expr: ast.Expr, scope: Scope) -> Any:
@@ -80,7 +84,7 @@ def _number(value: Any) -> int | float:
 
 def _checked(value: float | int) -> float | int:
     if isinstance(value, float) and not math.isfinite(value):
-        raise NcAlarmError(14051)
+        raise NcAlarmError(ARITHMETIC_ERROR)
     if isinstance(value, int) and not INT_MIN <= value <= INT_MAX:
         return float(value)
     return value
@@ -101,7 +105,7 @@ def _int(value: Any) -> int:
     number = _number(value)
     if isinstance(number, float):
         if not math.isfinite(number) or abs(number) > 2**53:
-            raise NcAlarmError(14051)
+            raise NcAlarmError(ARITHMETIC_ERROR)
         return round_half_away(number)
     return number
 
@@ -115,7 +119,7 @@ def equal(a: Any, b: Any) -> bool:
             return ord(a) == b
         if isinstance(b, str) and len(b) == 1 and isinstance(a, int):
             return ord(b) == a
-        raise NcAlarmError(12150, "==")
+        raise NcAlarmError(OPERATION_DOES_NOT_FIT_TYPE, "==")
     x, y = _number(a), _number(b)
     if isinstance(x, float) or isinstance(y, float):
         return math.isclose(x, y, rel_tol=EQ_REL_TOL, abs_tol=1e-12)
@@ -156,18 +160,18 @@ def _binary(expr: ast.Binary, scope: Scope) -> Any:
     if op == "/":
         divisor = _number(right)
         if divisor == 0:
-            raise NcAlarmError(14051)
+            raise NcAlarmError(ARITHMETIC_ERROR)
         return _checked(float(_number(left)) / divisor)
     if op == "DIV":
         a, b = _int(left), _int(right)
         if b == 0:
-            raise NcAlarmError(14051)
+            raise NcAlarmError(ARITHMETIC_ERROR)
         quotient = abs(a) // abs(b)
         return quotient if (a >= 0) == (b >= 0) else -quotient
     if op == "MOD":
         a_num, b_num = _number(left), _number(right)
         if b_num == 0:
-            raise NcAlarmError(14051)
+            raise NcAlarmError(ARITHMETIC_ERROR)
         result = math.fmod(a_num, b_num)
         if isinstance(a_num, int) and isinstance(b_num, int):
             return int(result)
@@ -188,7 +192,7 @@ def _binary(expr: ast.Binary, scope: Scope) -> Any:
         return _int(left) ^ _int(right)
     if op == "<<":
         return to_string(left) + to_string(right)
-    raise NcAlarmError(12080, op)
+    raise NcAlarmError(SYNTAX_ERROR, op)
 
 
 # ----------------------------------------------------------------------------- functions
@@ -199,32 +203,32 @@ def _deg(f: Callable[[float], float]) -> Callable[[float], float]:
 def _arc(f: Callable[[float], float]) -> Callable[[float], float]:
     def wrapped(x: float) -> float:
         if not -1.0 - 1e-12 <= x <= 1.0 + 1e-12:
-            raise NcAlarmError(14051)
+            raise NcAlarmError(ARITHMETIC_ERROR)
         return math.degrees(f(max(-1.0, min(1.0, x))))
     return wrapped
 
 
 def _sqrt(x: float) -> float:
     if x < 0:
-        raise NcAlarmError(14051)
+        raise NcAlarmError(ARITHMETIC_ERROR)
     return math.sqrt(x)
 
 
 def _ln(x: float) -> float:
     if x <= 0:
-        raise NcAlarmError(14051)
+        raise NcAlarmError(ARITHMETIC_ERROR)
     return math.log(x)
 
 
 def _tan(x: float) -> float:
     if abs(math.cos(math.radians(x))) < 1e-15:
-        raise NcAlarmError(14051)
+        raise NcAlarmError(ARITHMETIC_ERROR)
     return math.tan(math.radians(x))
 
 
 def _exp(x: float) -> float:
     if x > 709:
-        raise NcAlarmError(14051)
+        raise NcAlarmError(ARITHMETIC_ERROR)
     return math.exp(x)
 
 
@@ -274,13 +278,13 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
     name = expr.name
     args = expr.args
     if any(a is None for a in args):
-        raise NcAlarmError(12080, name)
+        raise NcAlarmError(SYNTAX_ERROR, name)
     if name in ("SET", "REP"):
         # Only meaningful as the whole right side of an array assignment (handled there).
-        raise NcAlarmError(12080, name)
+        raise NcAlarmError(SYNTAX_ERROR, name)
     if name in ("AC", "IC"):
         # Only meaningful as an address value; the interpreter handles that case.
-        raise NcAlarmError(12080, name)
+        raise NcAlarmError(SYNTAX_ERROR, name)
     if name in frame_functions.NAMES:  # CTRANS(X,10), CROT(Z,45), … → FRAME value
         return frame_functions.call(name, [_index_value(a, scope) for a in args],  # type: ignore[arg-type]
                                     frame_functions_length_mm(scope), _active_plane(scope))
@@ -296,7 +300,7 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
         _arity(name, args, 3)
         low, high, value = (float(_number(evaluate(a, scope))) for a in args)  # type: ignore[arg-type]
         if low > high:
-            raise NcAlarmError(14051)
+            raise NcAlarmError(ARITHMETIC_ERROR)
         return min(max(value, low), high)
     if name == "STRLEN":
         _arity(name, args, 1)
@@ -311,7 +315,7 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
         try:
             value = float(text)
         except ValueError:
-            raise NcAlarmError(14098, text[:20]) from None
+            raise NcAlarmError(NO_VALID_NUMBER, text[:20]) from None
         return _checked(value)
     if name == "ISNUMBER":
         _arity(name, args, 1)
@@ -321,12 +325,12 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
             return False
     if name == "SUBSTR":
         if len(args) not in (2, 3):
-            raise NcAlarmError(14020, name)
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
         text = to_string(evaluate(args[0], scope))  # type: ignore[arg-type]
         start = _int(evaluate(args[1], scope))  # type: ignore[arg-type]
         length = _int(evaluate(args[2], scope)) if len(args) == 3 else len(text)  # type: ignore[arg-type]
         if start < 0 or length < 0:
-            raise NcAlarmError(14020, name)
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
         return text[start:start + length]
     if name == "INDEX":
         _arity(name, args, 2)
@@ -337,7 +341,7 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
         _arity(name, args, 1)
         text = to_string(evaluate(args[0], scope)).upper()  # type: ignore[arg-type]
         if not scope.is_axis(text):
-            raise NcAlarmError(14097, text[:20])
+            raise NcAlarmError(STRING_NOT_AN_AXIS, text[:20])
         return Axis(text)
     if name == "AXSTRING":
         _arity(name, args, 1)
@@ -352,10 +356,10 @@ def call_function(expr: ast.Func, scope: Scope) -> Any:
         return 1 <= index <= len(axes)
     if name == "SPRINT":
         if not args:
-            raise NcAlarmError(14020, name)
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
         return sprint(to_string(evaluate(args[0], scope)),  # type: ignore[arg-type]
                       [evaluate(a, scope) for a in args[1:]])  # type: ignore[arg-type]
-    raise NcAlarmError(12550, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, name)
 
 
 _FORMAT = re.compile(r"%(\.(\d+))?([DFSBEXRC%])")
@@ -369,7 +373,7 @@ def sprint(template: str, values: list[Any]) -> str:
 
     def take() -> Any:
         if not remaining:
-            raise NcAlarmError(14020, "SPRINT")
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, "SPRINT")
         return remaining.pop(0)
 
     def replace(match: re.Match) -> str:
@@ -377,7 +381,7 @@ def sprint(template: str, values: list[Any]) -> str:
         if code == "%":
             return "%"
         if digits is not None and (len(digits) > 3 or int(digits) > SPRINT_MAX_CHARS):
-            raise NcAlarmError(14099, "SPRINT")  # the result could not fit: refused before it is built
+            raise NcAlarmError(STRING_RESULT_TOO_LONG, "SPRINT")  # the result could not fit: refused before it is built
         value = take()
         if code == "D":
             return str(_int(value))
@@ -395,15 +399,15 @@ def sprint(template: str, values: list[Any]) -> str:
 
     text = _FORMAT.sub(replace, template)
     if remaining:
-        raise NcAlarmError(14020, "SPRINT")
+        raise NcAlarmError(WRONG_CALL_ARGUMENTS, "SPRINT")
     if len(text) > SPRINT_MAX_CHARS:
-        raise NcAlarmError(14099, "SPRINT")
+        raise NcAlarmError(STRING_RESULT_TOO_LONG, "SPRINT")
     return text
 
 
 def _arity(name: str, args: tuple, count: int) -> None:
     if len(args) != count:
-        raise NcAlarmError(14020, name)
+        raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
 
 
 def _active_plane(scope: Scope) -> Plane | None:

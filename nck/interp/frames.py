@@ -14,6 +14,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from nck.alarm_ids import (
+    DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED, OPERATION_DOES_NOT_FIT_TYPE,
+)
 from nck.errors import NcAlarmError
 from nck.interp import sysvars
 from nck.interp.program import Program
@@ -91,20 +94,20 @@ class VariableScope:
             return sysvars.read(interp, name, ())  # type: ignore[arg-type]
         if interp.is_axis(name):
             return Axis(name)
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
 
     def read_index(self, name: str, indices: tuple[Any, ...]) -> Any:
         interp = self.interp
         if name == "R":
             if len(indices) != 1:
-                raise NcAlarmError(17020, "R")
+                raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "R")
             return self.read_r(indices[0])
         binding = interp.lookup(name)
         if binding is not None:
             return read_binding(interp, binding, indices)
         if name.startswith("$"):
             return sysvars.read(interp, name, indices)  # type: ignore[arg-type]
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
 
     def is_axis(self, name: str) -> bool:
         return self.interp.is_axis(name)
@@ -126,27 +129,27 @@ def read_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...]
     """Read through a variable binding."""
     if isinstance(binding, Cell):
         if binding.dims and not indices:
-            raise NcAlarmError(12150, binding.name)
+            raise NcAlarmError(OPERATION_DOES_NOT_FIT_TYPE, binding.name)
         return binding.get(indices)
     if isinstance(binding, RRef):
         if indices:
-            raise NcAlarmError(17020, f"R{binding.index}")
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, f"R{binding.index}")
         return interp.data.r[binding.index]
     if isinstance(binding, ElemRef):
         if indices:
-            raise NcAlarmError(17020, binding.cell.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.cell.name)
         return binding.cell.get(binding.indices)
     check_gud_access(interp, binding.name, "read")
     value = interp.data.gud[binding.name]
     if isinstance(value, list):
         if len(indices) != 1:
-            raise NcAlarmError(17020, binding.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.name)
         i = int(to_number(indices[0], binding.name))
         if not 0 <= i < len(value):
-            raise NcAlarmError(17020, binding.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.name)
         return value[i]
     if indices:
-        raise NcAlarmError(17020, binding.name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.name)
     return value
 
 
@@ -154,18 +157,18 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
     """Write through a variable binding (converted to the variable's type)."""
     if isinstance(binding, Cell):
         if binding.dims and not indices:
-            raise NcAlarmError(12150, binding.name)
+            raise NcAlarmError(OPERATION_DOES_NOT_FIT_TYPE, binding.name)
         journal_cell(interp, binding, indices)
         binding.set(value, indices)
         return
     if isinstance(binding, RRef):
         if indices:
-            raise NcAlarmError(17020, f"R{binding.index}")
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, f"R{binding.index}")
         interp.write_r(binding.index, value)
         return
     if isinstance(binding, ElemRef):
         if indices:
-            raise NcAlarmError(17020, binding.cell.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.cell.name)
         journal_cell(interp, binding.cell, binding.indices)
         binding.cell.set(value, binding.indices)
         return
@@ -173,16 +176,16 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
     current = interp.data.gud[binding.name]
     if isinstance(current, list):
         if len(indices) != 1:
-            raise NcAlarmError(17020, binding.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.name)
         i = int(to_number(indices[0], binding.name))
         if not 0 <= i < len(current):
-            raise NcAlarmError(17020, binding.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.name)
         new = list(current)
         new[i] = _like(current[i], value, binding.name)
         interp.write_gud(binding.name, new)
     else:
         if indices:
-            raise NcAlarmError(17020, binding.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, binding.name)
         interp.write_gud(binding.name, _like(current, value, binding.name))
 
 
@@ -192,7 +195,7 @@ def check_gud_access(interp: Interpreter, name: str, kind: str) -> None:
     (The manuals name no separate alarm for a read-protected variable; 17070 says "read".)"""
     needed = interp.data.gud_access.get(name, {}).get(kind)
     if needed is not None and interp.access_level() > needed:
-        raise NcAlarmError(17070, name if kind == "write" else f"{name} (read)")
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name if kind == "write" else f"{name} (read)")
 
 
 def _like(current: Any, value: Any, name: str) -> Any:

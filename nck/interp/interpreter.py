@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
 from nck import canon
-from nck.alarm_ids import MEMORY_CAPACITY_REACHED
+from nck.alarm_ids import BLOCK_TOO_COMPLEX, ILLEGAL_ARRAY_INDEX_1, MEMORY_CAPACITY_REACHED, PROGRAM_NOT_FOUND
 from nck.errors import NcAlarmError
 from nck.access import LEVEL_FEWEST_RIGHTS
 from nck.interp import data_writes
@@ -144,7 +144,7 @@ class Interpreter:
         """Load main program ``program_name`` (alarm 14011 if it does not exist)."""
         found = self.programs.read_program(program_name)
         if found is None:
-            raise NcAlarmError(14011, program_name)
+            raise NcAlarmError(PROGRAM_NOT_FOUND, program_name)
         name, text = found
         self.start_text(name, text)
 
@@ -260,7 +260,7 @@ class Interpreter:
             raise self._locate(alarm)
         except RecursionError:
             self._rollback(saved)
-            raise self._locate(NcAlarmError(12540)) from None
+            raise self._locate(NcAlarmError(BLOCK_TOO_COMPLEX)) from None
         self._state.blocks += 1
         return result
 
@@ -524,7 +524,7 @@ class Interpreter:
         number = to_number(index, "R")
         i = int(number)
         if i != number or not 0 <= i < len(self.data.r):
-            raise NcAlarmError(17020, f"R{number}")
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, f"R{number}")
         return i
 
     def write_tool(self, tool: int, edge: int, param: int, value: float) -> None:

@@ -34,6 +34,10 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from nck.alarm_ids import (
+    ADDRESS_PROGRAMMED_TWICE, CHAMFER_OR_ROUNDING_NEGATIVE, CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION,
+    NAME_NOT_DEFINED, POSITION_OUTSIDE_MODULO_RANGE, SYNTAX_ERROR, VALUE_RANGE_EXCEEDED,
+)
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry import trc_canon
@@ -148,9 +152,9 @@ class MotionBuilder:
                 continue
             outputs.append(canon.AuxFunction(src, "M", float(value), ext))
             modal.aux["M"] = str(value)
-        for ext, value in words.h_codes:
-            outputs.append(canon.AuxFunction(src, "H", float(value), ext))
-            modal.aux["H"] = _fmt(value)
+        for ext, h_value in words.h_codes:
+            outputs.append(canon.AuxFunction(src, "H", float(h_value), ext))
+            modal.aux["H"] = _fmt(h_value)
         earlier, own = self._geometry(words, modal, geo, src)
         out = self._released(earlier, modal, geo)
         if not own and (geo.waiting or self._holding(modal, geo)):
@@ -196,11 +200,11 @@ class MotionBuilder:
             geo.contour_first = (float(words.words["ANG"]), self.path.plane(modal).code, words)
             return [], []
         if any(k in words.words for k in ("CHF", "CHR", "RND")):
-            raise NcAlarmError(10882)
+            raise NcAlarmError(CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION)
         if "RNDM" in words.words:
             value = float(words.words["RNDM"]) * self.path.units(modal).position_mm
             if value < 0:
-                raise NcAlarmError(16500)
+                raise NcAlarmError(CHAMFER_OR_ROUNDING_NEGATIVE)
             geo.rndm_mm = value
             return [], []
         released = list(trc_canon.process([], modal, self.path, self.data, self.machine, src))
@@ -303,7 +307,7 @@ class MotionBuilder:
             if key in words.words:
                 value = float(words.words[key]) * self.path.units(modal).position_mm
                 if value < 0:
-                    raise NcAlarmError(16500)
+                    raise NcAlarmError(CHAMFER_OR_ROUNDING_NEGATIVE)
                 setattr(geo, attribute, value)
 
     def flush(self, modal: ModalState) -> list[canon.CanonCommand]:
@@ -340,14 +344,14 @@ class MotionBuilder:
         seconds = words.words.get("F")
         revolutions = words.words.get("S")
         if seconds is None and revolutions is None:
-            raise NcAlarmError(12080, "G4")
+            raise NcAlarmError(SYNTAX_ERROR, "G4")
         if (self.path.has_path_words(words, modal) or words.m_codes or words.h_codes
                 or "T" in words.words or "D" in words.words):
             # No other functions in a dwell block (001 L6406-6408); they were dropped silently.
-            raise NcAlarmError(12080, "G4")
+            raise NcAlarmError(SYNTAX_ERROR, "G4")
         for value in (seconds, revolutions):
             if value is not None and value < 0:
-                raise NcAlarmError(12160, "G4")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, "G4")
         dwell = canon.Dwell(words.source, seconds=seconds, revolutions=revolutions,
                             gcodes=dict(modal.gcodes), feed=modal.feed)
         if geo.waiting or self._holding(modal, geo):  # the dwell comes after the motion held back
@@ -388,20 +392,20 @@ class MotionBuilder:
                 # 002 L7433-7450: 0 < factor ≤ 200 % of the axis' maximum acceleration, modal.
                 axis = key[4:-1]
                 if axis not in self.machine.path_axes:
-                    raise NcAlarmError(12550, axis)
+                    raise NcAlarmError(NAME_NOT_DEFINED, axis)
                 if not 0.0 < value <= 200.0:
-                    raise NcAlarmError(12160, "ACC")
+                    raise NcAlarmError(VALUE_RANGE_EXCEEDED, "ACC")
                 if value == 100.0:
                     geo.accel_pct.pop(axis, None)
                 else:
                     geo.accel_pct[axis] = float(value)
             elif key == "ACC":
-                raise NcAlarmError(12080, "ACC")  # the axis is required: ACC[X]=…
+                raise NcAlarmError(SYNTAX_ERROR, "ACC")  # the axis is required: ACC[X]=…
         if "OVR" in words.words:
             # 002 L56515-56536: 0 … 200 %, multiplied with the override of the panel.
             value = words.words["OVR"]
             if not 0.0 <= value <= 200.0:
-                raise NcAlarmError(12160, "OVR")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, "OVR")
             geo.feed_override_pct = float(value)
 
     def _feed_info(self, modal: ModalState, geo: GeometryState) -> dict[str, Any]:
@@ -451,7 +455,7 @@ class MotionBuilder:
             return
         angle = float(words.words["SF"])
         if not 0.0 <= angle < 360.0:
-            raise NcAlarmError(12160, "SF")
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, "SF")
         self.data.setting_data[SD_THREAD_START_ANGLE] = angle
 
     # ------------------------------------------------------------------ tool
@@ -461,7 +465,7 @@ class MotionBuilder:
         if "T" in words.words:
             tool = int(words.words["T"])
             if tool < 0:
-                raise NcAlarmError(12160, "T")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, "T")
             direct = not self.tool_change_with_m6
             if direct:
                 self._require_tool_data(tool)  # MD22550 = 0: stop at the T block (002 L58150-58153)
@@ -477,7 +481,7 @@ class MotionBuilder:
         if "D" in words.words:
             edge = int(words.words["D"])
             if edge < 0:
-                raise NcAlarmError(12160, "D")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, "D")
             modal.edge = edge
             modal.wear_sign = self.path.wear_sign()
             self.path.tool_vector(modal)  # a D that does not exist for the tool: alarm 17180
@@ -515,9 +519,9 @@ class MotionBuilder:
         modes: dict[int, str] = {}
         if "S" in words.words:
             speeds[1] = words.words["S"]
-        for (address, ext), value in words.extended.items():
+        for (address, number), value in words.extended.items():
             if address == "S":
-                speeds[ext or 1] = value
+                speeds[number or 1] = value
         if words.gcodes.get(3) in ("G25", "G26"):
             self._speed_limits(words.gcodes[3], speeds)
             speeds = {}
@@ -525,7 +529,7 @@ class MotionBuilder:
             if value in SPINDLE_M:
                 spindle = ext or 1
                 if spindle in states:
-                    raise NcAlarmError(12000, "M")
+                    raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, "M")
                 states[spindle] = SPINDLE_M[value]
                 if value == 19:
                     positions[spindle] = self._spindle_setting("SD43240", spindle) % 360.0
@@ -548,7 +552,7 @@ class MotionBuilder:
                 raise NcAlarmError(ALARM_NO_TRANSVERSE_AXIS)
             if 1 in speeds:
                 if speeds[1] < 0:
-                    raise NcAlarmError(12160, "S")
+                    raise NcAlarmError(VALUE_RANGE_EXCEEDED, "S")
                 geo.cutting_speed_m_min = speeds.pop(1)
             elif geo.cutting_speed_m_min <= 0:
                 raise NcAlarmError(ALARM_G96_WITHOUT_S)
@@ -557,7 +561,7 @@ class MotionBuilder:
             speed = speeds.get(spindle)
             state = states.get(spindle)
             if speed is not None and speed < 0:
-                raise NcAlarmError(12160, "S")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, "S")
             if spindle == 1:
                 if speed is not None:
                     modal.spindle_speed_rpm = speed
@@ -585,7 +589,7 @@ class MotionBuilder:
         if mode == "IC":
             return (modal.spindle_position_deg + value) % 360.0
         if not 0.0 <= value < 360.0:
-            raise NcAlarmError(16830, "SPOS")
+            raise NcAlarmError(POSITION_OUTSIDE_MODULO_RANGE, "SPOS")
         return value
     def _speed_limits(self, code: str, speeds: dict[int, float]) -> None:
         """``G25 S…`` / ``G26 S…``: the minimum / maximum speed of a spindle (002 L54093-54107),
@@ -595,9 +599,9 @@ class MotionBuilder:
         table = dict(table) if isinstance(table, dict) else {}
         for number, rpm in speeds.items():
             if rpm < 0:
-                raise NcAlarmError(12160, "S")
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, "S")
             if not 1 <= number <= len(self.machine.spindles):
-                raise NcAlarmError(12550, f"S{number}")  # no such spindle
+                raise NcAlarmError(NAME_NOT_DEFINED, f"S{number}")  # no such spindle
             table[self.machine.spindles[number - 1]] = float(rpm)
         self.data.setting_data[key] = table
 

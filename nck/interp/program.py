@@ -20,6 +20,10 @@ from array import array
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
+from nck.alarm_ids import (
+    CONTROL_STRUCTURES_NOT_NESTED, CONTROL_STRUCTURES_TOO_DEEP, DEFINITION_AFTER_STATEMENT,
+    G_FUNCTION_UNKNOWN, G_GROUP_PROGRAMMED_TWICE, JUMP_TARGET_NOT_FOUND, LABEL_DEFINED_TWICE,
+)
 from nck.errors import NcAlarmError
 from nck.lang.lines import CACHE_LINES, CHECKPOINT_LINES, Line, LineSequence, TextLines, remember_bounded
 from nck.lang import ast
@@ -315,7 +319,7 @@ class _Indexer:
         if block.label:
             self.labels_all.setdefault(block.label, []).append(index)
             if block.label in program.labels:
-                program.structure_errors[index] = NcAlarmError(12450, block.label).located(
+                program.structure_errors[index] = NcAlarmError(LABEL_DEFINED_TWICE, block.label).located(
                     program.name, line_number, block.number)
             else:
                 program.labels[block.label] = index
@@ -340,7 +344,7 @@ class _Indexer:
                 if self.first_code is None or index <= self.first_code:
                     program.proc = stmt
                 else:
-                    program.structure_errors[index] = NcAlarmError(14500).located(
+                    program.structure_errors[index] = NcAlarmError(DEFINITION_AFTER_STATEMENT).located(
                         program.name, line_number, block.number)
             if not isinstance(stmt, ast.Control):
                 continue
@@ -364,17 +368,17 @@ class _Indexer:
         if kind in _OPENERS:
             stack.append((kind, index))
             if len(stack) > MAX_STRUCTURE_DEPTH:
-                program.structure_errors[index] = NcAlarmError(12641).located(
+                program.structure_errors[index] = NcAlarmError(CONTROL_STRUCTURES_TOO_DEEP).located(
                     program.name, line_number, block.number)
         elif kind == "ELSE":
             if not stack or stack[-1][0] != "IF" or stack[-1][1] in program.else_of:
-                program.structure_errors[index] = NcAlarmError(12640).located(
+                program.structure_errors[index] = NcAlarmError(CONTROL_STRUCTURES_NOT_NESTED).located(
                     program.name, line_number, block.number)
             else:
                 program.else_of[stack[-1][1]] = index
         elif kind in _CLOSERS:
             if not stack or stack[-1][0] != _CLOSERS[kind]:
-                program.structure_errors[index] = NcAlarmError(12640).located(
+                program.structure_errors[index] = NcAlarmError(CONTROL_STRUCTURES_NOT_NESTED).located(
                     program.name, line_number, block.number)
                 return
             _, opener = stack.pop()
@@ -388,7 +392,7 @@ class _Indexer:
         program = self.program
         for _kind, index in self.stack:
             line = program.lines[index]
-            program.structure_errors.setdefault(index, NcAlarmError(12640).located(
+            program.structure_errors.setdefault(index, NcAlarmError(CONTROL_STRUCTURES_NOT_NESTED).located(
                 program.name, line.number, line.block.number if line.block else None))
         object.__setattr__(program, "_labels_all", self.labels_all)
         self._check_jumps()
@@ -411,8 +415,8 @@ class _Indexer:
                 else:
                     found = program.find_label(goto.label or "", index, direction)
                 if found is None:
-                    program.jump_warnings.setdefault(index, NcAlarmError(14080, goto.target_text).located(
-                        program.name, line_number, number))
+                    warning = NcAlarmError(JUMP_TARGET_NOT_FOUND, goto.target_text)
+                    program.jump_warnings.setdefault(index, warning.located(program.name, line_number, number))
 
 
 def _check_gcodes(block: ast.Block) -> NcAlarmError | None:
@@ -423,8 +427,8 @@ def _check_gcodes(block: ast.Block) -> NcAlarmError | None:
         if isinstance(stmt, ast.GWord):
             number = table.group_of.get(stmt.code)
             if number is None:
-                return NcAlarmError(12470, stmt.code)
+                return NcAlarmError(G_FUNCTION_UNKNOWN, stmt.code)
             if seen.get(number, stmt.code) != stmt.code:
-                return NcAlarmError(12060, number)
+                return NcAlarmError(G_GROUP_PROGRAMMED_TWICE, number)
             seen[number] = stmt.code
     return None

@@ -24,6 +24,9 @@ from __future__ import annotations
 import re
 from typing import Any, Protocol
 
+from nck.alarm_ids import (
+    DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, ILLEGAL_ARRAY_INDEX_2, ILLEGAL_AXIS_INDEX, NAME_NOT_DEFINED,
+)
 from nck.errors import NcAlarmError
 from nck.geometry import frame_vars
 from nck.interp.modal import ModalState
@@ -100,10 +103,10 @@ _AXN = re.compile(r"^\$P_AXN([1-3])$")
 
 def _axis_arg(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> str:
     if len(indices) != 1:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     axis = indices[0]
     if not isinstance(axis, str) or axis not in ctx.machine.path_axes:
-        raise NcAlarmError(17040 if not isinstance(axis, str) else 12550, name)
+        raise NcAlarmError(ILLEGAL_AXIS_INDEX if not isinstance(axis, str) else NAME_NOT_DEFINED, name)
     return str(axis)
 
 
@@ -133,10 +136,10 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
         number = to_number(indices[0], name) if len(indices) == 1 else 0
         given = ctx.parameter_given(int(number)) if number == int(number) else None
         if given is None:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         return given
     if indices and name not in ("$P_GG", "$P_S", "$P_SDIR") and not _TC_DP.match(name) and not _MD.match(name):
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
     if name == "$P_F":
         return float(modal.feed)
     if name == "$P_S":
@@ -154,7 +157,7 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
         axes = ctx.machine.path_axes
         index = int(match.group(1)) - 1
         if index >= len(axes):
-            raise NcAlarmError(12550, name)
+            raise NcAlarmError(NAME_NOT_DEFINED, name)
         return Axis(axes[index])
     if name == "$P_SEARCH":
         return ctx.flag("search")
@@ -174,7 +177,7 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     match = _MD.match(name)
     if match:
         return _machine_data(ctx, name, match, indices)
-    raise NcAlarmError(12550, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, name)
 
 
 def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> None:
@@ -197,22 +200,22 @@ def write(ctx: SysContext, name: str, indices: tuple[Any, ...], value: Any) -> N
         ctx.write_setting_data(name.lstrip("$"), indices, value)
         return
     if md or name.startswith("$P_") or name.startswith("$AA_"):
-        raise NcAlarmError(17070, name)
-    raise NcAlarmError(12550, name)
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, name)
 
 
 def _tool_address(name: str, match: re.Match, indices: tuple[Any, ...]) -> tuple[int, int, int]:
     param = int(match.group(1))
     if not 1 <= param <= TOOL_PARAM_COUNT:
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
     if len(indices) != 2:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     tool_raw, edge_raw = (to_number(i, name) for i in indices)
     tool, edge = int(tool_raw), int(edge_raw)
     if tool != tool_raw or tool < 1 or tool > 99_999_999:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     if edge != edge_raw or edge < 1 or edge > 12:
-        raise NcAlarmError(17030, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_2, name)
     return param, tool, edge
 
 
@@ -220,12 +223,12 @@ def _gg(ctx: SysContext, indices: tuple[Any, ...]) -> int:
     from nck.lang.gcodes import gtable
 
     if len(indices) != 1:
-        raise NcAlarmError(17020, "$P_GG")
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "$P_GG")
     group_no = int(to_number(indices[0], "$P_GG"))
     table = gtable()
     group = table.groups.get(group_no)
     if group is None:
-        raise NcAlarmError(17020, "$P_GG")
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "$P_GG")
     code = ctx.modal.gcodes.get(group_no)
     return group.position(code) if code in group.members else 0
 
@@ -260,12 +263,12 @@ def _from_catalog(ctx: SysContext, name: str, definition: Any, indices: tuple[An
     rest = list(indices)
     if definition.per_axis:
         if not rest or not isinstance(rest[-1], str):
-            raise NcAlarmError(17040, name)
+            raise NcAlarmError(ILLEGAL_AXIS_INDEX, name)
         axis = str(rest.pop())
         if axis not in [a.name for a in ctx.machine.axes]:
-            raise NcAlarmError(17040, name)
+            raise NcAlarmError(ILLEGAL_AXIS_INDEX, name)
     if any(isinstance(i, str) for i in rest) or len(rest) > 1:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     index = int(to_number(rest[0], name)) if rest else None
     sources: list[Any] = [ctx.machine.md]
     if definition.kind == "sd":
@@ -285,13 +288,13 @@ def _from_catalog(ctx: SysContext, name: str, definition: Any, indices: tuple[An
         value = value.get(axis, definition.default)
     if isinstance(value, list):
         if index is None:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         if not 0 <= index < max(len(value), definition.array or 0):
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         return value[index] if index < len(value) else value[-1]
     if index is not None and definition.array:
         if not 0 <= index < definition.array:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return value
 
 
@@ -309,25 +312,25 @@ def _machine_data(ctx: SysContext, name: str, match: re.Match, indices: tuple[An
     index = None
     if scope == "A":
         if len(indices) != 1 or not isinstance(indices[0], str):
-            raise NcAlarmError(17040, name)
+            raise NcAlarmError(ILLEGAL_AXIS_INDEX, name)
         axis = str(indices[0])
         if axis not in [a.name for a in ctx.machine.axes]:
-            raise NcAlarmError(17040, name)
+            raise NcAlarmError(ILLEGAL_AXIS_INDEX, name)
     elif indices:
         if len(indices) != 1:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         index = int(to_number(indices[0], name))
     for key in keys:
         if key in ctx.machine.md:
             value = ctx.machine.md_value(key, axis)
             if isinstance(value, list):
                 if index is None or not 0 <= index < len(value):
-                    raise NcAlarmError(17020, name)
+                    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
                 return value[index]
             if value is None:
-                raise NcAlarmError(17040, name)
+                raise NcAlarmError(ILLEGAL_AXIS_INDEX, name)
             return value
     defaults = {28050: 100, 11120: 0, 22550: 0}  # catalogue defaults of data the file may omit
     if number in defaults and index is None:
         return defaults[number]
-    raise NcAlarmError(12550, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, name)

@@ -13,6 +13,10 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
+from nck.alarm_ids import (
+    ILLEGAL_ARRAY_INDEX_1, ILLEGAL_ARRAY_INDEX_2, NAME_NOT_DEFINED, STRING_TOO_LONG,
+    TYPE_CONVERSION_IMPOSSIBLE, VALUE_ABOVE_UPPER_LIMIT, VALUE_BELOW_LOWER_LIMIT, VALUE_RANGE_EXCEEDED,
+)
 from nck.errors import NcAlarmError
 
 INT_MIN = -(2**31)
@@ -76,7 +80,7 @@ def to_number(value: Any, what: str = "") -> int | float:
         return int(value)
     if isinstance(value, (int, float)):
         return value
-    raise NcAlarmError(14096, what or _show(value))
+    raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, what or _show(value))
 
 
 def to_bool(value: Any) -> bool:
@@ -87,7 +91,7 @@ def to_bool(value: Any) -> bool:
         return value != 0
     if isinstance(value, str):
         return value != ""
-    raise NcAlarmError(14096, _show(value))
+    raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, _show(value))
 
 
 def to_string(value: Any) -> str:
@@ -103,7 +107,7 @@ def to_string(value: Any) -> str:
         return text if text not in ("-0", "") else "0"
     if isinstance(value, str):
         return value
-    raise NcAlarmError(14096, _show(value))
+    raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, _show(value))
 
 
 def _show(value: Any) -> str:
@@ -116,44 +120,44 @@ def convert(value: Any, dtype: str, name: str = "", string_len: int | None = Non
     if dtype == "REAL":
         number = float(to_number(value, name))
         if not math.isfinite(number):
-            raise NcAlarmError(12160, name)
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, name)
         return number
     if dtype == "INT":
         number = to_number(value, name)
         if isinstance(number, float):
             if not math.isfinite(number):
-                raise NcAlarmError(12160, name)
+                raise NcAlarmError(VALUE_RANGE_EXCEEDED, name)
             number = round_half_away(number)
         if not INT_MIN <= number <= INT_MAX:
-            raise NcAlarmError(12160, name)
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, name)
         return int(number)
     if dtype == "BOOL":
         return to_bool(value)
     if dtype == "CHAR":
         if isinstance(value, str) and not isinstance(value, Axis):
             if len(value) != 1:
-                raise NcAlarmError(14096, name)
+                raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, name)
             value = ord(value)
         number = to_number(value, name)
         number = round_half_away(number) if isinstance(number, float) else number
         if not 0 <= number <= 255:
-            raise NcAlarmError(12160, name)
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, name)
         return int(number)
     if dtype == "STRING":
         text = to_string(value)
         limit = string_len or STRING_MAX
         if len(text) > limit:
-            raise NcAlarmError(12210, name)
+            raise NcAlarmError(STRING_TOO_LONG, name)
         return text
     if dtype == "AXIS":
         if isinstance(value, str):
             return Axis(value)
-        raise NcAlarmError(14096, name)
+        raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, name)
     if dtype == "FRAME":
         if value is None or isinstance(value, FrameValue):
             return value
-        raise NcAlarmError(14096, name)
-    raise NcAlarmError(12550, dtype)
+        raise NcAlarmError(TYPE_CONVERSION_IMPOSSIBLE, name)
+    raise NcAlarmError(NAME_NOT_DEFINED, dtype)
 
 
 @dataclass
@@ -191,12 +195,12 @@ class Cell:
     def offset(self, indices: tuple[Any, ...]) -> int:
         """Flat position of an element; alarms 17020/17030 for bad indices."""
         if len(indices) != len(self.dims):
-            raise NcAlarmError(17020 if not self.dims else 17030, self.name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1 if not self.dims else ILLEGAL_ARRAY_INDEX_2, self.name)
         flat = 0
         for position, (raw, size) in enumerate(zip(indices, self.dims)):
             index = convert(raw, "INT", self.name)
             if not 0 <= index < size:
-                raise NcAlarmError(17020 if position == 0 else 17030, self.name)
+                raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1 if position == 0 else ILLEGAL_ARRAY_INDEX_2, self.name)
             flat = flat * size + index
         return flat
 
@@ -204,7 +208,7 @@ class Cell:
         """Read the scalar or one element."""
         if not self.dims:
             if indices:
-                raise NcAlarmError(17020, self.name)
+                raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, self.name)
             return self.value
         return self.value[self.offset(indices)]
 
@@ -213,12 +217,12 @@ class Cell:
         converted = convert(value, self.dtype, self.name, self.string_len)
         if isinstance(converted, (int, float)) and not isinstance(converted, bool):
             if self.lower is not None and converted < self.lower:
-                raise NcAlarmError(17080, self.name)
+                raise NcAlarmError(VALUE_BELOW_LOWER_LIMIT, self.name)
             if self.upper is not None and converted > self.upper:
-                raise NcAlarmError(17090, self.name)
+                raise NcAlarmError(VALUE_ABOVE_UPPER_LIMIT, self.name)
         if not self.dims:
             if indices:
-                raise NcAlarmError(17020, self.name)
+                raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, self.name)
             self.value = converted
         else:
             self.value[self.offset(indices)] = converted

@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 from typing import Mapping
 
+from nck.alarm_ids import ILLEGAL_ARRAY_INDEX_1
 from nck.resources import load_toml
 
 ISO_MAIN_GROUPS_M = (1, 2, 3, 5, 6, 7, 8, 14)
@@ -91,7 +92,7 @@ def read_extgg(ctx: object, indices: tuple) -> int:
     from nck.interp.values import to_number
 
     if len(indices) != 1:
-        raise NcAlarmError(17020, "$P_EXTGG")
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "$P_EXTGG")
     modal = ctx.modal  # type: ignore[attr-defined]
     return extgg(modal.gcodes, str(getattr(ctx, "dialect", "iso-m")),
                  int(to_number(indices[0], "$P_EXTGG")), modal.geometry)

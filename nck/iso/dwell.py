@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from nck.alarm_ids import SYNTAX_ERROR, VALUE_RANGE_EXCEEDED
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso.lexing import Word
@@ -28,7 +29,7 @@ def amount(addresses: dict[str, Word], settings: IsoSettings) -> float:
         return addresses["P"].value * INTERNAL_UNIT
     word = addresses.get("X") or addresses.get("U")
     if word is None:
-        raise NcAlarmError(12080, "G04")
+        raise NcAlarmError(SYNTAX_ERROR, "G04")
     if word.has_point or settings.pocket_calculator:
         return word.value
     return word.value * INTERNAL_UNIT
@@ -38,7 +39,7 @@ def block(addresses: dict[str, Word], settings: IsoSettings, per_rev: bool) -> s
     """The Siemens dwell block of a G04 line (``per_rev``: G95 is active)."""
     value = amount(addresses, settings)
     if value < 0:
-        raise NcAlarmError(12160, "G04")
+        raise NcAlarmError(VALUE_RANGE_EXCEEDED, "G04")
     address = "S" if per_rev and settings.function_mask & REVOLUTIONS_BIT else "F"
     return f"G4 {address}{trimmed(value)}"
 

@@ -62,6 +62,7 @@ from typing import Any
 
 import numpy as np
 
+from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.geometry.frames import Frame, as_matrix3, axis_rotation
@@ -199,7 +200,7 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     trans, fine = _base(geo, state)
     if op == "TRANS":  # G52: the programmed axes; G92 (fine) and other axes stay
         if len(args) != 4:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         for i, axis in enumerate(GEO):
             if int(args[0]) & (1 << i):
                 trans[axis] = float(args[1 + i]) * mm
@@ -234,7 +235,7 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
         else:
             state = replace(state, mirror_mm=())
     else:
-        raise NcAlarmError(17070, name)
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name)
     _install(interp, geo, state, trans, fine)
 
 
@@ -297,14 +298,14 @@ def display_codes(geo: Any) -> dict[int, str]:
 
 def _axis(args: list[Any], name: str) -> str:
     if len(args) != 1 or args[0] not in GEO:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return str(args[0])
 
 
 def _rotate(interp: Any, geo: Any, state: IsoFrameState, args: list[Any], angle: float,
             mm: float) -> IsoFrameState:
     if len(args) != 7:
-        raise NcAlarmError(17020, PREFIX + "ROT")
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, PREFIX + "ROT")
     mask = int(args[0])
     programmed = [float(v) * mm for v in args[1:4]]
     vector = np.array([float(v) for v in args[4:7]])
@@ -347,7 +348,7 @@ def _about_vector(unit: np.ndarray, angle_deg: float) -> np.ndarray:
 
 def _scale_factors(interp: Any, args: list[Any], p_value: float) -> tuple[tuple[str, float], ...]:
     if len(args) != 4:
-        raise NcAlarmError(17020, PREFIX + "SCALE")
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, PREFIX + "SCALE")
     machine, sd = interp.machine, interp.data.setting_data
     unit = 0.00001 if int(machine.md_value("MD22910", default=0) or 0) else 0.001
     axial = bool(int(machine.md_value("MD22914", default=0) or 0))

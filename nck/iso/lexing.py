@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from nck.alarm_ids import SKIP_LEVEL_NOT_ALLOWED, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 
 
@@ -74,7 +75,7 @@ def split_words(line: str, active_skip_levels: frozenset[int] | None = None
             digits = match.group(1) if match else ""
             level = int(digits) if digits else 0
             if digits and not 1 <= level <= 9:
-                raise NcAlarmError(14060, level)
+                raise NcAlarmError(SKIP_LEVEL_NOT_ALLOWED, level)
             position += match.end() if match else 1
             if not words and skip is None:
                 skip = level
@@ -90,12 +91,12 @@ def split_words(line: str, active_skip_levels: frozenset[int] | None = None
             continue
         match = _WORD.match(text, position)
         if not match:
-            raise NcAlarmError(12080, text[position:].strip()[:20])
+            raise NcAlarmError(SYNTAX_ERROR, text[position:].strip()[:20])
         letter, number = match.group(1), match.group(2)
         end = match.end()
         # a following letter glued to a name (WAIT, G500X) is a Siemens keyword
         if letter != "G" and position + 1 < len(text) and text[position + 1].isalpha():
-            raise NcAlarmError(12080, text[position:].strip()[:20])
+            raise NcAlarmError(SYNTAX_ERROR, text[position:].strip()[:20])
         words.append(Word(letter, number, float(number), "." in number))
         position = end
     return skip, words

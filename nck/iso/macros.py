@@ -43,6 +43,10 @@ import re
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any, Sequence
 
+from nck.alarm_ids import (
+    ADDRESS_PROGRAMMED_TWICE, DATA_WRITE_PROTECTED, G_FUNCTION_UNKNOWN, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED,
+    PASS_COUNT_NOT_ALLOWED, SYNTAX_ERROR,
+)
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso.lexing import Word
@@ -104,7 +108,7 @@ def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[st
             blocks += translate_block_words(rest, modal, settings)
         return blocks
     if "G67" in gcodes:
-        raise NcAlarmError(12080, "G67")
+        raise NcAlarmError(SYNTAX_ERROR, "G67")
     call = calls[0]
     if _is_g05(call):
         if getattr(getattr(modal, "cycle", None), "code", None) is not None:
@@ -116,18 +120,18 @@ def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[st
 def _whole(word: Word, what: str) -> int:
     """P, L, O, N take integers only."""
     if word.has_point or word.value != int(word.value) or word.value < 0:
-        raise NcAlarmError(12080, f"{what}{word.text}")
+        raise NcAlarmError(SYNTAX_ERROR, f"{what}{word.text}")
     return int(word.value)
 
 
 def _program_name(word: Word | None, settings: IsoSettings, code: str) -> str:
     if word is None:
-        raise NcAlarmError(12080, code)
+        raise NcAlarmError(SYNTAX_ERROR, code)
     number = _whole(word, "P")
     digits = len(word.text.lstrip("+"))
     limit = 8 if settings.function_mask & EIGHT_DIGIT_PROGRAMS_BIT else 4
     if digits > limit:
-        raise NcAlarmError(12080, f"P{word.text}")
+        raise NcAlarmError(SYNTAX_ERROR, f"P{word.text}")
     return f"O{number:04d}"
 
 
@@ -137,7 +141,7 @@ def _passes(words: list[Word]) -> int:
         return 1
     passes = _whole(found[-1], "L")
     if not 1 <= passes <= MAX_PASSES:
-        raise NcAlarmError(14013)
+        raise NcAlarmError(PASS_COUNT_NOT_ALLOWED)
     return passes
 
 
@@ -162,10 +166,10 @@ def argument_writes(words: list[Word], incremental: bool) -> list[str]:
             last = position
             ijk[letter].append((word.value, set_number))
             if len(ijk[letter]) > MAX_IJK:
-                raise NcAlarmError(12080, letter)
+                raise NcAlarmError(SYNTAX_ERROR, letter)
             continue
         if letter in seen:
-            raise NcAlarmError(12000, letter)
+            raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, letter)
         seen.add(letter)
         prog = 1
         if incremental and letter in AXIS_LETTERS:
@@ -192,7 +196,7 @@ def _g65_g66(words: list[Word], call: str, modal: Any, settings: IsoSettings, nu
         if code == call:
             continue
         if code not in SIMPLE_G:
-            raise NcAlarmError(12080, code)
+            raise NcAlarmError(SYNTAX_ERROR, code)
         prefix.append(SIMPLE_G[code])
         if code == "G90":
             modal.absolute = True
@@ -280,7 +284,7 @@ def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: 
     try:
         plain = translate_block_words(words, modal, settings)
     except NcAlarmError as alarm:  # a G code that exists only as a macro: 12470 at run time
-        if alarm.number != 12470 or kind != "G":
+        if alarm.number != G_FUNCTION_UNKNOWN or kind != "G":
             raise
         plain = [number + _names([word])[0]]
     finally:
@@ -326,7 +330,7 @@ def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> l
     if program is None:
         return blocks or ([number.strip()] if number else [])
     if len(program) > 10:
-        raise NcAlarmError(12080, f"P{program}")
+        raise NcAlarmError(SYNTAX_ERROR, f"P{program}")
     passes = _passes(words)
     return blocks + [f'{number}CALL "{program}"' + (f" P{passes}" if passes > 1 else "")]
 
@@ -357,13 +361,13 @@ def _state(frame: CallLevel) -> MacroState:
 def _key(name: str, indices: tuple[Any, ...]) -> tuple[str, tuple]:
     if _ARRAYS.match(name):
         if len(indices) > 1:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         index = int(indices[0]) if indices else 0
         if index != (indices[0] if indices else 0) or not 0 <= index < MAX_IJK:
-            raise NcAlarmError(17020, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         return name, (index,)
     if indices:
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
     return name, ()
 
 
@@ -374,7 +378,7 @@ def read(ctx: InterpreterContext, name: str, indices: tuple[Any, ...]) -> Any:
         return int(any(getattr(f, "iso_macro", None) is not None and f.iso_macro.substitution
                        for f in frames))
     if not (_READABLE.match(name) or _ARRAYS.match(name)):
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
     key = _key(name, indices)
     if not frames:
         return 0
@@ -385,7 +389,7 @@ def write(ctx: InterpreterContext, name: str, indices: tuple[Any, ...], value: A
     """Collect a ``$C_…`` argument for the next call (translated ISO blocks only)."""
     frames = ctx.call_stack
     if not frames or ctx.modal.gcodes.get(ISO_MODE_GROUP) != "G291":
-        raise NcAlarmError(17070, name)  # read-only in Siemens mode
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name)  # read-only in Siemens mode
     frame = frames[-1]
     state = _state(frame)
     pending = dict(state.pending or {})
@@ -401,7 +405,7 @@ def write(ctx: InterpreterContext, name: str, indices: tuple[Any, ...], value: A
         return
     internal = name in (MCALL_PASSES, SUBST_CALL)
     if not internal and not (_READABLE.match(name) or _ARRAYS.match(name)):
-        raise NcAlarmError(12550, name)
+        raise NcAlarmError(NAME_NOT_DEFINED, name)
     key = (name, ()) if internal else _key(name, indices)
     pending[key] = value
     frame.iso_macro = replace(state, pending=pending)

@@ -20,6 +20,7 @@ M98 and M99 never reach the PLC: they become calls and returns, not M words.
 
 from __future__ import annotations
 
+from nck.alarm_ids import PASS_COUNT_NOT_ALLOWED, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.lang.dialect import InterpreterContext
 
@@ -31,7 +32,7 @@ ISO_MODE_GROUP = 47  # Siemens G group of G290/G291
 def call_block(values: dict[str, float]) -> str:
     """The Siemens call of ``M98 P… [L…]``: ``CALL "O0021" P3`` (alarm 12080 without P)."""
     if "P" not in values:
-        raise NcAlarmError(12080, "M98")
+        raise NcAlarmError(SYNTAX_ERROR, "M98")
     p_value = int(values["P"])
     count = int(values.get("L", 1))
     if p_value > 9999:  # P<count><nnnn>; an explicit L takes precedence over the count digits
@@ -39,7 +40,7 @@ def call_block(values: dict[str, float]) -> str:
             count = p_value // 10000
         p_value %= 10000
     if not 1 <= count <= MAX_PASSES:
-        raise NcAlarmError(14013)
+        raise NcAlarmError(PASS_COUNT_NOT_ALLOWED)
     call = f'CALL "O{p_value:04d}"'
     return call if count == 1 else f"{call} P{count}"
 

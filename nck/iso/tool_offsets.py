@@ -27,6 +27,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 
@@ -63,7 +64,7 @@ def g10_blocks(values: dict[str, float], absolute: bool) -> list[str] | None:
     if mode not in G10_PARAMS:
         return None
     if "P" not in values or "R" not in values:
-        raise NcAlarmError(12080, f"G10 L{mode}")
+        raise NcAlarmError(SYNTAX_ERROR, f"G10 L{mode}")
 
     h_number, param = int(values["P"]), G10_PARAMS[mode]
     target = f"{DATA_VAR}[{h_number},{param}]"
@@ -86,13 +87,13 @@ def _whole(value: Any, name: str) -> int:
 
     number = to_number(value, name)
     if int(number) != number:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return int(number)
 
 
 def _pair(name: str, indices: tuple[Any, ...]) -> tuple[int, int]:
     if len(indices) != 2:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return _whole(indices[0], name), _whole(indices[1], name)
 
 
@@ -134,16 +135,16 @@ def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
 
     first, second = _pair(name, indices)
     if name == EDGE_VAR:
-        raise NcAlarmError(17070, name)
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name)
     if name == DATA_VAR:
         tool, edge = _edge_of_h(ctx.data, first)
         ctx.write_tool(tool, edge, second, float(to_number(value, name)))
         return
     if first < 1 or not 1 <= second <= 12:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     h_number = _whole(value, name)
     if h_number < 0:
-        raise NcAlarmError(17020, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     if h_number:
         holder = _h_numbers(ctx.data).get(h_number)
         if holder is not None and holder != (first, second):

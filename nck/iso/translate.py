@@ -52,6 +52,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nck.alarm_ids import ADDRESS_PROGRAMMED_TWICE, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso import cycles, subprograms, turning
@@ -230,7 +231,7 @@ def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSetting
         if word.letter == "G":
             gcodes.append(g_name(word))
         elif word.letter in addresses and word.letter not in ("M",):
-            raise NcAlarmError(12000, word.letter)
+            raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, word.letter)
         elif word.letter == "M":
             others.append(word)
         else:
@@ -275,10 +276,10 @@ def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSetting
         return [number + subprograms.return_block(values, modal.main)]
     if "G54.1" in gcodes or ("G54" in gcodes and "P" in values):
         if "P" not in values:
-            raise NcAlarmError(12080, "G54.1")
+            raise NcAlarmError(SYNTAX_ERROR, "G54.1")
         slot = int(values.pop("P"))
         if not 1 <= slot <= 48:
-            raise NcAlarmError(12080, f"G54 P{slot}")
+            raise NcAlarmError(SYNTAX_ERROR, f"G54 P{slot}")
         gcodes = [c for c in gcodes if c not in ("G54", "G54.1")] + [f"G{506 + slot}"]
     if any(code in ("G4", "G04") for code in gcodes):
         return [number + iso_dwell.block(addresses, settings, modal.per_rev)]
@@ -430,4 +431,4 @@ def _g10(values: dict[str, float]) -> list[str]:
         return [f"$P_UIFR[{slot}, {a}, TR]={trimmed(values[a])}" for a in AXES if a in values]
     if mode == 20 and slot >= 1:
         return [f"$P_UIFR[{slot + 6}, {a}, TR]={trimmed(values[a])}" for a in AXES if a in values]
-    raise NcAlarmError(12080, f"G10 L{mode}")
+    raise NcAlarmError(SYNTAX_ERROR, f"G10 L{mode}")

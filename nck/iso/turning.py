@@ -41,6 +41,7 @@ import copy
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
+from nck.alarm_ids import ADDRESS_PROGRAMMED_TWICE, G_FUNCTION_UNKNOWN, NAME_NOT_DEFINED, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso import turning_cycles as tc
@@ -166,15 +167,15 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     else:
         for word in words:
             if word.letter == "G" and _g(word) in _NOT_IN_SYSTEM_B:
-                raise NcAlarmError(12470, _g(word))
+                raise NcAlarmError(G_FUNCTION_UNKNOWN, _g(word))
     body = [w for w in words if w.letter != "N"]
     codes = [_g(w) for w in body if w.letter == "G"]
     address = {w.letter: w for w in body if w.letter not in ("G", "M")}
     if len(address) != len([w for w in body if w.letter not in ("G", "M")]):
-        raise NcAlarmError(12000, "address")
+        raise NcAlarmError(ADDRESS_PROGRAMMED_TWICE, "address")
     tool = address.get("T")
     if tool is not None and (tool.has_point or tool.value < 0):
-        raise NcAlarmError(12080, f"T{tool.text}")  # T<tool><offset> is a plain integer
+        raise NcAlarmError(SYNTAX_ERROR, f"T{tool.text}")  # T<tool><offset> is a plain integer
     from nck.iso.translate import word_value
 
     def value(word: Word) -> float:
@@ -209,7 +210,7 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
         lathe.thread = False
     speed_codes = {"G96", "G97"} & set(codes)
     if "G96" in speed_codes and "P" in address:
-        raise NcAlarmError(12080, "G96 P")  # only the transverse axis of MD 20100 (P0)
+        raise NcAlarmError(SYNTAX_ERROR, "G96 P")  # only the transverse axis of MD 20100 (P0)
     if speed_codes or (lathe.css and {"G94", "G95"} & set(codes)):
         # Siemens group 15 holds both: G96/G961 (constant cutting speed), G97/G971
         lathe.css = "G96" in speed_codes or (lathe.css and "G97" not in speed_codes)
@@ -541,12 +542,12 @@ def _preset(address: dict[str, Word], modal: Any, value: Callable[[Word], float]
 def _tool_offset(address: dict[str, Word], modal: Any, value: Callable[[Word], float]) -> list[str]:
     """``G10 P<n>``: geometry (n < 100) or wear (100 + n) of offset n of the active tool."""
     if "P" not in address:
-        raise NcAlarmError(12080, "G10")
+        raise NcAlarmError(SYNTAX_ERROR, "G10")
     slot = int(address["P"].value)
     wear = slot >= 100
     edge = slot - 100 if wear else slot
     if edge < 1:
-        raise NcAlarmError(12550, f"G10 P{slot}")
+        raise NcAlarmError(NAME_NOT_DEFINED, f"G10 P{slot}")
     params = _WEAR_PARAMS if wear else _GEOMETRY_PARAMS
     blocks = []
     for letter, inc in (("X", "U"), ("Z", "W"), ("R", ""), ("Q", "")):
