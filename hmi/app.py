@@ -53,6 +53,7 @@ from hmi.area import MIN_TERMINAL_SIZE, AreaBase
 from hmi.bridge import NckBridge
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
+from hmi.exercise_run import ClassroomHost
 from hmi.help import HelpScreen
 from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
@@ -167,7 +168,7 @@ def _missing_css(screen_class: type, module: Any) -> str:
     return ""
 
 
-class HmiApp(MachineControlPanel, App):
+class HmiApp(ClassroomHost, MachineControlPanel, App):
     """The SINUMERIK Operate trainer.
 
     Args:
@@ -305,6 +306,7 @@ class HmiApp(MachineControlPanel, App):
         if not isinstance(event, events.Key):
             await super().on_event(event)
             return
+        self.exercise_key(event.key)
         focused = self.focused
         binding = own_binding(self.screen, focused, event)
         if binding is not None and focused is not None \
@@ -340,6 +342,7 @@ class HmiApp(MachineControlPanel, App):
         key let go) and leaves the refusal of a later key on the dialog line.
         """
         result = self.bridge.submit(command)
+        self.exercise_command(command, isinstance(result, Accepted))
         self.show_snapshot(self.bridge.status)
         area = self.area_screen
         if answers_refusal and isinstance(result, Accepted) and area is not None and area.area_hint:
@@ -388,6 +391,7 @@ class HmiApp(MachineControlPanel, App):
             self._snapshot_shown = False
             return
         self._snapshot_shown = True
+        self.exercise_snapshot(status)
         for screen in self.screen_stack:
             if isinstance(screen, AreaBase):
                 try:
@@ -598,6 +602,8 @@ class HmiApp(MachineControlPanel, App):
     def _leave(self, exit_code: int) -> None:
         """Save NC data (a failure is reported, the app still quits), then end the app."""
         self.ending = True
+        if self.exercise_run is not None:  # the report is written, the trainee's session saved below
+            self.exit_notes.append(f"hmi: {self.end_exercise()}")
         if self._on_quit is not None:
             try:
                 self._on_quit()

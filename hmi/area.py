@@ -89,6 +89,7 @@ class AreaBase(BindingsInPlace):
         with Horizontal(id="area-body"):
             with Container(id="area-content"):
                 yield from self.compose_content()
+            yield Static("", id="exercise-side", markup=False)
             yield VerticalSoftkeys(id="vsk")
         yield DialogLine("", id="dialog-line", markup=False)
         yield HorizontalSoftkeys(id="hsk")
@@ -219,6 +220,7 @@ class AreaBase(BindingsInPlace):
         if not self.is_mounted:
             return
         self.query_one(AreaHeader).show(self.AREA_TITLE, status)
+        show_text(self.query_one("#exercise-side", Static), self.hmi.exercise_side)
         if status is not None:
             self.update_status(status)
         self.refresh_softkeys()
@@ -246,6 +248,7 @@ class AreaBase(BindingsInPlace):
 
     def on_mount(self) -> None:
         """Show what is known as soon as the screen exists."""
+        self.set_class(bool(self.hmi.exercise_side), "-exercise")  # an exercise's side window
         self.show_status(self.hmi.latest_status)
         self.show_hint(self.area_hint)
 

@@ -118,13 +118,15 @@ class NckBridge:
                     raise
                 report(exc)
 
-    def replace_kernel(self, nck: NckLike) -> None:
-        """Drive a new kernel (after "Reset (po)"): its snapshots and log start afresh."""
-        self.nck = nck
+    def replace_kernel(self, nck: NckLike) -> NckLike:
+        """Drive a new kernel (after "Reset (po)", an exercise): its snapshots and log start
+        afresh; return the kernel driven so far (an exercise gives it back at its end)."""
+        previous, self.nck = self.nck, nck
         self.ipo_cycle_s = float(getattr(nck, "ipo_cycle_s", self.ipo_cycle_s) or self.ipo_cycle_s)
         self._last_seq = None
         self._last_log_seq = 0
         self._status = nck.status()
+        return previous
 
     # -- kernel access ------------------------------------------------------------------
     @property

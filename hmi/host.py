@@ -25,6 +25,8 @@ class AreaHost(Protocol):
     hint: str
     single_block_type: str
     rapid_overlay: bool
+    exercise_side: str
+    """The exercise side window's text ("" while no exercise runs)."""
 
     @property
     def selected_axis(self) -> str | None:
@@ -35,6 +37,12 @@ class AreaHost(Protocol):
 
     def set_hint(self, text: str) -> None:
         """Write ``text`` on the dialog line of the current area."""
+
+    def start_exercise(self, exercise: Any) -> str:
+        """Run the panel on ``exercise``'s private set-up; return what to tell the trainee."""
+
+    def end_exercise(self) -> str:
+        """End the exercise: report written, the trainee's own data back; return what to say."""
 
     def power_on_reset(self) -> bool:
         """Reset (po): restart the kernel on the NC data; False without a data directory."""

@@ -90,6 +90,13 @@ class ProgramFiles:
         app._program_files = files
         return files
 
+    @classmethod
+    def forget(cls, app: Any) -> None:
+        """Let go of ``app``'s instance: the kernel and its NC file system were replaced (an
+        exercise started or ended), the next :meth:`of_app` finds the new one."""
+        if hasattr(app, "_program_files"):
+            del app._program_files
+
     # -- names and shared state ------------------------------------------------------------------
     @property
     def journal_dir(self) -> Path:

@@ -127,6 +127,10 @@ def _main(args: list[str]) -> int:
         from nck import cli_setup
 
         return cli_setup.main(args[1:], wait_s=wait_s)
+    if args[:1] == ["exercise"]:
+        from nck import cli_exercise
+
+        return cli_exercise.main(args[1:])
     if args[:1] == ["md"]:
         try:
             from nck import cli_md  # type: ignore[attr-defined]
@@ -151,7 +155,7 @@ def _main(args: list[str]) -> int:
             return _run(options)
         if options.command == "grade":
             return _grade(options)
-        print("usage: nck {check,run,grade,md,setup,archive,version} ...", file=sys.stderr)
+        print("usage: nck {check,run,grade,exercise,md,setup,archive,version} ...", file=sys.stderr)
         return 2
     except CliError as exc:
         print(f"nck: {exc}", file=sys.stderr)

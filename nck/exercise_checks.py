@@ -255,7 +255,8 @@ class ExerciseProgress:
         self._ends_seen = channel.program_runtime_count
         state = state_of(status, data)
         if self.state is None or state["channel"] != self.state["channel"]:
-            if state["channel"] == "active" and (self.state is None or self.state["channel"] == "reset"):
+            if state["channel"] == "active" and state["mode"] in ("AUTO", "MDA") and (
+                    self.state is None or self.state["channel"] == "reset"):
                 self._run = {"program": state["program"], "alarms": [], "single_block_stops": 0}
                 self._add("program_started", program=state["program"], mode=state["mode"])
             elif state["channel"] == "reset":

@@ -34,6 +34,12 @@ from nck.setup_fields import (SetupField as SetupField, SetupFieldError as Setup
                               setup_fields as setup_fields, with_field as with_field)
 # The data tables (data/*.toml) the HMI shows as they are, e.g. the cycle forms of the editor.
 from nck.resources import load_toml as load_toml
+# The classroom (issue 26): exercises as data, their checks, set-up and report files, for
+# the panel's Exercises view; pure or writing only the exercise's own directories.
+from nck.exercise import Exercise as Exercise, ExerciseError as ExerciseError, load_exercises as load_exercises
+from nck.exercise_checks import ExerciseProgress as ExerciseProgress, report_text as report_text
+from nck.exercise_files import save_report as save_report
+from nck.exercise_setup import prepare_data_dir as prepare_data_dir, start_commands as start_commands
 
 UNPROTECTED_LEVEL = 7
 """The level a kernel without access control asks for (every function is free)."""

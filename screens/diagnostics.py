@@ -39,15 +39,16 @@ from screens.diagnostics_alarms import (
 from screens.diagnostics_service import (
     axis_rows, drive_rows, overview_text, rows_text, utilisation_rows,
 )
+from screens.diagnostics_exercises import exercises_text
 from screens.diagnostics_trace import TraceSession
 
 VIEWS = ("alarms", "messages", "log", "overview", "axis", "drive", "utilisation", "trace",
-         "version", "logbook")
+         "version", "logbook", "exercises")
 TITLES = {
     "alarms": "Alarm list", "messages": "Messages", "log": "Alarm log",
     "overview": "Service overview", "axis": "Service axis/spindle", "drive": "Service drive",
     "utilisation": "System utilisation", "trace": "Trace", "version": "Version",
-    "logbook": "Logbook",
+    "logbook": "Logbook", "exercises": "Exercises",
 }
 LOG_PAGE = 30
 UTILISATION_REFRESH_S = 1.0
@@ -85,6 +86,9 @@ class DiagnosticsScreen(AreaBase):
         self.trace: TraceSession | None = None
         self._log_seq = -1
         self._utilisation_cycle: int | None = None  # IPO cycle of the figures on display
+        self.exercises: list = []
+        self.exercise_index = 0
+        self._running_exercise: str | None = None
 
     # -- kernel data (read-only questions through the bridge) ------------------------------
     def _history(self) -> tuple:
@@ -135,6 +139,7 @@ class DiagnosticsScreen(AreaBase):
             _view_key("diag.utilisation", "System\nutilis.", "utilisation"),
             _view_key("diag.version", "Version", "version"),
             _view_key("diag.logbook", "Logbook", "logbook"),
+            _view_key("diag.exercises", "Exercises", "exercises"),
         ], self._vertical_keys())
 
     def _vertical_keys(self) -> list[Softkey | None]:
@@ -149,6 +154,14 @@ class DiagnosticsScreen(AreaBase):
                 Softkey("diag.log.text", "Export\ntext", "export_log('text')"),
                 Softkey("diag.log.older", "Older\n▼", "page_log(1)"),
                 Softkey("diag.log.newer", "Newer\n▲", "page_log(-1)"),
+            ]
+        if self.view == "exercises":
+            return [
+                Softkey("diag.ex.start", "Start\nexercise", "exercise_start",
+                        enabled=lambda s: not s.hmi.exercise_side),
+                Softkey("diag.ex.end", "End\nexercise", "exercise_end", enabled=lambda s: bool(s.hmi.exercise_side)),
+                Softkey("diag.ex.down", "Next\n▼", "exercise_select(1)"),
+                Softkey("diag.ex.up", "Previous\n▲", "exercise_select(-1)"),
             ]
         if self.view in ("axis", "drive"):
             return [Softkey("diag.axis.next", "Axis +", "next_axis(1)"),
@@ -194,6 +207,29 @@ class DiagnosticsScreen(AreaBase):
     def action_acknowledge(self) -> None:
         """Acknowledge the alarms with clear criterion CANCEL (as F12)."""
         self.submit(cmd.CancelAlarms())
+
+    def action_exercise_select(self, step: int) -> None:
+        """Next ▼ / Previous ▲: move the selection in the exercise list."""
+        if self.exercises:
+            self.exercise_index = (self.exercise_index + int(step)) % len(self.exercises)
+        self._refresh_view()
+
+    def action_exercise_start(self) -> None:
+        """Start the selected exercise on its own set-up."""
+        if not self.exercises:
+            return
+        exercise = self.exercises[self.exercise_index]
+        said = self.hmi.start_exercise(exercise)
+        self._running_exercise = exercise.title if self.hmi.exercise_side else None
+        self.say(said)
+        self._refresh_view()
+
+    def action_exercise_end(self) -> None:
+        """End the running exercise: the report is written, the own data come back."""
+        said = self.hmi.end_exercise()
+        self._running_exercise = None
+        self.say(said)
+        self._refresh_view()
 
     def action_next_axis(self, step: int) -> None:
         """Axis + / Axis −: the next or previous machine axis (spindles included)."""
@@ -361,6 +397,15 @@ class DiagnosticsScreen(AreaBase):
             return
         handler = getattr(self, f"_render_{self.view}")
         handler(status)
+
+    def _render_exercises(self, status: NckStatus) -> None:
+        if not self.exercises:
+            try:
+                self.exercises = queries.load_exercises()
+            except queries.ExerciseError as exc:
+                self.say(f"Exercises cannot be read: {exc}")
+        running = self._running_exercise if self.hmi.exercise_side else None
+        show_text(self._body("exercises"), exercises_text(self.exercises, self.exercise_index, running))
 
     def _body(self, view: str) -> Static:
         return self.query_one(f"#diag-{view}", Static)

@@ -31,8 +31,8 @@ class Scripted:
         self.session = Session.open(directory)
         self.nck = Nck(**self.session.kernel_arguments())
         self.progress = ExerciseProgress(exercise.steps, exercise.final_checks)
-        for command in start_commands(exercise):
-            self.do(command)
+        for command in start_commands(exercise):  # the set-up's, not the trainee's: not recorded (as on the panel)
+            self.nck.submit(command)
         self.observe()
 
     def observe(self) -> None:

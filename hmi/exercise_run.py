@@ -1,0 +1,221 @@
+"""One guided exercise being done on the panel (issue 26).
+
+Starting an exercise writes its set-up into a private data directory (a new temporary
+folder), opens a session and kernel on it and hands the kernel to the bridge; the
+trainee's own session and kernel are put aside untouched and come back when the
+exercise ends. While it runs, :class:`ExerciseRun` feeds the exercise's
+:class:`nck.queries.ExerciseProgress` with every snapshot, command and key, and gives
+the side window its text. The end writes the scored report as text and JSON (with the
+recording of the session) into the report folder and removes the private directory.
+"""
+
+from __future__ import annotations
+
+import shutil
+import tempfile
+from datetime import datetime
+from pathlib import Path
+from typing import Any
+
+from nck import queries
+from nck.status import NckStatus
+
+from hmi.program_files import ProgramFiles
+from hmi.startup import start_session
+
+
+class ExerciseRun:
+    """The exercise on the panel: its progress, its private session and the trainee's put aside.
+
+    Args:
+        exercise: the exercise (``nck.queries.Exercise``).
+        report_dir: where the reports are written.
+    """
+
+    def __init__(self, exercise: Any, report_dir: Path) -> None:
+        self.exercise = exercise
+        self.report_dir = report_dir
+        self.progress = queries.ExerciseProgress(exercise.steps, exercise.final_checks)
+        self.private_root = Path(tempfile.mkdtemp(prefix="nck-exercise-"))
+        self.session: Any = None
+        self.trainee_session: Any = None
+        self.trainee_kernel: Any = None
+        self.trainee_estop_pressed = False
+        self.report: dict[str, Any] | None = None
+        self.report_paths: tuple[Path, Path] | None = None
+
+    def open_session(self) -> Any:
+        """Write the set-up into the private directory; return the kernel built on it."""
+        directory = self.private_root / "data"
+        try:
+            queries.prepare_data_dir(self.exercise, directory)
+            self.session, kernel = start_session(self.exercise.machine, str(directory))
+        except BaseException:
+            shutil.rmtree(self.private_root, ignore_errors=True)
+            raise
+        return kernel
+
+    def start_commands(self) -> list[Any]:
+        """What the set-up asks of the new kernel at once (program selection, E-stop)."""
+        return queries.start_commands(self.exercise)
+
+    # -- following the session ------------------------------------------------------------
+    def observe_status(self, status: NckStatus, data: Any) -> None:
+        """A snapshot (and the NC data) of the exercise's kernel."""
+        self.progress.observe_status(status, data)
+
+    def observe_command(self, command: Any, accepted: bool) -> None:
+        """An operator command and whether the kernel took it."""
+        self.progress.observe_command(command, accepted)
+
+    def observe_key(self, key: str) -> None:
+        """A key the trainee pressed."""
+        self.progress.observe_key(key)
+
+    def side_text(self) -> str:
+        """The side window: exercise, current step, its hint (none in an exam)."""
+        steps = self.exercise.steps
+        lines = [f"EXERCISE: {self.exercise.title}", ""]
+        if self.progress.finished:
+            lines += ["All steps done.", "", "End the exercise for the report:",
+                      "Diagnostics, More, Exercises, End exercise."]
+            return "\n".join(lines)
+        index = self.progress.current
+        step = steps[index]
+        lines += [f"Step {index + 1} of {len(steps)}", step.text]
+        if step.hint and not self.exercise.exam:
+            lines += ["", f"Hint: {step.hint}"]
+        why = self.progress.results[index].why_not
+        if why:
+            lines += ["", "Still open:", *(f"- {reason}" for reason in why)]
+        return "\n".join(lines)
+
+    # -- the end ----------------------------------------------------------------------------
+    def finish(self) -> tuple[Path, Path]:
+        """Score the session, write the report files; return their paths (text, JSON)."""
+        self.report = self.progress.report(self.exercise.title)
+        name = f"{self.exercise.exercise_id}-{datetime.now():%Y%m%d-%H%M%S}"
+        self.report_paths = queries.save_report(self.report_dir, name, self.report, self.progress.events,
+                                                self.exercise.exercise_id)
+        return self.report_paths
+
+    def close(self) -> None:
+        """Give the private data directory free and remove it."""
+        try:
+            if self.session is not None:
+                self.session.quit()
+        finally:
+            shutil.rmtree(self.private_root, ignore_errors=True)
+
+
+class ClassroomHost:
+    """The app's part of the classroom (mixed into ``hmi.app.HmiApp``): start and end an
+    exercise, feed it what happens on the panel, keep the side window's text.
+
+    The app calls :meth:`exercise_key`, :meth:`exercise_command` and
+    :meth:`exercise_snapshot` from its key, command and snapshot paths.
+    """
+
+    bridge: Any
+    nc_session: Any
+    estop_pressed: bool  # the machine control panel's E-stop button (hmi.mcp)
+    exercise_run: ExerciseRun | None = None
+    exercise_side: str = ""
+    """The side window's text ("" while no exercise runs)."""
+    exercise_report_dir: Path | None = None
+    """Where reports go (None: ``exercise_reports`` in the trainee's data directory, else a temporary folder)."""
+
+    def start_exercise(self, exercise: Any) -> str:
+        """Load ``exercise``'s set-up into a private data directory and run the panel on it.
+
+        Returns what to say on the dialog line. The trainee's session and kernel are put
+        aside unchanged (saved first) until :meth:`end_exercise`.
+        """
+        if self.exercise_run is not None:
+            return f"Exercise '{self.exercise_run.exercise.title}' is still running: end it first"
+        if exercise.waits_for:
+            return f"This exercise waits for {exercise.waits_for}"
+        unsaved = self._unsaved_work()
+        if unsaved:
+            return f"Not started: {unsaved} (save or close it first)"
+        run = ExerciseRun(exercise, self._report_dir())
+        try:
+            kernel = run.open_session()
+        except Exception as exc:  # noqa: BLE001 - a broken exercise file: say so, keep the trainee's panel
+            return f"Exercise could not be started: {exc}"
+        self.save_nc_data()  # type: ignore[attr-defined]
+        run.trainee_session = self.nc_session
+        run.trainee_kernel = self.bridge.replace_kernel(kernel)
+        run.trainee_estop_pressed = self.estop_pressed
+        self.nc_session = run.session
+        ProgramFiles.forget(self)  # the Program manager and the editor work on the exercise's programs
+        for command in run.start_commands():
+            self.bridge.submit(command)
+        self.estop_pressed = self.bridge.status.emergency_stop  # the mushroom as the set-up left it
+        self.exercise_run = run
+        self.exercise_snapshot(self.bridge.poll(force=True))
+        self._mark_areas(True)
+        return f"Exercise started: {exercise.title}"
+
+    def end_exercise(self) -> str:
+        """Score the exercise, write its report, give the trainee's own panel back."""
+        run = self.exercise_run
+        if run is None:
+            return "No exercise is running"
+        unsaved = self._unsaved_work()
+        if unsaved and not self.ending:  # type: ignore[attr-defined]
+            return f"Not ended: {unsaved} (save or close it first)"
+        try:
+            text_path, _ = run.finish()
+            said = f"Exercise ended, score {run.report['score'] if run.report else 0}/100: report in {text_path}"
+        except OSError as exc:
+            said = f"The exercise report could not be written: {exc}"
+        finally:
+            self.exercise_run = None
+            self.exercise_side = ""
+            self.bridge.replace_kernel(run.trainee_kernel)
+            self.nc_session = run.trainee_session
+            self.estop_pressed = run.trainee_estop_pressed
+            ProgramFiles.forget(self)
+            run.close()
+            self._mark_areas(False)
+            self.bridge.poll(force=True)
+        return said
+
+    def _unsaved_work(self) -> str:
+        """Unsaved text of an area (it belongs to the data directory about to be swapped)."""
+        return next((work for work in (a.unsaved_work() for a in self.area_screens) if work), "")  # type: ignore[attr-defined]
+
+    def _mark_areas(self, running: bool) -> None:
+        """Show or hide the side window: the class ``-exercise`` on the app and on every area
+        built so far (a hidden area is restyled only by its own class changes; areas built
+        later take it when they mount, ``hmi.area``)."""
+        self.set_class(running, "-exercise")  # type: ignore[attr-defined]
+        for screen in self.area_screens:  # type: ignore[attr-defined]
+            screen.set_class(running, "-exercise")
+
+    def _report_dir(self) -> Path:
+        if self.exercise_report_dir is not None:
+            return self.exercise_report_dir
+        if self.nc_session is not None:
+            return Path(self.nc_session.session.data_dir) / "exercise_reports"
+        return Path(tempfile.gettempdir()) / "nck-exercise-reports"
+
+    # -- what the app feeds in --------------------------------------------------------------
+    def exercise_key(self, key: str) -> None:
+        """A key reached the app."""
+        if self.exercise_run is not None:
+            self.exercise_run.observe_key(key)
+
+    def exercise_command(self, command: Any, accepted: bool) -> None:
+        """A command went to the kernel."""
+        if self.exercise_run is not None:
+            self.exercise_run.observe_command(command, accepted)
+
+    def exercise_snapshot(self, status: NckStatus) -> None:
+        """A new snapshot: check the step, refresh the side window's text."""
+        run = self.exercise_run
+        if run is None:
+            return
+        run.observe_status(status, self.bridge.query(queries.ReadData()).data)
+        self.exercise_side = run.side_text()

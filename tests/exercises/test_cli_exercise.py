@@ -1,0 +1,47 @@
+"""``nck exercise list`` / ``nck exercise replay SESSION.json``: the instructor's replay (issue 26)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from nck import commands as cmd
+from nck.cli import main
+from nck.exercise_files import save_report
+from tests.exercises.test_exercise_checks import EXERCISES, Scripted
+
+
+def test_list_names_the_waiting_exercises(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["exercise", "list"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == len(EXERCISES)
+    assert any(line.startswith("14_spindle_speed") and "(waits for a spindle" in line for line in lines)
+
+
+def test_replay_of_a_saved_session(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    exercise = EXERCISES["02_emergency_stop"]
+    s = Scripted(exercise, tmp_path / "run")
+    s.progress.observe_key("alt+l")
+    s.do(cmd.EmergencyStop(False))
+    s.progress.observe_key("f12")
+    s.do(cmd.CancelAlarms())
+    s.progress.observe_key("alt+q")
+    s.do(cmd.Reset())
+    _, recording = save_report(tmp_path / "reports", "session", s.progress.report(exercise.title),
+                               s.progress.events, exercise.exercise_id)
+    assert main(["exercise", "replay", str(recording)]) == 0
+    out = capsys.readouterr().out
+    timeline = [line.split(" s  ", 1)[1] for line in out.split("\n\n")[0].splitlines()]
+    assert timeline == ["alarm 3000 came", "key alt+l", "EmergencyStop pressed=False", "=== step 1 done",
+                        "key f12", "CancelAlarms", "key alt+q", "Reset", "alarm 3000 went (Reset)",
+                        "=== step 2 done"]
+    assert "Score: 67/100" in out and "[ ] 3. Reference the axes in JOG." in out
+
+
+def test_replay_of_a_bad_file_says_so(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "x.json").write_text("[1, 2]")
+    assert main(["exercise", "replay", str(tmp_path / "x.json")]) == 2
+    assert "is not a recorded exercise session" in capsys.readouterr().err
+    assert main(["exercise", "replay", str(tmp_path / "none.json")]) == 2
+    assert "cannot replay" in capsys.readouterr().err

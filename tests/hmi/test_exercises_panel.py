@@ -1,0 +1,129 @@
+"""Guided exercises on the panel (issue 26): Diagnostics, More, Exercises.
+
+The trainee's own data directory stays as it was; the exercise runs on a private
+one; the side window shows the step and its hint; the end writes the scored report
+(text and JSON with the recording, which replays to the same report). Keys are
+sent one at a time and in bursts, as a terminal delivers them.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+
+from textual.widgets import Static
+
+from hmi.app import HmiApp, make_app
+from nck.exercise import load_exercises
+from nck.exercise_checks import replay
+from tests.burst import burst
+from tests.hmi.conftest import SIZE
+
+REFERENCE_KEYS = ("alt+m", "alt+j", "alt+r", "alt+x", "ctrl+right", "alt+y", "ctrl+right", "alt+z", "ctrl+right")
+OPEN_LIST = ("alt+a", "f8", "f4")  # Diagnostics, More, Exercises
+START, END, NEXT = "shift+f1", "shift+f2", "shift+f3"
+
+
+def fingerprint(directory: Path) -> dict[str, str]:
+    """Every file below ``directory`` (but the report folder and the lock) with its content hash."""
+    return {str(p.relative_to(directory)): hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in sorted(directory.rglob("*")) if p.is_file()
+            and "exercise_reports" not in p.parts and p.name != ".lock"}
+
+
+def trainee_app(tmp_path: Path) -> HmiApp:
+    app = make_app(data_dir=str(tmp_path / "trainee"), realtime=False)
+    app.nc_session.save()
+    return app
+
+
+def referenced(status) -> bool:
+    return all(a.referenced for a in status.axes if a.kind != "spindle")
+
+
+def side(app: HmiApp) -> str:
+    return str(app.screen.query_one("#exercise-side", Static).render())
+
+
+async def test_reference_exercise_with_keys_report_and_own_data_untouched(tmp_path: Path) -> None:
+    app = trainee_app(tmp_path)
+    before = fingerprint(tmp_path / "trainee")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press(*OPEN_LIST)
+        assert "Power on: reference the axes" in str(app.screen.query_one("#diag-exercises", Static).render())
+        await pilot.press(START)
+        assert app.hint == "Exercise started: Power on: reference the axes"
+        assert "Step 2 of 2" in side(app) and "Hint: REF POINT" in side(app)
+        private = app.nc_session.session.data_dir
+        assert private != tmp_path / "trainee" and private.is_dir()
+        for key in REFERENCE_KEYS:  # one key at a time
+            await pilot.press(key)
+        app.bridge.run_until(referenced, max_s=60)
+        await pilot.pause()
+        assert "All steps done." in side(app)
+        # shown beside the Machine area too, which was built before the exercise started
+        assert app.screen.AREA_ID == "machine" and app.screen.query_one("#exercise-side").region.width == 34
+        await pilot.press("alt+a", END)
+        assert app.hint.startswith("Exercise ended, score 100/100: report in ")
+        assert not private.exists()  # the private data directory is gone
+        assert not referenced(app.bridge.status)  # the trainee's own kernel is back as it was
+        assert not app.has_class("-exercise")
+    assert fingerprint(tmp_path / "trainee") == before
+    reports = tmp_path / "trainee" / "exercise_reports"
+    text = next(reports.glob("*.txt")).read_text()
+    assert "Score: 100/100" in text and "[x] 2. Reference every axis with REF POINT." in text
+    saved = json.loads(next(reports.glob("*.json")).read_text())
+    assert saved["exercise"] == "01_power_on_reference" and saved["report"]["score"] == 100
+    keys = [e["key"] for e in saved["events"] if e["kind"] == "key"]
+    assert keys == [*REFERENCE_KEYS, "alt+a", END]  # from the start to the end of the exercise
+    exercise = {e.exercise_id: e for e in load_exercises()}["01_power_on_reference"]
+    assert replay(exercise.steps, exercise.final_checks, saved["events"]).report(exercise.title) == saved["report"]
+
+
+async def test_ended_early_the_report_says_what_is_missing(tmp_path: Path) -> None:
+    app = trainee_app(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, *OPEN_LIST, START)
+        assert "Step 2 of 2" in side(app)
+        await burst(pilot, "alt+m", "alt+j", "alt+r", "alt+x", "ctrl+right")  # X only, in one burst
+        app.bridge.run_until(lambda s: s.axes[0].referenced, max_s=60)
+        await pilot.pause()
+        assert "- axes not referenced: Y, Z" in side(app)
+        await burst(pilot, "alt+a", END)
+        assert app.hint.startswith("Exercise ended, score 67/100")
+    text = next((tmp_path / "trainee" / "exercise_reports").glob("*.txt")).read_text()
+    assert "[ ] 2. Reference every axis with REF POINT.\n      not done: axes not referenced: Y, Z" in text
+
+
+async def test_emergency_stop_cleared_with_the_wrong_key_then_the_right_one(tmp_path: Path) -> None:
+    app = trainee_app(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, *OPEN_LIST, NEXT, START)  # the second exercise
+        assert app.bridge.status.emergency_stop
+        assert "Step 1 of 3" in side(app)
+        await burst(pilot, "alt+l")  # release the button
+        assert "Step 2 of 3" in side(app)
+        await burst(pilot, "f12")  # CANCEL does not clear alarm 3000
+        assert "Step 2 of 3" in side(app) and "alarm 3000 was not cleared" in side(app)
+        await burst(pilot, "alt+q")  # RESET does
+        assert "Step 3 of 3" in side(app)
+        await burst(pilot, *REFERENCE_KEYS)
+        app.bridge.run_until(referenced, max_s=60)
+        await pilot.pause()
+        assert "All steps done." in side(app)
+        await burst(pilot, "alt+a", END)
+        assert "score 100/100" in app.hint
+        assert not app.bridge.status.emergency_stop  # the trainee's machine never was in E-stop
+
+
+async def test_exam_shows_no_hint_and_a_waiting_exercise_does_not_start(tmp_path: Path) -> None:
+    app = trainee_app(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press(*OPEN_LIST, *[NEXT] * 8, START)  # 9: tool length measuring waits
+        assert app.hint.startswith("This exercise waits for a tool whose true length")
+        assert not app.has_class("-exercise")
+        await pilot.press(*[NEXT] * 4, START)  # 13: the exam
+        assert "Step 1 of 3" in side(app) and "Hint" not in side(app)
+        await pilot.press(END)
+        assert "score 25/100" in app.hint  # 1 of 4: only the final check (no alarm) holds
