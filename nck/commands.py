@@ -257,7 +257,7 @@ class DeleteActiveWorkOffset:
 Command = (
     SelectMode | SelectMachineFunction | SelectIncrement | CycleStart | CycleStop | Reset
     | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
-    | CancelAlarms | Jog | StartBlockSearch | WriteData | EnterPassword | DeletePassword
+    | CancelAlarms | Jog | SetControllerEnable | StartBlockSearch | WriteData | EnterPassword | DeletePassword
     | SetKeyswitch | ChangePassword | DeleteToolEdge | ClearRParameters | ActivateMachineData
     | WriteMachineSetup | SetActualValue | SetWorkOffsetRotation | DeleteActiveWorkOffset
 )

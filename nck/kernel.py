@@ -40,6 +40,7 @@ from nck.channel import (
     ABORTED, ACTIVE, INTERRUPTED, RESET, RUNNING, ChannelSituation, mode_change_allowed,
     next_state, situation_after_mode_change,
 )
+from nck.command_table import CommandTable
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
@@ -177,13 +178,13 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
     # ------------------------------------------------------------------ API
     def submit(self, command: object) -> SubmitResult:
         """Carry out one operator command; never raises."""
-        name = self._HANDLERS.get(type(command))
-        if name is None:
+        handler = COMMANDS.handler(type(command))
+        if handler is None:
             return Rejected(f"unknown command {type(command).__name__}")
         try:
             logged = isinstance(command, _LOGBOOK_COMMANDS)
             level_before = self._access_level() if logged else 7
-            result = getattr(self, name)(command)
+            result = handler(self, command)
             if logged and isinstance(result, Accepted):
                 self._note_in_logbook(command, level_before)
             return result
@@ -577,36 +578,6 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         self._mda_text = command.text
         return Accepted()
 
-    _HANDLERS: dict[type, str] = {
-        cmd.SelectMode: "_select_mode",
-        cmd.SelectMachineFunction: "_select_machine_function",
-        cmd.SelectIncrement: "_select_increment",
-        cmd.CycleStart: "_cycle_start",
-        cmd.CycleStop: "_cycle_stop",
-        cmd.Reset: "_reset",
-        cmd.EmergencyStop: "_emergency_stop",
-        cmd.SelectProgram: "_select_program",
-        cmd.SetMdaProgram: "_set_mda",
-        cmd.SetProgramControl: "_set_program_control",
-        cmd.SetOverride: "_set_override",
-        cmd.CancelAlarms: "_cancel_alarms",
-        cmd.Jog: "_jog",
-        cmd.SetControllerEnable: "_set_controller_enable",
-        cmd.StartBlockSearch: "_start_block_search",
-        cmd.WriteData: "_write_data",
-        cmd.SetKeyswitch: "_set_keyswitch",
-        cmd.EnterPassword: "_enter_password",
-        cmd.DeletePassword: "_delete_password",
-        cmd.ChangePassword: "_change_password",
-        cmd.DeleteToolEdge: "_delete_tool_edge",
-        cmd.ClearRParameters: "_clear_r_parameters",
-        cmd.ActivateMachineData: "_activate_machine_data",
-        cmd.WriteMachineSetup: "_write_machine_setup",
-        cmd.SetActualValue: "_set_actual_value",
-        cmd.SetWorkOffsetRotation: "_set_work_offset_rotation",
-        cmd.DeleteActiveWorkOffset: "_delete_active_work_offset",
-    }
-
     # ------------------------------------------------------------- cycle
     def _batch_size(self, limit: int, fed: bool) -> int:
         """How many IPO cycles may run as one motion step now (1 = cycle by cycle).
@@ -955,3 +926,35 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         self._sit = ChannelSituation(self._sit.mode, RESET, ABORTED)
 
     # ------------------------------------------------------------- status
+
+
+COMMANDS: CommandTable[Nck] = CommandTable()
+"""Where each command is carried out: command class -> the ``Nck`` method (some live in the
+kernel_* modules Nck is assembled from). Typed: mypy checks that a handler takes its command."""
+COMMANDS.register(cmd.SelectMode, Nck._select_mode)
+COMMANDS.register(cmd.SelectMachineFunction, Nck._select_machine_function)
+COMMANDS.register(cmd.SelectIncrement, Nck._select_increment)
+COMMANDS.register(cmd.CycleStart, Nck._cycle_start)
+COMMANDS.register(cmd.CycleStop, Nck._cycle_stop)
+COMMANDS.register(cmd.Reset, Nck._reset)
+COMMANDS.register(cmd.EmergencyStop, Nck._emergency_stop)
+COMMANDS.register(cmd.SelectProgram, Nck._select_program)
+COMMANDS.register(cmd.SetMdaProgram, Nck._set_mda)
+COMMANDS.register(cmd.SetProgramControl, Nck._set_program_control)
+COMMANDS.register(cmd.SetOverride, Nck._set_override)
+COMMANDS.register(cmd.CancelAlarms, Nck._cancel_alarms)
+COMMANDS.register(cmd.Jog, Nck._jog)
+COMMANDS.register(cmd.SetControllerEnable, Nck._set_controller_enable)
+COMMANDS.register(cmd.StartBlockSearch, Nck._start_block_search)
+COMMANDS.register(cmd.WriteData, Nck._write_data)
+COMMANDS.register(cmd.SetKeyswitch, Nck._set_keyswitch)
+COMMANDS.register(cmd.EnterPassword, Nck._enter_password)
+COMMANDS.register(cmd.DeletePassword, Nck._delete_password)
+COMMANDS.register(cmd.ChangePassword, Nck._change_password)
+COMMANDS.register(cmd.DeleteToolEdge, Nck._delete_tool_edge)
+COMMANDS.register(cmd.ClearRParameters, Nck._clear_r_parameters)
+COMMANDS.register(cmd.ActivateMachineData, Nck._activate_machine_data)
+COMMANDS.register(cmd.WriteMachineSetup, Nck._write_machine_setup)
+COMMANDS.register(cmd.SetActualValue, Nck._set_actual_value)
+COMMANDS.register(cmd.SetWorkOffsetRotation, Nck._set_work_offset_rotation)
+COMMANDS.register(cmd.DeleteActiveWorkOffset, Nck._delete_active_work_offset)
