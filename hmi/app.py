@@ -693,7 +693,21 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--ephemeral", action="store_true",
                         help="work on a temporary copy of the NC data (nothing is saved)")
     parser.add_argument("--program", help="part program to select in AUTO at start")
+    parser.add_argument("--serve", action="store_true",
+                        help="serve the panel to browsers (classroom): one panel on a private copy of the "
+                             "NC data per browser tab (needs textual-serve, installed by make)")
+    parser.add_argument("--host", default="127.0.0.1", help="--serve: address to listen on (default 127.0.0.1)")
+    parser.add_argument("--port", type=int, default=8000, help="--serve: port (default 8000)")
+    parser.add_argument("--max-sessions", type=int, default=4, metavar="N",
+                        help="--serve: at most N browser panels at once (default 4)")
     args = parser.parse_args(argv)
+    if args.serve:
+        from hmi.serve import serve
+
+        if args.max_sessions < 1 or not 0 < args.port < 65536:
+            print("hmi: --max-sessions needs 1 or more, --port a port number 1…65535", file=sys.stderr)
+            return 2
+        return serve(args.host, args.port, args.max_sessions, args.machine, args.data_dir)
     started = time.perf_counter()
     # SIGTERM/SIGHUP while starting or ending: a normal exit, so a temporary copy is removed
     with exit_on_termination():
