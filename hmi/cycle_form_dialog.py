@@ -1,7 +1,8 @@
 """The input form of a standard cycle in the program editor (as Operate's programGUIDE).
 
-One row per parameter (name, field, unit, permitted range), the help line of the parameter
-under the cursor and a small sketch of the geometry with that parameter marked. ↑/↓ move
+One row per parameter (name, field, unit, permitted range; a long form scrolls), the help line
+of the parameter under the cursor and a small sketch of the geometry with that parameter
+marked. An empty field is a parameter that is not programmed (the cycle's own default). ↑/↓ move
 between the fields, Enter checks the field and goes to the next one; Enter on the last field
 is OK: every field is checked and the dialog returns the call line. A refused value keeps the
 cursor in its field and the reason stands in the form's message line. F10 / Esc cancel.
@@ -14,7 +15,7 @@ import re
 from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Horizontal, Vertical
+from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Input, Static
 
 from hmi.cycle_forms import CycleForm
@@ -36,12 +37,13 @@ class CycleFormDialog(AreaDialog[str | None]):
 
     DEFAULT_CSS = """
     CycleFormDialog { align: center middle; }
-    #cycle-box { width: 100; height: auto; background: $surface; border: thick $primary; padding: 0 1; }
+    #cycle-box { width: 110; height: auto; background: $surface; border: thick $primary; padding: 0 1; }
+    #cycle-rows { height: auto; max-height: 20; scrollbar-size-vertical: 1; }
     #cycle-box .cycle-row { height: 1; }
     #cycle-box .cycle-name { width: 8; }
     #cycle-box FieldInput { width: 16; height: 1; border: none; padding: 0 1; background: $panel; }
     #cycle-box FieldInput:focus { border: none; background: $boost; text-style: bold; }
-    #cycle-box .cycle-unit { width: 5; padding: 0 1; color: $secondary; }
+    #cycle-box .cycle-unit { width: 8; padding: 0 1; color: $secondary; }
     #cycle-box .cycle-range { width: 1fr; color: $secondary; }
     #cycle-help { height: 1; }
     #cycle-message { height: 1; color: $error; }
@@ -61,14 +63,15 @@ class CycleFormDialog(AreaDialog[str | None]):
         verb = "Recompile" if self._recompile else "New"
         with Vertical(id="cycle-box"):
             yield Static(f"{self.form.cycle} {self.form.title} ({verb})", id="cycle-title", markup=False)
-            for index, (param, text) in enumerate(zip(self.form.params, self._texts)):
-                with Horizontal(classes="cycle-row"):
-                    yield Static(param.name, classes="cycle-name", markup=False)
-                    field = FieldInput(text, id=f"cycle-field-{index}", select_on_focus=True)
-                    field.cursor_blink = False
-                    yield field
-                    yield Static(param.unit, classes="cycle-unit", markup=False)
-                    yield Static(param.range_text(), classes="cycle-range", markup=False)
+            with VerticalScroll(id="cycle-rows"):
+                for index, (param, text) in enumerate(zip(self.form.params, self._texts)):
+                    with Horizontal(classes="cycle-row"):
+                        yield Static(param.name, classes="cycle-name", markup=False)
+                        field = FieldInput(text, id=f"cycle-field-{index}", select_on_focus=True)
+                        field.cursor_blink = False
+                        yield field
+                        yield Static(param.unit, classes="cycle-unit", markup=False)
+                        yield Static(param.range_text(), classes="cycle-range", markup=False)
             yield Static("", id="cycle-help", markup=False)
             yield Static("", id="cycle-message", markup=False)
             yield Static("", id="cycle-sketch", markup=False)
@@ -93,7 +96,7 @@ class CycleFormDialog(AreaDialog[str | None]):
         param = self.form.params[index]
         self.query_one("#cycle-help", Static).update(Text(f"{param.name}: {param.help}"))
         sketch = Text(self.form.sketch)
-        sketch.highlight_regex(rf"(?<![A-Z_]){re.escape(param.name)}(?![A-Z_])", "reverse")
+        sketch.highlight_regex(rf"(?<![A-Z0-9_]){re.escape(param.name)}(?![A-Z0-9_])", "reverse")
         self.query_one("#cycle-sketch", Static).update(sketch)
 
     def on_input_submitted(self, event: Input.Submitted) -> None:

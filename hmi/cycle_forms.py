@@ -1,9 +1,14 @@
-"""The cycle input forms of the program editor as data: parameters, checks, call lines.
+"""The cycle input forms of the program editor as data: menus, parameters, checks, call lines.
 
-The forms (menu, title, sketch, parameters with unit, range, default and help) are read from
-``data/cycles/cycles.toml`` (``[forms.<CYCLE>]``). This module turns field texts into a call
-line (``CYCLE81(10,0,1,-10,0)``), reads a call line back into field texts (Recompile) and
-says why a value is refused. It holds no widgets.
+The editor's cycle softkeys (``[menus.*]``) and the forms (``[forms.<CYCLE>]``: title, softkey
+label, sketch, parameters with unit, range, default and help) are read from
+``data/cycles/cycles.toml``. This module turns field texts into a call line
+(``CYCLE81(10,0,1,-10,0)``), reads a call line back into field texts (Recompile), switches the
+modal call of a line and says why a value is refused. It holds no widgets.
+
+An empty field is a parameter that is not programmed: the call keeps its place empty
+(``CYCLE83(10,0,2,,20)``) and the cycle uses its own default, so a hand-written call with
+empty places reads back and writes back unchanged.
 """
 
 from __future__ import annotations
@@ -14,40 +19,80 @@ from functools import cache
 
 from nck.queries import load_toml
 
+_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,23}$")
+
 
 @dataclass(frozen=True)
 class CycleParam:
-    """One parameter of a cycle call: its name, unit, range and help line."""
+    """One parameter of a cycle call: its name, unit, range and help line.
+
+    ``kind`` is ``"number"`` or ``"name"`` (a program name, written in quotes, e.g. the
+    contour subprogram of CYCLE95); ``default`` is the text a new call starts with.
+    """
 
     name: str
     unit: str
     help: str
-    default: float
+    default: str
     min_value: float | None = None
     max_value: float | None = None
     choices: tuple[int, ...] = ()
+    integer: bool = False
+    kind: str = "number"
 
     def range_text(self) -> str:
         """The permitted values as the form shows them."""
+        if self.kind == "name":
+            return "program name"
         if self.choices:
             return " / ".join(str(c) for c in self.choices)
-        return f"{_number(self.min_value)} … {_number(self.max_value)}"
+        whole = " whole" if self.integer else ""
+        return f"{number_text(self.min_value)} … {number_text(self.max_value)}{whole}"
 
     def refusal(self, text: str) -> str | None:
-        """Why ``text`` is not a value of this parameter, or None when it is."""
+        """Why ``text`` is not a value of this parameter, or None when it is (empty: not programmed)."""
+        text = text.strip()
+        if self.kind == "name":
+            if _NAME.match(text) is None:
+                return f"{self.name}: '{text}' is not a program name (letters, digits, _; 24 at most)"
+            return None
+        if not text:
+            return None
         try:
-            value = float(text.strip())
+            value = float(text)
         except ValueError:
-            return f"{self.name}: '{text.strip()}' is not a number"
+            return f"{self.name}: '{text}' is not a number"
         if self.choices:
             if value not in self.choices:
                 return f"{self.name}: only {self.range_text()} permitted"
             return None
+        if self.integer and value != int(value):
+            return f"{self.name}: only whole numbers permitted"
         if self.min_value is not None and value < self.min_value:
-            return f"{self.name}: value below the lower limit {_number(self.min_value)}"
+            return f"{self.name}: value below the lower limit {number_text(self.min_value)}"
         if self.max_value is not None and value > self.max_value:
-            return f"{self.name}: value above the upper limit {_number(self.max_value)}"
+            return f"{self.name}: value above the upper limit {number_text(self.max_value)}"
         return None
+
+    def argument(self, text: str) -> str:
+        """The field text as the call writes it (a checked text: see :meth:`refusal`)."""
+        text = text.strip()
+        if self.kind == "name":
+            return f'"{text.upper()}"'
+        return number_text(float(text)) if text else ""
+
+    def field_text(self, argument: str) -> str | None:
+        """The field text of a call's argument; None when the form cannot show it."""
+        if self.kind == "name":
+            quoted = re.fullmatch(r'"([^"]*)"', argument)
+            return quoted[1] if quoted else None
+        if not argument:
+            return ""
+        try:
+            float(argument)
+        except ValueError:
+            return None
+        return argument
 
 
 @dataclass(frozen=True)
@@ -55,37 +100,81 @@ class CycleForm:
     """The input form of one cycle."""
 
     cycle: str
-    menu: str
     title: str
+    key_label: str
     sketch: str
     params: tuple[CycleParam, ...]
 
     def defaults(self) -> list[str]:
         """The field texts of a new call."""
-        return [_number(p.default) for p in self.params]
+        return [p.default for p in self.params]
 
     def call_line(self, texts: list[str]) -> str:
-        """The call with the field texts as numbers, in the order of the parameters."""
-        return f"{self.cycle}({','.join(_number(float(t)) for t in texts)})"
+        """The call with the field texts in the order of the parameters (trailing empties left out)."""
+        args = [param.argument(text) for param, text in zip(self.params, texts)]
+        while args and not args[-1]:
+            args.pop()
+        return f"{self.cycle}({','.join(args)})"
+
+
+@dataclass(frozen=True)
+class MenuKey:
+    """A vertical softkey of a cycle menu: one cycle (its form), several (a sub-level) or MCALL."""
+
+    label: str
+    cycles: tuple[str, ...] = ()
+    mcall: bool = False
+
+
+@dataclass(frozen=True)
+class CycleMenu:
+    """A horizontal softkey of the editor's cycle level (Drilling, Milling, Turning)."""
+
+    menu_id: str
+    label: str
+    keys: tuple[MenuKey, ...]
+    machine: str = ""
+
+    def cycles(self) -> list[str]:
+        """Every cycle of the menu, in the order of its keys."""
+        return [cycle for key in self.keys for cycle in key.cycles]
 
 
 @cache
 def cycle_forms() -> dict[str, CycleForm]:
     """Every cycle form of the data, by cycle name."""
-    forms = load_toml("cycles", "cycles.toml").get("forms", {})
-    return {name: _form(name, entry) for name, entry in forms.items()}
+    data = load_toml("cycles", "cycles.toml")
+    sketches = data.get("sketches", {})
+    return {name: _form(name, entry, sketches) for name, entry in data.get("forms", {}).items()}
 
 
-def forms_of_menu(menu: str) -> list[CycleForm]:
-    """The forms under the editor softkey ``menu`` (``drilling`` …), in the data's order."""
-    return [form for form in cycle_forms().values() if form.menu == menu]
+@cache
+def cycle_menus() -> tuple[CycleMenu, ...]:
+    """The menus of the cycle level in the data's order; keys of cycles without a form are left out."""
+    forms = cycle_forms()
+    menus = []
+    for menu_id, entry in load_toml("cycles", "cycles.toml").get("menus", {}).items():
+        keys = []
+        for key in entry["keys"]:
+            cycles = tuple(c for c in key.get("cycles", ()) if c in forms)
+            if cycles or key.get("mcall"):
+                keys.append(MenuKey(key["label"], cycles, bool(key.get("mcall"))))
+        menus.append(CycleMenu(menu_id, entry["label"], tuple(keys), entry.get("machine", "")))
+    return tuple(menus)
+
+
+def forms_of_menu(menu_id: str) -> list[CycleForm]:
+    """The forms under the menu ``menu_id`` (``drilling`` …), in the order of its keys."""
+    menu = next(m for m in cycle_menus() if m.menu_id == menu_id)
+    return [cycle_forms()[cycle] for cycle in menu.cycles()]
 
 
 _CALL = re.compile(
-    r"^(?P<head>\s*(?:N\d+\s+)?(?:MCALL\s+)?)(?P<cycle>[A-Z_][A-Z0-9_]*)\s*\((?P<args>[^()]*)\)"
+    r"^(?P<head>\s*(?:N\d+\s+)?(?P<mcall>MCALL\s+)?)(?P<cycle>[A-Z_][A-Z0-9_]*)\s*\((?P<args>[^()]*)\)"
     r"(?P<tail>\s*(?:;.*)?)$",
     re.IGNORECASE,
 )
+_MCALL_ONLY = re.compile(r"^(?P<head>\s*(?:N\d+\s+)?)MCALL(?P<tail>\s*(?:;.*)?)$", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -102,48 +191,101 @@ class CallLine:
         return f"{self.head}{call}{self.tail}"
 
 
-def read_call(line: str, menu: str) -> CallLine | str | None:
-    """The call of a form of ``menu`` on ``line``; a reason when the form cannot show it.
+def read_call(line: str) -> CallLine | str | None:
+    """The call of a cycle with a form on ``line``; a reason when the form cannot show it.
 
-    None: the line calls no cycle of this menu (the softkey opens a new form). Empty
-    arguments take the default; a value that is not a plain number (a variable, an
-    expression) cannot be shown in a form.
+    None: the line calls no cycle that has a form. Empty arguments stay empty (not
+    programmed); a value that is not a plain number (a variable, an expression) cannot be
+    shown in a form.
     """
     match = _CALL.match(line)
     if match is None:
         return None
     form = cycle_forms().get(match["cycle"].upper())
-    if form is None or form.menu != menu:
+    if form is None:
         return None
-    args = [a.strip() for a in match["args"].split(",")] if match["args"].strip() else []
+    args = _split_args(match["args"])
     if len(args) > len(form.params):
         return f"{form.cycle}: more than {len(form.params)} parameters, the form cannot show the call"
-    texts = form.defaults()
+    texts = [""] * len(form.params) if args else form.defaults()
     for index, arg in enumerate(args):
-        if not arg:
-            continue
-        try:
-            float(arg)
-        except ValueError:
-            return f"{form.params[index].name} = {arg} is not a number: the form cannot show the call"
-        texts[index] = arg
+        text = form.params[index].field_text(arg)
+        if text is None:
+            return f"{form.params[index].name} = {arg} cannot be shown in the form"
+        texts[index] = text
     return CallLine(form, match["head"], texts, match["tail"])
 
 
-def _form(name: str, entry: dict) -> CycleForm:
+def called_cycle(line: str) -> str | None:
+    """The name of the cycle (upper case) that ``line`` calls, None when it calls none."""
+    match = _CALL.match(line)
+    return match["cycle"].upper() if match is not None else None
+
+
+def modal_call_toggled(line: str) -> str | None:
+    """``line`` with its modal call switched: a drilling call gets / loses ``MCALL``.
+
+    None when the line holds neither a call of a cycle that may be called modally nor a
+    lone ``MCALL`` (the caller inserts a new ``MCALL`` line: modal call off).
+    """
+    match = _CALL.match(line)
+    if match is not None and match["cycle"].upper() in _modal_cycles():
+        start, end = match.span("mcall")
+        if match["mcall"]:
+            return line[:start] + line[end:]
+        return f"{line[:match.start('cycle')]}MCALL {line[match.start('cycle'):]}"
+    return None
+
+
+def is_modal_call_off(line: str) -> bool:
+    """True when ``line`` is a lone ``MCALL`` (the modal call switched off)."""
+    return _MCALL_ONLY.match(line) is not None
+
+
+@cache
+def _modal_cycles() -> frozenset[str]:
+    """The cycles of the menus that have a modal call key (the drilling cycles)."""
+    drilling = {c for menu in cycle_menus() if any(k.mcall for k in menu.keys) for c in menu.cycles()}
+    positions = set(load_toml("cycles", "cycles.toml").get("modal_call", {}).get("passed_into", ()))
+    return frozenset(drilling - positions)
+
+
+def _split_args(args: str) -> list[str]:
+    """The arguments of a call, split at the commas outside quotes, stripped."""
+    if not args.strip():
+        return []
+    parts, current, quoted = [], "", False
+    for char in args:
+        if char == '"':
+            quoted = not quoted
+        if char == "," and not quoted:
+            parts.append(current.strip())
+            current = ""
+        else:
+            current += char
+    return [*parts, current.strip()]
+
+
+def _form(name: str, entry: dict, sketches: dict) -> CycleForm:
     params = tuple(
         CycleParam(
-            name=p["name"], unit=p.get("unit", ""), help=p["help"], default=float(p["default"]),
+            name=p["name"], unit=p.get("unit", ""), help=p["help"], default=_default_text(p["default"]),
             min_value=p.get("min"), max_value=p.get("max"), choices=tuple(p.get("choices", ())),
+            integer=bool(p.get("integer", False)), kind=p.get("kind", "number"),
         )
         for p in entry["params"]
     )
-    return CycleForm(name, entry["menu"], entry["title"], entry["sketch"].strip("\n"), params)
+    sketch = sketches.get(entry["sketch"], entry["sketch"])
+    return CycleForm(name, entry["title"], entry.get("key", name), sketch.strip("\n"), params)
 
 
-def _number(value: float | None) -> str:
+def _default_text(default: float | int | str) -> str:
+    return default if isinstance(default, str) else number_text(float(default))
+
+
+def number_text(value: float | None) -> str:
     """A value as the call line writes it: no trailing zeros, integers without a point."""
     if value is None:
         return ""
-    text = f"{value:.4f}".rstrip("0").rstrip(".")
+    text = f"{value:.6f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text

@@ -194,7 +194,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
                 Softkey("program.end", "End of\nprogram", "cursor_end", enabled=has_program),
                 Softkey("program.undo", "Undo", "undo", enabled=writable),
                 Softkey("program.redo", "Redo", "redo", enabled=writable),
-                Softkey("program.drilling", "Drilling", "cycle_form('drilling')", enabled=writable),
+                Softkey("program.cycles", "Cycles /\nRecompile", "cycles", enabled=writable),
                 Softkey("program.restore", "Restore\nunsaved", "offer_restore_any"),
             ],
         )

@@ -8,6 +8,7 @@ import pytest
 
 from nck.commands import SetKeyswitch
 from nck.kernel import Nck
+from nck.machine import load_machine
 
 from hmi.app import HmiApp
 from nck import programs_in_execution
@@ -42,6 +43,15 @@ def make_program_app(root: Path, referenced: bool = True, keyswitch: int = 3) ->
     files = nc_files(root)
     nck = Nck(programs=files, referenced=referenced)
     nck.submit(SetKeyswitch(keyswitch))
+    files.in_use_check = lambda: programs_in_execution(nck.status())
+    return HmiApp(nck, realtime=False)
+
+
+def lathe_program_app(root: Path) -> HmiApp:
+    """As :func:`make_program_app`, on the lathe ``lathe2``."""
+    files = nc_files(root)
+    nck = Nck(machine=load_machine("lathe2"), programs=files, referenced=True)
+    nck.submit(SetKeyswitch(3))
     files.in_use_check = lambda: programs_in_execution(nck.status())
     return HmiApp(nck, realtime=False)
 

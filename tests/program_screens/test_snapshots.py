@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.program_screens.conftest import SIZE, make_program_app, settle
+from tests.program_screens.conftest import SIZE, lathe_program_app, make_program_app, settle
 
 PINNED_NS = 1_790_000_000 * 10**9  # 2026-09-21 14:13 UTC
 
@@ -90,13 +90,66 @@ def test_simulation_top_view(snap_compare, pinned: Path) -> None:
 
 
 def test_cycle_form_drilling(snap_compare, pinned: Path) -> None:
-    """Drilling softkey → CYCLE83 form: parameters with units and ranges, help and sketch of DAM."""
+    """Cycles, Deep hole drilling → CYCLE83 form: parameters with units and ranges, help and sketch of DAM."""
     app = make_program_app(pinned)
 
     async def run_before(pilot) -> None:
-        await pilot.press("alt+n", "f3", "shift+f7", "down", "down", "enter")  # CYCLE83
+        await pilot.press("alt+n", "f3", "shift+f7", "shift+f3")  # CYCLE83
         await pilot.pause()
         await pilot.press(*["down"] * 7)  # cursor on DAM
+        await pilot.pause()
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_cycle_level_drilling_keys(snap_compare, pinned: Path) -> None:
+    """Shift+F7 Cycles: F1 Drilling pressed, F2 Milling, F3 Turning greyed (a mill), F8 Back;
+    the drilling keys on the vertical bar."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        await pilot.press("shift+f7")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_cycle_level_positions_sub_level(snap_compare, pinned: Path) -> None:
+    """Drilling, Positions: Line, Circle, Grid, Any positions and << Back on the vertical bar."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        await pilot.press("shift+f7", "shift+f6")
+        await settle(pilot)
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_cycle_form_milling_long(snap_compare, pinned: Path) -> None:
+    """Milling, Pocket, Rectangular pocket: a form longer than its window scrolls with the cursor (_RAD1)."""
+    app = make_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3", "shift+f7", "f2", "shift+f2", "shift+f1")  # POCKET3
+        await pilot.pause()
+        await pilot.press(*["down"] * 21)  # cursor on _RAD1
+        await pilot.pause()
+
+    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_cycle_form_turning_lathe(snap_compare, pinned: Path) -> None:
+    """On the lathe: Turning, Stock removal → CYCLE95 form with the contour's program name first."""
+    app = lathe_program_app(pinned)
+
+    async def run_before(pilot) -> None:
+        await pilot.press("alt+n", "f3", "shift+f7", "f3", "shift+f1")  # CYCLE95
+        await pilot.pause()
+        await pilot.press("down")  # cursor on MID
         await pilot.pause()
 
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)

@@ -1,0 +1,87 @@
+"""Every cycle form, as an operator uses it: softkeys to the form, a value typed into every
+field, OK → the call line at the cursor → Recompile (the same line reopens with those values)
+(the cycle's softkey again, with the cursor on the call) → OK → the line is unchanged (issue 23, Operate's programGUIDE).
+
+The cycle level and its keys are the editor's (docs/screens_added.md "Program editor: cycle
+input forms"): Shift+F7 Cycles, F1 Drilling / F2 Milling / F3 Turning, Shift+F<n> the n-th key
+of the menu, Shift+F<m> the m-th cycle of a key that holds several. The expected call line is
+the cycle name and the typed values in the order of the parameter list
+(data/cycles/README.md, from the PGZ), a program name in quotes.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hmi.app import HmiApp
+from hmi.cycle_form_dialog import CycleFormDialog
+from hmi.cycle_forms import CycleParam, cycle_forms, cycle_menus
+from tests.burst import burst
+from tests.program_screens.conftest import SIZE, lathe_program_app, make_program_app
+
+PROGRAM = "N10 G0 X0\nN20 M30\n"
+
+
+def keys_to_form(cycle: str) -> list[str]:
+    """Shift+F7, the menu's horizontal softkey, the key's vertical softkey (and the sub-level's)."""
+    for menu_index, menu in enumerate(cycle_menus()):
+        for key_index, key in enumerate(menu.keys):
+            if cycle in key.cycles:
+                keys = ["shift+f7", f"f{menu_index + 1}", f"shift+f{key_index + 1}"]
+                if len(key.cycles) > 1:
+                    keys.append(f"shift+f{key.cycles.index(cycle) + 1}")
+                return keys
+    raise AssertionError(f"{cycle} has no softkey")
+
+
+def typed_value(param: CycleParam, index: int) -> str:
+    """A value of the parameter's range that differs from field to field (its position + 0.25)."""
+    if param.kind == "name":
+        return "SHAFT_CONTOUR"
+    if param.choices:
+        return str(param.choices[-1])
+    value = 2.0 if param.integer else index + 1.25
+    if param.max_value is not None:
+        value = min(value, param.max_value)
+    if param.min_value is not None:
+        value = max(value, param.min_value)
+    return str(int(value)) if value == int(value) else str(value)
+
+
+def _app(root: Path, cycle: str) -> HmiApp:
+    """The mill for drilling and milling, the lathe for the turning cycles."""
+    on_lathe = any(cycle in menu.cycles() for menu in cycle_menus() if menu.machine == "lathe")
+    return lathe_program_app(root) if on_lathe else make_program_app(root)
+
+
+@pytest.mark.parametrize("cycle", sorted(cycle_forms()))
+async def test_form_call_line_and_recompile_round_trip(cycle: str, data_dir: Path) -> None:
+    """Type a value into every field; the call line holds them in order; Recompile gives them back."""
+    (data_dir / "MPF" / "DEMO.MPF").write_text(PROGRAM)
+    form = cycle_forms()[cycle]
+    values = [typed_value(param, index) for index, param in enumerate(form.params)]
+    app = _app(data_dir, cycle)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "f3", "down")  # open DEMO.MPF, cursor on N20
+        await pilot.pause()
+        editor = app.screen.editor
+        await burst(pilot, *keys_to_form(cycle))
+        await pilot.pause()
+        dialog = app.screen
+        assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle
+        for value in values:
+            await burst(pilot, *value, "enter")
+        await pilot.pause()
+        args = [f'"{v}"' if p.kind == "name" else v for p, v in zip(form.params, values)]
+        call = f"{cycle}({','.join(args)})"
+        assert editor.text == f"N10 G0 X0\n{call}\nN20 M30\n"
+        await burst(pilot, *keys_to_form(cycle)[1:])  # the same softkey on the call: Recompile
+        await pilot.pause()
+        dialog = app.screen
+        assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle
+        assert [field.value for field in dialog.fields()] == values
+        await burst(pilot, *["enter"] * len(values))
+        await pilot.pause()
+        assert editor.text == f"N10 G0 X0\n{call}\nN20 M30\n"
