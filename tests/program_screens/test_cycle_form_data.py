@@ -37,15 +37,22 @@ def test_menus_group_the_cycles_as_operate() -> None:
     assert [f.cycle for f in forms_of_menu("turning")][:2] == ["CYCLE95", "CYCLE93"]
 
 
+LEFT_OUT = {  # the 828D mode words the cycles accept and do not use (cycles.toml, forms)
+    "CYCLE81": ["_GMODE", "_DMODE", "_AMODE"],
+    "CYCLE82": ["_GMODE", "_DMODE", "_AMODE"],
+    "CYCLE61": ["_LIM", "_GMODE", "_DMODE", "_AMODE"],
+}
+
+
 @pytest.mark.parametrize("cycle", sorted(cycle_forms()))
 def test_form_parameters_are_the_cycles_parameters_in_order(cycle: str) -> None:
-    """Each form lists the PROC's parameters of the cycle's NC program from the first, in order."""
+    """Each form lists every PROC parameter of the cycle's NC program in order (but the unused mode words)."""
     proc = re.search(r"PROC\s+\w+\s*\(([^)]*)\)", (CYCLES_DIR / f"{cycle}.SPF").read_text())
     assert proc is not None
     names = [declaration.split()[-1] for declaration in proc[1].split(",")]
     types = [declaration.split()[0].upper() for declaration in proc[1].split(",")]
     params = cycle_forms()[cycle].params
-    assert [p.name for p in params] == names[:len(params)]
+    assert [p.name for p in params] + LEFT_OUT.get(cycle, []) == names
     for param, kind in zip(params, types):
         assert (param.kind == "name") == kind.startswith("STRING"), param.name
         if kind == "INT":
