@@ -339,10 +339,14 @@ class PathBuilder:
         }
         start_mcs = dict(modal.position_mcs)
         geo.wcs_mm = end
+        held_before = geo.pending is not None
         out = path_aids.with_contour_aids(self, words, geo, pl, element, context, start_mcs, units)
         geo.tangent = end_tangent(element)
         modal.position_wcs = self.wcs_view(geo, modal)
-        modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
+        if not held_before and geo.pending is None and len(out) == 1:
+            modal.position_mcs = dict(out[0].end_mcs)  # the element itself went out: its end, computed once
+        else:
+            modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
         return out
 
     # ---------------------------------------------------------------- targets
