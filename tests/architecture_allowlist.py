@@ -11,19 +11,6 @@ LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset()
 
 CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
     {
-        # circle of 6 interpreter modules: block_run, frames and plain_* type against Interpreter
-        ("nck.interp.block_run", "nck.interp.frames"),
-        ("nck.interp.block_run", "nck.interp.interpreter"),
-        ("nck.interp.frames", "nck.interp.interpreter"),
-        ("nck.interp.interpreter", "nck.interp.block_run"),
-        ("nck.interp.interpreter", "nck.interp.frames"),
-        ("nck.interp.interpreter", "nck.interp.plain_run"),
-        ("nck.interp.interpreter", "nck.interp.plain_step"),
-        ("nck.interp.plain_run", "nck.interp.interpreter"),
-        ("nck.interp.plain_run", "nck.interp.plain_setup"),
-        ("nck.interp.plain_setup", "nck.interp.interpreter"),
-        ("nck.interp.plain_step", "nck.interp.interpreter"),
-        ("nck.interp.plain_step", "nck.interp.plain_setup"),
         # circle of 4 ISO modules: the translator recurses through macros and turning cycles
         ("nck.iso.dwell", "nck.iso.translate"),
         ("nck.iso.macros", "nck.iso.translate"),

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from nck import canon
 from nck.errors import NcAlarmError
@@ -27,7 +27,8 @@ from nck.alarm_ids import (
 from nck.interp import sysvars
 from nck.interp.contour_table import ROW_WIDTH, contour_rows
 from nck.interp.evaluator import equal, evaluate
-from nck.interp.frames import Binding, ElemRef, Frame, RRef, VariableScope, journal_cell, write_binding
+from nck.interp.call_stack import Binding, ElemRef, Frame, RRef, VariableScope, journal_cell, write_binding
+from nck.interp.host import InterpreterHost
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
 from nck.interp.returns import prepare_return, resume_caller, return_target
@@ -37,8 +38,6 @@ from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES
 from nck.resources import load_toml
 
-if TYPE_CHECKING:
-    from nck.interp.interpreter import Interpreter
 
 MAX_PROGRAM_LEVELS = 16  # main program + 15 subprogram levels (alarm 14012 beyond)
 MAX_PASSES = 9999
@@ -52,7 +51,7 @@ SPINDLE_POSITION_WORDS = frozenset(("SPOS", "SPOSA"))  # also DC()/ACP()/ACN() (
 class BlockRun:
     """Executes the statements of one block (created per block)."""
 
-    def __init__(self, interp: Interpreter, frame: Frame, index: int, source: canon.Source) -> None:
+    def __init__(self, interp: InterpreterHost, frame: Frame, index: int, source: canon.Source) -> None:
         self.interp = interp
         self.frame = frame
         self.index = index
@@ -708,7 +707,7 @@ def _unflatten(flat: int, dims: tuple[int, ...]) -> tuple[int, ...]:
     return tuple(reversed(out))
 
 
-def _program_cache(interp: Interpreter, name: str, text: str) -> Program:
+def _program_cache(interp: InterpreterHost, name: str, text: str) -> Program:
     cache: dict[tuple[str, str], Program] = interp.__dict__.setdefault("_programs", {})
     key = (name, text)
     program = cache.get(key)

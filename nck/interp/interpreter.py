@@ -50,9 +50,11 @@ from nck.interp.block_run import (  # noqa: F401 - re-exported language limits
     MAX_PASSES, MAX_PROGRAM_LEVELS, PROGRAM_CONTROL_M, BlockRun,
 )
 from nck.interp.evaluator import evaluate
-from nck.interp.frames import Binding, Frame, GudRef, VariableScope
+from nck.interp.call_stack import Binding, Frame, GudRef, VariableScope
+from nck.interp.host import RunState
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import MotionBuilder
+from nck.interp.plain_run import plan
 from nck.interp.plain_step import step_plain
 from nck.interp.program import load_program
 from nck.interp.values import convert, to_number
@@ -65,17 +67,6 @@ from nck.status import ModalView
 from nck.writes import ValueOutOfLimits, check_tool_value
 
 BLOCK_COST_S = 0.001  # simulated time one interpreted block costs (1 ms)
-
-
-@dataclass
-class _State:
-    """Everything the interpreter changes; copied before each block."""
-
-    modal: ModalState
-    frames: list[Frame] = field(default_factory=list)
-    finished: bool = True
-    blocks: int = 0
-    message: str = ""
 
 
 @dataclass
@@ -116,7 +107,7 @@ class Interpreter:
         # protection level the program runs with (setting-data writes); the kernel installs its own
         self.access_level: Callable[[], int] = lambda: LEVEL_FEWEST_RIGHTS
         self._axis_names = frozenset(a.name for a in machine.axes)
-        self._state = _State(modal=ModalState.initial(machine, self.table))
+        self._state = RunState(modal=ModalState.initial(machine, self.table))
         self._journal: list[tuple[str, Any, Any]] = []
         self._skip_run: tuple[int, bool] | None = None
 
@@ -314,7 +305,6 @@ class Interpreter:
         """
         if not self.fast_path:
             return None
-        from nck.interp.plain_run import plan
 
         return plan(self, max_blocks)
 

@@ -27,17 +27,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from nck.geometry.contour_aids import LineElement
 from nck.geometry.path_builder import end_tangent
+from nck.interp.host import InterpreterHost
 from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, r_round, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_WORDS
-
-if TYPE_CHECKING:
-    from nck.interp.interpreter import Interpreter
 
 BATCH_LINES = 32_768
 """At most this many blocks per batch (bounds the memory of the arrays)."""
@@ -114,7 +112,7 @@ class PlainBatch:
         return int(np.searchsorted(self.motion_line, count - 1, side="right")) if count > 0 else 0
 
 
-def plan(interp: Interpreter, max_blocks: int) -> PlainBatch | None:
+def plan(interp: InterpreterHost, max_blocks: int) -> PlainBatch | None:
     """The batch of plain blocks from the current position, or None (the general path goes on)."""
     found = plain_frame(interp) if max_blocks > 0 else None
     if found is None:
@@ -199,7 +197,7 @@ def _words(chunk: str, count: int) -> _Words | None:
                                      _axis_floats(columns[3])), _floats(columns[4]), first_executable)
 
 
-def _plan_words(interp: Interpreter, setup: Setup, first: int, words: _Words) -> PlainBatch | None:
+def _plan_words(interp: InterpreterHost, setup: Setup, first: int, words: _Words) -> PlainBatch | None:
     count = words.motion.size
     # Cut before the first block the general path must take.
     cut = count

@@ -12,16 +12,13 @@ programmed point: :mod:`nck.interp.plain_run` (batches) and
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
-
+from typing import Any
 
 from nck.errors import NcAlarmError
 from nck.geometry.trc_canon import STAGE_ATTRIBUTE
 from nck.geometry.units import UnitSystem
+from nck.interp.host import InterpreterHost
 from nck.lang.lines import TextLines
-
-if TYPE_CHECKING:
-    from nck.interp.interpreter import Interpreter
 
 GEOMETRY = ("X", "Y", "Z")
 BLOCK_COST_S = 0.001  # the interpreter's cost of one block (nck.interp.interpreter.BLOCK_COST_S)
@@ -56,7 +53,7 @@ class MachineAxes:
     diameter: tuple[bool, ...]  # per path axis: programmed in diameter under DIAMON
 
 
-def machine_axes(interp: Interpreter) -> MachineAxes:
+def machine_axes(interp: InterpreterHost) -> MachineAxes:
     cached = interp.__dict__.get("_plain_machine")
     if cached is None:
         path = interp.builder.path
@@ -69,7 +66,7 @@ def machine_axes(interp: Interpreter) -> MachineAxes:
     return cached
 
 
-def plain_frame(interp: Interpreter) -> tuple[Any, Any] | None:
+def plain_frame(interp: InterpreterHost) -> tuple[Any, Any] | None:
     """The running frame and its scanned program lines, when the plain path may run there.
 
     Only a streamed Siemens program (:class:`TextLines`) without a modal call or
@@ -85,7 +82,7 @@ def plain_frame(interp: Interpreter) -> tuple[Any, Any] | None:
     return frame, lines
 
 
-def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None:
+def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | None:
     """The constants of the batch when the modal state is simple, else None.
 
     ``motion`` is the G0/G1 the block itself programs: it replaces the modal
@@ -145,7 +142,7 @@ def simple_setup(interp: Interpreter, motion: str | None = None) -> Setup | None
     )
 
 
-def _units(interp: Interpreter, code: str) -> tuple[float, float]:
+def _units(interp: InterpreterHost, code: str) -> tuple[float, float]:
     """(position_mm, feed_mm) of G group 13 member ``code`` (cached per interpreter)."""
     table = interp.__dict__.setdefault("_plain_units", {})
     found = table.get(code)

@@ -10,21 +10,17 @@ would raise an alarm) returns None, and the general path interprets it.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from nck import canon
 from nck.geometry.contour_aids import LineElement
 from nck.geometry.path_builder import end_tangent
 from nck.interp.api import BlockResult
+from nck.interp.host import InterpreterHost
 from nck.interp.plain_setup import (BLOCK_COST_S, GEOMETRY, Setup, machine_axes, plain_frame, r_round,
                                     simple_setup)
 from nck.lang.plain import G_CODES, PLAIN_LINE, axis_value, feed_value
 
-if TYPE_CHECKING:
-    from nck.interp.interpreter import Interpreter
 
-
-def step_plain(interp: Interpreter) -> BlockResult | None:
+def step_plain(interp: InterpreterHost) -> BlockResult | None:
     """Interpret the next block if it is plain and the state simple (else None: the general path).
 
     Gives exactly the general path's :class:`BlockResult` (the same canonical
@@ -82,7 +78,7 @@ def step_plain(interp: Interpreter) -> BlockResult | None:
     )
 
 
-def _move(interp: Interpreter, setup: Setup, source: canon.Source, kind: int,
+def _move(interp: InterpreterHost, setup: Setup, source: canon.Source, kind: int,
           texts: tuple[str | None, str | None, str | None]) -> canon.Motion:
     """The motion of one plain block; updates the modal state like the path builder."""
     modal = interp.modal
@@ -125,7 +121,7 @@ def _move(interp: Interpreter, setup: Setup, source: canon.Source, kind: int,
     )
 
 
-def _reported_wcs(interp: Interpreter, setup: Setup, texts: tuple[str | None, str | None, str | None],
+def _reported_wcs(interp: InterpreterHost, setup: Setup, texts: tuple[str | None, str | None, str | None],
                   end_mm: dict[str, float], end_mcs: dict[str, float]) -> dict[str, float]:
     """The block's WCS end as reported: an axis it does not program stands where it is, seen
     through the active frame (the path builder's ``_report_actual``)."""
@@ -140,7 +136,7 @@ def _reported_wcs(interp: Interpreter, setup: Setup, texts: tuple[str | None, st
     return dict(interp.modal.position_wcs) if reported is end_mm else _wcs_view(interp, setup, reported)
 
 
-def _wcs_view(interp: Interpreter, setup: Setup, wcs_mm: dict[str, float]) -> dict[str, float]:
+def _wcs_view(interp: InterpreterHost, setup: Setup, wcs_mm: dict[str, float]) -> dict[str, float]:
     """The path builder's ``wcs_view``: program units per path axis, rounded."""
     machine = machine_axes(interp)
     out: dict[str, float] = {}

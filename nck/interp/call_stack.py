@@ -1,4 +1,4 @@
-"""Call frames and variable bindings of the interpreter.
+"""Call frames (the levels of the call stack) and variable bindings of the interpreter.
 
 A :class:`Frame` is one program level (main program or subprogram) with its
 program counter and local variables. Variables are reached through bindings:
@@ -12,7 +12,7 @@ journals the old value so that a failing block can be undone.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any, Callable, Protocol
 
 from nck.alarm_ids import (
     DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED, OPERATION_DOES_NOT_FIT_TYPE,
@@ -21,9 +21,7 @@ from nck.errors import NcAlarmError
 from nck.interp import sysvars
 from nck.interp.program import Program
 from nck.interp.values import Axis, Cell, convert, to_number
-
-if TYPE_CHECKING:
-    from nck.interp.interpreter import Interpreter
+from nck.ncdata import NcData
 
 @dataclass
 class RRef:
@@ -74,12 +72,37 @@ class Frame:
     repeats: list[tuple[int, int, int, int]] = field(default_factory=list)
 
 
+class VariableHost(Protocol):
+    """What variable access needs of the interpreter."""
+
+    data: NcData
+    access_level: Callable[[], int]
+    """The protection level the program runs with (GUD access rights)."""
+    _journal: list[tuple[str, Any, Any]]
+    """Old values of the current block's writes (undone if the block fails)."""
+
+    def lookup(self, name: str) -> Binding | None:
+        """The binding of a variable name at the current level (None: not a variable)."""
+
+    def is_axis(self, name: str) -> bool:
+        """True if ``name`` is an axis of the channel."""
+
+    def r_index(self, index: Any) -> int:
+        """A valid R parameter index (alarm otherwise)."""
+
+    def write_r(self, index: Any, value: Any) -> None:
+        """Write an R parameter (journaled)."""
+
+    def write_gud(self, name: str, value: Any) -> None:
+        """Write a global user datum (journaled)."""
+
+
 class VariableScope:
     """Variable access for expressions (see :class:`nck.interp.evaluator.Scope`)."""
 
     __slots__ = ("interp",)
 
-    def __init__(self, interp: Interpreter) -> None:
+    def __init__(self, interp: VariableHost) -> None:
         self.interp = interp
 
     def read_r(self, index: Any) -> float:
@@ -116,7 +139,7 @@ class VariableScope:
         return self.interp.lookup(name) is not None
 
 
-def journal_cell(interp: Interpreter, cell: Cell, indices: tuple[Any, ...]) -> None:
+def journal_cell(interp: VariableHost, cell: Cell, indices: tuple[Any, ...]) -> None:
     """Record the old value of a variable (or one array element) before a write."""
     if cell.dims:
         offset = cell.offset(indices)
@@ -125,7 +148,7 @@ def journal_cell(interp: Interpreter, cell: Cell, indices: tuple[Any, ...]) -> N
         interp._journal.append(("cell", (cell, None), cell.value))
 
 
-def read_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...]) -> Any:
+def read_binding(interp: VariableHost, binding: Binding, indices: tuple[Any, ...]) -> Any:
     """Read through a variable binding."""
     if isinstance(binding, Cell):
         if binding.dims and not indices:
@@ -153,7 +176,7 @@ def read_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...]
     return value
 
 
-def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...], value: Any) -> None:
+def write_binding(interp: VariableHost, binding: Binding, indices: tuple[Any, ...], value: Any) -> None:
     """Write through a variable binding (converted to the variable's type)."""
     if isinstance(binding, Cell):
         if binding.dims and not indices:
@@ -189,7 +212,7 @@ def write_binding(interp: Interpreter, binding: Binding, indices: tuple[Any, ...
         interp.write_gud(binding.name, _like(current, value, binding.name))
 
 
-def check_gud_access(interp: Interpreter, name: str, kind: str) -> None:
+def check_gud_access(interp: VariableHost, name: str, kind: str) -> None:
     """A GUD protected by APRP/APWP (004 L428-429) may be read/written by a part program only
     when the protection level it runs with is that level or one with more rights: else 17070.
     (The manuals name no separate alarm for a read-protected variable; 17070 says "read".)"""
