@@ -4,7 +4,7 @@ The tool is a :class:`ToolBody`: a cutter is a cylinder standing on its tip (rad
 the cutting edge, length L1 up the tool axis Z), a 3D probe (tool type 710) a ball whose
 centre is the tip point (its length is to the ball centre: ``nck.measuring``); a turning
 tool is a ball of its cutting-edge radius. Solids are the blank and the reference block
-of :mod:`nck.workpiece` (boxes parallel to the axes, cylinders along Z).
+of :mod:`nck.workpiece` (boxes, parallel to the axes or turned about Z; cylinders along Z).
 
 :func:`clearance` is a gap function ``g(tip)``: positive apart, ≤ 0 in contact (its
 negative is how deep: a signed distance), never larger than the distance the tip must
@@ -47,8 +47,18 @@ def _signed(outside: tuple[float, ...]) -> float:
     return beyond + min(max(outside), 0.0)
 
 
+def _in_box_frame(box: Box, tip: Point) -> Point:
+    """The tip turned back about the box's centre: in that frame its faces are parallel to the
+    axes. A rotation about Z keeps distances and the cutter's axis, so the gap stays exact."""
+    if not box.rotation_z_deg:
+        return tip
+    (cx, cy), angle = box.centre_xy_mcs, math.radians(box.rotation_z_deg)
+    dx, dy, cos, sin = tip[0] - cx, tip[1] - cy, math.cos(angle), math.sin(angle)
+    return (cx + dx * cos + dy * sin, cy - dx * sin + dy * cos, tip[2])
+
+
 def _box_gap(body: ToolBody, box: Box, tip: Point) -> float:
-    (x, y, z), (lx, ly, lz), (hx, hy, hz) = tip, box.low_mcs, box.high_mcs
+    (x, y, z), (lx, ly, lz), (hx, hy, hz) = _in_box_frame(box, tip), box.low_mcs, box.high_mcs
     qx, qy = max(lx - x, x - hx), max(ly - y, y - hy)
     if body.shape == BALL:
         return _signed((qx, qy, max(lz - z, z - hz))) - body.radius_mm

@@ -6,7 +6,9 @@ hides its position from the trainee, field by field. A field is ``part.item``:
 * ``blank.shape`` — ``box``, ``cylinder`` or ``none``; ``reference.shape`` — ``box`` or ``none``;
 * ``blank.x`` / ``.y`` / ``.z`` — where it stands in the MCS: a box's smallest corner, a
   cylinder's lower (lathe: chuck-side) face centre; the size stays when the position changes;
-* ``blank.size_x`` / ``.size_y`` / ``.size_z`` (box), ``blank.diameter`` / ``.length`` (cylinder);
+* ``blank.size_x`` / ``.size_y`` / ``.size_z`` and ``blank.rotation_z`` (box: degrees about the
+  vertical axis through its centre, a blank clamped at an angle), ``blank.diameter`` /
+  ``.length`` (cylinder);
 * the same position and size fields for ``reference`` (always a box);
 * ``hidden`` — ``yes`` / ``no`` (also ``1`` / ``0``, ``on`` / ``off``): the trainee is not shown
   the blank's position and size.
@@ -56,7 +58,8 @@ def _measures(solid: Solid | None) -> list[tuple[str, str, float]]:
     if isinstance(solid, Box):
         return ([(a, f"Position {a.upper()} (smallest corner)", solid.low_mcs[i]) for i, a in enumerate(AXES)]
                 + [(f"size_{a}", f"Size {a.upper()}", solid.high_mcs[i] - solid.low_mcs[i])
-                   for i, a in enumerate(AXES)])
+                   for i, a in enumerate(AXES)]
+                + [("rotation_z", "Rotation about Z (about its centre)", solid.rotation_z_deg)])
     if isinstance(solid, Cylinder):
         return ([(a, f"Position {a.upper()} (lower face centre)", solid.base_mcs[i]) for i, a in enumerate(AXES)]
                 + [("diameter", "Diameter", solid.diameter_mm), ("length", "Length", solid.length_mm)])
@@ -69,7 +72,8 @@ def setup_fields(setup: MachineSetup) -> list[SetupField]:
     for part, title in (("blank", "Blank"), ("reference", "Reference block")):
         solid = getattr(setup, part)
         fields.append(SetupField(f"{part}.shape", f"{title}: shape", shape_of(solid), "", False))
-        fields += [SetupField(f"{part}.{item}", f"{title}: {label}", trimmed(value, 3), "mm", part == "blank")
+        fields += [SetupField(f"{part}.{item}", f"{title}: {label}", trimmed(value, 3),
+                              "deg" if item == "rotation_z" else "mm", part == "blank")
                    for item, label, value in _measures(solid)]
     fields.append(SetupField("hidden", "Blank hidden from the trainee", "yes" if setup.hidden else "no", "", False))
     return fields
@@ -118,13 +122,16 @@ def _number(name: str, text: str) -> float:
 
 
 def _changed(solid: Solid | None, item: str, value: float, name: str) -> Solid:
+    if item == "rotation_z":
+        assert isinstance(solid, Box)
+        return replace(solid, rotation_z_deg=value)
     if item in AXES:
         index = AXES.index(item)
         if isinstance(solid, Box):
             moved = list(solid.low_mcs)
             moved[index] = value
             size = [h - lo for lo, h in zip(solid.low_mcs, solid.high_mcs)]
-            return Box(_point(moved), _point([m + s for m, s in zip(moved, size)]))
+            return Box(_point(moved), _point([m + s for m, s in zip(moved, size)]), solid.rotation_z_deg)
         assert isinstance(solid, Cylinder)
         base = list(solid.base_mcs)
         base[index] = value
@@ -135,7 +142,7 @@ def _changed(solid: Solid | None, item: str, value: float, name: str) -> Solid:
         index = AXES.index(item.removeprefix("size_"))
         high = list(solid.high_mcs)
         high[index] = solid.low_mcs[index] + value
-        return Box(solid.low_mcs, _point(high))
+        return Box(solid.low_mcs, _point(high), solid.rotation_z_deg)
     assert isinstance(solid, Cylinder)
     return replace(solid, diameter_mm=value) if item == "diameter" else replace(solid, length_mm=value)
 

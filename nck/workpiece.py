@@ -6,8 +6,10 @@ contacts with these solids, :mod:`nck.persistence` keeps them in the retained da
 stock. All coordinates are machine coordinates (MCS) of the geometry axes X, Y, Z in
 mm; a lathe has no Y axis, its Y coordinate is 0.
 
-* :class:`Box` — a rectangular blank or block, faces parallel to the axes, given by
-  its smallest and its largest corner.
+* :class:`Box` — a rectangular blank or block given by its smallest and its largest
+  corner, faces parallel to the axes or turned about Z by ``rotation_z_deg`` around the
+  centre of that rectangle (a blank clamped at an angle: what the rotated-corner measuring
+  finds).
 * :class:`Cylinder` — a round blank with its axis parallel to Z (on a mill standing on
   the table, on a lathe the bar in the chuck on the turning axis), given by the centre
   of its lower (lathe: chuck-side) face, its diameter and its length along Z.
@@ -36,10 +38,17 @@ Point = tuple[float, float, float]
 
 @dataclass(frozen=True, slots=True)
 class Box:
-    """A block with faces parallel to the axes: ``low_mcs`` ≤ points ≤ ``high_mcs`` (X, Y, Z)."""
+    """A block ``low_mcs`` ≤ points ≤ ``high_mcs`` (X, Y, Z), turned by ``rotation_z_deg``
+    (counter-clockwise seen from +Z) about the vertical axis through its centre."""
 
     low_mcs: Point
     high_mcs: Point
+    rotation_z_deg: float = 0.0
+
+    @property
+    def centre_xy_mcs(self) -> tuple[float, float]:
+        """The centre of the rectangle in X/Y, the point the box is turned about."""
+        return ((self.low_mcs[0] + self.high_mcs[0]) / 2.0, (self.low_mcs[1] + self.high_mcs[1]) / 2.0)
 
     @property
     def top_z_mcs(self) -> float:
@@ -104,7 +113,10 @@ def default_part_zero_mcs(machine_kind: str, setup: MachineSetup) -> dict[str, f
 def solid_to_plain(solid: Solid | None) -> dict[str, Any] | None:
     """A solid as JSON-ready data (``None`` stays ``None``)."""
     if isinstance(solid, Box):
-        return {"shape": "box", "low_mcs": list(solid.low_mcs), "high_mcs": list(solid.high_mcs)}
+        plain: dict[str, Any] = {"shape": "box", "low_mcs": list(solid.low_mcs), "high_mcs": list(solid.high_mcs)}
+        if solid.rotation_z_deg:
+            plain["rotation_z_deg"] = solid.rotation_z_deg
+        return plain
     if isinstance(solid, Cylinder):
         return {"shape": "cylinder", "base_mcs": list(solid.base_mcs), "diameter_mm": solid.diameter_mm,
                 "length_mm": solid.length_mm}
@@ -141,7 +153,7 @@ def solid_from_plain(data: Any) -> Solid | None:
         low, high = _point(data["low_mcs"]), _point(data["high_mcs"])
         if any(h <= lo for lo, h in zip(low, high)):
             raise ValueError("a box's high corner must lie above its low corner on every axis")
-        return Box(low, high)
+        return Box(low, high, _finite(data.get("rotation_z_deg", 0.0)))
     if shape == "cylinder":
         return Cylinder(_point(data["base_mcs"]), _positive(data["diameter_mm"], "diameter"),
                         _positive(data["length_mm"], "length"))
