@@ -9,17 +9,7 @@ from __future__ import annotations
 LAYER_BREAKS: frozenset[tuple[str, str]] = frozenset()
 """(importer, imported) pairs that break the layer contract."""
 
-CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset(
-    {
-        # circle of 4 ISO modules: the translator recurses through macros and turning cycles
-        ("nck.iso.dwell", "nck.iso.translate"),
-        ("nck.iso.macros", "nck.iso.translate"),
-        ("nck.iso.translate", "nck.iso.dwell"),
-        ("nck.iso.translate", "nck.iso.macros"),
-        ("nck.iso.translate", "nck.iso.turning"),
-        ("nck.iso.turning", "nck.iso.translate"),
-    }
-)
+CYCLE_EDGES: frozenset[tuple[str, str]] = frozenset()
 """Import edges that lie on a circle (inside a strongly connected component)."""
 
 PRIVATE_IMPORTS: frozenset[tuple[str, str, str]] = frozenset()

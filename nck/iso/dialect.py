@@ -19,7 +19,7 @@ from nck.iso import ISO_DIALECTS, display, frames, macros, subprograms, tool_off
 from nck.iso.loader import iso_lines, wants_iso
 from nck.iso.macros import substitution_tables
 from nck.iso.switching import start_unit
-from nck.iso.translate import IsoSettings
+from nck.iso.words import IsoSettings
 from nck.lang.dialect import CallLevel, GuessN, InterpreterContext, Located
 from nck.lang.lines import Line
 

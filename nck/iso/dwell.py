@@ -9,15 +9,12 @@ standard notation, 1000 in pocket-calculator notation).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from nck.alarm_ids import SYNTAX_ERROR, VALUE_RANGE_EXCEEDED
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso.lexing import Word
+from nck.iso.words import IsoSettings
 
-if TYPE_CHECKING:
-    from nck.iso.translate import IsoSettings
 
 REVOLUTIONS_BIT = 1 << 2  # MD 20734 bit 2
 INTERNAL_UNIT = 0.001

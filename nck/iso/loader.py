@@ -7,7 +7,8 @@ from typing import Callable
 
 from nck.errors import NcAlarmError
 from nck.iso import ISO_DIALECTS
-from nck.iso.translate import IsoSettings, translate
+from nck.iso.translate import translate
+from nck.iso.words import IsoSettings
 from nck.iso.skipping import AlarmBlock
 from nck.lang.lines import Line
 from nck.lang.parser import parse_block

@@ -41,7 +41,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any, Sequence
+from typing import Any, Sequence
 
 from nck.alarm_ids import (
     ADDRESS_PROGRAMMED_TWICE, DATA_WRITE_PROTECTED, G_FUNCTION_UNKNOWN, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED,
@@ -50,10 +50,8 @@ from nck.alarm_ids import (
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso.lexing import Word
+from nck.iso.words import SIMPLE_G, IsoSettings, TranslateWords, g_name
 from nck.lang.dialect import CallLevel, InterpreterContext
-
-if TYPE_CHECKING:
-    from nck.iso.translate import IsoSettings
 
 ALARM_TOO_MANY_CALLS = 12722
 MAX_IJK = 10
@@ -74,8 +72,6 @@ _ARRAYS = re.compile(r"^\$C_(?:[IJK]|[IJK]_ORDER)$")
 
 # ============================================================================ translation
 def _names(words: list[Word]) -> list[str]:
-    from nck.iso.translate import g_name
-
     return [g_name(w) for w in words if w.letter == "G"]
 
 
@@ -83,29 +79,30 @@ def _is_g05(code: str) -> bool:
     return code in ("G05", "G5.1")
 
 
-def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[str] | None:
-    """The Siemens blocks of a G65/G66/G67/G05 block, or None for any other block."""
+def macro_block(words: list[Word], modal: Any, settings: IsoSettings,
+                translate_words: TranslateWords) -> list[str] | None:
+    """The Siemens blocks of a G65/G66/G67/G05 block, or None for any other block.
+
+    ``translate_words`` translates the block's other words (:mod:`nck.iso.translate`)."""
     gcodes = _names(words)
     calls = [c for c in gcodes if c in ("G65", "G66") or _is_g05(c)]
     substitution = _substitution(words, gcodes, modal, settings)
     if substitution is not None:
         if calls or any(w.letter == "M" and w.value == 98 for w in words):
             raise NcAlarmError(ALARM_TOO_MANY_CALLS)
-        return _substituted(words, substitution, modal, settings)
+        return _substituted(words, substitution, modal, settings, translate_words)
     if not calls and "G67" not in gcodes:
-        return _m98_with_words(words, modal, settings)
+        return _m98_with_words(words, modal, settings, translate_words)
     if len(calls) + sum(1 for w in words if w.letter == "M" and w.value == 98) > 1:
         raise NcAlarmError(ALARM_TOO_MANY_CALLS)  # one call, macro or substitution per block
     number = ""
     if words and words[0].letter == "N":
         number = f"N{int(words[0].value)} "
     if "G67" in gcodes and not calls:
-        from nck.iso.translate import translate_block_words
-
         rest = [w for w in words if not (w.letter == "G" and w.value == 67)]
         blocks = [number + f'{MCALL_NAME}=""']
         if any(w.letter != "N" for w in rest):
-            blocks += translate_block_words(rest, modal, settings)
+            blocks += translate_words(rest, modal, settings)
         return blocks
     if "G67" in gcodes:
         raise NcAlarmError(SYNTAX_ERROR, "G67")
@@ -113,7 +110,7 @@ def macro_block(words: list[Word], modal: Any, settings: IsoSettings) -> list[st
     if _is_g05(call):
         if getattr(getattr(modal, "cycle", None), "code", None) is not None:
             raise NcAlarmError(ALARM_TOO_MANY_CALLS)  # G05 while a fixed cycle is modal
-        return _g05(words, modal, settings, number)
+        return _g05(words, modal, settings, number, translate_words)
     return _g65_g66(words, call, modal, settings, number)
 
 
@@ -189,7 +186,6 @@ def argument_writes(words: list[Word], incremental: bool) -> list[str]:
 
 
 def _g65_g66(words: list[Word], call: str, modal: Any, settings: IsoSettings, number: str) -> list[str]:
-    from nck.iso.translate import SIMPLE_G
 
     prefix: list[str] = []
     for code in _names(words):
@@ -265,15 +261,13 @@ def _substitution(words: list[Word], gcodes: list[str], modal: Any,
 
 
 def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: Any,
-                 settings: IsoSettings) -> list[str]:
+                 settings: IsoSettings, translate_words: TranslateWords) -> list[str]:
     """An M/G-code macro call; inside a running M/G-code macro the word acts as a plain
     M or G function instead (a G that exists only as a macro then raises 12470)."""
-    from nck.iso.translate import translate_block_words
-
     kind, word, program = substitution
     number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
     other_g = [w for w in words if w.letter == "G" and w is not word]
-    head = translate_block_words(other_g, modal, settings) if other_g else []
+    head = translate_words(other_g, modal, settings) if other_g else []
     arguments = [w for w in words if w.letter not in ("N", "G") and w is not word]
     writes = " ".join(argument_writes(arguments, not modal.absolute))
     if kind == "G":
@@ -282,7 +276,7 @@ def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: 
     call = f'{number}{writes} {SUBST_CALL}=1 CALL "{program}"' + (f" P{passes}" if passes > 1 else "")
     modal.no_substitution = True
     try:
-        plain = translate_block_words(words, modal, settings)
+        plain = translate_words(words, modal, settings)
     except NcAlarmError as alarm:  # a G code that exists only as a macro: 12470 at run time
         if alarm.number != G_FUNCTION_UNKNOWN or kind != "G":
             raise
@@ -293,7 +287,8 @@ def _substituted(words: list[Word], substitution: tuple[str, Word, str], modal: 
             + [f"{number}ENDIF"])
 
 
-def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings) -> list[str] | None:
+def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings,
+                    translate_words: TranslateWords) -> list[str] | None:
     """``M98 P… X10. A1.``: the other words run first, then the call; they also reach
     the subprogram as ``$C_…`` (None: a plain M98 block or no M98 at all)."""
     m98 = [w for w in words if w.letter == "M" and w.value == 98]
@@ -303,22 +298,19 @@ def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings) -> lis
     if not any(w.letter != "N" for w in rest):
         return None
     from nck.iso.subprograms import call_block
-    from nck.iso.translate import translate_block_words
-
     number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
-    blocks = translate_block_words(rest, modal, settings)
+    blocks = translate_words(rest, modal, settings)
     arguments = [w for w in rest if w.letter not in ("N", "M", "G")]
     writes = " ".join(argument_writes(arguments, not modal.absolute)) + " " if arguments else ""
     call = call_block({w.letter: w.value for w in words if w.letter in ("P", "L")})
     return blocks + [f"{number}{writes}{call}"]
 
 
-def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> list[str]:
+def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str,
+         translate_words: TranslateWords) -> list[str]:
     """G05 P<prog> L<n> calls ``<prog>`` (not padded); the other forms (no P, P0/P1,
     G05.1) would call CYCLE305, which this control does not have: skipped without an
     alarm. Every other word of the block runs first, as in any block."""
-    from nck.iso.translate import translate_block_words
-
     p_words = [w for w in words if w.letter == "P"]
     codes = _names(words)
     program = None
@@ -326,7 +318,7 @@ def _g05(words: list[Word], modal: Any, settings: IsoSettings, number: str) -> l
         program = p_words[-1].text.lstrip("+")
     rest = [w for w in words if w.letter not in ("P", "L")
             and not (w.letter == "G" and _is_g05(_names([w])[0]))]
-    blocks = translate_block_words(rest, modal, settings) if any(w.letter != "N" for w in rest) else []
+    blocks = translate_words(rest, modal, settings) if any(w.letter != "N" for w in rest) else []
     if program is None:
         return blocks or ([number.strip()] if number else [])
     if len(program) > 10:

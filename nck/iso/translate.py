@@ -62,29 +62,9 @@ from nck.iso import macros as iso_macros
 from nck.iso import tool_offsets as iso_tools
 from nck.iso import frames as iso_frames
 from nck.iso import skipping, switching
+from nck.iso.words import SIMPLE_G, IsoSettings, g_name, word_value
 
-LENGTH_LETTERS = frozenset("XYZUVWABCIJKQR")
 AXES = ("X", "Y", "Z")
-
-
-@dataclass(frozen=True)
-class IsoSettings:
-    """Decimal point rules: MD 10884 (pocket calculator) and MD 10886 (IS-C)."""
-
-    pocket_calculator: bool = True
-    increment_system_c: bool = False
-    function_mask: int = 0  # MD 20734 EXTERN_FUNCTION_MASK (bit 2: G04 in revolutions under G95)
-    fixed_feedrates: bool = False  # MD 22920 EXTERN_FIXED_FEEDRATE_F1_ON: F0…F9 from SD 42160
-    gcode_system: int = 0  # ISO T code system, MD 10881: 0 B, 1 A
-    tool_digits: int = 2  # ISO T digits of the tool number in T, MD 10888
-    start_unit: str = ""  # G700/G710 from MD 20154[5] (ISO group 6 reset), "" = table reset
-    m_macros: tuple[tuple[int, str], ...] = ()  # MD 10814/10815: M number → macro program
-    g_macros: tuple[tuple[str, str], ...] = ()  # MD 10816/10817: G code → macro program
-
-    @property
-    def increment_mm(self) -> float:
-        """Value of one increment for a number written without a point."""
-        return 0.0001 if self.increment_system_c else 0.001
 
 
 @dataclass
@@ -110,15 +90,6 @@ class _Modal:
     frames: iso_frames.FrameTracker = field(default_factory=iso_frames.FrameTracker)
 
 
-SIMPLE_G = {  # ISO G code -> the Siemens G code with the same meaning
-    "G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G2": "G2", "G02": "G2",
-    "G3": "G3", "G03": "G3", "G17": "G17", "G18": "G18", "G19": "G19",
-    "G40": "G40", "G41": "G41", "G42": "G42", "G54": "G54", "G55": "G55",
-    "G56": "G56", "G57": "G57", "G58": "G505", "G59": "G506", "G61": "G60",
-    "G64": "G64", "G9": "G9", "G09": "G9", "G90": "G90", "G91": "G91",
-    "G93": "G93", "G94": "G94", "G95": "G95", "G20": "G700", "G21": "G710", "G70": "G700",
-    "G71": "G710", "G53": "G53",
-}
 _SUPPORTED_OTHER = {"G54.1", "G4", "G04", "G10", "G28", "G43", "G44", "G49", "G52", "G80", "G92",
                     "G92.1", "G98", "G99", "G290", "G291", "G15", "G50", "G50.1", "G67",
                     "G69", "G97", "G23", "G13.1"}
@@ -205,23 +176,12 @@ def _translate_line(raw: str, modal: _Modal, settings: IsoSettings) -> list[str]
     return blocks
 
 
-def word_value(word: Word, settings: IsoSettings, modal: _Modal) -> float:
-    """The value of ``word`` in mm, mm/min or mm/rev: undotted lengths and feeds scaled by the ISO input increment."""
-    if word.has_point or settings.pocket_calculator:
-        return word.value
-    if word.letter == "F":
-        return word.value * (0.01 if modal.per_rev else 1.0)
-    if word.letter in LENGTH_LETTERS or word.letter in (",R", ",C"):
-        return word.value * settings.increment_mm
-    return word.value
-
-
 def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSettings) -> list[str]:
     """The Siemens blocks for the words of one ISO block (``modal`` is updated)."""
     switches = [w for w in words if w.letter == "G" and g_name(w) in ("G290", "G291")]
     if switches and any(w.letter != "N" for w in words if w not in switches) or len(switches) > 1:
         raise NcAlarmError(switching.ALARM_SYNTAX, f"{g_name(switches[0])} not alone in block")  # 003 L393
-    macro = iso_macros.macro_block(words, modal, settings)  # G65/G66/G67/G05
+    macro = iso_macros.macro_block(words, modal, settings, translate_block_words)  # G65/G66/G67/G05
     if macro is not None:
         return macro
     gcodes: list[str] = []
@@ -365,19 +325,6 @@ def _cycle_code(code: str) -> int | None:
     if code.startswith("G") and code[1:].isdigit() and int(code[1:]) in cycles.CYCLE_CODES:
         return int(code[1:])
     return None
-
-
-def g_name(word: Word) -> str:
-    """The canonical name of a G word: ``G1`` -> ``G01``, ``G54.10`` -> ``G54.1``."""
-    text = word.text
-    if "." in text:
-        whole, _, sub = text.partition(".")
-        whole = str(int(whole)) if whole else "0"
-        if sub.strip("0") == "":
-            return f"G{int(whole):02d}" if int(whole) < 10 else f"G{whole}"
-        return f"G{int(whole)}.{sub.rstrip('0')}"
-    number = int(text)
-    return f"G{number:02d}" if number < 10 else f"G{number}"
 
 
 def _plain_block(number: str, siemens_g: list[str], values: dict[str, float],

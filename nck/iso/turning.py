@@ -47,6 +47,7 @@ from nck.number_text import trimmed
 from nck.iso import turning_cycles as tc
 from nck.iso.lexing import Word, split_words
 from nck.iso.turning_contour import read_contour
+from nck.iso.words import TranslateWords, g_name, word_value
 
 ALARM_START_POINT = 61607  # starting point incorrectly specified / not known
 ALARM_ABS_AND_INC = 61805  # value programmed both absolute and incremental
@@ -141,7 +142,6 @@ def after_line(modal: Any, line: Any) -> None:
 
 
 def _g(word: Word) -> str:
-    from nck.iso.translate import g_name
     return g_name(word)
 
 
@@ -158,7 +158,7 @@ def _raw_number(word: Word, settings: Any, factor: float) -> float:
 
 
 def translate_words(words: list[Word], modal: Any, settings: Any,
-                    common: Callable[[list[Word], Any, Any], list[str]]) -> list[str]:
+                    common: TranslateWords) -> list[str]:
     """Siemens blocks of one ISO T block; ``common`` is the shared ISO translation."""
     lathe: LatheState = modal.lathe
     if lathe.system_a:
@@ -176,8 +176,6 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
     tool = address.get("T")
     if tool is not None and (tool.has_point or tool.value < 0):
         raise NcAlarmError(SYNTAX_ERROR, f"T{tool.text}")  # T<tool><offset> is a plain integer
-    from nck.iso.translate import word_value
-
     def value(word: Word) -> float:
         return word_value(word, settings, modal)
 
@@ -188,7 +186,7 @@ def translate_words(words: list[Word], modal: Any, settings: Any,
             modal.absolute = False
     cycle = next((c for c in codes if c in _CYCLES), None)
     if cycle is not None:
-        return _run_cycle(int(cycle[1:]), address, modal, settings, value)
+        return _run_cycle(int(cycle[1:]), address, modal, settings, value, common)
     if "G10" in codes and "L" not in address:
         return _tool_offset(address, modal, value)
     if "G92" in codes:
@@ -355,14 +353,14 @@ def _restore_motion(modal: Any) -> list[str]:
 
 
 def _run_cycle(code: int, address: dict[str, Word], modal: Any, settings: Any,
-               value: Callable[[Word], float]) -> list[str]:
+               value: Callable[[Word], float], common: TranslateWords) -> list[str]:
     """A G70–G76 block: a settings block stores values, a run block expands the cycle."""
     lathe: LatheState = modal.lathe
     stored = lathe.settings.setdefault(code, {})
     feed = value(address["F"]) if "F" in address else None
     runs = ("P" in address and "Q" in address) if code <= 73 else any(a in address for a in "XZUW")
     if code == 70:
-        return _finishing(address, modal, settings)
+        return _finishing(address, modal, settings, common)
     if not runs:  # settings block: store for later calls, no motion
         _store_settings(code, address, stored, value)
         return []
@@ -467,10 +465,8 @@ def _contour_cycle(code: int, address: dict[str, Word], modal: Any, settings: An
     return blocks
 
 
-def _finishing(address: dict[str, Word], modal: Any, settings: Any) -> list[str]:
+def _finishing(address: dict[str, Word], modal: Any, settings: Any, common: TranslateWords) -> list[str]:
     """G70 P Q: the contour blocks with their own F/S/T, then back to the start point."""
-    from nck.iso.translate import translate_block_words
-
     lathe: LatheState = modal.lathe
     if "P" not in address or "Q" not in address:
         raise NcAlarmError(ALARM_BAD_VALUE, "P")
@@ -481,7 +477,7 @@ def _finishing(address: dict[str, Word], modal: Any, settings: Any) -> list[str]
     for index, words in zip(range(first, last + 1), _contour_words(lathe, first, last)):
         lathe.line_index = index
         if words:
-            blocks.extend(translate_words(words, modal, settings, translate_block_words))
+            blocks.extend(translate_words(words, modal, settings, common))
     lathe.line_index = index_before
     if start is not None:
         blocks.extend([f"G0 X=AC({trimmed(start[1])})", f"G0 Z=AC({trimmed(start[0])})",
