@@ -23,7 +23,7 @@ from nck.alarm_ids import NAME_NOT_DEFINED, TYPE_CONVERSION_IMPOSSIBLE
 from nck.errors import NcAlarmError
 from nck.geometry.frames import Frame
 from nck.geometry.planes import Plane, plane
-from nck.interp.values import FrameValue
+from nck.lang.values import FrameValue
 
 NAMES = frozenset(("CTRANS", "CROT", "CRPL", "CSCALE", "CMIRROR", "CFINE"))
 CRPL_AXIS_INDEX = {1: 2, 2: 1, 3: 0}  # CRPL plane number → geometry axis index rotated about

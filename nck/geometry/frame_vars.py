@@ -26,6 +26,7 @@ from nck.alarm_ids import DATA_WRITE_PROTECTED, NAME_NOT_DEFINED, WRONG_AXIS_TYP
 from nck.errors import NcAlarmError
 from nck.geometry.chain import frame_from_work_offset
 from nck.geometry.frames import Frame, as_matrix3, rpy_matrix
+from nck.lang.values import FrameValue, to_number
 from nck.ncdata import WorkOffset
 from nck.writes import ValueOutOfLimits, check_frame_component
 
@@ -101,8 +102,6 @@ def read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
 
 def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     """Write one of :data:`NAMES` (read-only ones give alarm 17070)."""
-    from nck.interp.values import FrameValue, to_number
-
     if isinstance(value, FrameValue):
         _whole_frame_write(interp, name, indices, value)
         return
@@ -285,8 +284,6 @@ def _bad(name: str) -> Any:
 
 
 def _int(value: Any, name: str) -> int:
-    from nck.interp.values import to_number
-
     number = to_number(value, name)
     if int(number) != number:
         raise NcAlarmError(ALARM_INDEX, name)

@@ -32,7 +32,7 @@ from nck.interp.host import InterpreterHost
 from nck.interp.motion_builder import BlockWords
 from nck.interp.program import Program, load_program
 from nck.interp.returns import prepare_return, resume_caller, return_target
-from nck.interp.values import (GUD_VALUES_MEM_KB, LUD_VALUES_MEM_KB, Axis, Cell, convert, memory_bytes,
+from nck.lang.values import (GUD_VALUES_MEM_KB, LUD_VALUES_MEM_KB, Axis, Cell, convert, memory_bytes,
                                stored_bytes, to_bool, to_number, to_string)
 from nck.lang import ast
 from nck.lang.parser import RESERVED, VALUE_ADDRESSES

@@ -2,7 +2,7 @@
 
 A :class:`Frame` is one program level (main program or subprogram) with its
 program counter and local variables. Variables are reached through bindings:
-a :class:`~nck.interp.values.Cell` (own variable), or a reference used for
+a :class:`~nck.lang.values.Cell` (own variable), or a reference used for
 by-reference parameters (:class:`RRef` R parameter, :class:`ElemRef` array
 element, :class:`GudRef` global user datum). :class:`VariableScope` is what
 expressions use to read names; writes go through :func:`write_binding`, which
@@ -20,7 +20,7 @@ from nck.alarm_ids import (
 from nck.errors import NcAlarmError
 from nck.interp import sysvars
 from nck.interp.program import Program
-from nck.interp.values import Axis, Cell, convert, to_number
+from nck.lang.values import Axis, Cell, convert, to_number
 from nck.ncdata import NcData
 
 @dataclass

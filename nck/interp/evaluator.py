@@ -19,7 +19,7 @@ from nck.errors import NcAlarmError
 from nck.geometry import frame_functions
 from nck.geometry.planes import Plane
 from nck.geometry.frame_vars import COMPONENTS as FRAME_COMPONENTS
-from nck.interp.values import (
+from nck.lang.values import (
     Axis, INT_MAX, INT_MIN, round_half_away, to_bool, to_number, to_string,
 )
 from nck.lang import ast

@@ -57,7 +57,7 @@ from nck.interp.motion_builder import MotionBuilder
 from nck.interp.plain_run import plan
 from nck.interp.plain_step import step_plain
 from nck.interp.program import load_program
-from nck.interp.values import convert, to_number
+from nck.lang.values import convert, to_number
 from nck.lang import ast
 from nck.lang.dialect import SIEMENS, Dialect
 from nck.lang.gcodes import gtable

@@ -13,7 +13,7 @@ from typing import Any, Callable
 from nck.alarm_ids import JUMP_TARGET_NOT_FOUND
 from nck.errors import NcAlarmError
 from nck.lang.dialect import CallLevel, InterpreterContext
-from nck.interp.values import to_number, to_string
+from nck.lang.values import to_number, to_string
 
 
 def return_target(evaluate: Callable[[Any], Any], args: tuple[Any, ...]) -> tuple[str, int] | None:

@@ -30,7 +30,7 @@ from nck.alarm_ids import (
 from nck.errors import NcAlarmError
 from nck.geometry import frame_vars
 from nck.interp.modal import ModalState
-from nck.interp.values import Axis, to_number
+from nck.lang.values import Axis, to_number
 from nck.lang.dialect import Dialect, InterpreterContext
 from nck.machine import MachineConfig
 from nck.ncdata import NcData

@@ -72,7 +72,7 @@ class IsoDialect:
             return macros.read(ctx, name, indices)
         if name.startswith(_H_NUMBERS):
             return tool_offsets.read(ctx, name, indices)
-        return display.read_extgg(ctx, indices)  # active ISO G code per ISO group
+        return display.read_extgg(ctx, self.name, indices)  # active ISO G code per ISO group
 
     def writes_variable(self, name: str) -> bool:
         """``$C_…``, the H numbers and the ``$P_ISOFR_…`` frame operations."""

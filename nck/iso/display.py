@@ -12,6 +12,10 @@ import functools
 from typing import Mapping
 
 from nck.alarm_ids import ILLEGAL_ARRAY_INDEX_1
+from nck.errors import NcAlarmError
+from nck.iso.frames import display_codes
+from nck.lang.dialect import InterpreterContext
+from nck.lang.values import to_number
 from nck.resources import load_toml
 
 ISO_MAIN_GROUPS_M = (1, 2, 3, 5, 6, 7, 8, 14)
@@ -79,20 +83,15 @@ def extgg(siemens: Mapping[int, str], dialect: str, group: int, geometry: object
     if siemens.get(47) != "G291":
         view[31] = "G290"
     if not turning:
-        from nck.iso.frames import display_codes
         view.update(display_codes(geometry))
     members = iso_members("iso-t" if turning else "iso-m").get(group, ())
     code = view.get(group)
     return members.index(code) + 1 if code in members else 0
 
 
-def read_extgg(ctx: object, indices: tuple) -> int:
-    """System-variable hook: ``$P_EXTGG[n]`` for the interpreter ``ctx``."""
-    from nck.errors import NcAlarmError
-    from nck.interp.values import to_number
-
+def read_extgg(ctx: InterpreterContext, mode: str, indices: tuple) -> int:
+    """System-variable hook: ``$P_EXTGG[n]`` for the interpreter ``ctx`` in language mode ``mode``."""
     if len(indices) != 1:
         raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "$P_EXTGG")
-    modal = ctx.modal  # type: ignore[attr-defined]
-    return extgg(modal.gcodes, str(getattr(ctx, "dialect", "iso-m")),
-                 int(to_number(indices[0], "$P_EXTGG")), modal.geometry)
+    modal = ctx.modal
+    return extgg(modal.gcodes, mode, int(to_number(indices[0], "$P_EXTGG")), modal.geometry)

@@ -64,6 +64,7 @@ import numpy as np
 
 from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1
 from nck.errors import NcAlarmError
+from nck.lang.values import to_number
 from nck.number_text import trimmed
 from nck.geometry.frames import Frame, as_matrix3, axis_rotation
 
@@ -187,8 +188,6 @@ def _install(interp: Any, geo: Any, new: IsoFrameState, trans: dict[str, float],
 
 def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     """Execute one ``$P_ISOFR_…`` assignment (see module docstring)."""
-    from nck.interp.values import to_number
-
     op = name[len(PREFIX):]
     number = float(to_number(value, name))
     args = [a if isinstance(a, str) else float(to_number(a, name)) for a in indices]

@@ -29,6 +29,7 @@ from typing import Any
 
 from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, SYNTAX_ERROR
 from nck.errors import NcAlarmError
+from nck.lang.values import to_number
 from nck.number_text import trimmed
 
 H_NUMBER_PARAM = 0  # ToolEdge.params key of $TC_DPH (the $TC_DP numbers are 1 … 25)
@@ -83,8 +84,6 @@ def _h_numbers(data: Any) -> dict[int, tuple[int, int]]:
 
 
 def _whole(value: Any, name: str) -> int:
-    from nck.interp.values import to_number
-
     number = to_number(value, name)
     if int(number) != number:
         raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
@@ -131,8 +130,6 @@ def _edge_of_h(data: Any, h_number: int) -> tuple[int, int]:
 
 def write(ctx: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
     """Write ``$TC_DPH[t,d]`` (17183 if another edge holds that H) or a G10 offset."""
-    from nck.interp.values import to_number
-
     first, second = _pair(name, indices)
     if name == EDGE_VAR:
         raise NcAlarmError(DATA_WRITE_PROTECTED, name)

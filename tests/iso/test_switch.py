@@ -142,3 +142,15 @@ def test_g290_g291_alone_with_a_block_number_and_comment_switch():
                      dialect="siemens")
     assert result.status == "ended", result.alarms
     assert [p["X"] for _line, p in ends(result)] == [1.0, 2.0]
+
+
+def test_p_extgg_reads_the_iso_t_groups_in_iso_t():
+    """ISO T numbers its G groups its own way: group 2 is G96/G97 there, G17/G18/G19 in ISO M
+    (000 L5523, MD 20154 EXTERN_GCODE_RESET_VALUES). G96 is the first code of the group: 1."""
+    data = NcData()
+    text = ("N5 G96 S100\nN10 G290\nR2=$P_EXTGG[2]\nN15 G291\nN20 G97 S500\nN25 G290\n"
+            "R3=$P_EXTGG[2]\nM30\n")
+    result = interpret_only(load_machine("lathe2"), MemorySource(), data, "TEST.MPF", text=text,
+                            max_blocks=100, dialect="iso-t")
+    assert result.status == "ended", result.alarms
+    assert (data.r[2], data.r[3]) == (1, 2)  # G96, then G97
