@@ -62,9 +62,13 @@ from nck.lang import ast
 from nck.lang.dialect import SIEMENS, Dialect
 from nck.lang.gcodes import gtable
 from nck.machine import MachineConfig
-from nck.ncdata import TOOL_EDGE_COUNT, NcData
+from nck.ncdata import TOOL_EDGE_COUNT, NcData, ToolEdge
 from nck.status import ModalView
 from nck.writes import ValueOutOfLimits, check_tool_value
+from nck.interp.sources import DirectorySource
+from nck.lang.lexer import tokenize
+from nck.lang.parser import BlockParser
+from nck.resources import data_path
 
 BLOCK_COST_S = 0.001  # simulated time one interpreted block costs (1 ms)
 
@@ -176,8 +180,6 @@ class Interpreter:
 
     def variable(self, name: str) -> Any:
         """Value of a variable visible at the current level (``R5``, ``COUNT``, ``ARR[1]``)."""
-        from nck.lang.lexer import tokenize
-        from nck.lang.parser import BlockParser
 
         expr = BlockParser(tokenize(name)).expression()
         return evaluate(expr, VariableScope(self))
@@ -194,8 +196,6 @@ class Interpreter:
 
         Programs of the program source with the same name win (a user's own cycle).
         """
-        from nck.interp.sources import DirectorySource
-        from nck.resources import data_path
 
         return DirectorySource(data_path("cycles")).read_program(name)
 
@@ -524,8 +524,6 @@ class Interpreter:
         the panel): outside the limits alarm 17080/17090 and nothing is written. Tool type and
         edge position are INT data: a REAL is rounded as on every INT assignment.
         """
-        from nck.ncdata import ToolEdge
-
         name = f"$TC_DP{param}"
         if param in (1, 2):
             value = float(convert(value, "INT", name))

@@ -34,6 +34,7 @@ from nck.lang.values import Axis, to_number
 from nck.lang.dialect import Dialect, InterpreterContext
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
+from nck.lang.gcodes import gtable
 
 TOOL_PARAM_COUNT = 25
 
@@ -220,7 +221,6 @@ def _tool_address(name: str, match: re.Match, indices: tuple[Any, ...]) -> tuple
 
 
 def _gg(ctx: SysContext, indices: tuple[Any, ...]) -> int:
-    from nck.lang.gcodes import gtable
 
     if len(indices) != 1:
         raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "$P_GG")

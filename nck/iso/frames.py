@@ -67,6 +67,7 @@ from nck.errors import NcAlarmError
 from nck.lang.values import to_number
 from nck.number_text import trimmed
 from nck.geometry.frames import Frame, as_matrix3, axis_rotation
+from nck.geometry.polar import PolarState
 
 ALARM_SYNTAX = 12080
 ALARM_LIMITS = 12560
@@ -262,7 +263,6 @@ def _sync(interp: Any, geo: Any, always: bool = False) -> None:
 
 
 def _polar_off(interp: Any, geo: Any) -> None:
-    from nck.geometry.polar import PolarState
 
     old = geo.polar
     geo.polar = PolarState()

@@ -52,6 +52,8 @@ from nck.number_text import trimmed
 from nck.iso.lexing import Word
 from nck.iso.words import SIMPLE_G, IsoSettings, TranslateWords, g_name
 from nck.lang.dialect import CallLevel, InterpreterContext
+from nck.iso.subprograms import call_block
+from nck.lang import ast
 
 ALARM_TOO_MANY_CALLS = 12722
 MAX_IJK = 10
@@ -297,7 +299,6 @@ def _m98_with_words(words: list[Word], modal: Any, settings: IsoSettings,
     rest = [w for w in words if w.letter not in ("P", "L") and w is not m98[0]]
     if not any(w.letter != "N" for w in rest):
         return None
-    from nck.iso.subprograms import call_block
     number = f"N{int(words[0].value)} " if words[0].letter == "N" else ""
     blocks = translate_words(rest, modal, settings)
     arguments = [w for w in rest if w.letter not in ("N", "M", "G")]
@@ -386,8 +387,6 @@ def write(ctx: InterpreterContext, name: str, indices: tuple[Any, ...], value: A
     state = _state(frame)
     pending = dict(state.pending or {})
     if name == MCALL_NAME:
-        from nck.lang import ast
-
         target = str(value).strip().upper()
         passes = int(pending.pop((MCALL_PASSES, ()), 1))
         call = ast.Call(target, ()) if target else None

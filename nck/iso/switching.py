@@ -23,6 +23,8 @@ import functools
 import re
 
 from nck.errors import NcAlarmError
+from nck.lang.gcodes import gtable
+from nck.resources import load_toml
 
 ALARM_SYNTAX = 12080
 ALARM_UNKNOWN_G = 12470
@@ -54,8 +56,6 @@ def siemens_statement(raw: str) -> bool:
 
 @functools.cache
 def _siemens_only_codes() -> frozenset[str]:
-    from nck.lang.gcodes import gtable
-    from nck.resources import load_toml
 
     iso: set[str] = set()
     for name in ("iso_m.toml", "iso_t.toml"):
