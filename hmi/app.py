@@ -74,7 +74,8 @@ RETAINED_SAVE_PERIOD_S = 5.0
 
 RETAINED_COMMANDS = (cmd.WriteData, cmd.SetKeyswitch, cmd.EnterPassword, cmd.DeletePassword,
                      cmd.ChangePassword, cmd.DeleteToolEdge, cmd.ClearRParameters,
-                     cmd.SetMdaProgram)
+                     cmd.SetMdaProgram, cmd.WriteMachineSetup, cmd.WriteManualSettings, cmd.SetActualValue,
+                     cmd.SetWorkOffsetRotation, cmd.DeleteActiveWorkOffset)
 """Commands that change retained data: the data is saved right after they are accepted."""
 
 

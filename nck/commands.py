@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 # Re-exported: screens build a WriteMachineSetup with them.
 from nck.workpiece import Box as Box, Cylinder as Cylinder, MachineSetup as MachineSetup
+from nck.manual_settings import ManualSettings as ManualSettings
 
 
 @dataclass(frozen=True, slots=True)
@@ -200,12 +201,21 @@ class ActivateMachineData:
 
 
 @dataclass(frozen=True, slots=True)
+class WriteManualSettings:
+    """Replace the settings for manual mode (:class:`ManualSettings`: retraction plane,
+    safety distance, measuring feed) that measuring in JOG uses. No protection level (like
+    the JOG feed). Read them back with ``nck.queries.ManualSettingsData``. Retained."""
+
+    settings: ManualSettings
+
+
+@dataclass(frozen=True, slots=True)
 class WriteMachineSetup:
     """Replace what is clamped on the machine: ``setup`` is a :class:`MachineSetup` (a blank
     :class:`Box` or :class:`Cylinder` or none, a reference :class:`Box` or none, the
     instructor's ``hidden`` switch), all positions in the MCS in mm.
 
-    Needs protection level 3 (``write_machine_setup`` in data/access.toml); refused while
+    Needs protection level 2 (``write_machine_setup`` in data/access.toml); refused while
     the channel is active. Read it back with ``nck.queries.MachineSetupData``. Retained.
     """
 
@@ -259,5 +269,5 @@ Command = (
     | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
     | CancelAlarms | Jog | SetControllerEnable | StartBlockSearch | WriteData | EnterPassword | DeletePassword
     | SetKeyswitch | ChangePassword | DeleteToolEdge | ClearRParameters | ActivateMachineData
-    | WriteMachineSetup | SetActualValue | SetWorkOffsetRotation | DeleteActiveWorkOffset
+    | WriteMachineSetup | WriteManualSettings | SetActualValue | SetWorkOffsetRotation | DeleteActiveWorkOffset
 )

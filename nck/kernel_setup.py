@@ -1,6 +1,7 @@
 """Setting up a job on :class:`nck.kernel.Nck` (a mixin): machine set-up, Set WO, PRESET.
 
-* ``WriteMachineSetup`` — what is clamped (:mod:`nck.workpiece`), protection level 3;
+* ``WriteMachineSetup`` — what is clamped (:mod:`nck.workpiece`), protection level 2;
+* ``WriteManualSettings`` — retraction plane, safety distance, measuring feed (:mod:`nck.manual_settings`);
 * ``SetActualValue`` — Set WO / PRESET / scratching: an axis reads a given WCS value, by
   changing the translation of the active settable frame or, under G500, of the system frame
   for PRESET and scratching ``$P_SETFR`` (002 L30600-30612, L30655-30660; MD28082 bit 0);
@@ -25,6 +26,7 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.geometry.preset import TARGET_SETFRAME, TARGET_SETTABLE, translation_change, wcs_of_point
 from nck.interp.modal import kept_groups
 from nck.ncdata import SETTABLE_FRAME_NAMES, WorkOffset
+from nck.manual_settings import ManualSettings, settings_from_plain, settings_to_plain
 from nck.workpiece import MachineSetup
 
 SETFR = "SETFR"
@@ -49,6 +51,16 @@ class JobSetup:
         if self._sit.channel == "active":  # type: ignore[attr-defined]
             return Rejected("The machine set-up can be changed only while the channel is not active")
         self.data.machine_setup = command.setup
+        return Accepted()
+
+    def _write_manual_settings(self, command: cmd.WriteManualSettings) -> SubmitResult:
+        if not isinstance(command.settings, ManualSettings):
+            return Rejected("not settings for manual mode")
+        try:  # the same checks as the retained file's
+            settings = settings_from_plain(settings_to_plain(command.settings))
+        except ValueError as error:
+            return Rejected(str(error))
+        self.data.manual_settings = settings
         return Accepted()
 
     # ------------------------------------------------------------ Set WO / PRESET

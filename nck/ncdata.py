@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from nck.manual_settings import ManualSettings
 from nck.workpiece import MachineSetup
 
 R_PARAMETER_COUNT = 100  # MD28050 MM_NUM_R_PARAM default
@@ -80,6 +81,8 @@ class NcData:
     # What is clamped on the machine (blank, reference block; nck.workpiece). Empty in a bare
     # NcData; a data directory starts with the default of its machine kind.
     machine_setup: MachineSetup = field(default_factory=MachineSetup)
+    # Retraction plane, safety distance and measuring feed of manual mode (nck.manual_settings).
+    manual_settings: ManualSettings = field(default_factory=ManualSettings)
     # The system frame for PRESET and scratching, $P_SETFR (002 L30600-30612): translations only.
     setframe: WorkOffset = field(default_factory=WorkOffset)
 

@@ -16,6 +16,7 @@ that a damaged file costs only that section:
 ``panel``          positions of the override switches of the machine control panel
 ``alarm_log``      the alarm log (bounded)
 ``machine_setup``  what is clamped: blank, reference block, the instructor's hidden switch
+``manual_settings`` retraction plane, safety distance, measuring feed of manual mode (JOG Settings)
 =================  ==========================================================
 
 File format (version 1)::
@@ -69,6 +70,7 @@ from nck.resources import data_path
 from nck.status import AlarmEntry
 from nck.storage import NcFileSystem, StorageError, check_program_size
 from nck.sample_programs import sample_filter
+from nck.manual_settings import settings_from_plain, settings_to_plain
 from nck.workpiece import default_machine_setup, default_part_zero_mcs, setup_from_plain, setup_to_plain
 from nck.writes import DataWriter, WriteRefused
 
@@ -359,6 +361,14 @@ def _load_alarm_log(data: Mapping[str, Any], rd: RetainedData) -> None:
     rd.alarm_log = entries[-ALARM_LOG_LIMIT:]
 
 
+def _dump_manual_settings(rd: RetainedData) -> dict[str, Any]:
+    return settings_to_plain(rd.ncdata.manual_settings)
+
+
+def _load_manual_settings(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.ncdata.manual_settings = settings_from_plain(data)
+
+
 def _dump_machine_setup(rd: RetainedData) -> dict[str, Any]:
     return setup_to_plain(rd.ncdata.machine_setup)
 
@@ -380,6 +390,7 @@ SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, Ret
     "panel": (_dump_panel, _load_panel),
     "alarm_log": (_dump_alarm_log, _load_alarm_log),
     "machine_setup": (_dump_machine_setup, _load_machine_setup),
+    "manual_settings": (_dump_manual_settings, _load_manual_settings),
 }
 
 

@@ -99,6 +99,12 @@ class DataView:
 
 
 @dataclass(frozen=True)
+class ManualSettingsData:
+    """Retraction plane, safety distance, measuring feed of manual mode
+    (``nck.commands.ManualSettings``); ``None`` for a kernel without NC data."""
+
+
+@dataclass(frozen=True)
 class AccessStatus:
     """Keyswitch position and password state (``nck.access.AccessState``); ``None`` when unprotected."""
 
@@ -235,6 +241,10 @@ def _program_names(nck: Any, query: ProgramNames) -> list[str]:
     return []
 
 
+def _manual_settings(nck: Any, query: ManualSettingsData) -> Any:
+    return getattr(getattr(nck, "data", None), "manual_settings", None)
+
+
 def _machine_setup(nck: Any, query: MachineSetupData) -> Any:
     return getattr(getattr(nck, "data", None), "machine_setup", None)
 
@@ -263,6 +273,7 @@ ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     ProgramSource: _program_source,
     ProgramNames: _program_names,
     MachineSetupData: _machine_setup,
+    ManualSettingsData: _manual_settings,
     ContactEvents: _contact_events,
     ProbeDeflected: _probe_deflected,
 }

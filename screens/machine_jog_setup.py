@@ -17,9 +17,11 @@ softkeys and does what they ask, through the area's ``submit`` and ``ask`` only.
   stay active after the job because the shipped machines keep G groups 8 and 13 at RESET
   and program end (MD20152 GCODE_RESET_MODE = 1, 002 L2770-2782).
 - Settings: the JOG feed (SD41110) and the variable increment (SD41010) — setting
-  data written with ``WriteData``. The retraction plane and safety distance of the
-  panel's manual-mode settings are not there: no NC datum holds them yet and the
-  windows here do not retract.
+  data written with ``WriteData`` — and the settings for manual mode that measuring uses
+  (``WriteManualSettings``: retraction plane, safety distance, measuring feed).
+- Measure workpiece, edge / Z surface, with a 3D probe: CYCLE START searches the surface
+  from where the probe stands and backs off (:func:`screens.machine_jog_blocks.probing_blocks`),
+  as an MDA job like T,S,M; the touch is the probe's trigger as after jogging.
 """
 
 from __future__ import annotations
@@ -31,16 +33,17 @@ from textual.app import ComposeResult
 
 from nck import commands as cmd
 from nck import fixed, trimmed
-from nck.queries import ReadData
+from nck.queries import ManualSettingsData, ReadData
 from nck.status import NckStatus
 
 from hmi.manual_job import ManualJob
 from hmi.softkeys import Softkey, view_softkey
 from screens.machine_jog_blocks import (
-    SPINDLE_FUNCTIONS, UNCHANGED, UNITS, EntryError, TsmEntry, position_blocks, tsm_blocks,
+    SPINDLE_FUNCTIONS, UNCHANGED, UNITS, EntryError, TsmEntry, position_blocks, probing_blocks, tsm_blocks,
 )
 from screens.machine_jog_form import FieldSpec, JogForm
 from screens.machine_jog_measure import MEASURE_WINDOWS, MeasureWindows
+from screens.machine_jog_touch import active_tool_is_probe
 
 if TYPE_CHECKING:
     from hmi.area import AreaBase
@@ -48,7 +51,7 @@ if TYPE_CHECKING:
 JOG_WINDOWS = ("tsm", "setwo", "position", "settings", *MEASURE_WINDOWS)
 """The views of the setting-up windows (``view-tsm`` …)."""
 
-RUNS_ON_CYCLE_START = ("tsm", "position")
+RUNS_ON_CYCLE_START = ("tsm", "position", "measwp")
 """Windows whose content CYCLE START runs."""
 
 
@@ -101,7 +104,10 @@ class JogWindows:
         yield JogForm("Settings for manual mode", (
             FieldSpec("jog_feed", "JOG feed (SD41110)", "mm/min"),
             FieldSpec("var_incr", "Variable increment (SD41010)", "mm"),
-        ), "↑/↓ field   ⇧F1 save (setting data)   F10 back", id="view-settings")
+            FieldSpec("retraction", "Retraction plane RP (WCS Z)", "mm"),
+            FieldSpec("safety", "Safety distance SC", "mm"),
+            FieldSpec("meas_feed", "Measuring feed (3D probe)", "mm/min"),
+        ), "↑/↓ field   ⇧F1 save   F10 back", id="view-settings")
         yield from self.measure.compose(self.axes())
 
     # -- softkeys --------------------------------------------------------------------------
@@ -156,6 +162,11 @@ class JogWindows:
             form = self.form(view)
             form.set_value("jog_feed", trimmed(data("SD41110"), 3))
             form.set_value("var_incr", trimmed(data("SD41010"), 3))
+            manual = self.screen.ask(ManualSettingsData())
+            if manual is not None:
+                form.set_value("retraction", trimmed(manual.retraction_plane_mm, 3))
+                form.set_value("safety", trimmed(manual.safety_distance_mm, 3))
+                form.set_value("meas_feed", trimmed(manual.measuring_feed_mm_min, 3))
 
     def show(self, view: str, status: NckStatus) -> None:
         """Redraw the info line of window ``view`` from ``status``."""
@@ -176,8 +187,12 @@ class JogWindows:
             form.show_info(Text(f" {self._job_state(status)}"))
         elif view == "settings":
             data = self._setting_data()
+            manual = self.screen.ask(ManualSettingsData())
             form.show_info(Text(f" Stored: JOG feed {trimmed(data('SD41110'), 3)} mm/min "
-                                f"(0 = MD32020)   variable increment {trimmed(data('SD41010'), 3)} mm"))
+                                f"(0 = MD32020)   variable increment {trimmed(data('SD41010'), 3)} mm"
+                                + (f"\n RP {trimmed(manual.retraction_plane_mm, 3)} mm   SC "
+                                   f"{trimmed(manual.safety_distance_mm, 3)} mm   measuring feed "
+                                   f"{trimmed(manual.measuring_feed_mm_min, 3)} mm/min" if manual else "")))
 
     def _job_state(self, status: NckStatus) -> str:
         if self.job.running:
@@ -231,8 +246,19 @@ class JogWindows:
                 tool=form.value("tool"), edge=form.value("edge"), speed_rpm=form.value("speed"),
                 spindle=form.value("spindle"), m_function=form.value("m"),
                 work_offset=form.value("work_offset"), unit=form.value("unit")))
+        if view == "measwp":
+            return self._probing_blocks(form)
         return position_blocks(form.value("axis"), form.value("target"), form.value("feed"),
                                form.value("rapid") == "rapid")
+
+    def _probing_blocks(self, form: JogForm) -> str:
+        status, manual = self.screen.status, self.screen.ask(ManualSettingsData())
+        if status is None or manual is None or not active_tool_is_probe(self.screen.ask, status):
+            raise EntryError("CYCLE START measures with a 3D probe (tool type 710); "
+                             "with a cutter jog to the surface")
+        return probing_blocks(form.value("axis"), 1 if form.value("approach") == "+" else -1,
+                              manual.retraction_plane_mm, manual.safety_distance_mm,
+                              manual.measuring_feed_mm_min)
 
     def keeps_window(self, view: str | None) -> bool:
         """True when the window ``view`` stays over a mode change: while its job runs in MDA
@@ -302,8 +328,36 @@ class JogWindows:
 
     def _save_settings(self) -> None:
         form = self.form("settings")
+        manual = self.screen.ask(ManualSettingsData())
+        try:
+            values = {name: self._setting_number(form, key, positive) for key, name, positive in (
+                ("retraction", "retraction_plane_mm", False), ("safety", "safety_distance_mm", True),
+                ("meas_feed", "measuring_feed_mm_min", True))}
+        except EntryError as error:
+            self.screen.say(str(error))
+            return
         for key, name in (("jog_feed", "SD41110"), ("var_incr", "SD41010")):
             text = form.value(key).strip()
             if text and isinstance(self.screen.submit(cmd.WriteData(name, text)), cmd.Rejected):
                 return
+        if manual is not None:
+            changed = cmd.ManualSettings(**{name: getattr(manual, name) if value is None else value
+                                            for name, value in values.items()})
+            if isinstance(self.screen.submit(cmd.WriteManualSettings(changed)), cmd.Rejected):
+                return
         self.screen.say("Settings saved")
+
+    @staticmethod
+    def _setting_number(form: JogForm, key: str, positive: bool) -> float | None:
+        """The number typed in ``key`` (None when empty); EntryError when it is none or not > 0."""
+        text = form.value(key).strip()
+        if not text:
+            return None
+        label = {"retraction": "Retraction plane", "safety": "Safety distance", "meas_feed": "Measuring feed"}[key]
+        try:
+            value = float(text)
+        except ValueError:
+            raise EntryError(f"{label}: enter a number") from None
+        if positive and not value > 0.0:
+            raise EntryError(f"{label}: enter a value greater than 0")
+        return value
