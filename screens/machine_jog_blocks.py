@@ -11,6 +11,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from nck.queries import trimmed
+
 SPINDLE_FUNCTIONS = ("—", "M3", "M4", "M5")
 """Spindle direction of the T,S,M window: unchanged, clockwise, counter-clockwise, stop."""
 
@@ -119,19 +121,13 @@ def probing_blocks(axis: str, direction: int, retraction_plane_mm: float, safety
 
     The probe searches the surface from where it stands: ``MEAS=1`` moves it at the measuring
     feed at most 2 × the safety distance in ``direction`` (+1/−1) along ``axis`` and ends where
-    it switched (002: MEAS deletes the distance to go). Then it backs off: an edge (X, Y) by
+    it switched (MEAS: measuring with deletion of the distance to go, 002 L10817, L32646). Then it backs off: an edge (X, Y) by
     the safety distance, a Z surface (always searched downwards) up to the retraction plane
     (WCS Z of the active work offset). Without a switch it stops at the end of the search and
     backs off the same way; the window then says no touch was made.
     """
     if axis == "Z":
-        return (f"G91 G94 MEAS=1 G1 Z{_mm(-2.0 * safety_distance_mm)} F{_mm(measuring_feed_mm_min)}\n"
-                f"G90 G0 Z{_mm(retraction_plane_mm)}\n")
-    return (f"G91 G94 MEAS=1 G1 {axis}{_mm(2.0 * safety_distance_mm * direction)} F{_mm(measuring_feed_mm_min)}\n"
-            f"G91 G0 {axis}{_mm(-safety_distance_mm * direction)}\nG90\n")
-
-
-def _mm(value: float) -> str:
-    """A value for a block: at most 3 decimals, no exponent, no -0."""
-    text = f"{round(value, 3) + 0.0:.3f}".rstrip("0").rstrip(".")
-    return text or "0"
+        return (f"G91 G94 MEAS=1 G1 Z{trimmed(-2.0 * safety_distance_mm, 3)} F{trimmed(measuring_feed_mm_min, 3)}\n"
+                f"G90 G0 Z{trimmed(retraction_plane_mm, 3)}\n")
+    return (f"G91 G94 MEAS=1 G1 {axis}{trimmed(2.0 * safety_distance_mm * direction, 3)} "
+            f"F{trimmed(measuring_feed_mm_min, 3)}\nG91 G0 {axis}{trimmed(-safety_distance_mm * direction, 3)}\nG90\n")
