@@ -71,6 +71,7 @@ class NckBridge:
     ) -> None:
         self.nck = nck
         """The kernel. Only the bridge calls it (screens ask :meth:`query`; tests may read it)."""
+        _record_cuts(nck)
         self.alarm_times = alarm_times if alarm_times is not None else AlarmTimes()
         """Date and time of day of the alarms and messages read from the kernel's log."""
         self.realtime = realtime
@@ -122,6 +123,7 @@ class NckBridge:
         """Drive a new kernel (after "Reset (po)", an exercise): its snapshots and log start
         afresh; return the kernel driven so far (an exercise gives it back at its end)."""
         previous, self.nck = self.nck, nck
+        _record_cuts(nck)
         self.ipo_cycle_s = float(getattr(nck, "ipo_cycle_s", self.ipo_cycle_s) or self.ipo_cycle_s)
         self._last_seq = None
         self._last_log_seq = 0
@@ -231,3 +233,9 @@ class NckBridge:
     def _post(self, message: Any) -> None:
         if self._target is not None:
             self._target.post_message(message)
+
+
+def _record_cuts(nck: Any) -> None:
+    """Simultaneous recording on for a kernel that offers it (the Machine area's view)."""
+    if hasattr(nck, "run_recorder_factory"):
+        queries.record_cuts(nck)

@@ -73,6 +73,7 @@ def run_program(
     skip_levels: frozenset[int] = frozenset(),
     on_motion: Callable[[Any], None] | None = None,
     keep_commands: bool = True,
+    on_block: Callable[[Any], None] | None = None,
 ) -> RunResult:
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
@@ -90,7 +91,7 @@ def run_program(
         return run_on_kernel(machine, programs, data, program_name, timeout_s=timeout_s,
                              on_command=on_command, dialect=dialect, text=text,
                              skip_levels=skip_levels, on_motion=on_motion,
-                             keep_commands=keep_commands)
+                             keep_commands=keep_commands, on_block=on_block)
     return interpret_only(machine, programs, data, program_name, timeout_s=timeout_s,
                           max_blocks=max_blocks, on_command=on_command, dialect=dialect,
                           text=text, skip_levels=skip_levels, keep_commands=keep_commands)
@@ -124,10 +125,12 @@ def run_on_kernel(
     skip_levels: frozenset[int] = frozenset(),
     on_motion: Callable[[Any], None] | None = None,
     keep_commands: bool = True,
+    on_block: Callable[[Any], None] | None = None,
 ) -> RunResult:
     """The headless run through :class:`nck.kernel.Nck` (see :func:`run_program`).
 
-    ``on_motion`` receives the kernel's motion system before the start (e.g. to trace it).
+    ``on_motion`` receives the kernel's motion system before the start (e.g. to trace it);
+    ``on_block`` every block the interpreter hands over, before its commands.
 
     M0/M1 stops are continued with NC START at once (nobody is at the machine).
     """
@@ -146,13 +149,15 @@ def run_on_kernel(
     if on_motion is not None:
         on_motion(nck.motion)
     result = RunResult(status="ended")
-    executed = _ExecutedCommands(result, on_command, keep_commands)
+    executed = ExecutedCommands(result, on_command, keep_commands)
 
-    def on_block(block: object) -> None:
+    def block_done(block: object) -> None:
         result.blocks += 1
+        if on_block is not None:
+            on_block(block)
         executed.interpreted(getattr(block, "commands", ()), nck.motion.current_source())
 
-    nck.block_listener = on_block
+    nck.block_listener = block_done
     nck.alarm_listener = result.alarms.append
     nck.submit(cmd.SetProgramControl("skip_levels", frozenset(skip_levels)))
     nck.submit(cmd.SelectMode("AUTO"))
@@ -200,7 +205,7 @@ def run_on_kernel(
     return result
 
 
-class _ExecutedCommands:
+class ExecutedCommands:
     """Hands on the canonical commands of a kernel run as far as the machine executed them.
 
     The interpreter runs ahead of the motion; its commands are held back until

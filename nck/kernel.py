@@ -167,6 +167,11 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         # reads status() and the alarm log): every interpreted block, every alarm raised.
         self.block_listener: Callable[[Any], None] | None = None
         self.alarm_listener: Callable[[NcAlarmError], None] | None = None
+        # Simultaneous recording (installed by nck.queries.record_cuts): called with (program,
+        # T, D) at each AUTO program start; the object it returns is handed every block of that
+        # run with the block executing now (``interpreted(block, source)``).
+        self.run_recorder_factory: Callable[[str, int, int], Any] | None = None
+        self.run_recording: Any = None
         # Called at the end of every IPO cycle (the trace recorder of nck.trace).
         self.cycle_listeners: list[Callable[["Nck"], None]] = []
         self.cycles_done = 0  # IPO cycles since power on (system utilisation)
@@ -481,6 +486,10 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
 
     def _begin_run(self, run: ProgramRun) -> None:
         self._run = run
+        if run.kind == "AUTO" and self.run_recorder_factory is not None:
+            recording = self.run_recorder_factory(run.name, self._tool, self._edge)
+            self.run_recording = recording
+            run.listener = lambda block: self._record_block(recording, block)
         self._owner = None
         self._repos_point = None
         self._parked = None
@@ -674,6 +683,11 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
             return 1
         return self.batch_cycles
 
+    def _record_block(self, recording: Any, block: Any) -> None:
+        """A block of a recorded AUTO run: count it, then hand it to the recording."""
+        self._count_block(block)
+        recording.interpreted(block, self.current_source())
+
     def _count_block(self, block: Any) -> None:
         """Every interpreted block: count it, then tell the optional block listener."""
         self.blocks_interpreted += 1
@@ -859,6 +873,10 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
     def _actual_position(self, axis: str) -> float:
         """Actual MCS position of ``axis`` (for ``$AA_IM`` and friends)."""
         return float(self._path_motion().positions_mcs().get(axis, 0.0))
+
+    def current_source(self) -> Any:
+        """The block the program's motion executes now (None: idle)."""
+        return self._path_motion().current_source()
 
     def _path_motion(self) -> Any:
         """The motion system programs run on: the simulated one under program test."""

@@ -20,6 +20,8 @@ from typing import Any, Callable
 
 from nck.check import CheckContext
 from nck.ncdata import NcData
+from nck.simulation.live import LiveRecording
+from nck.simulation.run import Simulation
 # The measuring screens' arithmetic (pure functions on touch positions, nck.measuring),
 # re-exported here so that screens reach it through the façade.
 from nck.measuring import (Circle as Circle, Corner as Corner, circle as circle, corner as corner,
@@ -124,6 +126,13 @@ class ActionLevel:
 
 
 @dataclass(frozen=True)
+class RecordedCut:
+    """Simultaneous recording: the cut of the last AUTO program run as far as it executed
+    (:class:`nck.simulation.run.Simulation`, status ``running`` or ``ended``); ``None`` before a
+    program was started with recording on (:func:`record_cuts`)."""
+
+
+@dataclass(frozen=True)
 class CheckSetting:
     """What the editor's check and simulation run on: :class:`nck.check.CheckContext`.
 
@@ -220,6 +229,30 @@ def _action_level(nck: Any, query: ActionLevel) -> int:
     return int(reader(query.action)) if reader else UNPROTECTED_LEVEL
 
 
+def record_cuts(nck: Any) -> None:
+    """Switch simultaneous recording on: every following AUTO program start of ``nck`` records
+    its cut (:class:`nck.simulation.live.LiveRecording`); ``RecordedCut`` answers it."""
+    programs = getattr(nck, "programs", None)
+
+    def text_of(name: str) -> str:
+        found = programs.read_program(name) if programs is not None else None
+        return found[1] if found else ""
+
+    def start(name: str, tool: int, edge: int) -> LiveRecording:
+        return LiveRecording(nck.machine, nck.data, name, text_of(name), tool, edge)
+
+    nck.run_recorder_factory = start
+
+
+def _recorded_cut(nck: Any, query: RecordedCut) -> Simulation | None:
+    recording = getattr(nck, "run_recording", None)
+    if recording is None:
+        return None
+    status = nck.status()
+    ended = status.channel.channel_state == "reset"
+    return recording.snapshot(nck.current_source(), ended, getattr(nck, "time_s", 0.0))
+
+
 def _check_setting(nck: Any, query: CheckSetting) -> CheckContext:
     data = getattr(nck, "data", None)
     return CheckContext(getattr(nck, "machine", None), copy.deepcopy(data) if isinstance(data, NcData) else None)
@@ -270,6 +303,7 @@ ANSWERS: dict[type, Callable[[Any, Any], Any]] = {
     RequiredLevel: _required_level,
     ActionLevel: _action_level,
     CheckSetting: _check_setting,
+    RecordedCut: _recorded_cut,
     ProgramSource: _program_source,
     ProgramNames: _program_names,
     MachineSetupData: _machine_setup,

@@ -19,6 +19,7 @@ from textual.widgets import ContentSwitcher, Input, Static, TextArea
 from nck import commands as cmd
 from nck.commands import Accepted
 from nck import fixed, trimmed
+from nck.queries import RecordedCut
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
@@ -28,6 +29,7 @@ from hmi.widgets.blocks import BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
 from hmi.widgets.header import increment_text
 from hmi.widgets.positions import PositionWindow
+from hmi.widgets.stock_view import StockPicture, StockView, material_events, picture_of
 
 from hmi.widgets.tfs import TfsWindow
 from screens.machine_jog_form import FieldEdited
@@ -35,7 +37,7 @@ from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
 from screens.machine_jog_touch import contact_line
 
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
-SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times")
+SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times", "simrec")
 PROGRAM_SELECTION_LEVEL = 6
 SEARCH_MODES = {
     "contour": "with calculation, contour",
@@ -110,6 +112,8 @@ class MachineScreen(AreaBase):
                              markup=False)
                 yield Input(placeholder="N…", id="search-input")
                 yield Static("", id="search-info", markup=False)
+            with Vertical(id="view-simrec", classes="view"):
+                yield StockView(id="simrec-stock")
             with Vertical(id="view-times", classes="view"):
                 yield Static(" Times / Counter", classes="view-title", markup=False)
                 yield Static("", id="times-table", markup=False)
@@ -143,7 +147,8 @@ class MachineScreen(AreaBase):
             Softkey("machine.select", "Select\nprogram", "select_program",
                     level=PROGRAM_SELECTION_LEVEL,
                     enabled=lambda s: s._mode() == "AUTO" and s._reset_state()),
-            None,
+            view_softkey("machine.simrec", "Simult.\nrecording", "simrec",
+                         enabled=lambda s: s._mode() == "AUTO"),
         ]
         return SoftkeyMenu.of(horizontal, self._vertical_softkeys())
 
@@ -172,6 +177,17 @@ class MachineScreen(AreaBase):
                 self._search_mode_key("search.end_point", "End\npoint", "end_point"),
                 self._search_mode_key("search.without", "Without\ncalculation", "without_calculation"),
                 self._search_mode_key("search.serupro", "SERUPRO", "serupro"),
+            ]
+        if view == "simrec":
+            return [
+                Softkey("simrec.xy", "Top view\nXY", "simrec('view', 'XY')"),
+                Softkey("simrec.xz", "Side view\nXZ", "simrec('view', 'XZ')"),
+                Softkey("simrec.yz", "Side view\nYZ", "simrec('view', 'YZ')"),
+                Softkey("simrec.zoom_in", "Zoom +", "simrec('zoom', 1)"),
+                Softkey("simrec.zoom_out", "Zoom -", "simrec('zoom', -1)"),
+                Softkey("simrec.fit", "Fit", "simrec('fit')"),
+                Softkey("simrec.overlay", "Path\non/off", "simrec('overlay')",
+                        active=lambda s: s.query_one("#simrec-stock", StockView).overlay),
             ]
         if view == "times":
             return [
@@ -392,6 +408,8 @@ class MachineScreen(AreaBase):
             show_text(self.query_one("#progctl-table", Static), self._progctl_text(status))
         elif view_id == "view-times":
             show_text(self.query_one("#times-table", Static), self._times_text(status))
+        elif view_id == "view-simrec":
+            self._show_recording()
         elif self.view in JOG_WINDOWS:
             self.jog.show(self.view, status)
         elif view_id == "view-search":
@@ -411,10 +429,38 @@ class MachineScreen(AreaBase):
             field = self.query_one("#search-input", Input)
             if focused is not field:
                 focus_now(field)
+        elif view_id == "view-simrec":
+            stock = self.query_one("#simrec-stock", StockView)
+            if focused is not stock:
+                focus_now(stock)
         elif self.view in JOG_WINDOWS:
             pass  # the window puts the focus into its fields (JogWindows.show)
         elif focused is not None:
             self.set_focus(None)
+
+    # -- simultaneous recording ---------------------------------------------------------------
+    def _show_recording(self) -> None:
+        """The cut of the running program as far as it executed (asked of the kernel anew on
+        each redraw; only a grown cut is drawn again)."""
+        stock = self.query_one("#simrec-stock", StockView)
+        cut = self.ask(RecordedCut())
+        if cut is None:
+            if not stock.picture.empty or not stock.status_text:
+                stock.set_picture(StockPicture(), "Simultaneous recording: starts with the next program start (CYCLE START)")
+            return
+        chords = len(cut.path.starts)
+        lines = cut.path.lines
+        where = f"line {int(lines[-1])}" if len(lines) else "no motion yet"
+        state = {"ended": "ended", "full": "recording stopped (too long)"}.get(cut.status, "recording")
+        note = f"{state} ({where}), {material_events(cut)}"
+        if chords != stock.picture.shown_chords or note != stock.status_text or stock.picture.empty:
+            stock.set_picture(picture_of(cut, cut.zmap, chords), note)
+
+    def action_simrec(self, action: str, *args: object) -> None:
+        """A softkey of the simultaneous recording view: the view, zoom, fit, path overlay."""
+        stock = self.query_one("#simrec-stock", StockView)
+        getattr(stock, f"action_{action}")(*args)
+        self.refresh_softkeys()
 
     # -- view texts ----------------------------------------------------------------------------
     def _jog_text(self, status: NckStatus) -> Text:

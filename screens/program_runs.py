@@ -28,7 +28,7 @@ from nck.queries import CheckSetting
 from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import ErrorMark
-from hmi.widgets.stock_view import StockPicture
+from hmi.widgets.stock_view import StockPicture, material_events, picture_of
 from hmi.widgets.toolpath import PathPiece
 
 CHECK_DEBOUNCE_S = 0.4
@@ -59,25 +59,6 @@ class _Breather:
             self._since = time.perf_counter()
 
 
-def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
-    """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it and the
-    path drawn up to chord ``chords`` (the tool stands at that chord's end). A lathe's picture
-    is the half section: Z across, the radius up (``simulation.turning``)."""
-    path = simulation.path
-    tool, tool_radius = simulation.tool_at(chords)
-    starts, ends = simulation.drawn_path()
-    blank = simulation.blank
-    if simulation.turning:
-        extent_x, extent_y, extent_z = blank.z_mm, (0.0, 0.0), (0.0, blank.diameter_mm / 2.0)
-    else:
-        extent_x, extent_y, extent_z = blank.x_mm, blank.y_mm, blank.z_mm
-    return StockPicture(
-        heights=zmap.heights, x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm,
-        resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
-        starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
-        tool_radius_mm=tool_radius, turning=simulation.turning)
-
-
 def pieces_of(simulation: Any) -> list[PathPiece]:
     """The simulation's executed path as the toolpath view's straight pieces (WCS)."""
     path = simulation.path
@@ -103,8 +84,7 @@ def material_note(simulation: Any) -> str:
         alarm = simulation.alarms[0]
         parts.append(f"alarm {alarm.number} at line {alarm.line}")
     if simulation.events:
-        parts.append(simulation.events[0].text + (f" (+{len(simulation.events) - 1} more)"
-                                                  if len(simulation.events) > 1 else ""))
+        parts.append(material_events(simulation))
     if not simulation.alarms and not simulation.events:
         parts.append("no alarms")
     return ", ".join(parts)
@@ -304,7 +284,8 @@ class CheckAndSimulation:
             return  # a newer step or simulation is on its way
         line = self._material_blocks[step][0]
         self.stock.set_picture(picture_of(simulation, zmap, chords),
-                               f"block {step + 1}/{len(self._material_blocks)}, line {line}")
+                               f"block {step + 1}/{len(self._material_blocks)}, line {line}: "
+                               f"{simulation.modal_at(chords)}")
 
     def action_sim_overlay(self) -> None:
         """Path on/off: the toolpath over the material."""

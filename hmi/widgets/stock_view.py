@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from rich.style import Style
@@ -80,6 +81,34 @@ class StockPicture:
         points = np.vstack([np.array(box), self.ends[: self.shown_chords]]) if len(self.ends) else np.array(box)
         return (float(points[:, h].min()), float(points[:, h].max()),
                 float(points[:, v].min()), float(points[:, v].max()))
+
+
+def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
+    """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it and the
+    path drawn up to chord ``chords`` (the tool stands at that chord's end). A lathe's picture
+    is the half section: Z across, the radius up (``simulation.turning``)."""
+    path = simulation.path
+    tool, tool_radius = simulation.tool_at(chords)
+    starts, ends = simulation.drawn_path()
+    blank = simulation.blank
+    if simulation.turning:
+        extent_x, extent_y, extent_z = blank.z_mm, (0.0, 0.0), (0.0, blank.diameter_mm / 2.0)
+    else:
+        extent_x, extent_y, extent_z = blank.x_mm, blank.y_mm, blank.z_mm
+    return StockPicture(
+        heights=zmap.heights, x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm,
+        resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
+        starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
+        tool_radius_mm=tool_radius, turning=simulation.turning)
+
+
+def material_events(simulation: Any) -> str:
+    """The sweep's events in one phrase: the first one (and how many more), else none."""
+    events = simulation.events
+    if not events:
+        return "no collisions"
+    more = f" (+{len(events) - 1} more)" if len(events) > 1 else ""
+    return events[0].text + more
 
 
 @dataclass

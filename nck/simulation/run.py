@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 import numpy as np
 
 from nck import canon
@@ -36,7 +37,7 @@ from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_fr
 from nck.simulation.cutter import Cutter
 from nck.simulation.turning import Insert, TurnProfile, bar, bar_around, half_section
 from nck.simulation.zmap import ZMap
-from nck.workpiece import Cylinder
+from nck.workpiece import Cylinder, MachineSetup
 
 DEFAULT_RESOLUTION_MM = 0.5
 AUTO_CELLS = 400
@@ -80,6 +81,36 @@ class Toolpath:
     cutter_of: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int32))
     spindle_on: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
     numbers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))  # N (-1: none)
+    motion_of: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))  # index into states
+    states: list[ModalState] = field(default_factory=list)  # per executed motion
+
+
+@dataclass(frozen=True, slots=True)
+class ModalState:
+    """The modal state an executed motion ran with: its G groups (group → G code), the feed as
+    programmed, the active T and D, and the spindle speed (rpm, None: not programmed)."""
+
+    gcodes: Any
+    feed: float | None
+    tool: int
+    edge: int
+    speed_rpm: float | None
+
+    def text(self) -> str:
+        """The state in the panel's words: the shown groups' G codes, T, D, F, S."""
+        gcodes = dict(self.gcodes or {})
+        words = [str(gcodes[g]) for g in SHOWN_GROUPS if gcodes.get(g)]
+        words += [f"T{self.tool}", f"D{self.edge}"]
+        if self.feed is not None:
+            words.append(f"F{self.feed:g}")
+        if self.speed_rpm is not None:
+            words.append(f"S{self.speed_rpm:g}")
+        return " ".join(words)
+
+
+SHOWN_GROUPS = (1, 6, 7, 8, 14, 15)
+"""G groups the step view names (002: 1 motion, 6 plane, 7 tool radius compensation, 8 settable
+work offset, 14 absolute/incremental, 15 feed type) — the groups of the Machine area's G line."""
 
 
 @dataclass
@@ -117,6 +148,13 @@ class Simulation:
         """True for a lathe's simulation (a rotational profile, not a Z-map)."""
         return isinstance(self.zmap, TurnProfile)
 
+    def modal_at(self, chords: int) -> str:
+        """The modal state (G groups, T, D, F, S) of the block shown after ``chords`` chords."""
+        path = self.path
+        if chords <= 0 or not path.states:
+            return ""
+        return path.states[int(path.motion_of[chords - 1])].text()
+
     def drawn_path(self) -> tuple[np.ndarray, np.ndarray]:
         """The chords' starts and ends as a view draws them: the workpiece coordinates, on a
         lathe the half section (Z, 0, radius)."""
@@ -144,17 +182,23 @@ class Simulation:
         return zmap
 
 
-class _Recorder:
+class PathRecorder:
     """Collects the executed motions with the tool, edge and spindle state in force."""
 
-    def __init__(self, data: NcData, chord_tol_mm: float, turning: bool = False) -> None:
+    def __init__(self, data: NcData, chord_tol_mm: float, turning: bool = False, main: str = "") -> None:
         self.data = data
+        self.main = _file_key(main)
+        self._main_line = 0
+        self._main_line_of: dict[int, int] = {}  # id(motion) → the main program's line it runs for
         self.turning = turning
         self.tol = chord_tol_mm
         self.tool = 0
         self.selected = 0
         self.edge = 1
         self.spindle_on = False
+        self.speed_rpm: float | None = None
+        self.feed: float | None = None  # the last programmed F (modal, shown with G0 too)
+        self.states: list[ModalState] = []
         self.tool_times: dict[int, float] = {}
         self.position: np.ndarray | None = None
         self.mcs_minus_wcs: tuple[float, float, float] | None = None  # the work offset, tool length taken out
@@ -164,6 +208,16 @@ class _Recorder:
         self.counts: list[int] = []
         self.cutters: list[Cutter | Insert | None] = []
         self._cutter_index: dict[tuple[int, int], int] = {}
+
+    def block(self, block: Any) -> None:
+        """An interpreted block: its motions belong to its line if it is a block of the main
+        program, else (a subprogram or cycle) to the main program's block that called it."""
+        source = getattr(block, "source", None)
+        if source is not None and _file_key(source.file) == self.main:
+            self._main_line = source.line
+        for command in getattr(block, "commands", ()):
+            if isinstance(command, canon.Motion):
+                self._main_line_of[id(command)] = self._main_line
 
     def _cutter(self) -> int:
         key = (self.tool, self.edge)
@@ -195,6 +249,8 @@ class _Recorder:
         elif isinstance(command, canon.EdgeSelect):
             self.edge = command.edge
         elif isinstance(command, canon.SpindleCommand):
+            if command.speed_rpm is not None:
+                self.speed_rpm = command.speed_rpm
             if command.state in ("M3", "M4"):
                 self.spindle_on = command.speed_rpm is None or command.speed_rpm > 0.0
             elif command.state is not None:
@@ -238,7 +294,11 @@ class _Recorder:
         # the blank): it is drawn but cuts nothing (our choice; a real set-up starts clear).
         cutter = self._cutter() if not first else self._no_cutter()
         n = motion.source.n if motion.source.n is not None else -1
-        self.meta.append((motion.source.line or 0, motion.kind == "G0", self.tool, cutter, self.spindle_on, n))
+        line = self._main_line_of.pop(id(motion), None) or motion.source.line or 0
+        self.meta.append((line, motion.kind == "G0", self.tool, cutter, self.spindle_on, n))
+        if motion.feed is not None:
+            self.feed = motion.feed
+        self.states.append(ModalState(motion.gcodes, self.feed, self.tool, self.edge, self.speed_rpm))
         self.position = end
 
     def _points(self, motion: canon.Motion, start: np.ndarray, end: np.ndarray) -> np.ndarray:
@@ -275,6 +335,8 @@ class _Recorder:
             cutter_of=np.repeat(meta[:, 3], counts).astype(np.int32),
             spindle_on=np.repeat(meta[:, 4].astype(bool), counts),
             numbers=np.repeat(meta[:, 5], counts).astype(np.int64),
+            motion_of=np.repeat(np.arange(len(counts)), counts),
+            states=self.states,
         )
 
 
@@ -304,9 +366,9 @@ def record(
     machine = machine or load_machine()
     data = data if data is not None else NcData()
     source = programs if programs is not None else _NoPrograms()
-    recorder = _Recorder(data, chord_tol_mm=resolution_mm / 8.0, turning=machine.kind == "lathe")
+    recorder = PathRecorder(data, chord_tol_mm=resolution_mm / 8.0, turning=machine.kind == "lathe", main=name)
     run = run_program(machine, source, data, name, text=text, timeout_s=timeout_s,
-                      on_command=recorder, keep_commands=False)
+                      on_command=recorder, keep_commands=False, on_block=recorder.block)
     nominal = sum(recorder.tool_times.values())
     share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
     tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
@@ -334,31 +396,39 @@ def simulate(
     ``resolution_mm`` None: chosen from the blank's size (:func:`auto_resolution`).
     """
     data = data if data is not None else NcData()
-    setup = data.machine_setup
     machine = machine or load_machine()
     turning = machine.kind == "lathe"
     recording = record(name, text, machine=machine, programs=programs, data=data,
                        resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s)
     run, path, tool_times = recording.run, recording.path, recording.tool_times_s
     if blank is None:
-        blank = blank_from_text(text)
-    offset = recording.mcs_minus_wcs_mm
+        blank = choose_blank(text, data.machine_setup, recording.mcs_minus_wcs_mm, path, turning)
+    model = material_model(blank, resolution_mm, turning)
+    events = sweep_path(model, path)
+    return Simulation(blank, model, path, events, list(run.alarms), run.status, run.machine_time_s,
+                      tool_times, run.blocks)
+
+
+def choose_blank(text: str, setup: MachineSetup, offset: tuple[float, float, float] | None, path: Toolpath,
+                 turning: bool) -> Blank:
+    """The program's ``WORKPIECE``, else the set-up's clamped blank (unless hidden; needs the
+    work ``offset`` MCS − WCS), else a box (lathe: a bar) around the cutting moves of ``path``."""
+    blank = blank_from_text(text)
     if blank is None and setup.blank is not None and not setup.hidden and offset is not None:
         if turning and isinstance(setup.blank, Cylinder):
             back = setup.blank.base_mcs[2] - offset[2]
             blank = bar(setup.blank.diameter_mm, back, back + setup.blank.length_mm)
         elif not turning:
             blank = blank_from_setup(setup.blank, offset)
-    if blank is None:
-        blank = blank_for(path, turning)
-    model: ZMap | TurnProfile
+    return blank if blank is not None else blank_for(path, turning)
+
+
+def material_model(blank: Blank, resolution_mm: float | None, turning: bool) -> ZMap | TurnProfile:
+    """The uncut ``blank``: a Z-map, on a lathe a rotational profile (resolution None: chosen
+    from the blank's size)."""
     if turning:
-        model = TurnProfile(blank, resolution_mm or auto_resolution(blank, turning=True))
-    else:
-        model = ZMap(blank, resolution_mm or auto_resolution(blank))
-    events = sweep_path(model, path)
-    return Simulation(blank, model, path, events, list(run.alarms), run.status, run.machine_time_s,
-                      tool_times, run.blocks)
+        return TurnProfile(blank, resolution_mm or auto_resolution(blank, turning=True))
+    return ZMap(blank, resolution_mm or auto_resolution(blank))
 
 
 def auto_resolution(blank: Blank, turning: bool = False) -> float:
@@ -370,27 +440,28 @@ def auto_resolution(blank: Blank, turning: bool = False) -> float:
     return min(max(longest / AUTO_CELLS, 0.1), 2.0)
 
 
-def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None) -> list[SimEvent]:
-    """Sweep the first ``upto`` chords of ``path`` (all: None) through ``zmap``; return the events.
+def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None, first: int = 0) -> list[SimEvent]:
+    """Sweep the chords ``first`` … ``upto`` of ``path`` (to the end: None) through ``zmap``;
+    return the events.
 
     Rapid moves and moves with the spindle stopped are swept on their own (so that their cut
     is theirs alone); runs of cutting chords with the same cutter go in one batch.
     """
     total = len(path.starts) if upto is None else min(upto, len(path.starts))
     events: list[SimEvent] = []
-    if total == 0:
+    if total <= first:
         return events
-    cutter_of = path.cutter_of[:total]
-    alone = path.rapid[:total] | ~path.spindle_on[:total]
+    cutter_of = path.cutter_of[first:total]
+    alone = path.rapid[first:total] | ~path.spindle_on[first:total]
     # A new batch starts where the cutter changes or at every chord that must go alone.
-    breaks = np.flatnonzero((np.diff(cutter_of) != 0) | alone[1:] | alone[:-1]) + 1
-    bounds = np.concatenate(([0], breaks, [total]))
+    breaks = np.flatnonzero((np.diff(cutter_of) != 0) | alone[1:] | alone[:-1]) + 1 + first
+    bounds = np.concatenate(([first], breaks, [total]))
     for begin, end in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
-        cutter = path.cutters[int(cutter_of[begin])] if len(path.cutters) else None
+        cutter = path.cutters[int(path.cutter_of[begin])] if len(path.cutters) else None
         if cutter is None:
             continue
         depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)  # type: ignore[arg-type]
-        if alone[begin] and depth.size and float(depth.max()) > CUT_EPSILON_MM:
+        if alone[begin - first] and depth.size and float(depth.max()) > CUT_EPSILON_MM:
             kind = "rapid_cut" if path.rapid[begin] else "spindle_stopped"
             line = int(path.lines[begin]) or None
             number = int(path.numbers[begin]) if len(path.numbers) and path.numbers[begin] >= 0 else None
@@ -409,6 +480,11 @@ def blank_for(path: Toolpath, turning: bool = False) -> Blank:
     points = path.ends[cutting] if np.any(cutting) else path.ends
     reach = max((c.reach_mm for c in path.cutters if c is not None), default=0.0)
     return bar_around(points, reach) if turning else blank_around(points, reach)
+
+
+def _file_key(name: str) -> str:
+    """A program file's name as compared: without folders, upper case."""
+    return name.replace("\\", "/").rsplit("/", 1)[-1].upper()
 
 
 class _NoPrograms:

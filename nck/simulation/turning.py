@@ -180,14 +180,15 @@ def bar_around(points: np.ndarray, reach_mm: float) -> Blank:
     diameter they reach, from the front face Z 0 (or their highest Z, if above) back to the
     lowest Z they reach plus the insert and a margin (our choice)."""
     if points.size == 0:
-        return bar(60.0, -100.0, 0.0)
+        return bar(60.0, -100.0, 0.0, kind="path")
     diameter = max(float(np.abs(points[:, 0]).max()), 1.0)
     front = max(0.0, float(points[:, 2].max()) if points[:, 2].min() > 0.0 else 0.0)
     back = float(points[:, 2].min()) - reach_mm - 5.0
-    return bar(diameter, back, front)
+    return bar(diameter, back, front, kind="path")
 
 
-def bar(diameter_mm: float, back_z_mm: float, front_z_mm: float) -> Blank:
-    """A round bar along Z of ``diameter_mm`` from ``back_z_mm`` to ``front_z_mm``."""
+def bar(diameter_mm: float, back_z_mm: float, front_z_mm: float, kind: str = "cylinder") -> Blank:
+    """A round bar along Z of ``diameter_mm`` from ``back_z_mm`` to ``front_z_mm`` (``kind``
+    ``path``: one put around the path)."""
     radius = diameter_mm / 2.0
-    return Blank("cylinder", (-radius, radius), (-radius, radius), (back_z_mm, front_z_mm), diameter_mm)
+    return Blank(kind, (-radius, radius), (-radius, radius), (back_z_mm, front_z_mm), diameter_mm)

@@ -118,6 +118,9 @@ async def test_simulation_cuts_the_blank_and_steps_block_by_block(slots_dir: Pat
         assert screen.editor.cursor_location[0] == line - 1
         assert screen.stock.picture.shown_chords == chords
         assert f"block {len(blocks) - 3}/{len(blocks)}" in screen.stock.status_text
+        # the modal state at the shown block N110 G0 X50 Y35 (line 12): G0 in G17 G40 G54 G90
+        # G94 (N20 and the reset states), T1 D1 (N20, N30), F800 still in force (N60), S3000 (N30)
+        assert "line 12: G0 G17 G40 G54 G90 G94 T1 D1 F800 S3000" in screen.stock.status_text
         # one forward, singly
         await pilot.press("shift+f7")
         await settle(pilot)
@@ -271,3 +274,54 @@ def test_snapshot_lathe_half_section_partly_cut(snap_compare, shaft_dir: Path) -
     """The half section after the first pass (Ø36 to Z-30 and up, N50), the shoulder still to come."""
     assert snap_compare(make_lathe_app(shaft_dir), terminal_size=SIZE,
                         run_before=simulation_then(*["shift+f6"] * 5))
+
+
+async def start_recording(pilot) -> None:
+    """AUTO, select DEMO.MPF (Select program, F7), Simult. recording (F8), NC START."""
+    await pilot.press("alt+u")
+    await pilot.pause()
+    await pilot.press("f7")
+    await pilot.pause()
+    names = pilot.app.program_names()
+    await pilot.press(*["down"] * [n.upper().endswith("DEMO.MPF") for n in names].index(True), "enter")
+    await pilot.pause()
+    await pilot.press("f8")
+    await pilot.pause()
+    stock = pilot.app.screen.query_one("#simrec-stock")
+    assert "next program start" in stock.status_text
+    await pilot.press("alt+g")
+    await pilot.pause()
+
+
+async def test_simultaneous_recording_grows_while_the_program_runs(slots_dir: Path) -> None:
+    """Machine area, AUTO: the recording view shows the blank being cut as the program runs
+    (the machine's own run, asked through the bridge) and ends as the editor's simulation."""
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await start_recording(pilot)
+        stock = pilot.app.screen.query_one("#simrec-stock")
+        shown = []
+        for _ in range(60):
+            app.bridge.advance(1.0)
+            await pilot.pause()
+            shown.append(stock.picture.shown_chords)
+            if app.bridge.status.channel.channel_state == "reset":
+                break
+        await pilot.pause()
+        assert shown == sorted(shown) and len(set(shown)) > 4  # it grew step by step
+        assert stock.status_text.startswith("ended")
+        assert float(stock.picture.heights.min()) == pytest.approx(-8.0)  # the circle's pocket
+        await pilot.press("shift+f2", "minus", "f", "shift+f7")  # view keys and softkeys in a burst
+        await pilot.pause()
+        assert stock.view == "XZ" and stock.zoom == 1 and not stock.overlay
+
+
+def test_snapshot_simultaneous_recording_partly_cut(snap_compare, slots_dir: Path) -> None:
+    """The recording 12 s into the run: the frame slot partly cut, the tool on its way."""
+    async def run_before(pilot) -> None:
+        await start_recording(pilot)
+        pilot.app.bridge.advance(12.0)
+        await pilot.pause()
+        await pilot.pause()
+
+    assert snap_compare(make_program_app(slots_dir), terminal_size=SIZE, run_before=run_before)
