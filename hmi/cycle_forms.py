@@ -17,6 +17,7 @@ import re
 from dataclasses import dataclass
 from functools import cache
 
+from nck import trimmed
 from nck.queries import load_toml
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,23}$")
@@ -47,7 +48,7 @@ class CycleParam:
         if self.choices:
             return " / ".join(str(c) for c in self.choices)
         whole = " whole" if self.integer else ""
-        return f"{number_text(self.min_value)} … {number_text(self.max_value)}{whole}"
+        return f"{_limit(self.min_value)} … {_limit(self.max_value)}{whole}"
 
     def refusal(self, text: str) -> str | None:
         """Why ``text`` is not a value of this parameter, or None when it is (empty: not programmed)."""
@@ -69,9 +70,9 @@ class CycleParam:
         if self.integer and value != int(value):
             return f"{self.name}: only whole numbers permitted"
         if self.min_value is not None and value < self.min_value:
-            return f"{self.name}: value below the lower limit {number_text(self.min_value)}"
+            return f"{self.name}: value below the lower limit {_limit(self.min_value)}"
         if self.max_value is not None and value > self.max_value:
-            return f"{self.name}: value above the upper limit {number_text(self.max_value)}"
+            return f"{self.name}: value above the upper limit {_limit(self.max_value)}"
         return None
 
     def argument(self, text: str) -> str:
@@ -79,7 +80,7 @@ class CycleParam:
         text = text.strip()
         if self.kind == "name":
             return f'"{text.upper()}"'
-        return number_text(float(text)) if text else ""
+        return trimmed(float(text)) if text else ""
 
     def field_text(self, argument: str) -> str | None:
         """The field text of a call's argument; None when the form cannot show it."""
@@ -161,12 +162,6 @@ def cycle_menus() -> tuple[CycleMenu, ...]:
                 keys.append(MenuKey(key["label"], cycles, bool(key.get("mcall"))))
         menus.append(CycleMenu(menu_id, entry["label"], tuple(keys), entry.get("machine", "")))
     return tuple(menus)
-
-
-def forms_of_menu(menu_id: str) -> list[CycleForm]:
-    """The forms under the menu ``menu_id`` (``drilling`` …), in the order of its keys."""
-    menu = next(m for m in cycle_menus() if m.menu_id == menu_id)
-    return [cycle_forms()[cycle] for cycle in menu.cycles()]
 
 
 _CALL = re.compile(
@@ -280,12 +275,9 @@ def _form(name: str, entry: dict, sketches: dict) -> CycleForm:
 
 
 def _default_text(default: float | int | str) -> str:
-    return default if isinstance(default, str) else number_text(float(default))
+    return default if isinstance(default, str) else trimmed(default)
 
 
-def number_text(value: float | None) -> str:
-    """A value as the call line writes it: no trailing zeros, integers without a point."""
-    if value is None:
-        return ""
-    text = f"{value:.6f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
+def _limit(value: float | None) -> str:
+    """A range limit as the form shows it (none: empty)."""
+    return "" if value is None else trimmed(value)

@@ -13,8 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from hmi.cycle_forms import (CallLine, cycle_forms, cycle_menus, forms_of_menu, is_modal_call_off,
-                             modal_call_toggled, read_call)
+from hmi.cycle_forms import CallLine, cycle_forms, cycle_menus, is_modal_call_off, modal_call_toggled, read_call
 
 CYCLES_DIR = Path(__file__).resolve().parents[2] / "data" / "cycles"
 
@@ -34,7 +33,7 @@ def test_menus_group_the_cycles_as_operate() -> None:
     every = [c for menu in cycle_menus() for c in menu.cycles()]
     assert sorted(every) == sorted(cycle_forms()) and len(every) == len(set(every))
     assert all(len(menu.keys) <= 8 for menu in cycle_menus())
-    assert [f.cycle for f in forms_of_menu("turning")][:2] == ["CYCLE95", "CYCLE93"]
+    assert menus["turning"].cycles()[:2] == ["CYCLE95", "CYCLE93"]
 
 
 LEFT_OUT = {  # the 828D mode words the cycles accept and do not use (cycles.toml, forms)
