@@ -117,7 +117,7 @@ def exercise_from_table(exercise_id: str, table: Mapping[str, Any], source: Path
         checks = tuple(_checked(c, f"{where} step {index}") for c in step.get("checks", []))
         if not checks:
             raise ExerciseError(f"{where} step {index}: a step needs at least one check")
-        steps.append(Step(text(("text"), step), text("hint", step, ""), checks))
+        steps.append(Step(text("text", step), text("hint", step, ""), checks))
     if not steps:
         raise ExerciseError(f"{where}: an exercise needs at least one [[step]]")
     setup = table.get("setup", {})
