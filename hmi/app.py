@@ -37,7 +37,8 @@ from pathlib import Path
 from typing import Any, Callable
 
 from textual import events, on
-from textual.app import App
+from textual.app import App, SystemCommand
+from textual.command import CommandPalette
 from textual.driver import Driver
 from textual.drivers.linux_driver import LinuxDriver
 from textual.screen import Screen
@@ -59,6 +60,7 @@ from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
+from hmi.palette import Place, PlaceProvider, area_places
 from hmi.placeholder import PlaceholderScreen
 from hmi.program_lines import ProgramLines
 from hmi.messages import CommandRejected, NckStatusChanged, TerminalClosed
@@ -182,7 +184,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
 
     CSS_PATH = "hmi.tcss"
     TITLE = "SINUMERIK Operate trainer"
-    ENABLE_COMMAND_PALETTE = False
+    COMMANDS = App.COMMANDS | {PlaceProvider}
+    """The command palette (``app.palette``, Ctrl+P): system commands and the panel's places."""
     BINDINGS = [binding.to_binding() for binding in default_keymap().bindings]
     """Every key of ``data/keymap.toml``, as priority bindings (they work over editors)."""
 
@@ -470,7 +473,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         Dialogs of the area being left are cancelled (as Escape would): a dialog
         is never left pending to come back on the next visit.
         """
-        while isinstance(self.screen, AreaDialog):
+        while isinstance(self.screen, (AreaDialog, CommandPalette)):
             self.screen.dismiss(None)
         area = self.area_screen
         if area is not None:
@@ -483,6 +486,49 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         handler = getattr(top, "press_softkey", None)
         if callable(handler):
             handler(slot_id)
+
+    # -- command palette ---------------------------------------------------------------------
+    def get_system_commands(self, screen: Screen) -> Any:
+        """The palette's system commands: theme, keys (the F11 help), screenshot, quit (Ctrl+Q's way)."""
+        yield SystemCommand("Theme", "Change the colour theme", self.action_change_theme)
+        yield SystemCommand("Keys", "Show the keys in force (as F11)", self.action_help)
+        yield SystemCommand("Screenshot", "Save an SVG picture of the screen",
+                            lambda: self.set_timer(0.1, self.deliver_screenshot))
+        yield SystemCommand("Quit", "Quit the HMI (NC data is saved first)", self.action_quit_hmi)
+
+    def palette_places(self) -> list[Place]:
+        """Every operating area and the softkeys of its top level (:mod:`hmi.palette`).
+
+        An area already shown lists its softkeys as they are now (its view); one not
+        shown yet as a fresh screen of it would.
+        """
+        built = {screen.AREA_ID: screen for screen in self.area_screens}
+        places: list[Place] = []
+        for area in AREAS:
+            screen = built.get(area.id)
+            if screen is None:
+                screen_class, _ = load_area_screen(area)
+                screen = screen_class() if screen_class is not None else None
+            menu = screen.softkey_menu() if screen is not None else SoftkeyMenu.of()
+            places += area_places(area.id, " ".join(area.menu_label.split()), menu, self.keymap)
+        return places
+
+    def action_go_to_place(self, area_id: str, softkey_id: str = "") -> None:
+        """Show the area ``area_id`` and press its softkey ``softkey_id`` on the top level."""
+        if self.current_mode != area_id:
+            self.action_switch_area(area_id)
+        if softkey_id:
+            self.call_after_refresh(self._press_top_softkey, softkey_id)
+
+    def _press_top_softkey(self, softkey_id: str) -> None:
+        area = self.area_screen
+        if area is None:
+            return
+        area.clear_softkey_levels()
+        if area.current_menu().find(softkey_id) is None:
+            area.say("This softkey is not offered in the current view")
+            return
+        area.press_softkey_id(softkey_id)
 
     def area_menu(self) -> SoftkeyMenu:
         """The area menu shown by MENU SELECT (F9)."""

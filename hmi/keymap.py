@@ -21,7 +21,7 @@ ACTIONS: frozenset[str] = frozenset(
         "quit_hmi", "mode", "machine_function", "cycle_increment", "single_block",
         "cycle_start", "cycle_stop", "reset", "select_axis", "select_spindle", "jog",
         "rapid_overlay", "feed_override", "spindle_override", "keyswitch", "emergency_stop",
-        "handwheel",
+        "handwheel", "command_palette",
     }
 )
 """Every action id a key may name (the ``action_<id>`` methods of the app)."""

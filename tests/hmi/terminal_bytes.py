@@ -28,7 +28,7 @@ def _sequences() -> dict[str, str]:
               "end": "\x1b[F", "enter": "\r", "tab": "\t", "shift+tab": "\x1b[Z",
               "backspace": "\x7f", "space": " "}
     table |= {f"alt+{letter}": f"\x1b{letter}" for letter in string.ascii_lowercase}
-    table |= {f"ctrl+{letter}": chr(ord(letter) - 96) for letter in "cfqsuvz"}
+    table |= {f"ctrl+{letter}": chr(ord(letter) - 96) for letter in "cfpqsuvz"}
     return table
 
 

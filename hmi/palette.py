@@ -1,0 +1,103 @@
+"""The command palette's places: every operating area and every softkey of its top level.
+
+The palette (Ctrl+P, ``app.palette`` in ``data/keymap.toml``) offers Textual's
+system commands and, through :class:`PlaceProvider`, the places of the panel:
+an area (``Machine``, reached with Alt+M) and each softkey of an area's
+top softkey level, horizontal and vertical (``Machine ▸ Block search``, reached
+with Alt+M, F5). The softkeys are read from the menus the area screens show
+(:meth:`hmi.area.AreaBase.softkey_menu`), so the palette never holds a table
+of its own. Vertical softkeys depend on the area's view: the palette lists
+those of the view the area has now. Sub-levels pushed by a softkey (``More ▸``)
+are built by that softkey's action and are not listed.
+
+Choosing a place runs the app's ``go_to_place`` action: the area key, then the
+softkey as its function key would press it (refused in the panel's words when
+the access level or the state does not allow it).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable, Protocol
+
+from rich.text import Text
+from textual.command import DiscoveryHit, Hit, Hits, Provider
+
+from hmi.keymap import Keymap
+from hmi.softkeys import SoftkeyMenu
+
+PATH_SEPARATOR = " ▸ "
+
+
+@dataclass(frozen=True, slots=True)
+class Place:
+    """A place the palette can go to.
+
+    Attributes:
+        path: what the operator reads, ``Machine ▸ Block search``.
+        keys: the panel keys that lead there, ``Alt+M, F5``.
+        area_id: the operating area (mode id).
+        softkey_id: the softkey to press there (``""``: the area itself).
+    """
+
+    path: str
+    keys: str
+    area_id: str
+    softkey_id: str = ""
+
+
+def _one_line(label: str) -> str:
+    return " ".join(label.split())
+
+
+def area_places(area_id: str, area_name: str, menu: SoftkeyMenu, keymap: Keymap) -> list[Place]:
+    """The area itself and each softkey of ``menu`` (its top level), with their keys."""
+    area_key = keymap.by_id(f"area.{area_id}").key_display
+    places = [Place(area_name, area_key, area_id)]
+    for prefix, bar in (("h", menu.horizontal), ("v", menu.vertical)):
+        for index, softkey in enumerate(bar, start=1):
+            if softkey is None:
+                continue
+            slot_key = keymap.by_id(f"softkey.{prefix}{index}").key_display
+            places.append(Place(area_name + PATH_SEPARATOR + _one_line(softkey.label),
+                                f"{area_key}, {slot_key}", area_id, softkey.id))
+    return places
+
+
+class PlaceSource(Protocol):
+    """What the provider needs of the app: the places of the panel as they are now."""
+
+    def palette_places(self) -> Iterable[Place]:
+        """Every place, areas in panel order, each followed by its softkeys."""
+        ...  # pragma: no cover - protocol
+
+
+class PlaceProvider(Provider):
+    """Finds an area or a softkey by (part of) its name; choosing it goes there."""
+
+    _places: list[Place]
+
+    async def startup(self) -> None:
+        """Read the places once, as the palette opens (not on every key typed)."""
+        source: PlaceSource = self.app  # type: ignore[assignment]
+        self._places = list(source.palette_places())
+
+    def _go(self, place: Place):
+        async def go() -> None:
+            await self.app.run_action(f"go_to_place({place.area_id!r}, {place.softkey_id!r})")
+        return go
+
+    async def search(self, query: str) -> Hits:
+        """Places whose path matches ``query`` (fuzzy), best first; the keys as help."""
+        matcher = self.matcher(query)
+        for place in self._places:
+            score = matcher.match(place.path)
+            if score > 0:
+                yield Hit(score, matcher.highlight(place.path), self._go(place), text=place.path,
+                          help=place.keys)
+
+    async def discover(self) -> Hits:
+        """With nothing typed: the operating areas."""
+        for place in self._places:
+            if not place.softkey_id:
+                yield DiscoveryHit(Text(place.path), self._go(place), text=place.path, help=place.keys)

@@ -1,0 +1,90 @@
+"""The command palette (issue 27): Ctrl+P, the system commands and the places of the panel."""
+
+from __future__ import annotations
+
+from textual.command import CommandPalette
+from textual.widgets import Input
+
+from hmi.app import HmiApp
+from hmi.help import HelpScreen
+from hmi.keymap import default_keymap
+from hmi.palette import area_places
+from hmi.softkeys import Softkey, SoftkeyMenu
+from tests.hmi.conftest import SIZE
+
+
+def test_palette_key_is_one_key_of_the_keymap() -> None:
+    """Ctrl+P opens the palette; it is bound once, in data/keymap.toml, and nothing else uses it."""
+    keymap = default_keymap()
+    assert keymap.key_of("app.palette") == "ctrl+p"
+    holders = [b.id for b in keymap.bindings if "ctrl+p" in (k.strip() for k in b.keys.split(","))]
+    assert holders == ["app.palette"]
+
+
+def test_places_have_path_and_panel_keys() -> None:
+    """A softkey's place reads area ▸ label and its keys are the area key then the slot's key
+    (keymap contract: F1…F8 = HSK1…8, Shift+F1…F8 = VSK1…8)."""
+    menu = SoftkeyMenu.of([None, Softkey("x.g", "G\nfunctions", "noop")], [Softkey("x.v", "Start\nsearch", "noop")])
+    places = area_places("machine", "Machine", menu, default_keymap())
+    assert [(p.path, p.keys, p.softkey_id) for p in places] == [
+        ("Machine", "Alt+M", ""),
+        ("Machine ▸ G functions", "Alt+M, F2", "x.g"),
+        ("Machine ▸ Start search", "Alt+M, Shift+F1", "x.v"),
+    ]
+
+
+async def _choose(pilot, text: str) -> None:
+    await pilot.press("ctrl+p", *text)
+    await pilot.pause()
+    await pilot.press("down", "enter")
+    await pilot.pause()
+
+
+async def test_palette_finds_a_softkey_of_another_area(fake_app: HmiApp) -> None:
+    """Machine area: Ctrl+P, "wear", choose → Parameter area, tool wear view."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await _choose(pilot, "wear")
+        assert not isinstance(fake_app.screen, CommandPalette)
+        assert fake_app.current_mode == "parameter"
+        assert fake_app.screen.view == "wear"
+        await pilot.press("alt+m")  # the palette is gone from every area
+        assert fake_app.current_mode == "machine" and len(fake_app.screen_stack) == 1
+
+
+async def test_palette_finds_an_area(fake_app: HmiApp) -> None:
+    """Typing part of an area's name finds the area; choosing it shows the area."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await _choose(pilot, "diag")
+        assert fake_app.current_mode == "diagnostics"
+        assert isinstance(fake_app.screen, type(fake_app.area_screen))
+
+
+async def test_palette_in_a_burst(fake_app: HmiApp) -> None:
+    """Ctrl+P, the name and the choice in one burst; the keys after it reach the area."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+p", *"g fun", "down", "enter", "alt+o")
+        await pilot.pause()
+        assert fake_app.current_mode == "parameter"
+        await pilot.press("alt+m")
+        assert fake_app.screen.view == "gfunc"
+
+
+async def test_keymap_keys_never_type_into_the_palette(fake_app: HmiApp) -> None:
+    """A softkey key in the palette neither types nor presses the area's softkey; an area key
+    closes the palette and shows the area."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+p", "a", "b", "f2", "shift+f1", "ctrl+up")
+        palette = fake_app.screen
+        assert isinstance(palette, CommandPalette)
+        assert palette.query_one(Input).value == "ab"
+        await pilot.press("alt+o")
+        assert fake_app.current_mode == "parameter" and not isinstance(fake_app.screen, CommandPalette)
+        await pilot.press("alt+m")
+        assert len(fake_app.screen_stack) == 1 and fake_app.screen.view is None
+
+
+async def test_keys_command_shows_the_help(fake_app: HmiApp) -> None:
+    """The system command "Keys" shows the F11 help of the keys in force."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await _choose(pilot, "keys")
+        assert isinstance(fake_app.screen, HelpScreen)
