@@ -68,7 +68,7 @@ from hmi.startup import start_session
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.stack_dump import register_stack_dump
 from hmi.terminal_driver import PanelTerminalDriver
-from hmi.theme import SINUMERIK_THEME
+from hmi.theme import HMI_THEMES, SINUMERIK_THEME
 
 
 RETAINED_SAVE_PERIOD_S = 5.0
@@ -193,8 +193,11 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
                  on_quit: Callable[[], None] | None = None, alarm_times: AlarmTimes | None = None) -> None:
         self.keymap = keymap or default_keymap()
         super().__init__()
-        self.register_theme(SINUMERIK_THEME)
+        for theme in HMI_THEMES:
+            self.register_theme(theme)
         self.theme = SINUMERIK_THEME.name
+        for name in set(self.available_themes) - {theme.name for theme in HMI_THEMES}:
+            self.unregister_theme(name)  # the palette's Theme command offers the HMI's themes only
         self.bridge = NckBridge(nck, realtime=realtime, alarm_times=alarm_times)
         self.latest_status: NckStatus | None = None
         self.hint = ""

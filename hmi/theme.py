@@ -1,4 +1,9 @@
-"""The SINUMERIK-like colour theme: dark blue/grey panels, orange and white highlights."""
+"""The HMI's colour themes: the dark SINUMERIK-like default, an Operate-like light one, and a
+high-contrast one for projectors (chosen with the palette's Theme command).
+
+Each theme sets Textual's base colours and the HMI's own variables (``$softkey-background`` …);
+colours written into widgets' Rich styles (tool path, block display) stay as they are.
+"""
 
 from __future__ import annotations
 
@@ -26,4 +31,55 @@ SINUMERIK_THEME = Theme(
         "block-current": "#f39200",
     },
 )
-"""The default (and only) theme of the HMI."""
+"""The default theme of the HMI."""
+
+OPERATE_LIGHT_THEME = Theme(
+    name="operate-light",
+    primary="#d46f00",  # orange, darkened to read on grey
+    secondary="#2f5f8a",
+    accent="#d46f00",
+    foreground="#1b1f23",
+    background="#d9dee3",  # light grey desk, as Operate's newer screens
+    surface="#eef1f4",
+    panel="#b7c3cf",
+    warning="#b35c00",
+    error="#c0161b",
+    success="#2e7d32",
+    dark=False,
+    variables={
+        "softkey-background": "#a9b8c7",
+        "softkey-disabled": "#7d8894",
+        "header-background": "#2f5f8a",
+        "alarm-red": "#c0161b",
+        "alarm-orange": "#b35c00",
+        "block-current": "#d46f00",
+    },
+)
+"""Light grey panels with dark text, for bright rooms."""
+
+HIGH_CONTRAST_THEME = Theme(
+    name="high-contrast",
+    primary="#ffff00",
+    secondary="#00ffff",
+    accent="#ffff00",
+    foreground="#ffffff",
+    background="#000000",
+    surface="#000000",
+    panel="#1c1c1c",
+    warning="#ffff00",
+    error="#ff3030",
+    success="#00ff00",
+    dark=True,
+    variables={
+        "softkey-background": "#303030",
+        "softkey-disabled": "#8a8a8a",
+        "header-background": "#000000",
+        "alarm-red": "#ff3030",
+        "alarm-orange": "#ffff00",
+        "block-current": "#ffff00",
+    },
+)
+"""White on black with yellow highlights, for projectors."""
+
+HMI_THEMES: tuple[Theme, ...] = (SINUMERIK_THEME, OPERATE_LIGHT_THEME, HIGH_CONTRAST_THEME)
+"""The themes offered by the palette's Theme command, the default first."""

@@ -88,3 +88,18 @@ async def test_keys_command_shows_the_help(fake_app: HmiApp) -> None:
     async with fake_app.run_test(size=SIZE) as pilot:
         await _choose(pilot, "keys")
         assert isinstance(fake_app.screen, HelpScreen)
+
+
+async def test_theme_command_offers_the_hmi_themes(fake_app: HmiApp) -> None:
+    """Theme lists the dark, light and high-contrast themes only; choosing one applies it."""
+    assert set(fake_app.available_themes) == {"sinumerik", "operate-light", "high-contrast"}
+    async with fake_app.run_test(size=SIZE) as pilot:
+        assert fake_app.theme == "sinumerik"
+        await _choose(pilot, "theme")
+        assert isinstance(fake_app.screen, CommandPalette)
+        await pilot.press(*"contrast")
+        await pilot.pause()
+        await pilot.press("down", "enter")
+        await pilot.pause()
+        assert fake_app.theme == "high-contrast"
+        assert len(fake_app.screen_stack) == 1

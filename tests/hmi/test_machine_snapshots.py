@@ -166,3 +166,17 @@ def test_placeholder_area(snap_compare) -> None:
     app = app_on(FakeNck())
     app._modes["parameter"] = area_screen_factory(Area("no_module_zz", "PARAMETER", "Parameter"))
     assert snap_compare(app, terminal_size=SIZE, press=["alt+o"])
+
+
+def test_machine_area_light_theme(snap_compare) -> None:
+    """The Machine area (JOG) in the Operate-like light theme."""
+    app = app_on(referenced_fake())
+    app.theme = "operate-light"
+    assert snap_compare(app, terminal_size=SIZE)
+
+
+def test_machine_area_high_contrast_theme(snap_compare) -> None:
+    """The Machine area (JOG) in the high-contrast theme."""
+    app = app_on(referenced_fake())
+    app.theme = "high-contrast"
+    assert snap_compare(app, terminal_size=SIZE)
