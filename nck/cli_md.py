@@ -23,6 +23,7 @@ import sys
 from typing import Any, Callable, TextIO
 
 from nck.access import AccessDenied, level_name
+from nck.cli_data_dir import run_on_data_dir
 from nck.cli_parser import CliError, CliParser
 from nck.cli_password import level_of_password
 from nck.machine import MachineFileError, load_machine
@@ -35,8 +36,6 @@ from nck.machine_data import (
     UnknownDataError,
     format_value,
 )
-from nck.datalock import DataDirLockError, lock_data_dir
-from nck.paths import open_data_dir
 from nck.persistence import Session
 from nck.resources import alarm_text
 
@@ -90,27 +89,8 @@ def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], Non
     except MachineFileError as exc:
         print(f"nck md: {exc}", file=err)
         return 2
-    try:
-        data_dir, ephemeral = open_data_dir(options.data_dir, options.ephemeral)
-    except OSError as exc:
-        print(f"nck md: data directory {options.data_dir}: {exc.strerror}", file=err)
-        return 2
-    lock = None
-    try:
-        if ephemeral is None:  # an HMI working on this directory would overwrite what we write
-            lock = lock_data_dir(data_dir)
-        return _run(options, machine, data_dir, out, err, wait_s)
-    except DataDirLockError as exc:
-        print(f"nck md: {exc}", file=err)
-        return 2
-    except OSError as exc:
-        print(f"nck md: data directory {data_dir}: {exc.strerror or exc}", file=err)
-        return 2
-    finally:
-        if lock is not None:
-            lock.release()
-        if ephemeral is not None:
-            ephemeral.cleanup()
+    return run_on_data_dir("nck md", options.data_dir, options.ephemeral, err,
+                           lambda data_dir: _run(options, machine, data_dir, out, err, wait_s))
 
 
 def _run(options: argparse.Namespace, machine, data_dir, out: TextIO, err: TextIO,

@@ -22,11 +22,10 @@ import sys
 from typing import Callable, TextIO
 
 from nck.access import Action, level_name
+from nck.cli_data_dir import run_on_data_dir
 from nck.cli_parser import CliError, CliParser
 from nck.cli_password import level_of_password
-from nck.datalock import DataDirLockError, lock_data_dir
 from nck.machine import MachineConfig, MachineFileError, load_machine
-from nck.paths import open_data_dir
 from nck.persistence import Session
 from nck.resources import alarm_text
 from nck.setup_fields import SetupFieldError, setup_fields, with_field
@@ -54,27 +53,9 @@ def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], Non
         return 2
     except SystemExit as exc:  # --help
         return int(exc.code or 0)
-    try:
-        data_dir, ephemeral = open_data_dir(options.data_dir, options.ephemeral)
-    except OSError as exc:
-        print(f"nck setup: data directory {options.data_dir}: {exc.strerror}", file=err)
-        return 2
-    lock = None
-    try:
-        if ephemeral is None:
-            lock = lock_data_dir(data_dir)
-        return _run(options, machine, Session.open(data_dir, machine), out, err, wait_s)
-    except DataDirLockError as exc:
-        print(f"nck setup: {exc}", file=err)
-        return 2
-    except OSError as exc:
-        print(f"nck setup: data directory {data_dir}: {exc.strerror or exc}", file=err)
-        return 2
-    finally:
-        if lock is not None:
-            lock.release()
-        if ephemeral is not None:
-            ephemeral.cleanup()
+    return run_on_data_dir(
+        "nck setup", options.data_dir, options.ephemeral, err,
+        lambda data_dir: _run(options, machine, Session.open(data_dir, machine), out, err, wait_s))
 
 
 def _run(options: argparse.Namespace, machine: MachineConfig, session: Session, out: TextIO, err: TextIO,
