@@ -159,7 +159,7 @@ class BlockRun:
             self.repeat = stmt  # type: ignore[assignment]
         elif kind is ast.Case:
             self.executable = True
-            value = self.eval(stmt.expr)  # type: ignore[union-attr]
+            value = self.eval(stmt.expr)  # type: ignore[union-attr,arg-type]
             self.goto = stmt.default  # type: ignore[union-attr]
             for constant, goto in stmt.branches:  # type: ignore[union-attr]
                 if equal(value, self.eval(constant)):
@@ -167,7 +167,7 @@ class BlockRun:
                     break
         elif kind is ast.IfGoto:
             self.executable = True
-            if to_bool(self.eval(stmt.cond)):  # type: ignore[union-attr]
+            if to_bool(self.eval(stmt.cond)):  # type: ignore[union-attr,arg-type]
                 self.goto = stmt.goto  # type: ignore[union-attr]
         elif kind is ast.Call:
             self.executable = True
@@ -465,12 +465,12 @@ class BlockRun:
         elif kind == "ENDFOR":
             opener = program.partner[index]
             head = program.lines[opener].block.statements[0]  # type: ignore[union-attr]
-            end = self.frame.for_ends.get(opener)
-            if end is None:
+            loop_end = self.frame.for_ends.get(opener)
+            if loop_end is None:
                 raise NcAlarmError(CONTROL_STRUCTURES_NOT_NESTED)
-            value = to_number(self._read_target(head.var), "FOR") + 1  # type: ignore[union-attr]
+            value = to_number(self._read_target(head.var), "FOR") + 1  # type: ignore[union-attr,arg-type]
             self.assign(head.var, value)  # type: ignore[union-attr,arg-type]
-            if to_number(self._read_target(head.var), "FOR") <= end:  # type: ignore[union-attr]
+            if to_number(self._read_target(head.var), "FOR") <= loop_end:  # type: ignore[union-attr,arg-type]
                 self.next_pc = opener + 1
         # ENDIF, LOOP, REPEAT: fall through to the next block
 

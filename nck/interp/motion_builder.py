@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import Any, cast
 
 from nck.alarm_ids import (
     ADDRESS_PROGRAMMED_TWICE, CHAMFER_OR_ROUNDING_NEGATIVE, CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION,
@@ -299,7 +299,8 @@ class MotionBuilder:
         held = list(self.path.flush(modal))
         if held:
             held = trc_canon.process(held, modal, self.path, self.data, self.machine)
-        return self._released(held, modal, self.path.state(modal))
+        # the path holds back motions only: a list of them is a list of canon commands
+        return self._released(cast(list[canon.CanonCommand], held), modal, self.path.state(modal))
 
     def _rounding_distances(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> None:
         """ADIS= / ADISPOS= (G641 rounding distances, modal; 16500 when negative)."""
@@ -323,7 +324,8 @@ class MotionBuilder:
         if held:
             held = trc_canon.process(held, modal, self.path, self.data, self.machine)
         held += trc_canon.flush(modal, self.path, self.data)
-        return self._released(held, modal, self.path.state(modal)) if geo is not None else held
+        commands = cast(list[canon.CanonCommand], held)
+        return self._released(commands, modal, self.path.state(modal)) if geo is not None else commands
 
     def sync_position(self, modal: ModalState, position_mcs: dict[str, float]) -> None:
         """Take over actual machine positions; the programmed WCS follows via frames and tool."""
@@ -339,8 +341,8 @@ class MotionBuilder:
         held = self.release_held(modal)
         # With radius compensation G4 is a block without plane motion, not a stop of the look-ahead.
         geo = self.path.state(modal)
-        out: list[canon.CanonCommand] = held + self._released(trc_canon.process(
-            [], modal, self.path, self.data, self.machine, words.source), modal, geo)
+        own = trc_canon.process([], modal, self.path, self.data, self.machine, words.source)
+        out: list[canon.CanonCommand] = held + self._released(cast(list[canon.CanonCommand], own), modal, geo)
         seconds = words.words.get("F")
         revolutions = words.words.get("S")
         if seconds is None and revolutions is None:

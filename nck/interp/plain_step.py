@@ -35,10 +35,10 @@ def step_plain(interp: InterpreterHost) -> BlockResult | None:
     if program.plain_run_end(index) <= index:
         return None
     raw = lines.raw(index)
-    found = PLAIN_LINE.fullmatch(raw)
-    if found is None:
+    line_match = PLAIN_LINE.fullmatch(raw)
+    if line_match is None:
         return None
-    number, motion_a, distance_a, distance_b, motion_b, x, y, z, f = found.groups()
+    number, motion_a, distance_a, distance_b, motion_b, x, y, z, f = line_match.groups()
     motion = motion_a or motion_b
     setup = simple_setup(interp, None if motion is None else G_CODES[motion])
     if setup is None:

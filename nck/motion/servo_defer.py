@@ -37,6 +37,7 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
     if pending:
         previous = pending[-1][-1]
         start = bank.pending_bound
+        assert start is not None, "queued blocks always carry their bound"
     else:
         if not np.array_equal(bank.e, bank.e_model):
             return None  # a contour deviation: the full model decides
