@@ -15,6 +15,11 @@ from dataclasses import dataclass, field
 from typing import Mapping, Protocol
 
 
+FEED_PER_REVOLUTION = frozenset({"G95", "G96", "G97", "G952", "G962", "G972"})
+"""Feed types (G group 15) whose F is a feed per revolution of the master spindle: G95, and
+G96/G97 "as with G95" (001 L2584: with G97 the feedrate is a revolutional feedrate; 002 L5773).
+G961/G971 keep a linear feed."""
+
 @dataclass(frozen=True, slots=True)
 class Source:
     """Where a command came from: program file, 1-based line, block number."""

@@ -9,6 +9,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Mapping
 
+from nck.canon import FEED_PER_REVOLUTION
+
 
 @dataclass(frozen=True, slots=True)
 class AxisStatus:
@@ -62,6 +64,11 @@ class ModalView:
     tool_length_mm: float = 0.0  # length 1 of the active edge (geometry + wear), for the T,F,S window
     tool_radius_mm: float = 0.0  # radius of the active edge (geometry + wear)
     iso_gcodes: Mapping[int, str] = field(default_factory=dict)  # ISO group → code; empty in Siemens mode
+
+    @property
+    def feed_per_revolution(self) -> bool:
+        """Whether F is a feed per revolution (G95, G96, G97 …) rather than per minute."""
+        return self.gcodes.get(15) in FEED_PER_REVOLUTION
 
 
 @dataclass(frozen=True, slots=True)

@@ -30,9 +30,9 @@ def tfs_lines(status: NckStatus) -> Text:
     text.append(f"   L {fixed(modal.tool_length_mm, 3, 10)}   R {fixed(modal.tool_radius_mm, 3, 8)}\n")
     text.append(" F ", style="bold")
     # Actual: the interpolator's path velocity (rapid in G0, JOG in JOG), always per minute;
-    # programmed: F in its feed type. Under G95 each value carries its own unit.
+    # programmed: F in its feed type. Per revolution (G95, G96, G97) each value carries its own unit.
     actual = fixed(status.channel.path_feed_mm_min, 3, 10)
-    if modal.gcodes.get(15) == "G95":
+    if modal.feed_per_revolution:
         text.append(f"{actual} mm/min / {fixed(modal.feed, 3, 8)} mm/rev")
     else:
         text.append(f"{actual} / {fixed(modal.feed, 3, 10)} mm/min")

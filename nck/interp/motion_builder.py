@@ -52,7 +52,6 @@ from nck.ncdata import NcData
 
 SPINDLE_M = {3: "M3", 4: "M4", 5: "M5", 19: "M19"}
 SPINDLE_STATE_M = {state: number for number, state in SPINDLE_M.items()}
-FEED_TYPES_PER_REV = ("G95", "G96", "G97")
 ALARM_NO_TRANSVERSE_AXIS = 10870  # G96 without a transverse axis (MD20100)
 ALARM_G96_WITHOUT_S = 10900  # first G96 without a cutting speed S
 ALARM_LIMS_NEGATIVE = 14820  # negative maximum spindle speed for G96 (LIMS)
@@ -444,7 +443,7 @@ class MotionBuilder:
             if modal.gcodes.get(7) in ("G41", "G42"):
                 raise NcAlarmError(ALARM_G93_WITH_TRC)  # 002 L55402
             return {"feed": modal.feed, "feed_mm_min": None, "inverse_time": True}
-        if feed_type in FEED_TYPES_PER_REV or feed_type in ("G952", "G962", "G972"):
+        if feed_type in canon.FEED_PER_REVOLUTION:
             # Revolutional feed follows the master spindle; while it stands the path waits (V1).
             return {"feed": modal.feed, "feed_mm_min": modal.feed * geo.feed_unit_mm * _turning_rpm(modal),
                     "inverse_time": False, "feed_mm_rev": modal.feed * geo.feed_unit_mm}
@@ -687,7 +686,7 @@ def _feed_family(feed_type: str) -> str:
     """``time`` (G93), ``rev`` (per revolution) or ``lin`` (per minute) feed."""
     if feed_type == "G93":
         return "time"
-    if feed_type in ("G95", "G96", "G97", "G952", "G962", "G972"):
+    if feed_type in canon.FEED_PER_REVOLUTION:
         return "rev"
     return "lin"
 

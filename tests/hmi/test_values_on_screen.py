@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from dataclasses import replace
 
 from hmi.app import HmiApp
@@ -103,14 +105,26 @@ async def test_tfs_actual_feed_is_the_path_velocity_with_override_and_zero_after
         assert tfs_feed_line(app)[:5] == ["F", "0.000", "/", "1000.000", "mm/min"]
 
 
-def test_tfs_feed_under_g95_names_both_units() -> None:
-    """G95: the programmed F is per revolution, the actual path velocity per minute
-    (0.25 mm/rev at 1000 rpm = 250 mm/min, 002 L55411-55420): each value carries its unit."""
+@pytest.mark.parametrize("feed_type", ["G95", "G96", "G97"])
+def test_tfs_feed_per_revolution_names_both_units(feed_type) -> None:
+    """G95, and G96/G97 "as with G95" (001 L2584, 002 L5773): the programmed F is per
+    revolution, the actual path velocity per minute (0.25 mm/rev at 1000 rpm = 250 mm/min,
+    002 L55411-55420): each value carries its unit."""
     status = FakeNck(referenced=True).status()
-    modal = replace(status.channel.modal, gcodes={**status.channel.modal.gcodes, 15: "G95"}, feed=0.25)
+    modal = replace(status.channel.modal, gcodes={**status.channel.modal.gcodes, 15: feed_type}, feed=0.25)
     status = replace(status, channel=replace(status.channel, modal=modal, path_feed_mm_min=250.0))
     line = next(row for row in str(tfs_lines(status)).splitlines() if row.split()[:1] == ["F"])
     assert line.split()[:6] == ["F", "250.000", "mm/min", "/", "0.250", "mm/rev"]
+
+
+def test_tfs_feed_under_g961_stays_per_minute() -> None:
+    """G961: constant cutting rate with a linear feed (002 L19676 lists it apart from the
+    revolutional G95/G96/G97): F is shown in mm/min."""
+    status = FakeNck(referenced=True).status()
+    modal = replace(status.channel.modal, gcodes={**status.channel.modal.gcodes, 15: "G961"}, feed=200.0)
+    status = replace(status, channel=replace(status.channel, modal=modal, path_feed_mm_min=200.0))
+    line = next(row for row in str(tfs_lines(status)).splitlines() if row.split()[:1] == ["F"])
+    assert line.split()[:5] == ["F", "200.000", "/", "200.000", "mm/min"]
 
 
 async def test_tfs_window_shows_a_tool_waiting_for_m6() -> None:
