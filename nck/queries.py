@@ -29,8 +29,6 @@ from nck.measuring import (Circle as Circle, Corner as Corner, circle as circle,
                            rotated_corner as rotated_corner, tool_length as tool_length,
                            tool_radius as tool_radius, z_surface as z_surface)
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry
-# Numbers as the operator reads them (no -0.000), for screens that may import the façade only.
-from nck.number_text import fixed as fixed, trimmed as trimmed
 # The machine set-up as named fields (the Setup area edits it as nck setup does).
 from nck.setup_fields import (SetupField as SetupField, SetupFieldError as SetupFieldError,
                               setup_fields as setup_fields, with_field as with_field)

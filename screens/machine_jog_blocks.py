@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from nck.queries import trimmed
+from nck import trimmed
 
 SPINDLE_FUNCTIONS = ("—", "M3", "M4", "M5")
 """Spindle direction of the T,S,M window: unchanged, clockwise, counter-clockwise, stop."""

@@ -25,8 +25,8 @@ from typing import TYPE_CHECKING, Callable
 from rich.text import Text
 from textual.app import ComposeResult
 
-from nck import commands as cmd
-from nck.queries import (MachineSetupData, ReadData, edge_position, fixed, offset_for, tool_length, tool_radius,
+from nck import commands as cmd, fixed
+from nck.queries import (MachineSetupData, ReadData, edge_position, offset_for, tool_length, tool_radius,
                          z_surface)
 from nck.status import NckStatus
 

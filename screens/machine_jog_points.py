@@ -26,8 +26,8 @@ from typing import TYPE_CHECKING, Callable
 from rich.text import Text
 from textual.app import ComposeResult
 
-from nck import commands as cmd
-from nck.queries import circle, corner, fixed, offset_for, rotated_corner
+from nck import commands as cmd, fixed
+from nck.queries import circle, corner, offset_for, rotated_corner
 from nck.status import NckStatus
 
 from screens.machine_jog_form import FieldSpec, JogForm

@@ -12,7 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from nck.queries import ContactEvents, ProbeDeflected, ReadData, fixed
+from nck import fixed
+from nck.queries import ContactEvents, ProbeDeflected, ReadData
 from nck.status import NckStatus
 
 PROBE_TOOL_TYPE = 710
