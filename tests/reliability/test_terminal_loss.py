@@ -192,9 +192,17 @@ def test_sigusr1_writes_the_thread_stacks_and_the_hmi_goes_on(tmp_path: Path, te
     data_dir = tmp_path / "data"
     hmi = start_hmi(terminals, data_dir)
     os.kill(hmi.pid, signal.SIGUSR1)
-    hmi.type(ALT_N)  # the signal is handled before the HMI can read this key
+    # The dump reads the other threads' frames without a lock: a thread busy meanwhile (the key
+    # reader parsing a key typed at once) can show a cut stack. So the key comes once the dump,
+    # which ends with the main thread's stack, is in the file.
+    stacks_file = data_dir / "hmi" / "thread-stacks.txt"
+    deadline = time.monotonic() + WAIT_S
+    while "_run_module_as_main" not in stacks_file.read_text():
+        assert time.monotonic() < deadline, f"no stacks within {WAIT_S} s: {stacks_file.read_text()!r}"
+        time.sleep(0.01)  # polling the file: the dump gives no other sign that it is complete
+    hmi.type(ALT_N)
     hmi.wait_for("PROGRAM MANAGER")
-    stacks = (data_dir / "hmi" / "thread-stacks.txt").read_text()
-    assert "run_input_thread" in stacks and "Current thread" in stacks
+    stacks = stacks_file.read_text()
+    assert "run_input_thread" in stacks and "Current thread" in stacks, stacks
     hmi.close_terminal()
     assert os.WEXITSTATUS(hmi.wait_exit()) == 128 + signal.SIGHUP
