@@ -41,7 +41,7 @@ STDOUT_CLOSED_EXIT = 141
 """Exit code when the reader of stdout went away: 128 + SIGPIPE, what a shell reports for such tools."""
 
 
-def _build_parser() -> argparse.ArgumentParser:
+def _build_parser() -> CliParser:
     parser = CliParser(prog="nck", description="Headless SINUMERIK NCK simulator")
     sub = parser.add_subparsers(dest="command")
     check = sub.add_parser("check", help="check programs without moving anything")
@@ -138,13 +138,9 @@ def _main(args: list[str]) -> int:
             print("nck md: not available in this build", file=sys.stderr)
             return 2
         return int(cli_md.main(args[1:], wait_s=wait_s))
-    try:
-        options = _build_parser().parse_args(args)
-    except CliError as exc:
-        print(f"nck: {exc}", file=sys.stderr)
-        return 2
-    except SystemExit as exc:  # --help
-        return int(exc.code or 0)
+    options = _build_parser().parse_command(args, sys.stderr)
+    if isinstance(options, int):
+        return options
     try:
         if options.command == "version":
             print(f"nck {__version__}")

@@ -23,7 +23,7 @@ import sys
 from typing import Callable, TextIO
 
 from nck.access import level_name
-from nck.cli_parser import CliError, CliParser
+from nck.cli_parser import CliParser
 from nck.cli_password import level_of_password
 from nck.datalock import DataDirLockError, lock_data_dir
 from nck.machine import MachineFileError, load_machine
@@ -32,7 +32,7 @@ from nck.persistence import ArchiveError, ArchiveRefused, Session
 from nck.resources import alarm_text
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser() -> CliParser:
     parser = CliParser(prog="nck archive", description="Export or import all NC data as one file")
     parser.add_argument("action", choices=["export", "import"])
     parser.add_argument("file")
@@ -46,14 +46,14 @@ def _parser() -> argparse.ArgumentParser:
 
 def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], None] | None = None) -> int:
     """Run ``nck archive`` with ``argv`` (without ``archive``); return the exit code."""
+    options = _parser().parse_command(argv, err)
+    if isinstance(options, int):
+        return options
     try:
-        options = _parser().parse_args(argv)
         machine = load_machine(options.machine)
-    except (CliError, MachineFileError) as exc:
+    except MachineFileError as exc:
         print(f"nck archive: {exc}", file=err)
         return 2
-    except SystemExit as exc:  # --help
-        return int(exc.code or 0)
     lock = None
     try:
         data_dir = resolve_data_dir(options.data_dir)

@@ -13,18 +13,17 @@ each, then the report. Exit codes: 0 done, 2 a file or exercise that cannot be u
 
 from __future__ import annotations
 
-import argparse
 import sys
 from pathlib import Path
 from typing import Any, TextIO
 
-from nck.cli_parser import CliError, CliParser
+from nck.cli_parser import CliParser
 from nck.exercise import ExerciseError, load_exercises
 from nck.exercise_checks import replay, report_text
 from nck.exercise_files import load_recording
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser() -> CliParser:
     parser = CliParser(prog="nck exercise", description="Guided exercises: list them, replay a recorded session")
     sub = parser.add_subparsers(dest="action")
     sub.add_parser("list", help="the shipped exercises")
@@ -55,13 +54,9 @@ def event_line(event: dict[str, Any], with_states: bool) -> str | None:
 
 def run(argv: list[str], out: TextIO, err: TextIO) -> int:
     """Run ``nck exercise`` with ``argv`` (without ``exercise``); return the exit code."""
-    try:
-        options = _parser().parse_args(argv)
-    except CliError as exc:
-        print(f"nck exercise: {exc}", file=err)
-        return 2
-    except SystemExit as exc:  # --help
-        return int(exc.code or 0)
+    options = _parser().parse_command(argv, err)
+    if isinstance(options, int):
+        return options
     try:
         exercises = {e.exercise_id: e for e in load_exercises()}
     except ExerciseError as exc:

@@ -24,7 +24,7 @@ from typing import Any, Callable, TextIO
 
 from nck.access import AccessDenied, level_name
 from nck.cli_data_dir import run_on_data_dir
-from nck.cli_parser import CliError, CliParser
+from nck.cli_parser import CliParser
 from nck.cli_password import level_of_password
 from nck.machine import MachineFileError, load_machine
 from nck.machine_data import (
@@ -40,7 +40,7 @@ from nck.persistence import Session
 from nck.resources import alarm_text
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser() -> CliParser:
     parser = CliParser(prog="nck md", description="Read and write machine and setting data")
     parser.add_argument("--machine", help="machine name or TOML file (default: the 3-axis mill)")
     parser.add_argument("--data-dir", help="NC data directory (default: the user data directory)")
@@ -77,13 +77,9 @@ def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], Non
 
     ``wait_s`` is how the command waits after a wrong ``--password`` (None: not at all).
     """
-    try:
-        options = _parser().parse_args(argv)
-    except CliError as exc:
-        print(f"nck md: {exc}", file=err)
-        return 2
-    except SystemExit as exc:  # --help
-        return int(exc.code or 0)
+    options = _parser().parse_command(argv, err)
+    if isinstance(options, int):
+        return options
     try:
         machine = load_machine(options.machine)
     except MachineFileError as exc:

@@ -23,7 +23,7 @@ from typing import Callable, TextIO
 
 from nck.access import Action, level_name
 from nck.cli_data_dir import run_on_data_dir
-from nck.cli_parser import CliError, CliParser
+from nck.cli_parser import CliParser
 from nck.cli_password import level_of_password
 from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.persistence import Session
@@ -33,7 +33,7 @@ from nck.setup_fields import SetupFieldError, setup_fields, with_field
 HIDDEN_TEXT = "(hidden)"
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser() -> CliParser:
     parser = CliParser(prog="nck setup", description="Read and change the machine set-up (blank, reference block)")
     parser.add_argument("--machine", help="machine name or TOML file (default: the 3-axis mill)")
     parser.add_argument("--data-dir", help="NC data directory (default: the user data directory)")
@@ -45,14 +45,14 @@ def _parser() -> argparse.ArgumentParser:
 
 def run(argv: list[str], out: TextIO, err: TextIO, wait_s: Callable[[float], None] | None = None) -> int:
     """Run ``nck setup`` with ``argv`` (without ``setup``); return the exit code."""
+    options = _parser().parse_command(argv, err)
+    if isinstance(options, int):
+        return options
     try:
-        options = _parser().parse_args(argv)
         machine = load_machine(options.machine)
-    except (CliError, MachineFileError) as exc:
+    except MachineFileError as exc:
         print(f"nck setup: {exc}", file=err)
         return 2
-    except SystemExit as exc:  # --help
-        return int(exc.code or 0)
     return run_on_data_dir(
         "nck setup", options.data_dir, options.ephemeral, err,
         lambda data_dir: _run(options, machine, Session.open(data_dir, machine), out, err, wait_s))
