@@ -101,9 +101,9 @@ def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
     The cache makes re-checking an edited program cost only the changed lines.
     """
     from nck.lang.parser import parse_block
-    from nck.lang.plain import is_plain
+    from nck.lang.plain import parses_without_alarm
 
-    if is_plain(line):  # plain motion blocks are valid without the parser
+    if parses_without_alarm(line):  # plain and simple motion blocks are valid without the parser
         return None
     try:
         parse_block(line, 1)

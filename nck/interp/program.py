@@ -1,7 +1,7 @@
 """A loaded program: its lines, labels, block numbers, control-structure matching.
 
-A Siemens program is scanned once at load time: every line is checked (plain
-motion blocks by one pattern, :mod:`nck.lang.plain`; the rest by the parser),
+A Siemens program is scanned once at load time: every line is checked (plain and
+simple motion blocks by patterns, :mod:`nck.lang.plain`; the rest by the parser),
 but only what the run needs is kept — the text, a line-start checkpoint every
 64 lines (:class:`~nck.lang.lines.TextLines`), the alarms of lines
 that do not parse, labels, control-structure partners and the runs of plain
@@ -30,7 +30,7 @@ from nck.lang import ast
 from nck.lang.dialect import SIEMENS, Dialect
 from nck.lang.gcodes import gtable
 from nck.lang.parser import parse_block
-from nck.lang.plain import NOT_PLAIN_LINE, has_statements, match_plain
+from nck.lang.plain import NOT_PLAIN_LINE, SIMPLE_LINE, has_statements, match_plain
 
 MAX_STRUCTURE_DEPTH = 16  # nesting depth of control structures per program level
 
@@ -232,6 +232,9 @@ def _load_siemens(name: str, text: str) -> Program:
             starts.append(next_plain)
             stops.append(index)
         next_plain = index + 1
+        if SIMPLE_LINE.fullmatch(raw) is not None:
+            indexer.add_simple(index)  # valid without the parser; parsed when it runs
+            continue
         try:
             block = parse_block(raw, index + 1)
         except NcAlarmError as alarm:
@@ -351,6 +354,12 @@ class _Indexer:
             self._control(stmt.kind, index, line_number, block)
         if gotos:
             self.gotos.append((index, line_number, block.number, gotos))
+
+    def add_simple(self, index: int) -> None:
+        """Index a simple motion line (:data:`nck.lang.plain.SIMPLE_LINE`) that a scan did not
+        parse: it has statements, and no label, control structure, jump or definition."""
+        if self.first_code is None:
+            self.first_code = index
 
     def _first_plain_code(self, upto: int) -> int | None:
         """First line before ``upto`` with statements among the plain lines a scan skipped."""

@@ -1,0 +1,122 @@
+"""Simple motion lines (:data:`nck.lang.plain.SIMPLE_LINE`) are valid without the parser.
+
+The load scan and the editor's check skip the parser for them (issue 25: a CAM program is
+mostly arcs with I/J or CR=); that is only right if every such line parses without an
+alarm and carries nothing the scan indexes (labels, control structures, jumps, definitions,
+G codes of one group twice). The properties compare the scan that skips them with the scan
+that parses every line on random programs.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nck.interp import program as program_module
+from nck.lang import ast
+from nck.lang.parser import parse_block
+from nck.lang.plain import SIMPLE_LINE, is_plain, parses_without_alarm
+from nck.interp.program import load_program
+
+NEVER = re.compile(r"(?!)")
+
+
+def _number(draw: Any, signed: bool) -> str:
+    whole = draw(st.integers(0, 99999))
+    style = draw(st.sampled_from(["int", "dec", "dot", "lead"]))
+    text = {"int": f"{whole}", "dec": f"{whole}.{draw(st.integers(0, 999)):03d}", "dot": f"{whole}.",
+            "lead": f".{draw(st.integers(0, 99))}"}[style]
+    return (draw(st.sampled_from(["", "-", "+"])) if signed else "") + text
+
+
+@st.composite
+def simple_lines(draw: Any) -> str:
+    """Lines of the simple-motion grammar, and near misses (other addresses, lower case, order)."""
+    words: list[str] = []
+    if draw(st.booleans()):
+        words.append(f"N{draw(st.integers(0, 999999999))}")
+    gwords = []
+    if draw(st.booleans()):
+        gwords.append(draw(st.sampled_from(["G0", "G1", "G2", "G3", "G00", "G01", "G02", "G03"])))
+    if draw(st.integers(0, 4)) == 0:
+        gwords.append(draw(st.sampled_from(["G90", "G91"])))
+    words += draw(st.permutations(gwords))
+    for axis in ("X", "Y", "Z", "I", "J", "K", "CR="):
+        if draw(st.booleans()):
+            words.append(axis + _number(draw, True))
+    if draw(st.integers(0, 3)) == 0:
+        words.append("F" + _number(draw, False))
+    if draw(st.integers(0, 6)) == 0:  # a near miss: another word, a second G of group 1, a swap
+        words.insert(draw(st.integers(0, len(words))),
+                     draw(st.sampled_from(["G17", "G2", "M3", "X1", "IF", "L1:", "x2", "CR=R1", "I=AC(3)"])))
+    separator = draw(st.sampled_from([" ", " ", "\t", ""]))
+    line = separator.join(words)
+    if draw(st.integers(0, 5)) == 0:
+        line += draw(st.sampled_from([" ; cut G2 X1", ";", "  ;I J K"]))
+    return line
+
+
+@settings(max_examples=400, deadline=None)
+@given(simple_lines())
+def test_a_simple_line_is_valid_for_the_parser(line: str) -> None:
+    if SIMPLE_LINE.fullmatch(line) is None:
+        return
+    block = parse_block(line, 1)
+    assert block.skip_level is None and block.label is None
+    assert program_module._check_gcodes(block) is None
+    assert all(isinstance(s, (ast.GWord, ast.AddressWord)) for s in block.statements)
+    assert is_plain(line) or block.statements
+
+
+def _scan(text: str) -> dict[str, Any]:
+    program_module._RECENT.clear()
+    program = load_program("SIMPLE.MPF", text)
+    return {
+        "alarms": [(a.number, a.line, a.n, a.params) for a in program.problems()],
+        "labels": dict(program.labels), "partner": dict(program.partner), "proc": program.proc,
+        "numbers": {n: program.find_number(n, -1, "F") for n in range(0, 40)},
+    }
+
+
+OTHER = ["PROC SUB", "R1=2", "X1..5", "L1:", "GOTOF L1", "GOTOB L9", "WHILE R1<3", "ENDWHILE", "IF R1>1",
+         "ENDIF", "G2 G3 X1", "DEF REAL A", "N5 G0 Z5", "", "; comment", "M30", "T1 D1 M6"]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.one_of(simple_lines(), st.sampled_from(OTHER)), min_size=1, max_size=30))
+def test_the_scan_skipping_simple_lines_finds_what_parsing_them_finds(lines: list[str]) -> None:
+    text = "\n".join(lines) + "\n"
+    skipping = _scan(text)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(program_module, "SIMPLE_LINE", NEVER)
+        parsing = _scan(text)
+    program_module._RECENT.clear()
+    assert skipping == parsing, text
+
+
+def test_the_scan_and_the_editor_check_parse_no_cam_arc(monkeypatch: pytest.MonkeyPatch) -> None:
+    from nck import check
+    import nck.lang.parser as parser_module
+
+    text = ("N10 G2 X10 Y0 I5 J0 F200\nN20 G03 X0 Y10 CR=-7.5\nN30 G1 X1 Y2 Z3 F100\n"
+            "N40 G2 X5 Y5 Z-1 I2.5 J2.5 K0 ; helix\nN50 G2 X1 IF\n")
+    assert parses_without_alarm("N20 G03 X0 Y10 CR=-7.5") and not parses_without_alarm("N50 G2 X1 IF")
+    parsed: list[str] = []
+    original = parser_module.parse_block
+
+    def spy(raw: str, line: int = 1) -> Any:
+        parsed.append(raw)
+        return original(raw, line)
+
+    monkeypatch.setattr(parser_module, "parse_block", spy)
+    monkeypatch.setattr(program_module, "parse_block", spy)
+    check._line_problem.cache_clear()
+    list(check.iter_syntax_alarms(text))
+    program_module._RECENT.clear()
+    load_program("ARCS.MPF", text)
+    program_module._RECENT.clear()
+    assert parsed == ["N50 G2 X1 IF", "N50 G2 X1 IF"]
