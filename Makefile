@@ -8,7 +8,7 @@ STAMP := $(VENV)/.installed
 # are compiled; stale bytecode is never used (Python checks the source's time stamp).
 COMPILE := $(BIN)/python -m compileall -q nck hmi screens bench >/dev/null
 
-.PHONY: run test fuzz bench snapshot-update clean
+.PHONY: run test fuzz bench snapshot-update clean browser
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -20,9 +20,22 @@ run: $(STAMP)
 	$(COMPILE)
 	$(BIN)/hmi
 
-test: $(STAMP)
+test: $(STAMP) browser
 	$(COMPILE)
 	$(BIN)/python -m pytest -q -n 2 -p no:cacheprovider --durations=15
+
+# Headless Chromium for the browser test of `hmi --serve` (tests/hmi/test_browser.py):
+# Debian's packages, installed when make runs as root (CI does); elsewhere the test is skipped.
+browser:
+	@if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "make: installing chromium and chromium-driver for the browser test"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver >/dev/null) \
+	      || echo "make: Chromium could not be installed: the browser test will be skipped"; \
+	  else \
+	    echo "make: no Chromium (apt-get install chromium chromium-driver as root): the browser test will be skipped"; \
+	  fi; \
+	fi
 
 fuzz: $(STAMP)
 	$(BIN)/python -m pytest -q -m fuzz -p no:cacheprovider -o timeout=0 --hypothesis-profile=fuzz

@@ -41,6 +41,7 @@ from textual.app import App, SystemCommand
 from textual.command import CommandPalette
 from textual.driver import Driver
 from textual.drivers.linux_driver import LinuxDriver
+from textual.drivers.web_driver import WebDriver
 from textual.screen import Screen
 
 from nck import commands as cmd
@@ -52,6 +53,7 @@ from nck import TERMINATION_SIGNALS, exit_on_termination
 from hmi.alarm_times import AlarmTimes
 from hmi.area import MIN_TERMINAL_SIZE, AreaBase
 from hmi.bridge import NckBridge
+from hmi.browser_driver import PanelBrowserDriver
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.exercise_run import ClassroomHost
@@ -70,6 +72,9 @@ from hmi.stack_dump import register_stack_dump
 from hmi.terminal_driver import PanelTerminalDriver
 from hmi.theme import HMI_THEMES, SINUMERIK_THEME
 
+
+PANEL_DRIVERS: dict[type[Driver], type[Driver]] = {LinuxDriver: PanelTerminalDriver, WebDriver: PanelBrowserDriver}
+"""Textual's drivers and the HMI's own in their place (the panel's key reader)."""
 
 RETAINED_SAVE_PERIOD_S = 5.0
 """Retained NC data that changed (part counters, alarm log …) is written at least this often."""
@@ -231,9 +236,10 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         return build
 
     def get_driver_class(self) -> type[Driver]:
-        """Textual's driver for this platform; on a Linux/macOS terminal the HMI's key reader."""
+        """Textual's driver for this platform; on a Linux/macOS terminal and in a browser tab
+        (``hmi --serve``) with the HMI's key reader."""
         driver = super().get_driver_class()
-        return PanelTerminalDriver if driver is LinuxDriver else driver
+        return PANEL_DRIVERS.get(driver, driver)
 
     def get_theme_variable_defaults(self) -> dict[str, str]:
         """The HMI's own colour variables (``$softkey-background`` …), from the theme."""

@@ -69,6 +69,13 @@ def make_server(host: str, port: int, max_sessions: int, machine: str | None = N
 
         slots = SessionSlots(max_sessions)
 
+        async def handle_index(self, request: web.Request) -> web.StreamResponse:
+            # Not kept in the browser's back/forward cache: a tab that leaves the page
+            # must close its connection, so that its panel ends and gives its slot back.
+            response: web.StreamResponse = await super().handle_index(request)
+            response.headers["Cache-Control"] = "no-store"
+            return response
+
         async def handle_websocket(self, request: web.Request) -> web.WebSocketResponse:
             if not self.slots.take():
                 websocket = web.WebSocketResponse()

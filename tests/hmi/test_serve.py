@@ -8,8 +8,13 @@ import shlex
 import sys
 
 import pytest
+import textual.constants
+import textual.drivers.web_driver
+from textual import events
+from textual.app import App
 
-from hmi.app import main
+from hmi.app import HmiApp, main
+from hmi.browser_driver import PanelBrowserDriver
 from hmi.serve import BUSY_TEXT, SessionSlots, make_server, panel_command
 
 
@@ -40,3 +45,45 @@ def test_server_serves_the_panel_command() -> None:
 def test_bad_serve_options_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["--serve", "--max-sessions", "0"]) == 2
     assert "--max-sessions needs 1 or more" in capsys.readouterr().err
+
+
+class Packets:
+    """textual-serve's stream to one panel: packets of type, length (4 bytes, big-endian), payload."""
+
+    def __init__(self, *packets: tuple[bytes, bytes]) -> None:
+        self.chunks = [kind + len(payload).to_bytes(4, "big") + payload for kind, payload in packets]
+        self.closed = False
+
+    def __iter__(self):
+        return iter(self.chunks)
+
+    def close(self) -> None:
+        self.closed = True
+
+
+class RecordingBrowserDriver(PanelBrowserDriver):
+    def __init__(self, packets: Packets, monkeypatch: pytest.MonkeyPatch) -> None:
+        monkeypatch.setattr(textual.drivers.web_driver, "InputReader", lambda: packets)  # not standard input
+        super().__init__(App())
+        self.messages: list[object] = []
+
+    def process_message(self, message) -> None:
+        self.messages.append(message)
+
+
+def test_a_browser_tab_runs_on_the_panels_key_reader(monkeypatch: pytest.MonkeyPatch, fake_app: HmiApp) -> None:
+    # textual-serve names Textual's web driver in TEXTUAL_DRIVER
+    monkeypatch.setattr(textual.constants, "DRIVER", "textual.drivers.web_driver:WebDriver")
+    assert fake_app.get_driver_class() is PanelBrowserDriver
+
+
+async def test_alt_keys_from_a_browser_are_panel_keys_never_text(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The browser's terminal sends Alt+D as ESC d (keymap: Alt+D = MDA, Alt+G = CYCLE START);
+    Textual's web driver would report a printable 'd'. Typed text stays text."""
+    packets = Packets((b"D", b"\x1bd"), (b"D", b"G0"), (b"D", b"\x1bg\x1bg"), (b"M", b'{"type": "exit"}'),
+                      (b"D", b"X"))
+    driver = RecordingBrowserDriver(packets, monkeypatch)
+    driver.run_input_thread()
+    keys = [(m.key, m.character) for m in driver.messages if isinstance(m, events.Key)]
+    assert keys == [("alt+d", None), ("G", "G"), ("0", "0"), ("alt+g", None), ("alt+g", None)]
+    assert packets.closed  # "exit" ended the input: the X after it is not read
