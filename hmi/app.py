@@ -57,6 +57,7 @@ from hmi.browser_driver import PanelBrowserDriver
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.exercise_run import ClassroomHost
+from hmi.alarm_help import AlarmHelpScreen
 from hmi.help import HelpScreen
 from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
@@ -65,7 +66,7 @@ from hmi.mcp import MachineControlPanel
 from hmi.palette import Place, PlaceProvider, area_places
 from hmi.placeholder import PlaceholderScreen
 from hmi.program_lines import ProgramLines
-from hmi.messages import CommandRejected, NckStatusChanged, TerminalClosed
+from hmi.messages import AlarmLineClicked, CommandRejected, NckStatusChanged, TerminalClosed
 from hmi.startup import start_session
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.stack_dump import register_stack_dump
@@ -421,6 +422,16 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         if "PYTEST_CURRENT_TEST" in os.environ:
             raise exc
         self.set_hint(f"HMI internal error: {type(exc).__name__}: {exc}")
+
+    def on_alarm_line_clicked(self, message: AlarmLineClicked) -> None:
+        """A click on the header's alarm line: the help of the alarm shown there."""
+        self.show_alarm_help(message.number, message.text)
+
+    def show_alarm_help(self, number: int, text: str = "") -> None:
+        """Open the help of alarm ``number`` (``text``: as displayed, with its values)."""
+        if isinstance(self.screen, AlarmHelpScreen):
+            return
+        self.push_screen(AlarmHelpScreen(number, text))
 
     def on_command_rejected(self, message: CommandRejected) -> None:
         """Show why the kernel refused a command."""

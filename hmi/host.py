@@ -53,5 +53,8 @@ class AreaHost(Protocol):
     def program_text(self, name: str) -> ProgramLines | None:
         """The lines of a part program, or None."""
 
+    def show_alarm_help(self, number: int, text: str = "") -> None:
+        """Open the help of alarm ``number`` (``text``: as displayed, with its values)."""
+
     def push_screen(self, screen: Any, callback: Callable[[Any], object] | None = None) -> Any:
         """Open ``screen`` (a dialog) over the current area."""

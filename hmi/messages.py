@@ -47,3 +47,12 @@ class TerminalClosed(Message):
     Posted by the terminal driver (:mod:`hmi.terminal_driver`); nobody is left to
     answer a question, so the app ends without asking.
     """
+
+
+class AlarmLineClicked(Message):
+    """The operator clicked the header's alarm line while alarm ``number`` was shown on it."""
+
+    def __init__(self, number: int, text: str) -> None:
+        super().__init__()
+        self.number = number
+        self.text = text

@@ -34,6 +34,8 @@ from nck.setup_fields import (SetupField as SetupField, SetupFieldError as Setup
                               setup_fields as setup_fields, with_field as with_field)
 # The data tables (data/*.toml) the HMI shows as they are, e.g. the cycle forms of the editor.
 from nck.resources import load_toml as load_toml
+# The alarm catalogue with its help texts (the alarm help of the Diagnostics area).
+from nck.resources import AlarmDefinition as AlarmDefinition, alarm_catalog as alarm_catalog
 # The classroom (issue 26): exercises as data, their checks, set-up and report files, for
 # the panel's Exercises view; pure or writing only the exercise's own directories.
 from nck.exercise import Exercise as Exercise, ExerciseError as ExerciseError, load_exercises as load_exercises

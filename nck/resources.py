@@ -82,6 +82,11 @@ class AlarmDefinition:
         clear: clear criterion: ``power_on``, ``reset``, ``cancel``, ``nc_start`` or ``self``.
         reactions: reactions of the NCK, e.g. ``nc_start_disable``, ``interpreter_stop``,
             ``feed_stop``, ``braking``, ``emergency_stop``.
+        explanation: the alarm help: what happened and its typical causes.
+        remedy: the alarm help: what the operator does about it (how it is cleared
+            follows from ``clear``).
+        help_source: the manual lines the help's facts come from (``"002 L1897"``),
+            empty where the text is the trainer's own.
     """
 
     number: int
@@ -89,6 +94,9 @@ class AlarmDefinition:
     category: str
     clear: str
     reactions: tuple[str, ...]
+    explanation: str = ""
+    remedy: str = ""
+    help_source: str = ""
 
     def with_channel(self, params: tuple[str, ...], channel: str, block: str) -> tuple[str, ...]:
         """``params`` with the channel (and block) in front when the text starts with them."""
@@ -129,6 +137,9 @@ def alarm_catalog() -> dict[int, AlarmDefinition]:
                 category=entry.get("category", "program"),
                 clear=entry.get("clear", "reset"),
                 reactions=tuple(entry.get("reactions", ())),
+                explanation=entry.get("explanation", ""),
+                remedy=entry.get("remedy", ""),
+                help_source=entry.get("help_source", ""),
             )
     return catalog
 

@@ -33,7 +33,7 @@ from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
-    LogFilter, alarm_list_text, log_as_csv, log_as_text, log_rows, log_text, message_lines,
+    LogFilter, alarm_list_rows, alarm_list_text, log_as_csv, log_as_text, log_rows, log_text, message_lines,
     messages_text, parse_filter,
 )
 from screens.diagnostics_service import (
@@ -67,14 +67,16 @@ class DiagnosticsScreen(AreaBase):
     AREA_ID: ClassVar[str] = "diagnostics"
     AREA_TITLE: ClassVar[str] = "DIAGNOSTICS"
     CSS_PATH = "diagnostics.tcss"
-    AUTO_FOCUS = None  # the filter field takes the keys only after the Filter softkey
+    AUTO_FOCUS = ""  # the filter field takes the keys only after the Filter softkey (None = the app's "*")
     BINDINGS: ClassVar[list[Binding]] = [
         Binding("left", "arrow(-1)", "Trace cursor left", show=False),
         Binding("right", "arrow(1)", "Trace cursor right", show=False),
         Binding("pagedown", "page(1)", "Older log entries", show=False),
         Binding("pageup", "page(-1)", "Newer log entries", show=False),
+        Binding("up", "select_row(-1)", "Select the alarm above", show=False),
+        Binding("down", "select_row(1)", "Select the alarm below", show=False),
     ]
-    """Cursor keys move the trace cursor, page keys scroll the alarm log (not over the filter field)."""
+    """Cursor keys move the trace cursor or select an alarm, page keys scroll the alarm log."""
 
     def __init__(self) -> None:
         super().__init__(id="area-diagnostics")
@@ -82,6 +84,7 @@ class DiagnosticsScreen(AreaBase):
         self.axis_index = 0
         self.log_filter = LogFilter()
         self.log_first = 0
+        self.selected_row = 0  # the selected alarm of the alarm list or the alarm log (row index)
         self.export_dir = Path.cwd()
         self.trace: TraceSession | None = None
         self._log_seq = -1
@@ -143,9 +146,12 @@ class DiagnosticsScreen(AreaBase):
         ], self._vertical_keys())
 
     def _vertical_keys(self) -> list[Softkey | None]:
+        alarm_help = Softkey("diag.alarm_help", "Alarm\nhelp", "alarm_help",
+                             enabled=lambda s: s.selected_alarm() is not None)
         if self.view == "alarms":
             return [Softkey("diag.ack", "Acknowl.\nalarm", "acknowledge",
-                            enabled=lambda s: bool(s.status and any(a.clear == "cancel" for a in s.status.alarms)))]
+                            enabled=lambda s: bool(s.status and any(a.clear == "cancel" for a in s.status.alarms))),
+                    alarm_help]
         if self.view == "log":
             return [
                 Softkey("diag.log.filter", "Filter", "focus_filter"),
@@ -154,6 +160,7 @@ class DiagnosticsScreen(AreaBase):
                 Softkey("diag.log.text", "Export\ntext", "export_log('text')"),
                 Softkey("diag.log.older", "Older\n▼", "page_log(1)"),
                 Softkey("diag.log.newer", "Newer\n▲", "page_log(-1)"),
+                alarm_help,
             ]
         if self.view == "exercises":
             return [
@@ -196,6 +203,7 @@ class DiagnosticsScreen(AreaBase):
     def action_show_view(self, view: str) -> None:
         """Show ``view``."""
         self.view = view
+        self.selected_row = 0
         if self._menu_stack:
             self._menu_stack[-1] = self._more_menu()
         self._show_view()
@@ -207,6 +215,36 @@ class DiagnosticsScreen(AreaBase):
     def action_acknowledge(self) -> None:
         """Acknowledge the alarms with clear criterion CANCEL (as F12)."""
         self.submit(cmd.CancelAlarms())
+
+    def _selectable_rows(self) -> list:
+        """The rows ▲▼ select in: the active alarms, or the (filtered) alarm log."""
+        if self.view == "alarms":
+            return alarm_list_rows(self.status.alarms) if self.status is not None else []
+        if self.view == "log":
+            return log_rows(self._history(), self.log_filter)
+        return []
+
+    def selected_alarm(self) -> Any:
+        """The selected entry of the alarm list or alarm log (None when there is none)."""
+        rows = self._selectable_rows()
+        return rows[min(self.selected_row, len(rows) - 1)] if rows else None
+
+    def action_select_row(self, step: int) -> None:
+        """▲▼ in the alarm list and alarm log: select the alarm above or below."""
+        rows = self._selectable_rows()
+        if not rows:
+            return
+        self.selected_row = max(0, min(self.selected_row + int(step), len(rows) - 1))
+        if self.view == "log" and not self.log_first <= self.selected_row < self.log_first + LOG_PAGE:
+            self.log_first = self.selected_row - (LOG_PAGE - 1 if step > 0 else 0)
+        self._log_seq = -1
+        self._refresh_view()
+
+    def action_alarm_help(self) -> None:
+        """Alarm help: what the selected alarm means and what to do about it."""
+        entry = self.selected_alarm()
+        if entry is not None:
+            self.hmi.show_alarm_help(entry.number, entry.text)
 
     def action_exercise_select(self, step: int) -> None:
         """Next ▼ / Previous ▲: move the selection in the exercise list."""
@@ -254,6 +292,7 @@ class DiagnosticsScreen(AreaBase):
             self.show_hint(str(exc))
             return False
         self.log_first = 0
+        self.selected_row = 0
         self._log_seq = -1
         self._refresh_view()
         return True
@@ -268,6 +307,7 @@ class DiagnosticsScreen(AreaBase):
         """Older ▼ / Newer ▲: scroll the alarm log by a page."""
         total = len(log_rows(self._history(), self.log_filter))
         self.log_first = max(0, min(self.log_first + int(direction) * LOG_PAGE, max(total - LOG_PAGE, 0)))
+        self.selected_row = self.log_first
         self._log_seq = -1
         self._refresh_view()
 
@@ -411,7 +451,10 @@ class DiagnosticsScreen(AreaBase):
         return self.query_one(f"#diag-{view}", Static)
 
     def _render_alarms(self, status: NckStatus) -> None:
-        show_text(self._body("alarms"), alarm_list_text(status.alarms, self.hmi.bridge.alarm_times))
+        rows = len(status.alarms)
+        self.selected_row = min(self.selected_row, max(rows - 1, 0))
+        show_text(self._body("alarms"), alarm_list_text(status.alarms, self.hmi.bridge.alarm_times,
+                                                        self.selected_row if rows else None))
 
     def _render_messages(self, status: NckStatus) -> None:
         events = self.ask(queries.AlarmLogSince(0))
@@ -426,8 +469,9 @@ class DiagnosticsScreen(AreaBase):
         history = self._history()
         rows = log_rows(history, self.log_filter)
         total = len([e for e in history if e.category != "message"])
+        self.selected_row = min(self.selected_row, max(len(rows) - 1, 0))
         show_text(self._body("log"), log_text(rows, self.log_filter, total, self.hmi.bridge.alarm_times,
-                                              self.log_first, LOG_PAGE))
+                                              self.log_first, LOG_PAGE, self.selected_row if rows else None))
 
     def _selected_axis(self, status: NckStatus) -> Any:
         self.axis_index %= max(len(status.axes), 1)

@@ -65,27 +65,39 @@ def alarm_list_rows(alarms: Iterable[AlarmEntry]) -> list[AlarmEntry]:
     return sorted(alarms, key=lambda e: e.seq, reverse=True)
 
 
-def alarm_list_text(alarms: Sequence[AlarmEntry], times: AlarmTimes) -> Text:
-    """The alarm list: ``Date and time | Clear | Number | Text | Source``, newest first."""
+def alarm_list_text(alarms: Sequence[AlarmEntry], times: AlarmTimes, selected: int | None = None) -> Text:
+    """The alarm list: ``Date and time | Clear | Number | Text | Source``, newest first.
+
+    Row ``selected`` (an index into :func:`alarm_list_rows`) is marked ``▶`` and shown reversed.
+    """
     text = Text(no_wrap=True, end="")
-    text.append(f" {'Date and time':<{STAMP_WIDTH}} {'Del':<4} {'Number':>6}  {'Text':<90} Source\n",
+    text.append(f"  {'Date and time':<{STAMP_WIDTH}} {'Del':<4} {'Number':>6}  {'Text':<90} Source\n",
                 style="bold")
     rows = alarm_list_rows(alarms)
     if not rows:
         text.append(" No active alarms.", style="dim")
         return text
-    for entry in rows:
+    for index, entry in enumerate(rows):
         symbol = CLEAR_SYMBOLS.get(entry.clear, "?")
-        text.append(f" {date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} {symbol:<4} ")
+        start = len(text)
+        text.append(f"{_marker(index == selected)}{date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} {symbol:<4} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
         body = entry.text if len(entry.text) <= 90 else entry.text[:89] + "…"
-        text.append(f"  {body:<90} {source_text(entry)}\n")
+        text.append(f"  {body:<90} {source_text(entry)}")
+        if index == selected:
+            text.stylize("reverse", start, len(text))
+        text.append("\n")
     text.append("\n Clear: ")
     for key in ("cancel", "reset", "nc_start", "power_on", "self"):
         text.append(f"{CLEAR_SYMBOLS[key]} {CLEAR_NAMES[key]}   ", style="dim")
-    text.append("\n F12 acknowledges CANCEL alarms; RESET clears RESET, CANCEL and NC START alarms.",
-                style="dim")
+    text.append("\n F12 acknowledges CANCEL alarms; RESET clears RESET, CANCEL and NC START alarms."
+                "  ▲▼ select an alarm, Alarm help explains it.", style="dim")
     return text
+
+
+def _marker(selected: bool) -> str:
+    """The first column of a list row: ``▶`` on the selected row."""
+    return "▶ " if selected else "  "
 
 
 @dataclass(frozen=True, slots=True)
@@ -197,19 +209,27 @@ def _went_text(entry: AlarmEntry, times: AlarmTimes, pending: str = "—") -> st
 
 
 def log_text(rows: Sequence[AlarmEntry], log_filter: LogFilter, total: int, times: AlarmTimes,
-             first: int = 0, count: int = 30) -> Text:
-    """The alarm log window: ``Come | Go | Number | Text``, newest first, a filter line."""
+             first: int = 0, count: int = 30, selected: int | None = None) -> Text:
+    """The alarm log window: ``Come | Go | Number | Text``, newest first, a filter line.
+
+    Row ``selected`` (an index into ``rows``) is marked ``▶`` and shown reversed.
+    """
     text = Text(no_wrap=True, end="")
     described = log_filter.describe()
     text.append(f" {len(rows)} of {total} entries" + (f" — filter: {described}" if described else ""),
                 style="dim")
     text.append("   (PO- = before the last power on)\n", style="dim")
-    text.append(f" {'':<3} {'Come':<{STAMP_WIDTH}} {'Go':<{STAMP_WIDTH}} {'Number':>6}  Text\n", style="bold")
-    for entry in rows[first:first + count]:
-        text.append(f" {_earlier(entry):<3} {date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} "
-                    f"{_went_text(entry, times):<{STAMP_WIDTH}} ")
+    text.append(f"  {'':<3} {'Come':<{STAMP_WIDTH}} {'Go':<{STAMP_WIDTH}} {'Number':>6}  Text\n", style="bold")
+    for index in range(first, min(first + count, len(rows))):
+        entry = rows[index]
+        start = len(text)
+        text.append(f"{_marker(index == selected)}{_earlier(entry):<3} "
+                    f"{date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} {_went_text(entry, times):<{STAMP_WIDTH}} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
-        text.append(f"  {entry.text[:90]}\n")
+        text.append(f"  {entry.text[:90]}")
+        if index == selected:
+            text.stylize("reverse", start, len(text))
+        text.append("\n")
     return text
 
 

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from textual import events
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
 from textual.widgets import Static
 
-from nck.status import NckStatus
+from nck.status import AlarmEntry, NckStatus
+
+from hmi.messages import AlarmLineClicked
 
 CHANNEL_STATE_TEXT = {
     "reset": "Channel reset",
@@ -87,7 +90,13 @@ def format_override(value: object) -> str:
 
 
 class AreaHeader(Vertical):
-    """Three lines: states, alarm/message line, selected program with overrides."""
+    """Three lines: states, alarm/message line, selected program with overrides.
+
+    A click on the alarm line asks for the help of the alarm shown there (:class:`AlarmLineClicked`).
+    """
+
+    shown_alarm: AlarmEntry | None = None
+    """The alarm on the alarm line (None while it shows a message, a hint or nothing)."""
 
     def compose(self) -> ComposeResult:
         """The three lines."""
@@ -105,6 +114,7 @@ class AreaHeader(Vertical):
         program = self.query_one("#hdr-program", Static)
         influences = self.query_one("#hdr-influences", Static)
         overrides_line = self.query_one("#hdr-overrides", Static)
+        self.shown_alarm = max(status.alarms, key=lambda entry: entry.seq) if status and status.alarms else None
         if status is None:
             self._set(state, f" {area_title}  │ NCK not connected")
             self._set(alarm, "")
@@ -139,6 +149,11 @@ class AreaHeader(Vertical):
         self._set(program, f" {selected}")
         self._set(influences, influence_text(channel.program_control))
         self._set(overrides_line, right)
+
+    def on_click(self, event: events.Click) -> None:
+        """A click on the alarm line while an alarm is shown: ask for its help."""
+        if event.widget is not None and event.widget.id == "hdr-alarm" and self.shown_alarm is not None:
+            self.post_message(AlarmLineClicked(self.shown_alarm.number, self.shown_alarm.text))
 
     @staticmethod
     def alarm_line(status: NckStatus, hint: str = "") -> tuple[str, str]:

@@ -35,7 +35,8 @@ def body(app, view: str) -> str:
 
 
 def rows_with(text: str, number: str) -> list[str]:
-    return [row for row in text.splitlines() if number in row]
+    """The rows that show ``number``, without the selection marker ▶ of the selected row."""
+    return [row.replace("▶", " ", 1) for row in text.splitlines() if number in row]
 
 
 async def test_dates_in_list_and_log_and_order_across_a_restart(tmp_path: Path) -> None:

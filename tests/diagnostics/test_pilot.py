@@ -262,6 +262,6 @@ async def test_alarm_log_survives_a_restart_of_the_app_on_its_data_dir(tmp_path:
         await pilot.press("f3")
         await pilot.pause()
         log = body(app, "log")
-        line = next(row for row in log.splitlines() if "10720" in row)
+        line = next(row for row in log.splitlines() if "10720" in row).replace("▶", " ", 1)
         assert line.split()[0] == "PO-" and "would pass software limit switch" in line
         assert line.split()[2] != "—"  # it went (RESET) before the restart
