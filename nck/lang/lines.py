@@ -23,6 +23,7 @@ from typing import Any, Iterator, Protocol
 from nck.errors import NcAlarmError
 from nck.lang import ast
 from nck.lang.parser import parse_block
+from nck.lang.plain import simple_block
 
 CHECKPOINT_LINES = 64
 """A line-start offset is kept for every this many lines."""
@@ -102,8 +103,8 @@ class TextLines:
         if error is not None:
             line = Line(index + 1, raw, None, error)
         else:
-            try:
-                line = Line(index + 1, raw, parse_block(raw, index + 1))
+            try:  # a simple motion line needs no lexer (the parser's tree, property-tested)
+                line = Line(index + 1, raw, simple_block(raw, index + 1) or parse_block(raw, index + 1))
             except NcAlarmError as alarm:  # cannot happen for a line that parsed at load time
                 line = Line(index + 1, raw, None, alarm)
         self.remember(index, line)

@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import re
 
+from nck.lang import ast
+
 _NUM = r"(?:[0-9]{1,9}(?:\.[0-9]{0,9})?|\.[0-9]{1,9})"
 _WS = r"[ \t]*"
 _MOTION = r"(G0?[01])"
@@ -61,22 +63,51 @@ PLAIN_WORDS = re.compile(
 """Words of lines *known* to be plain (three times faster than :data:`PLAIN_LINES`):
 ``findall`` → per line (G words, X, Y, Z, F), '' for absent."""
 
+SIMPLE_ADDRESSES = ("X", "Y", "Z", "I", "J", "K", "CR", "F")
+"""The address words of a simple motion line, in the order they must be written."""
+
 SIMPLE_PATTERN = (
-    rf"{_WS}(?:N[0-9]{{1,9}}{_WS})?"
-    rf"(?:G0?[0-3]{_WS}(?:G9[01]{_WS})?|G9[01]{_WS}(?:G0?[0-3]{_WS})?)?"
-    + "".join(rf"(?:{axis}[+-]?{_NUM}{_WS})?" for axis in "XYZIJK")
-    + rf"(?:CR=[+-]?{_NUM}{_WS})?"
-    rf"(?:F{_NUM}{_WS})?"
-    r"(?:;.*)?"
+    rf"{_WS}(?:N([0-9]{{1,9}}){_WS})?"
+    rf"(?:(G0?[0-3]){_WS}(?:(G9[01]){_WS})?|(G9[01]){_WS}(?:(G0?[0-3]){_WS})?)?"
+    + "".join(rf"(?:{axis}([+-]?{_NUM}){_WS})?" for axis in ("X", "Y", "Z", "I", "J", "K", "CR="))
+    + rf"(?:F({_NUM}){_WS})?"
+    r"(?:;(.*))?"
 )
 """A *simple* motion line: a plain line that may also be a circle (G2/G3, ``G02``/``G03``) with
 centre words I, J, K or a radius ``CR=``, the words in the order N, G, X, Y, Z, I, J, K, CR, F.
 Like a plain line it is always valid for the block parser (property-tested), so the load scan
-and the editor's check do not parse it; what it means is decided by the parser and the
-interpreter when it runs."""
+and the editor's check do not parse it, and :func:`simple_block` gives its syntax tree without
+the lexer; what it means is decided by the interpreter. Groups: 1 N, 2-5 the G words (2, 3 or
+4, 5 in source order), 6-13 the words of :data:`SIMPLE_ADDRESSES`, 14 the comment."""
 
 SIMPLE_LINE = re.compile(SIMPLE_PATTERN)
 """Full-match this against one line."""
+
+
+def simple_block(line: str, number: int) -> ast.Block | None:
+    """The syntax tree of a simple motion line — exactly the block parser's, property-tested —
+    or None when ``line`` is not simple (then the parser reads it). ``number``: its 1-based
+    line."""
+    found = SIMPLE_LINE.fullmatch(line)
+    if found is None:
+        return None
+    groups = found.groups()
+    statements: list[ast.Statement] = [ast.GWord(code if len(code) == 3 and code[1] == "9" else "G" + code[-1])
+                                       for code in groups[1:5] if code is not None]
+    for address, text in zip(SIMPLE_ADDRESSES, groups[5:13]):
+        if text is not None:
+            statements.append(ast.AddressWord(address, ast.Num(_literal(text))))
+    block_number = groups[0]
+    return ast.Block(line=number, text=line, number=None if block_number is None else int(block_number),
+                     statements=tuple(statements), comment=groups[13])
+
+
+def _literal(text: str) -> int | float:
+    """A signed constant as the parser folds it: an int without a point, a float with one, a
+    minus applied as ``-1 * value`` (``-0`` is the int 0, ``-0.0`` the float -0.0)."""
+    mantissa = text[1:] if text[:1] in "+-" else text
+    value: int | float = float(mantissa) if "." in mantissa else int(mantissa)
+    return -1 * value if text[:1] == "-" else value
 
 
 def parses_without_alarm(line: str) -> bool:
@@ -101,15 +132,12 @@ def is_plain(line: str) -> bool:
 
 def axis_value(text: str) -> float:
     """The float an axis word's text (``-12.5``, ``7``, ``+.5``) means to the interpreter."""
-    negative = text[:1] == "-"
-    mantissa = text[1:] if text[:1] in "+-" else text
-    value: float | int = float(mantissa) if "." in mantissa else int(mantissa)
-    return float(-1 * value if negative else value)
+    return float(_literal(text))
 
 
 def feed_value(text: str) -> float:
     """The float of an F word's text (no sign)."""
-    return float(float(text) if "." in text else int(text))
+    return float(_literal(text))
 
 
 def has_statements(found: re.Match[str]) -> bool:

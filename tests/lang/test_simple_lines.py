@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from nck.interp import program as program_module
 from nck.lang import ast
 from nck.lang.parser import parse_block
-from nck.lang.plain import SIMPLE_LINE, is_plain, parses_without_alarm
+from nck.lang.plain import SIMPLE_LINE, is_plain, parses_without_alarm, simple_block
 from nck.interp.program import load_program
 
 NEVER = re.compile(r"(?!)")
@@ -27,9 +27,10 @@ NEVER = re.compile(r"(?!)")
 
 def _number(draw: Any, signed: bool) -> str:
     whole = draw(st.integers(0, 99999))
-    style = draw(st.sampled_from(["int", "dec", "dot", "lead"]))
+    style = draw(st.sampled_from(["int", "dec", "dot", "lead", "long"]))
     text = {"int": f"{whole}", "dec": f"{whole}.{draw(st.integers(0, 999)):03d}", "dot": f"{whole}.",
-            "lead": f".{draw(st.integers(0, 99))}"}[style]
+            "lead": f".{draw(st.integers(0, 99))}",
+            "long": f"{draw(st.integers(0, 999999999))}.{draw(st.integers(0, 999999999)):09d}"}[style]
     return (draw(st.sampled_from(["", "-", "+"])) if signed else "") + text
 
 
@@ -70,6 +71,23 @@ def test_a_simple_line_is_valid_for_the_parser(line: str) -> None:
     assert program_module._check_gcodes(block) is None
     assert all(isinstance(s, (ast.GWord, ast.AddressWord)) for s in block.statements)
     assert is_plain(line) or block.statements
+
+
+@settings(max_examples=600, deadline=None)
+@given(simple_lines(), st.integers(1, 10**6))
+def test_the_tree_of_a_simple_line_is_the_parsers(line: str, number: int) -> None:
+    """Bit for bit: repr tells the int 0 from the float 0.0 and -0.0 from 0.0."""
+    tree = simple_block(line, number)
+    if SIMPLE_LINE.fullmatch(line) is None:
+        assert tree is None
+        return
+    assert repr(tree) == repr(parse_block(line, number))
+
+
+@pytest.mark.parametrize("line", ["", "   ", ";", "N10", "X-0 Y-0.0 Z+.5 I-.5", "N7 G3 CR=-2 F.5 ;hi",
+                                  "  N007 G02X1.;", "G91 G2 X1", "CR=+2 F0", "G00 G90", "X123456789.123456789"])
+def test_the_tree_of_simple_line_examples(line: str) -> None:
+    assert repr(simple_block(line, 3)) == repr(parse_block(line, 3))
 
 
 def _scan(text: str) -> dict[str, Any]:
