@@ -20,10 +20,12 @@ What a contact is (issue 22; the manuals do not describe a simulated workpiece):
   SINUMERIK number; data/alarms/contact.toml), in the alarm log; the motion stops.
 
 A tool already in contact moving deeper is judged the same way (a turning cutter goes on
-cutting). On a lathe the bar is turned: what a cutter removes cutting with the spindle turning
-is gone for the moves that follow (:mod:`nck.turned_bar`), so a rapid move back through space
-already turned is no crash; clamping a blank again (a new set-up) brings the whole bar back, as
-does a restart (the turned state is not retained data).
+cutting). What a cutter removes cutting with the spindle turning (not at rapid traverse) is
+gone for the moves that follow: on a lathe the bar is turned (:mod:`nck.turned_bar`), on a
+mill the blank is milled (:mod:`nck.milled_blank`, the simulation's Z-map). A rapid move back
+into a drilled hole or through a milled slot is therefore no crash, a rapid move into material
+still there is; clamping a blank again (a new set-up) brings the whole blank back, as does a
+restart (what was cut is not retained data).
 
 In a program, ``MEAS=1``/``MEAW=1`` make a block a measuring block for the probe (002 L32646-32663
 names their results): when the probe switches in it, the trigger position is ``$AA_MM[axis]``
@@ -42,6 +44,8 @@ from typing import Any
 
 from nck.contact import BALL, CUTTER, ToolBody, clearance, first_contact
 from nck.errors import NcAlarmError
+from nck.milled_blank import MilledBlank
+from nck.motion.dry_run import THREAD_KINDS
 from nck.turned_bar import Z_GRID_MM, TurnedBar
 from nck.workpiece import Cylinder, Point
 
@@ -63,6 +67,11 @@ def _leaving(body: ToolBody, solid: Any, start: Point, end: Point) -> bool:
     """True when the tip starts on the surface of ``solid`` and the step takes it off (never in)."""
     before = clearance(body, solid, start)
     return before >= -SURFACE_SLACK_MM and clearance(body, solid, end) > before
+
+
+def _point(before: dict[str, float], after: dict[str, float], t: float) -> dict[str, float]:
+    """The machine positions at parameter ``t`` of the step from ``before`` to ``after``."""
+    return {a: before.get(a, after[a]) + (after[a] - before.get(a, after[a])) * t for a in after}
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,14 +99,15 @@ class ContactState:
     seq: int = 0
     jog_rapid: bool = False
     rapid: bool = False  # the step being judged started at rapid traverse
+    threading: bool = False  # ... in a tapping or thread-cutting block (G33, G331, G63 …)
     measuring: Any = None  # the MEAS/MEAW segment executing at the start of the step, else None
     measured_block: int | None = None  # id of the measuring block the results below belong to
     switched: bool = False  # $AC_MEA[1]: the probe switched in that block
     measured_mcs: dict[str, float] = field(default_factory=dict)  # $AA_MM
     measured_wcs: dict[str, float] = field(default_factory=dict)  # $AA_MW
     free: tuple[float, ToolBody, Point] | None = None  # at the step's start: gap to every solid, tool body, tip offset
-    turned: TurnedBar | None = None  # lathe: what is left of the bar (of the blank object ``turned_from``)
-    turned_from: Any = None
+    material: TurnedBar | MilledBlank | None = None  # what is left of the blank object ``material_from``
+    material_from: Any = None
 
 
 class ContactWatch:
@@ -148,7 +158,9 @@ class ContactWatch:
             return cycles  # nothing can start moving inside this step
         body, offset = self._tool_body()
         tip = self._tip(self._path_positions(self.motion), offset)  # type: ignore[attr-defined]
-        bar = self._turned_bar()
+        bar = self._material()
+        if not isinstance(bar, TurnedBar):
+            bar = None  # a milled blank: the solid's gap is a lower bound of the gap to what is left
         gap = min(bar.clearance(body, tip) if bar and name == "blank" else clearance(body, solid, tip)
                   for name, solid in self.data.machine_setup.solids())
         self._contact.free = (gap, body, offset)
@@ -166,6 +178,7 @@ class ContactWatch:
         if not self._contact_watched():
             return None
         self._contact.rapid = self._moving_at_rapid()
+        self._contact.threading = not self._jogging and self._segment_kind() in THREAD_KINDS  # type: ignore[attr-defined]
         self._note_measuring_block()
         return self._path_positions(self.motion)  # type: ignore[attr-defined]
 
@@ -182,10 +195,17 @@ class ContactWatch:
         if (free is not None and not self._contact.touching and free[1:] == (body, offset)
                 and math.dist(start, end) < free[0]):
             return  # the tool moved less than its gap to every solid: nothing can be touched
-        bar = self._turned_bar()
+        material = self._material()
         for name, solid in self.data.machine_setup.solids():
-            if bar is not None and name == "blank":
-                self._watch_turning(bar, body, before, after, start, end)
+            if (isinstance(material, MilledBlank) and name in self._contact.touching and body.shape != BALL
+                    and self._crash_number() is None):
+                material.cut(body, start, end)  # goes on cutting (no new event) until it is clear of the blank
+                if clearance(body, solid, end) > 0.0:
+                    self._contact.touching.discard(name)
+                continue
+            if material is not None and name == "blank" and (
+                    isinstance(material, TurnedBar) or material.touches_cut(body, start, end)):
+                self._watch_material(material, body, before, after, start, end)
                 continue
             touching_before = name in self._contact.touching
             t = first_contact(body, solid, start, end)
@@ -199,40 +219,57 @@ class ContactWatch:
                 self._on_contact(name, body, before, after, t)
             elif clearance(body, solid, end) < clearance(body, solid, start) - DEEPER_MM:
                 self._on_deeper(name, body, solid, before, after, start, end)
+            if isinstance(material, MilledBlank) and name == "blank" and self._crash_number() is None:
+                material.cut(body, start, end)  # a rotating cutter at feed in the blank cuts it
             if clearance(body, solid, end) > 0.0:
                 self._contact.touching.discard(name)
 
-    def _watch_turning(self, bar: TurnedBar, body: ToolBody, before: dict[str, float], after: dict[str, float],
-                       start: Point, end: Point) -> None:
-        """A lathe's bar: a first touch is a contact event; while the tool stays on the surface it
-        turns, the cut goes on without new events (a crash still stops it); a cut removes material."""
+    def _watch_material(self, material: TurnedBar | MilledBlank, body: ToolBody, before: dict[str, float],
+                        after: dict[str, float], start: Point, end: Point) -> None:
+        """The blank where material has been removed (a lathe's bar always, a mill's blank near
+        a cut): a first touch is a contact event; while the tool stays on the surface it cuts
+        without new events (a crash still stops it, a probe driven on past its overtravel is
+        one); a rotating cutter at feed removes what it passes."""
         touching = self._contact.touching
-        t = bar.first_contact(body, start, end)
+        crash = self._crash_number()
+        cutting = crash is None and body.shape != BALL
+        if "blank" in touching and cutting:
+            material.cut(body, start, end)  # goes on cutting: no new event
+            return
+        t = material.first_contact(body, start, end)
         if t is None:
-            if bar.clearance(body, end) > Z_GRID_MM:  # left the surface it turned (more than a cut's slack)
+            leave_mm = Z_GRID_MM if isinstance(material, TurnedBar) else 0.0  # a turned step's slack
+            if material.clearance(body, end) > leave_mm:
                 touching.discard("blank")
             return
+        probe = body.shape == BALL and self.machine.kind != "lathe"
         if "blank" not in touching:
             touching.add("blank")
             self._on_contact("blank", body, before, after, t)
-        elif (crash := self._crash_number()) is not None:
+        elif probe and isinstance(material, MilledBlank):
+            deep = material.first_contact(body, start, end, PROBE_OVERTRAVEL_MM)
+            if deep is not None:
+                self._crash(ALARM_CRASH_PROBE_OVERTRAVEL, "blank", _point(before, after, deep))
+        elif crash is not None:
             self._crash(crash, "blank", dict(after))
-        if self._crash_number() is None:
-            bar.cut(body, start, end)
+        if not probe and self._crash_number() is None:
+            material.cut(body, start, end)
 
-    def _turned_bar(self) -> TurnedBar | None:
-        """On a lathe with a bar clamped: what is left of it (whole again for a newly clamped blank)."""
+    def _material(self) -> TurnedBar | MilledBlank | None:
+        """What is left of the clamped blank: on a lathe the bar as turned, on a mill the block
+        or round blank as milled (whole again for a newly clamped blank; not retained data)."""
         blank = self.data.machine_setup.blank
-        if self.machine.kind != "lathe" or not isinstance(blank, Cylinder):
+        if blank is None or (self.machine.kind == "lathe" and not isinstance(blank, Cylinder)):
             return None
         state = self._contact
-        if state.turned is None or state.turned_from is not blank:
-            state.turned, state.turned_from = TurnedBar.of(blank), blank
-        return state.turned
+        if state.material is None or state.material_from is not blank:
+            state.material = TurnedBar.of(blank) if self.machine.kind == "lathe" else MilledBlank.of(blank)
+            state.material_from = blank
+        return state.material
 
     def _on_contact(self, name: str, body: ToolBody, before: dict[str, float], after: dict[str, float],
                     t: float) -> None:
-        at = {a: before.get(a, after[a]) + (after[a] - before.get(a, after[a])) * t for a in after}
+        at = _point(before, after, t)
         if body.shape == BALL and self.machine.kind != "lathe":
             self._record("probe", name, at)
             self._halt_jog()
@@ -249,26 +286,31 @@ class ContactWatch:
         if body.shape == BALL and self.machine.kind != "lathe":
             t = first_contact(body, solid, start, end, PROBE_OVERTRAVEL_MM)
             if t is not None:
-                self._crash(ALARM_CRASH_PROBE_OVERTRAVEL, name,
-                            {a: before.get(a, after[a]) + (after[a] - before.get(a, after[a])) * t for a in after})
+                self._crash(ALARM_CRASH_PROBE_OVERTRAVEL, name, _point(before, after, t))
             return
         crash = self._crash_number()
         if crash is not None:
             self._crash(crash, name, dict(after))
 
     def _crash_number(self) -> int | None:
-        """The crash alarm for a cutter touching now, ``None`` when it is scratching."""
+        """The crash alarm for a cutter touching now, ``None`` when it is scratching (cutting)."""
         if self._contact.rapid:
             return ALARM_CRASH_RAPID
+        if self._contact.threading:
+            return None  # tapping, thread cutting: the spindle turns with the axes (002 L19681)
         turning = self._spindle_state in ("M3", "M4") and self._spindle_rpm > 0.0  # type: ignore[attr-defined]
         return None if turning else ALARM_CRASH_SPINDLE_STOPPED
+
+    def _segment_kind(self) -> str | None:
+        """The motion kind (G0, G1, G331 …) of the program block moving now (``None`` in JOG)."""
+        run, source = self._executing()
+        segment = run.segments.get(id(source)) if run is not None and source is not None else None
+        return getattr(segment, "kind", None)
 
     def _moving_at_rapid(self) -> bool:
         if self._jogging:  # type: ignore[attr-defined]
             return self._contact.jog_rapid
-        run, source = self._executing()
-        segment = run.segments.get(id(source)) if run is not None and source is not None else None
-        return getattr(segment, "kind", None) == "G0"
+        return self._segment_kind() == "G0"
 
     # ---------------------------------------------------------------- MEAS / MEAW
     def _note_measuring_block(self) -> None:

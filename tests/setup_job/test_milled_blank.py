@@ -1,0 +1,132 @@
+"""The blank on the mill's table is milled (issue 22, "Contact": a rapid move into the blank is a
+crash; nck.milled_blank): what a cutter removed at feed with the spindle turning is gone for the
+moves that follow — a rapid back into a drilled hole or through a milled slot is no crash, a
+rapid into material still there is one (90002, trainer alarm), exactly where the surface is.
+
+Hand values: the default mill set-up (nck.workpiece): blank X -50…50, Y -40…40, top Z -220
+(MCS); T2 an end mill of radius 5 and length 100 (tip = machine Z − 100). The model's grid for
+this 100 × 80 blank: sqrt(100·80 / 262144) = 0.1747 mm, the next multiple of 0.005 is 0.175
+mm; a cut removes the cells within radius + half a cell diagonal (0.175·√½ = 0.1237 mm) and
+0.001 mm below the end face (nck.milled_blank's trainer choices).
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from nck.commands import Accepted, WriteMachineSetup
+from nck.contact import CUTTER, ToolBody
+from nck.milled_blank import MAX_CELLS, MilledBlank, cell_size_mm
+from nck.workpiece import Box, MachineSetup, default_machine_setup
+from tests.setup_job.test_contact_kernel import events, kernel, mda
+
+DRILL_10_DEEP = "T2 D1 M6\nM3 S1000\nG0 X0 Y0 Z-210\nG1 Z-230 F500\nG0 Z-210\n"  # the tip: 10 above, 10 into the top
+FLOAT32_MM = 1e-5  # the Z-map keeps heights as float32: at 230 mm one step is 1.5e-5 mm
+
+
+def alarm_numbers(nck) -> list[int]:
+    return [a.number for a in nck.alarms.active]
+
+
+def test_the_grid_is_chosen_from_the_blank_and_stays_bounded() -> None:
+    blank = default_machine_setup("mill").blank
+    milled = MilledBlank.of(blank)
+    assert milled.zmap.resolution_mm == pytest.approx(0.175)
+    assert (milled.zmap.nx, milled.zmap.ny) == (572, 458)  # ceil(100 / 0.175), ceil(80 / 0.175)
+    assert milled.zmap.nx * milled.zmap.ny <= MAX_CELLS
+    assert cell_size_mm(10.0, 10.0) == 0.05  # a small blank: the finest grid
+    assert cell_size_mm(1000.0, 1000.0) == pytest.approx(1.955)  # sqrt(1e6 / 262144) = 1.9531 → 1.955
+
+
+def test_rapid_back_into_a_drilled_hole_is_free_and_below_its_bottom_a_crash() -> None:
+    nck = kernel()
+    mda(nck, DRILL_10_DEEP + "G0 Z-229.5\nG0 Z-210\nM30\n")  # back down to 0.5 mm above the bottom
+    assert alarm_numbers(nck) == []
+    (scratch,) = events(nck)  # one contact for the whole hole: the top face, tip -220
+    assert scratch.kind == "scratch" and scratch.position_mcs["Z"] == pytest.approx(-120.0, abs=1e-6)
+    mda(nck, "G0 Z-235\n")  # 5 mm deeper than drilled: meets the bottom left 0.001 below -230
+    assert alarm_numbers(nck) == [90002]
+    assert events(nck)[-1].position_mcs["Z"] == pytest.approx(-130.001, abs=FLOAT32_MM)
+
+
+@pytest.mark.parametrize("x", [10.5, 30.0])
+def test_rapid_into_the_uncut_material_beside_the_hole_is_a_crash_at_the_top(x: float) -> None:
+    """At X 10.5 the tool covers X 5.5…15.5, beside the hole's wall at X 5 (+ 0.12)."""
+    nck = kernel()
+    mda(nck, DRILL_10_DEEP + f"G0 X{x}\nG0 Z-225\n")
+    assert alarm_numbers(nck) == [90002]
+    crash = events(nck)[-1]
+    assert crash.kind == "crash" and crash.position_mcs["Z"] == pytest.approx(-120.0, abs=1e-6)
+
+
+def test_a_new_blank_clamped_brings_the_whole_material_back() -> None:
+    nck = kernel()
+    mda(nck, DRILL_10_DEEP)
+    blank = Box((-50.0, -40.0, -250.0), (50.0, 40.0, -220.0))  # the same block, clamped again
+    assert nck.submit(WriteMachineSetup(MachineSetup(blank=blank))) == Accepted()
+    mda(nck, "G0 Z-225\n")
+    assert alarm_numbers(nck) == [90002]
+    assert events(nck)[-1].position_mcs["Z"] == pytest.approx(-120.0, abs=1e-6)
+
+
+SLOT = ("T2 D1 M6\nM3 S1000\nG0 X-70 Y0 Z-215\nG1 Z-225 F2000\n"  # beside the blank, tip -225
+        "G1 X70 F1000\n")  # a slot 5 deep, 10 wide, right through the blank along X
+
+
+def test_rapid_through_a_milled_slot_at_its_depth_is_free() -> None:
+    nck = kernel()
+    mda(nck, SLOT + "G0 X-70\nG0 X0\nG0 Z-224.5\nG0 X70\nM30\n")
+    assert alarm_numbers(nck) == []
+    assert [e.kind for e in events(nck)] == ["scratch"]  # the left face at X -55
+    assert events(nck)[0].position_mcs["X"] == pytest.approx(-55.0, abs=1e-6)
+
+
+def test_rapid_sideways_out_of_the_slot_meets_its_wall_at_once() -> None:
+    """The wall the model leaves: uncut cells have their centre more than 5 + 0.1237 from the
+    slot's axis, so their edge lies between 5 + 0.1237 − 0.0875 and 5 + 0.1237 + 0.0875."""
+    nck = kernel()
+    mda(nck, SLOT + "G0 X0\nG0 Y10\n")
+    assert alarm_numbers(nck) == [90002]
+    half_diagonal, half_cell = 0.175 * math.sqrt(0.5), 0.175 / 2.0
+    assert half_diagonal - half_cell < events(nck)[-1].position_mcs["Y"] <= half_diagonal + half_cell + 1e-9
+
+
+def test_rapid_along_the_slot_deeper_than_it_was_cut_is_a_crash() -> None:
+    nck = kernel()
+    mda(nck, SLOT + "G0 Z-227\nG0 X0\n")  # from X 70 back at tip -227: 2 mm below the slot's floor
+    assert alarm_numbers(nck) == [90002]
+    assert events(nck)[-1].position_mcs["X"] == pytest.approx(55.0, abs=1e-6)  # the right face, uncut there
+
+
+def test_the_spindle_at_rest_in_the_hole_is_still_a_crash_at_its_bottom() -> None:
+    nck = kernel()
+    mda(nck, DRILL_10_DEEP + "M5\nG1 Z-229.5 F500\n")  # in the hole at feed: nothing there
+    assert alarm_numbers(nck) == []
+    mda(nck, "G1 Z-235 F500\n")  # on into the bottom with the spindle at rest
+    assert alarm_numbers(nck) == [90001]
+    assert events(nck)[-1].position_mcs["Z"] == pytest.approx(-130.001, abs=FLOAT32_MM)
+
+
+def test_a_deep_hole_cycle_rapids_back_into_its_own_hole() -> None:
+    """The report of issue 22: CYCLE83 retracts at rapid and comes back into its hole at rapid
+    (to the safety distance above the last depth); DRILL_FLANGE alarmed 90002 there."""
+    nck = kernel()
+    nck.data.settable_frame("G54").trans["Z"] = -220.0  # G54 Z0 on the blank's top
+    mda(nck, "G54 T2 D1 M6\nS1200 M3 F300\nG0 X20 Y10 Z10\n"
+             "CYCLE83(10, 0, 2, -18, 0, -6, 0, 2, 0, 0, 1, 1)\nG0 Z50\nM30\n")
+    assert alarm_numbers(nck) == []
+    assert nck.situation.channel == "reset"
+
+
+def test_first_contact_with_what_is_left_is_found_exactly_in_one_step() -> None:
+    """A step starting above the hole and ending 2 mm under its bottom: the cutter enters the
+    material left at -230.001 after 20.001 mm of the 22 mm step; beside the hole the top face
+    (uncut: exact) after 10 mm."""
+    milled = MilledBlank.of(Box((-50.0, -40.0, -250.0), (50.0, 40.0, -220.0)))
+    tool = ToolBody(CUTTER, 5.0, 100.0)
+    milled.cut(tool, (0.0, 0.0, -210.0), (0.0, 0.0, -230.0))
+    assert milled.first_contact(tool, (0.0, 0.0, -210.0), (0.0, 0.0, -229.0)) is None
+    assert milled.first_contact(tool, (0.0, 0.0, -210.0), (0.0, 0.0, -232.0)) == pytest.approx(20.001 / 22.0, abs=FLOAT32_MM / 22.0)
+    assert milled.first_contact(tool, (12.0, 0.0, -210.0), (12.0, 0.0, -232.0)) == pytest.approx(10.0 / 22.0, abs=1e-12)
