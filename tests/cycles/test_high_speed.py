@@ -1,5 +1,8 @@
 """CYCLE832 (high-speed settings): what the cycle switches for the blocks after it, as
-written down in data/cycles/README.md ("High-speed settings"); the bad-parameter alarm."""
+written down in data/cycles/README.md ("High-speed settings"); the bad-parameter alarm.
+Machining types of the Operate generation (README sources): _TOLM 0 deselect, 1 finishing,
+2 semi-finishing, 3 roughing, 4 precision finishing; the third parameter is the orientation
+tolerance (CAM posts write 1)."""
 
 from __future__ import annotations
 
@@ -16,9 +19,9 @@ def _after(body: str) -> tuple[tuple[str, ...], bool]:
     return tuple(last.gcodes[g] for g in GROUPS), last.exact_stop
 
 
-@pytest.mark.parametrize("tolm", [1, 2, 3, 102001, 1003])
+@pytest.mark.parametrize("tolm", [1, 2, 3, 4, 102001, 1003])
 def test_cycle832_selects_rounding_soft_compressor_feedforward(tolm: int) -> None:
-    """Finishing, semi-finishing, roughing (units digit 1, 2, 3; higher digits are the
+    """Finishing, semi-finishing, roughing, precision finishing (units digit 1 … 4; higher digits are the
     manufacturer's variants and do not matter here): G642, SOFT, COMPCAD, FFWON stay in force
     after the call (no SAVE), so the next G1 does not stop exactly."""
     assert _after(f"CYCLE832(0.01, {tolm}, 1)") == (("G642", "SOFT", "COMPCAD", "FFWON"), False)
@@ -30,7 +33,7 @@ def test_cycle832_deselection_returns_to_the_reset_positions(deselect: str) -> N
     assert _after(f"CYCLE832(0.01, 1, 1)\n{deselect}") == (("G60", "BRISK", "COMPOF", "FFWOF"), True)
 
 
-@pytest.mark.parametrize("call", ["CYCLE832(0.01, 4, 1)", "CYCLE832(0.01, -1, 1)", "CYCLE832(-0.01, 1, 1)"])
+@pytest.mark.parametrize("call", ["CYCLE832(0.01, 5, 1)", "CYCLE832(0.01, -1, 1)", "CYCLE832(-0.01, 1, 1)"])
 def test_cycle832_bad_machining_type_or_tolerance_is_61002(call: str) -> None:
     case = run(call + "\nG1 X10 F100")
     assert case.alarms == [61002]
