@@ -8,6 +8,9 @@ manager, or the last one again with the PROGRAM key Alt+P):
   thread, and streams its alarms: each faulty line gets a gutter mark and an
   underline, the alarm number and text of the cursor line stand in the
   message line under the editor, and ``Next error`` (Shift+F1) jumps there;
+* the message line also says what the word under the cursor means (G function with its
+  group and whether it is modal, M function, system variable, cycle with its parameters:
+  :mod:`hmi.word_help`);
 * softkeys for Edit (mark, copy, cut, paste, delete, undo, redo), Search /
   Replace, Renumber (step 10), Save, Simulation, Execute and Close;
 * unsaved text goes into a journal every few seconds (``hmi.journal``); after a
@@ -44,6 +47,7 @@ from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import NcEditor
 from hmi.widgets.stock_view import StockView
 from hmi.widgets.toolpath import ToolpathView
+from hmi.word_help import word_at, word_help
 from screens.program_cycles import CycleActions
 from screens.program_edit import EditActions
 from screens.program_runs import CheckAndSimulation
@@ -516,8 +520,14 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         else:
             state = "checking …" if self._check_running else (
                 f"{count} faulty line(s) — Shift+F1: next error" if count else "no errors found")
-            message.update(state if self.program else "")
+            meaning = self._word_meaning()
+            message.update((f"{state}   │ {meaning}" if meaning else state) if self.program else "")
             message.set_class(False, "-error")
+
+    def _word_meaning(self) -> str:
+        """What the word under the cursor means (G/M function, system variable, cycle), or ""."""
+        row, column = self.editor.cursor_location
+        return word_help(word_at(self.editor.document.get_line(row), column))
 
     def _update_title(self) -> None:
         if not self._ready:

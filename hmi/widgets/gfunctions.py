@@ -12,6 +12,8 @@ from textual.widgets import Static
 from nck import ISO_MAIN_GROUPS_M, iso_table
 from nck.queries import load_toml
 
+from hmi.word_help import code_meaning
+
 MAIN_GROUPS = (1, 6, 7, 8, 10, 13, 14, 15)
 """Groups of the G-functions window: motion, plane, TRC, WO, exact stop, unit, dimension, feed."""
 
@@ -35,7 +37,13 @@ def main_groups_line(gcodes: Mapping[int, str], groups: tuple[int, ...] = MAIN_G
 
 
 def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | None = None) -> Table:
-    """Every group with its number, active code and meaning, in two columns."""
+    """Every group with its number, active code and meaning, in two columns.
+
+    Siemens groups (``meanings`` None) say what the active code does where the table knows it
+    (the group's meaning otherwise): the same table as the editor's word help
+    (:func:`hmi.word_help.code_meaning`).
+    """
+    siemens = meanings is None
     meanings = group_meanings() if meanings is None else meanings
     numbers = sorted(set(meanings) | set(gcodes))
     half = (len(numbers) + 1) // 2
@@ -50,7 +58,11 @@ def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | No
             if number is None:
                 cells += ["", "", ""]
             else:
-                cells += [str(number), gcodes.get(number, ""), meanings.get(number, "")]
+                active = gcodes.get(number, "")
+                meaning = meanings.get(number, "")
+                if siemens and code_meaning(active):
+                    meaning = code_meaning(active)
+                cells += [str(number), active, meaning]
         table.add_row(*cells)
     return table
 

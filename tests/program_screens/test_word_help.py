@@ -1,0 +1,76 @@
+"""Word help of the editor (issue 27): the meaning of the word under the cursor, one table.
+
+G functions: group, modal or not and the code's meaning from data/gcode/siemens.toml, the
+table the G functions screen shows; M functions and system variables from
+data/gcode/words.toml; cycles from their input forms. Groups as the programming manual lists
+them (G0..G3 group 1 modal; G4 group 2 non-modal; G17..G19 group 6; G90/G91 group 14).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rich.console import Console
+
+from hmi.widgets.gfunctions import MAIN_GROUPS, all_groups_table
+from hmi.word_help import g_functions, word_at, word_help
+from tests.burst import burst
+from tests.program_screens.conftest import SIZE, make_program_app
+
+
+def test_g_functions_with_group_and_modality() -> None:
+    assert word_help("G01") == "G1: straight line at the feedrate F — group 1 (modal motion commands), modal"
+    assert "group 2" in word_help("g4") and "non-modal" in word_help("G4")
+    assert "group 6" in word_help("G18") and ", modal" in word_help("G18")
+    assert word_help("G91").startswith("G91: incremental dimensions — group 14")
+
+
+UNDESCRIBED = {"G335", "G336"}
+"""Group 1 members the manuals at hand list without saying what they do: their help gives the group only."""
+
+
+def test_every_code_of_the_main_groups_has_a_meaning() -> None:
+    """The G functions window's groups (motion, plane, TRC, zero offset, exact stop, units …)."""
+    for name, g_function in g_functions().items():
+        if g_function.group in MAIN_GROUPS and name not in UNDESCRIBED:
+            assert g_function.meaning, name
+    assert word_help("G335") == "G335: group 1 (modal motion commands), modal"
+
+
+def test_m_functions_system_variables_and_cycles() -> None:
+    assert word_help("M30") == "M30: end of the program, as M2"
+    assert word_help("m03") == "M3: spindle on, clockwise"
+    assert "machine coordinate system" in word_help("$AA_IM")
+    assert "channel machine data" in word_help("$MC_AXCONF_GEOAX_NAME_TAB")
+    assert word_help("CYCLE81") == "CYCLE81: cycle Centering — CYCLE81(RTP, RFP, SDIS, DP, DPR)"
+    assert word_help("X10") == word_help("N10") == word_help("") == ""
+
+
+def test_word_under_or_behind_the_cursor() -> None:
+    line = "N10 G1 X10 R1=$AA_IM[X]"
+    assert word_at(line, 4) == word_at(line, 6) == "G1"
+    assert word_at(line, 16) == "$AA_IM"
+    assert word_at(line, 3) == "N10"
+
+
+def test_g_functions_screen_uses_the_same_table() -> None:
+    console = Console(width=160, record=True)
+    console.print(all_groups_table({1: "G1", 14: "G91"}))
+    shown = console.export_text()
+    assert "straight line at the feedrate F" in shown and "incremental dimensions" in shown
+    assert "plane selection" in shown  # no active code: the group's meaning
+
+
+async def test_editor_message_line_shows_the_meaning(data_dir: Path) -> None:
+    """Typed in a burst; Up, Home and Right keys put the cursor on G01, then Down, End on M30."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "f2", *"words", "enter")
+        screen = app.screen
+        assert screen.AREA_ID == "program"
+        await burst(pilot, "ctrl+end", *"N10 G01 X10", "enter", *"N20 M30", "up", "home")
+        message = lambda: str(screen.query_one("#prog-message").render())  # noqa: E731
+        await burst(pilot, "right", "right", "right", "right", "right")
+        assert "G1: straight line at the feedrate F — group 1 (modal motion commands), modal" in message()
+        await burst(pilot, "down", "end")
+        assert "M30: end of the program, as M2" in message()
