@@ -6,11 +6,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from nck.headless import interpret_only, run_on_kernel
 from nck.interp.sources import DirectorySource
 from nck.machine import load_machine
 from nck.persistence import Session
 from nck.resources import data_path
+from nck.simulation.run import simulate
 
 SAMPLE = Path(data_path("programs")) / "POCKET_PLATE.MPF"
 
@@ -64,3 +67,20 @@ def test_plate_runs_to_its_end_on_the_kernel(tmp_path: Path) -> None:
     data = Session.open(tmp_path / "data").ncdata
     result = run_on_kernel(load_machine(), DirectorySource(SAMPLE.parent), data, SAMPLE.name, timeout_s=3600.0)
     assert result.status == "ended", result.alarms
+
+
+def test_plate_simulates_to_the_drawing(tmp_path: Path) -> None:
+    """The editor's simulation of the sample on its WORKPIECE box (120 x 80, top Z0): no alarm,
+    no rapid move or stopped spindle in the material, and the heights of the drawing in the
+    sample's header: the face 1 mm down, the rectangular pocket (60 x 40 about 40/40) at -9,
+    the round pocket (Ø28 about 95/40) at -7, the slots (middles 95/66 and 95/14) at -5; the
+    face beside the rectangular pocket (X40 Y62, 2 mm outside its wall Y60) stays at -1."""
+    mill = load_machine()
+    data = Session.open(tmp_path / "data", mill).ncdata
+    result = simulate(SAMPLE.name, SAMPLE.read_text(), machine=mill, data=data,
+                      programs=DirectorySource(SAMPLE.parent), resolution_mm=0.5)
+    assert result.status == "ended" and result.alarms == [] and result.events == []
+    heights = {point: result.zmap.height_at(*point) for point in
+               [(5.0, 5.0), (40.0, 40.0), (95.0, 40.0), (95.0, 66.0), (95.0, 14.0), (40.0, 62.0)]}
+    assert heights == pytest.approx({(5.0, 5.0): -1.0, (40.0, 40.0): -9.0, (95.0, 40.0): -7.0,
+                                     (95.0, 66.0): -5.0, (95.0, 14.0): -5.0, (40.0, 62.0): -1.0}, abs=0.01)
