@@ -58,7 +58,7 @@ from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.exercise_run import ClassroomHost
 from hmi.alarm_help import AlarmHelpScreen
-from hmi.help import HelpScreen
+from hmi.help import HelpScreen, area_keys
 from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
@@ -582,7 +582,9 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
             return  # another area's help is still being closed: its id "help" is taken until then
         area = self.area_screen
         menu = area.current_menu() if area is not None else SoftkeyMenu.of()
-        self.push_screen(HelpScreen(self.keymap, menu))
+        own_keys = area_keys(area) if area is not None and area is self.screen else []
+        title = area.AREA_TITLE.capitalize() if area is not None else ""
+        self.push_screen(HelpScreen(self.keymap, menu, own_keys, title))
 
     def action_alarm_cancel(self) -> None:
         """F12: acknowledge the alarms whose clear criterion is CANCEL."""

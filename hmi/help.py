@@ -1,24 +1,50 @@
-"""F11 key help: the softkeys of the current level and every key of the panel."""
+"""F11 key help: the softkeys of the current level, the area's own keys and every key of the panel.
+
+Everything listed is generated from the data the keys work by: the softkey menu on display,
+the bindings in force on the area screen (its own and its focused widget's, e.g. the arrow
+keys that select an alarm or move the editor's cursor) and the keymap (``data/keymap.toml``).
+"""
 
 from __future__ import annotations
 
 from rich.table import Table
 from rich.text import Text
-from textual.app import ComposeResult
+from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import VerticalScroll
+from textual.screen import Screen
 from textual.widgets import Static
 
 from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
-from hmi.keymap import Keymap
+from hmi.keymap import Keymap, display_key
 from hmi.softkeys import SoftkeyMenu
 
 SCOPE_TITLES = {"op": "Operator panel", "mcp": "Machine control panel", "softkey": "Softkeys"}
 
+AreaKey = tuple[str, str]
+"""One line of an area's keys: the keys in panel notation and what they do."""
 
-def help_table(keymap: Keymap, menu: SoftkeyMenu) -> Table:
-    """Return the table of the keys in force: softkeys of the current level, then all keys."""
+
+def area_keys(screen: Screen) -> list[AreaKey]:
+    """The keys the screen and its focused widget bind themselves, one line per meaning.
+
+    The app's bindings (the keymap) are left out: the keymap's section lists them.
+    """
+    keys_by_meaning: dict[str, list[str]] = {}
+    for key, active in screen.active_bindings.items():
+        if isinstance(active.node, App) or not active.binding.description or not active.enabled:
+            continue
+        if "super" in key.split("+"):
+            continue  # the Command key of a Mac keyboard: a terminal does not send it
+        keys_by_meaning.setdefault(active.binding.description, []).append(key)
+    return [(", ".join(display_key(key) for key in keys), meaning) for meaning, keys in keys_by_meaning.items()]
+
+
+def help_table(keymap: Keymap, menu: SoftkeyMenu, own_keys: list[AreaKey] | None = None,
+               area_title: str = "") -> Table:
+    """Return the table of the keys in force: softkeys of the current level, the area's own keys,
+    then all keys of the keymap."""
     table = Table(expand=True, show_edge=False, box=None, padding=(0, 1))
     table.add_column("Key", style="bold", width=14)
     table.add_column("Panel key", width=18)
@@ -28,6 +54,11 @@ def help_table(keymap: Keymap, menu: SoftkeyMenu) -> Table:
             if softkey is not None:
                 table.add_row(f"{fkey}{index}", f"{prefix.upper()}SK{index}",
                               softkey.label.replace("\n", " "))
+    if own_keys:
+        table.add_row("", "", "")
+        table.add_row("", "", Text(f"Keys of {area_title or 'this area'}", style="bold underline"))
+        for key, description in own_keys:
+            table.add_row(key, "", description)
     for scope in ("op", "mcp"):
         table.add_row("", "", "")
         table.add_row("", "", Text(SCOPE_TITLES[scope], style="bold underline"))
@@ -42,16 +73,20 @@ class HelpScreen(AreaDialog[None]):
 
     BINDINGS = [Binding("escape", "dismiss_help", "Close", show=False)]
 
-    def __init__(self, keymap: Keymap, menu: SoftkeyMenu) -> None:
+    def __init__(self, keymap: Keymap, menu: SoftkeyMenu, own_keys: list[AreaKey] | None = None,
+                 area_title: str = "") -> None:
         super().__init__(id="help")
         self._keymap = keymap
         self._menu = menu
+        self._own_keys = own_keys or []
+        self._area_title = area_title
 
     def compose(self) -> ComposeResult:
         """One scrollable table."""
         with VerticalScroll(id="help-box"):
             yield Static("HELP — keys in force   (F11 or F10 closes)", id="help-title")
-            yield Static(help_table(self._keymap, self._menu), id="help-table")
+            yield Static(help_table(self._keymap, self._menu, self._own_keys, self._area_title),
+                         id="help-table")
 
     def on_mount(self) -> None:
         """Focus the list so the arrow keys and PgUp/PgDn scroll it."""

@@ -13,6 +13,7 @@ from hmi.app import AREAS, HmiApp
 from hmi.area import AreaBase
 from hmi.keymap import default_keymap, display_key, parse_keymap
 from hmi.softkeys import Softkey, SoftkeyMenu
+from tests.burst import burst
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck
 
@@ -202,3 +203,25 @@ async def test_broken_softkey_is_reported_not_fatal(monkeypatch, fake_app: HmiAp
         assert fake_app.is_running
         assert "ZeroDivisionError" in str(screen.query_one("#dialog-line").render())
         assert len(fake_app.internal_errors) == 1
+
+
+async def test_help_lists_the_keys_of_the_area(fake_app: HmiApp) -> None:
+    """F11 per area (issue 27): the area's own keys stand between its softkeys and the panel keys.
+
+    The Diagnostics area selects an alarm with the arrow keys and pages the log; the Program
+    area's editor has Ctrl+Home / Ctrl+End. Each area lists only its own (pressed in a burst).
+    """
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+a", "f11")
+        assert fake_app.screen.id == "help"
+        rows = help_lines(fake_app)
+        assert ["Keys of Diagnostics"] in rows
+        for row in (["Up", "Select the alarm above"], ["Down", "Select the alarm below"],
+                    ["PgDn", "Older log entries"], ["Shift+F2", "VSK2", "Alarm help"]):
+            assert row in rows, row
+        assert ["Ctrl+End", "End of program"] not in rows
+        await burst(pilot, "f11", "alt+p", "f11")
+        rows = help_lines(fake_app)
+        assert ["Keys of Program"] in rows
+        assert ["Ctrl+End", "End of program"] in rows
+        assert ["Up", "Select the alarm above"] not in rows
