@@ -22,6 +22,8 @@ from nck.check import CheckContext
 from nck.ncdata import NcData
 from nck.simulation.live import LiveRecording
 from nck.simulation.run import Simulation
+# Scrubbing through a finished simulation (the editor's Block ◀/▶, playing, the cursor's cut).
+from nck.simulation.scrub import Scrubber as Scrubber
 # The measuring screens' arithmetic (pure functions on touch positions, nck.measuring),
 # re-exported here so that screens reach it through the façade.
 from nck.measuring import (Circle as Circle, Corner as Corner, circle as circle, corner as corner,

@@ -107,9 +107,10 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         """Title line, editor (or simulation), search bar, message line."""
         with Vertical(id="prog-body"):
             yield Static("", id="prog-title", markup=False)
-            yield NcEditor("", id="prog-editor", read_only=True)
-            yield ToolpathView(id="prog-toolpath")
-            yield StockView(id="prog-stock")
+            with Horizontal(id="prog-work"):
+                yield NcEditor("", id="prog-editor", read_only=True)
+                yield ToolpathView(id="prog-toolpath")
+                yield StockView(id="prog-stock")
             with Horizontal(id="prog-search"):
                 yield Input(placeholder="search", id="prog-find")
                 yield Input(placeholder="replace with", id="prog-replace")
@@ -282,6 +283,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self._dirty = False
         self.binary = False
         self.simulating = False
+        self._stop_playing()
         self.editor.load_text("")
         self.editor.set_error_marks([])
         self._update_read_only()
@@ -480,8 +482,9 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             self._mark_current_block(status)
 
     def _mark_current_block(self, status: NckStatus | None) -> None:
-        """Mark the block being executed in the simulation (only for the program shown)."""
-        line = None
+        """Mark in the toolpath view the block being executed (when the machine runs the program
+        shown), else the block of the editor's cursor line."""
+        line = self.editor.cursor_location[0] + 1
         block = status.channel.current_block if status is not None else None
         if block is not None and self.program and Path(block.file).name.upper() == Path(self.program).name.upper():
             line = block.line
@@ -507,6 +510,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
                 self.editor.selection = Selection(self._mark_anchor, selection.end)
         self._show_cursor_message()
         self._update_title()
+        if self.simulating and self.editor.cursor_location[0] + 1 != self.stock.highlight_line:
+            self.mark_cursor_block()
 
     def _show_cursor_message(self) -> None:
         if not self._ready:
@@ -588,7 +593,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
     def _show_view(self) -> None:
         if not self._ready:
             return
-        self.editor.display = not self.simulating
+        self.editor.set_class(self.simulating, "-beside")  # the program beside the simulation
         self.toolpath.display = self.simulating and not self.sim_material
         self.stock.display = self.simulating and self.sim_material
         self.query_one("#prog-search").display = self.search_open and not self.simulating

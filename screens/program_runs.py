@@ -15,7 +15,10 @@ starts; the answer's ``iter_check`` and ``simulate`` are what the workers call.
 
 from __future__ import annotations
 
+import math
+import threading
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -23,7 +26,7 @@ from textual import work
 from textual.timer import Timer
 from textual.worker import get_current_worker
 
-from nck.queries import CheckSetting
+from nck.queries import CheckSetting, Scrubber
 
 from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -36,6 +39,17 @@ CHECK_DEBOUNCE_S = 0.4
 
 STREAM_BATCH = 50
 """Check results are handed to the screen in batches of this many alarms."""
+
+SPEEDS_BLOCKS_S = (1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, math.inf)
+"""The simulation's playing speeds (Speed - / Speed +), blocks per second; inf: at once."""
+DEFAULT_SPEED = 3
+PLAY_TICK_S = 0.1
+"""Playing shows the blocks due every this many seconds."""
+
+
+def speed_text(blocks_s: float) -> str:
+    """A playing speed in the panel's words."""
+    return "at once" if blocks_s == math.inf else f"{blocks_s:g} blocks/s"
 
 
 class _Breather:
@@ -107,6 +121,14 @@ class CheckAndSimulation:
     _material: Any = None
     _material_blocks: list[tuple[int, int]] = []
     _material_step: int = 0
+    _scrubber: Scrubber | None = None
+    _scrub_lock: threading.Lock = threading.Lock()
+    _shown_note: str = ""
+    _step_pending: bool = False
+    _play_timer: Timer | None = None
+    _play_until: int | None = None
+    _play_due: float = 0.0
+    _speed: int = DEFAULT_SPEED
     files: Any
     status: Any
     app: Any
@@ -126,11 +148,11 @@ class CheckAndSimulation:
                 Softkey("sim.back", "Editor", "simulate"),
             ],
             [
-                Softkey("sim.pan_up", "Pan ↑", "sim_pan(0, 1)"),
-                Softkey("sim.pan_down", "Pan ↓", "sim_pan(0, -1)"),
+                Softkey("sim.play", "Start /\nStop", "sim_play", active=lambda s: s.sim_playing),
+                Softkey("sim.to_cursor", "Run to\ncursor", "sim_run_to_cursor"),
                 Softkey("sim.material", "Material", "sim_material", active=lambda s: s.sim_material),
-                Softkey("sim.pan_left", "Pan ←", "sim_pan(-1, 0)"),
-                Softkey("sim.pan_right", "Pan →", "sim_pan(1, 0)"),
+                Softkey("sim.slower", "Speed -", "sim_speed(-1)"),
+                Softkey("sim.faster", "Speed +", "sim_speed(1)"),
                 Softkey("sim.step_back", "Block ◀", "sim_step(-1)"),
                 Softkey("sim.step_forward", "Block ▶", "sim_step(1)"),
                 Softkey("sim.overlay", "Path\non/off", "sim_overlay", active=lambda s: s.stock.overlay),
@@ -224,15 +246,18 @@ class CheckAndSimulation:
             self.action_simulate_run()
             focus_now(self.stock if self.sim_material else self.toolpath)
         else:
+            self._stop_playing()
             focus_now(self.editor)
 
     def action_simulate_run(self) -> None:
         """Interpret the text headless and draw its toolpath."""
         if self.program is None:
             return
+        self._stop_playing()
         self.toolpath.set_pieces([], "calculating …")
         self.stock.set_picture(StockPicture(), "calculating …")
         self._material = None
+        self._scrubber = None
         self.stock.highlight_line = self.editor.cursor_location[0] + 1
         setting = self.check_setting()
         programs = self.files.program_source(self.program)
@@ -253,39 +278,157 @@ class CheckAndSimulation:
 
     def _show_material(self, simulation: Any) -> None:
         """A finished simulation: show the whole program cut, the note says how it ended; the
-        toolpath view (Material off) draws the same run's path."""
+        toolpath view (Material off) draws the same run's path; the cursor's block is marked."""
         self._material = simulation
+        self._scrubber = Scrubber(simulation)
+        self._scrub_lock = threading.Lock()
         self.toolpath.set_pieces(pieces_of(simulation), path_note(simulation))
         self._material_blocks = simulation.blocks_in_order()
         self._material_step = len(self._material_blocks) - 1
+        self._shown_note = material_note(simulation)
         self.stock.set_picture(picture_of(simulation, simulation.zmap, len(simulation.path.starts)),
-                               material_note(simulation))
+                               self._shown_note)
+        self.mark_cursor_block()
+
+    def mark_cursor_block(self) -> None:
+        """The editor's cursor line in the simulation: its path highlighted in both views and, in
+        the material view, the material its block removed."""
+        if not self.simulating:
+            return
+        line = self.editor.cursor_location[0] + 1
+        self.stock.highlight_line = line
+        self._mark_current_block(self.status)
+        if self._material is not None:
+            self._scrub_worker(self._material, None, self._material_step, line)
 
     def action_sim_step(self, direction: int) -> None:
         """Block ◀ / Block ▶: show the blank as cut up to the block before / after; the editor
         cursor follows the block shown."""
+        self._stop_playing()
+        self._show_block(self._material_step + direction)
+
+    def _show_block(self, step: int, move_cursor: bool = True) -> None:
+        """Show the blank as cut up to block ``step`` (index into the executed blocks); the
+        editor cursor goes to its line (which marks its path and cut)."""
         if self._material is None or not self._material_blocks:
             return
-        step = min(max(self._material_step + direction, 0), len(self._material_blocks) - 1)
+        step = min(max(step, 0), len(self._material_blocks) - 1)
         self._material_step = step
         line, chords = self._material_blocks[step]
         self.stock.highlight_line = line
-        self.editor.move_cursor((max(line - 1, 0), 0), center=True)
-        self._step_worker(self._material, chords, step)
+        self._step_pending = True
+        if move_cursor:
+            self.editor.move_cursor((max(line - 1, 0), 0), center=True)
+        self._scrub_worker(self._material, chords, step, line)
 
     @work(thread=True, exclusive=True, group="program-material-step", exit_on_error=False)
-    def _step_worker(self, simulation: Any, chords: int, step: int) -> None:
-        zmap = simulation.cut_until(chords)
+    def _scrub_worker(self, simulation: Any, chords: int | None, step: int, line: int) -> None:
+        """The blank after ``chords`` chords (None: the picture shown stays) and the cut of the
+        block of source ``line``, off the key path."""
+        with self._scrub_lock:
+            if get_current_worker().is_cancelled or self._scrubber is None or self._scrubber.simulation is not simulation:
+                return
+            cut = self._scrubber.block_cut(line)
+            model = self._scrubber.goto(chords) if chords is not None else None
+            picture = picture_of(simulation, model, chords) if model is not None and chords is not None else None
         if not get_current_worker().is_cancelled:
-            self.app.call_from_thread(self._show_step, simulation, zmap, chords, step)
+            self.app.call_from_thread(self._show_step, simulation, picture, cut, step, line)
 
-    def _show_step(self, simulation: Any, zmap: Any, chords: int, step: int) -> None:
+    def _show_step(self, simulation: Any, picture: StockPicture | None, cut: Any, step: int, line: int) -> None:
         if simulation is not self._material or step != self._material_step:
             return  # a newer step or simulation is on its way
-        line = self._material_blocks[step][0]
-        self.stock.set_picture(picture_of(simulation, zmap, chords),
-                               f"block {step + 1}/{len(self._material_blocks)}, line {line}: "
-                               f"{simulation.modal_at(chords)}")
+        if picture is not None:
+            self._step_pending = False
+            chords = picture.shown_chords
+            shown_line = self._material_blocks[step][0]
+            self._shown_note = (f"block {step + 1}/{len(self._material_blocks)}, line {shown_line}: "
+                                f"{simulation.modal_at(chords)}")
+        else:
+            picture = self.stock.picture
+        if self.stock.highlight_line != line:
+            cut = None  # the cursor moved on meanwhile: its own cut is on its way
+        picture = replace(picture, cut_top=cut.top if cut is not None else None,
+                          cut_bottom=cut.bottom if cut is not None else None)
+        self.stock.set_picture(picture, self._play_note())
+
+    # -- playing -------------------------------------------------------------------------------
+    def _play_note(self) -> str:
+        """The note under the picture, with the playing speed while playing."""
+        if self._play_timer is None:
+            return self._shown_note
+        return f"▶ {SPEEDS_BLOCKS_S[self._speed]:g} blocks/s  {self._shown_note}"
+
+    @property
+    def sim_playing(self) -> bool:
+        """True while the simulation plays block by block."""
+        return self._play_timer is not None
+
+    def action_sim_play(self) -> None:
+        """Start / Stop: play the blocks one after another at the chosen speed (from the first
+        block again when the last one is shown)."""
+        if self._play_timer is not None:
+            self._stop_playing()
+        elif self._material_blocks:
+            if self._material_step >= len(self._material_blocks) - 1:
+                self._show_block(0)
+            self._play_until = None
+            self._start_playing()
+
+    def action_sim_run_to_cursor(self) -> None:
+        """Run to cursor: play up to the next run of the cursor's block (after the last one: its
+        first run); at the top speed the view goes there at once."""
+        if self._material is None or not self._material_blocks:
+            return
+        line = self.editor.cursor_location[0] + 1
+        steps = [i for i, (block_line, _chords) in enumerate(self._material_blocks) if block_line == line]
+        if not steps:
+            self.say(f"Line {line} was not executed")
+            return
+        later = [i for i in steps if i > self._material_step]
+        target = later[0] if later else steps[0]
+        if target < self._material_step or SPEEDS_BLOCKS_S[self._speed] == math.inf:
+            self._stop_playing()
+            self._show_block(target, move_cursor=False)
+            return
+        self._play_until = target
+        self._start_playing()
+
+    def action_sim_speed(self, direction: int) -> None:
+        """Speed - / Speed +: blocks per second while playing."""
+        self._speed = min(max(self._speed + direction, 0), len(SPEEDS_BLOCKS_S) - 1)
+        self.say(f"Simulation speed: {speed_text(SPEEDS_BLOCKS_S[self._speed])}")
+        if self._play_timer is not None:
+            self.stock.status_text = self._play_note()
+
+    def _start_playing(self) -> None:
+        self._play_due = 0.0
+        if self._play_timer is None:
+            self._play_timer = self.set_interval(PLAY_TICK_S, lambda: self.sim_tick(PLAY_TICK_S))
+        self.stock.status_text = self._play_note()
+        self.refresh_softkeys()
+
+    def _stop_playing(self) -> None:
+        if self._play_timer is not None:
+            self._play_timer.stop()
+            self._play_timer = None
+            self.stock.status_text = self._shown_note
+            self.refresh_softkeys()
+
+    def sim_tick(self, elapsed_s: float) -> None:
+        """Playing on by ``elapsed_s`` seconds: the blocks due at the speed are shown."""
+        if self._play_timer is None or self._step_pending:
+            return  # the last step is still being cut: no steps pile up
+        last = len(self._material_blocks) - 1 if self._play_until is None else self._play_until
+        speed = SPEEDS_BLOCKS_S[self._speed]
+        self._play_due += elapsed_s * speed if speed != math.inf else last + 1
+        whole = int(self._play_due)
+        if whole < 1:
+            return
+        self._play_due -= whole
+        step = min(self._material_step + whole, last)
+        self._show_block(step, move_cursor=self._play_until is None)
+        if step >= last:
+            self._stop_playing()
 
     def action_sim_overlay(self) -> None:
         """Path on/off: the toolpath over the material."""

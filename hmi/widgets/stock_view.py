@@ -38,6 +38,10 @@ FEED = np.array([70, 190, 255], dtype=np.uint8)
 RAPID = np.array([110, 118, 130], dtype=np.uint8)
 HIGHLIGHT = np.array([255, 215, 0], dtype=np.uint8)
 TOOL = np.array([255, 140, 40], dtype=np.uint8)
+BLOCK_CUT = np.array([230, 170, 60], dtype=np.float64)
+"""The cut of the editor's cursor block: tints the cut cells of the top view, fills the removed
+material of a section."""
+BLOCK_CUT_TINT = 0.6
 TOOL_HEIGHT_MM = 30.0
 """How much of the tool the sections draw above its tip."""
 
@@ -67,6 +71,8 @@ class StockPicture:
     tool_mm: tuple[float, float, float] | None = None
     tool_radius_mm: float = 0.0
     turning: bool = False  # a lathe's half section: heights are radii over Z, the tool a nose circle
+    cut_top: np.ndarray | None = None  # the cursor block's cut: heights before it, NaN: not cut
+    cut_bottom: np.ndarray | None = None  # … and after it
 
     @property
     def empty(self) -> bool:
@@ -84,9 +90,10 @@ class StockPicture:
 
 
 def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
-    """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it and the
-    path drawn up to chord ``chords`` (the tool stands at that chord's end). A lathe's picture
-    is the half section: Z across, the radius up (``simulation.turning``)."""
+    """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it (a
+    copy of its heights) and the path drawn up to chord ``chords`` (the tool stands at that
+    chord's end). A lathe's picture is the half section: Z across, the radius up
+    (``simulation.turning``)."""
     path = simulation.path
     tool, tool_radius = simulation.tool_at(chords)
     starts, ends = simulation.drawn_path()
@@ -96,7 +103,7 @@ def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
     else:
         extent_x, extent_y, extent_z = blank.x_mm, blank.y_mm, blank.z_mm
     return StockPicture(
-        heights=zmap.heights, x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm,
+        heights=zmap.heights.copy(), x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm,
         resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
         starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
         tool_radius_mm=tool_radius, turning=simulation.turning)
@@ -154,6 +161,10 @@ def render_pixels(picture: StockPicture, view: str, port: Viewport, width_px: in
         values = heights[np.clip(iy, 0, ny - 1)[:, None], np.clip(ix, 0, nx - 1)[None, :]]
         material = inside & (values > bottom + 1e-6)
         colours = _shade((top - values) / max(top - bottom, 1e-9))
+        if picture.cut_top is not None:
+            cut = ~np.isnan(picture.cut_top[np.clip(iy, 0, ny - 1)[:, None], np.clip(ix, 0, nx - 1)[None, :]])
+            tinted = colours * (1.0 - BLOCK_CUT_TINT) + BLOCK_CUT * BLOCK_CUT_TINT
+            colours = np.where(cut[..., None], tinted.astype(np.uint8), colours)
         image[material] = colours[material]
     else:
         along = hs
@@ -164,14 +175,20 @@ def render_pixels(picture: StockPicture, view: str, port: Viewport, width_px: in
             ix = np.floor((along - picture.x0_mm) / res).astype(np.int64)
             row = int(math.floor((across - picture.y0_mm) / res))
             valid = (ix >= 0) & (ix < nx) & (0 <= row < ny)
-            column = heights[min(max(row, 0), ny - 1), np.clip(ix, 0, nx - 1)]
+            cells = (min(max(row, 0), ny - 1), np.clip(ix, 0, nx - 1))
         else:
             iy = np.floor((along - picture.y0_mm) / res).astype(np.int64)
             col = int(math.floor((across - picture.x0_mm) / res))
             valid = (iy >= 0) & (iy < ny) & (0 <= col < nx)
-            column = heights[np.clip(iy, 0, ny - 1), min(max(col, 0), nx - 1)]
+            cells = (np.clip(iy, 0, ny - 1), min(max(col, 0), nx - 1))
+        column = heights[cells]
         material = valid[None, :] & (vs[:, None] <= column[None, :]) & (vs[:, None] >= bottom)
         image[material] = SECTION
+        if picture.cut_top is not None and picture.cut_bottom is not None:
+            top_of, bottom_of = picture.cut_top[cells], picture.cut_bottom[cells]
+            with np.errstate(invalid="ignore"):  # NaN: not cut
+                removed = valid[None, :] & (vs[:, None] <= top_of[None, :]) & (vs[:, None] > bottom_of[None, :])
+            image[removed] = BLOCK_CUT.astype(np.uint8)
     _outline(image, picture, view, port)
     if overlay:
         _draw_path(image, picture, view, port, highlight_line)

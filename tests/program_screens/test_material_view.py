@@ -7,12 +7,15 @@ L62525-62558) so that it runs on a kernel without tool data.
 
 from __future__ import annotations
 
+import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from hmi.widgets.stock_view import (
+    BLOCK_CUT,
     FEED,
     HIGHLIGHT,
     SECTION,
@@ -325,3 +328,95 @@ def test_snapshot_simultaneous_recording_partly_cut(snap_compare, slots_dir: Pat
         await pilot.pause()
 
     assert snap_compare(make_program_app(slots_dir), terminal_size=SIZE, run_before=run_before)
+
+
+async def test_program_beside_the_simulation_and_the_cursor_block_marks_its_cut(slots_dir: Path) -> None:
+    """The program stands beside the simulation; the editor's cursor line marks its path (both
+    views) and the material its block removed; Tab goes from the view to the editor and back."""
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        editor, stock = screen.editor, screen.stock
+        assert editor.display and stock.display
+        assert editor.region.width > 20 and editor.region.right <= stock.region.x  # side by side
+        assert screen.focused is stock
+        # to the editor, then down to line 7 (N60 X90 F800) in one burst
+        await pilot.press("tab", *["down"] * 6)
+        await settle(pilot)
+        assert screen.focused is editor and editor.cursor_location[0] == 6
+        assert stock.highlight_line == 7 and screen.toolpath.current_line == 7
+        picture = stock.picture
+        assert picture.cut_top is not None and picture.cut_bottom is not None
+        zmap = screen._material.zmap
+
+        def cell(x: float, y: float) -> tuple[int, int]:
+            return int((y - zmap.y0_mm) / zmap.resolution_mm), int((x - zmap.x0_mm) / zmap.resolution_mm)
+
+        # N60 cuts Y 10 ± 5 from X 10 to X 90 at Z-5 with the D10 end mill (N12); N50 plunged at X10
+        assert picture.cut_top[cell(50.0, 10.0)] == pytest.approx(0.0)
+        assert picture.cut_bottom[cell(50.0, 10.0)] == pytest.approx(-5.0)
+        assert np.isnan(picture.cut_top[cell(50.0, 16.0)])  # beside the slot
+        assert np.isnan(picture.cut_top[cell(10.0, 35.0)])  # N90's wall, not N60's
+        assert np.isnan(picture.cut_top[cell(50.0, 35.0)])  # the circle (N130)
+        # the removed strip: 80 x 10 x 5 = 4000 mm³ (the cells at 0.3 mm give the walls within 3 %)
+        removed = np.nansum(picture.cut_top - picture.cut_bottom) * zmap.resolution_mm ** 2
+        assert removed == pytest.approx(4000.0, rel=0.03)
+        # the front section through Y 10 draws the removed material in the block's colour
+        section = replace(picture, tool_mm=(50.0, 10.0, 20.0))
+        image = render_pixels(section, "XZ", Viewport(50.0, -2.5, 0.5), 40, 20, overlay=False)
+        # pixel row r: z = -2.5 - (r - 9.5) * 0.5, column c: x = 50 + (c - 19.5) * 0.5
+        assert (image[9, 20] == BLOCK_CUT.astype(np.uint8)).all()  # x 50.25, z -2.25: removed by N60
+        assert (image[19, 20] == SECTION).all()  # z -7.25: still there
+        await pilot.press("tab")
+        assert screen.focused is stock
+
+
+async def test_run_to_cursor_and_playing_at_a_speed(slots_dir: Path, monkeypatch) -> None:
+    """Run to cursor goes to the cursor's block; Start / Stop plays the blocks at the chosen speed
+    (the test plays the time: the tick timer is set out of reach)."""
+    from screens import program_runs
+
+    monkeypatch.setattr(program_runs, "PLAY_TICK_S", 3600.0)
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        blocks = screen._material.blocks_in_order()
+        lines = [line for line, _chords in blocks]
+        # the cursor on N110 (line 12), Speed + up to the top speed, Run to cursor: there at once
+        await pilot.press("tab", *["down"] * 11, *["shift+f5"] * 7, "shift+f2")
+        await settle(pilot)
+        assert program_runs.SPEEDS_BLOCKS_S[screen._speed] == math.inf
+        step = lines.index(12)
+        assert screen._material_step == step and not screen.sim_playing
+        assert screen.stock.picture.shown_chords == blocks[step][1]
+        assert f"block {step + 1}/{len(blocks)}, line 12" in screen.stock.status_text
+        # the cursor on the first block (N40, line 5): Run to cursor goes back there at once
+        assert lines[0] == 5
+        await pilot.press(*["up"] * 7, "shift+f2")
+        await settle(pilot)
+        assert screen._material_step == 0 and screen.stock.picture.shown_chords == blocks[0][1]
+        # Speed - down to 1 block/s, the cursor on line 12: Run to cursor plays towards it
+        await pilot.press(*["shift+f4"] * 10, *["down"] * 7, "shift+f2")
+        await settle(pilot)
+        assert program_runs.SPEEDS_BLOCKS_S[screen._speed] == 1.0
+        assert screen.sim_playing and screen._material_step == 0
+        assert screen.stock.status_text.startswith("▶ 1 blocks/s")
+        screen.sim_tick(0.5)  # half a block due at 1 block/s: nothing yet
+        await settle(pilot)
+        assert screen._material_step == 0
+        screen.sim_tick(0.5)
+        await settle(pilot)
+        assert screen._material_step == 1
+        screen.sim_tick(60.0)  # a minute: it stops at the cursor's block
+        await settle(pilot)
+        assert screen._material_step == step
+        assert not screen.sim_playing  # stopped at the cursor's block
+        assert screen.editor.cursor_location[0] == 11  # playing to the cursor leaves it there
+        # Start / Stop from the last block starts again at the first; Stop holds
+        await pilot.press("shift+f1")
+        await settle(pilot)
+        assert screen.sim_playing
+        await pilot.press("shift+f1")
+        assert not screen.sim_playing

@@ -1,0 +1,114 @@
+"""Scrubbing through a simulation: the blank as cut after any number of chords, and the cut of one
+block.
+
+Stepping forward sweeps only the chords between the shown state and the new one; stepping back
+starts again from the nearest checkpoint (a copy of the heights kept every
+:data:`CHECKPOINT_CHORDS` chords while sweeping forward, at most :data:`MAX_CHECKPOINTS` of them)
+instead of from the uncut blank. Our choice: the events found while scrubbing are the
+simulation's own (found once, when it ran), so the scrubber sweeps without collecting them.
+
+Not thread-safe: one caller at a time.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from nck.simulation.run import Simulation, sweep_path
+from nck.simulation.turning import TurnProfile
+from nck.simulation.zmap import ZMap
+
+CHECKPOINT_CHORDS = 2_000
+"""A copy of the heights is kept every this many chords swept forward."""
+MAX_CHECKPOINTS = 64
+"""At most this many copies (beyond: every other one is dropped and the spacing doubles)."""
+MAX_BLOCK_RUNS = 50
+"""The cut of a block that runs more often (a loop, a subprogram called many times) is the
+cut of its first this many runs (our choice: the picture would not change visibly)."""
+CUT_MM = 1e-4
+"""A cell counts as cut by a block when the block lowers it by more than this."""
+
+
+@dataclass(frozen=True)
+class BlockCut:
+    """The material a block removed: per cell, the height before (``top``) and after
+    (``bottom``) its runs; NaN where it removed nothing. Same grid as the simulation's model."""
+
+    top: np.ndarray
+    bottom: np.ndarray
+
+    @property
+    def mask(self) -> np.ndarray:
+        """The cells the block cut."""
+        return ~np.isnan(self.top)
+
+    def removed_volume_mm3(self, resolution_mm: float) -> float:
+        """The volume the block removed (a Z-map's cells; a lathe's rings are not summed here)."""
+        cut = np.nan_to_num(self.top - self.bottom)
+        return float(cut.astype(np.float64).sum()) * resolution_mm ** 2
+
+
+class Scrubber:
+    """The blank of ``simulation`` as cut after any number of its chords."""
+
+    def __init__(self, simulation: Simulation) -> None:
+        self.simulation = simulation
+        self.model: ZMap | TurnProfile = simulation.zmap.fresh()
+        self.chords = 0
+        self._every = CHECKPOINT_CHORDS
+        self._checkpoints: dict[int, np.ndarray] = {0: self.model.heights.copy()}
+
+    @property
+    def total(self) -> int:
+        """The number of chords of the whole run."""
+        return len(self.simulation.path.starts)
+
+    def goto(self, chords: int) -> ZMap | TurnProfile:
+        """The model cut by the first ``chords`` chords (it is the scrubber's own: copy it to keep it)."""
+        chords = min(max(int(chords), 0), self.total)
+        if chords < self.chords:
+            start = max(c for c in self._checkpoints if c <= chords)
+            self.model.heights[...] = self._checkpoints[start]
+            self.chords = start
+        while self.chords < chords:
+            mark = (self.chords // self._every + 1) * self._every
+            upto = min(mark, chords)
+            sweep_path(self.model, self.simulation.path, upto=upto, first=self.chords)
+            self.chords = upto
+            if upto == mark:
+                self._keep(upto)
+        return self.model
+
+    def _keep(self, chords: int) -> None:
+        if chords in self._checkpoints:
+            return
+        self._checkpoints[chords] = self.model.heights.copy()
+        if len(self._checkpoints) > MAX_CHECKPOINTS:
+            self._every *= 2
+            self._checkpoints = {c: h for c, h in self._checkpoints.items() if c % self._every == 0}
+
+    def runs_of_line(self, line: int) -> list[tuple[int, int]]:
+        """The chord ranges [first, end) the source ``line`` ran for, in order."""
+        mine = np.concatenate(([False], self.simulation.path.lines == line, [False]))
+        edges = np.flatnonzero(mine[1:] != mine[:-1])
+        return list(zip(edges[0::2].tolist(), edges[1::2].tolist()))
+
+    def block_cut(self, line: int) -> BlockCut | None:
+        """What the block of source ``line`` cut (each of its first :data:`MAX_BLOCK_RUNS` runs:
+        the heights before and after it); None when it never ran. Leaves the scrubber at the end
+        of the last run looked at."""
+        runs = self.runs_of_line(line)[:MAX_BLOCK_RUNS]
+        if not runs:
+            return None
+        shape = self.model.heights.shape
+        top = np.full(shape, np.nan, dtype=np.float32)
+        bottom = np.full(shape, np.nan, dtype=np.float32)
+        for first, end in runs:
+            before = self.goto(first).heights.copy()
+            after = self.goto(end).heights
+            cut = before - after > CUT_MM
+            top[cut] = np.fmax(top[cut], before[cut])
+            bottom[cut] = np.fmin(bottom[cut], after[cut])
+        return BlockCut(top, bottom)
