@@ -1,7 +1,9 @@
 """The HMI's colour themes: the dark SINUMERIK-like default, an Operate-like light one, and a
 high-contrast one for projectors (chosen with the palette's Theme command).
 
-Each theme sets Textual's base colours and the HMI's own variables (``$softkey-background`` …);
+Each theme sets Textual's base colours and the HMI's own variables (``$softkey-background``,
+``$softkey-foreground``, ``$alarm-user`` …: the style sheets use no fixed colour that one of the
+themes could not read);
 colours written into widgets' Rich styles (tool path, block display) stay as they are.
 """
 
@@ -24,6 +26,8 @@ SINUMERIK_THEME = Theme(
     dark=True,
     variables={
         "softkey-background": "#3a5673",
+        "softkey-foreground": "#ffffff",
+        "alarm-user": "#c9a227",
         "softkey-disabled": "#6c7a88",
         "header-background": "#0f1a24",
         "alarm-red": "#d7262b",
@@ -48,10 +52,12 @@ OPERATE_LIGHT_THEME = Theme(
     dark=False,
     variables={
         "softkey-background": "#a9b8c7",
+        "softkey-foreground": "#111820",
+        "alarm-user": "#e0b400",
         "softkey-disabled": "#7d8894",
         "header-background": "#2f5f8a",
         "alarm-red": "#c0161b",
-        "alarm-orange": "#b35c00",
+        "alarm-orange": "#c46a00",  # black text on it: contrast 5.4 (4.45 with #b35c00)
         "block-current": "#d46f00",
     },
 )
@@ -72,6 +78,8 @@ HIGH_CONTRAST_THEME = Theme(
     dark=True,
     variables={
         "softkey-background": "#303030",
+        "softkey-foreground": "#ffffff",
+        "alarm-user": "#ffd700",
         "softkey-disabled": "#8a8a8a",
         "header-background": "#000000",
         "alarm-red": "#ff3030",
