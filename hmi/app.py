@@ -63,7 +63,7 @@ from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
-from hmi.palette import Place, PlaceProvider, area_places
+from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places
 from hmi.placeholder import PlaceholderScreen
 from hmi.program_lines import ProgramLines
 from hmi.messages import AlarmLineClicked, CommandRejected, NckStatusChanged, TerminalClosed
@@ -530,25 +530,30 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
                 screen_class, _ = load_area_screen(area)
                 screen = screen_class() if screen_class is not None else None
             menu = screen.softkey_menu() if screen is not None else SoftkeyMenu.of()
-            places += area_places(area.id, " ".join(area.menu_label.split()), menu, self.keymap)
+            places += area_places(area.id, " ".join(area.menu_label.split()), menu, self.keymap,
+                                  lambda key, screen=screen: getattr(screen, key.submenu)() if key.submenu else None)
         return places
 
     def action_go_to_place(self, area_id: str, softkey_id: str = "") -> None:
-        """Show the area ``area_id`` and press its softkey ``softkey_id`` on the top level."""
+        """Show the area ``area_id`` and press its softkey ``softkey_id`` on the top level
+        (``more/version``: the softkeys in turn, each on the level the one before opened)."""
         if self.current_mode != area_id:
             self.action_switch_area(area_id)
         if softkey_id:
-            self.call_after_refresh(self._press_top_softkey, softkey_id)
+            self.call_after_refresh(self._press_softkeys, softkey_id.split(SOFTKEY_PATH_SEPARATOR), True)
 
-    def _press_top_softkey(self, softkey_id: str) -> None:
+    def _press_softkeys(self, softkey_ids: list[str], from_top: bool = False) -> None:
         area = self.area_screen
         if area is None:
             return
-        area.clear_softkey_levels()
-        if area.current_menu().find(softkey_id) is None:
+        if from_top:
+            area.clear_softkey_levels()
+        if area.current_menu().find(softkey_ids[0]) is None:
             area.say("This softkey is not offered in the current view")
             return
-        area.press_softkey_id(softkey_id)
+        area.press_softkey_id(softkey_ids[0])
+        if len(softkey_ids) > 1:
+            self.call_after_refresh(self._press_softkeys, softkey_ids[1:])
 
     def area_menu(self) -> SoftkeyMenu:
         """The area menu shown by MENU SELECT (F9)."""

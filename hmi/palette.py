@@ -4,29 +4,34 @@ The palette (Ctrl+P, ``app.palette`` in ``data/keymap.toml``) offers Textual's
 system commands and, through :class:`PlaceProvider`, the places of the panel:
 an area (``Machine``, reached with Alt+M) and each softkey of an area's
 top softkey level, horizontal and vertical (``Machine ▸ Block search``, reached
-with Alt+M, F5). The softkeys are read from the menus the area screens show
-(:meth:`hmi.area.AreaBase.softkey_menu`), so the palette never holds a table
-of its own. Vertical softkeys depend on the area's view: the palette lists
-those of the view the area has now. Sub-levels pushed by a softkey (``More ▸``)
-are built by that softkey's action and are not listed.
+with Alt+M, F5), and the softkeys of the levels such a key opens
+(``Diagnostics ▸ More ▸ Version``, Alt+A, F8, F2). The softkeys are read from the menus
+the area screens show (:meth:`hmi.area.AreaBase.softkey_menu`, and for a level a key opens
+the screen method the key names, :attr:`hmi.softkeys.Softkey.submenu`), so the palette never
+holds a table of its own. Vertical softkeys depend on the area's view: the palette lists
+those of the view the area has now.
 
 Choosing a place runs the app's ``go_to_place`` action: the area key, then the
-softkey as its function key would press it (refused in the panel's words when
+softkeys as their function keys would press them (refused in the panel's words when
 the access level or the state does not allow it).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable, Protocol
+from typing import Callable, Iterable, Protocol
 
 from rich.text import Text
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 
 from hmi.keymap import Keymap
-from hmi.softkeys import SoftkeyMenu
+from hmi.softkeys import Softkey, SoftkeyMenu
 
 PATH_SEPARATOR = " ▸ "
+SOFTKEY_PATH_SEPARATOR = "/"
+"""Between the softkey ids of a place below the top level (``diag.more/diag.version``)."""
+MAX_LEVELS = 3
+"""How deep the palette follows softkeys into the levels they open."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -37,7 +42,8 @@ class Place:
         path: what the operator reads, ``Machine ▸ Block search``.
         keys: the panel keys that lead there, ``Alt+M, F5``.
         area_id: the operating area (mode id).
-        softkey_id: the softkey to press there (``""``: the area itself).
+        softkey_id: the softkey to press there (``""``: the area itself); below the top
+            level the ids of the softkeys to press in turn, joined by ``/``.
     """
 
     path: str
@@ -50,17 +56,31 @@ def _one_line(label: str) -> str:
     return " ".join(label.split())
 
 
-def area_places(area_id: str, area_name: str, menu: SoftkeyMenu, keymap: Keymap) -> list[Place]:
-    """The area itself and each softkey of ``menu`` (its top level), with their keys."""
+SubLevel = Callable[[Softkey], SoftkeyMenu | None]
+"""The softkey level a softkey opens (its :attr:`Softkey.submenu`), None for a key that opens none."""
+
+
+def area_places(area_id: str, area_name: str, menu: SoftkeyMenu, keymap: Keymap,
+                sub_level: SubLevel | None = None) -> list[Place]:
+    """The area itself and each softkey of ``menu`` with their keys, and below a key that opens
+    a softkey level (``sub_level``) the softkeys of that level (``Diagnostics ▸ More ▸ Version``)."""
     area_key = keymap.by_id(f"area.{area_id}").key_display
     places = [Place(area_name, area_key, area_id)]
-    for prefix, bar in (("h", menu.horizontal), ("v", menu.vertical)):
-        for index, softkey in enumerate(bar, start=1):
-            if softkey is None:
-                continue
-            slot_key = keymap.by_id(f"softkey.{prefix}{index}").key_display
-            places.append(Place(area_name + PATH_SEPARATOR + _one_line(softkey.label),
-                                f"{area_key}, {slot_key}", area_id, softkey.id))
+
+    def add_level(level: SoftkeyMenu, path: str, keys: str, ids: str, depth: int) -> None:
+        for prefix, bar in (("h", level.horizontal), ("v", level.vertical)):
+            for index, softkey in enumerate(bar, start=1):
+                if softkey is None:
+                    continue
+                here = path + PATH_SEPARATOR + _one_line(softkey.label).removesuffix("▸").rstrip()
+                reached = f"{keys}, {keymap.by_id(f'softkey.{prefix}{index}').key_display}"
+                key_ids = f"{ids}{SOFTKEY_PATH_SEPARATOR}{softkey.id}" if ids else softkey.id
+                places.append(Place(here, reached, area_id, key_ids))
+                below = sub_level(softkey) if sub_level is not None and depth < MAX_LEVELS else None
+                if below is not None:
+                    add_level(below, here, reached, key_ids, depth + 1)
+
+    add_level(menu, area_name, area_key, "", 1)
     return places
 
 

@@ -133,7 +133,7 @@ class DiagnosticsScreen(AreaBase):
             _view_key("diag.axis", "Service\naxis", "axis"),
             _view_key("diag.drive", "Service\ndrive", "drive"),
             _view_key("diag.trace", "Trace", "trace"),
-            Softkey("diag.more", "More\n▸", "more"),
+            Softkey("diag.more", "More\n▸", "more", submenu="_more_menu"),
         ]
         return SoftkeyMenu.of(horizontal, self._vertical_keys())
 

@@ -180,9 +180,9 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
         return SoftkeyMenu.of(
             [
-                Softkey("program.edit", "Edit", "edit_menu", enabled=has_program),
+                Softkey("program.edit", "Edit", "edit_menu", enabled=has_program, submenu="_edit_menu"),
                 Softkey("program.search", "Search", "search", enabled=has_program,
-                        active=lambda s: s.search_open),
+                        active=lambda s: s.search_open, submenu="_search_menu"),
                 Softkey("program.renumber", "Renumber", "renumber", enabled=writable),
                 Softkey("program.save", "Save", "save", enabled=writable),
                 Softkey("program.simulate", "Simulation", "simulate", enabled=has_program),

@@ -103,3 +103,31 @@ async def test_theme_command_offers_the_hmi_themes(fake_app: HmiApp) -> None:
         await pilot.pause()
         assert fake_app.theme == "high-contrast"
         assert len(fake_app.screen_stack) == 1
+
+
+def test_places_of_a_sub_level_have_their_path_and_keys() -> None:
+    """A softkey that opens a level lists that level's softkeys below it: area ▸ key ▸ key."""
+    more = SoftkeyMenu.of([None, Softkey("x.version", "Version", "noop")])
+    menu = SoftkeyMenu.of([Softkey("x.more", "More\n▸", "more", submenu="more_menu")])
+    places = area_places("diagnostics", "Diagnostics", menu, default_keymap(),
+                         lambda key: more if key.submenu == "more_menu" else None)
+    assert [(p.path, p.keys, p.softkey_id) for p in places] == [
+        ("Diagnostics", "Alt+A", ""),
+        ("Diagnostics ▸ More", "Alt+A, F1", "x.more"),  # the key's own ▸ is the path's
+        ("Diagnostics ▸ More ▸ Version", "Alt+A, F1, F2", "x.more/x.version"),
+    ]
+
+
+async def test_palette_goes_to_a_softkey_of_a_sub_level(fake_app: HmiApp) -> None:
+    """Ctrl+P "logbook" in a burst: Diagnostics ▸ More ▸ Logbook is found and shown (Alt+A, F8, F3)."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        paths = [place.path for place in fake_app.palette_places()]
+        assert "Diagnostics ▸ More ▸ Logbook" in paths
+        assert any(path.startswith("Program ▸ Edit ▸ ") for path in paths)
+        assert any(path.startswith("Program ▸ Search ▸ ") for path in paths)
+        assert "Machine ▸ Block search" in paths
+        await pilot.press("ctrl+p", *"logbook", "down", "enter")
+        await pilot.pause()
+        await pilot.pause()
+        assert fake_app.current_mode == "diagnostics"
+        assert fake_app.screen.view == "logbook"
