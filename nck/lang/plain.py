@@ -69,12 +69,14 @@ SIMPLE_ADDRESSES = ("X", "Y", "Z", "I", "J", "K", "CR", "F")
 SIMPLE_PATTERN = (
     rf"{_WS}(?:N([0-9]{{1,9}}){_WS})?"
     rf"(?:(G0?[0-3]){_WS}(?:(G9[01]){_WS})?|(G9[01]){_WS}(?:(G0?[0-3]){_WS})?)?"
-    + "".join(rf"(?:{axis}([+-]?{_NUM}){_WS})?" for axis in ("X", "Y", "Z", "I", "J", "K", "CR="))
+    + "".join(rf"(?:{address}{'=' if len(address) > 1 else ''}([+-]?{_NUM}){_WS})?"
+              for address in SIMPLE_ADDRESSES[:-1])
     + rf"(?:F({_NUM}){_WS})?"
     r"(?:;(.*))?"
 )
-"""A *simple* motion line: a plain line that may also be a circle (G2/G3, ``G02``/``G03``) with
-centre words I, J, K or a radius ``CR=``, the words in the order N, G, X, Y, Z, I, J, K, CR, F.
+"""A *simple* motion line: a plain line (every plain line is simple) that may also be a circle
+(G2/G3, ``G02``/``G03``) with centre words I, J, K or a radius ``CR=``, the words in the order
+N, G, X, Y, Z, I, J, K, CR, F.
 Like a plain line it is always valid for the block parser (property-tested), so the load scan
 and the editor's check do not parse it, and :func:`simple_block` gives its syntax tree without
 the lexer; what it means is decided by the interpreter. Groups: 1 N, 2-5 the G words (2, 3 or
@@ -113,7 +115,7 @@ def _literal(text: str) -> int | float:
 def parses_without_alarm(line: str) -> bool:
     """True if ``line`` is known to be valid for the block parser without parsing it (a plain or
     a simple motion line); False says nothing (the parser decides)."""
-    return PLAIN_LINE.fullmatch(line) is not None or SIMPLE_LINE.fullmatch(line) is not None
+    return SIMPLE_LINE.fullmatch(line) is not None
 
 
 G_CODES = {"G0": "G0", "G00": "G0", "G1": "G1", "G01": "G1", "G90": "G90", "G91": "G91"}

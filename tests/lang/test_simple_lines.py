@@ -21,6 +21,7 @@ from nck.lang import ast
 from nck.lang.parser import parse_block
 from nck.lang.plain import SIMPLE_LINE, is_plain, parses_without_alarm, simple_block
 from nck.interp.program import load_program
+from tests.lang.test_plain_fast_path import plain_lines
 
 NEVER = re.compile(r"(?!)")
 
@@ -88,6 +89,12 @@ def test_the_tree_of_a_simple_line_is_the_parsers(line: str, number: int) -> Non
                                   "  N007 G02X1.;", "G91 G2 X1", "CR=+2 F0", "G00 G90", "X123456789.123456789"])
 def test_the_tree_of_simple_line_examples(line: str) -> None:
     assert repr(simple_block(line, 3)) == repr(parse_block(line, 3))
+
+
+@settings(max_examples=300, deadline=None)
+@given(plain_lines())
+def test_every_plain_line_is_simple(line: str) -> None:
+    assert is_plain(line) and SIMPLE_LINE.fullmatch(line) is not None
 
 
 def _scan(text: str) -> dict[str, Any]:
