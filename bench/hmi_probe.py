@@ -8,7 +8,9 @@ runs (keys sent with Textual's Pilot, the kernel advancing on the bridge's
 real-time clock, latency up to the first frame of the new screen), and the peak
 RSS. With ``--program FILE`` that program is
 imported into an NC file system, selected in AUTO and opened in the Program
-area's editor before the measurements (memory with a large program).
+area's editor before the measurements (memory with a large program). With
+``--editor FILE`` only the editor is measured: the time its check of the whole
+file takes from opening, and the area keys' latency while that check runs.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 SHORT_PROGRAM = ("N10 G90 G0 X0 Y0 Z10\n"
                  + "".join(f"N{20 + 10 * k} G1 X{(k * 7) % 100} Y{(k * 3) % 50} F600\n" for k in range(200))
@@ -98,7 +100,8 @@ async def _refresh_cpu(app: Any, pilot: Any, nck: Any, refreshes: int = 60) -> t
     return to_frame, with_pilot
 
 
-async def _key_latencies(app: Any, pilot: Any, presses: int = 40) -> tuple[list[float], list[float]]:
+async def _key_latencies(app: Any, pilot: Any, presses: int = 40, keys: tuple[str, str] = ("alt+o", "alt+m"),
+                         until: Callable[[], bool] | None = None) -> tuple[list[float], list[float]]:
     """Key-to-repaint latencies of area keys while the kernel runs on the bridge's own clock.
 
     The bridge's timer advances the kernel in real time (as in ``hmi``), so a
@@ -108,6 +111,10 @@ async def _key_latencies(app: Any, pilot: Any, presses: int = 40) -> tuple[list[
     wrapping ``App._display``). The Pilot round trip (``press`` + ``pause``) is
     reported too: it adds at least three of Textual's 20 ms idle-detection
     sleeps, so it is no measure of what the operator sees.
+
+    ``keys``: the two area keys pressed in turn (default Parameter and Machine, a full
+    area switch); ``until``: no more keys once it returns True (the latency of a key
+    counts only if it was still False when the frame came).
     """
     frames: list[tuple[float, object]] = []
     display = app._display
@@ -123,12 +130,16 @@ async def _key_latencies(app: Any, pilot: Any, presses: int = 40) -> tuple[list[
     latency: list[float] = []
     roundtrip: list[float] = []
     for k in range(presses):
-        key = "alt+o" if k % 2 == 0 else "alt+m"  # Parameter and Machine: a full area switch
+        if until is not None and until():
+            break
+        key = keys[k % 2]
         await pilot.pause(0.06)  # let a timer tick fall anywhere relative to the key
         frames.clear()
         t0 = time.perf_counter()
         await pilot.press(key)
         await pilot.pause()
+        if until is not None and until():
+            break
         roundtrip.append(time.perf_counter() - t0)
         target = app.screen
         painted = next((t for t, screen in frames if screen is target), None)
@@ -190,6 +201,101 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
     return out
 
 
+def _record_frames(app: Any) -> list[tuple[float, object]]:
+    """(time, screen) of every frame the compositor writes from now on (``App._display`` wrapped)."""
+    frames: list[tuple[float, object]] = []
+    display = app._display
+
+    def recording_display(screen: object, renderable: object) -> None:
+        display(screen, renderable)
+        if renderable is not None and not app._batch_count:
+            frames.append((time.perf_counter(), screen))
+
+    app._display = recording_display
+    return frames
+
+
+async def _key_to_frame(app: Any, key: str, frames: list[tuple[float, object]], limit_s: float = 30.0) -> float:
+    """Send an area key as the terminal driver does and wait for the first frame of the screen it
+    opens; seconds from the key to that frame.
+
+    Pilot's ``press`` cannot be used while a worker thread is busy: it waits until the whole
+    process is idle, so it would wait for the editor's check to end.
+    """
+    from textual import events
+
+    before = app.screen
+    frames.clear()
+    event = events.Key(key, None)
+    event.set_sender(app)
+    sent = time.perf_counter()
+    app._driver.send_message(event)
+    while time.perf_counter() - sent < limit_s:
+        await asyncio.sleep(0.002)
+        target = app.screen
+        if target is not before:
+            painted = next((t for t, screen in frames if screen is target), None)
+            if painted is not None:
+                return painted - sent
+    return float("inf")
+
+
+async def measure_editor(program: Path, presses: int = 400) -> dict[str, float | str]:
+    """Open ``program`` in the Program area's editor and measure its whole-file check.
+
+    ``editor_check_s`` runs from the Program key that opens the file to the moment the
+    editor's check worker hands over its last alarms (what the operator waits for before
+    every fault of the file is marked); ``editor_open_s`` up to the first frame of the
+    opened editor. From that frame on, Machine and Program are pressed in turn, and the
+    key-to-repaint latencies of the keys answered while the check runs are reported.
+    """
+    from nck.kernel import Nck
+    from nck.storage import NcFileSystem
+
+    from hmi.app import HmiApp
+    from hmi.program_files import ProgramFiles
+    from screens.program_runs import CheckAndSimulation
+
+    programs = NcFileSystem(Path(tempfile.mkdtemp()) / "nc")
+    name = programs.import_file(program).path.rpartition("/")[2]
+    app = HmiApp(Nck(programs=programs, referenced=True), realtime=False)
+    app.freeze_gc_at_start = True
+    finished: list[float] = []
+    apply_marks = CheckAndSimulation._apply_marks
+
+    def recording_apply_marks(screen: Any, generation: int, marks: list[Any], done: bool) -> None:
+        apply_marks(screen, generation, marks, done)
+        if done and not screen._check_running:
+            finished.append(time.perf_counter())
+
+    CheckAndSimulation._apply_marks = recording_apply_marks  # type: ignore[method-assign,assignment]
+    out: dict[str, float | str] = {}
+    async with app.run_test(size=(160, 48)) as pilot:
+        await pilot.pause()
+        await pilot.pause()
+        ProgramFiles.of_app(app).request_open(f"MPF/{name}")
+        frames = _record_frames(app)
+        started = time.perf_counter()
+        out["editor_open_s"] = await _key_to_frame(app, "alt+p", frames)
+        latency: list[float] = []
+        for k in range(presses):
+            if finished:
+                break
+            await asyncio.sleep(0.06)
+            latency.append(await _key_to_frame(app, ("alt+m", "alt+p")[k % 2], frames))
+        limit = time.perf_counter() + 600.0
+        while not finished and time.perf_counter() < limit:
+            await pilot.pause(0.1)
+        out["editor_check_done"] = str(bool(finished))
+        out["editor_check_s"] = (finished[0] if finished else time.perf_counter()) - started
+    out["editor_keys_during_check"] = float(len(latency))
+    if latency:
+        out["editor_key_latency_ms_median"] = statistics.median(latency) * 1000.0
+        out["editor_key_latency_ms_p95"] = _percentile(latency, 0.95) * 1000.0
+    out["peak_rss_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    return out
+
+
 async def first_frame_only(spawn_epoch: float) -> dict[str, float | str]:
     """Start the HMI (as :func:`measure` does) and return the time from spawn to its first frame."""
     from nck.kernel import Nck
@@ -234,9 +340,13 @@ def first_frames(starts: int = 3) -> float:
 
 
 def main(argv: list[str]) -> int:
-    """Entry point: ``SPAWN_EPOCH [--program FILE]`` (``--first-frame SPAWN_EPOCH``: that figure only)."""
+    """Entry point: ``SPAWN_EPOCH [--program FILE]`` (``--first-frame SPAWN_EPOCH``: that figure only;
+    ``--editor FILE``: the editor's whole-file check of FILE and the keys during it)."""
     if argv and argv[0] == "--first-frame":
         print(json.dumps(asyncio.run(first_frame_only(float(argv[1])))))
+        return 0
+    if argv and argv[0] == "--editor":
+        print(json.dumps(asyncio.run(measure_editor(Path(argv[1])))))
         return 0
     spawn = float(argv[0]) if argv else time.time()
     program = Path(argv[argv.index("--program") + 1]) if "--program" in argv else None
