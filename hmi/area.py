@@ -34,6 +34,7 @@ from nck.commands import SubmitResult
 from nck.status import NckStatus
 
 from hmi.key_settle import BindingsInPlace
+from hmi.panel_keys import PanelKey, PanelKeys
 from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalSoftkeys
 from hmi.widgets.header import AreaHeader
 
@@ -84,7 +85,8 @@ class AreaBase(BindingsInPlace):
 
     # -- layout ----------------------------------------------------------------------
     def compose(self) -> ComposeResult:
-        """Header, content with the vertical softkeys beside it, dialog line, horizontal softkeys."""
+        """Header, content with the vertical softkeys beside it, dialog line, horizontal softkeys
+        (and in a browser tab the panel keys to click)."""
         yield AreaHeader(id="header")
         with Horizontal(id="area-body"):
             with Container(id="area-content"):
@@ -93,6 +95,7 @@ class AreaBase(BindingsInPlace):
             yield VerticalSoftkeys(id="vsk")
         yield DialogLine("", id="dialog-line", markup=False)
         yield HorizontalSoftkeys(id="hsk")
+        yield PanelKeys(self.hmi.keymap, id="panel-keys")
         yield Static(TOO_SMALL_TEXT, id="too-small", markup=False)
 
     def compose_content(self) -> ComposeResult:
@@ -204,6 +207,10 @@ class AreaBase(BindingsInPlace):
     def on_softkey_cell_pressed(self, message: SoftkeyCell.Pressed) -> None:
         """A mouse click on a softkey does what its function key does."""
         self.press_softkey(message.slot_id)
+
+    async def on_panel_key_pressed(self, message: PanelKey.Pressed) -> None:
+        """A click on a panel key (browser tab) does what the key does."""
+        await self.app.run_action(message.binding.action)
 
     # -- quitting --------------------------------------------------------------------------
     def unsaved_work(self) -> str:

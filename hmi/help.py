@@ -46,7 +46,8 @@ def help_table(keymap: Keymap, menu: SoftkeyMenu, own_keys: list[AreaKey] | None
     """Return the table of the keys in force: softkeys of the current level, the area's own keys,
     then all keys of the keymap."""
     table = Table(expand=True, show_edge=False, box=None, padding=(0, 1))
-    table.add_column("Key", style="bold", width=14)
+    # wide enough for a key and its browser-safe alternative ("Ctrl+PgDn, Ctrl+Shift+Down")
+    table.add_column("Key", style="bold", width=26)
     table.add_column("Panel key", width=18)
     table.add_column("Meaning")
     for prefix, bar, fkey in (("h", menu.horizontal, "F"), ("v", menu.vertical, "Shift+F")):

@@ -13,6 +13,7 @@ from nck.commands import SubmitResult
 from nck.status import NckStatus
 
 from hmi.bridge import NckBridge
+from hmi.keymap import Keymap
 from hmi.program_lines import ProgramLines
 
 
@@ -27,6 +28,8 @@ class AreaHost(Protocol):
     rapid_overlay: bool
     exercise_side: str
     """The exercise side window's text ("" while no exercise runs)."""
+    keymap: Keymap
+    """The key table (``data/keymap.toml``)."""
 
     @property
     def selected_axis(self) -> str | None:

@@ -44,6 +44,7 @@ class KeyBinding:
         label: short description for the help overlay.
         panel: the SINUMERIK panel key it stands for.
         scope: ``op``, ``mcp`` or ``softkey``.
+        button: text of its clickable key in a browser tab (``""``: no button).
     """
 
     id: str
@@ -52,6 +53,7 @@ class KeyBinding:
     label: str
     panel: str
     scope: str
+    button: str = ""
 
     @property
     def action_name(self) -> str:
@@ -139,7 +141,7 @@ def parse_keymap(table: dict) -> Keymap:
             continue
         binding = KeyBinding(
             id=entry["id"], keys=entry["key"], action=entry["action"], label=entry["label"],
-            panel=entry.get("panel", ""), scope=entry.get("scope", "op"),
+            panel=entry.get("panel", ""), scope=entry.get("scope", "op"), button=entry.get("button", ""),
         )
         if binding.action_name not in ACTIONS:
             problems.append(f"key {binding.id}: unknown action {binding.action_name!r}")

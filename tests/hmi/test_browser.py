@@ -196,6 +196,24 @@ def open_panel(driver: webdriver.Chrome, url: str) -> str:
     return text
 
 
+CELL_GEOMETRY = """
+const terminal = window.panelTerminal;
+const box = terminal.element.querySelector('.xterm-screen').getBoundingClientRect();
+return [box.width / terminal.cols, box.height / terminal.rows, box.width, box.height];
+"""
+
+
+def click_on(driver: webdriver.Chrome, word: str) -> None:
+    """Click the middle of ``word`` where the terminal shows it last (lowest row)."""
+    rows = screen(driver).splitlines()
+    row = max(i for i, line in enumerate(rows) if f" {word} " in f" {line} ")
+    column = f" {rows[row]} ".index(f" {word} ") + len(word) / 2
+    cell_w, cell_h, width, height = driver.execute_script(CELL_GEOMETRY)
+    terminal_screen = driver.find_element("css selector", ".xterm-screen")
+    ActionChains(driver).move_to_element_with_offset(
+        terminal_screen, int(column * cell_w - width / 2), int((row + 0.5) * cell_h - height / 2)).click().perform()
+
+
 def alt(driver: webdriver.Chrome, *letters: str) -> None:
     """Alt+letter for each letter, one burst."""
     chain = ActionChains(driver)
@@ -239,7 +257,7 @@ def test_the_panel_in_a_browser(served: tuple[str, int, Path], browser: webdrive
     second_tab = browser.current_window_handle
     second = open_panel(browser, url)
     assert "○" in second  # its own machine: nothing referenced, no MDA move
-    alt(browser, "d")
+    click_on(browser, "MDA")  # the machine control panel's key under the softkeys
     wait_for(browser, "MDA in the second tab", lambda s: "MDA" in header(s))
     assert len(panel_processes(server_pid)) == 2 and len(private_copies(temp_dir)) == 2
 

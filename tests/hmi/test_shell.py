@@ -115,7 +115,7 @@ async def test_help_overlay_lists_keys(fake_app: HmiApp) -> None:
         assert fake_app.screen.id == "help"
         rows = help_lines(fake_app)
         # keymap.md: the operator panel and the machine control panel, key, panel key, meaning
-        for row in (["Alt+M", "MACHINE"], ["F12", "ALARM CANCEL"], ["Alt+U", "AUTO"],
+        for row in (["Alt+M", "MACHINE"], ["F12, Alt+Shift+C", "ALARM CANCEL"], ["Alt+U", "AUTO"],
                     ["Alt+G", "CYCLE START"], ["Alt+H", "CYCLE STOP"], ["Alt+Q", "RESET"],
                     ["Alt+K", "SINGLE BLOCK"]):
             assert any(line[:2] == row for line in rows), row
