@@ -58,12 +58,13 @@ from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.exercise_run import ClassroomHost
 from hmi.alarm_help import AlarmHelpScreen
+from hmi.i18n import LANGUAGES, N_, _, language, set_language
 from hmi.help import HelpScreen, area_keys
 from hmi.key_input import own_binding
 from hmi.key_settle import wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
-from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places
+from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places, one_line
 from hmi.placeholder import PlaceholderScreen
 from hmi.program_lines import ProgramLines
 from hmi.messages import AlarmLineClicked, CommandRejected, NckStatusChanged, TerminalClosed
@@ -101,7 +102,7 @@ def freeze_startup_objects() -> None:
     """
     gc.collect()
     gc.freeze()
-    _, gen1, gen2 = gc.get_threshold()
+    _gen0, gen1, gen2 = gc.get_threshold()
     gc.set_threshold(GC_GEN0_THRESHOLD, gen1, gen2)
 
 
@@ -115,12 +116,12 @@ class Area:
 
 
 AREAS: tuple[Area, ...] = (
-    Area("machine", "MACHINE", "Machine"),
-    Area("parameter", "PARAMETER", "Parameter"),
-    Area("program", "PROGRAM", "Program"),
-    Area("program_manager", "PROGRAM MANAGER", "Program\nmanager"),
-    Area("diagnostics", "DIAGNOSTICS", "Diagnostics"),
-    Area("setup", "SETUP", "Setup"),
+    Area("machine", N_("MACHINE"), N_("Machine")),
+    Area("parameter", N_("PARAMETER"), N_("Parameter")),
+    Area("program", N_("PROGRAM"), N_("Program")),
+    Area("program_manager", N_("PROGRAM MANAGER"), N_("Program\nmanager")),
+    Area("diagnostics", N_("DIAGNOSTICS"), N_("Diagnostics")),
+    Area("setup", N_("SETUP"), N_("Setup")),
 )
 """The operating areas in the order of the area menu (F9)."""
 
@@ -374,6 +375,50 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         except OSError as exc:  # a full or read-only disk: say so, keep running
             self.set_hint(f"NC data could not be saved: {exc}")
 
+    # -- language -------------------------------------------------------------------------------
+    def select_language(self, code: str) -> str:
+        """Show the operator texts in language ``code`` from now on (Setup ▸ Change language).
+
+        The choice is kept in the NC data directory (retained section ``display``) and every
+        area is built again in the new language; the area shown stays shown, in the same
+        view. Refused (nothing changes) while an area holds unsaved text: building it again
+        would lose it. Returns what to say on the dialog line ("" when nothing needs saying).
+        """
+        if code == language():
+            return ""
+        unsaved = [work for work in (screen.unsaved_work() for screen in self.area_screens) if work]
+        if unsaved:
+            return _("Language not changed: {reason}").format(reason=unsaved[0])
+        set_language(code)
+        if self.nc_session is not None:
+            self.nc_session.language = code
+            self.save_nc_data()
+        self.run_worker(self._rebuild_areas(), group="language", exclusive=True)
+        return ""
+
+    async def _rebuild_areas(self) -> None:
+        """Build every area built so far anew (its texts come from the catalogue as it composes)."""
+        current = self.current_mode
+        old = self.area_screen
+        view = getattr(old, "view", None)
+        for area in AREAS:
+            if area.id != current:
+                await self._renew_area(area)
+        spare = next(area.id for area in AREAS if area.id != current)
+        await self.switch_mode(spare)
+        await self._renew_area(next(area for area in AREAS if area.id == current))
+        await self.switch_mode(current)
+        new = self.area_screen
+        show_view = getattr(new, "action_show_view", None)
+        if view is not None and callable(show_view) and getattr(new, "view", None) != view:
+            show_view(view)
+
+    async def _renew_area(self, area: Area) -> None:
+        """Drop the screen of ``area`` (if built); the next visit builds a fresh one."""
+        self.area_screens = [screen for screen in self.area_screens if screen.AREA_ID != area.id]
+        await self.remove_mode(area.id)
+        self.add_mode(area.id, self._remembered(area_screen_factory(area)))
+
     def power_on_reset(self) -> bool:
         """Reset (po): save, restart the simulated NCK from the retained data; False without one."""
         if self.nc_session is None:
@@ -527,10 +572,10 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         for area in AREAS:
             screen = built.get(area.id)
             if screen is None:
-                screen_class, _ = load_area_screen(area)
+                screen_class, _problem = load_area_screen(area)
                 screen = screen_class() if screen_class is not None else None
             menu = screen.softkey_menu() if screen is not None else SoftkeyMenu.of()
-            places += area_places(area.id, " ".join(area.menu_label.split()), menu, self.keymap,
+            places += area_places(area.id, one_line(_(area.menu_label)), menu, self.keymap,
                                   lambda key, screen=screen: getattr(screen, key.submenu)() if key.submenu else None)
         return places
 
@@ -717,7 +762,7 @@ def detach_lost_terminal() -> None:
 
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
              *, nck: Any = None, program: str | None = None, realtime: bool = True,
-             confirm: Callable[[str], bool] | None = None) -> HmiApp:
+             confirm: Callable[[str], bool] | None = None, lang: str | None = None) -> HmiApp:
     """Build the application (shared by the console script and the tests).
 
     Args:
@@ -729,12 +774,19 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
         realtime: advance the kernel from the wall clock (False: tests advance it).
         confirm: asks the user a yes/no question before the panel starts (replacing a
             program with ``program``); None answers no.
+        lang: the language of the operator texts (``--lang``); None: the one kept in the
+            data directory (English for a new one).
     """
     on_quit = None
     session = None
     if nck is None:
         session, nck = start_session(machine, data_dir, ephemeral, program, confirm)
         on_quit = session.quit
+        if lang is not None:  # --lang: this language from now on, kept for the next start
+            session.language = lang
+        set_language(session.language)
+    elif lang is not None:
+        set_language(lang)
     app = HmiApp(nck, realtime=realtime, on_quit=on_quit,
                  alarm_times=session.alarm_times if session is not None else None)
     app.nc_session = session
@@ -767,6 +819,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--ephemeral", action="store_true",
                         help="work on a temporary copy of the NC data (nothing is saved)")
     parser.add_argument("--program", help="part program to select in AUTO at start")
+    parser.add_argument("--lang", choices=sorted(LANGUAGES),
+                        help="language of the operator texts (kept for the next start; "
+                             "default: the one chosen last, English at first)")
     parser.add_argument("--serve", action="store_true",
                         help="serve the panel to browsers (classroom): one panel on a private copy of the "
                              "NC data per browser tab (needs textual-serve, installed by make)")
@@ -787,7 +842,7 @@ def main(argv: list[str] | None = None) -> int:
     with exit_on_termination():
         try:
             app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program,
-                           confirm=ask_on_terminal)
+                           confirm=ask_on_terminal, lang=args.lang)
         except Exception as exc:  # a CLI/file problem: a clear message, no traceback
             # an exception without text (MemoryError) must not leave a bare "hmi: "
             message = str(exc) or f"cannot start: internal error ({type(exc).__name__})"

@@ -33,6 +33,7 @@ from textual.widgets import Static
 from nck.commands import SubmitResult
 from nck.status import NckStatus
 
+from hmi.i18n import N_, _
 from hmi.key_settle import BindingsInPlace
 from hmi.panel_keys import PanelKey, PanelKeys
 from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalSoftkeys
@@ -45,8 +46,8 @@ if TYPE_CHECKING:
 MIN_TERMINAL_SIZE = (120, 36)
 """The smallest terminal (columns, rows) the layout reads well in; below it one line says so."""
 
-TOO_SMALL_TEXT = (f"The panel needs a terminal of at least {MIN_TERMINAL_SIZE[0]} × {MIN_TERMINAL_SIZE[1]}"
-                  " characters: please make the window larger.")
+TOO_SMALL_TEXT = N_("The panel needs a terminal of at least {columns} × {rows} characters: "
+                    "please make the window larger.")
 """Shown instead of the area's windows while the terminal is smaller (app class ``-too-small``)."""
 
 
@@ -96,7 +97,8 @@ class AreaBase(BindingsInPlace):
         yield DialogLine("", id="dialog-line", markup=False)
         yield HorizontalSoftkeys(id="hsk")
         yield PanelKeys(self.hmi.keymap, id="panel-keys")
-        yield Static(TOO_SMALL_TEXT, id="too-small", markup=False)
+        yield Static(_(TOO_SMALL_TEXT).format(columns=MIN_TERMINAL_SIZE[0], rows=MIN_TERMINAL_SIZE[1]),
+                     id="too-small", markup=False)
 
     def compose_content(self) -> ComposeResult:
         """Yield the windows of the area (override)."""
@@ -162,10 +164,11 @@ class AreaBase(BindingsInPlace):
             return False
         if not key.allowed(self, self.access_level):
             # the area's message: an accepted command (the keyswitch turned) clears it
+            label = " ".join(_(key.label).split())
             if self.access_level > key.level:
-                self.say(f"{key.label.replace(chr(10), ' ')}: needs access level {key.level}")
+                self.say(_("{softkey}: needs access level {level}").format(softkey=label, level=key.level))
             else:
-                self.say(f"{key.label.replace(chr(10), ' ')}: not possible in this state")
+                self.say(_("{softkey}: not possible in this state").format(softkey=label))
             return False
         try:
             self.perform(key.action)
@@ -183,7 +186,7 @@ class AreaBase(BindingsInPlace):
         target: object = self
         if action.startswith("app."):
             target, action = self.app, action[4:]
-        name, _, raw_args = action.partition("(")
+        name, _separator, raw_args = action.partition("(")
         args = parse_action(f"x({raw_args}")[2] if raw_args else ()
         method = getattr(target, f"action_{name}", None)
         if method is None:
@@ -226,7 +229,7 @@ class AreaBase(BindingsInPlace):
         self.status = status
         if not self.is_mounted:
             return
-        self.query_one(AreaHeader).show(self.AREA_TITLE, status)
+        self.query_one(AreaHeader).show(_(self.AREA_TITLE), status)
         show_text(self.query_one("#exercise-side", Static), self.hmi.exercise_side)
         if status is not None:
             self.update_status(status)

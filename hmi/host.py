@@ -47,6 +47,9 @@ class AreaHost(Protocol):
     def end_exercise(self) -> str:
         """End the exercise: report written, the trainee's own data back; return what to say."""
 
+    def select_language(self, code: str) -> str:
+        """Show the operator texts in language ``code``; return what to say ("" when nothing)."""
+
     def power_on_reset(self) -> bool:
         """Reset (po): restart the kernel on the NC data; False without a data directory."""
 

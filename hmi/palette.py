@@ -18,12 +18,14 @@ the access level or the state does not allow it).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Callable, Iterable, Protocol
 
 from rich.text import Text
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 
+from hmi.i18n import _
 from hmi.keymap import Keymap
 from hmi.softkeys import Softkey, SoftkeyMenu
 
@@ -52,8 +54,13 @@ class Place:
     softkey_id: str = ""
 
 
-def _one_line(label: str) -> str:
-    return " ".join(label.split())
+WORD_BREAK = re.compile(r"-\n(?=[a-zäöüß])")
+"""A label's line break inside a word (``Satz-\nsuchlauf``): on one line the word is whole again."""
+
+
+def one_line(label: str) -> str:
+    """A softkey label on one line: ``Block\nsearch`` → ``Block search``, ``Sub-\nprograms`` → ``Subprograms``."""
+    return " ".join(WORD_BREAK.sub("", label).split())
 
 
 SubLevel = Callable[[Softkey], SoftkeyMenu | None]
@@ -63,7 +70,10 @@ SubLevel = Callable[[Softkey], SoftkeyMenu | None]
 def area_places(area_id: str, area_name: str, menu: SoftkeyMenu, keymap: Keymap,
                 sub_level: SubLevel | None = None) -> list[Place]:
     """The area itself and each softkey of ``menu`` with their keys, and below a key that opens
-    a softkey level (``sub_level``) the softkeys of that level (``Diagnostics ▸ More ▸ Version``)."""
+    a softkey level (``sub_level``) the softkeys of that level (``Diagnostics ▸ More ▸ Version``).
+
+    ``area_name`` is given in the panel's language; the softkeys' labels are translated here.
+    """
     area_key = keymap.by_id(f"area.{area_id}").key_display
     places = [Place(area_name, area_key, area_id)]
 
@@ -72,7 +82,7 @@ def area_places(area_id: str, area_name: str, menu: SoftkeyMenu, keymap: Keymap,
             for index, softkey in enumerate(bar, start=1):
                 if softkey is None:
                     continue
-                here = path + PATH_SEPARATOR + _one_line(softkey.label).removesuffix("▸").rstrip()
+                here = path + PATH_SEPARATOR + one_line(_(softkey.label)).removesuffix("▸").rstrip()
                 reached = f"{keys}, {keymap.by_id(f'softkey.{prefix}{index}').key_display}"
                 key_ids = f"{ids}{SOFTKEY_PATH_SEPARATOR}{softkey.id}" if ids else softkey.id
                 places.append(Place(here, reached, area_id, key_ids))

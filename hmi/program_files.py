@@ -21,10 +21,12 @@ from typing import Any
 from nck import queries
 from nck import NcFileSystem, StorageError
 
+from hmi.i18n import N_
+
 DIRECTORIES: tuple[tuple[str, str], ...] = (
-    ("MPF", "Part programs"),
-    ("SPF", "Subprograms"),
-    ("WKS", "Workpieces"),
+    ("MPF", N_("Part programs")),
+    ("SPF", N_("Subprograms")),
+    ("WKS", N_("Workpieces")),
 )
 """The NC directories in the order of the manager's tree: path and title."""
 

@@ -21,6 +21,8 @@ from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.widgets import Static
 
+from hmi.i18n import _
+
 Predicate = Callable[[Any], bool]
 """A predicate over the area screen (which offers ``.status``, ``.access_level`` …)."""
 
@@ -31,7 +33,8 @@ class Softkey:
 
     Attributes:
         id: stable id (``machine.gfunc``), used by tests and training material.
-        label: text on the key; ``\\n`` splits it over two lines.
+        label: text on the key in English; ``\\n`` splits it over two lines. The bars show it
+            in the panel's language (the catalogue ``data/lang/<code>/hmi.po``).
         action: Textual action run on the area screen (``show_view('gfunc')``);
             prefix ``app.`` for an app action.
         level: the least privileged access level that may use it (7 = everybody).
@@ -167,7 +170,7 @@ class _SoftkeyBar:
             if key is None:
                 cell.show(SoftkeyView("", cell.hint, False, False, True))
             else:
-                cell.show(SoftkeyView(key.label, cell.hint, key.allowed(context, access_level),
+                cell.show(SoftkeyView(_(key.label), cell.hint, key.allowed(context, access_level),
                                       key.pressed(context), False))
 
 

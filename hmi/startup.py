@@ -49,6 +49,15 @@ class NcDataSession:
         data.mda_program = channel.mda_text
         data.override_switches = {switch: float(percent) for switch, percent in channel.overrides.items()}
 
+    @property
+    def language(self) -> str:
+        """The language of the operator texts kept in the data directory (``en``, ``de``)."""
+        return str(self.session.language)
+
+    @language.setter
+    def language(self, code: str) -> None:
+        self.session.language = code
+
     def save(self) -> list[str]:
         """Write the retained sections that changed (alarm log included); return their names."""
         if self._copy is not None and getattr(self._copy, "discarded", False):

@@ -32,6 +32,7 @@ from nck.machine import MachineConfig, MachineFileError, load_machine
 from nck.ncdata import NcData
 from nck.regular_files import export_text_stream
 from nck.termination import INTERRUPTED_EXIT, exit_on_termination
+from nck.translations import LANGUAGES, SOURCE_LANGUAGE
 
 
 wait_s = time.sleep
@@ -86,6 +87,8 @@ def _common_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--data-dir", help="NC data directory (retained data, NC file system)")
     parser.add_argument("--ephemeral", action="store_true",
                         help="work on a temporary copy of the data directory")
+    parser.add_argument("--lang", default=SOURCE_LANGUAGE, choices=sorted(LANGUAGES),
+                        help="language of the alarm texts on stderr (default en; --json stays English)")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -237,7 +240,7 @@ class _Environment:
                 self._release()
                 raise CliError(str(exc)) from None
             for alarm in self.session.startup_alarms:
-                print(format_alarm(alarm), file=sys.stderr)
+                print(format_alarm(alarm, options.lang), file=sys.stderr)
             self.machine = self.session.active_machine()
             self.data = self.session.ncdata
         try:
@@ -343,7 +346,7 @@ def _check(options: argparse.Namespace) -> int:
         finally:
             env.finish(save=False)
         for alarm in found.alarms:
-            print(format_alarm(alarm), file=sys.stderr)
+            print(format_alarm(alarm, options.lang), file=sys.stderr)
         problems += len(found.alarms)
         if not found.alarms and not found.ended:
             unended += 1
@@ -391,7 +394,7 @@ def _run(options: argparse.Namespace) -> int:
     except OSError as exc:  # an output file could not be completed (disk full ...): the old one stays
         raise CliError(f"cannot write '{exc.filename or 'an output file'}': {exc.strerror}") from None
     for alarm in result.alarms:
-        print(format_alarm(alarm), file=sys.stderr)
+        print(format_alarm(alarm, options.lang), file=sys.stderr)
     if result.status == "timeout":
         print(f"nck: the program did not end within {options.timeout:g} s of simulated time "
               "(an endless loop? --timeout S allows longer runs, 0 = no limit)", file=sys.stderr)

@@ -25,6 +25,7 @@ from nck.iso.dialect import dialect_for
 from nck.machine import MachineConfig
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
+from nck.translations import SOURCE_LANGUAGE, alarm_text_in
 
 DEFAULT_RAPID_MM_MIN = 10000.0
 
@@ -466,15 +467,15 @@ def segment_time_s(machine: MachineConfig, motion: canon.Motion) -> float:
     return slowest
 
 
-def format_alarm(alarm: NcAlarmError) -> str:
-    """``ALARM 12080 PART1.MPF:17 N170 <text>`` (the CLI's stderr line)."""
+def format_alarm(alarm: NcAlarmError, language: str = SOURCE_LANGUAGE) -> str:
+    """``ALARM 12080 PART1.MPF:17 N170 <text>`` (the CLI's stderr line; the text in ``language``)."""
     where = f"{alarm.file or '-'}:{alarm.line if alarm.line is not None else '-'}"
     block = f"N{alarm.n}" if alarm.n is not None else "-"
-    return f"ALARM {alarm.number} {where} {block} {alarm_message(alarm)}"
+    return f"ALARM {alarm.number} {where} {block} {alarm_message(alarm, language)}"
 
 
-def alarm_message(alarm: NcAlarmError) -> str:
-    """The alarm text with channel and block filled in."""
+def alarm_message(alarm: NcAlarmError, language: str = SOURCE_LANGUAGE) -> str:
+    """The alarm text with channel and block filled in, in ``language`` (``nck --lang``)."""
     from nck.resources import alarm_catalog
 
     block = f"N{alarm.n}" if alarm.n is not None else (str(alarm.line) if alarm.line else "-")
@@ -482,4 +483,5 @@ def alarm_message(alarm: NcAlarmError) -> str:
         kind = "cycle/user alarm" if 60000 <= alarm.number <= 69999 else "alarm"
         return " ".join([f"Channel 1 block {block}: {kind} {alarm.number}", *alarm.params])
     definition = alarm_catalog()[alarm.number]
-    return definition.format(definition.with_channel(alarm.params, "1", block))
+    params = definition.with_channel(alarm.params, "1", block)
+    return alarm_text_in(language, alarm.number, params, definition.format(params))

@@ -17,6 +17,7 @@ that a damaged file costs only that section:
 ``alarm_log``      the alarm log (bounded)
 ``machine_setup``  what is clamped: blank, reference block, the instructor's hidden switch
 ``manual_settings`` retraction plane, safety distance, measuring feed of manual mode (JOG Settings)
+``display``        the language of the operator texts (Setup > Language, ``hmi --lang``)
 =================  ==========================================================
 
 File format (version 1)::
@@ -72,6 +73,7 @@ from nck.storage import NcFileSystem, StorageError, check_program_size
 from nck.sample_programs import sample_filter
 from nck.manual_settings import settings_from_plain, settings_to_plain
 from nck.workpiece import default_machine_setup, default_part_zero_mcs, setup_from_plain, setup_to_plain
+from nck.translations import SOURCE_LANGUAGE, check_language
 from nck.writes import DataWriter, WriteRefused
 
 FORMAT = "sinumerik-trainer/retained"
@@ -120,6 +122,8 @@ class RetainedData:
     # no hashes until loaded (the factory passwords are hashed only for a fresh state)
     access: AccessState = field(default_factory=lambda: AccessState(password_hashes={}))
     alarm_log: list[dict[str, Any]] = field(default_factory=list)
+    language: str = SOURCE_LANGUAGE
+    """The language of the operator texts (a code of :data:`nck.translations.LANGUAGES`)."""
 
 
 # ---------------------------------------------------------------- validators
@@ -377,6 +381,14 @@ def _load_machine_setup(data: Mapping[str, Any], rd: RetainedData) -> None:
     rd.ncdata.machine_setup = setup_from_plain(data)
 
 
+def _dump_display(rd: RetainedData) -> dict[str, Any]:
+    return {"language": rd.language}
+
+
+def _load_display(data: Mapping[str, Any], rd: RetainedData) -> None:
+    rd.language = check_language(_text(data["language"]))
+
+
 SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, RetainedData], None]]] = {
     "tools": (_dump_tools, _load_tools),
     "work_offsets": (_dump_offsets, _load_offsets),
@@ -391,6 +403,7 @@ SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, Ret
     "alarm_log": (_dump_alarm_log, _load_alarm_log),
     "machine_setup": (_dump_machine_setup, _load_machine_setup),
     "manual_settings": (_dump_manual_settings, _load_manual_settings),
+    "display": (_dump_display, _load_display),
 }
 
 
@@ -430,7 +443,7 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     if version != FORMAT_VERSION:
         raise BadFile(f"format version {version!r} is not supported (this program reads {FORMAT_VERSION})")
     # loaders assign new objects (never mutate), so a shallow copy keeps rd untouched on error
-    scratch = RetainedData(copy.copy(rd.ncdata), rd.md_by_machine, rd.access, rd.alarm_log)
+    scratch = RetainedData(copy.copy(rd.ncdata), rd.md_by_machine, rd.access, rd.alarm_log, rd.language)
     try:
         SECTIONS[name][1](_mapping(document["data"]), scratch)
     except (KeyError, TypeError, ValueError, AttributeError, DataError) as exc:
@@ -440,6 +453,7 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     rd.md_by_machine = scratch.md_by_machine
     rd.access = scratch.access
     rd.alarm_log = scratch.alarm_log
+    rd.language = scratch.language
 
 
 def _read_section_file(path: Path) -> bytes:
@@ -533,6 +547,15 @@ class Session:
     def ncdata(self) -> NcData:
         """The NC data (give this object to the kernel; :meth:`save` persists it)."""
         return self.retained.ncdata
+
+    @property
+    def language(self) -> str:
+        """The language of the operator texts kept in the data directory (``en``, ``de``)."""
+        return self.retained.language
+
+    @language.setter
+    def language(self, code: str) -> None:
+        self.retained.language = check_language(code)
 
     @property
     def alarm_log(self) -> list[dict[str, Any]]:
@@ -678,7 +701,7 @@ class Session:
     def _checked_sections(self, sections: Mapping[str, Any], include_access: bool,
                           level: int) -> dict[str, str]:
         """The file text of every archive section to import, checked as writes at ``level``."""
-        scratch = RetainedData(access=self.retained.access)
+        scratch = RetainedData(access=self.retained.access, language=self.retained.language)
         for name, data in sections.items():
             if name not in SECTIONS:
                 raise ArchiveError(f"unknown section {name!r}")
@@ -693,7 +716,7 @@ class Session:
             self.ncdata, current_md, scratch.ncdata, imported_md, names, self.machine,
             lambda data, store: DataWriter(data, store, self.access, level=level))
         result = RetainedData(written, {**scratch.md_by_machine, machine: md_changes}, scratch.access,
-                              scratch.alarm_log)
+                              scratch.alarm_log, scratch.language)
         others = set(scratch.md_by_machine) | set(self.retained.md_by_machine) if "machine_data" in names else set()
         for other in others - {machine}:  # the data of other machines: the same levels by datum
             values = scratch.md_by_machine.get(other, {})

@@ -30,6 +30,7 @@ from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog
 from hmi.focus import focus_now
+from hmi.i18n import N_, _
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -45,10 +46,10 @@ from screens.diagnostics_trace import TraceSession
 VIEWS = ("alarms", "messages", "log", "overview", "axis", "drive", "utilisation", "trace",
          "version", "logbook", "exercises")
 TITLES = {
-    "alarms": "Alarm list", "messages": "Messages", "log": "Alarm log",
-    "overview": "Service overview", "axis": "Service axis/spindle", "drive": "Service drive",
-    "utilisation": "System utilisation", "trace": "Trace", "version": "Version",
-    "logbook": "Logbook", "exercises": "Exercises",
+    "alarms": N_("Alarm list"), "messages": N_("Messages"), "log": N_("Alarm log"),
+    "overview": N_("Service overview"), "axis": N_("Service axis/spindle"), "drive": N_("Service drive"),
+    "utilisation": N_("System utilisation"), "trace": N_("Trace"), "version": N_("Version"),
+    "logbook": N_("Logbook"), "exercises": N_("Exercises"),
 }
 LOG_PAGE = 30
 UTILISATION_REFRESH_S = 1.0
@@ -432,7 +433,7 @@ class DiagnosticsScreen(AreaBase):
         if not self.is_mounted:
             return
         status = self.status
-        show_text(self.query_one("#diag-title", Static), Text(f" {TITLES[self.view]}", style="bold"))
+        show_text(self.query_one("#diag-title", Static), Text(f" {_(TITLES[self.view])}", style="bold"))
         if status is None:
             return
         handler = getattr(self, f"_render_{self.view}")

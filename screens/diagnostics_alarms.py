@@ -21,6 +21,7 @@ from rich.text import Text
 from nck.status import AlarmEntry, AlarmEvent
 
 from hmi.alarm_times import AlarmTimes, date_time_text
+from hmi.i18n import N_, _, alarm_text
 
 CLEAR_SYMBOLS: dict[str, str] = {
     "power_on": "◉",  # switch the control off and on
@@ -31,7 +32,7 @@ CLEAR_SYMBOLS: dict[str, str] = {
 }
 CLEAR_NAMES: dict[str, str] = {
     "power_on": "POWER ON", "reset": "RESET", "cancel": "CANCEL", "nc_start": "NC START",
-    "self": "self-clearing",
+    "self": N_("self-clearing"),
 }
 CATEGORY_STYLES = {"user": "bold yellow", "message": "cyan", "axis": "bold red"}
 STAMP_WIDTH = len("2026-11-26 07:15:00")
@@ -56,8 +57,8 @@ def source_text(entry: AlarmEntry) -> str:
             where += f" L{entry.line}"
         return where
     if entry.category == "axis" and len(entry.params) >= 2:
-        return f"channel {entry.params[0]} axis {entry.params[1]}"
-    return "NCK" if entry.category in ("nck", "") else f"channel 1"
+        return _("channel {channel} axis {axis}").format(channel=entry.params[0], axis=entry.params[1])
+    return "NCK" if entry.category in ("nck", "") else _("channel {channel}").format(channel=1)
 
 
 def alarm_list_rows(alarms: Iterable[AlarmEntry]) -> list[AlarmEntry]:
@@ -71,27 +72,28 @@ def alarm_list_text(alarms: Sequence[AlarmEntry], times: AlarmTimes, selected: i
     Row ``selected`` (an index into :func:`alarm_list_rows`) is marked ``▶`` and shown reversed.
     """
     text = Text(no_wrap=True, end="")
-    text.append(f"  {'Date and time':<{STAMP_WIDTH}} {'Del':<4} {'Number':>6}  {'Text':<90} Source\n",
-                style="bold")
+    text.append(f"  {_('Date and time'):<{STAMP_WIDTH}} {_('Del'):<4} {_('Number'):>6}  {_('Text'):<90} "
+                f"{_('Source')}\n", style="bold")
     rows = alarm_list_rows(alarms)
     if not rows:
-        text.append(" No active alarms.", style="dim")
+        text.append(" " + _("No active alarms."), style="dim")
         return text
     for index, entry in enumerate(rows):
         symbol = CLEAR_SYMBOLS.get(entry.clear, "?")
         start = len(text)
         text.append(f"{_marker(index == selected)}{date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} {symbol:<4} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
-        body = entry.text if len(entry.text) <= 90 else entry.text[:89] + "…"
+        shown = alarm_text(entry)
+        body = shown if len(shown) <= 90 else shown[:89] + "…"
         text.append(f"  {body:<90} {source_text(entry)}")
         if index == selected:
             text.stylize("reverse", start, len(text))
         text.append("\n")
-    text.append("\n Clear: ")
+    text.append("\n " + _("Clear:") + " ")
     for key in ("cancel", "reset", "nc_start", "power_on", "self"):
-        text.append(f"{CLEAR_SYMBOLS[key]} {CLEAR_NAMES[key]}   ", style="dim")
-    text.append("\n F12 acknowledges CANCEL alarms; RESET clears RESET, CANCEL and NC START alarms."
-                "  ▲▼ select an alarm, Alarm help explains it.", style="dim")
+        text.append(f"{CLEAR_SYMBOLS[key]} {_(CLEAR_NAMES[key])}   ", style="dim")
+    text.append("\n " + _("F12 acknowledges CANCEL alarms; RESET clears RESET, CANCEL and NC START alarms.")
+                + "  " + _("▲▼ select an alarm, Alarm help explains it."), style="dim")
     return text
 
 
@@ -118,26 +120,26 @@ def message_lines(current: str, events: Iterable[AlarmEvent], user_alarms: Itera
         for event in events:
             if event.kind == "message" and event.entry.text == current:
                 came = times.event_at(event)
-        lines.append(MessageLine(came, current, "NC program (MSG)"))
+        lines.append(MessageLine(came, current, _("NC program (MSG)")))
     for entry in sorted(user_alarms, key=lambda e: e.seq, reverse=True):
         if entry.category == "user":
-            lines.append(MessageLine(times.came_at(entry), f"{entry.number} {entry.text}", source_text(entry)))
+            lines.append(MessageLine(times.came_at(entry), f"{entry.number} {alarm_text(entry)}", source_text(entry)))
     return lines
 
 
 def messages_text(lines: Sequence[MessageLine], history: Sequence[AlarmEvent], times: AlarmTimes) -> Text:
     """Active messages, then the recent message history (newest first)."""
     text = Text(no_wrap=True, end="")
-    text.append(f" {'Date and time':<{STAMP_WIDTH}} {'Message':<100} Source\n", style="bold")
+    text.append(f" {_('Date and time'):<{STAMP_WIDTH}} {_('Message'):<100} {_('Source')}\n", style="bold")
     if not lines:
-        text.append(" No active messages.\n", style="dim")
+        text.append(" " + _("No active messages.") + "\n", style="dim")
     for line in lines:
         text.append(f" {date_time_text(line.came_at):<{STAMP_WIDTH}} {line.text[:100]:<100} {line.source}\n")
     shown = [e for e in reversed(history) if e.kind == "message"][:12]
     if shown:
-        text.append("\n Recent NC messages\n", style="bold")
+        text.append("\n " + _("Recent NC messages") + "\n", style="bold")
         for event in shown:
-            body = event.entry.text or "(message cleared)"
+            body = event.entry.text or _("(message cleared)")
             text.append(f" {date_time_text(times.event_at(event)):<{STAMP_WIDTH}} {body[:100]}\n",
                         style=None if event.entry.text else "dim")
     return text
@@ -158,7 +160,7 @@ class LogFilter:
             return False
         if self.high is not None and entry.number > self.high:
             return False
-        return not self.text or self.text.lower() in entry.text.lower()
+        return not self.text or self.text.lower() in alarm_text(entry).lower()
 
     def describe(self) -> str:
         """The filter as the operator typed it (empty when none)."""
@@ -216,17 +218,18 @@ def log_text(rows: Sequence[AlarmEntry], log_filter: LogFilter, total: int, time
     """
     text = Text(no_wrap=True, end="")
     described = log_filter.describe()
-    text.append(f" {len(rows)} of {total} entries" + (f" — filter: {described}" if described else ""),
-                style="dim")
-    text.append("   (PO- = before the last power on)\n", style="dim")
-    text.append(f"  {'':<3} {'Come':<{STAMP_WIDTH}} {'Go':<{STAMP_WIDTH}} {'Number':>6}  Text\n", style="bold")
+    text.append(" " + _("{shown} of {total} entries").format(shown=len(rows), total=total)
+                + (" — " + _("filter: {filter}").format(filter=described) if described else ""), style="dim")
+    text.append("   " + _("(PO- = before the last power on)") + "\n", style="dim")
+    text.append(f"  {'':<3} {_('Come'):<{STAMP_WIDTH}} {_('Go'):<{STAMP_WIDTH}} {_('Number'):>6}  {_('Text')}\n",
+                style="bold")
     for index in range(first, min(first + count, len(rows))):
         entry = rows[index]
         start = len(text)
         text.append(f"{_marker(index == selected)}{_earlier(entry):<3} "
                     f"{date_time_text(times.came_at(entry)):<{STAMP_WIDTH}} {_went_text(entry, times):<{STAMP_WIDTH}} ")
         text.append(f"{entry.number:>6}", style=CATEGORY_STYLES.get(entry.category, "bold"))
-        text.append(f"  {entry.text[:90]}")
+        text.append(f"  {alarm_text(entry)[:90]}")
         if index == selected:
             text.stylize("reverse", start, len(text))
         text.append("\n")
@@ -240,14 +243,14 @@ def log_as_csv(rows: Sequence[AlarmEntry], times: AlarmTimes) -> str:
     writer.writerow(["earlier_power_on", "come", "go", "number", "clear", "text", "source"])
     for entry in rows:
         writer.writerow([int(entry.seq < 0), date_time_text(times.came_at(entry)), _went_text(entry, times, ""),
-                         entry.number, entry.clear, entry.text, source_text(entry)])
+                         entry.number, entry.clear, alarm_text(entry), source_text(entry)])
     return out.getvalue()
 
 
 def log_as_text(rows: Sequence[AlarmEntry], times: AlarmTimes) -> str:
     """The alarm log as plain text, one entry a line."""
-    lines = ["Alarm log (newest first)", ""]
+    lines = [_("Alarm log (newest first)"), ""]
     for entry in rows:
         lines.append(f"{_earlier(entry):<3} {date_time_text(times.came_at(entry))}  "
-                     f"{_went_text(entry, times, 'pending'):<{STAMP_WIDTH}}  {entry.number:>6}  {entry.text}")
+                     f"{_went_text(entry, times, 'pending'):<{STAMP_WIDTH}}  {entry.number:>6}  {alarm_text(entry)}")
     return "\n".join(lines) + "\n"

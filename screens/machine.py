@@ -24,6 +24,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
 from hmi.focus import focus_now
+from hmi.i18n import N_, _
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.blocks import BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
@@ -97,25 +98,25 @@ class MachineScreen(AreaBase):
                 yield Static("", id="auto-title", classes="view-title", markup=False)
                 yield BlockWindow(height_lines=20, id="auto-blocks")
             with Vertical(id="view-gfunc", classes="view"):
-                yield Static(" G functions — all groups", classes="view-title", markup=False)
+                yield Static(" " + _("G functions — all groups"), classes="view-title", markup=False)
                 yield GFunctionsTable(id="gfunc-table")
             with Vertical(id="view-aux", classes="view"):
-                yield Static(" Auxiliary functions", classes="view-title", markup=False)
+                yield Static(" " + _("Auxiliary functions"), classes="view-title", markup=False)
                 yield Static("", id="aux-table", markup=False)
             with Vertical(id="view-progctl", classes="view"):
-                yield Static(" Program control", classes="view-title", markup=False)
+                yield Static(" " + _("Program control"), classes="view-title", markup=False)
                 yield Static("", id="progctl-table", markup=False)
             with Vertical(id="view-search", classes="view"):
                 yield Static("", id="search-title", classes="view-title", markup=False)
-                yield Static(" Search target: a block number (N70) or text in the block; "
-                             "Enter or ⇧F1 starts the search, ⇧F2-⇧F5 choose the search mode.",
+                yield Static(" " + _("Search target: a block number (N70) or text in the block; "
+                                     "Enter or ⇧F1 starts the search, ⇧F2-⇧F5 choose the search mode."),
                              markup=False)
                 yield Input(placeholder="N…", id="search-input")
                 yield Static("", id="search-info", markup=False)
             with Vertical(id="view-simrec", classes="view"):
                 yield StockView(id="simrec-stock")
             with Vertical(id="view-times", classes="view"):
-                yield Static(" Times / Counter", classes="view-title", markup=False)
+                yield Static(" " + _("Times / Counter"), classes="view-title", markup=False)
                 yield Static("", id="times-table", markup=False)
             yield from self.jog.compose()
 
@@ -394,7 +395,7 @@ class MachineScreen(AreaBase):
             show_text(self.query_one("#jog-info", Static), self._jog_text(status))
         elif view_id == "view-mda":
             show_text(self.query_one("#mda-title", Static), 
-                f" MDA — type blocks, CYCLE START (Alt+G) runs them   {channel.program_state}")
+                " " + _("MDA — type blocks, CYCLE START (Alt+G) runs them") + f"   {channel.program_state}")
         elif view_id == "view-auto":
             show_text(self.query_one("#auto-title", Static), self._auto_title(status))
             program = (self.hmi.program_text(channel.selected_program)
@@ -414,9 +415,10 @@ class MachineScreen(AreaBase):
             self.jog.show(self.view, status)
         elif view_id == "view-search":
             show_text(self.query_one("#search-title", Static),
-                      f" Block search {SEARCH_MODES[self.search_type]}")
-            show_text(self.query_one("#search-info", Static), 
-                f" Program: {channel.selected_program or '—'}   {channel.stop_reason}")
+                      " " + _("Block search") + f" {SEARCH_MODES[self.search_type]}")
+            show_text(self.query_one("#search-info", Static),
+                      " " + _("Program: {program}").format(program=channel.selected_program or "—")
+                      + f"   {channel.stop_reason}")
         self.refresh_softkeys()
 
     def _focus_for(self, view_id: str) -> None:
@@ -470,51 +472,53 @@ class MachineScreen(AreaBase):
         text = Text()
         text.append(" JOG", style="bold")
         if function == "REF":
-            text.append("  REF POINT — reference point approach\n", style="bold")
-            text.append(" Select an axis (Alt+X/Y/Z/C) and press + (Ctrl+Right).\n")
+            text.append("  " + _("REF POINT — reference point approach") + "\n", style="bold")
+            text.append(" " + _("Select an axis (Alt+X/Y/Z/C) and press + (Ctrl+Right).") + "\n")
             missing = [a.name for a in status.axes if a.kind != "spindle" and not a.referenced]
-            text.append(" Not referenced: " + (" ".join(missing) if missing else "none — all axes referenced") + "\n")
+            text.append(" " + _("Not referenced:") + " "
+                        + (" ".join(missing) if missing else _("none — all axes referenced")) + "\n")
         elif function == "REPOS":
-            text.append("  REPOS — repositioning to the interruption point\n", style="bold")
+            text.append("  " + _("REPOS — repositioning to the interruption point") + "\n", style="bold")
             for axis, way in channel.repos_offsets.items():
                 text.append(f"   {axis:<4}{fixed(way, 3, 12)}\n")
         elif function == "INC" and channel.increment is None:
             size_mm = self.jog.variable_increment_mm()
-            text.append(f"  INC VAR — variable increment {size_mm:g} mm (SD41010)\n", style="bold")
+            text.append("  " + _("INC VAR — variable increment {size} mm (SD41010)").format(size=f"{size_mm:g}")
+                        + "\n", style="bold")
             if size_mm == 0:
-                text.append(" SD41010 is 0: the axis keys do not move. Set the variable increment "
-                            "in Settings (⇧F6).\n", style="bold #f39200")
+                text.append(" " + _("SD41010 is 0: the axis keys do not move. Set the variable increment "
+                                    "in Settings (⇧F6).") + "\n", style="bold #f39200")
         elif function == "INC":
             text.append(f"  {increment_text(channel.increment)} (x 0.001 mm)\n", style="bold")
         else:
-            text.append("  continuous\n", style="bold")
-        text.append(f"\n Selected axis: {app.selected_axis or '—'}      "
-                    f"Rapid overlay: {'ON' if app.rapid_overlay else 'off'}\n")
+            text.append("  " + _("continuous") + "\n", style="bold")
+        text.append("\n " + _("Selected axis: {axis}").format(axis=app.selected_axis or "—") + "      "
+                    + _("Rapid overlay: {state}").format(state=_("ON") if app.rapid_overlay else _("off")) + "\n")
         contact = contact_line(self.ask)
         if contact:
             text.append(f" {contact}\n", style="bold")
         # Two lines: one would wrap at the 120-column minimum (the window is 104 wide there).
-        text.append(" Keys: Alt+X/Y/Z/C/V axis   Ctrl+Right / Ctrl+Left traverse   Alt+W rapid\n"
-                    "       Alt+I increment   Alt+R REF   Alt+E REPOS\n", style="dim")
+        text.append(" " + _("Keys: Alt+X/Y/Z/C/V axis   Ctrl+Right / Ctrl+Left traverse   Alt+W rapid") + "\n"
+                    "       " + _("Alt+I increment   Alt+R REF   Alt+E REPOS") + "\n", style="dim")
         return text
 
     def _auto_title(self, status: NckStatus) -> Text:
         channel = status.channel
         sbl = channel.program_control.get("single_block")
         text = Text()
-        text.append(f" {channel.selected_program or 'no program selected'}", style="bold")
+        text.append(f" {channel.selected_program or _('no program selected')}", style="bold")
         if sbl:
             text.append(f"   SBL ({sbl})", style="bold #f39200")
         if channel.stop_reason:
-            text.append(f"   stopped: {channel.stop_reason}")
-        text.append(f"   runtime {format_duration(channel.program_runtime_s)}"
-                    f"   parts {channel.part_count}")
+            text.append("   " + _("stopped: {reason}").format(reason=channel.stop_reason))
+        text.append("   " + _("runtime {time}").format(time=format_duration(channel.program_runtime_s))
+                    + "   " + _("parts {count}").format(count=channel.part_count))
         return text
 
     def _aux_text(self, status: NckStatus) -> Text:
         modal = status.channel.modal
         text = Text()
-        text.append(f" {'Function':<10}{'Active':<12}\n", style="bold")
+        text.append(f" {_('Function'):<10}{_('Active'):<12}\n", style="bold")
         text.append(f" {'T':<10}{modal.tool_name or modal.tool}\n")
         text.append(f" {'D':<10}{modal.edge}\n")
         text.append(f" {'S':<10}{trimmed(modal.spindle_speed_rpm)}  {modal.spindle_state}\n")
@@ -528,24 +532,25 @@ class MachineScreen(AreaBase):
         levels = sorted(self._skip_levels())
         text = Text()
         sbl = pc.get("single_block")
-        text.append(f" {_check(sbl)} Single block          type {self.hmi.single_block_type}"
-                    "   (Alt+K on/off, ⇧F1 type)\n")
-        text.append(f" {_check(pc.get('dry_run'))} Dry run feed (DRY)\n")
-        text.append(f" {_check(pc.get('m01'))} Programmed stop (M01)\n")
-        text.append(f" {_check(pc.get('program_test'))} Program test (PRT)\n")
-        text.append(f" {_check(pc.get('rapid_override'))} Rapid traverse override (ROV)\n")
-        shown = " ".join(f"/{n}" for n in levels) if levels else "none"
-        text.append(f"     Skip levels active: {shown}\n")
+        text.append(f" {_check(sbl)} {_('Single block'):<22}" + _("type {type}").format(type=self.hmi.single_block_type)
+                    + "   " + _("(Alt+K on/off, ⇧F1 type)") + "\n")
+        text.append(f" {_check(pc.get('dry_run'))} {_('Dry run feed (DRY)')}\n")
+        text.append(f" {_check(pc.get('m01'))} {_('Programmed stop (M01)')}\n")
+        text.append(f" {_check(pc.get('program_test'))} {_('Program test (PRT)')}\n")
+        text.append(f" {_check(pc.get('rapid_override'))} {_('Rapid traverse override (ROV)')}\n")
+        shown = " ".join(f"/{n}" for n in levels) if levels else _("none")
+        text.append("     " + _("Skip levels active: {levels}").format(levels=shown) + "\n")
         return text
 
     def _times_text(self, status: NckStatus) -> Text:
         channel = status.channel
         text = Text()
-        text.append(f" Program runtime          {format_duration(channel.program_runtime_s)}\n")
-        text.append(f" Last program runtime     {format_duration(channel.program_runtime_last_s)}\n")
-        text.append(f" Part count               {channel.part_count}\n")
-        text.append(f" Required parts           {channel.parts_required}\n")
-        text.append(f" Total parts              {channel.parts_total}\n")
+        rows = ((N_("Program runtime"), format_duration(channel.program_runtime_s)),
+                (N_("Last program runtime"), format_duration(channel.program_runtime_last_s)),
+                (N_("Part count"), channel.part_count), (N_("Required parts"), channel.parts_required),
+                (N_("Total parts"), channel.parts_total))
+        for label, value in rows:
+            text.append(f" {_(label):<25}{value}\n")
         return text
 
 

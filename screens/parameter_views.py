@@ -15,6 +15,7 @@ from nck import fixed, trimmed
 from nck.queries import DataView
 from nck.status import NckStatus
 
+from hmi.i18n import data_text
 from hmi.widgets.data_table import Cell, Column, DataTable
 
 LevelOf = Callable[[str], int]
@@ -270,7 +271,8 @@ def setting_table(view: DataView, levels: LevelOf) -> DataTable:
             if definition.min is not None and definition.max is not None:
                 limits = f", {definition.min:g} … {definition.max:g}"
             unit = store.unit(name)
-            hint = f"{definition.identifier}: {definition.title} ({unit or definition.type}{limits})"
+            title = data_text("md", definition.number, "title", definition.title)
+            hint = f"{definition.identifier}: {title} ({unit or definition.type}{limits})"
             rows.append([Cell(group), Cell(key), Cell(definition.name), Cell(axis or ""),
                          _datum(name, shown, value, levels, hint), Cell(unit)])
     return DataTable("Setting data  (take effect at once)", columns, rows,

@@ -34,6 +34,7 @@ from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.focus import focus_now
+from hmi.i18n import N_, _
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
 
@@ -171,10 +172,10 @@ class ProgramManagerScreen(AreaBase):
         super().on_mount()
         table = self.table
         table.add_column(" ", key="mark", width=1)
-        table.add_column("Name", key="name", width=28)
-        table.add_column("Type", key="type", width=6)
-        table.add_column("Length", key="size", width=10)
-        table.add_column("Date", key="date", width=16)
+        table.add_column(_("Name"), key="name", width=28)
+        table.add_column(_("Type"), key="type", width=6)
+        table.add_column(_("Length"), key="size", width=10)
+        table.add_column(_("Date"), key="date", width=16)
         self.rebuild_tree()
         self.show_directory("MPF")
         focus_now(table)
@@ -244,9 +245,9 @@ class ProgramManagerScreen(AreaBase):
         root.expand()
         for directory, title in DIRECTORIES:
             if directory != "WKS":
-                root.add_leaf(title, data=directory)
+                root.add_leaf(_(title), data=directory)
                 continue
-            node = root.add(title, data=directory, expand=True)
+            node = root.add(_(title), data=directory, expand=True)
             for folder in self._workpieces():
                 node.add_leaf(folder.name, data=folder.path)
 
@@ -307,17 +308,19 @@ class ProgramManagerScreen(AreaBase):
                 if entry.path == previous:
                     table.move_cursor(row=index)
                     break
-        title = dict(DIRECTORIES).get(self.directory, "Workpiece")
-        self.query_one("#pm-path", Static).update(f" {title}   {self.directory}   ({len(self.entries)} entries)")
+        title = _(dict(DIRECTORIES).get(self.directory, N_("Workpiece")))
+        count = _("({count} entries)").format(count=len(self.entries))
+        self.query_one("#pm-path", Static).update(f" {title}   {self.directory}   {count}")
         self._update_info()
         self.refresh_softkeys()
 
     def _update_info(self) -> None:
         selected = self.status.channel.selected_program if self.status else None
-        text = f" Selected for execution: {selected}" if selected else " No program selected"
+        text = (" " + _("Selected for execution: {program}").format(program=selected) if selected
+                else " " + _("No program selected"))
         executing = _executing_program(self.status)
         if executing:
-            text += "  (being executed)"
+            text += "  " + _("(being executed)")
         self.query_one("#pm-info", Static).update(text)
 
     def current_entry(self) -> ProgramEntry | None:

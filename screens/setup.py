@@ -31,6 +31,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
+from hmi.i18n import LANGUAGES, _, data_text, language
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
@@ -56,6 +57,19 @@ def level_text(level: int) -> str:
     return f"{level} — keyswitch position {7 - level}"
 
 
+def language_text(active: str) -> Text:
+    """The language selection window: every language, the one shown now marked."""
+    text = Text(no_wrap=True, end="")
+    text.append(" " + _("Language selection") + "\n\n", style="bold underline")
+    for code, name in LANGUAGES.items():
+        mark = "●" if code == active else "○"
+        text.append(f"   {mark} {name}\n", style="bold" if code == active else "")
+    text.append("\n   " + _("Choose with the vertical softkeys: every screen changes to the language "
+                             "at once,") + "\n   " + _("and the choice is kept for the next start.") + "\n",
+                style="dim")
+    return text
+
+
 def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) -> DataTable:
     """One machine-data list as an editable table."""
     columns = [Column("Number", 7, "<"), Column("Name", 30, "<"), Column("Value", 30),
@@ -63,14 +77,15 @@ def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) 
     rows = []
     for row in store.rows("md", scope, axis=axis, search=search or None, level=level):
         d = row.ref.definition
+        title = data_text("md", d.number, "title", d.title)
         if d.array:
-            hint = (f"{d.identifier}: {d.title}. Array of {d.array}: give index and value, e.g. 0 5 "
+            hint = (f"{d.identifier}: {title}. Array of {d.array}: give index and value, e.g. 0 5 "
                     f"(takes effect {ACTIVATION_TEXT[d.activation]})")
             edit = "0 "
         else:
             edit = row.value_text if d.type != "bool" else ("1" if store.value(row.ref) else "0")
             limits = f", {d.min:g} … {d.max:g}" if d.min is not None and d.max is not None else ""
-            hint = (f"{d.identifier}: {d.title} ({row.unit or d.type}{limits}); takes effect "
+            hint = (f"{d.identifier}: {title} ({row.unit or d.type}{limits}); takes effect "
                     f"{ACTIVATION_TEXT[d.activation]}")
         rows.append([Cell(str(d.number)), Cell(d.name),
                      Cell(row.value_text, row.ref.text, edit, row.write_level, hint),
@@ -148,7 +163,13 @@ class SetupScreen(AreaBase):
                 Softkey("setup.pw.set", "Set\npassword", "set_password"),
                 Softkey("setup.pw.change", "Change\npassword", "change_password", level=3),
                 Softkey("setup.pw.delete", "Delete\npassword", "delete_password"),
+                None,
+                Softkey("setup.language", "Change\nlanguage", "show_view('language')"),
             ]
+        if self.view == "language":
+            return [Softkey(f"setup.language.{code}", name, f"select_language('{code}')",
+                            active=lambda s, code=code: language() == code)
+                    for code, name in LANGUAGES.items()]
         if self.view == "workpiece":
             level = self.ask(queries.ActionLevel("WRITE_MACHINE_SETUP"))
             return [Softkey("setup.workpiece.hide", "Hide\nblank", "toggle_hidden", level=level,
@@ -178,6 +199,10 @@ class SetupScreen(AreaBase):
             self.query_one("#setup-access").display = not table_view
         self.refresh_view()
         self.refresh_softkeys()
+
+    def action_select_language(self, code: str) -> None:
+        """A language softkey: the panel's texts in that language from now on (kept at restart)."""
+        self.say(self.hmi.select_language(code))
 
     def action_next_axis(self, step: int) -> None:
         """Axis + / Axis −."""
@@ -390,6 +415,8 @@ class SetupScreen(AreaBase):
             self.table = md_table(store, self.view, axis, self.search, self.access_level)
             self.query_one("#setup-table", TableWindow).show(self.table, self.cursors[self.view],
                                                              self.access_level)
+        elif self.view == "language":
+            show_text(self.query_one("#setup-access", Static), language_text(language()))
         else:
             show_text(self.query_one("#setup-access", Static), self.access_text())
 

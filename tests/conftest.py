@@ -31,6 +31,16 @@ def _run_in_a_temporary_directory(tmp_path: Path, monkeypatch: pytest.MonkeyPatc
     monkeypatch.chdir(tmp_path)
 
 
+@pytest.fixture(autouse=True)
+def _english_panel_texts():
+    """Every test starts with the panel's texts in English and leaves them so (hmi.i18n)."""
+    from hmi.i18n import set_language
+
+    set_language("en")
+    yield
+    set_language("en")
+
+
 # ------------------------------------------------------------------ hang watchdog
 HANG_WATCHDOG_S = float(os.environ.get("NCK_TEST_HANG_S", "420"))
 """A test still running after this many seconds has hung past pytest-timeout's reach.

@@ -202,8 +202,9 @@ class LayerRules:
 
 
 def is_private(name: str) -> bool:
-    """A ``_single_underscore`` name (dunder names are public)."""
-    return name.startswith("_") and not name.endswith("__")
+    """A ``_single_underscore`` name (dunder names are public, and so is ``_``: gettext's
+    translate function, :mod:`hmi.i18n`)."""
+    return name.startswith("_") and not name.endswith("__") and name != "_"
 
 
 def private_imports(imports: Iterable[Import]) -> set[tuple[str, str, str]]:

@@ -9,28 +9,34 @@ from rich.table import Table
 from rich.text import Text
 from textual.widgets import Static
 
-from nck import ISO_MAIN_GROUPS_M, iso_table
+from nck import ISO_MAIN_GROUPS_M, iso_table, localized
 from nck.queries import load_toml
 
+from hmi.i18n import _, language
 from hmi.word_help import code_meaning
 
 MAIN_GROUPS = (1, 6, 7, 8, 10, 13, 14, 15)
 """Groups of the G-functions window: motion, plane, TRC, WO, exact stop, unit, dimension, feed."""
 
 
-@functools.cache
 def group_meanings() -> dict[int, str]:
-    """Group number → meaning, from ``data/gcode/siemens.toml``."""
+    """Group number → meaning, from ``data/gcode/siemens.toml``, in the panel's language."""
+    return _group_meanings_in(language())
+
+
+@functools.cache
+def _group_meanings_in(code: str) -> dict[int, str]:
     try:
         table = load_toml("gcode", "siemens.toml")
     except (OSError, ValueError):
         return {}
-    return {int(g["number"]): str(g.get("meaning", "")) for g in table.get("group", [])}
+    return {int(g["number"]): localized(code, "group", g["number"], "meaning", str(g.get("meaning", "")))
+            for g in table.get("group", [])}
 
 
 def main_groups_line(gcodes: Mapping[int, str], groups: tuple[int, ...] = MAIN_GROUPS) -> Text:
     """The main groups' active codes in one line."""
-    text = Text(" G functions  ", style="bold")
+    text = Text(f" {_('G functions')}  ", style="bold")
     for group in groups:
         text.append(f"{gcodes.get(group, '—'):<8}")
     return text
@@ -48,10 +54,10 @@ def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | No
     numbers = sorted(set(meanings) | set(gcodes))
     half = (len(numbers) + 1) // 2
     table = Table(expand=True, box=None, padding=(0, 1), show_edge=False)
-    for _ in range(2):
-        table.add_column("Grp", justify="right", style="bold", width=4)
-        table.add_column("Active", style="bold #f39200", width=10)
-        table.add_column("Meaning", ratio=1, no_wrap=True, overflow="ellipsis")
+    for _column_pair in range(2):
+        table.add_column(_("Grp"), justify="right", style="bold", width=4)
+        table.add_column(_("Active"), style="bold #f39200", width=10)
+        table.add_column(_("Meaning"), ratio=1, no_wrap=True, overflow="ellipsis")
     for row in range(half):
         cells: list[str] = []
         for number in (numbers[row], numbers[row + half] if row + half < len(numbers) else None):

@@ -11,22 +11,24 @@ from nck.status import AlarmEntry, NckStatus
 
 from hmi.messages import AlarmLineClicked
 
+from hmi.i18n import N_, _, alarm_text
+
 CHANNEL_STATE_TEXT = {
-    "reset": "Channel reset",
-    "active": "Channel active",
-    "interrupted": "Channel interrupted",
+    "reset": N_("Channel reset"),
+    "active": N_("Channel active"),
+    "interrupted": N_("Channel interrupted"),
 }
 PROGRAM_STATE_TEXT = {
-    "aborted": "Program aborted",
-    "running": "Program running",
-    "stopped": "Program stopped",
-    "interrupted": "Program interrupted",
-    "waiting": "Program waiting",
+    "aborted": N_("Program aborted"),
+    "running": N_("Program running"),
+    "stopped": N_("Program stopped"),
+    "interrupted": N_("Program interrupted"),
+    "waiting": N_("Program waiting"),
 }
 MODE_TEXT = {"JOG": "JOG", "MDA": "MDA", "AUTO": "AUTO"}
 LEVEL_NAMES = {
-    0: "Siemens", 1: "Manufacturer", 2: "Service", 3: "User",
-    4: "Keyswitch 3", 5: "Keyswitch 2", 6: "Keyswitch 1", 7: "Keyswitch 0",
+    0: N_("Siemens"), 1: N_("Manufacturer"), 2: N_("Service"), 3: N_("User"),
+    4: N_("Keyswitch 3"), 5: N_("Keyswitch 2"), 6: N_("Keyswitch 1"), 7: N_("Keyswitch 0"),
 }
 ALARM_CLASSES = ("-alarm-red", "-alarm-orange", "-alarm-user", "-message", "-hint")
 
@@ -116,7 +118,7 @@ class AreaHeader(Vertical):
         overrides_line = self.query_one("#hdr-overrides", Static)
         self.shown_alarm = max(status.alarms, key=lambda entry: entry.seq) if status and status.alarms else None
         if status is None:
-            self._set(state, f" {area_title}  │ NCK not connected")
+            self._set(state, f" {area_title}  │ {_('NCK not connected')}")
             self._set(alarm, "")
             self._set(program, "")
             self._set(influences, "")
@@ -128,24 +130,22 @@ class AreaHeader(Vertical):
             f" {area_title}",
             mode_line(status),
             "CHAN1",
-            CHANNEL_STATE_TEXT.get(channel.channel_state, channel.channel_state),
-            PROGRAM_STATE_TEXT.get(channel.program_state, channel.program_state),
-            f"Level {level} {LEVEL_NAMES.get(level, '')}".rstrip(),
+            _(CHANNEL_STATE_TEXT.get(channel.channel_state, channel.channel_state)),
+            _(PROGRAM_STATE_TEXT.get(channel.program_state, channel.program_state)),
+            _("Level {level} {name}").format(level=level, name=_(LEVEL_NAMES.get(level, ""))).rstrip(),
         ]
         if status.emergency_stop:
-            parts.insert(1, "EMERGENCY STOP")
+            parts.insert(1, _("EMERGENCY STOP"))
         self._set(state, "  │ ".join(parts))
         text, css = self.alarm_line(status, hint)
         self._set(alarm, text)
         for name in ALARM_CLASSES:
             alarm.set_class(name == css, name)
         overrides = channel.overrides
-        selected = channel.selected_program or "no program selected"
-        right = (
-            f"Feed {format_override(overrides.get('feed', 100))} %   "
-            f"Rapid {format_override(overrides.get('rapid', 100))} %   "
-            f"Spindle {format_override(overrides.get('spindle', 100))} % "
-        )
+        selected = channel.selected_program or _("no program selected")
+        right = _("Feed {feed} %   Rapid {rapid} %   Spindle {spindle} % ").format(
+            feed=format_override(overrides.get("feed", 100)), rapid=format_override(overrides.get("rapid", 100)),
+            spindle=format_override(overrides.get("spindle", 100)))
         self._set(program, f" {selected}")
         self._set(influences, influence_text(channel.program_control))
         self._set(overrides_line, right)
@@ -165,8 +165,8 @@ class AreaHeader(Vertical):
         if status.alarms:
             top = max(status.alarms, key=lambda entry: entry.seq)
             count = len(status.alarms)
-            more = f"   (+{count - 1} more)" if count > 1 else ""
-            return f" {top.number:>6}  {top.text}{more}", alarm_class(top.category)
+            more = "   " + _("(+{count} more)").format(count=count - 1) if count > 1 else ""
+            return f" {top.number:>6}  {alarm_text(top)}{more}", alarm_class(top.category)
         if status.channel.message:
             return f" {status.channel.message}", "-message"
         if hint:

@@ -8,6 +8,8 @@ from textual.widgets import Static
 from nck import fixed
 from nck.status import AxisStatus, NckStatus
 
+from hmi.i18n import _
+
 UNREFERENCED_MARK = "○"
 """Shown beside an axis that is not referenced (it disappears after REF)."""
 
@@ -20,8 +22,8 @@ def format_mm(value: float, width: int = 12) -> str:
 def position_lines(status: NckStatus, mcs: bool, selected_axis: str | None) -> Text:
     """Render the position window for one snapshot."""
     text = Text()
-    system = "MCS" if mcs else "WCS"
-    text.append(f" {system:<8}{'Position [mm]':>20}{'Dist-to-go':>18}\n", style="bold")
+    system = _("MCS") if mcs else _("WCS")
+    text.append(f" {system:<8}{_('Position [mm]'):>20}{_('Dist-to-go'):>18}\n", style="bold")
     for axis in status.axes:
         if axis.kind == "spindle":
             continue

@@ -8,6 +8,7 @@ from textual.widgets import Static
 from nck import fixed
 from nck.status import NckStatus
 
+from hmi.i18n import _
 from hmi.widgets.header import format_override
 
 
@@ -17,7 +18,7 @@ def tfs_lines(status: NckStatus) -> Text:
     overrides = status.channel.overrides
     text = Text()
     # The tool line names the tool once: its name, else its number (T1), else "no tool".
-    tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
+    tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else _("no tool"))
     text.append(f" {tool:<18}", style="bold")
     text.append(f"D{modal.edge}")
     # With MD22550 = 1 a programmed T only prepares the tool until M6 changes it: say
@@ -25,7 +26,7 @@ def tfs_lines(status: NckStatus) -> Text:
     # the manual leaves the display of the preselection open).
     preselected = modal.aux.get("T")
     if preselected is not None and preselected != str(modal.tool):
-        text.append(f"   T{preselected} preselected", style="bold #f39200")
+        text.append("   " + _("T{tool} preselected").format(tool=preselected), style="bold #f39200")
     text.append("\n")
     text.append(f"   L {fixed(modal.tool_length_mm, 3, 10)}   R {fixed(modal.tool_radius_mm, 3, 8)}\n")
     text.append(" F ", style="bold")
@@ -46,9 +47,9 @@ def tfs_lines(status: NckStatus) -> Text:
         # A speed limit acting on the setpoint is said, not hidden (DB31 DBX83.1 "setpoint
         # speed limited" / DBX83.2 "setpoint speed increased", 002 L54541-54543).
         if spindle.extra.get("setpoint_limited"):
-            text.append("    setpoint speed limited\n", style="bold #f39200")
+            text.append("    " + _("setpoint speed limited") + "\n", style="bold #f39200")
         elif spindle.extra.get("setpoint_increased"):
-            text.append("    setpoint speed increased\n", style="bold #f39200")
+            text.append("    " + _("setpoint speed increased") + "\n", style="bold #f39200")
     return text
 
 

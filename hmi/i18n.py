@@ -1,0 +1,53 @@
+"""The panel's language: which one is shown, and the gettext functions the screens call.
+
+English is the language of the code; :func:`_` returns a text in the language the
+operator chose (Setup ▸ Language, ``hmi --lang``), read from the catalogue
+``data/lang/<code>/hmi.po`` (:mod:`nck.translations`). Call :func:`_` where a text is
+shown, not where a table of texts is defined: module tables (softkey labels, state
+names) stay English and are marked with :func:`N_` so the catalogue test finds them;
+the softkey bars, the header and the dialogs translate them as they draw.
+
+One language is active for the whole panel at a time (as on the control); the app sets
+it at start and when the operator picks another one, and rebuilds its areas then.
+"""
+
+from __future__ import annotations
+
+from nck import LANGUAGES, SOURCE_LANGUAGE, alarm_text_in, check_language, gettext_catalogue, localized
+from nck.status import AlarmEntry
+
+__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "language", "set_language"]
+
+_active = {"code": SOURCE_LANGUAGE}
+
+
+def language() -> str:
+    """The code of the language shown now (``en``, ``de``)."""
+    return _active["code"]
+
+
+def set_language(code: str) -> None:
+    """Show texts in language ``code`` from now on (raises ``UnknownLanguage`` for others)."""
+    _active["code"] = check_language(code)
+
+
+def _(message: str) -> str:
+    """``message`` (English, as written in the code) in the language shown now."""
+    if not message:
+        return message
+    return gettext_catalogue(_active["code"]).gettext(message)
+
+
+def N_(message: str) -> str:  # noqa: N802 - the gettext convention
+    """Mark ``message`` for the catalogue without translating it (tables defined at import)."""
+    return message
+
+
+def data_text(kind: str, key: object, field: str, english: str) -> str:
+    """A text of a data table (``alarm``, ``md``, ``group``) in the language shown now."""
+    return localized(_active["code"], kind, key, field, english)
+
+
+def alarm_text(entry: AlarmEntry) -> str:
+    """The text of a raised alarm (or of its log entry) in the language shown now."""
+    return alarm_text_in(_active["code"], entry.number, entry.params, entry.text)

@@ -1,0 +1,112 @@
+"""The texts of the code that the gettext catalogues must translate, found in the source.
+
+A text is taken from ``hmi/`` and ``screens/`` where it is
+
+* the literal argument of ``_("…")`` (translated where shown) or ``N_("…")`` (a table
+  defined at import, translated where shown);
+* the label of a softkey: the second argument of ``Softkey(…)`` or ``view_softkey(…)``
+  (the softkey bars and the palette translate every label).
+
+``python -m tests.i18n.sources`` adds the texts missing from each catalogue
+``data/lang/<code>/hmi.po`` (with an empty translation to fill in) and lists the
+entries no code uses any more. It is a development tool; the product never runs it.
+"""
+
+from __future__ import annotations
+
+import ast
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+PACKAGES = ("hmi", "screens")
+MARKERS = frozenset({"_", "N_"})
+LABELLED = frozenset({"Softkey", "view_softkey"})
+
+
+def _name(node: ast.expr) -> str:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return ""
+
+
+def texts_of(source: str, filename: str = "<source>") -> dict[str, int]:
+    """Every translatable literal of one module with the line it is on."""
+    found: dict[str, int] = {}
+    for node in ast.walk(ast.parse(source, filename)):
+        if not isinstance(node, ast.Call):
+            continue
+        name = _name(node.func)
+        argument = None
+        if name in MARKERS and node.args:
+            argument = node.args[0]
+        elif name in LABELLED and len(node.args) >= 2:
+            argument = node.args[1]
+        if isinstance(argument, ast.Constant) and isinstance(argument.value, str) and argument.value:
+            found.setdefault(argument.value, node.lineno)
+    return found
+
+
+def code_texts() -> dict[str, str]:
+    """Every translatable text of the panel -> the first place it occurs (``path:line``)."""
+    texts: dict[str, str] = {}
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            relative = path.relative_to(ROOT)
+            for text, line in texts_of(path.read_text(encoding="utf-8"), str(relative)).items():
+                texts.setdefault(text, f"{relative}:{line}")
+    return texts
+
+
+def po_quote(text: str) -> str:
+    """``text`` as one quoted .po string."""
+    escaped = text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n").replace("\t", "\\t")
+    return f'"{escaped}"'
+
+
+def update_catalogues() -> int:
+    """Append the missing texts to every catalogue; print the stale ones. Returns 0."""
+    from nck.translations import LANGUAGES, SOURCE_LANGUAGE, read_po
+
+    texts = code_texts()
+    for code in LANGUAGES:
+        if code == SOURCE_LANGUAGE:
+            continue
+        path = ROOT / "data" / "lang" / code / "hmi.po"
+        known = read_po(path) if path.is_file() else {}
+        present = set(known) | _untranslated(path)
+        missing = [text for text in texts if text not in present]
+        with path.open("a", encoding="utf-8") as handle:
+            for text in missing:
+                handle.write(f"\n#: {texts[text]}\nmsgid {po_quote(text)}\nmsgstr \"\"\n")
+        print(f"{path.relative_to(ROOT)}: {len(missing)} added")
+        for text in sorted(present - set(texts)):
+            print(f"  no longer used: {text!r}")
+    return 0
+
+
+def _untranslated(path: Path) -> set[str]:
+    """The msgids of ``path`` whatever their translation (empty or fuzzy ones too)."""
+    if not path.is_file():
+        return set()
+    ids: set[str] = set()
+    current: list[str] | None = None
+    for raw in path.read_text(encoding="utf-8").splitlines():
+        line = raw.strip()
+        if line.startswith("msgid "):
+            current = [ast.literal_eval(line[6:])]
+        elif line.startswith('"') and current is not None:
+            current.append(ast.literal_eval(line))
+        else:
+            if current is not None and "".join(current):
+                ids.add("".join(current))
+            current = None
+    if current is not None and "".join(current):
+        ids.add("".join(current))
+    return ids
+
+
+if __name__ == "__main__":
+    sys.exit(update_catalogues())

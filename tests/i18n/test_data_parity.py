@@ -1,0 +1,50 @@
+"""Every text of the data tables exists in every language (issue 27).
+
+The English texts are the entries of ``data/alarms``, ``data/md`` and
+``data/gcode/siemens.toml``; the translations are the overlays ``data/lang/<code>/*.toml``.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from nck.resources import alarm_catalog, data_path, read_table
+from nck.translations import LANGUAGES, SOURCE_LANGUAGE, overlay
+
+OTHER_LANGUAGES = [code for code in LANGUAGES if code != SOURCE_LANGUAGE]
+ALARM_PARAMETER = re.compile(r"%\d")
+
+
+def base_entries() -> dict[str, dict[str, dict[str, str]]]:
+    """kind -> key -> field -> English text, of every translated data table."""
+    alarms = {str(number): {"text": d.text} for number, d in alarm_catalog().items()}
+    md: dict[str, dict[str, str]] = {}
+    for path in sorted(data_path("md").glob("*.toml")):
+        for entry in read_table(path).get("data", []):
+            md[str(entry["number"])] = {"title": entry["title"]}
+    groups = {str(group["number"]): {"meaning": group["meaning"]}
+              for group in read_table(data_path("gcode", "siemens.toml"))["group"]}
+    return {"alarm": alarms, "md": md, "group": groups}
+
+
+@pytest.mark.parametrize("code", OTHER_LANGUAGES)
+def test_every_data_text_has_a_translation_and_no_more(code: str) -> None:
+    for kind, entries in base_entries().items():
+        translated = overlay(code, kind)
+        missing = [f"{key}.{field}" for key, fields in entries.items() for field in fields
+                   if not translated.get(key, {}).get(field)]
+        assert not missing, f"{kind}: no {code} text for {missing}"
+        stale = sorted(set(translated) - set(entries))
+        assert not stale, f"{kind}: {code} texts for entries that do not exist: {stale}"
+        extra = [f"{key}.{field}" for key, fields in translated.items() for field in fields
+                 if field not in entries.get(key, {})]
+        assert not extra, f"{kind}: {code} fields the English entry lacks: {extra}"
+
+
+@pytest.mark.parametrize("code", OTHER_LANGUAGES)
+def test_alarm_translations_keep_the_parameters(code: str) -> None:
+    for number, fields in overlay(code, "alarm").items():
+        english = alarm_catalog()[int(number)].text
+        assert sorted(ALARM_PARAMETER.findall(fields["text"])) == sorted(ALARM_PARAMETER.findall(english)), number
