@@ -17,22 +17,23 @@ from nck.queries import AlarmDefinition, alarm_catalog
 
 from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
+from hmi.i18n import N_, _, data_text
 
 CLEARING: dict[str, str] = {
-    "power_on": "Switch the control off and on again (POWER ON).",
-    "reset": "Press RESET: the alarm goes, a running program is aborted.",
-    "cancel": "Press the alarm cancel key (F12) or the softkey Acknowledge alarm.",
-    "nc_start": "Press NC START to continue the program, or RESET to abort it.",
-    "self": "It clears itself as soon as its cause is gone.",
+    "power_on": N_("Switch the control off and on again (POWER ON)."),
+    "reset": N_("Press RESET: the alarm goes, a running program is aborted."),
+    "cancel": N_("Press the alarm cancel key (F12) or the softkey Acknowledge alarm."),
+    "nc_start": N_("Press NC START to continue the program, or RESET to abort it."),
+    "self": N_("It clears itself as soon as its cause is gone."),
 }
 """How an alarm with each clear criterion is cleared (the criteria of the alarm catalogue)."""
 
 REACTIONS: dict[str, str] = {
-    "nc_start_disable": "NC START is disabled",
-    "interpreter_stop": "the program stops at the block",
-    "feed_stop": "the feed is stopped",
-    "braking": "the axes are braked",
-    "emergency_stop": "the drives lose their enable (emergency stop)",
+    "nc_start_disable": N_("NC START is disabled"),
+    "interpreter_stop": N_("the program stops at the block"),
+    "feed_stop": N_("the feed is stopped"),
+    "braking": N_("the axes are braked"),
+    "emergency_stop": N_("the drives lose their enable (emergency stop)"),
 }
 """The control's reactions to an alarm, in the operator's words."""
 
@@ -45,8 +46,8 @@ def definition_of(number: int) -> AlarmDefinition | None:
 def reaction_text(reactions: tuple[str, ...]) -> str:
     """The control's reactions as one sentence."""
     if not reactions:
-        return "No reaction: the alarm only informs."
-    said = "; ".join(REACTIONS.get(reaction, reaction) for reaction in reactions)
+        return _("No reaction: the alarm only informs.")
+    said = "; ".join(_(REACTIONS.get(reaction, reaction)) for reaction in reactions)
     return said[0].upper() + said[1:] + "."
 
 
@@ -55,21 +56,22 @@ def help_text(number: int, shown: str = "") -> Text:
     definition = definition_of(number)
     text = Text(end="")
     text.append(f"{number}  ", style="bold")
-    text.append(f"{shown or (definition.text if definition else '')}\n\n")
+    text.append(f"{shown or (data_text('alarm', number, 'text', definition.text) if definition else '')}\n\n")
     if definition is None:
-        text.append("No help is stored for this alarm number.\n", style="dim")
+        text.append(_("No help is stored for this alarm number.") + "\n", style="dim")
         return text
     sections = (
-        ("What happened", definition.explanation),
-        ("What to do", definition.remedy),
-        ("How it is cleared", CLEARING.get(definition.clear, definition.clear)),
-        ("Reaction of the control", reaction_text(definition.reactions)),
+        (_("What happened"), data_text("alarm", number, "explanation", definition.explanation)),
+        (_("What to do"), data_text("alarm", number, "remedy", definition.remedy)),
+        (_("How it is cleared"), _(CLEARING.get(definition.clear, definition.clear))),
+        (_("Reaction of the control"), reaction_text(definition.reactions)),
     )
     for title, body in sections:
         text.append(f"{title}\n", style="bold underline")
         text.append(f"{body}\n\n")
-    source = f"manual {definition.help_source}" if definition.help_source else "the trainer's own description"
-    text.append(f"Source: {source}", style="dim")
+    source = (_("manual {lines}").format(lines=definition.help_source) if definition.help_source
+              else _("the trainer's own description"))
+    text.append(_("Source: {source}").format(source=source), style="dim")
     return text
 
 
@@ -84,7 +86,8 @@ class AlarmHelpScreen(AreaDialog[None]):
     def compose(self) -> ComposeResult:
         """A title and the scrollable help page."""
         with VerticalScroll(id="alarm-help-box"):
-            yield Static(f"ALARM HELP — {self.number}   (F10 or Esc closes)", id="alarm-help-title",
+            yield Static(_("ALARM HELP — {number}   (F10 or Esc closes)").format(number=self.number),
+                         id="alarm-help-title",
                          markup=False)
             yield Static(help_text(self.number, self._shown), id="alarm-help-body", markup=False)
 

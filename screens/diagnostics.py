@@ -30,7 +30,7 @@ from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _
+from hmi.i18n import N_, _, alarm_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -245,7 +245,7 @@ class DiagnosticsScreen(AreaBase):
         """Alarm help: what the selected alarm means and what to do about it."""
         entry = self.selected_alarm()
         if entry is not None:
-            self.hmi.show_alarm_help(entry.number, entry.text)
+            self.hmi.show_alarm_help(entry.number, alarm_text(entry))
 
     def action_exercise_select(self, step: int) -> None:
         """Next ▼ / Previous ▲: move the selection in the exercise list."""

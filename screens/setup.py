@@ -31,7 +31,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import LANGUAGES, _, data_text, language
+from hmi.i18n import LANGUAGES, N_, _, data_text, language
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
@@ -43,7 +43,7 @@ MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data"
 TABLE_VIEWS = (*MD_VIEWS, "workpiece")
 ACTIVATION_TEXT = {"so": "immediately", "re": "at RESET", "cf": "at NEW CONFIG (Set MD active) or RESET",
                    "po": "at POWER ON (Reset (po))"}
-LEVEL_NAMES = {0: "System", 1: "Manufacturer", 2: "Service", 3: "User"}
+LEVEL_NAMES = {0: N_("System"), 1: N_("Manufacturer"), 2: N_("Service"), 3: N_("User")}
 
 wall_clock: Callable[[], datetime] = datetime.now
 """The computer's clock: the control's date at power on (tests replace it)."""
@@ -52,9 +52,9 @@ wall_clock: Callable[[], datetime] = datetime.now
 def level_text(level: int) -> str:
     """``"3 — User (password)"``, ``"7 — keyswitch position 0"``."""
     if level in LEVEL_NAMES:
-        how = "password" if level else "system"
-        return f"{level} — {LEVEL_NAMES[level]} ({how})"
-    return f"{level} — keyswitch position {7 - level}"
+        how = _("password") if level else _("system")
+        return f"{level} — {_(LEVEL_NAMES[level])} ({how})"
+    return f"{level} — " + _("keyswitch position {position}").format(position=7 - level)
 
 
 def language_text(active: str) -> Text:
@@ -430,33 +430,35 @@ class SetupScreen(AreaBase):
             keyswitch = state.keyswitch_position
         password = getattr(state, "password_level", None)
         text = Text(no_wrap=True, end="")
-        text.append(" Access level\n", style="bold underline")
-        text.append(f"   Current access level   {level_text(level)}\n", style="bold")
+        text.append(" " + _("Access level") + "\n", style="bold underline")
+        text.append(f"   {_('Current access level'):<23}{level_text(level)}\n", style="bold")
         if keyswitch is not None:
-            text.append(f"   Keyswitch position     {keyswitch}  (level {7 - keyswitch})\n")
-        text.append("   Password               "
-                    + (f"set (level {password}, {LEVEL_NAMES[password]})" if password else "none") + "\n")
-        text.append("   A password overrides the keyswitch until it is deleted, also over power off/on.\n",
-                    style="dim")
-        text.append("\n Protection levels\n", style="bold underline")
+            text.append(f"   {_('Keyswitch position'):<23}{keyswitch}  "
+                        + _("(level {level})").format(level=7 - keyswitch) + "\n")
+        state_text = (_("set (level {level}, {name})").format(level=password, name=_(LEVEL_NAMES[password]))
+                      if password else _("none"))
+        text.append(f"   {_('Password'):<23}{state_text}\n")
+        text.append("   " + _("A password overrides the keyswitch until it is deleted, also over power off/on.")
+                    + "\n", style="dim")
+        text.append("\n " + _("Protection levels") + "\n", style="bold underline")
         for number in range(8):
-            how = ("system" if number == 0 else "password" if number <= 3
-                   else f"keyswitch position {7 - number}")
-            name = LEVEL_NAMES.get(number, "")
+            how = (_("system") if number == 0 else _("password") if number <= 3
+                   else _("keyswitch position {position}").format(position=7 - number))
+            name = _(LEVEL_NAMES[number]) if number in LEVEL_NAMES else ""
             text.append(f"   {number}  {name:<14}{how}\n", style="bold" if number == level else "")
-        text.append("\n Machine data\n", style="bold underline")
+        text.append("\n " + _("Machine data") + "\n", style="bold underline")
         store = self.data_view.machine_data
         pending = store.pending() if store is not None else []
-        text.append("   Stored, not active     " + (", ".join(pending) if pending else "none") + "\n")
-        text.append("\n Date and time of the control\n", style="bold underline")
+        text.append(f"   {_('Stored, not active'):<23}" + (", ".join(pending) if pending else _("none")) + "\n")
+        text.append("\n " + _("Date and time of the control") + "\n", style="bold underline")
         seconds = status.time_s if status is not None else 0.0
         if self.power_on_at is None:  # the area may be built long after power on
             self.power_on_at = wall_clock() - timedelta(seconds=seconds)
         moment = self.power_on_at + timedelta(seconds=seconds)
-        text.append(f"   Date / time            {moment:%Y-%m-%d %H:%M:%S}\n")
+        text.append(f"   {_('Date / time'):<23}{moment:%Y-%m-%d %H:%M:%S}\n")
         whole = int(seconds)
-        text.append(f"   Since power on         {whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d}"
-                    " (simulated control time)\n")
+        text.append(f"   {_('Since power on'):<23}{whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d} "
+                    + _("(simulated control time)") + "\n")
         return text
 
 

@@ -9,9 +9,8 @@ from textual.widgets import Static
 
 from nck.status import AlarmEntry, NckStatus
 
-from hmi.messages import AlarmLineClicked
-
 from hmi.i18n import N_, _, alarm_text
+from hmi.messages import AlarmLineClicked
 
 CHANNEL_STATE_TEXT = {
     "reset": N_("Channel reset"),
@@ -153,7 +152,7 @@ class AreaHeader(Vertical):
     def on_click(self, event: events.Click) -> None:
         """A click on the alarm line while an alarm is shown: ask for its help."""
         if event.widget is not None and event.widget.id == "hdr-alarm" and self.shown_alarm is not None:
-            self.post_message(AlarmLineClicked(self.shown_alarm.number, self.shown_alarm.text))
+            self.post_message(AlarmLineClicked(self.shown_alarm.number, alarm_text(self.shown_alarm)))
 
     @staticmethod
     def alarm_line(status: NckStatus, hint: str = "") -> tuple[str, str]:

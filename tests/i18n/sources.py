@@ -4,8 +4,9 @@ A text is taken from ``hmi/`` and ``screens/`` where it is
 
 * the literal argument of ``_("…")`` (translated where shown) or ``N_("…")`` (a table
   defined at import, translated where shown);
-* the label of a softkey: the second argument of ``Softkey(…)`` or ``view_softkey(…)``
-  (the softkey bars and the palette translate every label).
+* the label of a softkey: the second argument of ``Softkey(…)``, ``view_softkey(…)`` and
+  the areas' softkey builders of :data:`LABELLED` (the softkey bars and the palette
+  translate every label).
 
 ``python -m tests.i18n.sources`` adds the texts missing from each catalogue
 ``data/lang/<code>/hmi.po`` (with an empty translation to fill in) and lists the
@@ -21,7 +22,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("hmi", "screens")
 MARKERS = frozenset({"_", "N_"})
-LABELLED = frozenset({"Softkey", "view_softkey"})
+LABELLED = frozenset({"Softkey", "view_softkey", "view_key", "_view_key", "_search_mode_key"})
+"""Functions whose second argument is a softkey label (the areas' small softkey builders)."""
 
 
 def _name(node: ast.expr) -> str:

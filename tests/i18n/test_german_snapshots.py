@@ -17,14 +17,19 @@ from tests.diagnostics.conftest import app_on
 from tests.diagnostics.staged import AUTO_LIMIT, JOG_LIMIT, StagedKernel, stamped
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck
+from tests.parameter_setup.conftest import FROZEN_NOW
 from tests.program_screens.conftest import DEMO_PROGRAM, make_program_app, nc_files
 
 PINNED_NS = 1_790_000_000 * 10**9  # 2026-09-21 14:13 UTC
 
 
 @pytest.fixture(autouse=True)
-def german() -> None:
-    """The panel's texts in German (the suite's fixture puts English back afterwards)."""
+def german(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The panel's texts in German (the suite's fixture puts English back afterwards); the Setup
+    area's date and time from a fixed moment, as in tests/parameter_setup."""
+    import screens.setup
+
+    monkeypatch.setattr(screens.setup, "wall_clock", lambda: FROZEN_NOW)
     set_language("de")
 
 
