@@ -33,12 +33,15 @@ class Cutter:
         corner_radius_mm: torus radius at the end face (ball mill: equal to the radius).
         tip_angle_deg: drill point angle (0: no point, a flat or rounded end).
         tool: the T number (0: no tool).
+        length_mm: length 1 (``$TC_DP3`` plus wear): from the tip to the toolholder reference
+            point, where the holder begins (0: unknown).
     """
 
     radius_mm: float
     corner_radius_mm: float = 0.0
     tip_angle_deg: float = 0.0
     tool: int = 0
+    length_mm: float = 0.0
 
     @classmethod
     def flat(cls, radius_mm: float, tool: int = 0) -> Cutter:
@@ -60,15 +63,16 @@ class Cutter:
         """The cutter of a cutting edge's ``$TC_DPn`` values (geometry plus wear)."""
         kind = int(params.get(1, 120))
         radius = max(params.get(6, 0.0) + params.get(15, 0.0), 0.0)
+        length = max(params.get(3, 0.0) + params.get(12, 0.0), 0.0)
         if kind in BALL_TYPES:
-            return cls.ball(radius, tool)
+            return cls(radius, radius, 0.0, tool, length)
         if kind in CORNER_TYPES:
             corner = min(max(params.get(7, 0.0) + params.get(16, 0.0), 0.0), radius)
-            return cls(radius, corner, 0.0, tool)
+            return cls(radius, corner, 0.0, tool, length)
         if 200 <= kind < 300:
             angle = params.get(24, 0.0)
-            return cls.drill(radius, angle if 0.0 < angle < 180.0 else DEFAULT_TIP_ANGLE_DEG, tool)
-        return cls.flat(radius, tool)
+            return cls(radius, 0.0, angle if 0.0 < angle < 180.0 else DEFAULT_TIP_ANGLE_DEG, tool, length)
+        return cls(radius, 0.0, 0.0, tool, length)
 
     @property
     def reach_mm(self) -> float:

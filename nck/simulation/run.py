@@ -15,7 +15,16 @@ traverse estimate of ``nck check``). Our choice: the kernel reports one time for
 not one per block.
 
 Events found while sweeping, each naming its block: a rapid move (G0) that cuts material,
-and a feed move that cuts while the spindle stands.
+a feed move that cuts while the spindle stands, and a cut deeper than the tool's length 1 —
+the toolholder below the surface (the tool data has no flute length: ``$TC_DP`` ends the
+tool at the toolholder reference point, 002 L62525-62558; our choice: the holder is as wide
+as the tool).
+
+The mill's path is recorded in the blank's frame: the machine positions (MCS) less the tool
+length and the work offset of the first motion, so that programmable frames (TRANS, ROT,
+MIRROR, SCALE) cut where the machine cuts (a mirrored G2 turns the other way, 001
+L2285-2289). A program that sets such a frame before its first motion places the blank
+with it (our choice).
 """
 
 from __future__ import annotations
@@ -52,7 +61,8 @@ _LINEAR_MASK = np.array([True, True, True])
 
 @dataclass(frozen=True, slots=True)
 class SimEvent:
-    """Something the sweep found: ``kind`` is ``rapid_cut`` or ``spindle_stopped``."""
+    """Something the sweep found: ``kind`` is ``rapid_cut``, ``spindle_stopped`` or
+    ``holder_in_material`` (the cut went deeper than the tool's length 1)."""
 
     kind: str
     line: int | None
@@ -65,6 +75,8 @@ class SimEvent:
         where = f"N{self.n}" if self.n is not None else f"line {self.line}"
         if self.kind == "rapid_cut":
             return f"{where}: rapid traverse into material ({self.depth_mm:.2f} mm deep)"
+        if self.kind == "holder_in_material":
+            return f"{where}: tool holder below the surface (cut {self.depth_mm:.2f} mm deep)"
         return f"{where}: cutting with the spindle stopped ({self.depth_mm:.2f} mm deep)"
 
 
@@ -263,12 +275,6 @@ class PathRecorder:
     def _motion(self, motion: canon.Motion) -> None:
         end_wcs = dict(motion.end_wcs)
         end_mcs = dict(motion.end_mcs)
-        if self.position is None:
-            start_mcs = dict(motion.start_mcs)
-            self.position = np.array([
-                float(start_mcs.get(a, end_mcs.get(a, 0.0))) + float(end_wcs.get(a, 0.0)) - float(end_mcs.get(a, 0.0))
-                if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ"])
-        start = self.position
         first = not self.starts
         if self.mcs_minus_wcs is None and self.turning and all(a in end_wcs and a in end_mcs for a in "XZ"):
             # Lathe: MCS X in radius, WCS X a diameter (DIAMON); length 1 along X, 2 along Z (G18).
@@ -277,13 +283,26 @@ class PathRecorder:
             along_z = edge.get(4) + edge.get(13) if edge is not None else 0.0
             self.mcs_minus_wcs = (float(end_mcs["X"]) - float(end_wcs["X"]) / 2.0 - along_x, 0.0,
                                   float(end_mcs["Z"]) - float(end_wcs["Z"]) - along_z)
-        if self.mcs_minus_wcs is None and all(a in end_wcs and a in end_mcs for a in "XYZ"):
-            edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
-            length = edge.get(3) + edge.get(12) if edge is not None else 0.0
+        if self.mcs_minus_wcs is None and not self.turning and all(a in end_wcs and a in end_mcs for a in "XYZ"):
+            length = self._length()
             self.mcs_minus_wcs = (float(end_mcs["X"]) - float(end_wcs["X"]), float(end_mcs["Y"]) - float(end_wcs["Y"]),
                                   float(end_mcs["Z"]) - float(end_wcs["Z"]) - length)
-        end = np.array([float(end_wcs.get(a, start[i])) for i, a in enumerate("XYZ")])
-        points = self._points(motion, start, end)
+        in_blank = not self.turning and self.mcs_minus_wcs is not None
+        if self.position is None:
+            if in_blank:
+                self.position = self._blank_point(dict(motion.start_mcs) or end_mcs, None)
+            else:
+                start_mcs = dict(motion.start_mcs)
+                self.position = np.array([
+                    float(start_mcs.get(a, end_mcs.get(a, 0.0))) + float(end_wcs.get(a, 0.0)) - float(end_mcs.get(a, 0.0))
+                    if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ"])
+        start = self.position
+        if in_blank:
+            end = self._blank_point(end_mcs, start)
+            points = self._points_in_blank(motion, start, end)
+        else:
+            end = np.array([float(end_wcs.get(a, start[i])) for i, a in enumerate("XYZ")])
+            points = self._points(motion, start, end)
         length = float(np.linalg.norm(np.diff(np.vstack([start[None, :], points]), axis=0), axis=1).sum())
         feed = DEFAULT_RAPID_MM_MIN if motion.kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
         self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
@@ -301,6 +320,38 @@ class PathRecorder:
         self.states.append(ModalState(motion.gcodes, self.feed, self.tool, self.edge, self.speed_rpm))
         self.position = end
 
+    def _length(self) -> float:
+        """Length 1 with its wear of the active edge (along Z on the mill)."""
+        edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
+        return edge.get(3) + edge.get(12) if edge is not None else 0.0
+
+    def _blank_point(self, mcs: dict[str, float], keep: np.ndarray | None) -> np.ndarray:
+        """A point of the toolholder reference in the MCS as the tool tip in the blank's frame
+        (the work offset of the first motion, :attr:`mcs_minus_wcs`); axes missing: ``keep``'s."""
+        offset = self.mcs_minus_wcs or (0.0, 0.0, 0.0)
+        shift = (offset[0], offset[1], offset[2] + self._length())
+        return np.array([float(mcs[a]) - shift[i] if a in mcs else (float(keep[i]) if keep is not None else 0.0)
+                         for i, a in enumerate("XYZ")])
+
+    def _points_in_blank(self, motion: canon.Motion, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+        """The chords of a mill's motion in the blank's frame, from its MCS geometry: a frame
+        that mirrors or rotates in the plane moves the cut where the machine cuts. An arc whose
+        axis is not the plane's normal in the MCS (a frame tilting the plane) is one chord (our
+        choice)."""
+        if motion.kind not in ("G2", "G3") or not motion.center_mcs:
+            return end[None, :]
+        plane = _PLANE_INDEX.get(motion.plane, (0, 1))
+        normal_axis = "XYZ"[3 - plane[0] - plane[1]]
+        clockwise = motion.kind == "G2"
+        if motion.arc_normal_mcs:
+            component = float(dict(motion.arc_normal_mcs).get(normal_axis, 0.0))
+            if abs(component) < 0.999:
+                return end[None, :]
+            clockwise = component < 0.0
+        centre = self._blank_point(dict(motion.center_mcs), start)
+        return self._arc_chords(start, end, (float(centre[plane[0]]), float(centre[plane[1]])), plane, clockwise,
+                                motion.turns)
+
     def _points(self, motion: canon.Motion, start: np.ndarray, end: np.ndarray) -> np.ndarray:
         if motion.kind not in ("G2", "G3") or not motion.center_wcs:
             return end[None, :]
@@ -308,7 +359,11 @@ class PathRecorder:
         centre = dict(motion.center_wcs)
         names = "XYZ"
         c = (float(centre.get(names[plane[0]], start[plane[0]])), float(centre.get(names[plane[1]], start[plane[1]])))
-        segment = arc_segment(start, end, c, plane, motion.kind == "G2", motion.turns, _LINEAR_MASK)
+        return self._arc_chords(start, end, c, plane, motion.kind == "G2", motion.turns)
+
+    def _arc_chords(self, start: np.ndarray, end: np.ndarray, centre: tuple[float, float], plane: tuple[int, int],
+                    clockwise: bool, turns: int) -> np.ndarray:
+        segment = arc_segment(start, end, centre, plane, clockwise, turns, _LINEAR_MASK)
         if segment.arc is None:
             return end[None, :]
         radius = max(segment.arc[4], segment.arc[5])
@@ -463,14 +518,22 @@ def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None
         depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)  # type: ignore[arg-type]
         if alone[begin - first] and depth.size and float(depth.max()) > CUT_EPSILON_MM:
             kind = "rapid_cut" if path.rapid[begin] else "spindle_stopped"
-            line = int(path.lines[begin]) or None
-            number = int(path.numbers[begin]) if len(path.numbers) and path.numbers[begin] >= 0 else None
-            if not events or events[-1].line != line or events[-1].kind != kind:
-                events.append(SimEvent(kind, line, number, float(depth.max())))
-            else:
-                last = events[-1]
-                events[-1] = SimEvent(kind, line, number, max(last.depth_mm, float(depth.max())))
+            _add_event(events, path, kind, begin, float(depth.max()))
+        length = getattr(cutter, "length_mm", 0.0)
+        if length > 0.0 and depth.size:
+            for chord in (np.flatnonzero(depth > length + CUT_EPSILON_MM) + begin).tolist():
+                _add_event(events, path, "holder_in_material", chord, float(depth[chord - begin]))
     return events
+
+
+def _add_event(events: list[SimEvent], path: Toolpath, kind: str, chord: int, depth_mm: float) -> None:
+    """Add an event at ``chord``; one per block and kind in a row (the deepest)."""
+    line = int(path.lines[chord]) or None
+    number = int(path.numbers[chord]) if len(path.numbers) and path.numbers[chord] >= 0 else None
+    if events and events[-1].line == line and events[-1].kind == kind:
+        events[-1] = SimEvent(kind, line, number, max(events[-1].depth_mm, depth_mm))
+    else:
+        events.append(SimEvent(kind, line, number, depth_mm))
 
 
 def blank_for(path: Toolpath, turning: bool = False) -> Blank:
