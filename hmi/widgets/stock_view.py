@@ -71,6 +71,7 @@ class StockPicture:
     tool_mm: tuple[float, float, float] | None = None
     tool_radius_mm: float = 0.0
     turning: bool = False  # a lathe's half section: heights are radii over Z, the tool a nose circle
+    outline_xy: np.ndarray | None = None  # the blank seen from above (corners X, Y); None: its extents
     cut_top: np.ndarray | None = None  # the cursor block's cut: heights before it, NaN: not cut
     cut_bottom: np.ndarray | None = None  # … and after it
 
@@ -106,7 +107,8 @@ def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
         heights=zmap.heights.copy(), x0_mm=zmap.x0_mm, y0_mm=zmap.y0_mm,
         resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
         starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
-        tool_radius_mm=tool_radius, turning=simulation.turning)
+        tool_radius_mm=tool_radius, turning=simulation.turning,
+        outline_xy=None if simulation.turning else blank.outline_xy())
 
 
 def material_events(simulation: Any) -> str:
@@ -230,6 +232,8 @@ def _outline(image: np.ndarray, picture: StockPicture, view: str, port: Viewport
     highs = (picture.blank_x_mm[1], picture.blank_y_mm[1], picture.z_mm[1])
     h0, h1, v0, v1 = lows[h], highs[h], lows[v], highs[v]
     corners = np.array([[h0, v0], [h1, v0], [h1, v1], [h0, v1]])
+    if view == "XY" and picture.outline_xy is not None:
+        corners = picture.outline_xy  # a turned box, a cylinder
     _segments(image, port, corners, np.roll(corners, -1, axis=0), OUTLINE)
 
 

@@ -49,6 +49,8 @@ class Blank:
         z_mm: (bottom, top).
         diameter_mm: the cylinder's diameter (0 for a box).
         line: the source line of the ``WORKPIECE`` statement (None: none).
+        rotation_z_deg: a box turned counter-clockwise (seen from +Z) about the centre of its
+            extents, which then bound the turned box; ``sides_mm`` are its side lengths.
     """
 
     kind: str
@@ -57,10 +59,40 @@ class Blank:
     z_mm: tuple[float, float]
     diameter_mm: float = 0.0
     line: int | None = None
+    rotation_z_deg: float = 0.0
+    sides_mm: tuple[float, float] = (0.0, 0.0)
+
+    @property
+    def centre_xy_mm(self) -> tuple[float, float]:
+        """The centre of the extents in X/Y."""
+        return (sum(self.x_mm) / 2.0, sum(self.y_mm) / 2.0)
+
+    def outline_xy(self) -> np.ndarray:
+        """The outline seen from above as a closed polygon's corners (rows X, Y): a box's four
+        corners (turned), a cylinder as a 72-gon."""
+        cx, cy = self.centre_xy_mm
+        if self.kind == "cylinder":
+            angles = np.linspace(0.0, 2.0 * math.pi, 72, endpoint=False)
+            radius = self.diameter_mm / 2.0
+            return np.column_stack([cx + radius * np.cos(angles), cy + radius * np.sin(angles)])
+        if self.rotation_z_deg:
+            hx, hy = self.sides_mm[0] / 2.0, self.sides_mm[1] / 2.0
+            local = np.array([[-hx, -hy], [hx, -hy], [hx, hy], [-hx, hy]])
+            a = math.radians(self.rotation_z_deg)
+            turn = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+            return local @ turn.T + np.array([cx, cy])
+        return np.array([[self.x_mm[0], self.y_mm[0]], [self.x_mm[1], self.y_mm[0]],
+                         [self.x_mm[1], self.y_mm[1]], [self.x_mm[0], self.y_mm[1]]])
 
     def material_mask(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
         """Which points (cell centres, broadcast) hold material: inside the outline."""
         inside = ((xs >= self.x_mm[0]) & (xs <= self.x_mm[1])) & ((ys >= self.y_mm[0]) & (ys <= self.y_mm[1]))
+        if self.kind == "box" and self.rotation_z_deg:
+            cx, cy = self.centre_xy_mm
+            a = math.radians(self.rotation_z_deg)
+            u = (xs - cx) * math.cos(a) + (ys - cy) * math.sin(a)  # into the box's own axes
+            v = -(xs - cx) * math.sin(a) + (ys - cy) * math.cos(a)
+            return (np.abs(u) <= self.sides_mm[0] / 2.0) & (np.abs(v) <= self.sides_mm[1] / 2.0)
         if self.kind == "cylinder":
             radius = self.diameter_mm / 2.0
             cx, cy = sum(self.x_mm) / 2.0, sum(self.y_mm) / 2.0
@@ -73,6 +105,8 @@ class Blank:
         height = self.z_mm[1] - self.z_mm[0]
         if self.kind == "cylinder":
             return math.pi * (self.diameter_mm / 2.0) ** 2 * height
+        if self.kind == "box" and self.rotation_z_deg:
+            return self.sides_mm[0] * self.sides_mm[1] * height
         return (self.x_mm[1] - self.x_mm[0]) * (self.y_mm[1] - self.y_mm[0]) * height
 
 
@@ -121,7 +155,8 @@ def blank_from_text(text: str) -> Blank | None:
 
 def blank_from_setup(solid: Any, mcs_minus_wcs_mm: tuple[float, float, float]) -> Blank:
     """The machine set-up's clamped blank (``nck.workpiece`` Box or Cylinder, MCS) in the
-    workpiece coordinate system: shifted by the work offset ``mcs_minus_wcs_mm`` (no rotation)."""
+    workpiece coordinate system: shifted by the work offset ``mcs_minus_wcs_mm`` (a frame's
+    rotation is not taken in; a box clamped at an angle keeps its angle)."""
     dx, dy, dz = mcs_minus_wcs_mm
     if isinstance(solid, Cylinder):
         radius = solid.diameter_mm / 2.0
@@ -129,7 +164,16 @@ def blank_from_setup(solid: Any, mcs_minus_wcs_mm: tuple[float, float, float]) -
         return Blank("cylinder", (cx - radius, cx + radius), (cy - radius, cy + radius),
                      (bz, bz + solid.length_mm), solid.diameter_mm)
     low, high = solid.low_mcs, solid.high_mcs
-    return Blank("box", (low[0] - dx, high[0] - dx), (low[1] - dy, high[1] - dy), (low[2] - dz, high[2] - dz))
+    z_mm = (low[2] - dz, high[2] - dz)
+    sides = (high[0] - low[0], high[1] - low[1])
+    angle = float(solid.rotation_z_deg) % 360.0
+    if angle == 0.0:
+        return Blank("box", (low[0] - dx, high[0] - dx), (low[1] - dy, high[1] - dy), z_mm)
+    cx, cy = (low[0] + high[0]) / 2.0 - dx, (low[1] + high[1]) / 2.0 - dy
+    a = math.radians(angle)
+    half_x = (abs(sides[0] * math.cos(a)) + abs(sides[1] * math.sin(a))) / 2.0  # the turned box's extents
+    half_y = (abs(sides[0] * math.sin(a)) + abs(sides[1] * math.cos(a))) / 2.0
+    return Blank("box", (cx - half_x, cx + half_x), (cy - half_y, cy + half_y), z_mm, 0.0, None, angle, sides)
 
 
 def blank_around(points: np.ndarray, reach_mm: float) -> Blank:

@@ -17,6 +17,7 @@ import pytest
 from hmi.widgets.stock_view import (
     BLOCK_CUT,
     FEED,
+    OUTLINE,
     HIGHLIGHT,
     SECTION,
     StockPicture,
@@ -420,3 +421,17 @@ async def test_run_to_cursor_and_playing_at_a_speed(slots_dir: Path, monkeypatch
         assert screen.sim_playing
         await pilot.press("shift+f1")
         assert not screen.sim_playing
+
+
+def test_top_view_draws_the_turned_blank_turned() -> None:
+    """A square 20 x 20 turned by 45° (a set-up's box clamped at an angle): its outline runs
+    through the corners (±14.14, 0), (0, ±14.14), not along its extents' rectangle."""
+    half = 10.0 * math.sqrt(2.0)
+    picture = replace(_picture(), blank_x_mm=(-half, half), blank_y_mm=(-half, half), x0_mm=-half, y0_mm=-half,
+                      outline_xy=np.array([[half, 0.0], [0.0, half], [-half, 0.0], [0.0, -half]]))
+    image = render_pixels(picture, "XY", Viewport(0.0, 0.0, 0.5), 80, 80, overlay=False)
+    # pixel column c: x = (c - 39.5) * 0.5; row r: y = -(r - 39.5) * 0.5
+    outline = np.all(image == OUTLINE, axis=2)
+    assert outline[40, 68] or outline[39, 68]  # (14.25, -0.25) / (14.25, 0.25): the right corner
+    assert outline[30, 58]  # x 9.25, y 4.75: on the edge x + y = 14.14 (within half a pixel)
+    assert not outline[12, 12]  # (-13.75, 13.75): the extents' corner, outside the turned square

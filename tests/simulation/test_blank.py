@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from nck.ncdata import NcData, ToolEdge
@@ -80,3 +81,28 @@ def test_without_workpiece_the_clamped_blank_of_the_machine_set_up_is_the_stock(
 def test_a_hidden_blank_is_not_shown() -> None:
     result = simulate("P.MPF", SETUP_SLOT, data=_slot_data(hidden=True), resolution_mm=0.5)
     assert result.blank.kind == "path"
+
+
+def test_a_box_clamped_at_an_angle_keeps_its_angle() -> None:
+    """The set-up's box 80 x 20 turned by 90° about its centre stands 20 wide and 80 long; at
+    30° its corners (by hand: half sides 40, 10; cos 30° = 0.8660, sin 30° = 0.5) are
+    (-40, -10) → (-29.641, -28.660), (40, -10) → (39.641, 11.340) and their opposites about the
+    centre, and it holds 80 · 20 · height of material."""
+    from nck.simulation.blank import blank_from_setup
+    from nck.simulation.zmap import ZMap
+    from nck.workpiece import Box
+
+    upright = blank_from_setup(Box((100.0, 200.0, 0.0), (180.0, 220.0, 30.0), 90.0), (100.0, 200.0, 30.0))
+    assert upright.x_mm == pytest.approx((30.0, 50.0)) and upright.y_mm == pytest.approx((-30.0, 50.0))
+    turned = blank_from_setup(Box((100.0, 200.0, 0.0), (180.0, 220.0, 30.0), 30.0), (140.0, 210.0, 30.0))
+    assert turned.centre_xy_mm == pytest.approx((0.0, 0.0)) and turned.z_mm == (-30.0, 0.0)
+    corners = turned.outline_xy()
+    assert corners.ravel().tolist() == pytest.approx([-29.641, -28.660, 39.641, 11.340, 29.641, 28.660,
+                                                      -39.641, -11.340], abs=1e-3)
+    assert turned.x_mm == pytest.approx((-39.641, 39.641), abs=1e-3)
+    assert turned.volume_mm3 == pytest.approx(80.0 * 20.0 * 30.0)
+    # material along the box's own axis, none at the extents' corner
+    mask = turned.material_mask(np.array([30.0, 38.0, 0.0]), np.array([17.0, 0.0, 12.0]))
+    assert mask.tolist() == [True, False, False]  # (30, 17): 34.5 along, -0.3 across; (38, 0): 19 across; (0, 12): 10.4 across
+    zmap = ZMap(turned, 0.25)
+    assert float((zmap.heights > zmap.bottom_mm).sum()) * 0.25 ** 2 == pytest.approx(1600.0, rel=0.01)
