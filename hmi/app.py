@@ -633,7 +633,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         area = self.area_screen
         menu = area.current_menu() if area is not None else SoftkeyMenu.of()
         own_keys = area_keys(area) if area is not None and area is self.screen else []
-        title = area.AREA_TITLE.capitalize() if area is not None else ""
+        title = _(area.AREA_TITLE).capitalize() if area is not None else ""
         self.push_screen(HelpScreen(self.keymap, menu, own_keys, title))
 
     def action_alarm_cancel(self) -> None:

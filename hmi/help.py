@@ -17,10 +17,11 @@ from textual.widgets import Static
 
 from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
+from hmi.i18n import N_, _, data_text
 from hmi.keymap import Keymap, display_key
 from hmi.softkeys import SoftkeyMenu
 
-SCOPE_TITLES = {"op": "Operator panel", "mcp": "Machine control panel", "softkey": "Softkeys"}
+SCOPE_TITLES = {"op": N_("Operator panel"), "mcp": N_("Machine control panel"), "softkey": N_("Softkeys")}
 
 AreaKey = tuple[str, str]
 """One line of an area's keys: the keys in panel notation and what they do."""
@@ -47,25 +48,26 @@ def help_table(keymap: Keymap, menu: SoftkeyMenu, own_keys: list[AreaKey] | None
     then all keys of the keymap."""
     table = Table(expand=True, show_edge=False, box=None, padding=(0, 1))
     # wide enough for a key and its browser-safe alternative ("Ctrl+PgDn, Ctrl+Shift+Down")
-    table.add_column("Key", style="bold", width=26)
-    table.add_column("Panel key", width=18)
-    table.add_column("Meaning")
+    table.add_column(_("Key"), style="bold", width=26)
+    table.add_column(_("Panel key"), width=18)
+    table.add_column(_("Meaning"))
     for prefix, bar, fkey in (("h", menu.horizontal, "F"), ("v", menu.vertical, "Shift+F")):
         for index, softkey in enumerate(bar, start=1):
             if softkey is not None:
                 table.add_row(f"{fkey}{index}", f"{prefix.upper()}SK{index}",
-                              softkey.label.replace("\n", " "))
+                              _(softkey.label).replace("\n", " "))
     if own_keys:
         table.add_row("", "", "")
-        table.add_row("", "", Text(f"Keys of {area_title or 'this area'}", style="bold underline"))
+        heading = (_("Keys of {area}").format(area=area_title) if area_title else _("Keys of this area"))
+        table.add_row("", "", Text(heading, style="bold underline"))
         for key, description in own_keys:
             table.add_row(key, "", description)
     for scope in ("op", "mcp"):
         table.add_row("", "", "")
-        table.add_row("", "", Text(SCOPE_TITLES[scope], style="bold underline"))
+        table.add_row("", "", Text(_(SCOPE_TITLES[scope]), style="bold underline"))
         for binding in keymap.bindings:
             if binding.scope == scope:
-                table.add_row(binding.key_display, binding.panel, binding.label)
+                table.add_row(binding.key_display, binding.panel, data_text("key", binding.id, "label", binding.label))
     return table
 
 
@@ -85,7 +87,7 @@ class HelpScreen(AreaDialog[None]):
     def compose(self) -> ComposeResult:
         """One scrollable table."""
         with VerticalScroll(id="help-box"):
-            yield Static("HELP — keys in force   (F11 or F10 closes)", id="help-title")
+            yield Static(_("HELP — keys in force   (F11 or F10 closes)"), id="help-title")
             yield Static(help_table(self._keymap, self._menu, self._own_keys, self._area_title),
                          id="help-table")
 

@@ -10,7 +10,8 @@ folder ``data/lang/<code>/``:
   needed at run time; the result is the same on every machine.
 * ``<table>.toml`` — overlays of the data tables, keyed by the entry's identity with the
   same field names as the English entry: ``[alarm.10860] text = "…"`` in ``alarms.toml``,
-  ``[md.32000] title = "…"`` in ``md.toml``, ``[group.1] meaning = "…"`` in ``gcode.toml``.
+  ``[md.32000] title = "…"`` in ``md.toml``, ``[group.1] meaning = "…"`` in ``gcode.toml``,
+  ``[key."nc.reset"] label = "…"`` in ``keymap.toml``.
 
 Pure: reads files below ``data/`` only, keeps no state but caches of those files.
 """
@@ -30,7 +31,8 @@ SOURCE_LANGUAGE = "en"
 LANGUAGES: dict[str, str] = {"en": "English", "de": "Deutsch"}
 """Every language of the operator texts by code, with its name in its own language."""
 
-OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "group": "gcode.toml"}
+OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "group": "gcode.toml",
+                                  "key": "keymap.toml"}
 """Kind of data entry -> the overlay file in ``data/lang/<code>/`` that translates it."""
 
 

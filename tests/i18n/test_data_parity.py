@@ -26,7 +26,8 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
             md[str(entry["number"])] = {"title": entry["title"]}
     groups = {str(group["number"]): {"meaning": group["meaning"]}
               for group in read_table(data_path("gcode", "siemens.toml"))["group"]}
-    return {"alarm": alarms, "md": md, "group": groups}
+    keys = {str(key["id"]): {"label": key["label"]} for key in read_table(data_path("keymap.toml"))["key"]}
+    return {"alarm": alarms, "md": md, "group": groups, "key": keys}
 
 
 @pytest.mark.parametrize("code", OTHER_LANGUAGES)

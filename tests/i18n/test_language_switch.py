@@ -4,14 +4,18 @@ access level and the control's date and time (Password view, vertical softkey 5)
 
 from __future__ import annotations
 
+import io
 import json
 from pathlib import Path
 
+from rich.console import Console
 from textual.widgets import Static
 
 from hmi.app import make_app
+from hmi.help import help_table
+from hmi.keymap import default_keymap
 from hmi.i18n import language, set_language
-from hmi.softkeys import SoftkeyCell
+from hmi.softkeys import Softkey, SoftkeyCell, SoftkeyMenu
 from tests.hmi.conftest import SIZE
 
 
@@ -90,3 +94,27 @@ async def test_palette_finds_block_search_in_german(tmp_path: Path) -> None:
             assert app.current_mode == "machine"
     finally:
         app.nc_session.quit()
+
+
+
+async def test_key_help_in_german(tmp_path: Path) -> None:
+    """F11 in German: the overlay's title is German."""
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False, lang="de")
+    try:
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("f11")
+            await pilot.pause()
+            assert "HILFE" in str(app.screen.query_one("#help-title", Static).render())
+    finally:
+        app.nc_session.quit()
+
+
+def test_key_help_table_in_german() -> None:
+    """The F11 table in German: softkey labels from the catalogue, key labels from
+    data/lang/de/keymap.toml, section titles."""
+    set_language("de")
+    menu = SoftkeyMenu.of([Softkey("machine.search", "Block\nsearch", "noop")])
+    console = Console(width=200, record=True, file=io.StringIO())
+    console.print(help_table(default_keymap(), menu))
+    shown = console.export_text()
+    assert "Satzsuchlauf" in shown and "Betriebsart JOG" in shown and "Bedientafel" in shown
