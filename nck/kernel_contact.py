@@ -237,6 +237,10 @@ class ContactWatch:
             material.cut(body, start, end)  # goes on cutting: no new event
             return
         t = material.first_contact(body, start, end)
+        if t == 0.0 and "blank" not in touching:
+            before_gap = material.clearance(body, start)
+            if before_gap >= -SURFACE_SLACK_MM and material.clearance(body, end) > before_gap:
+                return  # on the surface (not seen arriving) and moving off
         if t is None:
             leave_mm = Z_GRID_MM if isinstance(material, TurnedBar) else 0.0  # a turned step's slack
             if material.clearance(body, end) > leave_mm:

@@ -50,6 +50,8 @@ MIN_CELL_MM = 0.05
 CELL_STEP_MM = 0.005
 PENDING_LIMIT = 256
 """Cuts kept before they are swept into the Z-map (all are swept before any question)."""
+TOUCH_MM = 1e-9
+"""A gap this small at a computed point of contact is rounding: touching."""
 NEAR_MM = 1.0
 """How far around a point the columns are looked at for :meth:`MilledBlank.clearance`."""
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
@@ -245,9 +247,11 @@ class MilledBlank:
         entered = ~np.isnan(hits)
         if not entered.any():
             return None
-        # A column entered before the solid counts from the solid's entry if it still overlaps there.
+        # A column entered before the solid counts from the solid's entry if it still overlaps
+        # there (the gap at a computed entry is zero to rounding: TOUCH_MM).
         candidates = np.maximum(hits[entered], entry)
-        deep = columns.select(entered).gap(body, _along(start, end, candidates)) + depth_mm <= 0.0
+        gaps = columns.select(entered).gap(body, _along(start, end, candidates)) + depth_mm
+        deep = (hits[entered] >= entry) | (gaps <= TOUCH_MM)
         return float(candidates[deep].min()) if deep.any() else None
 
 def _continues(start: Point, middle: Point, end: Point) -> bool:

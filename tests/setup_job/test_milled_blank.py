@@ -14,10 +14,12 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from nck.commands import Accepted, WriteMachineSetup
-from nck.contact import CUTTER, ToolBody
+from nck.contact import BALL, CUTTER, ToolBody, point_along
 from nck.milled_blank import MAX_CELLS, MilledBlank, cell_size_mm
 from nck.workpiece import Box, MachineSetup, default_machine_setup
 from tests.setup_job.test_contact_kernel import events, kernel, mda
@@ -130,3 +132,82 @@ def test_first_contact_with_what_is_left_is_found_exactly_in_one_step() -> None:
     assert milled.first_contact(tool, (0.0, 0.0, -210.0), (0.0, 0.0, -229.0)) is None
     assert milled.first_contact(tool, (0.0, 0.0, -210.0), (0.0, 0.0, -232.0)) == pytest.approx(20.001 / 22.0, abs=FLOAT32_MM / 22.0)
     assert milled.first_contact(tool, (12.0, 0.0, -210.0), (12.0, 0.0, -232.0)) == pytest.approx(10.0 / 22.0, abs=1e-12)
+
+
+def _oracle_overlaps(milled: MilledBlank, body: ToolBody, start: tuple, end: tuple, ts: np.ndarray,
+                     slack_mm: float = 0.0) -> np.ndarray:
+    """Independent: at which parameters ``ts`` of the step does the tool overlap a column of what
+    is left (a cell's square clipped to the block, from the bottom to the cell's height; uncut:
+    the top)? Every cell within 1 mm of the tool's reach along the step is looked at; the tool
+    counts ``slack_mm`` larger (negative: it must be that deep in)."""
+    zmap, block = milled.zmap, milled.blank
+    res = zmap.resolution_mm
+    (lx, ly, bottom), (hx, hy, top) = block.low_mcs, block.high_mcs
+    reach = body.radius_mm + 1.0
+    radius = body.radius_mm + slack_mm
+    ix = np.arange(max(int((min(start[0], end[0]) - reach - zmap.x0_mm) / res), 0),
+                   min(int((max(start[0], end[0]) + reach - zmap.x0_mm) / res) + 1, zmap.nx))
+    iy = np.arange(max(int((min(start[1], end[1]) - reach - zmap.y0_mm) / res), 0),
+                   min(int((max(start[1], end[1]) + reach - zmap.y0_mm) / res) + 1, zmap.ny))
+    if len(ix) == 0 or len(iy) == 0:
+        return np.zeros(len(ts), dtype=bool)
+    x0 = np.clip(zmap.x0_mm + ix * res, lx, hx)[None, :]
+    x1 = np.clip(zmap.x0_mm + (ix + 1) * res, lx, hx)[None, :]
+    y0 = np.clip(zmap.y0_mm + iy * res, ly, hy)[:, None]
+    y1 = np.clip(zmap.y0_mm + (iy + 1) * res, ly, hy)[:, None]
+    cells = np.ix_(iy, ix)
+    heights = np.where(zmap.heights[cells] < zmap.initial[cells], zmap.heights[cells].astype(np.float64), top)
+    result = []
+    for t in ts:
+        x, y, z = point_along(start, end, float(t))
+        dx = np.maximum(np.maximum(x0 - x, x - x1), 0.0)
+        dy = np.maximum(np.maximum(y0 - y, y - y1), 0.0)
+        if body.shape == CUTTER:
+            inside = ((dx * dx + dy * dy <= radius ** 2) & (z <= heights + slack_mm)
+                      & (z + body.length_mm >= bottom - slack_mm))
+        else:
+            dz = np.maximum(np.maximum(bottom - z, z - heights), 0.0)
+            inside = dx * dx + dy * dy + dz * dz <= radius ** 2
+        result.append(bool((inside & (heights > bottom)).any()))
+    return np.array(result)
+
+
+STEPS = dict(cut_x=st.floats(-8.0, 8.0), cut_y=st.floats(-8.0, 8.0), depth=st.floats(0.5, 6.0),
+             start=st.tuples(st.floats(-14.0, 14.0), st.floats(-14.0, 14.0), st.floats(-12.0, 4.0)),
+             move=st.tuples(st.floats(-6.0, 6.0), st.floats(-6.0, 6.0), st.floats(-6.0, 6.0)),
+             probe=st.booleans())
+
+
+@settings(max_examples=12, deadline=None)
+@given(**STEPS)
+def test_no_contact_with_what_is_left_is_ever_missed(cut_x, cut_y, depth, start, move, probe) -> None:
+    check_first_contact(cut_x, cut_y, depth, start, move, probe)
+
+
+@pytest.mark.fuzz
+@settings(max_examples=300, deadline=None)
+@given(**STEPS)
+def test_first_contact_fuzz(cut_x, cut_y, depth, start, move, probe) -> None:
+    check_first_contact(cut_x, cut_y, depth, start, move, probe)
+
+
+def check_first_contact(cut_x, cut_y, depth, start, move, probe) -> None:
+    """Property (issue 22: "a contact is never missed because a step jumped over the surface"):
+    after a slot is cut into a 20 × 20 × 10 block, for any step of a cutter or a probe the first
+    contact found is where an independent check of every cell first sees the tool overlap what is
+    left (checked at 401 points along the step), and no step that overlaps it is let through."""
+    block = Box((-10.0, -10.0, -10.0), (10.0, 10.0, 0.0))
+    milled = MilledBlank.of(block)
+    cutter = ToolBody(CUTTER, 3.0, 50.0)
+    milled.cut(cutter, (cut_x, cut_y, 5.0), (cut_x, cut_y, -depth))  # a hole …
+    milled.cut(cutter, (cut_x, cut_y, -depth), (cut_x + 4.0, cut_y - 2.0, -depth))  # … and a slot from it
+    body = ToolBody(BALL, 2.0) if probe else ToolBody(CUTTER, 2.5, 50.0)
+    end = (start[0] + move[0], start[1] + move[1], start[2] + move[2])
+    found = milled.first_contact(body, start, end)
+    samples = np.linspace(0.0, 1.0, 401)
+    seen = _oracle_overlaps(milled, body, start, end, samples, -1e-9)  # 1e-9 mm into what is left
+    if seen.any():
+        assert found is not None and found <= samples[seen.argmax()] + 1e-9
+    if found is not None:  # touching where it was found (to rounding)
+        assert _oracle_overlaps(milled, body, start, end, np.array([found]), 1e-9)[0]
+        assert not seen[samples < found - 1e-6].any()
