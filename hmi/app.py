@@ -56,7 +56,7 @@ from hmi.bridge import NckBridge
 from hmi.browser_driver import PanelBrowserDriver
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
-from hmi.exercise_run import ClassroomHost
+from hmi.exercise_run import EXAM_HELP_LIMITED, ClassroomHost
 from hmi.alarm_help import AlarmHelpScreen
 from hmi.i18n import LANGUAGES, N_, _, language, set_language
 from hmi.help import HelpScreen, area_keys
@@ -473,7 +473,10 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         self.show_alarm_help(message.number, message.text)
 
     def show_alarm_help(self, number: int, text: str = "") -> None:
-        """Open the help of alarm ``number`` (``text``: as displayed, with its values)."""
+        """Open the help of alarm ``number`` (``text``: as displayed, with its values); none in an exam."""
+        if self.exam_running:
+            self.set_hint(EXAM_HELP_LIMITED)
+            return
         if isinstance(self.screen, AlarmHelpScreen):
             return
         self.push_screen(AlarmHelpScreen(number, text))
@@ -553,6 +556,13 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
             handler(slot_id)
 
     # -- command palette ---------------------------------------------------------------------
+    def action_command_palette(self) -> None:
+        """Ctrl+P: the command palette (it finds any softkey by name: not in an exam)."""
+        if self.exam_running:
+            self.set_hint(EXAM_HELP_LIMITED)
+            return
+        super().action_command_palette()
+
     def get_system_commands(self, screen: Screen) -> Any:
         """The palette's system commands: theme, keys (the F11 help), screenshot, quit (Ctrl+Q's way)."""
         yield SystemCommand("Theme", "Change the colour theme", self.action_change_theme)

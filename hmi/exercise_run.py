@@ -23,6 +23,9 @@ from nck.status import NckStatus
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
+EXAM_HELP_LIMITED = "Exam: help is limited to the key overview (F11)"
+"""Said instead of opening the command palette or an alarm's help during an exam."""
+
 
 class ExerciseRun:
     """The exercise on the panel: its progress, its private session and the trainee's put aside.
@@ -124,6 +127,12 @@ class ClassroomHost:
     """The side window's text ("" while no exercise runs)."""
     exercise_report_dir: Path | None = None
     """Where reports go (None: ``exercise_reports`` in the trainee's data directory, else a temporary folder)."""
+
+    @property
+    def exam_running(self) -> bool:
+        """An exam runs: no hints, the access level fixed (the set-up locks it in the kernel's
+        retained access state), help limited to the key overview."""
+        return self.exercise_run is not None and bool(self.exercise_run.exercise.exam)
 
     def start_exercise(self, exercise: Any) -> str:
         """Load ``exercise``'s set-up into a private data directory and run the panel on it.

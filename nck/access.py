@@ -202,6 +202,17 @@ class AccessDenied(AccessError):
         )
 
 
+ACCESS_LOCKED_TEXT = "Exam: the access level is fixed (keyswitch and passwords have no effect)"
+"""What the panel says when the keyswitch or a password is tried during an exam."""
+
+
+class AccessLocked(AccessError):
+    """The access level is fixed (an exam): keyswitch and passwords are refused."""
+
+    def __init__(self) -> None:
+        super().__init__(ACCESS_LOCKED_TEXT)
+
+
 class PasswordError(AccessError):
     """A password was wrong, too long, empty or already used for another level."""
 
@@ -298,6 +309,9 @@ class AccessState:
     password_level: int | None = None
     password_hashes: dict[int, PasswordHash] = field(default_factory=default_password_hashes)
     failed_attempts: int = 0  # wrong passwords in a row (the doors wait retry_delay_s of it)
+    locked: bool = False
+    """An exam's fixed access level (issue 26): keyswitch and passwords change nothing until
+    the exam's private data directory is left. Set by the exercise set-up, never by a command."""
 
     def to_json(self) -> dict[str, object]:
         """Return JSON-ready data (hashes only)."""
@@ -306,6 +320,7 @@ class AccessState:
             "password_level": self.password_level,
             "passwords": {str(k): v.to_json() for k, v in sorted(self.password_hashes.items())},
             "failed_attempts": self.failed_attempts,
+            "locked": self.locked,
         }
 
     @classmethod
@@ -330,7 +345,10 @@ class AccessState:
         failed = data.get("failed_attempts", 0)
         if isinstance(failed, bool) or not isinstance(failed, int) or not 0 <= failed <= 1_000_000:
             raise ValueError("bad count of failed password attempts")
-        return cls(position, level, hashes, failed)
+        locked = data.get("locked", False)
+        if not isinstance(locked, bool):
+            raise ValueError("bad access lock")
+        return cls(position, level, hashes, failed, locked)
 
 
 def keyswitch_from_bits(bits: tuple[bool, bool, bool, bool]) -> int:
@@ -371,6 +389,10 @@ class AccessControl:
             return self.state.password_level
         return self.keyswitch_level
 
+    def _refuse_when_locked(self) -> None:
+        if self.state.locked:
+            raise AccessLocked()
+
     def _note(self, before: int, reason: str) -> None:
         if self.level != before:
             self.log.append(f"access level {before} -> {self.level} ({reason})")
@@ -379,6 +401,7 @@ class AccessControl:
         """Turn the keyswitch to ``position`` 0..3 (ValueError otherwise)."""
         if position not in KEYSWITCH_POSITIONS:
             raise ValueError(f"keyswitch position {position} does not exist (0..3)")
+        self._refuse_when_locked()
         before = self.level
         self.state.keyswitch_position = position
         self._note(before, f"keyswitch {position}")
@@ -413,6 +436,7 @@ class AccessControl:
     def enter_password(self, password: str) -> int:
         """Set a password: return the new level, or raise PasswordError (level unchanged;
         a wrong password counts as a failed attempt)."""
+        self._refuse_when_locked()
         normalize_password(password)
         level = self.try_password(password)
         if level is None:
@@ -424,6 +448,7 @@ class AccessControl:
 
     def delete_password(self) -> None:
         """Delete the active password: back to the keyswitch level."""
+        self._refuse_when_locked()
         before = self.level
         self.state.password_level = None
         self._note(before, "password deleted")
@@ -436,6 +461,7 @@ class AccessControl:
         """
         if level not in PASSWORD_LEVELS:
             raise PasswordError(f"only levels 1..3 have passwords, not {level}")
+        self._refuse_when_locked()
         if self.level > level:
             raise AccessDenied(f"changing the password of level {level}", level, self.level)
         normalize_password(new_password)

@@ -10,7 +10,7 @@ File format::
     title = "Power on: reference the axes"
     level = "basic"                     # free text shown in the list
     machine = "mill3"                   # optional (default machine)
-    exam = false                        # true: no hints shown
+    exam = false                        # true: an exam: no hints, access level locked, help limited to F11
     [setup]
     keyswitch = 0                       # 0..3 (level 7..4)
     programs = ["DRILL_FLANGE.MPF"]     # training programs copied from data/programs

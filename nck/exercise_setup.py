@@ -49,6 +49,7 @@ def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
         current = MachineSetup(solid, current.reference, current.hidden)
     data.machine_setup = MachineSetup(current.blank, current.reference, bool(setup.get("blank_hidden", False)))
     session.retained.access.keyswitch_position = int(setup.get("keyswitch", 0))
+    session.retained.access.locked = exercise.exam  # an exam: the trainee cannot change the level
     for name in setup.get("programs", []):
         session.files.save(f"MPF/{name}", data_path("programs", name).read_text(encoding="utf-8"))
     for name, text in setup.get("program_texts", {}).items():

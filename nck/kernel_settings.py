@@ -14,7 +14,8 @@ from __future__ import annotations
 from typing import Any
 
 from nck import commands as cmd
-from nck.access import ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessState, Action, action_for_write
+from nck.access import (ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessLocked, AccessState, Action,
+                        action_for_write)
 from nck.alarms import AlarmServer
 from nck.canon import Motion
 from nck.channel import ACTIVE, RESET
@@ -138,9 +139,11 @@ class ControlSettings(DataWrites):
     def _set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
         if command.position not in (0, 1, 2, 3):
             return Rejected("keyswitch positions are 0 … 3")
+        try:
+            self.access.set_keyswitch(command.position)
+        except AccessLocked as error:
+            return Rejected(str(error))
         self._keyswitch = command.position
-        if self._access is not None:
-            self._access.set_keyswitch(command.position)
         return Accepted()
 
     def _enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
@@ -162,7 +165,10 @@ class ControlSettings(DataWrites):
 
     def _delete_password(self, command: cmd.DeletePassword) -> SubmitResult:
         if self._access is not None:
-            self._access.delete_password()
+            try:
+                self._access.delete_password()
+            except AccessLocked as error:
+                return Rejected(str(error))
         return Accepted()
 
     def _apply_skip_levels(self, interp: Interpreter) -> None:
