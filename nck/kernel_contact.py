@@ -197,8 +197,8 @@ class ContactWatch:
             return  # the tool moved less than its gap to every solid: nothing can be touched
         material = self._material()
         for name, solid in self.data.machine_setup.solids():
-            if (isinstance(material, MilledBlank) and name in self._contact.touching and body.shape != BALL
-                    and self._crash_number() is None):
+            if (isinstance(material, MilledBlank) and name == "blank" and name in self._contact.touching
+                    and body.shape != BALL and self._crash_number() is None):
                 material.cut(body, start, end)  # goes on cutting (no new event) until it is clear of the blank
                 if clearance(body, solid, end) > 0.0:
                     self._contact.touching.discard(name)

@@ -211,3 +211,14 @@ def check_first_contact(cut_x, cut_y, depth, start, move, probe) -> None:
     if found is not None:  # touching where it was found (to rounding)
         assert _oracle_overlaps(milled, body, start, end, np.array([found]), 1e-9)[0]
         assert not seen[samples < found - 1e-6].any()
+
+
+def test_scratching_the_reference_block_cuts_nothing_out_of_the_blank() -> None:
+    """The reference block (X 150…190, Y -20…20, top -200) is not the blank: a cutter going on at
+    feed on it leaves the blank whole, so a rapid into the blank after it is still a crash."""
+    nck = kernel()
+    mda(nck, "T2 D1 M6\nM3 S1000\nG0 X170 Y0 Z-190\nG1 Z-201 F500\nG1 X0 Y0 F2000\n")  # through the air
+    assert alarm_numbers(nck) == []
+    mda(nck, "G0 Z-225\n")
+    assert alarm_numbers(nck) == [90002]
+    assert events(nck)[-1].position_mcs["Z"] == pytest.approx(-120.0, abs=1e-6)
