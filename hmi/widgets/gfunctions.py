@@ -9,7 +9,7 @@ from rich.table import Table
 from rich.text import Text
 from textual.widgets import Static
 
-from nck import ISO_MAIN_GROUPS_M, iso_table, localized
+from nck import ISO_MAIN_GROUPS_M, SOURCE_LANGUAGE, iso_table, localized
 from nck.queries import load_toml
 
 from hmi.i18n import _, language
@@ -47,9 +47,10 @@ def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | No
 
     Siemens groups (``meanings`` None) say what the active code does where the table knows it
     (the group's meaning otherwise): the same table as the editor's word help
-    (:func:`hmi.word_help.code_meaning`).
+    (:func:`hmi.word_help.code_meaning`). The codes' meanings exist in English only so far:
+    in another language the (translated) group meaning stands there.
     """
-    siemens = meanings is None
+    siemens = meanings is None and language() == SOURCE_LANGUAGE
     meanings = group_meanings() if meanings is None else meanings
     numbers = sorted(set(meanings) | set(gcodes))
     half = (len(numbers) + 1) // 2

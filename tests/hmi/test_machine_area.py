@@ -31,7 +31,7 @@ async def test_softkey_views_and_menu_recall(fake_app: HmiApp) -> None:
         await pilot.pause()
         assert fake_app.screen.query_one("#mach-views").current == "view-gfunc"
         assert fake_app.screen.query_one("#sk-h2").has_class("-active")
-        assert "plane selection" in screen_text(fake_app)
+        assert "working plane X/Y" in screen_text(fake_app)  # G17's meaning (issue 27: one table)
         await pilot.press("f10")
         await pilot.pause()
         assert fake_app.screen.query_one("#mach-views").current == "view-jog"

@@ -68,7 +68,7 @@ async def test_editor_message_line_shows_the_meaning(data_dir: Path) -> None:
         await burst(pilot, "alt+n", "f2", *"words", "enter")
         screen = app.screen
         assert screen.AREA_ID == "program"
-        await burst(pilot, "ctrl+end", *"N10 G01 X10", "enter", *"N20 M30", "up", "home")
+        await burst(pilot, "ctrl+end", *"N10 G01 X10 F100", "enter", *"N20 M30", "up", "home")
         message = lambda: str(screen.query_one("#prog-message").render())  # noqa: E731
         await burst(pilot, "right", "right", "right", "right", "right")
         assert "G1: straight line at the feedrate F — group 1 (modal motion commands), modal" in message()
