@@ -212,7 +212,9 @@ class AreaBase(BindingsInPlace):
         self.press_softkey(message.slot_id)
 
     async def on_panel_key_pressed(self, message: PanelKey.Pressed) -> None:
-        """A click on a panel key (browser tab) does what the key does."""
+        """A click on a panel key (browser tab) does what the key does, and an exercise
+        records it as that key (the instructor's replay shows the same as for a key press)."""
+        self.hmi.exercise_key(message.binding.keys.split(",")[0].strip())
         await self.app.run_action(message.binding.action)
 
     # -- quitting --------------------------------------------------------------------------

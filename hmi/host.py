@@ -41,6 +41,9 @@ class AreaHost(Protocol):
     def set_hint(self, text: str) -> None:
         """Write ``text`` on the dialog line of the current area."""
 
+    def exercise_key(self, key: str) -> None:
+        """Record ``key`` in the running exercise (nothing while none runs)."""
+
     def start_exercise(self, exercise: Any) -> str:
         """Run the panel on ``exercise``'s private set-up; return what to tell the trainee."""
 

@@ -18,7 +18,9 @@ from hmi.app import HmiApp
 from hmi.help import HelpScreen
 from hmi.keymap import default_keymap, display_key
 from hmi.panel_keys import PanelKey, PanelKeys
+from nck.exercise import load_exercises
 from tests.burst import burst
+from tests.hmi.test_exercises_panel import trainee_app
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck
 
@@ -98,3 +100,17 @@ def test_docs_keymap_names_every_key_and_the_browser_alternatives() -> None:
     browser_part = doc.split("## In a browser", 1)[1]
     for kept, alternative in BROWSER_SAFE.values():
         assert display_key(alternative) in browser_part
+
+
+async def test_an_exercise_records_a_clicked_panel_key_as_its_key(in_browser: None, tmp_path: Path) -> None:
+    app = trainee_app(tmp_path)
+    exercise = {e.exercise_id: e for e in load_exercises()}["01_power_on_reference"]
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.start_exercise(exercise).startswith("Exercise started")
+        await pilot.pause()
+        await pilot.click("#pk-function-ref")
+        await pilot.click("#pk-axis-select_1")
+        await pilot.pause()
+        keys = [e["key"] for e in app.exercise_run.progress.events if e["kind"] == "key"]
+        assert keys == ["alt+r", "alt+x"]  # as if typed (keymap: REF POINT, axis X)
+        app.end_exercise()
