@@ -43,6 +43,7 @@ from textual.driver import Driver
 from textual.drivers.linux_driver import LinuxDriver
 from textual.drivers.web_driver import WebDriver
 from textual.screen import Screen
+from textual.theme import Theme
 
 from nck import commands as cmd
 from nck.commands import Accepted, SubmitResult
@@ -290,6 +291,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         self.show_size_fit(*self.size)
         self.latest_status = self.bridge.status
         self.bridge.attach(self)
+        self._apply_kept_theme()
         if self.nc_session is not None and self.bridge.realtime:
             self.set_interval(RETAINED_SAVE_PERIOD_S, self.save_nc_data, name="nc-data-save")
         self.switch_mode("machine")
@@ -374,6 +376,19 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
             self.nc_session.save()
         except OSError as exc:  # a full or read-only disk: say so, keep running
             self.set_hint(f"NC data could not be saved: {exc}")
+
+    # -- colour theme ---------------------------------------------------------------------------
+    def _apply_kept_theme(self) -> None:
+        """The theme kept in the data directory; from now on every change of theme is kept."""
+        if self.nc_session is not None and self.nc_session.theme in {theme.name for theme in HMI_THEMES}:
+            self.theme = self.nc_session.theme
+        self.theme_changed_signal.subscribe(self, self._keep_theme)
+
+    def _keep_theme(self, theme: Theme) -> None:
+        """A theme was chosen (Setup or the palette): keep it for the next start (atomic write)."""
+        if self.nc_session is not None and self.nc_session.theme != theme.name:
+            self.nc_session.theme = theme.name
+            self.save_nc_data()
 
     # -- language -------------------------------------------------------------------------------
     def select_language(self, code: str) -> str:

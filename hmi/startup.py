@@ -58,6 +58,15 @@ class NcDataSession:
     def language(self, code: str) -> None:
         self.session.language = code
 
+    @property
+    def theme(self) -> str:
+        """The colour theme kept in the data directory ("" for the default)."""
+        return str(self.session.theme)
+
+    @theme.setter
+    def theme(self, name: str) -> None:
+        self.session.theme = name
+
     def save(self) -> list[str]:
         """Write the retained sections that changed (alarm log included); return their names."""
         if self._copy is not None and getattr(self._copy, "discarded", False):

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from textual.theme import Theme
 
+from hmi.i18n import N_
+
 SINUMERIK_THEME = Theme(
     name="sinumerik",
     primary="#f39200",  # orange: active softkeys, focus, the selected block
@@ -91,3 +93,10 @@ HIGH_CONTRAST_THEME = Theme(
 
 HMI_THEMES: tuple[Theme, ...] = (SINUMERIK_THEME, OPERATE_LIGHT_THEME, HIGH_CONTRAST_THEME)
 """The themes offered by the palette's Theme command, the default first."""
+
+THEME_LABELS: dict[str, str] = {
+    SINUMERIK_THEME.name: N_("Dark\n(default)"),
+    OPERATE_LIGHT_THEME.name: N_("Light"),
+    HIGH_CONTRAST_THEME.name: N_("High\ncontrast"),
+}
+"""The softkey labels of the themes in Setup ▸ Password ▸ Change theme."""

@@ -17,7 +17,7 @@ that a damaged file costs only that section:
 ``alarm_log``      the alarm log (bounded)
 ``machine_setup``  what is clamped: blank, reference block, the instructor's hidden switch
 ``manual_settings`` retraction plane, safety distance, measuring feed of manual mode (JOG Settings)
-``display``        the language of the operator texts (Setup > Language, ``hmi --lang``)
+``display``        the language of the operator texts (Setup > Language, ``hmi --lang``) and the colour theme
 =================  ==========================================================
 
 File format (version 1)::
@@ -52,6 +52,7 @@ import dataclasses
 import json
 import math
 import os
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping
@@ -124,6 +125,8 @@ class RetainedData:
     alarm_log: list[dict[str, Any]] = field(default_factory=list)
     language: str = SOURCE_LANGUAGE
     """The language of the operator texts (a code of :data:`nck.translations.LANGUAGES`)."""
+    theme: str = ""
+    """The panel's colour theme by name (the HMI knows the names); "" for its default."""
 
 
 # ---------------------------------------------------------------- validators
@@ -382,11 +385,23 @@ def _load_machine_setup(data: Mapping[str, Any], rd: RetainedData) -> None:
 
 
 def _dump_display(rd: RetainedData) -> dict[str, Any]:
-    return {"language": rd.language}
+    return {"language": rd.language, "theme": rd.theme}
+
+
+THEME_NAME = re.compile(r"[a-z0-9-]{0,40}")
+"""What a theme name may look like (the HMI's names: ``sinumerik``, ``operate-light`` …)."""
+
+
+def check_theme(name: str) -> str:
+    """``name`` if it can be a theme's name (ValueError otherwise)."""
+    if not THEME_NAME.fullmatch(name):
+        raise ValueError(f"{name!r} is not a theme name")
+    return name
 
 
 def _load_display(data: Mapping[str, Any], rd: RetainedData) -> None:
     rd.language = check_language(_text(data["language"]))
+    rd.theme = check_theme(_text(data.get("theme", "")))  # files written before the theme was kept
 
 
 SECTIONS: dict[str, tuple[Callable[[RetainedData], dict], Callable[[Mapping, RetainedData], None]]] = {
@@ -443,7 +458,8 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     if version != FORMAT_VERSION:
         raise BadFile(f"format version {version!r} is not supported (this program reads {FORMAT_VERSION})")
     # loaders assign new objects (never mutate), so a shallow copy keeps rd untouched on error
-    scratch = RetainedData(copy.copy(rd.ncdata), rd.md_by_machine, rd.access, rd.alarm_log, rd.language)
+    scratch = RetainedData(copy.copy(rd.ncdata), rd.md_by_machine, rd.access, rd.alarm_log, rd.language,
+                           rd.theme)
     try:
         SECTIONS[name][1](_mapping(document["data"]), scratch)
     except (KeyError, TypeError, ValueError, AttributeError, DataError) as exc:
@@ -454,6 +470,7 @@ def parse_section(name: str, raw: bytes, rd: RetainedData) -> None:
     rd.access = scratch.access
     rd.alarm_log = scratch.alarm_log
     rd.language = scratch.language
+    rd.theme = scratch.theme
 
 
 def _read_section_file(path: Path) -> bytes:
@@ -556,6 +573,15 @@ class Session:
     @language.setter
     def language(self, code: str) -> None:
         self.retained.language = check_language(code)
+
+    @property
+    def theme(self) -> str:
+        """The panel's colour theme kept in the data directory ("" for the default)."""
+        return self.retained.theme
+
+    @theme.setter
+    def theme(self, name: str) -> None:
+        self.retained.theme = check_theme(name)
 
     @property
     def alarm_log(self) -> list[dict[str, Any]]:
@@ -701,7 +727,8 @@ class Session:
     def _checked_sections(self, sections: Mapping[str, Any], include_access: bool,
                           level: int) -> dict[str, str]:
         """The file text of every archive section to import, checked as writes at ``level``."""
-        scratch = RetainedData(access=self.retained.access, language=self.retained.language)
+        scratch = RetainedData(access=self.retained.access, language=self.retained.language,
+                               theme=self.retained.theme)
         for name, data in sections.items():
             if name not in SECTIONS:
                 raise ArchiveError(f"unknown section {name!r}")
@@ -716,7 +743,7 @@ class Session:
             self.ncdata, current_md, scratch.ncdata, imported_md, names, self.machine,
             lambda data, store: DataWriter(data, store, self.access, level=level))
         result = RetainedData(written, {**scratch.md_by_machine, machine: md_changes}, scratch.access,
-                              scratch.alarm_log, scratch.language)
+                              scratch.alarm_log, scratch.language, scratch.theme)
         others = set(scratch.md_by_machine) | set(self.retained.md_by_machine) if "machine_data" in names else set()
         for other in others - {machine}:  # the data of other machines: the same levels by datum
             values = scratch.md_by_machine.get(other, {})

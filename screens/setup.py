@@ -33,6 +33,7 @@ from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
 from hmi.i18n import LANGUAGES, N_, _, data_text, language
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
+from hmi.theme import HMI_THEMES, THEME_LABELS
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
 )
@@ -66,6 +67,19 @@ def language_text(active: str) -> Text:
         text.append(f"   {mark} {name}\n", style="bold" if code == active else "")
     text.append("\n   " + _("Choose with the vertical softkeys: every screen changes to the language "
                              "at once,") + "\n   " + _("and the choice is kept for the next start.") + "\n",
+                style="dim")
+    return text
+
+
+def theme_text(active: str) -> Text:
+    """The colour theme selection window: every theme, the one shown now marked."""
+    text = Text(no_wrap=True, end="")
+    text.append(" " + _("Colour theme") + "\n\n", style="bold underline")
+    for theme in HMI_THEMES:
+        mark = "●" if theme.name == active else "○"
+        label = " ".join(_(THEME_LABELS[theme.name]).split())
+        text.append(f"   {mark} {label}  ({theme.name})\n", style="bold" if theme.name == active else "")
+    text.append("\n   " + _("Choose with the vertical softkeys; the choice is kept for the next start.") + "\n",
                 style="dim")
     return text
 
@@ -165,7 +179,12 @@ class SetupScreen(AreaBase):
                 Softkey("setup.pw.delete", "Delete\npassword", "delete_password"),
                 None,
                 Softkey("setup.language", "Change\nlanguage", "show_view('language')"),
+                Softkey("setup.theme", "Change\ntheme", "show_view('theme')"),
             ]
+        if self.view == "theme":
+            return [Softkey(f"setup.theme.{theme.name}", THEME_LABELS[theme.name], f"select_theme('{theme.name}')",
+                            active=lambda s, name=theme.name: s.app.theme == name)
+                    for theme in HMI_THEMES]
         if self.view == "language":
             return [Softkey(f"setup.language.{code}", name, f"select_language('{code}')",
                             active=lambda s, code=code: language() == code)
@@ -203,6 +222,12 @@ class SetupScreen(AreaBase):
     def action_select_language(self, code: str) -> None:
         """A language softkey: the panel's texts in that language from now on (kept at restart)."""
         self.say(self.hmi.select_language(code))
+
+    def action_select_theme(self, name: str) -> None:
+        """A theme softkey: the panel in that colour theme from now on (kept at restart)."""
+        self.app.theme = name
+        self.refresh_view()
+        self.refresh_softkeys()
 
     def action_next_axis(self, step: int) -> None:
         """Axis + / Axis −."""
@@ -417,6 +442,8 @@ class SetupScreen(AreaBase):
                                                              self.access_level)
         elif self.view == "language":
             show_text(self.query_one("#setup-access", Static), language_text(language()))
+        elif self.view == "theme":
+            show_text(self.query_one("#setup-access", Static), theme_text(self.app.theme))
         else:
             show_text(self.query_one("#setup-access", Static), self.access_text())
 
