@@ -30,6 +30,7 @@ with it (our choice).
 from __future__ import annotations
 
 import math
+from array import array
 from dataclasses import dataclass, field
 from typing import Any
 import numpy as np
@@ -210,14 +211,18 @@ class PathRecorder:
         self.spindle_on = False
         self.speed_rpm: float | None = None
         self.feed: float | None = None  # the last programmed F (modal, shown with G0 too)
-        self.states: list[ModalState] = []
+        self.states: list[ModalState] = []  # per motion; equal states are one object
+        self._state_of: dict[tuple[Any, ...], ModalState] = {}
         self.tool_times: dict[int, float] = {}
         self.position: np.ndarray | None = None
         self.mcs_minus_wcs: tuple[float, float, float] | None = None  # the work offset, tool length taken out
-        self.starts: list[np.ndarray] = []
-        self.ends: list[np.ndarray] = []
-        self.meta: list[tuple[int, bool, int, int, bool, int]] = []  # line, rapid, tool, cutter, spindle, N per motion
-        self.counts: list[int] = []
+        # Flat buffers, not an array or a tuple per motion (a 200,000-block program kept 100 MB
+        # of small objects): chord starts and ends (X Y Z per chord), per motion its chord count
+        # and line, rapid, tool, cutter, spindle, N.
+        self._starts = array("d")
+        self._ends = array("d")
+        self._meta = array("q")
+        self.counts = array("q")
         self.cutters: list[Cutter | Insert | None] = []
         self._cutter_index: dict[tuple[int, int], int] = {}
 
@@ -275,7 +280,7 @@ class PathRecorder:
     def _motion(self, motion: canon.Motion) -> None:
         end_wcs = dict(motion.end_wcs)
         end_mcs = dict(motion.end_mcs)
-        first = not self.starts
+        first = not self.counts
         if self.mcs_minus_wcs is None and self.turning and all(a in end_wcs and a in end_mcs for a in "XZ"):
             # Lathe: MCS X in radius, WCS X a diameter (DIAMON); length 1 along X, 2 along Z (G18).
             edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
@@ -306,19 +311,31 @@ class PathRecorder:
         length = float(np.linalg.norm(np.diff(np.vstack([start[None, :], points]), axis=0), axis=1).sum())
         feed = DEFAULT_RAPID_MM_MIN if motion.kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
         self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
-        self.starts.append(np.vstack([start[None, :], points[:-1]]))
-        self.ends.append(points)
+        self._starts.frombytes(np.ascontiguousarray(np.vstack([start[None, :], points[:-1]]), dtype=np.float64).tobytes())
+        self._ends.frombytes(np.ascontiguousarray(points, dtype=np.float64).tobytes())
         self.counts.append(len(points))
         # The first motion comes from wherever the machine stands (the reference point, beyond
         # the blank): it is drawn but cuts nothing (our choice; a real set-up starts clear).
         cutter = self._cutter() if not first else self._no_cutter()
         n = motion.source.n if motion.source.n is not None else -1
         line = self._main_line_of.pop(id(motion), None) or motion.source.line or 0
-        self.meta.append((line, motion.kind == "G0", self.tool, cutter, self.spindle_on, n))
+        self._meta.extend((line, motion.kind == "G0", self.tool, cutter, self.spindle_on, n))
         if motion.feed is not None:
             self.feed = motion.feed
-        self.states.append(ModalState(motion.gcodes, self.feed, self.tool, self.edge, self.speed_rpm))
+        self.states.append(self._state(motion.gcodes))
         self.position = end
+
+    def _state(self, gcodes: Any) -> ModalState:
+        """The modal state in force, shared with every motion that has the same (the motions'
+        own G code tables are not kept: one per motion was most of a long program's memory)."""
+        gcodes = gcodes or {}
+        shown = tuple(gcodes.get(g) for g in SHOWN_GROUPS)
+        key = (shown, self.feed, self.tool, self.edge, self.speed_rpm)
+        state = self._state_of.get(key)
+        if state is None:
+            groups = {g: code for g, code in zip(SHOWN_GROUPS, shown) if code}
+            state = self._state_of[key] = ModalState(groups, self.feed, self.tool, self.edge, self.speed_rpm)
+        return state
 
     def _length(self) -> float:
         """Length 1 with its wear of the active edge (along Z on the mill)."""
@@ -375,14 +392,16 @@ class PathRecorder:
         return points
 
     def toolpath(self) -> Toolpath:
-        if not self.starts:
+        if not self.counts:
             empty = np.zeros((0, 3))
             return Toolpath(empty, empty, np.zeros(0, np.int32), np.zeros(0, bool), np.zeros(0, np.int32),
                             self.cutters)
-        counts = np.array(self.counts)
-        meta = np.array(self.meta, dtype=np.int64).reshape(-1, 6)
+        # copies: the buffers grow on while a live recording goes on
+        counts = np.array(self.counts, dtype=np.int64)
+        meta = np.array(self._meta, dtype=np.int64).reshape(-1, 6)
         return Toolpath(
-            starts=np.vstack(self.starts), ends=np.vstack(self.ends),
+            starts=np.array(self._starts, dtype=np.float64).reshape(-1, 3),
+            ends=np.array(self._ends, dtype=np.float64).reshape(-1, 3),
             lines=np.repeat(meta[:, 0], counts).astype(np.int32),
             rapid=np.repeat(meta[:, 1].astype(bool), counts),
             tools=np.repeat(meta[:, 2], counts).astype(np.int32),
