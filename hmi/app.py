@@ -576,6 +576,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         if self.exam_running:
             self.set_hint(EXAM_HELP_LIMITED)
             return
+        if any(isinstance(screen, CommandPalette) for screen in self.screen_stack):
+            return  # one is open already, perhaps under the key overview (F11) opened over it
         super().action_command_palette()
 
     def get_system_commands(self, screen: Screen) -> Any:

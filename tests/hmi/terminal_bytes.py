@@ -28,6 +28,8 @@ def _sequences() -> dict[str, str]:
               "end": "\x1b[F", "enter": "\r", "tab": "\t", "shift+tab": "\x1b[Z",
               "backspace": "\x7f", "space": " "}
     table |= {f"alt+{letter}": f"\x1b{letter}" for letter in string.ascii_lowercase}
+    table |= {f"alt+shift+{letter}": f"\x1b{letter.upper()}" for letter in string.ascii_lowercase}
+    table |= {f"ctrl+shift+{name}": f"\x1b[1;6{final}" for name, final in _CURSOR.items()}  # browser-safe keys
     table |= {f"ctrl+{letter}": chr(ord(letter) - 96) for letter in "cfpqsuvz"}
     return table
 
