@@ -34,7 +34,8 @@ from nck import commands as cmd
 from nck.access import AccessControl
 from nck.alarms import AlarmServer
 from nck.block_search import circle_tolerance
-from nck.canon import (END_COMMANDS, AuxFunction, Dwell, EdgeSelect, Motion, Source, SpindleCommand,
+from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
+from nck.canon import (END_COMMANDS, AuxFunction, EdgeSelect, Motion, Source, SpindleCommand,
                        ToolSelect, UserAlarm)
 from nck.channel import (
     ABORTED, ACTIVE, INTERRUPTED, RESET, RUNNING, ChannelSituation, mode_change_allowed,
@@ -51,7 +52,6 @@ from nck.kernel_manual import ManualControl
 from nck.kernel_search import BlockSearchControl
 from nck.kernel_settings import ControlSettings
 from nck.kernel_setup import JobSetup
-from nck.kernel_status import StatusView
 from nck.machine import MachineConfig, load_machine
 from nck.motion.instant import InstantMotion, instant_motion_factory
 from nck.motion.system import planned_motion_factory
@@ -59,6 +59,7 @@ from nck.ncdata import NcData
 from nck.program_control import (
     SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun, RunEvent, RunOptions,
 )
+from nck.snapshot import StatusSources, build_status
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry, NckStatus
 
 DEFAULT_IPO_S = 0.004
@@ -89,7 +90,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
-class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, BlockSearchControl):
+class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -123,34 +124,11 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         self._time_s = 0.0
         self._tick_rest_s = 0.0
         self._ipo_s = self._ipo_cycle_s()
-        self._sit = ChannelSituation()
-        self._machine_function: str | None = None
-        self._inc_waiting_for_jog = False  # INC was active when JOG was left for MDA
-        self._increment: int | None = 1
-        self._owner: str | None = None  # mode whose program is stopped/interrupted
-        self._run: ProgramRun | None = None
-        self._overlay: ProgramRun | None = None  # MDA blocks over an interrupted AUTO program
+        self.channel = ChannelState()  # mode, channel and program state (nck.channel_state)
+        self.switches = ControlSwitches()  # program control and overrides
+        self.outputs = MachineOutputs()  # active T/D, spindle, aux functions of the main run
         self._interpreters: dict[str, Interpreter] = {}
-        self._selected: str | None = None
-        self._mda_text = ""
-        self._pc: dict[str, object] = {
-            "single_block": None, "dry_run": False, "m01": False, "program_test": False,
-            "rapid_override": False, "skip_levels": frozenset(),
-        }
-        self._overrides = {"feed": 100.0, "rapid": 100.0, "spindle": 100.0}
-        self._estop_pressed = False
-        self._estop_active = False
-        self._jogging = False
-        self._jog_targets: dict[str, float] = {}
-        self._jog_rest: dict[str, float] = {}
-        self._repos_point: dict[str, float] | None = None  # interruption point (REPOS)
-        self._parked: list[Motion | Dwell] | None = None  # unexecuted motion of the parked program
-        self._wcs_offset: dict[str, float] = {}
-        self._aux: dict[str, str] = {}
-        self._tool = 0
-        self._edge = 0
-        self._spindle_state = "M5"
-        self._spindle_rpm = 0.0
+        self._last_interp: Interpreter | None = None  # the interpreter whose program ended last
         md27880 = self.machine.md_value("MD27880", None, DEFAULT_PART_COUNTER)
         md27882 = self.machine.md_value("MD27882", None, None)
         self.counters = PartCounters(mode_bits=int(md27880 if isinstance(md27880, int) else DEFAULT_PART_COUNTER))
@@ -278,7 +256,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
     @property
     def situation(self) -> ChannelSituation:
         """Mode, channel status and program status (cheap; no snapshot)."""
-        return self._sit
+        return self.channel.situation
 
     def alarm_log_since(self, seq: int) -> tuple[AlarmEvent, ...]:
         """Alarm/message log events newer than ``seq`` (bounded log)."""
@@ -341,49 +319,70 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
 
     def status(self) -> NckStatus:
         """Build the immutable snapshot; ``seq`` grows when anything changed."""
-        body = self._build_status()
+        body = build_status(self._status_sources())
         if body != self._last_body:
             self._seq += 1
             self._last_body = body
         return replace(body, seq=self._seq, time_s=self._time_s)
 
+    def _status_sources(self) -> StatusSources:
+        run = self.channel.active_run()
+        # The interpreter whose frames give the WCS while nothing executes: the run's, else
+        # the one that ran last (its tool); the G codes shown: the run's, else AUTOMATIC's.
+        frames = run.interp if run is not None else (
+            self._last_interp or self._interpreters.get("AUTO") or self._interpreters.get("MDA"))
+        # Power on: no program has run yet, but the control shows the reset G codes.
+        modal = run.interp if run is not None else self._interpreters.get("AUTO") or self._interpreter("AUTO")
+        return StatusSources(
+            machine=self.machine, data=self.data, channel=self.channel, switches=self.switches,
+            outputs=self.outputs, motion=self.motion, shown_motion=self._display_motion(),
+            path_motion=self._path_motion(), modal_interpreter=modal, frame_interpreter=frames,
+            alarms=self.alarms, runtime=self.runtime, counters=self.counters,
+            access_level=self._access_level(), internal_errors=len(self.internal_errors),
+        )
+
+    def _access_level(self) -> int:
+        if self._access is not None:
+            return self._access.level
+        return 7 - self._keyswitch
+
     # ------------------------------------------------------------ commands
     def _select_mode(self, command: cmd.SelectMode) -> SubmitResult:
         mode = command.mode.upper()
         mode = {"AUTOMATIC": "AUTO", "MDI": "MDA"}.get(mode, mode)
-        if mode == self._sit.mode:
+        if mode == self.channel.situation.mode:
             return Accepted()
-        reason = mode_change_allowed(self._sit, mode, self._owner)
-        if reason is None and mode == "AUTO" and self._overlay is not None:
+        reason = mode_change_allowed(self.channel.situation, mode, self.channel.owner)
+        if reason is None and mode == "AUTO" and self.channel.overlay is not None:
             reason = "Interrupted MDA program: RESET before AUTOMATIC"
         if reason is not None:
             return Rejected(reason)
-        new = situation_after_mode_change(self._sit, mode, self._owner)
+        new = situation_after_mode_change(self.channel.situation, mode, self.channel.owner)
         self._park()
-        if self._sit.channel == INTERRUPTED and self._sit.program == ABORTED:
-            self._jog_rest.clear()
-        self._sit = new
+        if self.channel.situation.channel == INTERRUPTED and self.channel.situation.program == ABORTED:
+            self.channel.jog_rest.clear()
+        self.channel.situation = new
         if mode == "AUTO":
             # Selecting AUTOMATIC disables the INC keys (002 L17738-17739).
-            self._machine_function = None
-            self._inc_waiting_for_jog = False
-        elif mode == "MDA" and self._machine_function == "INC":
+            self.channel.machine_function = None
+            self.channel.inc_waiting_for_jog = False
+        elif mode == "MDA" and self.channel.machine_function == "INC":
             # MDA has no INC (002 L17597-17601); the selection waits for JOG (our choice).
-            self._machine_function = None
-            self._inc_waiting_for_jog = True
-        elif mode == "JOG" and self._inc_waiting_for_jog:
-            if self._machine_function is None:
-                self._machine_function = "INC"
-            self._inc_waiting_for_jog = False
+            self.channel.machine_function = None
+            self.channel.inc_waiting_for_jog = True
+        elif mode == "JOG" and self.channel.inc_waiting_for_jog:
+            if self.channel.machine_function is None:
+                self.channel.machine_function = "INC"
+            self.channel.inc_waiting_for_jog = False
         return Accepted()
 
     def _cycle_start(self, command: cmd.CycleStart) -> SubmitResult:
-        mode = self._sit.mode
-        if self._estop_active:
+        mode = self.channel.situation.mode
+        if self.channel.estop_active:
             return Rejected("Emergency stop active")
-        if mode == "JOG" or (self._sit.channel == INTERRUPTED and self._sit.program == ABORTED):
+        if mode == "JOG" or (self.channel.situation.channel == INTERRUPTED and self.channel.situation.program == ABORTED):
             return self._continue_jog()
-        if self._sit.channel == ACTIVE:
+        if self.channel.situation.channel == ACTIVE:
             return Rejected("Channel already active")
         self.alarms.clear("nc_start", self._time_s)
         if self.alarms.has_reaction("nc_start_disable"):
@@ -400,25 +399,25 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         return self._start_mda()
 
     def _start_auto(self) -> SubmitResult:
-        run = self._run
-        if next_state(self._sit, "program_start") is None:
+        run = self.channel.run
+        if next_state(self.channel.situation, "program_start") is None:
             return Rejected("NC START not possible in this state")
-        if self._sit.program == ABORTED:
-            if self._selected is None:
+        if self.channel.situation.program == ABORTED:
+            if self.channel.selected is None:
                 return Rejected("No program selected")
             interp = self._interpreter("AUTO")
             interp.reset()
-            interp.start(self._selected)
-            self._begin_run(self._new_run("AUTO", self._selected, interp))
+            interp.start(self.channel.selected)
+            self._begin_run(self._new_run("AUTO", self.channel.selected, interp))
             self.runtime.start_from_reset()
-            self._transition("program_start")
+            self.channel.transition("program_start")
             return Accepted()
-        if run is None or self._owner != "AUTO":
+        if run is None or self.channel.owner != "AUTO":
             return Rejected("No interrupted program to continue: RESET")
         if run.phase == SEARCH_FOUND:
             self._handle_events(run, run.output_search_actions())
-            self._transition("program_start")
-            self._transition("block_stop")
+            self.channel.transition("program_start")
+            self.channel.transition("block_stop")
             self._raise_number(ALARM_CONTINUE_WITH_START)
             return Accepted()
         if run.phase == SEARCH_ACTIONS_DONE:
@@ -427,98 +426,98 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
             self._path_motion().resume()
             if approach is not None:
                 run.requeue([], replace(approach, start_mcs=self._path_positions(self._path_motion())))
-            self._transition("program_start")
+            self.channel.transition("program_start")
             return Accepted()
         self._start_serupro_spindles()
         self._resume_motion(run)
         run.continue_after_stop()
-        self._transition("program_start")
+        self.channel.transition("program_start")
         return Accepted()
 
     def _start_mda(self) -> SubmitResult:
-        if next_state(self._sit, "program_start") is None:
+        if next_state(self.channel.situation, "program_start") is None:
             return Rejected("NC START not possible in this state")
-        if self._owner == "AUTO":
-            overlay = self._overlay
+        if self.channel.owner == "AUTO":
+            overlay = self.channel.overlay
             if overlay is not None and overlay.phase != "ended":
                 self._path_motion().resume()
                 overlay.continue_after_stop()
             else:
-                if not self._mda_text.strip():
+                if not self.channel.mda_text.strip():
                     return Rejected("MDA buffer is empty")
                 interp = self._interpreter("MDA")
                 interp.reset()
-                interp.start_text(MDA_NAME, self._mda_text)
-                self._overlay = self._new_run("MDA", MDA_NAME, interp)
-            self._transition("overlay_start")
+                interp.start_text(MDA_NAME, self.channel.mda_text)
+                self.channel.overlay = self._new_run("MDA", MDA_NAME, interp)
+            self.channel.transition("overlay_start")
             return Accepted()
-        if self._owner == "MDA" and self._run is not None:
-            self._resume_motion(self._run)
-            self._run.continue_after_stop()
-            self._transition("program_start")
+        if self.channel.owner == "MDA" and self.channel.run is not None:
+            self._resume_motion(self.channel.run)
+            self.channel.run.continue_after_stop()
+            self.channel.transition("program_start")
             return Accepted()
-        if not self._mda_text.strip():
+        if not self.channel.mda_text.strip():
             return Rejected("MDA buffer is empty")
         interp = self._interpreter("MDA")
         interp.reset()
-        interp.start_text(MDA_NAME, self._mda_text)
+        interp.start_text(MDA_NAME, self.channel.mda_text)
         self._begin_run(self._new_run("MDA", MDA_NAME, interp))
-        self._transition("program_start")
+        self.channel.transition("program_start")
         return Accepted()
 
     def _new_run(self, kind: str, name: str, interp: Interpreter) -> ProgramRun:
         sync_tool = getattr(interp, "sync_tool", None)
         if sync_tool is not None:
-            sync_tool(self._tool, self._edge, int(self._aux.get("T", self._tool)))
+            sync_tool(self.outputs.tool, self.outputs.edge, int(self.outputs.aux.get("T", self.outputs.tool)))
         sync = getattr(interp, "sync_position", None)
         if sync is not None:
             sync(self._path_motion().positions_mcs())
         sync_spindle = getattr(interp, "sync_spindle", None)
         if sync_spindle is not None:
-            sync_spindle(self._spindle_state, self._spindle_rpm)  # what RESET or M30 left
+            sync_spindle(self.outputs.spindle_state, self.outputs.spindle_rpm)  # what RESET or M30 left
         flags = getattr(interp, "flags", None)
         if isinstance(flags, dict):
-            flags["test"] = bool(self._pc["program_test"])
-            flags["dry_run"] = bool(self._pc["dry_run"])
+            flags["test"] = bool(self.switches.program_control["program_test"])
+            flags["dry_run"] = bool(self.switches.program_control["dry_run"])
         run = ProgramRun(kind, name, interp, self._adjust_motion)
         run.listener = self._count_block
         return run
 
     def _begin_run(self, run: ProgramRun) -> None:
-        self._run = run
+        self.channel.run = run
         if run.kind == "AUTO" and self.run_recorder_factory is not None:
-            recording = self.run_recorder_factory(run.name, self._tool, self._edge)
+            recording = self.run_recorder_factory(run.name, self.outputs.tool, self.outputs.edge)
             self.run_recording = recording
             run.listener = lambda block: self._record_block(recording, block)
-        self._owner = None
-        self._repos_point = None
-        self._parked = None
+        self.channel.owner = None
+        self.channel.repos_point = None
+        self.channel.parked = None
         self.motion.resume()
-        if self._pc["program_test"]:
+        if self.switches.program_control["program_test"]:
             self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
             self._apply_overrides()  # the simulated axes run with the override switches too
         self._apply_dry_run()
 
     def _cycle_stop(self, command: cmd.CycleStop) -> SubmitResult:
-        if self._sit.channel != ACTIVE:
+        if self.channel.situation.channel != ACTIVE:
             return Rejected("NC STOP acts only while the channel is active")
-        if self._jogging:
+        if self.channel.jogging:
             self._stop_jog(keep_rest=True)
-            self._transition("nc_stop")
+            self.channel.transition("nc_stop")
             return Accepted()
         self._path_motion().hold()
-        run = self._overlay or self._run
+        run = self.channel.overlay or self.channel.run
         if run is not None:
             run.stop_reason = "NC STOP"
         self._mark_interrupted(run)
-        self._transition("nc_stop")
+        self.channel.transition("nc_stop")
         return Accepted()
 
     def _reset(self, command: cmd.Reset) -> SubmitResult:
         kept = self._spindles_kept_after_reset()
         self.motion.abort(keep_spindles=kept)
         self._spindle_display_after_reset(kept)
-        self._aux.pop("T", None)  # no preselection beyond RESET (the interpreter's too)
+        self.outputs.aux.pop("T", None)  # no preselection beyond RESET (the interpreter's too)
         if self._test_motion is not None:
             self._test_motion.abort()
         for interp in self._interpreters.values():
@@ -526,24 +525,24 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
                 interp.reset()
             except NcAlarmError as error:
                 self._raise(error)
-        if self._run is not None:
-            self._share_kept_gcodes(self._run.interp)
-        self._run = None
-        self._overlay = None
-        self._owner = None
-        self._jogging = False
-        self._jog_targets.clear()
-        self._jog_rest.clear()
-        self._repos_point = None
-        self._parked = None
-        keep = frozenset({ALARM_EMERGENCY_STOP}) if self._estop_pressed else frozenset()
+        if self.channel.run is not None:
+            self._share_kept_gcodes(self.channel.run.interp)
+        self.channel.run = None
+        self.channel.overlay = None
+        self.channel.owner = None
+        self.channel.jogging = False
+        self.channel.jog_targets.clear()
+        self.channel.jog_rest.clear()
+        self.channel.repos_point = None
+        self.channel.parked = None
+        keep = frozenset({ALARM_EMERGENCY_STOP}) if self.channel.estop_pressed else frozenset()
         self.alarms.clear("reset", self._time_s, keep=keep)
-        if self._estop_active and not self._estop_pressed:
-            self._estop_active = False
+        if self.channel.estop_active and not self.channel.estop_pressed:
+            self.channel.estop_active = False
         self.alarms.set_message("", self._time_s)
-        self._sit = next_state(self._sit, "reset") or self._sit
+        self.channel.situation = next_state(self.channel.situation, "reset") or self.channel.situation
         self._end_serupro()
-        if not self._pc["program_test"]:
+        if not self.switches.program_control["program_test"]:
             self._test_motion = None
         self._activate_data("reset")  # stored MD of activation re/cf take effect
         self._reset_system_frames()
@@ -551,40 +550,40 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
 
     def _emergency_stop(self, command: cmd.EmergencyStop) -> SubmitResult:
         if not command.pressed:
-            self._estop_pressed = False
+            self.channel.estop_pressed = False
             return Accepted()
-        self._estop_pressed = True
-        if not self._estop_active:
-            self._estop_active = True
+        self.channel.estop_pressed = True
+        if not self.channel.estop_active:
+            self.channel.estop_active = True
             self.motion.abort()
             self._spindle_display_after_reset(())  # every spindle brakes and loses its S
             if self._test_motion is not None:
                 self._test_motion.abort()
-            self._jogging = False
-            self._jog_targets.clear()
-            self._jog_rest.clear()
-            run = self._overlay or self._run
+            self.channel.jogging = False
+            self.channel.jog_targets.clear()
+            self.channel.jog_rest.clear()
+            run = self.channel.overlay or self.channel.run
             self._mark_interrupted(run)
-            self._transition("emergency_stop")
-            if self._sit.program == ABORTED:
-                self._run = None
-                self._owner = None
+            self.channel.transition("emergency_stop")
+            if self.channel.situation.program == ABORTED:
+                self.channel.run = None
+                self.channel.owner = None
             self._raise_number(ALARM_EMERGENCY_STOP)
         return Accepted()
 
     def _select_program(self, command: cmd.SelectProgram) -> SubmitResult:
-        if self._sit.channel != RESET:
+        if self.channel.situation.channel != RESET:
             return Rejected("Program selection is possible only in channel reset")
         if self.programs.read_program(command.name) is None:
             return Rejected(f"Program {command.name} not found")
-        self._selected = command.name
+        self.channel.selected = command.name
         return Accepted()
 
     def _set_mda(self, command: cmd.SetMdaProgram) -> SubmitResult:
-        mda_busy = (self._run is not None and self._run.kind == "MDA") or self._overlay is not None
-        if mda_busy and self._sit.channel != RESET:
+        mda_busy = (self.channel.run is not None and self.channel.run.kind == "MDA") or self.channel.overlay is not None
+        if mda_busy and self.channel.situation.channel != RESET:
             return Rejected("MDA program in progress: RESET first")
-        self._mda_text = command.text
+        self.channel.mda_text = command.text
         return Accepted()
 
     # ------------------------------------------------------------- cycle
@@ -596,8 +595,8 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         """
         if self.batch_cycles <= 1 or self.cycle_listeners or limit <= 1 or not fed:
             return 1
-        run = self._overlay or self._run
-        if run is not None and self._sit.channel == ACTIVE and not self._jogging:
+        run = self.channel.overlay or self.channel.run
+        if run is not None and self.channel.situation.channel == ACTIVE and not self.channel.jogging:
             if run.wants_every_cycle(self._path_motion()):
                 return 1
         cycles = min(limit, self.batch_cycles)
@@ -609,7 +608,7 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
     def _event_batching(self) -> bool:
         """True when the motion ends its batches at block events (planned motion, no JOG)."""
         return (
-            self._test_motion is None and not self._jogging
+            self._test_motion is None and not self.channel.jogging
             and getattr(self.motion, "advance_cycles", None) is not None
             and not self.motion.jog_active()
         )
@@ -617,14 +616,14 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
     def _cycle(self, limit: int = 1) -> None:
         """One kernel step: feed the run for the first cycle, then move 1 … ``limit`` cycles."""
         self._time_s += self._ipo_s
-        run = self._overlay or self._run
+        run = self.channel.overlay or self.channel.run
         fed = True
         prefed, self._prefed = self._prefed, None
         if prefed is not None:
             # The run was already fed for this cycle inside the last motion step.
             fed = False
             self._handle_events(prefed[0], prefed[1])
-        elif run is not None and self._sit.channel == ACTIVE and not self._jogging:
+        elif run is not None and self.channel.situation.channel == ACTIVE and not self.channel.jogging:
             events = run.feed(self._path_motion(), self._run_options(), self._ipo_s)
             if events:
                 fed = False
@@ -647,14 +646,14 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         if cleared is not None:
             for number in cleared():
                 self.alarms.clear_number(number, self._time_s)
-        if self._jogging and not self.motion.jog_active():
-            self._jogging = False
-            self._jog_targets.clear()
-            if self._sit.channel == ACTIVE:
-                self._transition("jog_end")
+        if self.channel.jogging and not self.motion.jog_active():
+            self.channel.jogging = False
+            self.channel.jog_targets.clear()
+            if self.channel.situation.channel == ACTIVE:
+                self.channel.transition("jog_end")
         if (
-            self._sit.mode == "AUTO" and self._sit.channel == ACTIVE
-            and self._sit.program == RUNNING and self._run is not None and self._run.kind == "AUTO"
+            self.channel.situation.mode == "AUTO" and self.channel.situation.channel == ACTIVE
+            and self.channel.situation.program == RUNNING and self.channel.run is not None and self.channel.run.kind == "AUTO"
         ):
             self.runtime.run(dt_s)
         self.cycles_done += cycles
@@ -669,10 +668,10 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         Events of the feed are kept for the next step, which handles them
         first, as the cycle-by-cycle kernel does before that cycle's motion.
         """
-        run = self._overlay or self._run
-        if self._jogging or self._test_motion is not None:
+        run = self.channel.overlay or self.channel.run
+        if self.channel.jogging or self._test_motion is not None:
             return 0
-        if run is None or self._sit.channel != ACTIVE:
+        if run is None or self.channel.situation.channel != ACTIVE:
             return self.batch_cycles  # nothing is fed: the cycles may run on
         motion = self._path_motion()
         events = run.feed(motion, self._run_options(), self._ipo_s)
@@ -710,16 +709,16 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
             elif event.kind == "stop":
                 self._path_motion().hold()
                 self._mark_interrupted(run)
-                self._transition("block_stop")
+                self.channel.transition("block_stop")
                 if event.text == SEARCH_TARGET_FOUND:
                     self._serupro_target_found(run)
             elif event.kind == "end":
                 self._program_end(run, event.text)
 
     def _program_end(self, run: ProgramRun, kind: str) -> None:
-        if run is self._overlay:
-            self._overlay = None
-            self._transition("program_end")
+        if run is self.channel.overlay:
+            self.channel.overlay = None
+            self.channel.transition("program_end")
             return
         try:
             run.interp.reset()
@@ -727,23 +726,23 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
             self._raise(error)
         self._share_kept_gcodes(run.interp)
         if run.kind == "AUTO":
-            self.counters.on_program_end(bool(self._pc["program_test"]))
+            self.counters.on_program_end(bool(self.switches.program_control["program_test"]))
             self.runtime.program_end()
             self._end_serupro()  # the target was not found
         if kind in END_COMMANDS:
-            self._aux.pop("T", None)  # no preselection beyond M2 / M30
+            self.outputs.aux.pop("T", None)  # no preselection beyond M2 / M30
             self._reset_spindles_at_program_end(run.name)
         self.alarms.set_message("", self._time_s)
-        self._run = None
-        self._owner = None
-        self._transition("program_end")
+        self.channel.run = None
+        self.channel.owner = None
+        self.channel.transition("program_end")
 
     def _reset_spindles_at_program_end(self, program: str) -> None:
         """M2 / M30: brake the spindles that MD35040 does not keep, and delete their S."""
         kept = self._spindles_kept_after_reset()
         spindle_command = getattr(self.motion, "spindle_command", None)
         for number, name in enumerate(self.machine.spindles, start=1):
-            if name not in kept and spindle_command is not None and not self._pc["program_test"]:
+            if name not in kept and spindle_command is not None and not self.switches.program_control["program_test"]:
                 spindle_command(SpindleCommand(Source(program, 0), number, state="M5", speed_rpm=0.0))
         self._spindle_display_after_reset(kept)
 
@@ -752,33 +751,33 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
             address = command.address.upper()
             key = address if command.extension is None else f"{address}{command.extension}"
             value = command.value
-            self._aux[key] = f"{value:g}"
+            self.outputs.aux[key] = f"{value:g}"
             if address == "M":
-                self.counters.on_m_function(int(value), bool(self._pc["program_test"]))
+                self.counters.on_m_function(int(value), bool(self.switches.program_control["program_test"]))
         elif isinstance(command, ToolSelect):
-            self._aux["T"] = str(command.tool)  # the programmed (preselected) tool
+            self.outputs.aux["T"] = str(command.tool)  # the programmed (preselected) tool
             if command.change:
-                self._tool = command.tool  # the active tool after the change
+                self.outputs.tool = command.tool  # the active tool after the change
         elif isinstance(command, EdgeSelect):
-            self._edge = command.edge
+            self.outputs.edge = command.edge
         elif isinstance(command, SpindleCommand):
             if command.state:
-                self._spindle_state = command.state
+                self.outputs.spindle_state = command.state
             if command.speed_rpm is not None:
-                self._spindle_rpm = float(command.speed_rpm)
+                self.outputs.spindle_rpm = float(command.speed_rpm)
             spindle = getattr(self.motion, "spindle_command", None)
-            if spindle is not None and not self._pc["program_test"]:
+            if spindle is not None and not self.switches.program_control["program_test"]:
                 spindle(command)
 
     def _motion_alarm(self, error: NcAlarmError) -> None:
         self._raise(error)
         reactions = self.alarms.reactions_of(error.number)
-        run = self._overlay or self._run
+        run = self.channel.overlay or self.channel.run
         if "emergency_stop" in reactions:
             self._emergency_stop(cmd.EmergencyStop(True))
-            self._estop_pressed = False
+            self.channel.estop_pressed = False
             return
-        if run is not None and self._sit.channel == ACTIVE and not self._jogging:
+        if run is not None and self.channel.situation.channel == ACTIVE and not self.channel.jogging:
             # A block the motion refused when execution reached it (10720, 12160 …)
             # faults the path: the blocks buffered behind it can never run, so the
             # channel is interrupted there, as if braked (RESET is needed anyway).
@@ -787,16 +786,11 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
                 self._path_motion().hold()
                 run.stop_reason = "alarm"
                 self._mark_interrupted(run)
-                self._transition("nc_stop")
+                self.channel.transition("nc_stop")
             elif "interpreter_stop" in reactions:
                 run.interpreter_stop("alarm")
 
     # ------------------------------------------------------------- helpers
-    def _transition(self, event: str) -> None:
-        new = next_state(self._sit, event)
-        if new is not None:
-            self._sit = new
-
     def _spindles_kept_after_reset(self) -> frozenset[str]:
         """The spindles whose MD35040 SPIND_ACTIVE_AFTER_RESET is set: they keep turning with
         their S and direction at RESET and program end; the others (0, the default) brake
@@ -808,46 +802,46 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
         the spindle is kept (002 L51032-51038)."""
         spindles = self.machine.spindles
         if not spindles or spindles[0] not in kept:
-            self._spindle_state = "M5"
-            self._spindle_rpm = 0.0
+            self.outputs.spindle_state = "M5"
+            self.outputs.spindle_rpm = 0.0
 
     def _mark_interrupted(self, run: ProgramRun | None) -> None:
         """Remember which program is stopped (the owner of the interruption)."""
-        if run is not None and run is not self._overlay:
-            self._owner = run.kind
+        if run is not None and run is not self.channel.overlay:
+            self.channel.owner = run.kind
 
     def _park(self) -> None:
         """Before JOG or another mode touches the axes: keep the interrupted program's
         unexecuted motion and the interruption point, and empty the motion buffer."""
-        run = self._run
-        if run is None or self._owner is None or self._parked is not None or self._overlay is not None:
+        run = self.channel.run
+        if run is None or self.channel.owner is None or self.channel.parked is not None or self.channel.overlay is not None:
             return
         motion = self._path_motion()
         position = self._path_positions(motion)
-        self._parked = run.park(motion.current_source(), position)
-        self._repos_point = position
+        self.channel.parked = run.park(motion.current_source(), position)
+        self.channel.repos_point = position
         motion.abort(keep_spindles=self.machine.spindles)  # a mode change stops no spindle
 
     def _resume_motion(self, run: ProgramRun) -> None:
         """NC START of an interrupted program: REPOS (RMI) back, then the remainder."""
         motion = self._path_motion()
         motion.resume()
-        if self._parked is None:
+        if self.channel.parked is None:
             return
         approach: Motion | None = None
         here = self._path_positions(motion)
-        point = self._repos_point or {}
+        point = self.channel.repos_point or {}
         if any(abs(here.get(axis, 0.0) - value) > 1e-6 for axis, value in point.items()):
-            first = next((i for i in self._parked if isinstance(i, Motion)), None) or run.last_motion
+            first = next((i for i in self.channel.parked if isinstance(i, Motion)), None) or run.last_motion
             feed = first.feed_mm_min if first is not None and first.kind != "G0" else None
             source = first.source if first is not None else Source(run.name, 0)
             approach = Motion(
                 kind="G0" if feed is None else "G1", source=source, plane="G17",
-                end_wcs={a: v - self._wcs_offset.get(a, 0.0) for a, v in point.items()},
+                end_wcs={a: v - self.outputs.wcs_offset.get(a, 0.0) for a, v in point.items()},
                 end_mcs=dict(point), start_mcs=here, feed_mm_min=feed, exact_stop=True, inserted=True,
             )
-        run.requeue(list(self._parked), approach)
-        self._parked = None
+        run.requeue(list(self.channel.parked), approach)
+        self.channel.parked = None
 
     def _interpreter(self, kind: str) -> Interpreter:
         interp = self._interpreters.get(kind)
@@ -880,13 +874,13 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
 
     def _path_motion(self) -> Any:
         """The motion system programs run on: the simulated one under program test."""
-        return self._test_motion if self._pc["program_test"] and self._test_motion else self.motion
+        return self._test_motion if self.switches.program_control["program_test"] and self._test_motion else self.motion
 
     def _display_motion(self) -> Any:
         return self._test_motion if self._test_motion is not None else self.motion
 
     def _run_options(self) -> RunOptions:
-        return RunOptions(single_block=self._pc["single_block"], m01=bool(self._pc["m01"]))  # type: ignore[arg-type]
+        return RunOptions(single_block=self.switches.program_control["single_block"], m01=bool(self.switches.program_control["m01"]))  # type: ignore[arg-type]
 
     def _unreferenced_axes(self) -> list[str]:
         if int(self.machine.md_value("MD20700", None, 1) or 0) == 0:
@@ -932,16 +926,16 @@ class Nck(ManualControl, ControlSettings, StatusView, JobSetup, ContactWatch, Bl
             self.motion.abort()
         except Exception:  # noqa: BLE001
             pass
-        self._run = None
-        self._overlay = None
-        self._owner = None
-        self._jogging = False
-        self._jog_targets.clear()
-        self._jog_rest.clear()
-        self._parked = None
-        self._repos_point = None
-        self._test_motion = None if not self._pc["program_test"] else self._test_motion
-        self._sit = ChannelSituation(self._sit.mode, RESET, ABORTED)
+        self.channel.run = None
+        self.channel.overlay = None
+        self.channel.owner = None
+        self.channel.jogging = False
+        self.channel.jog_targets.clear()
+        self.channel.jog_rest.clear()
+        self.channel.parked = None
+        self.channel.repos_point = None
+        self._test_motion = None if not self.switches.program_control["program_test"] else self._test_motion
+        self.channel.situation = ChannelSituation(self.channel.situation.mode, RESET, ABORTED)
 
     # ------------------------------------------------------------- status
 

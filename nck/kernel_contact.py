@@ -42,6 +42,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
+from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
 from nck.contact import BALL, CUTTER, ToolBody, clearance, first_contact
 from nck.errors import NcAlarmError
 from nck.milled_blank import MilledBlank
@@ -112,6 +113,9 @@ class ContactState:
 
 class ContactWatch:
     """Contact detection in the kernel cycle; mixed into ``Nck`` (uses its state)."""
+    channel: ChannelState
+    switches: ControlSwitches
+    outputs: MachineOutputs
 
     data: Any
     machine: Any
@@ -130,7 +134,7 @@ class ContactWatch:
     # ---------------------------------------------------------------- the tool
     def _tool_body(self) -> tuple[ToolBody, Point]:
         """The active tool's body and its tip offset (machine position − tip) in X, Y, Z."""
-        edge = self.data.edge(self._tool, self._edge) if self._edge else None  # type: ignore[attr-defined]
+        edge = self.data.edge(self.outputs.tool, self.outputs.edge) if self.outputs.edge else None  # type: ignore[attr-defined]
         if edge is None:
             return ToolBody(CUTTER, 0.0, 0.0), (0.0, 0.0, 0.0)
         radius = max(edge.get(6) + edge.get(15), 0.0)
@@ -145,7 +149,7 @@ class ContactWatch:
                 positions.get("Z", 0.0) - offset[2])
 
     def _contact_watched(self) -> bool:
-        return bool(self.data.machine_setup.solids()) and not self._pc["program_test"]  # type: ignore[attr-defined]
+        return bool(self.data.machine_setup.solids()) and not self.switches.program_control["program_test"]  # type: ignore[attr-defined]
 
     # ---------------------------------------------------------------- the cycle
     def _contact_cycle_limit(self, cycles: int) -> int:
@@ -153,7 +157,7 @@ class ContactWatch:
         self._contact.free = None
         if cycles <= 1 or not self._contact_watched():
             return cycles
-        if (self._run is None and self._overlay is None and not self._jogging  # type: ignore[attr-defined]
+        if (self.channel.run is None and self.channel.overlay is None and not self.channel.jogging  # type: ignore[attr-defined]
                 and self.motion.is_idle()):
             return cycles  # nothing can start moving inside this step
         body, offset = self._tool_body()
@@ -178,7 +182,7 @@ class ContactWatch:
         if not self._contact_watched():
             return None
         self._contact.rapid = self._moving_at_rapid()
-        self._contact.threading = not self._jogging and self._segment_kind() in THREAD_KINDS  # type: ignore[attr-defined]
+        self._contact.threading = not self.channel.jogging and self._segment_kind() in THREAD_KINDS  # type: ignore[attr-defined]
         self._note_measuring_block()
         return self._path_positions(self.motion)  # type: ignore[attr-defined]
 
@@ -302,7 +306,7 @@ class ContactWatch:
             return ALARM_CRASH_RAPID
         if self._contact.threading:
             return None  # tapping, thread cutting: the spindle turns with the axes (002 L19681)
-        turning = self._spindle_state in ("M3", "M4") and self._spindle_rpm > 0.0  # type: ignore[attr-defined]
+        turning = self.outputs.spindle_state in ("M3", "M4") and self.outputs.spindle_rpm > 0.0  # type: ignore[attr-defined]
         return None if turning else ALARM_CRASH_SPINDLE_STOPPED
 
     def _segment_kind(self) -> str | None:
@@ -312,7 +316,7 @@ class ContactWatch:
         return getattr(segment, "kind", None)
 
     def _moving_at_rapid(self) -> bool:
-        if self._jogging:  # type: ignore[attr-defined]
+        if self.channel.jogging:  # type: ignore[attr-defined]
             return self._contact.jog_rapid
         return self._segment_kind() == "G0"
 
@@ -354,13 +358,13 @@ class ContactWatch:
 
     def _executing(self) -> tuple[Any, Any]:
         """The program run whose block executes now and that block's source (``None``s in JOG)."""
-        run = self._overlay or self._run  # type: ignore[attr-defined]
+        run = self.channel.overlay or self.channel.run  # type: ignore[attr-defined]
         return run, (self._path_motion().current_source() if run is not None else None)  # type: ignore[attr-defined]
 
     def _record(self, kind: str, name: str, at: dict[str, float]) -> None:
         state = self._contact
         state.seq += 1
-        state.events.append(ContactEvent(state.seq, kind, name, at, self._tool, self._edge,  # type: ignore[attr-defined]
+        state.events.append(ContactEvent(state.seq, kind, name, at, self.outputs.tool, self.outputs.edge,  # type: ignore[attr-defined]
                                          self._time_s))  # type: ignore[attr-defined]
         del state.events[:-EVENT_LIMIT]
 
@@ -372,15 +376,15 @@ class ContactWatch:
         what = "blank" if name == "blank" else "reference block"
         _, source = self._executing()
         where = {"file": source.file, "line": source.line, "n": source.n} if source is not None else {}
-        self._motion_alarm(NcAlarmError(number, f"T{self._tool}", what, **where))  # type: ignore[attr-defined]
+        self._motion_alarm(NcAlarmError(number, f"T{self.outputs.tool}", what, **where))  # type: ignore[attr-defined]
         self._halt_jog()
 
     def _halt_jog(self) -> None:
         """Brake every JOG motion (an increment is not continued); the channel ends JOG when
         the axes stand, as after a released key."""
-        if not self._jogging:  # type: ignore[attr-defined]
+        if not self.channel.jogging:  # type: ignore[attr-defined]
             return
         for axis in self.machine.path_axes:
             self.motion.jog_continuous(axis, 0, 0.0)
-        self._jog_targets.clear()  # type: ignore[attr-defined]
-        self._jog_rest.clear()  # type: ignore[attr-defined]
+        self.channel.jog_targets.clear()  # type: ignore[attr-defined]
+        self.channel.jog_rest.clear()  # type: ignore[attr-defined]

@@ -106,7 +106,7 @@ class DataWrites:
         if not keys:
             what = f"T{command.tool}" + (f" D{command.edge}" if command.edge is not None else "")
             return Rejected(f"{what} does not exist")
-        if command.tool == getattr(self, "_tool", 0) and self._sit.channel != "reset":  # type: ignore[attr-defined]
+        if command.tool == getattr(self, "_tool", 0) and self.channel.situation.channel != "reset":  # type: ignore[attr-defined]
             return Rejected(f"T{command.tool} is the active tool of a running program")
         for key in keys:
             del tools[key]
@@ -131,7 +131,7 @@ class DataWrites:
         return Accepted()
 
     def _activate_machine_data(self, command: cmd.ActivateMachineData) -> SubmitResult:
-        if self._sit.channel != "reset":  # type: ignore[attr-defined]
+        if self.channel.situation.channel != "reset":  # type: ignore[attr-defined]
             return Rejected("Set MD active is possible only in channel reset")
         self._activate_data("new_config")
         return Accepted()
@@ -150,7 +150,7 @@ class DataWrites:
 
         Only in channel reset with the axes at rest; otherwise the next RESET / NEW CONFIG does it.
         """
-        if self._sit.channel != "reset":  # type: ignore[attr-defined]
+        if self.channel.situation.channel != "reset":  # type: ignore[attr-defined]
             return  # a stopped program keeps its data; the RESET that ends it adopts the new one
         machine = self.machine_data.active_machine()
         if machine.md == self.machine.md:  # type: ignore[attr-defined]

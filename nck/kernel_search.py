@@ -14,13 +14,17 @@ program continues. RESET aborts it. (One channel, no synchronized actions, no AS
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable
 
+from nck.channel_state import ChannelState, ControlSwitches
 from nck import commands as cmd
 from nck.block_search import SEARCH_TYPES, SERUPRO
 from nck.canon import Source, SpindleCommand
 from nck.channel import RESET
 from nck.commands import Accepted, Rejected, SubmitResult
+from nck.counters import RuntimeTimer
+from nck.interp.api import Interpreter
+from nck.motion.instant import InstantMotion
 from nck.errors import NcAlarmError
 from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun
 
@@ -28,38 +32,42 @@ ALARM_SELECTION_IN_SERUPRO = 16935  # program test or dry run selected during SE
 
 
 class BlockSearchControl:
-    """Block search of every type; mixed into ``Nck`` (uses its state)."""
+    """Block search of every type; mixed into ``Nck``: what it uses of the kernel is declared here."""
 
-    _serupro = False  # a search run by program test is under way
-    _serupro_spindle: SpindleCommand | None = None  # switched on by the NC START after it
-    _sit: Any
-    _selected: str | None
-    _run: ProgramRun | None
-    _pc: dict[str, object]
-    _overlay: Any
-    _owner: str | None
-    _parked: list[Any] | None
-    _repos_point: dict[str, float] | None
-    _test_motion: Any
+    motion: Any
+    channel: ChannelState  # the channel's state (nck.channel_state): the run, REPOS point, SERUPRO
+    switches: ControlSwitches  # program test is switched on and off for SERUPRO
+    runtime: RuntimeTimer
+    _test_motion: InstantMotion | None  # the simulated axes under program test
+    _interpreters: dict[str, Interpreter]
+    _interpreter: Callable[[str], Interpreter]  # the mode's interpreter (created on first use)
+    _new_run: Callable[[str, str, Interpreter], ProgramRun]
+    _begin_run: Callable[[ProgramRun], None]
+    _path_positions: Callable[[Any], dict[str, float]]
+    _path_motion: Callable[[], Any]
+    _apply_overrides: Callable[[], None]
+    _apply_dry_run: Callable[[], None]
+    _output: Callable[[object], None]
+    _raise_number: Callable[..., None]
 
     def _start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
-        if self._sit.mode != "AUTO":
+        if self.channel.situation.mode != "AUTO":
             return Rejected("Block search is possible in AUTOMATIC only")
-        if self._selected is None:
+        if self.channel.selected is None:
             return Rejected("No program selected")
         if command.search_type not in SEARCH_TYPES:
             return Rejected(f"Unknown block search type {command.search_type}")
         if command.search_type == SERUPRO:
             return self._start_serupro(command.target)
-        cascaded = self._run is not None and self._run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
-        if self._sit.channel != RESET and not cascaded:
+        cascaded = self.channel.run is not None and self.channel.run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
+        if self.channel.situation.channel != RESET and not cascaded:
             return Rejected("Block search is possible only in channel reset")
-        interp = self._interpreter("AUTO")  # type: ignore[attr-defined]
+        interp = self._interpreter("AUTO")
         interp.reset()
-        interp.start(self._selected)
-        run = self._new_run("AUTO", self._selected, interp)  # type: ignore[attr-defined]
+        interp.start(self.channel.selected)
+        run = self._new_run("AUTO", self.channel.selected, interp)
         try:
-            result = run.search(command.target, self._path_positions(self.motion),  # type: ignore[attr-defined]
+            result = run.search(command.target, self._path_positions(self.motion),
                                 command.search_type)
         except NcAlarmError:
             interp.reset()
@@ -67,70 +75,70 @@ class BlockSearchControl:
         if not result.found:
             interp.reset()
             return Rejected(f"Search target {command.target} not found")
-        self._run = run
-        self._overlay = None
-        self._owner = "AUTO"
-        self._repos_point = None
-        self._parked = None
-        self.runtime.start_from_reset()  # type: ignore[attr-defined]
-        self._transition("search_found")  # type: ignore[attr-defined]
+        self.channel.run = run
+        self.channel.overlay = None
+        self.channel.owner = "AUTO"
+        self.channel.repos_point = None
+        self.channel.parked = None
+        self.runtime.start_from_reset()
+        self.channel.transition("search_found")
         return Accepted()
 
     # ------------------------------------------------------------------ SERUPRO
     def _start_serupro(self, target: str) -> SubmitResult:
         """Run the selected program in program test up to ``target`` (only from RESET: it
         cannot follow another search, 002 L19035-19037)."""
-        if self._sit.channel != RESET:
+        if self.channel.situation.channel != RESET:
             return Rejected("SERUPRO starts only in channel reset")
-        assert self._selected is not None
-        self._pc["program_test"] = True
-        self._serupro = True
-        interp = self._interpreter("AUTO")  # type: ignore[attr-defined]
+        assert self.channel.selected is not None
+        self.switches.program_control["program_test"] = True
+        self.channel.serupro = True
+        interp = self._interpreter("AUTO")
         interp.reset()
-        interp.start(self._selected)
-        run = self._new_run("AUTO", self._selected, interp)  # type: ignore[attr-defined]
+        interp.start(self.channel.selected)
+        run = self._new_run("AUTO", self.channel.selected, interp)
         run.stop_before(target)
-        self._begin_run(run)  # type: ignore[attr-defined]
-        self._transition("program_start")  # type: ignore[attr-defined]
+        self._begin_run(run)
+        self.channel.transition("program_start")
         return Accepted()
 
     def _serupro_target_found(self, run: ProgramRun) -> None:
         """The program stands before the target block: program test off; the next NC START
         repositions from the real axes to where the simulated ones stand."""
-        simulated = self._path_positions(self._path_motion())  # type: ignore[attr-defined]
+        simulated = self._path_positions(self._path_motion())
         self._end_serupro()
-        self._repos_point = simulated
-        self._parked = []
+        self.channel.repos_point = simulated
+        self.channel.parked = []
         view = getattr(run.interp, "modal_view", None)
         modal = view() if view is not None else None
         if modal is not None and modal.spindle_state in ("M3", "M4"):
-            self._serupro_spindle = SpindleCommand(Source(run.name, 0), 1, state=modal.spindle_state,
+            self.channel.serupro_spindle = SpindleCommand(Source(run.name, 0), 1, state=modal.spindle_state,
                                                    speed_rpm=modal.spindle_speed_rpm)
 
     def _end_serupro(self) -> None:
         """Program test off again (target found, program end or RESET)."""
-        if not self._serupro:
+        if not self.channel.serupro:
             return
-        self._serupro = False
-        self._pc["program_test"] = False
+        self.channel.serupro = False
+        self.switches.program_control["program_test"] = False
         self._test_motion = None
-        for interp in self._interpreters.values():  # type: ignore[attr-defined]
+        for interp in self._interpreters.values():
             flags = getattr(interp, "flags", None)
             if isinstance(flags, dict):
                 flags["test"] = False
-        self._apply_overrides()  # type: ignore[attr-defined]
-        self._apply_dry_run()  # type: ignore[attr-defined]
+        self._apply_overrides()
+        self._apply_dry_run()
 
     def _start_serupro_spindles(self) -> None:
         """NC START after SERUPRO: the spindles start before the axes reposition."""
-        command, self._serupro_spindle = self._serupro_spindle, None
+        command, self.channel.serupro_spindle = self.channel.serupro_spindle, None
         if command is not None:
-            self._output(command)  # type: ignore[attr-defined]
+            self._output(command)
 
     def _refuse_selection_in_serupro(self, name: str) -> SubmitResult | None:
         """Program test and dry run cannot be selected while SERUPRO runs (16935)."""
-        if self._serupro and name in ("program_test", "dry_run"):
-            self._raise_number(ALARM_SELECTION_IN_SERUPRO)  # type: ignore[attr-defined]
+        if self.channel.serupro and name in ("program_test", "dry_run"):
+            self._raise_number(ALARM_SELECTION_IN_SERUPRO)
             return Rejected("Program test and dry run cannot be selected during SERUPRO",
                             alarm=ALARM_SELECTION_IN_SERUPRO)
         return None

@@ -11,8 +11,9 @@ only in STOP or RESET).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable, cast
 
+from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
 from nck import commands as cmd
 from nck.access import (ALARM_PASSWORD_REFUSED, AccessControl, AccessError, AccessLocked, AccessState, Action,
                         action_for_write)
@@ -20,8 +21,11 @@ from nck.alarms import AlarmServer
 from nck.canon import Motion
 from nck.channel import ACTIVE, RESET
 from nck.commands import Accepted, Rejected, SubmitResult
+from nck.counters import PartCounters
 from nck.interp.api import Interpreter
 from nck.kernel_data import DataWrites
+from nck.machine import MachineConfig
+from nck.ncdata import NcData
 from nck.value_text import InvalidValue, number_from_text
 from nck.motion.instant import InstantMotion
 from nck.status import LogbookEntry
@@ -30,21 +34,30 @@ DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
 
 
 class ControlSettings(DataWrites):
-    """Program control, overrides, data writes, keyswitch and passwords; mixed into ``Nck``."""
+    """Program control, overrides, data writes, keyswitch and passwords; mixed into ``Nck``:
+    what it uses of the kernel is declared here."""
 
-    machine: Any
+    machine: MachineConfig
     motion: Any
-    data: Any
-    _pc: dict[str, object]  # program control switches (the kernel's)
-    _interpreters: dict[str, Interpreter]
+    data: NcData
+    channel: ChannelState  # the channel's state (nck.channel_state)
+    switches: ControlSwitches  # the program-control and override switches it sets
+    outputs: MachineOutputs
+    counters: PartCounters  # $AC_…_PARTS written through WriteData
+    logbook: list[LogbookEntry]  # refused password entries
     alarms: AlarmServer
+    _interpreters: dict[str, Interpreter]  # the kernel's interpreters, by mode (AUTO, MDA)
+    _test_motion: InstantMotion | None  # the simulated axes under program test
+    _access: AccessControl | None  # None: no protection (a bare kernel), created by a password entry
+    _keyswitch: int  # keyswitch position 0 … 3 while there is no access control
     _time_s: float
-    _overrides: dict[str, float]  # override switch positions in % (feed, rapid, spindle)
-    _offsets_edited = False  # a work offset was edited while stopped with MD9440 = 1
+    _raise_number: Callable[..., None]  # raises an alarm by number with its parameters
+    _refuse_selection_in_serupro: Callable[[str], SubmitResult | None]  # nck.kernel_search
+    _activate_stored_frames: Callable[[], None]  # nck.kernel_setup
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
-        refused = self._refuse_selection_in_serupro(name)  # type: ignore[attr-defined]
+        refused = self._refuse_selection_in_serupro(name)
         if refused is not None:
             return refused
         if name == "single_block":
@@ -53,15 +66,15 @@ class ControlSettings(DataWrites):
                 text = "SBL2"
             if text not in (None, "SBL1", "SBL2"):
                 return Rejected("single block is None, SBL1 or SBL2")
-            self._pc[name] = text
+            self.switches.program_control[name] = text
         elif name in ("dry_run", "m01", "rapid_override"):
-            self._pc[name] = bool(value)
+            self.switches.program_control[name] = bool(value)
             self._apply_overrides()
             self._apply_dry_run()
         elif name == "program_test":
-            if self._sit.channel != RESET:
+            if self.channel.situation.channel != RESET:
                 return Rejected("Program test can be switched only in channel reset")
-            self._pc[name] = bool(value)
+            self.switches.program_control[name] = bool(value)
             self._test_motion = (
                 InstantMotion(self.machine, self.motion.positions_mcs()) if value else None
             )
@@ -69,14 +82,14 @@ class ControlSettings(DataWrites):
             self._apply_dry_run()
         elif name == "skip_levels":
             try:
-                levels = frozenset(int(v) for v in (value or ()))  # type: ignore[union-attr]
+                levels = frozenset(int(v) for v in cast(Any, value or ()))
             except (TypeError, ValueError):
                 return Rejected("skip levels are numbers 0 … 9")
             if any(level < 0 or level > 9 for level in levels):
                 return Rejected("skip levels are numbers 0 … 9")
-            if self._sit.channel == ACTIVE:
+            if self.channel.situation.channel == ACTIVE:
                 return Rejected("Skip levels can be changed only in STOP or RESET")
-            self._pc[name] = levels
+            self.switches.program_control[name] = levels
             for interp in self._interpreters.values():
                 self._apply_skip_levels(interp)
         else:
@@ -93,7 +106,7 @@ class ControlSettings(DataWrites):
         percent = float(command.percent)
         if not low <= percent <= high:
             return Rejected(f"{command.which} override must be {low:g} … {high:g} %")
-        self._overrides[command.which] = percent
+        self.switches.overrides[command.which] = percent
         self._apply_overrides()
         return Accepted()
 
@@ -172,7 +185,7 @@ class ControlSettings(DataWrites):
         return Accepted()
 
     def _apply_skip_levels(self, interp: Interpreter) -> None:
-        levels = frozenset(self._pc["skip_levels"])  # type: ignore[arg-type]
+        levels = frozenset(cast("frozenset[int]", self.switches.program_control["skip_levels"]))
         setter = getattr(interp, "set_skip_levels", None)
         if setter is not None:
             setter(levels)
@@ -183,7 +196,7 @@ class ControlSettings(DataWrites):
         """The WCS offset bookkeeping of every segment handed to the motion."""
         for axis, mcs in motion.end_mcs.items():
             if axis in motion.end_wcs:
-                self._wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
+                self.outputs.wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
         return motion
 
     def _work_offset_edited(self) -> None:
@@ -192,22 +205,22 @@ class ControlSettings(DataWrites):
         START when entered while the program is stopped (002 L28128-28137, L31541-31546)."""
         if not int(self.machine_data.active_value("MD9440") or 0):
             return
-        if self._sit.channel == RESET:  # type: ignore[attr-defined]
-            self._activate_stored_frames()  # type: ignore[attr-defined]
+        if self.channel.situation.channel == RESET:
+            self._activate_stored_frames()
         else:
-            self._offsets_edited = True
+            self.channel.offsets_edited = True
 
     def _apply_offset_edits(self) -> None:
         """NC START: offsets edited while stopped under MD9440 = 1 become active."""
-        if self._offsets_edited:
-            self._offsets_edited = False
-            self._activate_stored_frames()  # type: ignore[attr-defined]
+        if self.channel.offsets_edited:
+            self.channel.offsets_edited = False
+            self._activate_stored_frames()
 
     def _apply_dry_run(self) -> None:
         """Hand the dry run (SD42100 feed, SD42101 mode) or its absence to the motion systems
         and to the interpreters ($P_DRYRUN); called on the switch, at NC START (setting data
         written meanwhile) and for a new program-test motion."""
-        on = bool(self._pc["dry_run"])
+        on = bool(self.switches.program_control["dry_run"])
         feed = float(self._setting("SD42100", DEFAULT_DRY_RUN_MM_MIN)) if on else None
         mode = int(self._setting("SD42101", 0))
         for motion in (self.motion, self._test_motion):
@@ -227,10 +240,10 @@ class ControlSettings(DataWrites):
     def _apply_overrides(self) -> None:
         spindle = getattr(self.motion, "set_spindle_override", None)
         if spindle is not None:
-            spindle(self._overrides["spindle"])
-        feed = self._overrides["feed"]
+            spindle(self.switches.overrides["spindle"])
+        feed = self.switches.overrides["feed"]
         # 002 L56369-56370: the feed switch acting as rapid override counts at most 100 %.
-        rapid = min(feed, 100.0) if self._pc["rapid_override"] else self._overrides["rapid"]
+        rapid = min(feed, 100.0) if self.switches.program_control["rapid_override"] else self.switches.overrides["rapid"]
         for motion in (self.motion, self._test_motion):
             if motion is not None:
                 motion.set_overrides(feed, rapid)

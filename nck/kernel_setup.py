@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from nck.channel_state import ChannelState
 from nck import commands as cmd
 from nck.access import AccessError, Action
 from nck.commands import Accepted, Rejected, SubmitResult
@@ -35,6 +36,7 @@ SETFR_MASK_BIT = 1  # MD28082 / MD24006 / MD24007 bit 0: the frame for PRESET an
 
 class JobSetup:
     """Machine set-up, Set WO, PRESET; mixed into ``Nck`` (uses its state)."""
+    channel: ChannelState
 
     data: Any
     machine: Any
@@ -48,7 +50,7 @@ class JobSetup:
             return Rejected(str(error))
         if not isinstance(command.setup, MachineSetup):
             return Rejected("not a machine set-up")
-        if self._sit.channel == "active":  # type: ignore[attr-defined]
+        if self.channel.situation.channel == "active":  # type: ignore[attr-defined]
             return Rejected("The machine set-up can be changed only while the channel is not active")
         self.data.machine_setup = command.setup
         return Accepted()
@@ -109,7 +111,7 @@ class JobSetup:
 
     def _preset_target(self, wanted: str | None, modal: Any) -> str | Rejected:
         """The frame a Set WO writes (``"G54"`` …, or :data:`SETFR`), checked; else the refusal."""
-        if self._sit.channel == "active":  # type: ignore[attr-defined]
+        if self.channel.situation.channel == "active":  # type: ignore[attr-defined]
             return Rejected("Set WO is possible only while the channel is not active")
         target = (wanted or modal.gcodes.get(8, "G500")).strip().upper()
         if target in ("G500", "$P_SETFR"):
@@ -133,7 +135,7 @@ class JobSetup:
 
     def _frame_interpreter(self) -> Any:
         """The interpreter whose frames the WCS display shows (the MDA one when none ran yet)."""
-        run = self._overlay or self._run  # type: ignore[attr-defined]
+        run = self.channel.overlay or self.channel.run  # type: ignore[attr-defined]
         if run is not None:
             return run.interp
         last = getattr(self, "_last_interp", None)  # the one that ran last holds the channel's state

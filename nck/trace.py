@@ -104,9 +104,9 @@ def validate(settings: TraceSettings, machine: Any) -> None:
 def _reader(signal: str) -> Callable[[Any, dict[str, Any]], float]:
     """A function (kernel, per-cycle cache) -> value of ``signal``."""
     if signal == "feed_override":
-        return lambda nck, cache: float(nck._overrides.get("feed", 100.0))
+        return lambda nck, cache: float(nck.switches.overrides.get("feed", 100.0))
     if signal == "spindle_override":
-        return lambda nck, cache: float(nck._overrides.get("spindle", 100.0))
+        return lambda nck, cache: float(nck.switches.overrides.get("spindle", 100.0))
     axis, _, quantity = signal.partition(".")
 
     def positions(nck: Any, cache: dict[str, Any]) -> Any:
@@ -128,7 +128,7 @@ def _reader(signal: str) -> Callable[[Any, dict[str, Any]], float]:
             state = getattr(spindle, "state", None)
             if state is not None and hasattr(state, "actual_rpm"):
                 return float(state.actual_rpm)
-            return float(nck._spindle_rpm) if nck._spindle_state in ("M3", "M4") else 0.0
+            return float(nck.outputs.spindle_rpm) if nck.outputs.spindle_state in ("M3", "M4") else 0.0
         return spindle_speed
     field_name = {"actual": "position_actual_mm", "velocity": "velocity_actual_mm_min",
                   "following_error": "following_error_mm"}[quantity]

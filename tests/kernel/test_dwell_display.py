@@ -3,7 +3,7 @@ interpreter's look-ahead (issue 18), on the real interpreter and motion.
 
 002 L4520-4530 (look-ahead): the NC prepares blocks ahead of the one the axes execute, so the
 interpreter already holds the next block's modal state; the display belongs to the block in
-execution (the block display does the same: ``kernel_status`` module docstring). G4 F3 holds the
+execution (the block display does the same: ``nck.snapshot`` module docstring). G4 F3 holds the
 path for 3 s (001 L6402-6412); meanwhile the following block with G90 is already interpreted.
 """
 

@@ -56,7 +56,7 @@ def test_random_command_sequences_keep_the_channel_consistent(sequence, referenc
                 assert (status.channel.channel_state, status.channel.program_state) == ("reset", "aborted")
         assert is_valid(nck.situation), nck.situation
         if nck.situation.program == "aborted":
-            assert nck._run is None and nck._overlay is None
+            assert nck.channel.run is None and nck.channel.overlay is None
         assert nck.internal_errors == []
     status = nck.status()
     assert (status.channel.mode, status.channel.channel_state, status.channel.program_state) == (

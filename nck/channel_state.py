@@ -1,0 +1,85 @@
+"""The kernel's mutable state, each field declared once with its one owner.
+
+:class:`ChannelState` is the channel: its mode/channel/program situation (the transition table
+of :mod:`nck.channel`), the program run, the MDA overlay, the interrupted program and its
+REPOS point, manual traversing and the emergency stop. :class:`ControlSwitches` holds the
+operator's program-control switches and override positions; :class:`MachineOutputs` holds
+what the main run has output to the machine (active tool and edge, spindle, auxiliary
+functions, the work offset of the last segment). ``Nck`` creates one of each and hands them
+to its parts (the status snapshot, block search, manual traversing, contact watch).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from nck.canon import Dwell, Motion, SpindleCommand
+from nck.channel import ChannelSituation, next_state
+from nck.program_control import ProgramRun
+
+OVERRIDE_NAMES = ("feed", "rapid", "spindle")
+
+
+def _default_program_control() -> dict[str, object]:
+    return {"single_block": None, "dry_run": False, "m01": False, "program_test": False,
+            "rapid_override": False, "skip_levels": frozenset()}
+
+
+@dataclass
+class ChannelState:
+    """Mode, channel and program state of the one channel (see the module docstring)."""
+
+    situation: ChannelSituation = field(default_factory=ChannelSituation)
+    machine_function: str | None = None  # REF, REPOS, INC or None (JOG continuous)
+    increment: int | None = 1  # INC 1 … 10000 (0.001 mm); None = VAR (SD41010)
+    inc_waiting_for_jog: bool = False  # INC was active when JOG was left for MDA
+    selected: str | None = None  # the program selected for AUTOMATIC
+    mda_text: str = ""  # the MDA buffer
+    run: ProgramRun | None = None  # the program running (or stopped) in the channel
+    overlay: ProgramRun | None = None  # MDA blocks over an interrupted AUTO program
+    owner: str | None = None  # mode whose program is stopped/interrupted
+    parked: list[Motion | Dwell] | None = None  # unexecuted motion of the parked program
+    repos_point: dict[str, float] | None = None  # interruption point (REPOS), MCS
+    offsets_edited: bool = False  # a work offset was edited while stopped with MD9440 = 1
+    serupro: bool = False  # a search run by program test is under way
+    serupro_spindle: SpindleCommand | None = None  # switched on by the NC START after SERUPRO
+    estop_pressed: bool = False  # the emergency stop button is pressed
+    estop_active: bool = False  # emergency stop in effect (until RESET after release)
+    jogging: bool = False  # a manual motion (JOG, INC, REF, REPOS) is under way
+    jog_targets: dict[str, float] = field(default_factory=dict)  # axis -> MCS end of the increments pressed
+    jog_rest: dict[str, float] = field(default_factory=dict)  # axis -> increment left by NC STOP
+
+    def transition(self, event: str) -> None:
+        """Follow ``event`` in the transition table of :mod:`nck.channel` (no change where it has none)."""
+        new = next_state(self.situation, event)
+        if new is not None:
+            self.situation = new
+
+    def active_run(self) -> ProgramRun | None:
+        """The run the channel feeds now: the MDA overlay over an interrupted program, else the run."""
+        return self.overlay or self.run
+
+
+@dataclass
+class ControlSwitches:
+    """The operator's program-control switches and override switch positions."""
+
+    program_control: dict[str, object] = field(default_factory=_default_program_control)
+    overrides: dict[str, float] = field(default_factory=lambda: dict.fromkeys(OVERRIDE_NAMES, 100.0))
+
+    @property
+    def program_test(self) -> bool:
+        """Program test (PRT) is selected: programs run on a simulated copy of the axes."""
+        return bool(self.program_control["program_test"])
+
+
+@dataclass
+class MachineOutputs:
+    """What the main run has output to the machine (the interpreter is ahead of it)."""
+
+    tool: int = 0  # the active tool (after the change)
+    edge: int = 0  # the active cutting edge (D)
+    spindle_state: str = "M5"  # M3, M4 or M5 of the master spindle as programmed
+    spindle_rpm: float = 0.0  # its programmed speed
+    aux: dict[str, str] = field(default_factory=dict)  # address (+ extension) -> value, e.g. "T", "M"
+    wcs_offset: dict[str, float] = field(default_factory=dict)  # axis -> MCS - WCS of the last segment
