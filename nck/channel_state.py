@@ -55,6 +55,36 @@ class ChannelState:
         if new is not None:
             self.situation = new
 
+    def begin_run(self, run: ProgramRun) -> None:
+        """A program starts from reset: it is the run, nothing is interrupted or parked."""
+        self.run = run
+        self.owner = None
+        self.repos_point = None
+        self.parked = None
+
+    def adopt_searched_run(self, run: ProgramRun) -> None:
+        """Block search found its target: ``run`` stands there, as an interrupted AUTO program."""
+        self.run = run
+        self.overlay = None
+        self.owner = "AUTO"
+        self.repos_point = None
+        self.parked = None
+
+    def stop_manual_motion(self) -> None:
+        """No manual motion any more, nothing to continue with NC START."""
+        self.jogging = False
+        self.jog_targets.clear()
+        self.jog_rest.clear()
+
+    def clear_programs(self) -> None:
+        """RESET (or an internal error): no run, no overlay, no interruption, no manual motion."""
+        self.run = None
+        self.overlay = None
+        self.owner = None
+        self.stop_manual_motion()
+        self.repos_point = None
+        self.parked = None
+
     def active_run(self) -> ProgramRun | None:
         """The run the channel feeds now: the MDA overlay over an interrupted program, else the run."""
         return self.overlay or self.run

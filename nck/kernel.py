@@ -484,14 +484,11 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         return run
 
     def _begin_run(self, run: ProgramRun) -> None:
-        self.channel.run = run
+        self.channel.begin_run(run)
         if run.kind == "AUTO" and self.run_recorder_factory is not None:
             recording = self.run_recorder_factory(run.name, self.outputs.tool, self.outputs.edge)
             self.run_recording = recording
             run.listener = lambda block: self._record_block(recording, block)
-        self.channel.owner = None
-        self.channel.repos_point = None
-        self.channel.parked = None
         self.motion.resume()
         if self.switches.program_control["program_test"]:
             self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
@@ -506,7 +503,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
             self.channel.transition("nc_stop")
             return Accepted()
         self._path_motion().hold()
-        run = self.channel.overlay or self.channel.run
+        run = self.channel.active_run()
         if run is not None:
             run.stop_reason = "NC STOP"
         self._mark_interrupted(run)
@@ -527,14 +524,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
                 self._raise(error)
         if self.channel.run is not None:
             self._share_kept_gcodes(self.channel.run.interp)
-        self.channel.run = None
-        self.channel.overlay = None
-        self.channel.owner = None
-        self.channel.jogging = False
-        self.channel.jog_targets.clear()
-        self.channel.jog_rest.clear()
-        self.channel.repos_point = None
-        self.channel.parked = None
+        self.channel.clear_programs()
         keep = frozenset({ALARM_EMERGENCY_STOP}) if self.channel.estop_pressed else frozenset()
         self.alarms.clear("reset", self._time_s, keep=keep)
         if self.channel.estop_active and not self.channel.estop_pressed:
@@ -559,10 +549,8 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
             self._spindle_display_after_reset(())  # every spindle brakes and loses its S
             if self._test_motion is not None:
                 self._test_motion.abort()
-            self.channel.jogging = False
-            self.channel.jog_targets.clear()
-            self.channel.jog_rest.clear()
-            run = self.channel.overlay or self.channel.run
+            self.channel.stop_manual_motion()
+            run = self.channel.active_run()
             self._mark_interrupted(run)
             self.channel.transition("emergency_stop")
             if self.channel.situation.program == ABORTED:
@@ -595,7 +583,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         """
         if self.batch_cycles <= 1 or self.cycle_listeners or limit <= 1 or not fed:
             return 1
-        run = self.channel.overlay or self.channel.run
+        run = self.channel.active_run()
         if run is not None and self.channel.situation.channel == ACTIVE and not self.channel.jogging:
             if run.wants_every_cycle(self._path_motion()):
                 return 1
@@ -616,7 +604,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
     def _cycle(self, limit: int = 1) -> None:
         """One kernel step: feed the run for the first cycle, then move 1 … ``limit`` cycles."""
         self._time_s += self._ipo_s
-        run = self.channel.overlay or self.channel.run
+        run = self.channel.active_run()
         fed = True
         prefed, self._prefed = self._prefed, None
         if prefed is not None:
@@ -668,7 +656,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         Events of the feed are kept for the next step, which handles them
         first, as the cycle-by-cycle kernel does before that cycle's motion.
         """
-        run = self.channel.overlay or self.channel.run
+        run = self.channel.active_run()
         if self.channel.jogging or self._test_motion is not None:
             return 0
         if run is None or self.channel.situation.channel != ACTIVE:
@@ -772,7 +760,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
     def _motion_alarm(self, error: NcAlarmError) -> None:
         self._raise(error)
         reactions = self.alarms.reactions_of(error.number)
-        run = self.channel.overlay or self.channel.run
+        run = self.channel.active_run()
         if "emergency_stop" in reactions:
             self._emergency_stop(cmd.EmergencyStop(True))
             self.channel.estop_pressed = False
@@ -926,14 +914,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
             self.motion.abort()
         except Exception:  # noqa: BLE001
             pass
-        self.channel.run = None
-        self.channel.overlay = None
-        self.channel.owner = None
-        self.channel.jogging = False
-        self.channel.jog_targets.clear()
-        self.channel.jog_rest.clear()
-        self.channel.parked = None
-        self.channel.repos_point = None
+        self.channel.clear_programs()
         self._test_motion = None if not self.switches.program_control["program_test"] else self._test_motion
         self.channel.situation = ChannelSituation(self.channel.situation.mode, RESET, ABORTED)
 

@@ -358,7 +358,7 @@ class ContactWatch:
 
     def _executing(self) -> tuple[Any, Any]:
         """The program run whose block executes now and that block's source (``None``s in JOG)."""
-        run = self.channel.overlay or self.channel.run  # type: ignore[attr-defined]
+        run = self.channel.active_run()
         return run, (self._path_motion().current_source() if run is not None else None)  # type: ignore[attr-defined]
 
     def _record(self, kind: str, name: str, at: dict[str, float]) -> None:

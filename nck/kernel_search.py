@@ -75,11 +75,7 @@ class BlockSearchControl:
         if not result.found:
             interp.reset()
             return Rejected(f"Search target {command.target} not found")
-        self.channel.run = run
-        self.channel.overlay = None
-        self.channel.owner = "AUTO"
-        self.channel.repos_point = None
-        self.channel.parked = None
+        self.channel.adopt_searched_run(run)
         self.runtime.start_from_reset()
         self.channel.transition("search_found")
         return Accepted()

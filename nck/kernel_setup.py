@@ -135,7 +135,7 @@ class JobSetup:
 
     def _frame_interpreter(self) -> Any:
         """The interpreter whose frames the WCS display shows (the MDA one when none ran yet)."""
-        run = self.channel.overlay or self.channel.run  # type: ignore[attr-defined]
+        run = self.channel.active_run()
         if run is not None:
             return run.interp
         last = getattr(self, "_last_interp", None)  # the one that ran last holds the channel's state
