@@ -149,7 +149,7 @@ def write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
 # --------------------------------------------------------------------------- rollback
 def _journal(interp: Any, undo: Any) -> None:
     """Let a failing block undo a frame write (the interpreter's journal, kind ``undo``)."""
-    journal = getattr(interp, "_journal", None)
+    journal = getattr(interp, "undo_journal", None)
     if journal is not None:
         journal.append(("undo", undo, None))
 

@@ -124,10 +124,10 @@ class BlockRun:
         if self.call is not None:
             raise NcAlarmError(SYNTAX_ERROR, self.end_kind)
         if self.frame.is_main or interp.dialect.ends_whole_program(interp, self.end_kind):
-            interp._program_end(self.end_kind or "M30")  # (ISO mode: M30 in a subprogram ends the whole program)
+            interp.end_program(self.end_kind or "M30")  # (ISO mode: M30 in a subprogram ends the whole program)
             return [canon.ProgramEnd(self.source, self.end_kind or "M30")]
         prepare_return(self.frame, self.ret_target)
-        interp._return_from(self.frame)
+        interp.return_from(self.frame)
         if self.ret_target is not None:
             resume_caller(interp, *self.ret_target)
         return []
@@ -413,7 +413,7 @@ class BlockRun:
             limit_kb = interp.machine.md_value("MD18150", default=GUD_VALUES_MEM_KB)
             what = "MD18150 GUD memory"
         else:
-            used = sum(frame.lud_bytes for frame in interp._state.frames)
+            used = sum(frame.lud_bytes for frame in interp.run_state.frames)
             limit_kb = interp.machine.md_value("MD28040", default=LUD_VALUES_MEM_KB)
             what = "MD28040 LUD memory"
         if used + size > int(limit_kb) * 1024:
@@ -552,7 +552,7 @@ class BlockRun:
 
     def _call(self, call: ast.Call) -> None:
         interp = self.interp
-        state = interp._state
+        state = interp.run_state
         found = interp.programs.read_program(call.name) or interp.read_cycle(call.name)
         if found is None:
             if call.args is None and not call.name[:1] == "L" and self.passes is None:
@@ -624,7 +624,7 @@ class BlockRun:
             if len(stmt.args) > 1:
                 raise NcAlarmError(WRONG_CALL_ARGUMENTS, "MSG")
             text = to_string(self.eval(stmt.args[0])) if stmt.args and stmt.args[0] is not None else ""
-            self.interp._state.message = text
+            self.interp.run_state.message = text
             self.early.append(canon.Message(self.source, text))
         elif name == "SETAL":
             if not stmt.args or stmt.args[0] is None:

@@ -78,7 +78,7 @@ class VariableHost(Protocol):
     data: NcData
     access_level: Callable[[], int]
     """The protection level the program runs with (GUD access rights)."""
-    _journal: list[tuple[str, Any, Any]]
+    undo_journal: list[tuple[str, Any, Any]]
     """Old values of the current block's writes (undone if the block fails)."""
 
     def lookup(self, name: str) -> Binding | None:
@@ -143,9 +143,9 @@ def journal_cell(interp: VariableHost, cell: Cell, indices: tuple[Any, ...]) -> 
     """Record the old value of a variable (or one array element) before a write."""
     if cell.dims:
         offset = cell.offset(indices)
-        interp._journal.append(("cell", (cell, offset), cell.value[offset]))
+        interp.undo_journal.append(("cell", (cell, offset), cell.value[offset]))
     else:
-        interp._journal.append(("cell", (cell, None), cell.value))
+        interp.undo_journal.append(("cell", (cell, None), cell.value))
 
 
 def read_binding(interp: VariableHost, binding: Binding, indices: tuple[Any, ...]) -> Any:

@@ -40,8 +40,9 @@ class RunState:
 class InterpreterHost(VariableHost, SysContext, Protocol):
     """What a block run and the fast path use of the interpreter (see the module docstring).
 
-    The members with a leading underscore are the interpreter's own state and steps; only
-    its parts in this package use them.
+    ``run_state``, ``skip_run``, ``end_program`` and ``return_from`` are the interpreter's own
+    state and steps: public so that its parts in this package may be typed against them,
+    not for use outside ``nck.interp``.
     """
 
     machine: MachineConfig
@@ -50,8 +51,8 @@ class InterpreterHost(VariableHost, SysContext, Protocol):
     dialect: Dialect
     table: GTable
     builder: MotionBuilder
-    _state: RunState
-    _skip_run: tuple[int, bool] | None
+    run_state: RunState
+    skip_run: tuple[int, bool] | None
 
     @property
     def modal(self) -> ModalState:
@@ -63,8 +64,8 @@ class InterpreterHost(VariableHost, SysContext, Protocol):
     def read_cycle(self, name: str) -> tuple[str, str] | None:
         """``(name, text)`` of a standard cycle program, None if there is none."""
 
-    def _program_end(self, kind: str) -> None:
+    def end_program(self, kind: str) -> None:
         """End the whole program (M2/M30)."""
 
-    def _return_from(self, frame: Frame) -> None:
+    def return_from(self, frame: Frame) -> None:
         """Subprogram end: repeat while passes are left, else back to the caller."""

@@ -111,29 +111,29 @@ class Interpreter:
         # protection level the program runs with (setting-data writes); the kernel installs its own
         self.access_level: Callable[[], int] = lambda: LEVEL_FEWEST_RIGHTS
         self._axis_names = frozenset(a.name for a in machine.axes)
-        self._state = RunState(modal=ModalState.initial(machine, self.table))
-        self._journal: list[tuple[str, Any, Any]] = []
-        self._skip_run: tuple[int, bool] | None = None
+        self.run_state = RunState(modal=ModalState.initial(machine, self.table))
+        self.undo_journal: list[tuple[str, Any, Any]] = []
+        self.skip_run: tuple[int, bool] | None = None
 
     # ================================================================== public API
     @property
     def finished(self) -> bool:
         """True when the program has ended or none is loaded."""
-        return self._state.finished
+        return self.run_state.finished
 
     @property
     def modal(self) -> ModalState:
         """The live modal state (read-only use outside the interpreter)."""
-        return self._state.modal
+        return self.run_state.modal
 
     @property
     def call_stack(self) -> list[Frame]:
         """The program levels, main program first (for the dialect's hooks)."""
-        return self._state.frames
+        return self.run_state.frames
 
     def journal_undo(self, undo: Callable[[], None]) -> None:
         """Run ``undo`` if the current block is taken back (preprocessing repeats it)."""
-        self._journal.append(("undo", undo, None))
+        self.undo_journal.append(("undo", undo, None))
 
     def start(self, program_name: str) -> None:
         """Load main program ``program_name`` (alarm 14011 if it does not exist)."""
@@ -147,22 +147,22 @@ class Interpreter:
         """Load a program given as text (MDA buffer) under ``name``."""
         program = load_program(name, text, self.dialect, main=True)
         main = Frame(program=program, is_main=True)
-        self._state.frames = [main]
-        self._state.finished = False
-        self._state.blocks = 0
-        self._skip_run = None
+        self.run_state.frames = [main]
+        self.run_state.finished = False
+        self.run_state.blocks = 0
+        self.skip_run = None
 
     def reset(self) -> None:
         """Abort the program; G groups and modal values back to their reset state."""
-        self._state.frames = []
-        self._state.finished = True
-        self._state.modal.reset(self.machine, self.table)
-        self._skip_run = None
+        self.run_state.frames = []
+        self.run_state.finished = True
+        self.run_state.modal.reset(self.machine, self.table)
+        self.skip_run = None
 
     def modal_view(self) -> ModalView:
         """The modal state a display needs."""
-        modal = self._state.modal
-        iso = self.dialect.gcode_display(modal, self._state.frames)
+        modal = self.run_state.modal
+        iso = self.dialect.gcode_display(modal, self.run_state.frames)
         return ModalView(
             gcodes=dict(modal.gcodes),
             tool=modal.tool,
@@ -186,7 +186,7 @@ class Interpreter:
 
     def sync_position(self, position_mcs: Mapping[str, float]) -> None:
         """Take over actual machine positions (after JOG, before a start or REPOS)."""
-        modal = self._state.modal
+        modal = self.run_state.modal
         known = {a: float(v) for a, v in position_mcs.items() if a in modal.position_mcs}
         self.builder.sync_position(modal, known)  # WCS via frames and tool offset
 
@@ -206,9 +206,9 @@ class Interpreter:
         been executed (implicit STOPRE): the channel should wait until motion
         is idle, update :attr:`position_source`, then call :meth:`step`.
         """
-        if self._state.finished or not self._state.frames:
+        if self.run_state.finished or not self.run_state.frames:
             return False
-        frame = self._state.frames[-1]
+        frame = self.run_state.frames[-1]
         if frame.pc >= len(frame.program.lines) or frame.program.plain_run_end(frame.pc) > frame.pc:
             return False  # (a plain block reads no variables: no need to parse it here)
         line = frame.program.lines[frame.pc]
@@ -220,9 +220,9 @@ class Interpreter:
 
     def current_source(self) -> canon.Source | None:
         """File, line and block number of the next block (None when finished)."""
-        if self._state.finished or not self._state.frames:
+        if self.run_state.finished or not self.run_state.frames:
             return None
-        frame = self._state.frames[-1]
+        frame = self.run_state.frames[-1]
         if frame.pc >= len(frame.program.lines):
             return canon.Source(frame.program.name, len(frame.program.lines), None)
         line = frame.program.lines[frame.pc]
@@ -230,20 +230,20 @@ class Interpreter:
 
     def level(self) -> int:
         """Current program level (1 = main program, 0 = none)."""
-        return len(self._state.frames)
+        return len(self.run_state.frames)
 
     def step(self) -> BlockResult:
         """Interpret the next block; raise NcAlarmError on failure (state unchanged)."""
-        if self._state.finished:
+        if self.run_state.finished:
             return BlockResult(source=canon.Source("", 0, None), text="", finished=True)
-        if self.fast_path and self._state.frames:
+        if self.fast_path and self.run_state.frames:
             fast = step_plain(self)  # a plain motion block: same result without parser and snapshot
             if fast is not None:
-                self._journal = []
-                self._state.blocks += 1
+                self.undo_journal = []
+                self.run_state.blocks += 1
                 return fast
         saved = self._snapshot()
-        self._journal = []
+        self.undo_journal = []
         try:
             result = self._step()
         except NcAlarmError as alarm:
@@ -252,7 +252,7 @@ class Interpreter:
         except RecursionError:
             self._rollback(saved)
             raise self._locate(NcAlarmError(BLOCK_TOO_COMPLEX)) from None
-        self._state.blocks += 1
+        self.run_state.blocks += 1
         return result
 
     def block_search(self, target: str, max_blocks: int = 1_000_000) -> SearchResult:
@@ -268,23 +268,23 @@ class Interpreter:
             while not self.finished and blocks < max_blocks:
                 if self._is_search_target(target):
                     return SearchResult(True, blocks, tuple(collected),
-                                        dict(self._state.modal.position_wcs))
+                                        dict(self.run_state.modal.position_wcs))
                 result = self.step()
                 blocks += 1
                 collected.extend(c for c in result.commands
                                  if not isinstance(c, (canon.Motion, canon.Dwell, canon.ExactStop, canon.StopPoint)))
         finally:
             self.flags["search"] = False
-        return SearchResult(False, blocks, tuple(collected), dict(self._state.modal.position_wcs))
+        return SearchResult(False, blocks, tuple(collected), dict(self.run_state.modal.position_wcs))
 
     def skip_to(self, number: int | None, text: str) -> bool:
         """Block search without calculation: place the main program before its first block
         numbered ``number`` (or, with ``number`` None, the first block whose text contains
         ``text``) without interpreting a block before it, so the modal state stays what it
         was (002 L18284-18288). False (nothing changed) when no such block exists."""
-        if self._state.finished or not self._state.frames:
+        if self.run_state.finished or not self.run_state.frames:
             return False
-        main = self._state.frames[0]
+        main = self.run_state.frames[0]
         program = main.program
         if number is not None:
             index = program.find_number(number, -1, "F")
@@ -292,9 +292,9 @@ class Interpreter:
             index = program.find_text(text)
         if index is None:
             return False
-        del self._state.frames[1:]
+        del self.run_state.frames[1:]
         main.pc = index
-        self._skip_run = None
+        self.skip_run = None
         return True
 
     def plain_batch(self, max_blocks: int) -> Any:
@@ -316,13 +316,13 @@ class Interpreter:
         table); writes into existing variables and NC data are journaled; the
         modal state is copied only when the next block can change it.
         """
-        state = self._state
+        state = self.run_state
         frames = [(f, _frame_copy(f)) for f in state.frames]
         modal = copy.deepcopy(state.modal) if self._next_block_touches_modal() else None
-        return (list(state.frames), frames, modal, state.finished, state.message, self._skip_run)
+        return (list(state.frames), frames, modal, state.finished, state.message, self.skip_run)
 
     def _next_block_touches_modal(self) -> bool:
-        frame = self._state.frames[-1] if self._state.frames else None
+        frame = self.run_state.frames[-1] if self.run_state.frames else None
         if frame is None or frame.pc >= len(frame.program.lines):
             return True
         line = frame.program.lines[frame.pc]
@@ -334,7 +334,7 @@ class Interpreter:
 
     def _rollback(self, saved: tuple) -> None:
         frame_list, frames, modal, finished, message, skip_run = saved
-        for kind, key, old in reversed(self._journal):
+        for kind, key, old in reversed(self.undo_journal):
             if kind == "cell":
                 cell, offset = key
                 if offset is None:
@@ -360,15 +360,15 @@ class Interpreter:
                     self.data.gud[key] = old
             elif kind == "undo":  # key is a callable that restores what it saved (frame writes)
                 key()
-        self._journal = []
-        state = self._state
+        self.undo_journal = []
+        state = self.run_state
         for frame, saved_frame in frames:
             frame.__dict__.update(saved_frame.__dict__)
         state.frames = frame_list
         if modal is not None:
             state.modal = modal
         state.finished, state.message = finished, message
-        self._skip_run = skip_run
+        self.skip_run = skip_run
 
     def _locate(self, alarm: NcAlarmError) -> NcAlarmError:
         source = self.current_source()
@@ -377,7 +377,7 @@ class Interpreter:
         return alarm
 
     def _is_search_target(self, target: str) -> bool:
-        frame = self._state.frames[-1]
+        frame = self.run_state.frames[-1]
         if frame.pc >= len(frame.program.lines):
             return False
         line = frame.program.lines[frame.pc]
@@ -392,7 +392,7 @@ class Interpreter:
 
     # ---------------------------------------------------------------- one block
     def _step(self) -> BlockResult:
-        state = self._state
+        state = self.run_state
         frame = state.frames[-1]
         program = frame.program
         if frame.pc >= len(program.lines):
@@ -435,12 +435,12 @@ class Interpreter:
         """Skip levels; ``/n`` runs sample the switch once per run of equal marks."""
         level = block.skip_level
         if level is None:
-            self._skip_run = None
+            self.skip_run = None
             return False
-        if self._skip_run is not None and self._skip_run[0] == level:
-            return self._skip_run[1]
+        if self.skip_run is not None and self.skip_run[0] == level:
+            return self.skip_run[1]
         active = level in self.skip_levels
-        self._skip_run = (level, active)
+        self.skip_run = (level, active)
         return active
 
     def _end_of_file(self, frame: Frame) -> BlockResult:
@@ -448,43 +448,43 @@ class Interpreter:
         source = canon.Source(program.name, len(program.lines), None)
         commands: list[canon.CanonCommand] = []
         if frame.is_main:
-            commands.extend(self.builder.flush(self._state.modal))  # held-back chamfer/rounding
+            commands.extend(self.builder.flush(self.run_state.modal))  # held-back chamfer/rounding
             commands.append(canon.ProgramEnd(source, "EOF"))
-            self._program_end("EOF")
+            self.end_program("EOF")
         else:
-            self._return_from(frame)
+            self.return_from(frame)
         return BlockResult(source, "", tuple(commands), action_block=bool(commands),
-                           finished=self._state.finished, cost_s=BLOCK_COST_S)
+                           finished=self.run_state.finished, cost_s=BLOCK_COST_S)
 
-    def _program_end(self, kind: str) -> None:
-        self._state.finished = True
-        self._state.frames = []
-        modal = self._state.modal
+    def end_program(self, kind: str) -> None:
+        self.run_state.finished = True
+        self.run_state.frames = []
+        modal = self.run_state.modal
         modal.reset(self.machine, self.table)
         spindles = self.machine.spindles
         if kind in canon.END_COMMANDS and spindles and not self.machine.spindle_kept_after_reset(spindles[0]):
             self.sync_spindle("M5", 0.0)
-        self._skip_run = None
+        self.skip_run = None
 
     def sync_spindle(self, state: str, speed_rpm: float) -> None:
         """Take over the master spindle's direction and programmed S (the channel deletes
         them at RESET, keeps them over a mode change): G95, G96 and $P_S go on from there."""
-        self._state.modal.spindle_state = state
-        self._state.modal.spindle_speed_rpm = float(speed_rpm)
+        self.run_state.modal.spindle_state = state
+        self.run_state.modal.spindle_speed_rpm = float(speed_rpm)
 
     def sync_gcodes(self, codes: Mapping[int, str]) -> None:
         """Take over G codes the channel keeps over RESET (MD20152 = 1): ``{group: code}``;
         the frames follow when the kernel activates them."""
-        self._state.modal.gcodes.update(codes)
+        self.run_state.modal.gcodes.update(codes)
 
     def sync_tool(self, tool: int, edge: int, preselected: int) -> None:
         """Take over the tool in the spindle, its active edge and the preselected tool (MDA
         and AUTO have interpreters of their own; the machine has one spindle): before
         :meth:`sync_position`, so that the WCS follows with the tool length."""
-        modal = self._state.modal
+        modal = self.run_state.modal
         modal.tool, modal.edge, modal.tool_selected = int(tool), int(edge), int(preselected)
 
-    def _return_from(self, frame: Frame) -> None:
+    def return_from(self, frame: Frame) -> None:
         """Subprogram end: repeat while passes are left, else back to the caller."""
         if frame.passes_left > 0:
             frame.passes_left -= 1
@@ -494,19 +494,19 @@ class Interpreter:
             frame.for_ends = {}
             frame.repeats = []
             return
-        self._state.frames.pop()
+        self.run_state.frames.pop()
         if frame.saved_gcodes is not None:
-            self._state.modal.gcodes = dict(frame.saved_gcodes)
+            self.run_state.modal.gcodes = dict(frame.saved_gcodes)
         if frame.saved_pframe is not None:  # SAVE also restores the programmable frame
-            geo = self.builder.path.state(self._state.modal)
+            geo = self.builder.path.state(self.run_state.modal)
             geo.frames = geo.frames.with_programmable(frame.saved_pframe)
-        self.dialect.after_return(self._state.modal, frame)  # ISO: G291 again after a PROC program
+        self.dialect.after_return(self.run_state.modal, frame)  # ISO: G291 again after a PROC program
 
     # ---------------------------------------------------------------- data writes
     def write_r(self, index: Any, value: Any) -> None:
         """Write R parameter (journaled); alarm 17020 for a bad index."""
         i = self.r_index(index)
-        self._journal.append(("r", i, self.data.r[i]))
+        self.undo_journal.append(("r", i, self.data.r[i]))
         self.data.r[i] = convert(value, "REAL", f"R{i}")
 
     def r_index(self, index: Any) -> int:
@@ -537,20 +537,20 @@ class Interpreter:
             raise NcAlarmError(MEMORY_CAPACITY_REACHED,
                                f"MD18100 tool offset memory {edge_count} cutting edges: T{tool} D{edge}")
         if key not in self.data.tools:
-            self._journal.append(("tool", (tool, edge, param), _MISSING_EDGE))
+            self.undo_journal.append(("tool", (tool, edge, param), _MISSING_EDGE))
             self.data.tools[key] = ToolEdge()
         else:
-            self._journal.append(("tool", (tool, edge, param), self.data.tools[key].params.get(param)))
+            self.undo_journal.append(("tool", (tool, edge, param), self.data.tools[key].params.get(param)))
         self.data.tools[key].params[param] = value
 
     def write_setting_data(self, name: str, indices: tuple[Any, ...], value: Any) -> None:
         """Write setting datum ``$<name>`` at the current protection level (journaled)."""
         data_writes.write_setting_data(self, "$" + name, indices, value,
-                                       lambda undo: self._journal.append(("undo", undo, None)))
+                                       lambda undo: self.undo_journal.append(("undo", undo, None)))
 
     def write_gud(self, name: str, value: Any) -> None:
         """Write a global user variable (journaled)."""
-        self._journal.append(("gud", name, self.data.gud.get(name, _MISSING_EDGE)))
+        self.undo_journal.append(("gud", name, self.data.gud.get(name, _MISSING_EDGE)))
         self.data.gud[name] = value
 
     # ---------------------------------------------------------------- sysvar context
@@ -565,20 +565,20 @@ class Interpreter:
         """Actual machine position of an axis (position source, else programmed)."""
         if self.position_source is not None:
             return float(self.position_source(axis))
-        return float(self._state.modal.position_mcs.get(axis, 0.0))
+        return float(self.run_state.modal.position_mcs.get(axis, 0.0))
 
     def program_level(self) -> int:
         """Program level for ``$P_STACK`` (main = 1)."""
-        return len(self._state.frames)
+        return len(self.run_state.frames)
 
     def program_name(self) -> str:
         """Program name of the current level."""
-        return self._state.frames[-1].program.name if self._state.frames else ""
+        return self.run_state.frames[-1].program.name if self.run_state.frames else ""
 
     def parameter_given(self, number: int) -> bool | None:
         """``$P_SUBPAR[n]``: whether the call of the current level programmed parameter ``n``
         (1 = first); None when the level has no parameter ``n``."""
-        given = self._state.frames[-1].given_params if self._state.frames else ()
+        given = self.run_state.frames[-1].given_params if self.run_state.frames else ()
         return given[number - 1] if 1 <= number <= len(given) else None
 
     def flag(self, name: str) -> bool:
@@ -591,7 +591,7 @@ class Interpreter:
 
     def lookup(self, name: str) -> Binding | None:
         """The binding of a user variable visible at the current level."""
-        frames = self._state.frames
+        frames = self.run_state.frames
         if frames:
             frame = frames[-1]
             found = frame.locals.get(name)

@@ -79,13 +79,13 @@ class PlainBatch:
         if count <= 0:
             return
         interp = self.interp
-        state = interp._state
+        state = interp.run_state
         frame = state.frames[-1]
         modal = interp.modal
         last = count - 1
         frame.pc = self.first + count
         state.blocks += count
-        interp._skip_run = None
+        interp.skip_run = None
         if self.first_executable < count:
             frame.def_open = False
         modal.gcodes[1] = "G1" if self.kind[last] else "G0"

@@ -72,7 +72,7 @@ def plain_frame(interp: InterpreterHost) -> tuple[Any, Any] | None:
     Only a streamed Siemens program (:class:`TextLines`) without a modal call or
     pending repetitions qualifies; otherwise None (the general path goes on).
     """
-    state = interp._state
+    state = interp.run_state
     if state.finished or not state.frames:
         return None
     frame = state.frames[-1]

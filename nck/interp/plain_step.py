@@ -30,7 +30,7 @@ def step_plain(interp: InterpreterHost) -> BlockResult | None:
     if found is None:
         return None
     frame, lines = found
-    state, program = interp._state, frame.program
+    state, program = interp.run_state, frame.program
     index = frame.pc
     if program.plain_run_end(index) <= index:
         return None
@@ -69,7 +69,7 @@ def step_plain(interp: InterpreterHost) -> BlockResult | None:
     if moving:
         commands = (_move(interp, setup, source, kind, texts),)
     frame.pc = index + 1
-    interp._skip_run = None
+    interp.skip_run = None
     return BlockResult(
         source=source, text=raw, commands=commands, action_block=bool(commands), finished=False,
         cost_s=BLOCK_COST_S,

@@ -3,7 +3,7 @@
 ``RET`` with a target returns to the caller and continues at that block, searched
 from the calling block forward first, then backward; with ``after`` > 0 at the block
 after it. The subprogram ends for good: no further passes. A plain ``RET`` returns
-behind the calling block (:meth:`Interpreter._return_from`).
+behind the calling block (:meth:`Interpreter.return_from`).
 """
 
 from __future__ import annotations

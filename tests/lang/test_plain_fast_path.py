@@ -59,8 +59,8 @@ def _run(text: str, fast: bool, **limits: Any) -> dict[str, Any]:
         "position_mcs": dict(modal.position_mcs),
         "feed": modal.feed,
         "geometry": None if geo is None else (dict(geo.wcs_mm), geo.tangent),
-        "state": (interp._state.blocks, interp._state.finished,
-                  [(f.pc, f.def_open) for f in interp._state.frames]),
+        "state": (interp.run_state.blocks, interp.run_state.finished,
+                  [(f.pc, f.def_open) for f in interp.run_state.frames]),
     }
 
 
@@ -172,7 +172,7 @@ def _steps(text: str, fast: bool) -> tuple[list[Any], list[Any], dict[str, Any]]
     geo = modal.geometry
     state = {"gcodes": dict(modal.gcodes), "wcs": dict(modal.position_wcs), "mcs": dict(modal.position_mcs),
              "feed": modal.feed, "geo": None if geo is None else (dict(geo.wcs_mm), geo.tangent),
-             "blocks": interp._state.blocks, "frames": [(f.pc, f.def_open) for f in interp._state.frames]}
+             "blocks": interp.run_state.blocks, "frames": [(f.pc, f.def_open) for f in interp.run_state.frames]}
     return results, alarms, state
 
 

@@ -233,16 +233,16 @@ N40 M30
     interp.start_text("ROLL.MPF", text)
     interp.step()
     interp.step()
-    selecting = interp._state.modal.geometry.trc_stage
+    selecting = interp.run_state.modal.geometry.trc_stage
     assert selecting.compensator._state == "selecting"
     interp.step()  # N20: the compensation is now on, in a new stage object
-    assert interp._state.modal.geometry.trc_stage.compensator._state == "on"
+    assert interp.run_state.modal.geometry.trc_stage.compensator._state == "on"
     assert selecting.compensator._state == "selecting"  # a snapshot holding it is intact
-    stage_before = interp._state.modal.geometry.trc_stage
+    stage_before = interp.run_state.modal.geometry.trc_stage
     pieces_before = len(stage_before.compensator._pieces)
     with pytest.raises(NcAlarmError) as info:
         interp.step()
     assert info.value.number == 10754
-    stage_after = interp._state.modal.geometry.trc_stage
+    stage_after = interp.run_state.modal.geometry.trc_stage
     assert len(stage_after.compensator._pieces) == pieces_before
     assert stage_after.compensator.active
