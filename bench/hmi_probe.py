@@ -151,7 +151,9 @@ async def _key_latencies(app: Any, pilot: Any, presses: int = 40, keys: tuple[st
 async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float | str]:
     """Run the HMI under Textual's Pilot and collect the figures."""
     from nck import commands as c
-    from nck.kernel import Nck
+    from nck import build_nck
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
 
     from hmi.app import HmiApp
     from hmi.programs import DirectoryPrograms
@@ -167,7 +169,7 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
     else:
         (folder / name).write_text(SHORT_PROGRAM)
         programs = DirectoryPrograms([folder])
-    nck = Nck(programs=programs, referenced=True)
+    nck = build_nck(load_machine(), NcData(), programs, referenced=True)
     app = HmiApp(nck, realtime=False)
     app.freeze_gc_at_start = True  # as ``hmi`` (hmi.app.main) does
     first_frame: list[float] = []
@@ -298,14 +300,16 @@ async def measure_editor(program: Path, presses: int = 400) -> dict[str, float |
 
 async def first_frame_only(spawn_epoch: float) -> dict[str, float | str]:
     """Start the HMI (as :func:`measure` does) and return the time from spawn to its first frame."""
-    from nck.kernel import Nck
+    from nck import build_nck
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
 
     from hmi.app import HmiApp
     from hmi.programs import DirectoryPrograms
 
     folder = Path(tempfile.mkdtemp())
     (folder / "BENCH.MPF").write_text(SHORT_PROGRAM)
-    app = HmiApp(Nck(programs=DirectoryPrograms([folder]), referenced=True), realtime=False)
+    app = HmiApp(build_nck(load_machine(), NcData(), DirectoryPrograms([folder]), referenced=True), realtime=False)
     first_frame: list[float] = []
     async with app.run_test(size=(160, 48)) as pilot:
         app.call_after_refresh(lambda: first_frame.append(time.time()))

@@ -14,9 +14,9 @@ from __future__ import annotations
 
 __version__ = "0.1.0"
 
-# Building a kernel: the kernel itself, and the one place the HMI builds it on a data directory.
+# Building a kernel: the kernel itself, the one composition root (build_nck) and the kernel on a data directory.
 from nck.kernel import Nck as Nck
-from nck.build import (OpenedData as OpenedData, SessionKernel as SessionKernel,
+from nck.build import (OpenedData as OpenedData, SessionKernel as SessionKernel, build_nck as build_nck,
                        build_session_kernel as build_session_kernel, open_data_session as open_data_session,
                        programs_in_execution as programs_in_execution)
 # Numbers as the operator reads them (fixed decimals, never -0.000).

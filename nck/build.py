@@ -1,23 +1,34 @@
-"""Building a kernel on the retained data of an NC data directory: the HMI's composition root.
+"""Building a kernel: the one composition root of the HMI, the command line and headless runs.
 
-:func:`open_data_session` opens the directory (or a temporary copy of it), takes its lock
-and loads the retained data (:class:`nck.persistence.Session`); :func:`build_session_kernel`
+:func:`build_nck` wires a kernel from a machine, its NC data, a program source and an access
+control, with the interpreters of one language dialect; every client builds its kernel there
+(the HMI through :func:`build_session_kernel`, ``nck run`` / ``nck grade`` and the simulation
+through :func:`nck.headless.run_on_kernel`, the benchmarks directly). ``Nck(...)`` alone
+is a bare kernel for unit tests (Siemens dialect, no protection).
+
+:func:`open_data_session` opens an NC data directory (or a temporary copy of it), takes its
+lock and loads the retained data (:class:`nck.persistence.Session`); :func:`build_session_kernel`
 wires a kernel on that data: the session's machine with its active machine data, NC data,
 file system and access control, the machine-data store, the "program in use" rule of the
 file system, the power-on alarms, the retained alarm log and what the kernel keeps itself
 (part counters, MDA buffer, override switches). The HMI builds every kernel it runs on,
-also after "Reset (po)", here; the kernel's own parts are wired in ``Nck.__init__``.
+also after "Reset (po)", here.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Callable
 
 from nck import commands as cmd
+from nck.access import AccessControl
 from nck.datalock import lock_data_dir
+from nck.interp.api import ProgramSource
+from nck.interp.interpreter import Interpreter
+from nck.iso.dialect import dialect_for
 from nck.kernel import Nck
-from nck.machine import load_machine
+from nck.machine import MachineConfig, load_machine
+from nck.ncdata import NcData
 from nck.paths import open_data_dir
 from nck.persistence import Session
 
@@ -44,6 +55,36 @@ class SessionKernel:
     alarm_stamps: dict[int, dict[str, Any]] | None
 
 
+def build_nck(
+    machine: MachineConfig,
+    data: NcData,
+    programs: ProgramSource,
+    *,
+    access: AccessControl | None = None,
+    dialect: str = "siemens",
+    referenced: bool = False,
+    motion_factory: Callable[[MachineConfig], Any] | None = None,
+    on_interpreter: Callable[[Interpreter], None] | None = None,
+) -> Nck:
+    """The kernel on ``machine`` with the NC data ``data``, the programs of ``programs`` and
+    the protection of ``access`` (None: unprotected), interpreting the language ``dialect``
+    (``siemens``, ``iso-m``, ``iso-t``).
+
+    ``referenced``: every axis is referenced at power on (headless runs); otherwise only
+    those with an adjusted absolute encoder (MD34210). ``motion_factory``: the motion system
+    (default: the planned one). ``on_interpreter`` sees every interpreter the kernel creates.
+    """
+
+    def interpreter_factory(config: MachineConfig, source: ProgramSource, nc_data: NcData) -> Interpreter:
+        interp = Interpreter(config, source, nc_data, dialect=dialect_for(dialect, config))
+        if on_interpreter is not None:
+            on_interpreter(interp)
+        return interp
+
+    return Nck(machine, data, programs, motion_factory=motion_factory, referenced=referenced,
+               interpreter_factory=interpreter_factory, access=access)
+
+
 def open_data_session(machine: str | None = None, data_dir: str | None = None,
                       ephemeral: bool = False) -> OpenedData:
     """Open the NC data directory ``data_dir`` (a temporary copy with ``ephemeral``) for
@@ -68,7 +109,7 @@ def open_data_session(machine: str | None = None, data_dir: str | None = None,
 
 def build_session_kernel(session: Any) -> SessionKernel:
     """The kernel on ``session``'s retained data (see the module docstring)."""
-    nck = Nck(**session.kernel_arguments())
+    nck = build_nck(**session.kernel_arguments())
     nck.md_store = session.md
     session.files.in_use_check = lambda: programs_in_execution(nck.status())
     for alarm in session.startup_alarms:

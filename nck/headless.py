@@ -18,6 +18,8 @@ from typing import Any, Callable
 
 from nck.alarm_ids import INTERNAL_ERROR, PROGRAM_NOT_FOUND
 from nck import canon
+from nck import commands as cmd
+from nck.build import build_nck
 from nck.errors import NcAlarmError
 from nck.interp.api import ProgramSource
 from nck.interp.interpreter import Interpreter
@@ -135,18 +137,9 @@ def run_on_kernel(
 
     M0/M1 stops are continued with NC START at once (nobody is at the machine).
     """
-    from nck import commands as cmd  # noqa: PLC0415 - the kernel imports this module's users
-    from nck.kernel import Nck  # noqa: PLC0415
-
     source: ProgramSource = programs if text is None else _TextOverlay(programs, program_name, text)
     interpreters: list[Interpreter] = []
-
-    def factory(m: MachineConfig, p: ProgramSource, d: NcData) -> Interpreter:
-        interp = Interpreter(m, p, d, dialect=dialect_for(dialect, m))
-        interpreters.append(interp)
-        return interp
-
-    nck = Nck(machine, data, source, referenced=True, interpreter_factory=factory)
+    nck = build_nck(machine, data, source, dialect=dialect, referenced=True, on_interpreter=interpreters.append)
     if on_motion is not None:
         on_motion(nck.motion)
     result = RunResult(status="ended")

@@ -700,14 +700,14 @@ class Session:
         return self.md.active_machine()
 
     def kernel_arguments(self) -> dict[str, Any]:
-        """Keyword arguments for ``nck.kernel.Nck`` on this data directory::
+        """Keyword arguments for ``nck.build.build_nck`` on this data directory::
 
-            nck = Nck(**session.kernel_arguments(), referenced=False)
+            nck = build_nck(**session.kernel_arguments())
             for alarm in session.startup_alarms:
                 nck.raise_alarm(alarm)
             ...
             session.save()          # after changes (and on quit)
-            session = session.power_on()   # "Reset (po)": build a new Nck from it
+            session = session.power_on()   # "Reset (po)": build a new kernel from it
         """
         return {"machine": self.active_machine(), "data": self.ncdata,
                 "programs": self.files, "access": self.access}
