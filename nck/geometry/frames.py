@@ -311,7 +311,7 @@ class Frame:
         return self._replace(fine=fine)
 
     def _replace(self, **changes: object) -> "Frame":
-        data = dict(
+        data: dict[str, object] = dict(
             geometry_axes=self.geometry_axes, trans=self.trans, fine=self.fine,
             rotation=self.rotation, scale=self.scale, mirror=self.mirror,
         )

@@ -91,7 +91,7 @@ class TrcStage:
         radius = effective_radius(edge, active_wear_sign(modal, data.setting_data))
         if edge is not None:
             self.tips[key.serial] = reference_offset(edge.tool_type, int(edge.get(2)), radius)
-        state = dict(
+        state: dict[str, Any] = dict(
             side=side,
             radius_mm=radius,
             edge=int(modal.edge),

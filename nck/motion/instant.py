@@ -206,7 +206,8 @@ class InstantMotion:
         if axis not in self._pos or abs(distance_mm) <= EPSILON_MM:
             return
         direction = 1 if distance_mm > 0 else -1
-        base = self._jogs[axis].target if axis in self._jogs and self._jogs[axis].target is not None else self._pos[axis]
+        running = self._jogs.get(axis)
+        base = running.target if running is not None and running.target is not None else self._pos[axis]
         self._jogs[axis] = _Jog(axis, direction, float(velocity_mm_min), base + distance_mm)
 
     def start_reference(self, axis: str) -> None:

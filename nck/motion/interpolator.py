@@ -11,10 +11,11 @@ block event (see :meth:`PlannedMotion.advance_cycles`).
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
+from nck.canon import Source
 from nck.errors import NcAlarmError
 from nck.motion.planner import AlarmItem, DwellItem
 from nck.motion.profile import build_profile
@@ -45,6 +46,12 @@ class PathInterpolator:
     settle_point: np.ndarray | None
     _fine: np.ndarray
     _coarse: np.ndarray
+    wait_cycles: int  # standstill cycles still to give (dwell, exact stop, spindle wait)
+    held: bool  # NC STOP: the path brakes and stays
+    faulted: bool  # a motion alarm stopped the path
+    hold_point: np.ndarray | None  # where a hold stopped the path (REPOS goes back there)
+    is_idle: Callable[[], bool]
+    current_source: Callable[[], Source | None]
 
     def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
         """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.

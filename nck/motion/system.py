@@ -345,7 +345,7 @@ class PlannedMotion(PathInterpolator):
             if float(np.max(np.abs(self.hold_point - start))) > 1e-9:
                 segment = line(start, self.hold_point, self.linear_mask)
                 rapid = self.repos_feed is None
-                feed = None if rapid else self.repos_feed / 60.0
+                feed = None if self.repos_feed is None else self.repos_feed / 60.0
                 planned = plan_segment(self.params, segment, rapid=rapid, feed_mm_s=feed, soft=False,
                                        exact_stop=True, window="G601", source=self._last_source)
                 if not rapid:
