@@ -251,7 +251,9 @@ async def measure_editor(program: Path, presses: int = 400) -> dict[str, float |
     opened editor. From that frame on, Machine and Program are pressed in turn, and the
     key-to-repaint latencies of the keys answered while the check runs are reported.
     """
-    from nck.kernel import Nck
+    from nck import build_nck
+    from nck.machine import load_machine
+    from nck.ncdata import NcData
     from nck.storage import NcFileSystem
 
     from hmi.app import HmiApp
@@ -260,7 +262,7 @@ async def measure_editor(program: Path, presses: int = 400) -> dict[str, float |
 
     programs = NcFileSystem(Path(tempfile.mkdtemp()) / "nc")
     name = programs.import_file(program).path.rpartition("/")[2]
-    app = HmiApp(Nck(programs=programs, referenced=True), realtime=False)
+    app = HmiApp(build_nck(load_machine(), NcData(), programs, referenced=True), realtime=False)
     app.freeze_gc_at_start = True
     finished: list[float] = []
     apply_marks = CheckAndSimulation._apply_marks
