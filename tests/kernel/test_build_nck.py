@@ -36,7 +36,10 @@ def test_build_nck_wires_machine_data_programs_and_access() -> None:
 @pytest.mark.parametrize("dialect", ["siemens", "iso-m"])
 def test_build_nck_interprets_the_dialect_it_is_given(dialect: str) -> None:
     created = []
-    build_nck(load_machine(), NcData(), MemorySource(), dialect=dialect, on_interpreter=created.append)
+    nck = build_nck(load_machine(), NcData(), MemorySource(), dialect=dialect, referenced=True,
+                    on_interpreter=created.append)
+    for command in (cmd.SelectMode("MDA"), cmd.SetMdaProgram("G0 X1"), cmd.CycleStart()):
+        assert isinstance(nck.submit(command), cmd.Accepted)
     assert created and {interp.dialect.name for interp in created} == {dialect}
 
 
