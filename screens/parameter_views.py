@@ -15,24 +15,24 @@ from nck import fixed, trimmed
 from nck.queries import DataView
 from nck.status import NckStatus
 
-from hmi.i18n import data_text
+from hmi.i18n import N_, _, data_text
 from hmi.widgets.data_table import Cell, Column, DataTable
 
 LevelOf = Callable[[str], int]
 
 TOOL_TYPES = {
-    100: "Milling tool", 110: "Ball end mill", 111: "Ball end mill (conical)", 120: "End mill",
-    121: "End mill with corner rounding", 130: "Angle head cutter", 140: "Face mill",
-    145: "Thread cutter", 150: "Side mill", 155: "Bevel cutter", 200: "Twist drill",
-    205: "Solid drill", 210: "Boring bar", 220: "Centre drill", 230: "Countersink",
-    231: "Counterbore", 240: "Tap", 250: "Reamer", 500: "Roughing tool", 510: "Finishing tool",
-    520: "Plunge cutter", 530: "Parting tool", 540: "Threading tool", 550: "Button tool",
-    560: "Rotary drill", 580: "3D turning tool", 700: "Slotting saw", 710: "3D probe",
-    711: "Edge probe", 725: "Calibrating tool", 730: "Stop", 900: "Auxiliary tool",
+    100: N_("Milling tool"), 110: N_("Ball end mill"), 111: N_("Ball end mill (conical)"), 120: N_("End mill"),
+    121: N_("End mill with corner rounding"), 130: N_("Angle head cutter"), 140: N_("Face mill"),
+    145: N_("Thread cutter"), 150: N_("Side mill"), 155: N_("Bevel cutter"), 200: N_("Twist drill"),
+    205: N_("Solid drill"), 210: N_("Boring bar"), 220: N_("Centre drill"), 230: N_("Countersink"),
+    231: N_("Counterbore"), 240: N_("Tap"), 250: N_("Reamer"), 500: N_("Roughing tool"), 510: N_("Finishing tool"),
+    520: N_("Plunge cutter"), 530: N_("Parting tool"), 540: N_("Threading tool"), 550: N_("Button tool"),
+    560: N_("Rotary drill"), 580: N_("3D turning tool"), 700: N_("Slotting saw"), 710: N_("3D probe"),
+    711: N_("Edge probe"), 725: N_("Calibrating tool"), 730: N_("Stop"), 900: N_("Auxiliary tool"),
 }
-TOOL_GEOMETRY = ((1, "Type", 6), (3, "Length 1", 10), (4, "Length 2", 10), (5, "Length 3", 10),
-                 (6, "Radius", 10), (2, "Pos", 4))
-TOOL_WEAR = ((12, "ΔLength 1", 11), (13, "ΔLength 2", 11), (14, "ΔLength 3", 11), (15, "ΔRadius", 11))
+TOOL_GEOMETRY = ((1, N_("Type"), 6), (3, N_("Length 1"), 10), (4, N_("Length 2"), 10), (5, N_("Length 3"), 10),
+                 (6, N_("Radius"), 10), (2, N_("Pos"), 4))
+TOOL_WEAR = ((12, N_("ΔLength 1"), 11), (13, N_("ΔLength 2"), 11), (14, N_("ΔLength 3"), 11), (15, N_("ΔRadius"), 11))
 FRAME_COMPONENTS = (("TR", "Translation"), ("FI", "Fine"), ("RT", "Rotation"), ("SC", "Scale"),
                     ("MI", "Mirror"))
 SETTING_DATA = (
@@ -67,14 +67,14 @@ def tool_table(view: DataView, status: NckStatus | None, levels: LevelOf, wear: 
     """The tool list (geometry) or tool wear list: one row per cutting edge."""
     fields = TOOL_WEAR if wear else TOOL_GEOMETRY
     columns = [Column("", 1, "<"), Column("T", 6), Column("D", 3), Column("Tool type", 18, "<")]
-    columns += [Column(title, width) for _, title, width in fields]
+    columns += [Column(title, width) for _param, title, width in fields]
     active = (status.channel.modal.tool, status.channel.modal.edge) if status is not None else (0, 0)
     rows = []
     for (tool, edge), data in sorted(view.data.tools.items()):
         kind = int(data.get(1))
         row = [Cell("▶" if (tool, edge) == active else ""), Cell(str(tool)), Cell(str(edge)),
-               Cell(TOOL_TYPES.get(kind, f"type {kind}" if kind else "—"))]
-        for param, title, _ in fields:
+               Cell(_(TOOL_TYPES[kind]) if kind in TOOL_TYPES else (f"type {kind}" if kind else "—"))]
+        for param, title, _width in fields:
             value = data.get(param)
             shown = str(int(value)) if param in (1, 2) else fixed(value)
             unit = "" if param in (1, 2) else " mm"
@@ -82,9 +82,9 @@ def tool_table(view: DataView, status: NckStatus | None, levels: LevelOf, wear: 
                               f"T{tool} D{edge} {title}{unit}"))
         rows.append(row)
     if wear:
-        title = "Tool wear  (ΔLength / ΔRadius are added to the geometry values)"
+        title = N_("Tool wear  (ΔLength / ΔRadius are added to the geometry values)")
     else:
-        title = "Tool list  (lengths and radius in mm; Pos = cutting edge position)"
+        title = N_("Tool list  (lengths and radius in mm; Pos = cutting edge position)")
     note = "↑↓←→ select   Enter edit" + ("" if wear else "   ▶ active tool/edge")
     return DataTable(title, columns, rows, note)
 
@@ -182,7 +182,7 @@ def active_chain_table(view: DataView, status: NckStatus | None) -> DataTable:
     rows.append([Cell(label)] + [
         Cell(fixed((settable.trans.get(a, 0.0) + settable.fine.get(a, 0.0)) if settable else 0.0))
         for a in axes])
-    rows.append([Cell("Programmable frame")] + [Cell("(program)") for _ in axes])
+    rows.append([Cell("Programmable frame")] + [Cell("(program)") for _axis in axes])
     if status is not None:
         by_name = {a.name: a for a in status.axes}
         rows.append([Cell("Total (MCS − WCS, with tool)")] + [

@@ -39,8 +39,8 @@ from hmi.widgets.data_table import (
 )
 from screens.setup_workpiece import workpiece_table
 
-MD_VIEWS = {"general": "General machine data", "channel": "Channel machine data",
-            "axis": "Axis machine data", "display": "Display machine data"}
+MD_VIEWS = {"general": N_("General machine data"), "channel": N_("Channel machine data"),
+            "axis": N_("Axis machine data"), "display": N_("Display machine data")}
 TABLE_VIEWS = (*MD_VIEWS, "workpiece")
 ACTIVATION_TEXT = {"so": "immediately", "re": "at RESET", "cf": "at NEW CONFIG (Set MD active) or RESET",
                    "po": "at POWER ON (Reset (po))"}
@@ -105,9 +105,9 @@ def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) 
                      Cell(row.value_text, row.ref.text, edit, row.write_level, hint),
                      Cell(row.unit), Cell(row.activation), Cell(str(row.write_level)),
                      Cell("*" if row.pending else "")])
-    title = MD_VIEWS[scope] + (f" — axis {axis}" if axis else "")
+    title = _(MD_VIEWS[scope]) + (" — " + _("axis {axis}").format(axis=axis) if axis else "")
     if search:
-        title += f"  (search: {search})"
+        title += "  " + _("(search: {text})").format(text=search)
     return DataTable(title, columns, rows,
                      "Enter edit   * stored, not active yet   Act: po power on, re reset, cf new config, so at once")
 
@@ -145,7 +145,7 @@ class SetupScreen(AreaBase):
     # -- layout -------------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
         """Search field and MD table, or the access window."""
-        yield Input(placeholder="search by number or name, Enter applies (empty: all)", id="md-search")
+        yield Input(placeholder=_("search by number or name, Enter applies (empty: all)"), id="md-search")
         yield TableWindow(id="setup-table")
         yield Static("", id="setup-access", markup=False)
 

@@ -19,6 +19,8 @@ from textual import events
 from textual.binding import Binding
 from textual.widget import Widget
 
+from hmi.i18n import _
+
 
 EDIT_BINDINGS = [  # the keys of an editable table (screen bindings)
     Binding("up", "cursor(-1, 0)", "Up", show=False),
@@ -140,8 +142,8 @@ def render_table(table: DataTable, cursor: TableCursor, height: int, level: int,
                  show_cursor: bool = True) -> Text:
     """Draw ``table`` in ``height`` lines (title, heading, rows, note)."""
     text = Text(no_wrap=True, end="")
-    text.append(f" {table.title}\n", style="bold")
-    heading = " ".join(_fit(c.title, c.width, c.align) for c in table.columns)
+    text.append(f" {_(table.title)}\n", style="bold")
+    heading = " ".join(_fit(_(c.title), c.width, c.align) for c in table.columns)
     text.append(f" {heading}\n", style="bold underline")
     body = max(height - 3, 1)
     cursor.clamp(table, body)
@@ -162,13 +164,14 @@ def render_table(table: DataTable, cursor: TableCursor, height: int, level: int,
             text.append(" ")
         text.append("\n")
     if not table.rows:
-        text.append(" (no entries)\n", style="dim")
-    for _ in range(body - max(len(shown), 1)):
+        text.append(" " + _("(no entries)") + "\n", style="dim")
+    for _blank_line in range(body - max(len(shown), 1)):
         text.append("\n")
     more = ""
     if len(table.rows) > body:
-        more = f"rows {cursor.top + 1}–{cursor.top + len(shown)} of {len(table.rows)}   "
-    text.append(f" {more}{table.note}", style="dim")
+        more = _("rows {first}–{last} of {total}").format(
+            first=cursor.top + 1, last=cursor.top + len(shown), total=len(table.rows)) + "   "
+    text.append(f" {more}{_(table.note)}", style="dim")
     return text
 
 

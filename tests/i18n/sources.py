@@ -4,6 +4,8 @@ A text is taken from ``hmi/`` and ``screens/`` where it is
 
 * the literal argument of ``_("…")`` (translated where shown) or ``N_("…")`` (a table
   defined at import, translated where shown);
+* the title and note of a ``DataTable(…)`` and the title of a ``Column(…)`` (the table
+  window draws them translated);
 * the label of a softkey: the second argument of ``Softkey(…)``, ``view_softkey(…)`` and
   the areas' softkey builders of :data:`LABELLED` (the softkey bars and the palette
   translate every label).
@@ -34,20 +36,34 @@ def _name(node: ast.expr) -> str:
     return ""
 
 
+TABLE_TEXTS: dict[str, tuple[tuple[int, str], ...]] = {
+    "Column": ((0, "title"),), "DataTable": ((0, "title"), (3, "note")),
+}
+"""The data tables' texts (hmi.widgets.data_table draws them translated): position and keyword."""
+
+
+def _arguments(node: ast.Call, name: str) -> list[ast.expr]:
+    if name in MARKERS:
+        return node.args[:1]
+    if name in LABELLED:
+        return node.args[1:2]
+    chosen: list[ast.expr] = []
+    for position, keyword in TABLE_TEXTS.get(name, ()):
+        if len(node.args) > position:
+            chosen.append(node.args[position])
+        chosen += [k.value for k in node.keywords if k.arg == keyword]
+    return chosen
+
+
 def texts_of(source: str, filename: str = "<source>") -> dict[str, int]:
     """Every translatable literal of one module with the line it is on."""
     found: dict[str, int] = {}
     for node in ast.walk(ast.parse(source, filename)):
         if not isinstance(node, ast.Call):
             continue
-        name = _name(node.func)
-        argument = None
-        if name in MARKERS and node.args:
-            argument = node.args[0]
-        elif name in LABELLED and len(node.args) >= 2:
-            argument = node.args[1]
-        if isinstance(argument, ast.Constant) and isinstance(argument.value, str) and argument.value:
-            found.setdefault(argument.value, node.lineno)
+        for argument in _arguments(node, _name(node.func)):
+            if isinstance(argument, ast.Constant) and isinstance(argument.value, str) and argument.value.strip():
+                found.setdefault(argument.value, node.lineno)
     return found
 
 

@@ -45,3 +45,23 @@ def test_translations_keep_the_placeholders(code: str) -> None:
     wrong = {english: text for english, text in catalogue(code).items()
              if sorted(NAMED_FIELD.findall(english)) != sorted(NAMED_FIELD.findall(text))}
     assert not wrong
+
+
+def test_no_module_that_translates_binds_underscore_itself() -> None:
+    """A function that assigns ``_`` (``for _ in …``, ``a, _ = …``) makes it local: a call of the
+    translate function ``_()`` in it would fail. Modules importing ``_`` from hmi.i18n must not."""
+    import ast
+
+    from tests.i18n.sources import PACKAGES, ROOT
+
+    offenders = []
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            tree = ast.parse(path.read_text(encoding="utf-8"))
+            imports_underscore = any(isinstance(node, ast.ImportFrom) and node.module == "hmi.i18n"
+                                     and any(alias.name == "_" for alias in node.names) for node in ast.walk(tree))
+            if not imports_underscore:
+                continue
+            offenders += [f"{path.relative_to(ROOT)}:{node.lineno}" for node in ast.walk(tree)
+                          if isinstance(node, ast.Name) and node.id == "_" and isinstance(node.ctx, ast.Store)]
+    assert not offenders
