@@ -62,7 +62,7 @@ from hmi.alarm_help import AlarmHelpScreen
 from hmi.i18n import LANGUAGES, N_, _, language, set_language
 from hmi.help import HelpScreen, area_keys
 from hmi.key_input import own_binding
-from hmi.key_settle import wait_until_handled
+from hmi.key_settle import wait_for_workers, wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places, one_line
@@ -334,6 +334,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         target = focused or self.screen
         if target.is_attached:
             await wait_until_handled(self, target)
+        if isinstance(self.screen, CommandPalette):  # the keys behind a typed name see its search's list
+            await wait_for_workers(self.screen)
 
     async def on_cursor_position(self, event: events.CursorPosition) -> None:
         """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3), in its place among the keys.

@@ -26,6 +26,7 @@ from textual.app import App
 from textual.message_pump import MessagePump
 from textual.screen import Screen
 from textual.widget import Widget
+from textual.worker import Worker, WorkerCancelled
 
 SETTLE_ROUNDS = 12
 """At most this many rounds of messages caused by one key are waited for (bubbling, a dialog closing)."""
@@ -75,6 +76,24 @@ async def wait_until_handled(app: App, widget: Widget) -> None:
                        if marker in pending and getattr(pump, "is_attached", True)}
         if markers:
             return
+
+
+async def wait_for_workers(node: MessagePump) -> None:
+    """Wait until the workers ``node`` runs have ended, each at most :data:`SETTLE_LIMIT_S`.
+
+    The command palette searches in a worker after each typed character; a Down or
+    Enter typed behind the characters in one burst must see the list that search
+    makes, not the one before it (or none), else the choice is lost.
+    """
+    for worker in [worker for worker in node.app.workers if worker.node is node and worker.is_running]:
+        await asyncio.wait([asyncio.ensure_future(_ended(worker))], timeout=SETTLE_LIMIT_S)
+
+
+async def _ended(worker: Worker[object]) -> None:
+    try:
+        await worker.wait()
+    except WorkerCancelled:  # a newer search replaced it: nothing to wait for
+        pass
 
 
 def _reached(marker: asyncio.Future[None]) -> None:

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import asyncio
+
 from textual.command import CommandPalette
 from textual.widgets import Input
 
 from hmi.app import HmiApp
 from hmi.help import HelpScreen
 from hmi.keymap import default_keymap
-from hmi.palette import area_places
+from hmi.palette import PlaceProvider, area_places
 from hmi.softkeys import Softkey, SoftkeyMenu
 from tests.hmi.conftest import SIZE
 
@@ -67,6 +69,26 @@ async def test_palette_in_a_burst(fake_app: HmiApp) -> None:
         assert fake_app.current_mode == "parameter"
         await pilot.press("alt+m")
         assert fake_app.screen.view == "gfunc"
+
+
+async def test_keys_behind_a_name_wait_for_its_search(fake_app: HmiApp, monkeypatch) -> None:
+    """On a loaded machine the search of the typed name ends after the keys behind it have
+    arrived: Down and Enter still choose from its list (no key lost; the guide's key rule).
+    The search is made slow here by a provider that yields to the event loop for a while
+    before each search, as a busy machine does."""
+    searched = PlaceProvider.search
+
+    async def slow_search(self: PlaceProvider, query: str):
+        await asyncio.sleep(0.3)  # the other tasks (the keys behind) run meanwhile
+        async for hit in searched(self, query):
+            yield hit
+
+    monkeypatch.setattr(PlaceProvider, "search", slow_search)
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+p", *"g fun", "down", "enter")
+        await pilot.pause()
+        assert not isinstance(fake_app.screen, CommandPalette)
+        assert fake_app.current_mode == "machine" and fake_app.screen.view == "gfunc"
 
 
 async def test_keymap_keys_never_type_into_the_palette(fake_app: HmiApp) -> None:

@@ -15,7 +15,7 @@ from rich.console import Console
 from hmi.widgets.gfunctions import MAIN_GROUPS, all_groups_table
 from hmi.word_help import g_functions, word_at, word_help
 from tests.burst import burst
-from tests.program_screens.conftest import SIZE, make_program_app
+from tests.program_screens.conftest import SIZE, make_program_app, settle
 
 
 def test_g_functions_with_group_and_modality() -> None:
@@ -69,6 +69,10 @@ async def test_editor_message_line_shows_the_meaning(data_dir: Path) -> None:
         screen = app.screen
         assert screen.AREA_ID == "program"
         await burst(pilot, "ctrl+end", *"N10 G01 X10 F100", "enter", *"N20 M30", "up", "home")
+        # On a busy machine a check may have run on a half-typed line ("N10 G01 X1": no feed),
+        # and its mark takes the message line until the next check: check the typed text now.
+        screen.check_now()
+        await settle(pilot)
         message = lambda: str(screen.query_one("#prog-message").render())  # noqa: E731
         await burst(pilot, "right", "right", "right", "right", "right")
         assert "G1: straight line at the feedrate F — group 1 (modal motion commands), modal" in message()
