@@ -40,6 +40,7 @@ from nck.errors import NcAlarmError
 from nck.headless import DEFAULT_RAPID_MM_MIN, RunResult, run_program
 from nck.interp.api import ProgramSource
 from nck.machine import MachineConfig, load_machine
+from nck.motion.dry_run import THREAD_KINDS
 from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
 from nck.resources import alarm_text
@@ -319,7 +320,10 @@ class PathRecorder:
         cutter = self._cutter() if not first else self._no_cutter()
         n = motion.source.n if motion.source.n is not None else -1
         line = self._main_line_of.pop(id(motion), None) or motion.source.line or 0
-        self._meta.extend((line, motion.kind == "G0", self.tool, cutter, self.spindle_on, n))
+        # Tapping and thread cutting (G331 after SPOS, G33, G63) turn the spindle with the axes
+        # (002 L19681): not a cut with the spindle stopped, as the machine's contact watch says.
+        turning_spindle = self.spindle_on or motion.kind in THREAD_KINDS
+        self._meta.extend((line, motion.kind == "G0", self.tool, cutter, turning_spindle, n))
         if motion.feed is not None:
             self.feed = motion.feed
         self.states.append(self._state(motion.gcodes))

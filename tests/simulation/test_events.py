@@ -62,3 +62,13 @@ def test_the_tool_holder_below_the_surface_is_reported_with_its_block() -> None:
     assert "N60: tool holder below the surface" in holder[0].text
     # with the 60 mm tool the same program cuts without an event
     assert run(body, length_mm=60.0).events == []
+
+
+def test_rigid_tapping_after_an_oriented_stop_is_not_a_cut_with_the_spindle_stopped() -> None:
+    # CYCLE84 stops the spindle in position (SPOS) and taps with G331, the spindle interpolated
+    # with the axis (002 L19681); a G1 with the spindle stopped (M5) is the event.
+    tapped = run("N20 G0 X0 Y0 Z2\nN30 SPOS=0\nN40 G331 Z-10 K1.5 S300\nN50 G332 Z2 K1.5\n")
+    assert [e.kind for e in tapped.events] == []
+    assert tapped.zmap.height_at(0.0, 0.0) == pytest.approx(-10.0)
+    stopped = run("N20 G0 X0 Y0 Z2\nN30 M5\nN40 G1 Z-10 F100\nN50 G0 Z2\n")
+    assert [(e.kind, e.n) for e in stopped.events] == [("spindle_stopped", 40)]
