@@ -1,6 +1,7 @@
 """Every cycle form, as an operator uses it: softkeys to the form, a value typed into every
 field, OK → the call line at the cursor → Recompile (the same line reopens with those values)
-(the cycle's softkey again, with the cursor on the call) → OK → the line is unchanged (issue 23, Operate's programGUIDE).
+(the cycle's softkey again, with the cursor on the call) → one field changed → OK → the call is
+replaced by one with the changed value (issue 23 done-when, Operate's programGUIDE).
 
 The cycle level and its keys are the editor's (docs/screens_added.md "Program editor: cycle
 input forms"): Shift+F7 Cycles, F1 Drilling / F2 Milling / F3 Turning, Shift+F<n> the n-th key
@@ -50,6 +51,17 @@ def typed_value(param: CycleParam, index: int) -> str:
     return str(int(value)) if value == int(value) else str(value)
 
 
+def changed_field(params: list[CycleParam], values: list[str]) -> tuple[int, str]:
+    """The first numeric field and a value its range permits other than the one typed."""
+    for index, param in enumerate(params):
+        if param.kind == "name" or param.choices:
+            continue
+        for value in ("7", "3", "1", "0.5", "0.01"):
+            if param.refusal(value) is None and value != values[index]:
+                return index, value
+    raise AssertionError("no field to change")
+
+
 def _app(root: Path, cycle: str) -> HmiApp:
     """The mill for drilling and milling, the lathe for the turning cycles."""
     on_lathe = any(cycle in menu.cycles() for menu in cycle_menus() if menu.machine == "lathe")
@@ -58,7 +70,8 @@ def _app(root: Path, cycle: str) -> HmiApp:
 
 @pytest.mark.parametrize("cycle", sorted(cycle_forms()))
 async def test_form_call_line_and_recompile_round_trip(cycle: str, data_dir: Path) -> None:
-    """Type a value into every field; the call line holds them in order; Recompile gives them back."""
+    """Type a value into every field; the call line holds them in order; Recompile gives them
+    back; a changed field replaces the call."""
     (data_dir / "MPF" / "DEMO.MPF").write_text(PROGRAM)
     form = cycle_forms()[cycle]
     values = [typed_value(param, index) for index, param in enumerate(form.params)]
@@ -82,6 +95,8 @@ async def test_form_call_line_and_recompile_round_trip(cycle: str, data_dir: Pat
         dialog = app.screen
         assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle
         assert [field.value for field in dialog.fields()] == values
-        await burst(pilot, *["enter"] * len(values))
+        changed, value = changed_field(form.params, values)
+        await burst(pilot, *["down"] * changed, *value, *["enter"] * (len(values) - changed))
         await pilot.pause()
-        assert editor.text == f"N10 G0 X0\n{call}\nN20 M30\n"
+        args[changed] = value
+        assert editor.text == f"N10 G0 X0\n{cycle}({','.join(args)})\nN20 M30\n"  # replaced, not added
