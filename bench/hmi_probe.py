@@ -22,6 +22,8 @@ import statistics
 import sys
 import tempfile
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Callable
 
@@ -71,32 +73,23 @@ async def _refresh_cpu(app: Any, pilot: Any, nck: Any, refreshes: int = 60) -> t
     ``pause`` returns (the figure of earlier rounds): it adds Pilot's own work, a
     callback on every widget and the idle detection.
     """
-    frames: list[float] = []
-    display = app._display
-
-    def recording_display(screen: object, renderable: object) -> None:
-        display(screen, renderable)
-        if renderable is not None and not app._batch_count:
-            frames.append(time.thread_time())
-
-    app._display = recording_display
     to_frame: list[float] = []
     with_pilot: list[float] = []
-    for _ in range(refreshes):
-        nck.tick(0.05)
-        await pilot.pause()
-        frames.clear()
-        t0 = time.thread_time()  # the event loop's thread: not the editor's check worker
-        app.bridge.poll()
-        for _ in range(500):
-            if frames:
-                break
-            await asyncio.sleep(0.001)
-        painted = frames[0] if frames else time.thread_time()
-        await pilot.pause()
-        to_frame.append(painted - t0)
-        with_pilot.append(time.thread_time() - t0)
-    app._display = display
+    with recorded_frames(app, time.thread_time) as frames:
+        for _ in range(refreshes):
+            nck.tick(0.05)
+            await pilot.pause()
+            frames.clear()
+            t0 = time.thread_time()  # the event loop's thread: not the editor's check worker
+            app.bridge.poll()
+            for _ in range(500):
+                if frames:
+                    break
+                await asyncio.sleep(0.001)
+            painted = frames[0][0] if frames else time.thread_time()
+            await pilot.pause()
+            to_frame.append(painted - t0)
+            with_pilot.append(time.thread_time() - t0)
     return to_frame, with_pilot
 
 
@@ -116,35 +109,26 @@ async def _key_latencies(app: Any, pilot: Any, presses: int = 40, keys: tuple[st
     area switch); ``until``: no more keys once it returns True (the latency of a key
     counts only if it was still False when the frame came).
     """
-    frames: list[tuple[float, object]] = []
-    display = app._display
-
-    def recording_display(screen: object, renderable: object) -> None:
-        display(screen, renderable)
-        if renderable is not None and not app._batch_count:
-            frames.append((time.perf_counter(), screen))
-
-    app._display = recording_display
     app.bridge.start_realtime()
-    await pilot.pause(0.3)
-    latency: list[float] = []
-    roundtrip: list[float] = []
-    for k in range(presses):
-        if until is not None and until():
-            break
-        key = keys[k % 2]
-        await pilot.pause(0.06)  # let a timer tick fall anywhere relative to the key
-        frames.clear()
-        t0 = time.perf_counter()
-        await pilot.press(key)
-        await pilot.pause()
-        if until is not None and until():
-            break
-        roundtrip.append(time.perf_counter() - t0)
-        target = app.screen
-        painted = next((t for t, screen in frames if screen is target), None)
-        latency.append(painted - t0 if painted is not None else float("inf"))
-    app._display = display
+    with recorded_frames(app) as frames:
+        await pilot.pause(0.3)
+        latency: list[float] = []
+        roundtrip: list[float] = []
+        for k in range(presses):
+            if until is not None and until():
+                break
+            key = keys[k % 2]
+            await pilot.pause(0.06)  # let a timer tick fall anywhere relative to the key
+            frames.clear()
+            t0 = time.perf_counter()
+            await pilot.press(key)
+            await pilot.pause()
+            if until is not None and until():
+                break
+            roundtrip.append(time.perf_counter() - t0)
+            target = app.screen
+            painted = next((t for t, screen in frames if screen is target), None)
+            latency.append(painted - t0 if painted is not None else float("inf"))
     return latency, roundtrip
 
 
@@ -203,18 +187,23 @@ async def measure(spawn_epoch: float, program: Path | None) -> dict[str, float |
     return out
 
 
-def _record_frames(app: Any) -> list[tuple[float, object]]:
-    """(time, screen) of every frame the compositor writes from now on (``App._display`` wrapped)."""
+@contextmanager
+def recorded_frames(app: Any, clock: Callable[[], float] = time.perf_counter) -> Iterator[list[tuple[float, object]]]:
+    """(time by ``clock``, screen) of every frame the compositor writes inside the block
+    (``App._display`` wrapped, and given back at the end)."""
     frames: list[tuple[float, object]] = []
     display = app._display
 
     def recording_display(screen: object, renderable: object) -> None:
         display(screen, renderable)
         if renderable is not None and not app._batch_count:
-            frames.append((time.perf_counter(), screen))
+            frames.append((clock(), screen))
 
     app._display = recording_display
-    return frames
+    try:
+        yield frames
+    finally:
+        app._display = display
 
 
 async def _key_to_frame(app: Any, key: str, frames: list[tuple[float, object]], limit_s: float = 30.0) -> float:
@@ -278,20 +267,20 @@ async def measure_editor(program: Path, presses: int = 400) -> dict[str, float |
         await pilot.pause()
         await pilot.pause()
         ProgramFiles.of_app(app).request_open(f"MPF/{name}")
-        frames = _record_frames(app)
-        started = time.perf_counter()
-        out["editor_open_s"] = await _key_to_frame(app, "alt+p", frames)
-        latency: list[float] = []
-        for k in range(presses):
-            if finished:
-                break
-            await asyncio.sleep(0.06)
-            latency.append(await _key_to_frame(app, ("alt+m", "alt+p")[k % 2], frames))
-        limit = time.perf_counter() + 600.0
-        while not finished and time.perf_counter() < limit:
-            await pilot.pause(0.1)
-        out["editor_check_done"] = str(bool(finished))
-        out["editor_check_s"] = (finished[0] if finished else time.perf_counter()) - started
+        with recorded_frames(app) as frames:
+            started = time.perf_counter()
+            out["editor_open_s"] = await _key_to_frame(app, "alt+p", frames)
+            latency: list[float] = []
+            for k in range(presses):
+                if finished:
+                    break
+                await asyncio.sleep(0.06)
+                latency.append(await _key_to_frame(app, ("alt+m", "alt+p")[k % 2], frames))
+            limit = time.perf_counter() + 600.0
+            while not finished and time.perf_counter() < limit:
+                await pilot.pause(0.1)
+            out["editor_check_done"] = str(bool(finished))
+            out["editor_check_s"] = (finished[0] if finished else time.perf_counter()) - started
     out["editor_keys_during_check"] = float(len(latency))
     if latency:
         out["editor_key_latency_ms_median"] = statistics.median(latency) * 1000.0
