@@ -84,8 +84,17 @@ async def test_keys_behind_a_name_wait_for_its_search(fake_app: HmiApp, monkeypa
             yield hit
 
     monkeypatch.setattr(PlaceProvider, "search", slow_search)
+    pressed = asyncio.Event()  # the choice presses its softkey after the next refresh
+    press_softkeys = HmiApp._press_softkeys
+
+    def pressing(app: HmiApp, *args) -> None:
+        press_softkeys(app, *args)
+        pressed.set()
+
+    monkeypatch.setattr(HmiApp, "_press_softkeys", pressing)
     async with fake_app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+p", *"g fun", "down", "enter")
+        await asyncio.wait_for(pressed.wait(), timeout=30.0)
         await pilot.pause()
         assert not isinstance(fake_app.screen, CommandPalette)
         assert fake_app.current_mode == "machine" and fake_app.screen.view == "gfunc"
