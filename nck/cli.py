@@ -1,4 +1,4 @@
-"""The headless command line ``nck`` (contract: ``/work/shared/spec/cli.md``).
+"""The headless command line ``nck`` (its contract is the specification's ``cli.md``).
 
 ``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck grade STUDENT --reference REF``
 (:mod:`nck.grade`), ``nck version``; ``nck md``, ``nck setup`` and ``nck archive`` are
