@@ -1,7 +1,7 @@
 """Every text of the data tables exists in every language (issue 27).
 
-The English texts are the entries of ``data/alarms``, ``data/md`` and
-``data/gcode/siemens.toml``; the translations are the overlays ``data/lang/<code>/*.toml``.
+The English texts are the entries of ``data/alarms`` (text and the help's explanation and
+remedy), ``data/md`` and ``data/gcode/siemens.toml``; the translations are the overlays ``data/lang/<code>/*.toml``.
 """
 
 from __future__ import annotations
@@ -19,7 +19,8 @@ ALARM_PARAMETER = re.compile(r"%\d")
 
 def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     """kind -> key -> field -> English text, of every translated data table."""
-    alarms = {str(number): {"text": d.text} for number, d in alarm_catalog().items()}
+    alarms = {str(number): {"text": d.text, "explanation": d.explanation, "remedy": d.remedy}
+              for number, d in alarm_catalog().items()}
     md: dict[str, dict[str, str]] = {}
     for path in sorted(data_path("md").glob("*.toml")):
         for entry in read_table(path).get("data", []):
