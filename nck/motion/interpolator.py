@@ -42,7 +42,7 @@ class PathInterpolator:
     disabled: set[int]
     names: list[str]
     _alarms: list[NcAlarmError]
-    unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None
+    unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None  # (moved axes as a mask, window, end point)
     settle_point: np.ndarray | None
     _fine: np.ndarray
     _coarse: np.ndarray
@@ -180,10 +180,10 @@ class PathInterpolator:
                 # Output the end point once, then check the window.
                 self.wait_cycles = 1
             elif seg.window != "G603":
-                self.unsettled = (np.flatnonzero(seg.moved), window, self.cmd.copy())
+                self.unsettled = (seg.moved, window, self.cmd.copy())
             return False
         self.v_path = 0.0
-        end_s = min(run.profile.length, float(run._offsets[-1]))
+        end_s = min(run.profile.length, float(run.offsets[-1]))
         self.cmd = run.positions(np.array([end_s]))[0]
         if run.kind == "abort":
             return False
@@ -214,8 +214,8 @@ class PathInterpolator:
             unsettled, self.unsettled = self.unsettled, None
             if unsettled is not None:
                 # The block before ends with its exact-stop criterion first (002 L4797-4809).
-                indices, window, end = unsettled
-                self.exact_wait = (indices, window)
+                moved, window, end = unsettled
+                self.exact_wait = (np.flatnonzero(moved), window)
                 self.settle_point = end  # held while waiting (a batch step may end on a profile sample)
             seconds = head.seconds if head.revolutions is None else self._dwell_s(head.revolutions)
             if head.wait_spindle:

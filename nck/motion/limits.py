@@ -48,11 +48,11 @@ class Limits:
         self.axes = axes
         self.setting_data = setting_data
         self.workarea_on = True  # WALIMON (reset position); WALIMOF switches it off
+        self._software = [(axis.pos_limit_minus_mm, axis.pos_limit_plus_mm) for axis in axes]
 
     def software(self, i: int) -> tuple[float, float]:
         """(minus, plus) software limit of axis ``i``."""
-        axis = self.axes[i]
-        return axis.pos_limit_minus_mm, axis.pos_limit_plus_mm
+        return self._software[i]
 
     def workarea(self, i: int) -> tuple[float, float]:
         """(minus, plus) working-area limit of axis ``i`` (infinite when not enabled)."""
@@ -72,11 +72,12 @@ class Limits:
         """First violation of a segment: (alarm number, axis name, ``+``/``-``), or None."""
         if segment.arc is None:
             ends = segment.end.tolist()
+            software = self._software
             for i, delta in enumerate(segment.delta.tolist()):
                 if delta == 0.0 or not referenced[i]:
                     continue
                 value = ends[i]
-                minus, plus = self.software(i)
+                minus, plus = software[i]
                 w_minus, w_plus = self.workarea(i) if self.setting_data else (-math.inf, math.inf)
                 name = self.axes[i].name
                 if value > plus + EDGE_MM:

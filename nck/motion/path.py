@@ -94,7 +94,10 @@ class Segment:
             first, _ = self._derivatives(1.0 if at_end else 0.0)
         norm = math.sqrt(float(first @ first))
         result = first / norm if norm > 0 else first
-        self._tangents[at_end] = result
+        if self.arc is None:
+            self._tangents[True] = self._tangents[False] = result  # a line has one direction
+        else:
+            self._tangents[at_end] = result
         return result
 
     def curvature(self, at_end: bool) -> np.ndarray:

@@ -15,30 +15,62 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_right
-from dataclasses import dataclass
 
 import numpy as np
 
 TINY = 1e-12
 
 
-@dataclass(frozen=True, slots=True)
 class Profile:
     """Phases of constant jerk: start times, and distance/velocity/acceleration at each start.
 
+    ``phases`` holds ``(t0, s0, v0, a0, j)`` of every phase as Python floats;
     ``duration_s`` is the end of the last phase; ``length`` the distance covered.
+    The same columns as numpy arrays (``t0`` … ``j``) are made when a sampling
+    over several phases first needs them (most blocks never do).
     """
 
-    t0: np.ndarray
-    s0: np.ndarray
-    v0: np.ndarray
-    a0: np.ndarray
-    j: np.ndarray
-    duration_s: float
-    length: float
-    v_end: float
-    phases: tuple[tuple[float, float, float, float, float], ...] = ()  # (t0, s0, v0, a0, j) as floats
-    starts: tuple[float, ...] = ()  # t0 as floats
+    __slots__ = ("phases", "starts", "duration_s", "length", "v_end", "_columns")
+
+    def __init__(self, phases: tuple[tuple[float, float, float, float, float], ...], duration_s: float,
+                 length: float, v_end: float) -> None:
+        self.phases = phases
+        self.starts = tuple(row[0] for row in phases)  # t0 of every phase
+        self.duration_s = duration_s
+        self.length = length
+        self.v_end = v_end
+        self._columns: np.ndarray | None = None
+
+    def _column(self, index: int) -> np.ndarray:
+        columns = self._columns
+        if columns is None:
+            columns = self._columns = np.array(self.phases, dtype=float).T.copy()
+        return columns[index]
+
+    @property
+    def t0(self) -> np.ndarray:
+        """Start time of every phase."""
+        return self._column(0)
+
+    @property
+    def s0(self) -> np.ndarray:
+        """Distance at the start of every phase."""
+        return self._column(1)
+
+    @property
+    def v0(self) -> np.ndarray:
+        """Velocity at the start of every phase."""
+        return self._column(2)
+
+    @property
+    def a0(self) -> np.ndarray:
+        """Acceleration at the start of every phase."""
+        return self._column(3)
+
+    @property
+    def j(self) -> np.ndarray:
+        """Jerk of every phase."""
+        return self._column(4)
 
     def sample(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Return distance, velocity and acceleration at times ``t`` (clipped to the profile)."""
@@ -81,14 +113,13 @@ class Profile:
     def distance_at(self, t: float) -> float:
         """Distance at one time ``t`` with Python floats (same formula as :meth:`distances`)."""
         t = min(max(t, 0.0), self.duration_s)
-        t0 = self.t0
-        i = len(t0) - 1
-        while i > 0 and float(t0[i]) > t:
+        starts = self.starts
+        i = len(starts) - 1
+        while i > 0 and starts[i] > t:
             i -= 1
-        dt = t - float(t0[i])
-        a = float(self.a0[i])
-        j = float(self.j[i])
-        s = float(self.s0[i]) + float(self.v0[i]) * dt
+        t0, s0, v0, a, j = self.phases[i]
+        dt = t - t0
+        s = s0 + v0 * dt
         if a != 0.0 or j != 0.0:
             s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
         return min(s, self.length)
@@ -161,13 +192,8 @@ class _Builder:
     def build(self, length: float) -> Profile:
         if not self.rows:
             self.rows.append((0.0, 0.0, self.v, 0.0, 0.0))
-        arr = np.array(self.rows, dtype=float)
-        phases = tuple(tuple(row) for row in arr.tolist())
-        return Profile(
-            t0=arr[:, 0], s0=arr[:, 1], v0=arr[:, 2], a0=arr[:, 3], j=arr[:, 4],
-            duration_s=self.t, length=min(length, self.s + 1e-9), v_end=max(self.v, 0.0),
-            phases=phases, starts=tuple(row[0] for row in phases),  # type: ignore[arg-type]
-        )
+        return Profile(tuple(self.rows), duration_s=self.t, length=min(length, self.s + 1e-9),
+                       v_end=max(self.v, 0.0))
 
 
 def ramp_distance(v_a: float, v_b: float, accel: float, jerk: float | None) -> float:

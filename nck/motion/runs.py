@@ -32,12 +32,22 @@ class PathRun:
     exit_target: float = 0.0
 
     def __post_init__(self) -> None:
-        first = self.chain[0].segment.length - self.s_begin
-        if len(self.chain) == 1:
-            self._offsets = np.array([0.0, first])
-            return
-        remaining = [first] + [seg.segment.length for seg in self.chain[1:]]
-        self._offsets = np.concatenate([[0.0], np.cumsum(remaining)])
+        self._offsets: np.ndarray | None = None
+
+    @property
+    def offsets(self) -> np.ndarray:
+        """Run distance at the start of every segment of the chain, and at its end (made on
+        first use: a whole segment run that ends normally never needs it)."""
+        offsets = self._offsets
+        if offsets is None:
+            first = self.chain[0].segment.length - self.s_begin
+            if len(self.chain) == 1:
+                offsets = np.array([0.0, first])
+            else:
+                remaining = [first] + [seg.segment.length for seg in self.chain[1:]]
+                offsets = np.concatenate([[0.0], np.cumsum(remaining)])
+            self._offsets = offsets
+        return offsets
 
     @property
     def finished(self) -> bool:
@@ -48,11 +58,12 @@ class PathRun:
         """Axis positions at run distances ``s``."""
         if len(self.chain) == 1:
             return self.chain[0].segment.positions(self.s_begin + s)
-        which = np.clip(np.searchsorted(self._offsets, s, side="right") - 1, 0, len(self.chain) - 1)
+        offsets = self.offsets
+        which = np.clip(np.searchsorted(offsets, s, side="right") - 1, 0, len(self.chain) - 1)
         out = None
         for index in np.unique(which):
             mask = which == index
-            local = s[mask] - self._offsets[index] + (self.s_begin if index == 0 else 0.0)
+            local = s[mask] - offsets[index] + (self.s_begin if index == 0 else 0.0)
             part = self.chain[index].segment.positions(local)
             if out is None:
                 out = np.empty((len(s), part.shape[1]))
@@ -62,9 +73,10 @@ class PathRun:
 
     def split_end(self) -> tuple[int, float]:
         """Where the profile ends: (index in chain, distance into that segment)."""
-        length = min(self.profile.length, float(self._offsets[-1]))
-        index = int(np.clip(np.searchsorted(self._offsets, length, side="right") - 1, 0, len(self.chain) - 1))
-        local = length - self._offsets[index] + (self.s_begin if index == 0 else 0.0)
+        offsets = self.offsets
+        length = min(self.profile.length, float(offsets[-1]))
+        index = int(np.clip(np.searchsorted(offsets, length, side="right") - 1, 0, len(self.chain) - 1))
+        local = length - offsets[index] + (self.s_begin if index == 0 else 0.0)
         return index, local
 
     def state(self) -> tuple[float, float, float]:

@@ -27,6 +27,8 @@ import numpy as np
 from nck.motion.servo_model import MOVING_MM_S, ServoModel
 from nck.motion.servo_paths import process_fast
 
+SMALL_ROWS = 8  # up to this many rows the speed range is taken in Python floats (cheaper than numpy)
+
 def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
     """The following-error bound after ``rows`` when no monitor can respond in them, else None.
 
@@ -43,13 +45,16 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
             return None  # a contour deviation: the full model decides
         previous = bank.x_set
         start = np.abs(bank.e).tolist()
-    v = np.empty_like(rows)
-    np.subtract(rows[0], previous, out=v[0])
-    np.subtract(rows[1:], rows[:-1], out=v[1:])
-    v *= bank.inv_t
-    speed = np.abs(v)
-    tops = speed.max(axis=0).tolist()
-    lows = speed.min(axis=0).tolist()
+    if rows.shape[0] <= SMALL_ROWS:
+        tops, lows = speed_range_of_rows(rows.tolist(), previous.tolist(), bank.inv_t)
+    else:
+        v = np.empty_like(rows)
+        np.subtract(rows[0], previous, out=v[0])
+        np.subtract(rows[1:], rows[:-1], out=v[1:])
+        v *= bank.inv_t
+        speed = np.abs(v)
+        tops = speed.max(axis=0).tolist()
+        lows = speed.min(axis=0).tolist()
     out = []
     for (e_per_v, kv, ffw, ctrlout, velo, decay_rate, b_rate, small_e), top, low, e0 in zip(
             bank.bound_tables, tops, lows, start):
@@ -60,6 +65,23 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
             return None  # a stopped axis that may be outside its windows
         out.append(bound)
     return out
+
+
+def speed_range_of_rows(rows: list[list[float]], previous: list[float], inv_t: float) -> tuple[list[float], list[float]]:
+    """Largest and smallest setpoint speed of every axis over a few rows, in Python floats
+    (the same operations as the numpy form: difference, times 1/T, absolute value)."""
+    tops: list[float] = []
+    lows: list[float] = []
+    before = previous
+    for row in rows:
+        speeds = [abs((x - x0) * inv_t) for x, x0 in zip(row, before)]
+        if tops:
+            tops = [top if top >= speed else speed for top, speed in zip(tops, speeds)]
+            lows = [low if low <= speed else speed for low, speed in zip(lows, speeds)]
+        else:
+            tops, lows = speeds, speeds
+        before = row
+    return tops, lows
 
 
 def settle(bank: ServoModel) -> None:

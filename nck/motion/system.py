@@ -180,10 +180,13 @@ class PlannedMotion(PathInterpolator):
     def _checked_segment(self, item: Motion, start: np.ndarray) -> tuple[Segment | None, NcAlarmError | None]:
         """The segment of ``item`` from ``start``, or the alarm that refuses it."""
         end = start.copy()
+        index = self.index
         for name, value in item.end_mcs.items():
-            if name in self.index:
-                end[self.index[name]] = float(value)
-                if not math.isfinite(end[self.index[name]]):
+            i = index.get(name)
+            if i is not None:
+                position = float(value)
+                end[i] = position
+                if not math.isfinite(position):
                     return None, _value_range_alarm(item, name)  # an infinite or undefined position
         segment = self._segment(item, start, end)
         self.plan_pos = end

@@ -1,0 +1,83 @@
+"""The Python-float forms of hot motion arithmetic give the numpy forms' results bit for bit.
+
+Short CAM blocks last two or three IPO cycles, where numpy's per-call cost
+outweighs the arithmetic; the motion therefore computes some values with
+Python floats. Each test here compares such a form with the numpy form it
+replaced (written out below as the reference) on random inputs: equal as
+floats, not approximately.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nck.motion import servo_defer
+from nck.motion.path import line
+from nck.motion.profile import build_profile
+
+FINITE = st.floats(min_value=-1000.0, max_value=1000.0, allow_nan=False, allow_infinity=False)
+
+
+def _numpy_speed_range(rows: np.ndarray, previous: np.ndarray, inv_t: float) -> tuple[list[float], list[float]]:
+    """The reference: the numpy form of the deferred servo queue's speed range."""
+    v = np.empty_like(rows)
+    np.subtract(rows[0], previous, out=v[0])
+    np.subtract(rows[1:], rows[:-1], out=v[1:])
+    v *= inv_t
+    speed = np.abs(v)
+    return speed.max(axis=0).tolist(), speed.min(axis=0).tolist()
+
+
+@settings(max_examples=300)
+@given(st.integers(1, 8).flatmap(lambda m: st.lists(st.lists(FINITE, min_size=3, max_size=3),
+                                                     min_size=m + 1, max_size=m + 1)))
+def test_small_speed_range_equals_the_numpy_form(points: list[list[float]]) -> None:
+    previous, rows = np.array(points[0]), np.array(points[1:])
+    inv_t = 1.0 / 0.004
+    small = servo_defer.speed_range_of_rows(rows.tolist(), previous.tolist(), inv_t)
+    assert small == _numpy_speed_range(rows, previous, inv_t)
+
+
+def _reference_distance_at(profile, t: float) -> float:
+    """The reference: the per-phase formula read from the numpy columns (the former form)."""
+    t = min(max(t, 0.0), profile.duration_s)
+    i = len(profile.t0) - 1
+    while i > 0 and float(profile.t0[i]) > t:
+        i -= 1
+    dt = t - float(profile.t0[i])
+    a, j = float(profile.a0[i]), float(profile.j[i])
+    s = float(profile.s0[i]) + float(profile.v0[i]) * dt
+    if a != 0.0 or j != 0.0:
+        s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
+    return min(s, profile.length)
+
+
+@settings(max_examples=200)
+@given(st.floats(0.01, 200.0), st.floats(0.0, 80.0), st.floats(0.0, 80.0), st.floats(1.0, 100.0),
+       st.floats(100.0, 5000.0), st.one_of(st.none(), st.floats(1e3, 1e5)), st.floats(0.0, 1.0))
+def test_profile_columns_and_scalar_distance_match_the_phases(length: float, v0: float, v1: float, vmax: float,
+                                                              accel: float, jerk: float | None,
+                                                              fraction: float) -> None:
+    profile = build_profile(length, v0, v1, vmax, accel, jerk)
+    columns = np.array(profile.phases, dtype=float)
+    for index, name in enumerate(("t0", "s0", "v0", "a0", "j")):
+        assert getattr(profile, name).tolist() == columns[:, index].tolist()
+    assert list(profile.starts) == columns[:, 0].tolist()
+    for t in (0.0, fraction * profile.duration_s, profile.duration_s, profile.duration_s + 1.0):
+        assert profile.distance_at(t) == _reference_distance_at(profile, t)
+
+
+@settings(max_examples=200)
+@given(st.lists(FINITE, min_size=3, max_size=3), st.lists(FINITE, min_size=3, max_size=3))
+def test_a_line_has_one_tangent_at_both_ends(start: list[float], end: list[float]) -> None:
+    segment = line(np.array(start), np.array(end), np.ones(3, dtype=bool))
+    if segment.length <= 1e-9:
+        return
+    first = segment.delta / segment.length
+    expected = first / math.sqrt(float(first @ first))  # the reference: numpy's dot, as the planner uses it
+    assert segment.tangent(False).tolist() == expected.tolist()
+    assert segment.tangent(True).tolist() == expected.tolist()
