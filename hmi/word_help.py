@@ -4,6 +4,11 @@ A G function shows its meaning, its group and whether it is modal (``data/gcode/
 the table the G functions screen shows too); an M function or a system variable its meaning
 (``data/gcode/words.toml``); a standard cycle its title and parameter list (its input form in
 ``data/cycles/cycles.toml``). Other words have no help.
+
+The texts are shown in the panel's language: the codes' meanings and the G groups' meanings from
+the overlays ``data/lang/<code>/gcode.toml`` (``[code.G1]``, ``[group.1]``), the M functions and
+system variables from ``data/lang/<code>/words.toml``; the words around them from the gettext
+catalogue.
 """
 
 from __future__ import annotations
@@ -14,13 +19,15 @@ from dataclasses import dataclass
 
 from nck.queries import load_toml
 
+from hmi.i18n import _, data_text
+
 _WORD = re.compile(r"\$?[A-Za-z_][A-Za-z0-9_]*")
 _NUMBERED = re.compile(r"([GM])0*(\d+)")
 
 
 @dataclass(frozen=True, slots=True)
 class GFunction:
-    """One member of a G group: the group's number and meaning, modal or not, its own meaning."""
+    """One member of a G group: the group's number and meaning, modal or not, its own meaning (English)."""
 
     name: str
     group: int
@@ -68,31 +75,37 @@ def normalized(word: str) -> str:
 
 
 def word_help(word: str) -> str:
-    """One line saying what ``word`` means (``""`` when no table knows it)."""
+    """One line saying what ``word`` means in the panel's language (``""`` when no table knows it)."""
     name = normalized(word)
     if not name:
         return ""
     g_function = g_functions().get(name)
     if g_function is not None:
-        kind = "modal" if g_function.modal else "non-modal (this block only)"
-        meaning = f"{g_function.meaning} — " if g_function.meaning else ""
-        return f"{name}: {meaning}group {g_function.group} ({g_function.group_meaning}), {kind}"
+        kind = _("modal") if g_function.modal else _("non-modal (this block only)")
+        group = _("group {number} ({meaning})").format(
+            number=g_function.group,
+            meaning=data_text("group", g_function.group, "meaning", g_function.group_meaning))
+        meaning = code_meaning(name)
+        return f"{name}: {meaning} — {group}, {kind}" if meaning else f"{name}: {group}, {kind}"
     words = _words()
-    if name in words.get("m_functions", {}):
-        return f"{name}: {words['m_functions'][name]}"
-    if name in words.get("system_variables", {}):
-        return f"{name}: {words['system_variables'][name]}"
-    for prefix, meaning in words.get("system_variable_prefixes", {}).items():
+    for kind, section in (("m_function", "m_functions"), ("system_variable", "system_variables")):
+        english = words.get(section, {}).get(name)
+        if english is not None:
+            return f"{name}: {data_text(kind, name, 'meaning', english)}"
+    for prefix, english in words.get("system_variable_prefixes", {}).items():
         if name.startswith(prefix):
-            return f"{name}: {meaning}"
+            return f"{name}: {data_text('system_variable_prefix', prefix, 'meaning', english)}"
     form = _cycle_forms().get(name)
     if form is not None:
         params = ", ".join(str(param["name"]) for param in form.get("params", []))
-        return f"{name}: cycle {form.get('title', '')} — {name}({params})"
+        title = _("cycle {title}").format(title=form.get("title", ""))
+        return f"{name}: {title} — {name}({params})"
     return ""
 
 
 def code_meaning(name: str) -> str:
-    """The meaning of one G function (``""`` when the table has none), for the G functions screen."""
+    """The meaning of one G function in the panel's language (``""`` when the table has none)."""
     g_function = g_functions().get(name)
-    return g_function.meaning if g_function is not None else ""
+    if g_function is None or not g_function.meaning:
+        return ""
+    return data_text("code", name, "meaning", g_function.meaning)

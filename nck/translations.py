@@ -10,8 +10,10 @@ folder ``data/lang/<code>/``:
   needed at run time; the result is the same on every machine.
 * ``<table>.toml`` — overlays of the data tables, keyed by the entry's identity with the
   same field names as the English entry: ``[alarm.10860] text = "…"`` in ``alarms.toml``,
-  ``[md.32000] title = "…"`` in ``md.toml``, ``[group.1] meaning = "…"`` in ``gcode.toml``,
-  ``[key."nc.reset"] label = "…"`` in ``keymap.toml``.
+  ``[md.32000] title = "…"`` in ``md.toml``, ``[group.1] meaning = "…"`` (also ``[code.G1]``,
+  ``[iso_m_group.1]``, ``[iso_t_group.1]``) in ``gcode.toml``, ``[key."nc.reset"] label = "…"``
+  in ``keymap.toml``, ``[m_function.M3] meaning = "…"`` (also ``[system_variable."$P_F"]``,
+  ``[system_variable_prefix."$MN_"]``) in ``words.toml``.
 
 Pure: reads files below ``data/`` only, keeps no state but caches of those files.
 """
@@ -32,7 +34,10 @@ LANGUAGES: dict[str, str] = {"en": "English", "de": "Deutsch"}
 """Every language of the operator texts by code, with its name in its own language."""
 
 OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "group": "gcode.toml",
-                                  "key": "keymap.toml"}
+                                  "code": "gcode.toml", "iso_m_group": "gcode.toml",
+                                  "iso_t_group": "gcode.toml", "key": "keymap.toml",
+                                  "m_function": "words.toml", "system_variable": "words.toml",
+                                  "system_variable_prefix": "words.toml"}
 """Kind of data entry -> the overlay file in ``data/lang/<code>/`` that translates it."""
 
 
@@ -128,7 +133,7 @@ def gettext_catalogue(code: str) -> gettext.NullTranslations:
 
 @functools.cache
 def overlay(code: str, kind: str) -> dict[str, dict[str, Any]]:
-    """The overlay of ``kind`` (``alarm``, ``md``, ``group``) in language ``code``: key -> fields."""
+    """The overlay of ``kind`` (a key of :data:`OVERLAY_TABLES`) in language ``code``: key -> fields."""
     check_language(code)
     if code == SOURCE_LANGUAGE:
         return {}

@@ -9,10 +9,10 @@ from rich.table import Table
 from rich.text import Text
 from textual.widgets import Static
 
-from nck import ISO_MAIN_GROUPS_M, SOURCE_LANGUAGE, iso_table, localized
+from nck import ISO_MAIN_GROUPS_M, iso_table, localized
 from nck.queries import load_toml
 
-from hmi.i18n import _, language
+from hmi.i18n import _, data_text, language
 from hmi.word_help import code_meaning
 
 MAIN_GROUPS = (1, 6, 7, 8, 10, 13, 14, 15)
@@ -34,6 +34,13 @@ def _group_meanings_in(code: str) -> dict[int, str]:
             for g in table.get("group", [])}
 
 
+def iso_group_meanings(dialect: str) -> dict[int, str]:
+    """ISO group number → meaning of dialect ``iso-m`` / ``iso-t``, in the panel's language."""
+    kind = f"{dialect.replace('-', '_')}_group"
+    return {number: data_text(kind, number, "meaning", english)
+            for number, english in iso_table(dialect)[1].items()}
+
+
 def main_groups_line(gcodes: Mapping[int, str], groups: tuple[int, ...] = MAIN_GROUPS) -> Text:
     """The main groups' active codes in one line."""
     text = Text(f" {_('G functions')}  ", style="bold")
@@ -47,10 +54,10 @@ def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | No
 
     Siemens groups (``meanings`` None) say what the active code does where the table knows it
     (the group's meaning otherwise): the same table as the editor's word help
-    (:func:`hmi.word_help.code_meaning`). The codes' meanings exist in English only so far:
-    in another language the (translated) group meaning stands there.
+    (:func:`hmi.word_help.code_meaning`), in the panel's language. ``meanings`` are the groups'
+    meanings of an ISO dialect (:func:`iso_group_meanings`).
     """
-    siemens = meanings is None and language() == SOURCE_LANGUAGE
+    siemens = meanings is None
     meanings = group_meanings() if meanings is None else meanings
     numbers = sorted(set(meanings) | set(gcodes))
     half = (len(numbers) + 1) // 2
@@ -105,8 +112,8 @@ class GFunctionsTable(Static):
         if key != self._key:
             self._key = key
             if iso_gcodes:
-                meanings = iso_table("iso-t" if 16 in iso_gcodes and 8 not in iso_gcodes
-                                     else "iso-m")[1]
+                meanings = iso_group_meanings("iso-t" if 16 in iso_gcodes and 8 not in iso_gcodes
+                                              else "iso-m")
                 self.update(all_groups_table(iso_gcodes, meanings), layout=False)
             else:
                 self.update(all_groups_table(gcodes), layout=False)

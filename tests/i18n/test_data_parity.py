@@ -1,7 +1,9 @@
 """Every text of the data tables exists in every language (issue 27).
 
 The English texts are the entries of ``data/alarms`` (text and the help's explanation and
-remedy), ``data/md`` and ``data/gcode/siemens.toml``; the translations are the overlays ``data/lang/<code>/*.toml``.
+remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
+G functions' meanings, and the editor's word help of ``words.toml``); the translations are the
+overlays ``data/lang/<code>/*.toml``.
 """
 
 from __future__ import annotations
@@ -28,7 +30,17 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     groups = {str(group["number"]): {"meaning": group["meaning"]}
               for group in read_table(data_path("gcode", "siemens.toml"))["group"]}
     keys = {str(key["id"]): {"label": key["label"]} for key in read_table(data_path("keymap.toml"))["key"]}
-    return {"alarm": alarms, "md": md, "group": groups, "key": keys}
+    codes = {name: {"meaning": meaning} for group in read_table(data_path("gcode", "siemens.toml"))["group"]
+             for name, meaning in group.get("codes", {}).items()}
+    entries = {"alarm": alarms, "md": md, "group": groups, "key": keys, "code": codes}
+    for dialect in ("iso_m", "iso_t"):
+        entries[f"{dialect}_group"] = {str(group["number"]): {"meaning": group["meaning"]}
+                                       for group in read_table(data_path("gcode", f"{dialect}.toml"))["group"]}
+    words = read_table(data_path("gcode", "words.toml"))
+    for kind, section in (("m_function", "m_functions"), ("system_variable", "system_variables"),
+                          ("system_variable_prefix", "system_variable_prefixes")):
+        entries[kind] = {name: {"meaning": meaning} for name, meaning in words[section].items()}
+    return entries
 
 
 @pytest.mark.parametrize("code", OTHER_LANGUAGES)
