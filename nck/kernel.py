@@ -141,6 +141,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         self._keyswitch = access.state.keyswitch_position if access is not None else 0
         self._seq = 0
         self._last_body: NckStatus | None = None
+        self._snapshot: NckStatus | None = None  # the last built snapshot; None: something changed since
         # Optional observers for headless runs and tools (not for the HMI, which
         # reads status() and the alarm log): every interpreted block, every alarm raised.
         self.block_listener: Callable[[Any], None] | None = None
@@ -157,6 +158,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
         self._contact = ContactState()  # contacts with the blank / reference block (nck.kernel_contact)
         self._apply_overrides()
+        self._interpreter("AUTO")  # its reset G codes are shown from power on
 
     # ------------------------------------------------------------------ API
     def submit(self, command: object) -> SubmitResult:
@@ -177,6 +179,8 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         except Exception as exc:  # noqa: BLE001 - every bug becomes alarm 1
             self._internal_error(exc)
             return Rejected("internal error", alarm=ALARM_INTERNAL)
+        finally:
+            self._snapshot = None
 
     def tick(self, dt_s: float) -> None:
         """Advance simulated time by ``dt_s`` seconds (whole IPO cycles; the rest is kept)."""
@@ -226,6 +230,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
     def _guarded_cycle(self, limit: int) -> int:
         """One kernel step of 1 … ``limit`` IPO cycles; returns the cycles run (never raises)."""
         done = 0
+        self._snapshot = None
         while True:
             self._cycles_in_step = 1
             try:
@@ -308,31 +313,36 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
     def load_alarm_history(self, entries: list[AlarmEntry]) -> None:
         """Put retained alarm-log entries (from before this power on) in front of the log."""
         self.alarms.load_history(entries)
+        self._snapshot = None
 
     def raise_alarm(self, error: NcAlarmError) -> None:
         """Raise an alarm from outside the channel (power-on checks, data loading)."""
         self._raise(error)
+        self._snapshot = None
 
     def positions_mcs(self) -> dict[str, float]:
         """Displayed machine positions (program test: the simulated ones)."""
         return dict(self._display_motion().positions_mcs())
 
     def status(self) -> NckStatus:
-        """Build the immutable snapshot; ``seq`` grows when anything changed."""
-        body = build_status(self._status_sources())
-        if body != self._last_body:
-            self._seq += 1
-            self._last_body = body
-        return replace(body, seq=self._seq, time_s=self._time_s)
+        """The immutable snapshot, built once after each command or kernel step (not once per
+        call); ``seq`` grows when anything in it changed. Reading it changes nothing."""
+        if self._snapshot is None:
+            body = build_status(self._status_sources())
+            if body != self._last_body:
+                self._seq += 1
+                self._last_body = body
+            self._snapshot = replace(body, seq=self._seq, time_s=self._time_s)
+        return self._snapshot
 
     def _status_sources(self) -> StatusSources:
         run = self.channel.active_run()
-        # The interpreter whose frames give the WCS while nothing executes: the run's, else
-        # the one that ran last (its tool); the G codes shown: the run's, else AUTOMATIC's.
-        frames = run.interp if run is not None else (
-            self._last_interp or self._interpreters.get("AUTO") or self._interpreters.get("MDA"))
-        # Power on: no program has run yet, but the control shows the reset G codes.
-        modal = run.interp if run is not None else self._interpreters.get("AUTO") or self._interpreter("AUTO")
+        # The G codes shown: the run's, else AUTOMATIC's (from power on its reset G codes).
+        # The frames that give the WCS while nothing executes: the run's, else those of the
+        # interpreter that holds the channel's state (the one that ran last); None until a
+        # program has run: the power-on state, read from the stored frames.
+        modal = run.interp if run is not None else self._interpreters.get("AUTO")
+        frames = run.interp if run is not None else self._last_interp
         return StatusSources(
             machine=self.machine, data=self.data, channel=self.channel, switches=self.switches,
             outputs=self.outputs, motion=self.motion, shown_motion=self._display_motion(),
@@ -340,6 +350,20 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
             alarms=self.alarms, runtime=self.runtime, counters=self.counters,
             access_level=self._access_level(), internal_errors=len(self.internal_errors),
         )
+
+    def _renew_interpreters(self) -> None:
+        """Stored machine data came into effect: the interpreters of the old machine go; the
+        new AUTOMATIC one takes over the channel's state (tool, kept G codes) if an
+        interpreter held it (the others are created on first use)."""
+        held = self._last_interp is not None
+        self._interpreters.clear()
+        self._last_interp = None
+        auto = self._interpreter("AUTO")
+        if held:
+            sync_tool = getattr(auto, "sync_tool", None)
+            if sync_tool is not None:
+                sync_tool(self.outputs.tool, self.outputs.edge, int(self.outputs.aux.get("T", self.outputs.tool)))
+            self._last_interp = auto
 
     def _access_level(self) -> int:
         if self._access is not None:

@@ -144,11 +144,15 @@ class JobSetup:
         return self._interpreters.get("AUTO") or self._interpreters.get("MDA") or self._interpreter("MDA")  # type: ignore[attr-defined]
 
     def _activate_stored_frames(self) -> None:
+        """An operator frame action (Set WO, PRESET, an offset in effect at once): every
+        interpreter takes the stored frames; from now on the frame interpreter holds the
+        channel's state (before, the snapshot read the power-on frames from the data)."""
         positions = self._path_positions(self.motion)  # type: ignore[attr-defined]
         for interp in self._interpreters.values():
             path = getattr(getattr(interp, "builder", None), "path", None)
             if path is not None:
                 path.activate_stored_frames(interp.modal, positions)
+        self._last_interp = self._frame_interpreter()
 
     # ------------------------------------------------------------ the channel after a program
     def _share_kept_gcodes(self, ended: Any) -> None:

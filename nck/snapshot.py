@@ -17,6 +17,7 @@ from nck.canon import Dwell, Motion
 from nck.channel import INTERRUPTED
 from nck.geometry.cutting_edge import effective_radius
 from nck.geometry.tool_length import effective_lengths
+from nck.interp.modal import ModalState
 from nck.alarms import AlarmServer
 from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
 from nck.counters import PartCounters, RuntimeTimer
@@ -54,7 +55,8 @@ class StatusSources:
     under program test), ``path_motion`` the one programs run on, ``motion`` the machine's
     own (drives, spindles, reference state). ``modal_interpreter`` supplies the displayed G
     codes, ``frame_interpreter`` the frames that turn positions into WCS while nothing
-    executes (the run's interpreter, else the one that ran last); either may be None.
+    executes (the run's interpreter, else the one that ran last; None: nothing has run
+    since power on, the stored frames apply); either may be None.
     """
 
     machine: MachineConfig
@@ -186,12 +188,17 @@ def _interpreter_wcs(src: StatusSources, positions: Any) -> dict[str, float] | N
     """WCS of ``positions`` under the frames the interpreter holds now (when nothing executes).
 
     Uses the real interpreter's motion builder when it offers ``wcs_from_mcs``
-    (display only; any failure falls back to the last executed segment's offset).
+    (display only; any failure falls back to the last executed segment's offset). With no
+    ``frame_interpreter`` (nothing has run since power on) the frames are those of the
+    power-on state: the stored frames chosen by the shown G codes, read afresh each time
+    (into a new modal state; the interpreter's own is not touched).
     """
     interp = src.frame_interpreter
-    builder = getattr(interp, "builder", None)
     modal = getattr(interp, "modal", None)
-    convert = getattr(builder, "wcs_from_mcs", None)
+    if interp is None:
+        interp = src.modal_interpreter
+        modal = _power_on_modal(interp)
+    convert = getattr(getattr(interp, "builder", None), "wcs_from_mcs", None)
     if convert is None or modal is None:
         return None
     try:
@@ -199,6 +206,17 @@ def _interpreter_wcs(src: StatusSources, positions: Any) -> dict[str, float] | N
     except Exception:  # noqa: BLE001 - display only
         return None
     return {a: float(v) for a, v in dict(wcs).items()}
+
+
+def _power_on_modal(interp: Any) -> ModalState | None:
+    """A fresh modal state with the G codes ``interp`` shows (None: not a real interpreter)."""
+    table = getattr(interp, "table", None)
+    shown = getattr(interp, "modal", None)
+    if table is None or shown is None:
+        return None
+    modal = ModalState.initial(interp.machine, table)
+    modal.gcodes = dict(shown.gcodes)
+    return modal
 
 
 def _spindle_status(src: StatusSources, name: str, positions: Any) -> AxisStatus:
