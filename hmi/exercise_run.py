@@ -191,6 +191,35 @@ class ClassroomHost:
             self.bridge.poll(force=True)
         return said
 
+    def exercise_list(self) -> list[Any]:
+        """The exercises to choose from: the shipped ones and those class packs brought into the
+        trainee's data directory (``ExerciseError`` names a file that cannot be read)."""
+        return queries.available_exercises(self._trainee_data_dir())
+
+    def import_class_pack(self, path: str) -> str:
+        """Check the class pack ``path`` whole, then write its exercises and programs into the
+        trainee's data directory (:mod:`nck.class_pack`); return what to say. The caller
+        checks the protection level."""
+        if self.exercise_run is not None:
+            return "Class pack not imported: end the running exercise first"
+        data_dir = self._trainee_data_dir()
+        if data_dir is None:
+            return "Class pack not imported: the panel runs without a data directory"
+        try:
+            pack = queries.read_pack(path)
+            written = queries.install_pack(pack, data_dir)
+        except queries.PackError as exc:
+            return f"Class pack not imported: {exc}"
+        except OSError as exc:
+            return f"Class pack not imported: {exc.filename}: {exc.strerror or exc}"
+        return f"Class pack imported: {pack.summary()} ({len(written)} files new or changed)"
+
+    def _trainee_data_dir(self) -> Path | None:
+        """The trainee's own data directory (not an exercise's private one); None without one."""
+        run = self.exercise_run
+        session = run.trainee_session if run is not None else self.nc_session
+        return Path(session.session.data_dir) if session is not None else None
+
     def _unsaved_work(self) -> str:
         """Unsaved text of an area (it belongs to the data directory about to be swapped)."""
         return next((work for work in (a.unsaved_work() for a in self.area_screens) if work), "")  # type: ignore[attr-defined]
@@ -206,8 +235,9 @@ class ClassroomHost:
     def _report_dir(self) -> Path:
         if self.exercise_report_dir is not None:
             return self.exercise_report_dir
-        if self.nc_session is not None:
-            return Path(self.nc_session.session.data_dir) / "exercise_reports"
+        data_dir = self._trainee_data_dir()
+        if data_dir is not None:
+            return data_dir / "exercise_reports"
         return Path(tempfile.gettempdir()) / "nck-exercise-reports"
 
     # -- what the app feeds in --------------------------------------------------------------

@@ -50,6 +50,12 @@ class AreaHost(Protocol):
     def end_exercise(self) -> str:
         """End the exercise: report written, the trainee's own data back; return what to say."""
 
+    def exercise_list(self) -> list[Any]:
+        """The exercises to choose from: shipped and imported with class packs."""
+
+    def import_class_pack(self, path: str) -> str:
+        """Import the class pack ``path`` into the trainee's data directory; return what to say."""
+
     def select_language(self, code: str) -> str:
         """Show the operator texts in language ``code``; return what to say ("" when nothing)."""
 

@@ -76,6 +76,7 @@ class Action(enum.Enum):
     OVERSTORE = "overstore"
     TEACH_IN = "teach_in"
     WRITE_MACHINE_SETUP = "write_machine_setup"
+    IMPORT_CLASS_PACK = "import_class_pack"
 
 
 @dataclass(frozen=True, slots=True)

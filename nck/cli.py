@@ -1,7 +1,7 @@
 """The headless command line ``nck`` (its contract is the specification's ``cli.md``).
 
 ``nck check PROGRAM…``, ``nck run PROGRAM [options]``, ``nck grade STUDENT --reference REF``
-(:mod:`nck.grade`), ``nck version``; ``nck md``, ``nck setup`` and ``nck archive`` are
+(:mod:`nck.grade`), ``nck version``; ``nck md``, ``nck setup``, ``nck archive`` and ``nck class-pack`` are
 dispatched to their own modules. Exit codes: 0 ok, 1 alarm or
 problems found, 2 command line / file problem, 3 timeout (``nck run``: one hour of
 simulated time unless ``--timeout`` says otherwise; ``nck check``: a program not ended
@@ -126,6 +126,10 @@ def _main(args: list[str]) -> int:
         from nck import cli_archive
 
         return cli_archive.main(args[1:], wait_s=wait_s)
+    if args[:1] == ["class-pack"]:
+        from nck import cli_class_pack
+
+        return cli_class_pack.main(args[1:], wait_s=wait_s)
     if args[:1] == ["setup"]:
         from nck import cli_setup
 
@@ -154,7 +158,7 @@ def _main(args: list[str]) -> int:
             return _run(options)
         if options.command == "grade":
             return _grade(options)
-        print("usage: nck {check,run,grade,exercise,md,setup,archive,version} ...", file=sys.stderr)
+        print("usage: nck {check,run,grade,exercise,class-pack,md,setup,archive,version} ...", file=sys.stderr)
         return 2
     except CliError as exc:
         print(f"nck: {exc}", file=sys.stderr)

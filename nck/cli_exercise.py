@@ -2,8 +2,11 @@
 
 ::
 
-    nck exercise list
-    nck exercise replay SESSION.json [--events]
+    nck exercise list [--data-dir D]
+    nck exercise replay SESSION.json [--events] [--data-dir D]
+
+The exercises are the shipped ones and those a class pack brought into the data
+directory (``nck class-pack import``).
 
 ``replay`` feeds the recording of a session (the JSON file the panel writes when an
 exercise ends) through the exercise's checks again, as fast as it goes, and prints what
@@ -18,18 +21,22 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from nck.cli_parser import CliParser
-from nck.exercise import ExerciseError, load_exercises
+from nck.exercise import ExerciseError, available_exercises
 from nck.exercise_checks import replay, report_text
 from nck.exercise_files import load_recording
+from nck.paths import default_data_dir
 
 
 def _parser() -> CliParser:
     parser = CliParser(prog="nck exercise", description="Guided exercises: list them, replay a recorded session")
     sub = parser.add_subparsers(dest="action")
-    sub.add_parser("list", help="the shipped exercises")
+    listing = sub.add_parser("list", help="the shipped and imported exercises")
     again = sub.add_parser("replay", help="replay a recorded session (the .json report of the panel)")
     again.add_argument("session")
     again.add_argument("--events", action="store_true", help="also every state change")
+    for command in (listing, again):
+        command.add_argument("--data-dir", help="NC data directory with imported class packs "
+                                                "(default: the user data directory)")
     return parser
 
 
@@ -58,7 +65,9 @@ def run(argv: list[str], out: TextIO, err: TextIO) -> int:
     if isinstance(options, int):
         return options
     try:
-        exercises = {e.exercise_id: e for e in load_exercises()}
+        chosen = getattr(options, "data_dir", None)
+        data_dir = Path(chosen).expanduser() if chosen else default_data_dir()
+        exercises = {e.exercise_id: e for e in available_exercises(data_dir)}
     except ExerciseError as exc:
         print(f"nck exercise: {exc}", file=err)
         return 2
@@ -76,7 +85,7 @@ def run(argv: list[str], out: TextIO, err: TextIO) -> int:
         print(f"nck exercise: cannot replay '{options.session}': {exc}", file=err)
         return 2
     if exercise_id not in exercises:
-        print(f"nck exercise: the session is of exercise '{exercise_id}', which is not shipped", file=err)
+        print(f"nck exercise: the session is of exercise '{exercise_id}', which is neither shipped nor imported", file=err)
         return 2
     exercise = exercises[exercise_id]
     try:

@@ -13,7 +13,7 @@ File format::
     exam = false                        # true: an exam: no hints, access level locked, help limited to F11
     [setup]
     keyswitch = 0                       # 0..3 (level 7..4)
-    programs = ["DRILL_FLANGE.MPF"]     # training programs copied from data/programs
+    programs = ["DRILL_FLANGE.MPF"]     # copied from programs/ beside the file, else data/programs
     program_texts = { "FIX.MPF" = "N10 ..." }   # programs written for the exercise
     select = "DRILL_FLANGE.MPF"         # selected at the start (AUTOMATIC program)
     blank = { low_mcs = [..], high_mcs = [..] }  # a box; or base_mcs/diameter_mm/length_mm
@@ -49,6 +49,12 @@ FAULT_KINDS = {
 }
 """Injected faults and their fields. A spindle that does not reach its speed waits for a
 spindle fault model in the kernel (there is none yet)."""
+
+
+IMPORTED_EXERCISES_DIR = "exercises"
+"""Folder of a data directory with the exercises of imported class packs (:mod:`nck.class_pack`)."""
+IMPORTED_PROGRAMS_DIR = "programs"
+"""Folder beside exercise files with the programs they name (``[setup] programs``)."""
 
 
 class ExerciseError(ValueError):
@@ -90,6 +96,24 @@ def load_exercises(folder: Path | None = None) -> list[Exercise]:
     """Every exercise of ``folder`` (default: the shipped ones), sorted by file name."""
     folder = folder or exercise_dir()
     return [load_exercise(path) for path in sorted(folder.glob("*.toml"))]
+
+
+def available_exercises(data_dir: Path | None) -> list[Exercise]:
+    """The shipped exercises and those imported into ``data_dir`` (class packs), by file name;
+    an imported exercise replaces a shipped one of the same name."""
+    by_id = {e.exercise_id: e for e in load_exercises()}
+    imported = data_dir / IMPORTED_EXERCISES_DIR if data_dir is not None else None
+    if imported is not None and imported.is_dir():
+        by_id.update({e.exercise_id: e for e in load_exercises(imported)})
+    return [by_id[key] for key in sorted(by_id)]
+
+
+def exercise_program(exercise: Exercise, name: str, folder: Path | None = None) -> Path:
+    """The file of the program ``name`` an exercise copies: in ``programs/`` beside the exercise
+    (``folder``, else the exercise file's folder) when it is there, else the shipped one."""
+    folder = folder if folder is not None else (exercise.source.parent if exercise.source else None)
+    own = folder / IMPORTED_PROGRAMS_DIR / name if folder is not None else None
+    return own if own is not None and own.is_file() else data_path("programs", name)
 
 
 def load_exercise(path: Path) -> Exercise:

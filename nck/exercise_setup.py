@@ -14,10 +14,9 @@ from pathlib import Path
 from typing import Any
 
 from nck import commands as cmd
-from nck.exercise import Exercise, ExerciseError
+from nck.exercise import Exercise, ExerciseError, exercise_program
 from nck.machine import load_machine
 from nck.ncdata import ToolEdge
-from nck.resources import data_path
 from nck.workpiece import MachineSetup, solid_from_plain
 
 TOOL_FIELDS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 5, "radius": 6,
@@ -51,7 +50,7 @@ def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
     session.retained.access.keyswitch_position = int(setup.get("keyswitch", 0))
     session.retained.access.locked = exercise.exam  # an exam: the trainee cannot change the level
     for name in setup.get("programs", []):
-        session.files.save(f"MPF/{name}", data_path("programs", name).read_text(encoding="utf-8"))
+        session.files.save(f"MPF/{name}", exercise_program(exercise, name).read_text(encoding="utf-8"))
     for name, text in setup.get("program_texts", {}).items():
         session.files.save(f"MPF/{name}", text)
     for fault in setup.get("faults", []):

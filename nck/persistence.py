@@ -81,6 +81,8 @@ FORMAT = "sinumerik-trainer/retained"
 FORMAT_VERSION = 1
 ARCHIVE_FORMAT = "sinumerik-trainer/archive"
 ARCHIVE_VERSION = 1
+CLASS_PACK_CONTENT = "class-pack"
+"""The ``content`` of an archive that is a class pack (:mod:`nck.class_pack`); NC data have none."""
 RETAINED_DIR = "retained"
 NC_DIR = "nc"
 ALARM_LOG_LIMIT = 500
@@ -809,6 +811,8 @@ class Session:
             raise ArchiveError(f"{path}: not an NC data archive")
         if archive.get("format_version") != ARCHIVE_VERSION:
             raise ArchiveError(f"{path}: archive version {archive.get('format_version')!r} not supported")
+        if archive.get("content") == CLASS_PACK_CONTENT:
+            raise ArchiveError(f"{path}: a class pack, not NC data (import it with 'nck class-pack import')")
         try:
             texts = self._checked_sections(_mapping(archive.get("sections", {})), include_access, level)
             workpieces = [w for w in (self._archive_workpiece(_text(w))

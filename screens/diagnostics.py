@@ -11,6 +11,7 @@ the utilisation figures are the bridge's measurement of the kernel's compute tim
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any, Callable, ClassVar
 
@@ -28,7 +29,7 @@ from nck import TraceError, signal_unit, write_export
 
 from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
-from hmi.dialogs import ConfirmDialog
+from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
 from hmi.i18n import N_, _, alarm_text
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -170,6 +171,9 @@ class DiagnosticsScreen(AreaBase):
                 Softkey("diag.ex.end", "End\nexercise", "exercise_end", enabled=lambda s: bool(s.hmi.exercise_side)),
                 Softkey("diag.ex.down", "Next\n▼", "exercise_select(1)"),
                 Softkey("diag.ex.up", "Previous\n▲", "exercise_select(-1)"),
+                Softkey("diag.ex.import", "Import\nclass pack", "exercise_import",
+                        level=self.ask(queries.ActionLevel("IMPORT_CLASS_PACK")),
+                        enabled=lambda s: not s.hmi.exercise_side),
             ]
         if self.view in ("axis", "drive"):
             return [Softkey("diag.axis.next", "Axis +", "next_axis(1)"),
@@ -269,6 +273,18 @@ class DiagnosticsScreen(AreaBase):
         self._running_exercise = None
         self.say(said)
         self._refresh_view()
+
+    def action_exercise_import(self) -> None:
+        """Import class pack: ask for the pack's file, import it, show the new list."""
+        def imported(path: str | None) -> None:
+            if not path:
+                return
+            self.say(self.hmi.import_class_pack(path))
+            self.exercises = []  # read again with the imported ones
+            self._refresh_view()
+
+        self.app.push_screen(ValueDialog("Import class pack", f"{self.export_dir}{os.sep}",
+                                         "The class pack's file (written by nck class-pack export)"), imported)
 
     def action_next_axis(self, step: int) -> None:
         """Axis + / Axis −: the next or previous machine axis (spindles included)."""
@@ -442,7 +458,7 @@ class DiagnosticsScreen(AreaBase):
     def _render_exercises(self, status: NckStatus) -> None:
         if not self.exercises:
             try:
-                self.exercises = queries.load_exercises()
+                self.exercises = self.hmi.exercise_list()
             except queries.ExerciseError as exc:
                 self.say(f"Exercises cannot be read: {exc}")
         running = self._running_exercise if self.hmi.exercise_side else None

@@ -15,7 +15,7 @@ from textual.pilot import Pilot
 NAMED_CHARACTERS = {"space": " ", "enter": "\r", "tab": "\t", "escape": "\x1b",
                     "backspace": "\x7f", "minus": "-", "full_stop": ".", "comma": ",",
                     "equals_sign": "=", "left_parenthesis": "(", "right_parenthesis": ")",
-                    "semicolon": ";", "quotation_mark": "\"", "underscore": "_"}
+                    "semicolon": ";", "quotation_mark": "\"", "underscore": "_", "slash": "/"}
 
 
 def key_event(key: str) -> events.Key:

@@ -15,14 +15,17 @@ from pathlib import Path
 from textual.widgets import Static
 
 from hmi.app import HmiApp, make_app
+from nck import commands as cmd
+from nck.class_pack import export_pack
 from nck.exercise import load_exercises
 from nck.exercise_checks import replay
 from tests.burst import burst
+from tests.exercises.test_class_pack import EXERCISE as PACKED_EXERCISE, SQUARE
 from tests.hmi.conftest import SIZE
 
 REFERENCE_KEYS = ("alt+m", "alt+j", "alt+r", "alt+x", "ctrl+right", "alt+y", "ctrl+right", "alt+z", "ctrl+right")
 OPEN_LIST = ("alt+a", "f8", "f4")  # Diagnostics, More, Exercises
-START, END, NEXT = "shift+f1", "shift+f2", "shift+f3"
+START, END, NEXT, IMPORT = "shift+f1", "shift+f2", "shift+f3", "shift+f5"
 
 
 def fingerprint(directory: Path) -> dict[str, str]:
@@ -127,3 +130,34 @@ async def test_exam_shows_no_hint_and_a_waiting_exercise_does_not_start(tmp_path
         assert "Step 1 of 3" in side(app) and "Hint" not in side(app)
         await pilot.press(END)
         assert "score 25/100" in app.hint  # 1 of 4: only the final check (no alarm) holds
+
+
+async def test_class_pack_imported_on_the_panel(tmp_path: Path) -> None:
+    folder = tmp_path / "course"
+    (folder / "programs").mkdir(parents=True)
+    (folder / "20_square.toml").write_text(PACKED_EXERCISE)
+    (folder / "programs" / "SQUARE.MPF").write_text(SQUARE)
+    pack = tmp_path / "c.pack"
+    export_pack(pack, [folder / "20_square.toml"])
+    broken = tmp_path / "b.pack"
+    broken.write_bytes(pack.read_bytes()[:100])
+    app = trainee_app(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, *OPEN_LIST, IMPORT)
+        assert app.hint == "Import class pack: needs access level 2"
+        app.submit(cmd.EnterPassword("EVENING"))  # the instructor's service password
+        await pilot.pause()
+        await burst(pilot, IMPORT, *str(broken), "enter")  # typing replaces the proposed folder
+        assert app.hint.startswith(f"Class pack not imported: {broken}: not a readable class pack (truncated")
+        await burst(pilot, IMPORT, *str(pack), "enter")
+        assert app.hint == "Class pack imported: 1 exercise, 1 program (2 files new or changed)"
+        listed = str(app.screen.query_one("#diag-exercises", Static).render())
+        assert "15  Run the instructor's square" in listed
+        await burst(pilot, IMPORT, *str(pack), "enter")  # again: nothing changes
+        assert app.hint == "Class pack imported: 1 exercise, 1 program (0 files new or changed)"
+        await burst(pilot, *[NEXT] * 14, START)  # the imported exercise on its set-up
+        assert app.hint == "Exercise started: Run the instructor's square"
+        assert "Step 1 of 1" in side(app) and "SQUARE" in app.bridge.status.channel.selected_program
+        assert app.nc_session.session.files.read("MPF/SQUARE.MPF") == SQUARE
+        await burst(pilot, END)
+    assert (tmp_path / "trainee" / "exercises" / "programs" / "SQUARE.MPF").read_text() == SQUARE
