@@ -93,6 +93,7 @@ async def test_alarm_provoked_then_help_from_log_and_header(tmp_path) -> None:
         assert isinstance(app.screen, AlarmHelpScreen) and app.screen.number == 10203
         page = str(app.screen.query_one("#alarm-help-body").render())
         assert "has not been referenced" in page and CLEARING["cancel"] in page
+        assert "NC START is disabled." in page  # 002 L20829-20833
         await pilot.press("escape")
         await pilot.pause()
         await pilot.press("alt+m")

@@ -16,6 +16,16 @@ def test_catalogue_has_the_channel_alarms_with_criteria_and_reactions() -> None:
     assert catalog[1].clear == "power_on"
 
 
+def test_10203_disables_nc_start() -> None:
+    """NC START with unreferenced axes "will have no effect" and raises 10203 (002 L20829-20833);
+    the machine datum behind it is MD20700 "NC start disable without reference point" (002 L26423).
+    Its reaction is the NC start disable; the next NC START clears it first (CANCEL alarms go with
+    NC START), so once the axes are referenced the program starts."""
+    definition = alarm_catalog()[10203]
+    assert definition.reactions == ("nc_start_disable",)
+    assert definition.help_source == "002 L20829-20833"
+
+
 def test_raise_fills_channel_and_block_parameters() -> None:
     server = AlarmServer()
     entry = server.raise_alarm(10203, ("Z",), now_s=1.5)
