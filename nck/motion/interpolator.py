@@ -22,6 +22,7 @@ from nck.motion.profile import build_profile
 from nck.motion.runs import PathRun
 
 RECHECK_CYCLES = 25
+SCALAR_SAMPLES = 4  # a straight block of up to this many samples is sampled with Python floats
 ALARM_CONTROLLER_ENABLE = 21612
 MAX_DWELL_S = 1e9  # longer dwells are cut here (an infinite dwell would overflow the cycle count)
 
@@ -107,6 +108,18 @@ class PathInterpolator:
                 run.tau = tau
                 self.cmd = point
                 k += 1
+            elif 1 < m <= SCALAR_SAMPLES and len(run.chain) == 1 and run.chain[0].segment.arc is None \
+                    and run.profile.scalar_exact:
+                # A few samples of a straight block: the same values sample by sample (see
+                # Profile.scalar_exact), cheaper than numpy on a handful of rows.
+                segment, profile, tau0, s_begin = run.chain[0].segment, run.profile, run.tau, run.s_begin
+                point = self.cmd
+                for i in range(1, m + 1):
+                    point = segment.position_at(s_begin + profile.distance_at(tau0 + T * i))
+                    rows[k] = point
+                    k += 1
+                run.tau = tau0 + T * m
+                self.cmd = point
             elif m:
                 taus = run.tau + self._sample_steps(m)
                 rows[k:k + m] = run.positions(run.profile.distances(taus))

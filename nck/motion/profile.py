@@ -30,7 +30,7 @@ class Profile:
     over several phases first needs them (most blocks never do).
     """
 
-    __slots__ = ("phases", "starts", "duration_s", "length", "v_end", "_columns")
+    __slots__ = ("phases", "starts", "duration_s", "length", "v_end", "scalar_exact", "_columns")
 
     def __init__(self, phases: tuple[tuple[float, float, float, float, float], ...], duration_s: float,
                  length: float, v_end: float) -> None:
@@ -39,6 +39,11 @@ class Profile:
         self.duration_s = duration_s
         self.length = length
         self.v_end = v_end
+        # Without jerk (BRISK) and of sane duration, distance_at gives distances' values bit
+        # for bit at any time: both add s0 + v0·dt, then the acceleration term; the jerk term
+        # adds exactly zero (with jerk, numpy's and Python's dt**3 may round differently, and
+        # dt**3 of a phase longer than 1e100 s could overflow).
+        self.scalar_exact = duration_s < 1e100 and not any(row[4] for row in phases)
         self._columns: np.ndarray | None = None
 
     def _column(self, index: int) -> np.ndarray:

@@ -81,3 +81,24 @@ def test_a_line_has_one_tangent_at_both_ends(start: list[float], end: list[float
     expected = first / math.sqrt(float(first @ first))  # the reference: numpy's dot, as the planner uses it
     assert segment.tangent(False).tolist() == expected.tolist()
     assert segment.tangent(True).tolist() == expected.tolist()
+
+
+@settings(max_examples=200)
+@given(st.floats(0.01, 200.0), st.floats(0.0, 80.0), st.floats(0.0, 80.0), st.floats(1.0, 100.0),
+       st.floats(100.0, 5000.0), st.one_of(st.none(), st.floats(1e3, 1e5)), st.floats(0.0, 1.0),
+       st.integers(1, 4), st.floats(-0.004, 0.0))
+def test_scalar_samples_of_a_brisk_profile_equal_the_numpy_samples(length: float, v0: float, v1: float,
+                                                                    vmax: float, accel: float,
+                                                                    jerk: float | None, fraction: float,
+                                                                    samples: int, carry: float) -> None:
+    """The interpolator samples a few cycles of a straight BRISK block with distance_at; the
+    numpy form (distances) over the same times must give the same floats."""
+    profile = build_profile(length, v0, v1, vmax, accel, jerk)
+    assert profile.scalar_exact == (jerk is None or all(row[4] == 0.0 for row in profile.phases))
+    if not profile.scalar_exact:
+        return
+    period = 0.004
+    tau0 = carry + fraction * profile.duration_s
+    times = tau0 + period * np.arange(1, samples + 1)
+    expected = profile.distances(times).tolist()
+    assert [profile.distance_at(tau0 + period * i) for i in range(1, samples + 1)] == expected
