@@ -18,7 +18,8 @@ File format::
     select = "DRILL_FLANGE.MPF"         # selected at the start (AUTOMATIC program)
     blank = { low_mcs = [..], high_mcs = [..] }  # a box; or base_mcs/diameter_mm/length_mm
     blank_hidden = true                 # the trainee must find the blank by measuring
-    tools = [{ t = 3, d = 1, type = 200, length1 = 95.0, radius = 4.25 }]
+    tools = [{ t = 3, d = 1, type = 200, length1 = 95.0, radius = 4.25 }]  # true_length1 = 93.2:
+                                        # the tool is really that long (its data are wrong)
     offsets = [{ frame = "G54", X = 0.0, Y = 0.0, Z = 0.0 }]
     faults = [{ kind = "emergency_stop" }]   # see FAULT_KINDS
     [[step]]

@@ -19,6 +19,8 @@ from nck.machine import load_machine
 from nck.ncdata import ToolEdge
 from nck.workpiece import MachineSetup, solid_from_plain
 
+TRUE_LENGTH_FIELD = "true_length1"
+"""A tool's field for its true length when its ``length1`` is wrong (:attr:`MachineSetup.tool_lengths`)."""
 TOOL_FIELDS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 5, "radius": 6,
                "wear_length1": 12, "wear_radius": 15}
 """Names of an exercise's tool fields and their ``$TC_DP`` numbers (as ``nck run --tools``)."""
@@ -46,7 +48,10 @@ def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
         except (ValueError, KeyError) as exc:
             raise ExerciseError(f"{exercise.exercise_id}: blank: {exc}") from None
         current = MachineSetup(solid, current.reference, current.hidden)
-    data.machine_setup = MachineSetup(current.blank, current.reference, bool(setup.get("blank_hidden", False)))
+    true_lengths = tuple((int(entry["t"]), float(entry[TRUE_LENGTH_FIELD]))
+                         for entry in setup.get("tools", []) if TRUE_LENGTH_FIELD in entry)
+    data.machine_setup = MachineSetup(current.blank, current.reference, bool(setup.get("blank_hidden", False)),
+                                      true_lengths)
     session.retained.access.keyswitch_position = int(setup.get("keyswitch", 0))
     session.retained.access.locked = exercise.exam  # an exam: the trainee cannot change the level
     for name in setup.get("programs", []):

@@ -142,6 +142,8 @@ class ContactWatch:
         if self.machine.kind == "lathe":  # L1 along X, L2 along Z; the cutting edge a ball
             return ToolBody(BALL, radius), (length1, 0.0, length2)
         shape = BALL if edge.tool_type == PROBE_TOOL_TYPE else CUTTER
+        true_length = self.data.machine_setup.true_length(self.outputs.tool)  # a tool whose data are wrong
+        length1 = true_length if true_length is not None else length1
         return ToolBody(shape, radius, max(length1, 0.0)), (0.0, 0.0, length1)  # G17: the tool along Z
 
     def _tip(self, positions: dict[str, float], offset: Point) -> Point:

@@ -78,11 +78,20 @@ class MachineSetup:
     """What is clamped: ``blank`` and ``reference`` (a block of known height), each optional.
 
     ``hidden`` is the instructor's switch: the blank's position is not shown to the trainee.
+    ``tool_lengths`` are the true lengths (mm, along the spindle) of tools whose length in the
+    tool list is wrong — a tool changed, its data not yet measured (an exercise's set-up):
+    the tool touches what is clamped with its true length, whatever its data say, so
+    measuring it finds the true one. Tools not named are as long as their data.
     """
 
     blank: Solid | None = None
     reference: Box | None = None
     hidden: bool = False
+    tool_lengths: tuple[tuple[int, float], ...] = ()
+
+    def true_length(self, tool: int) -> float | None:
+        """The true length of tool ``tool`` when it differs from its data, else None."""
+        return next((length for number, length in self.tool_lengths if number == tool), None)
 
     def solids(self) -> tuple[tuple[str, Solid], ...]:
         """The solids a tool can touch, named ``"blank"`` / ``"reference"``."""
@@ -162,8 +171,11 @@ def solid_from_plain(data: Any) -> Solid | None:
 
 def setup_to_plain(setup: MachineSetup) -> dict[str, Any]:
     """The whole set-up as JSON-ready data."""
-    return {"blank": solid_to_plain(setup.blank), "reference": solid_to_plain(setup.reference),
-            "hidden": setup.hidden}
+    plain: dict[str, Any] = {"blank": solid_to_plain(setup.blank), "reference": solid_to_plain(setup.reference),
+                             "hidden": setup.hidden}
+    if setup.tool_lengths:  # only an exercise's set-up has them
+        plain["tool_lengths"] = {str(tool): length for tool, length in setup.tool_lengths}
+    return plain
 
 
 def setup_from_plain(data: Mapping[str, Any]) -> MachineSetup:
@@ -174,4 +186,10 @@ def setup_from_plain(data: Mapping[str, Any]) -> MachineSetup:
     hidden = data.get("hidden", False)
     if not isinstance(hidden, bool):
         raise ValueError("hidden is true or false")
-    return MachineSetup(solid_from_plain(data.get("blank")), reference, hidden)
+    lengths = data.get("tool_lengths", {})
+    if not isinstance(lengths, dict) or not all(
+            key.isdigit() and isinstance(value, (int, float)) and not isinstance(value, bool) and value > 0.0
+            for key, value in lengths.items()):
+        raise ValueError("tool_lengths maps tool numbers to lengths above 0 mm")
+    return MachineSetup(solid_from_plain(data.get("blank")), reference, hidden,
+                        tuple(sorted((int(key), float(value)) for key, value in lengths.items())))

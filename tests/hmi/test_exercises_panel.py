@@ -25,7 +25,7 @@ from tests.hmi.conftest import SIZE
 
 REFERENCE_KEYS = ("alt+m", "alt+j", "alt+r", "alt+x", "ctrl+right", "alt+y", "ctrl+right", "alt+z", "ctrl+right")
 OPEN_LIST = ("alt+a", "f8", "f4")  # Diagnostics, More, Exercises
-START, END, NEXT, IMPORT = "shift+f1", "shift+f2", "shift+f3", "shift+f5"
+START, END, NEXT, PREVIOUS, IMPORT = "shift+f1", "shift+f2", "shift+f3", "shift+f4", "shift+f5"
 
 
 def fingerprint(directory: Path) -> dict[str, str]:
@@ -123,10 +123,10 @@ async def test_emergency_stop_cleared_with_the_wrong_key_then_the_right_one(tmp_
 async def test_exam_shows_no_hint_and_a_waiting_exercise_does_not_start(tmp_path: Path) -> None:
     app = trainee_app(tmp_path)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press(*OPEN_LIST, *[NEXT] * 8, START)  # 9: tool length measuring waits
-        assert app.hint.startswith("This exercise waits for a tool whose true length")
+        await pilot.press(*OPEN_LIST, *[NEXT] * 13, START)  # 14: the spindle fault waits
+        assert app.hint.startswith("This exercise waits for a spindle that does not reach its speed")
         assert not app.has_class("-exercise")
-        await pilot.press(*[NEXT] * 4, START)  # 13: the exam
+        await pilot.press(PREVIOUS, START)  # 13: the exam
         assert "Step 1 of 3" in side(app) and "Hint" not in side(app)
         await pilot.press(END)
         assert "score 25/100" in app.hint  # 1 of 4: only the final check (no alarm) holds
