@@ -33,6 +33,7 @@ import numpy as np
 
 from nck.errors import NcAlarmError
 from nck.geometry.planes import Plane
+from nck.geometry.vec3 import dot3, norm3
 
 Vec3 = tuple[float, float, float]
 Vec2 = tuple[float, float]
@@ -92,7 +93,8 @@ class Arc:
     @property
     def lead(self) -> float:
         """Travel along ``axis`` from start to end (0 for a plane circle)."""
-        return float(np.dot(np.subtract(self.end, self.start), self.axis))
+        s, e = self.start, self.end
+        return dot3((e[0] - s[0], e[1] - s[1], e[2] - s[2]), self.axis)
 
     @property
     def sweep_deg(self) -> float:
@@ -101,48 +103,54 @@ class Arc:
 
     def clockwise_in(self, plane: Plane) -> bool:
         """True when the arc runs clockwise seen from the positive applicate of ``plane`` (G2)."""
-        return float(np.dot(self.axis, plane.normal())) < 0.0
+        return dot3(self.axis, plane.normal()) < 0.0
 
     def point_at(self, fraction: float) -> Vec3:
         """The point reached after ``fraction`` (0…1) of the sweep."""
-        angle = self.sweep_rad * fraction
-        radial = np.subtract(self.start, self.center)
-        radial = radial - np.dot(radial, self.axis) * np.asarray(self.axis)
-        turned = _rotate(radial, self.axis, angle)
-        point = np.asarray(self.center) + turned + np.asarray(self.axis) * self.lead * fraction
-        return (float(point[0]), float(point[1]), float(point[2]))
+        t = self._turned(self.sweep_rad * fraction)
+        c, k, lead = self.center, self.axis, self.lead
+        return ((c[0] + t[0]) + k[0] * lead * fraction, (c[1] + t[1]) + k[1] * lead * fraction,
+                (c[2] + t[2]) + k[2] * lead * fraction)
 
     def tangent_at(self, fraction: float) -> Vec3:
         """Unit direction of travel after ``fraction`` of the sweep (including the helix lead)."""
-        angle = self.sweep_rad * fraction
-        radial = np.subtract(self.start, self.center)
-        radial = radial - np.dot(radial, self.axis) * np.asarray(self.axis)
-        turned = _rotate(radial, self.axis, angle)
-        direction = _cross(self.axis, turned) * self.sweep_rad + np.asarray(self.axis) * self.lead
-        norm = float(np.linalg.norm(direction))
+        k, sweep, lead = self.axis, self.sweep_rad, self.lead
+        x = _cross(k, self._turned(sweep * fraction))
+        direction = (x[0] * sweep + k[0] * lead, x[1] * sweep + k[1] * lead, x[2] * sweep + k[2] * lead)
+        norm = norm3(direction)
         if norm < POINT_EPS:
             return (0.0, 0.0, 0.0)
-        d = direction / norm
-        return (float(d[0]), float(d[1]), float(d[2]))
+        return (direction[0] / norm, direction[1] / norm, direction[2] / norm)
+
+    def _turned(self, angle: float) -> Vec3:
+        """The start radius (its part across ``axis``) turned by ``angle`` about ``axis``."""
+        s, c, k = self.start, self.center, self.axis
+        radial = (s[0] - c[0], s[1] - c[1], s[2] - c[2])
+        along = dot3(radial, k)
+        return _rotate((radial[0] - along * k[0], radial[1] - along * k[1], radial[2] - along * k[2]), k, angle)
 
     def length(self) -> float:
         """Path length of the arc or helix."""
         return math.hypot(self.radius * self.sweep_rad, self.lead)
 
 
-def _rotate(vector: np.ndarray, axis: Vec3, angle: float) -> np.ndarray:
-    """Rodrigues rotation of ``vector`` about unit ``axis``."""
-    k = np.asarray(axis, dtype=float)
-    v = np.asarray(vector, dtype=float)
-    return v * math.cos(angle) + _cross(k, v) * math.sin(angle) + k * np.dot(k, v) * (1 - math.cos(angle))
+def _rotate(v: Vec3, k: Vec3, angle: float) -> Vec3:
+    """Rodrigues rotation of ``v`` about unit axis ``k`` (the operations of the numpy form
+    ``v·cos + (k × v)·sin + k·(k·v)·(1 − cos)``, element by element)."""
+    cos, sin = math.cos(angle), math.sin(angle)
+    x = _cross(k, v)
+    along = dot3(k, v)
+    rest = 1 - cos
+    return (v[0] * cos + x[0] * sin + k[0] * along * rest, v[1] * cos + x[1] * sin + k[1] * along * rest,
+            v[2] * cos + x[2] * sin + k[2] * along * rest)
 
 
-def _cross(a: Any, b: Any) -> np.ndarray:
+def _cross(a: Any, b: Any) -> Vec3:
     """``np.cross`` of two 3-vectors with the same products and differences (bit for bit),
-    without its general-shape machinery (a tenth of the time)."""
+    without its general-shape machinery."""
     a0, a1, a2 = float(a[0]), float(a[1]), float(a[2])
     b0, b1, b2 = float(b[0]), float(b[1]), float(b[2])
-    return np.array((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0))
+    return (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
 
 
 def _check_turns(turns: int) -> int:
