@@ -23,6 +23,19 @@ from nck.status import NckStatus
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
+REPORTS_FOLDER = "exercise_reports"
+"""The folder of a data directory the exercise reports go to (unless ``--reports-dir`` names one)."""
+
+
+def reports_dir_of(reports_dir: str | None, data_dir: str | None) -> Path:
+    """Where reports go: ``reports_dir`` (``--reports-dir``), else :data:`REPORTS_FOLDER` of the
+    data directory ``data_dir`` (``--data-dir``, None: the user's) — the directory itself, not a
+    temporary copy of it, so that a report outlives an ``--ephemeral`` panel or a browser tab."""
+    if reports_dir:
+        return Path(reports_dir).expanduser().absolute()
+    return (Path(data_dir).expanduser() if data_dir else queries.default_data_dir()).absolute() / REPORTS_FOLDER
+
+
 EXAM_HELP_LIMITED = "Exam: help is limited to the key overview (F11)"
 """Said instead of opening the command palette or an alarm's help during an exam."""
 
@@ -237,7 +250,7 @@ class ClassroomHost:
             return self.exercise_report_dir
         data_dir = self._trainee_data_dir()
         if data_dir is not None:
-            return data_dir / "exercise_reports"
+            return data_dir / REPORTS_FOLDER
         return Path(tempfile.gettempdir()) / "nck-exercise-reports"
 
     # -- what the app feeds in --------------------------------------------------------------

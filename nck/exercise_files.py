@@ -9,6 +9,7 @@ written atomically.
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -18,13 +19,31 @@ from nck.exercise_checks import report_text
 
 def save_report(folder: Path, name: str, report: Mapping[str, Any], events: list[dict[str, Any]],
                 exercise_id: str) -> tuple[Path, Path]:
-    """Write ``<name>.txt`` (the readable report) and ``<name>.json`` (report and recording)."""
+    """Write ``<name>.txt`` (the readable report) and ``<name>.json`` (report and recording).
+
+    Several panels may write into one folder (browser sessions of a class): a name already
+    taken gets ``-2``, ``-3`` … (the text file is claimed first, so two panels ending the same
+    exercise in the same second never write over each other's report).
+    """
     folder.mkdir(parents=True, exist_ok=True)
-    text_path, json_path = folder / f"{name}.txt", folder / f"{name}.json"
+    text_path = _claimed(folder, name)
+    json_path = text_path.with_suffix(".json")
     atomic_write_text(text_path, report_text(report))
     atomic_write_text(json_path, json.dumps({"exercise": exercise_id, "report": report, "events": events},
                                             indent=1) + "\n")
     return text_path, json_path
+
+
+def _claimed(folder: Path, name: str) -> Path:
+    """A new, empty ``<name>[-n].txt`` in ``folder``, created here (so no other writer takes it)."""
+    for number in range(1, 1000):
+        path = folder / (f"{name}.txt" if number == 1 else f"{name}-{number}.txt")
+        try:
+            os.close(os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644))
+        except FileExistsError:
+            continue
+        return path
+    raise FileExistsError(f"{folder}: too many reports named {name}")
 
 
 def load_recording(path: Path) -> tuple[str, list[dict[str, Any]]]:

@@ -42,6 +42,7 @@ from nck.resources import AlarmDefinition as AlarmDefinition, alarm_catalog as a
 # the panel's Exercises view; pure or writing only the exercise's own directories.
 from nck.exercise import Exercise as Exercise, ExerciseError as ExerciseError, load_exercises as load_exercises
 from nck.exercise import available_exercises as available_exercises
+from nck.paths import default_data_dir as default_data_dir  # where reports go by default (outside a copy)
 from nck.class_pack import PackError as PackError, install_pack as install_pack, read_pack as read_pack
 from nck.exercise_checks import ExerciseProgress as ExerciseProgress, report_text as report_text
 from nck.exercise_files import save_report as save_report

@@ -45,3 +45,12 @@ def test_replay_of_a_bad_file_says_so(tmp_path: Path, capsys: pytest.CaptureFixt
     assert "is not a recorded exercise session" in capsys.readouterr().err
     assert main(["exercise", "replay", str(tmp_path / "none.json")]) == 2
     assert "cannot replay" in capsys.readouterr().err
+
+
+def test_reports_of_the_same_name_do_not_overwrite_each_other(tmp_path: Path) -> None:
+    report = {"title": "t", "score": 1, "time_s": 0.0, "keys": 0, "steps": [], "final_checks": []}
+    first = save_report(tmp_path, "01-20261127-101500", report, [], "01")
+    second = save_report(tmp_path, "01-20261127-101500", {**report, "score": 2}, [], "01")
+    assert first[0].name == "01-20261127-101500.txt" and second == (
+        tmp_path / "01-20261127-101500-2.txt", tmp_path / "01-20261127-101500-2.json")
+    assert '"score": 1' in first[1].read_text() and '"score": 2' in second[1].read_text()

@@ -10,15 +10,20 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
+import shlex
 from pathlib import Path
 
 from textual.widgets import Static
 
 from hmi.app import HmiApp, make_app
+from hmi.exercise_run import reports_dir_of
+from hmi.serve import panel_command
 from nck import commands as cmd
 from nck.class_pack import export_pack
 from nck.exercise import load_exercises
 from nck.exercise_checks import replay
+from nck.paths import default_data_dir
 from tests.burst import burst
 from tests.exercises.test_class_pack import EXERCISE as PACKED_EXERCISE, SQUARE
 from tests.hmi.conftest import SIZE
@@ -161,3 +166,31 @@ async def test_class_pack_imported_on_the_panel(tmp_path: Path) -> None:
         assert app.nc_session.session.files.read("MPF/SQUARE.MPF") == SQUARE
         await burst(pilot, END)
     assert (tmp_path / "trainee" / "exercises" / "programs" / "SQUARE.MPF").read_text() == SQUARE
+
+
+async def test_reports_of_a_panel_on_a_private_copy_outlive_the_copy(tmp_path: Path) -> None:
+    """A browser tab's panel runs on a temporary copy (--ephemeral, hmi --serve): its reports go to
+    exercise_reports of the directory copied, or to --reports-dir, never into the copy."""
+    trainee_app(tmp_path).nc_session.quit()
+    for reports_dir, expected in ((None, tmp_path / "trainee" / "exercise_reports"),
+                                  (str(tmp_path / "class"), tmp_path / "class")):
+        app = make_app(data_dir=str(tmp_path / "trainee"), ephemeral=True, realtime=False, reports_dir=reports_dir)
+        copy = app.nc_session.session.data_dir
+        assert copy != tmp_path / "trainee"
+        try:
+            async with app.run_test(size=SIZE) as pilot:
+                await burst(pilot, *OPEN_LIST, START, END, START, END)  # twice, maybe in one second
+                assert app.hint.startswith(f"Exercise ended, score 67/100: report in {expected}{os.sep}01_power_on")
+        finally:
+            app.nc_session.quit()
+        assert len(list(expected.glob("01_power_on_reference-*.txt"))) == 2
+        assert len(list(expected.glob("01_power_on_reference-*.json"))) == 2
+        assert not copy.exists()
+
+
+def test_browser_panels_write_reports_outside_their_copies(tmp_path: Path) -> None:
+    assert reports_dir_of(None, str(tmp_path)) == tmp_path / "exercise_reports"
+    assert reports_dir_of(str(tmp_path / "r"), str(tmp_path)) == tmp_path / "r"
+    assert reports_dir_of(None, None) == default_data_dir().absolute() / "exercise_reports"
+    words = shlex.split(panel_command("mill3", str(tmp_path), str(tmp_path / "r")))
+    assert words[words.index("--reports-dir") + 1] == str(tmp_path / "r")
