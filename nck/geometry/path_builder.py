@@ -57,6 +57,8 @@ THREAD_KINDS = ("G33", "G331", "G332")  # G331/G332: rigid tapping with the spin
 PATH_KINDS = ("G0", "G1") + THREAD_KINDS + ARC_KINDS
 INTERP_LETTERS = "IJK"
 ROUND_DIGITS = 9
+_LENGTH_PARAMS = (1, 3, 4, 5, 12, 13, 14, 21, 22, 23)  # $TC_DP of the tool length vector: type, L1-L3 geometry, wear, base
+_UNIT_SYSTEMS: dict[tuple[str, bool], UnitSystem] = {}  # (G group 13 code, basic system metric): immutable
 
 
 def _r(value: float) -> float:
@@ -141,7 +143,11 @@ class PathBuilder:
 
     def units(self, modal: Any) -> UnitSystem:
         """The active inch/metric code (G group 13) against the basic system."""
-        return UnitSystem(modal.gcodes.get(13, "G71"), basic_metric=self.basic_metric)
+        key = (modal.gcodes.get(13, "G71"), self.basic_metric)
+        found = _UNIT_SYSTEMS.get(key)
+        if found is None:
+            found = _UNIT_SYSTEMS[key] = UnitSystem(key[0], basic_metric=key[1])
+        return found
 
     def plane(self, modal: Any) -> Plane:
         """The active working plane (G group 6)."""
@@ -181,8 +187,28 @@ class PathBuilder:
 
     def wcs_view(self, geo: GeometryState, modal: Any) -> dict[str, float]:
         """The programmed WCS position in program units, per path axis."""
-        units = self.units(modal)
-        return {a: self.from_mm(a, geo.wcs_mm.get(a, 0.0), modal, units) for a in self.path_axes}
+        return self._display(geo.wcs_mm, modal.gcodes, self.units(modal))
+
+    def _display(self, values_mm: Mapping[str, float], gcodes: Mapping[int, str],
+                 units: UnitSystem) -> dict[str, float]:
+        """:meth:`from_mm` of every path axis (0 where ``values_mm`` has none), the same operations."""
+        code = gcodes.get(29)
+        table = self.__dict__.setdefault("_display_axes", {})
+        axes = table.get(code)
+        if axes is None:  # (axis, is a length, shown as a diameter) per path axis
+            diameter = code in ("DIAMON", "DIAM90")
+            axes = table[code] = tuple((a, self._is_length(a), diameter and a in self.diameter_axes)
+                                       for a in self.path_axes)
+        position_mm = units.position_mm
+        out: dict[str, float] = {}
+        for axis, length, doubled in axes:
+            value = values_mm.get(axis, 0.0)
+            if not length:
+                out[axis] = round(float(value), ROUND_DIGITS) + 0.0
+                continue
+            value = float(value) / position_mm
+            out[axis] = round(value * 2.0 if doubled else value, ROUND_DIGITS) + 0.0
+        return out
 
     # ================================================================ tool
     def tool_vector(self, modal: Any) -> dict[str, float]:
@@ -190,23 +216,34 @@ class PathBuilder:
 
         A D of a tool that has cutting-edge data but not this edge is alarm
         17180; a tool without any data counts as a tool without offsets.
+        The vector is kept per input (the edge's type and lengths, plane, setting data,
+        units): every motion block asks for it.
         """
         tool, edge = int(modal.tool), int(modal.edge)
         if tool == 0 or edge == 0:
             return {axis: 0.0 for axis in self.geo_axes}
-        if self.data.edge(tool, edge) is None and not any(t == tool for t, _ in self.data.tools):
+        found = self.data.edge(tool, edge)
+        if found is None and not any(t == tool for t, _ in self.data.tools):
             return {axis: 0.0 for axis in self.geo_axes}
         found = resolve_edge(self.data, tool, edge)
+        assert found is not None
         sd = self.data.setting_data
-        return length_offset(
-            found,
-            modal.gcodes.get(6, "G17"),
-            self.geo_axes,
-            length_const=int(sd.get("SD42940", 0) or 0),
-            length_type=int(sd.get("SD42950", 0) or 0),
-            wear_sign=active_wear_sign(modal, sd),
-            data_mm=self.units(modal).data_mm,
-        )
+        plane_code = modal.gcodes.get(6, "G17")
+        length_const = int(sd.get("SD42940", 0) or 0)
+        length_type = int(sd.get("SD42950", 0) or 0)
+        wear_sign = active_wear_sign(modal, sd)
+        data_mm = self.units(modal).data_mm
+        params = found.params
+        key = (plane_code, length_const, length_type, wear_sign, data_mm, self.geo_axes,
+               tuple(params.get(index, 0.0) for index in _LENGTH_PARAMS))
+        cache = self.__dict__.setdefault("_tool_vectors", {})
+        vector = cache.get(key)
+        if vector is None:
+            if len(cache) > 256:
+                cache.clear()
+            vector = cache[key] = length_offset(found, plane_code, self.geo_axes, length_const=length_const,
+                                                length_type=length_type, wear_sign=wear_sign, data_mm=data_mm)
+        return dict(vector)
 
     def wear_sign(self) -> int:
         """SD42930 now (taken over by the next edge selection)."""
@@ -635,10 +672,9 @@ class PathBuilder:
                 end_wcs[axis] = actual
 
     def _wcs_out(self, point: tuple[float, float, float], context: Mapping[str, Any]) -> dict[str, float]:
-        modal, units = SimpleNamespace(gcodes=context["gcodes"]), context["units"]
         full = {"X": point[0], "Y": point[1], "Z": point[2]}
         full.update(context["end_other"])
-        return {a: self.from_mm(a, full.get(a, 0.0), modal, units) for a in self.path_axes}
+        return self._display(full, context["gcodes"], context["units"])
 
     def _feed_value(self, feed: Mapping[str, Any], length_mm: float) -> float | None:
         if feed.get("inverse_time"):

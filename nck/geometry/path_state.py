@@ -7,7 +7,6 @@ an alarm in a block leaves it untouched.
 
 from __future__ import annotations
 
-import copy
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -91,8 +90,10 @@ class GeometryState:
     waiting: tuple[Any, ...] = ()
 
     def __deepcopy__(self, memo: dict) -> "GeometryState":
-        """Snapshots before each block: frames, pole and elements are immutable and shared."""
-        new = copy.copy(self)
+        """Snapshots before each block: frames, pole and elements are immutable and shared
+        (a shallow copy of the fields without ``copy.copy``'s pickling protocol)."""
+        new = object.__new__(type(self))
+        new.__dict__.update(self.__dict__)
         new.wcs_mm = dict(self.wcs_mm)
         new.axis_feeds = dict(self.axis_feeds)
         new.accel_pct = dict(self.accel_pct)

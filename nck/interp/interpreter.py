@@ -650,7 +650,8 @@ def _reads_main_run_data(block: ast.Block) -> bool:
 
 def _frame_copy(frame: Frame) -> Frame:
     """A copy of a frame's own state (the variables themselves are journaled, not copied)."""
-    saved = copy.copy(frame)
+    saved = object.__new__(type(frame))  # copy.copy without the pickling protocol (a dataclass)
+    saved.__dict__.update(frame.__dict__)
     saved.locals = dict(frame.locals)
     saved.for_ends = dict(frame.for_ends)
     saved.repeats = list(frame.repeats)

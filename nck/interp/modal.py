@@ -18,6 +18,8 @@ from nck.machine import MachineConfig
 
 
 _ATOMIC = frozenset({str, int, float, bool, type(None)})
+_FLAT_DICTS = frozenset({"gcodes", "position_wcs", "position_mcs", "aux"})
+"""Fields that hold only immutable values (G codes and aux values as text, positions as numbers)."""
 
 
 @dataclass
@@ -68,18 +70,24 @@ class ModalState:
     def __deepcopy__(self, memo: dict) -> "ModalState":
         """The per-block snapshot, fast: dicts of plain values are copied flat.
 
-        Equivalent to a generic deep copy (keys and plain values are immutable);
-        anything else (the geometry state, added fields) is deep-copied as usual.
+        Equivalent to a generic deep copy: the G codes, positions and aux values are
+        immutable (str, numbers), the other dicts are checked value by value, and anything
+        else (the geometry state, added fields) is deep-copied as usual. The copy is made
+        without ``copy.copy``'s pickling protocol (a plain dataclass: the same fields).
         """
-        new = copy.copy(self)
+        new = object.__new__(type(self))
         fields = new.__dict__
+        fields.update(self.__dict__)
         for name, value in self.__dict__.items():
             kind = type(value)
             if kind in _ATOMIC:
                 continue
             if kind is dict:
-                fields[name] = {key: item if type(item) in _ATOMIC else copy.deepcopy(item, memo)
-                                for key, item in value.items()}
+                if name in _FLAT_DICTS:
+                    fields[name] = dict(value)
+                else:
+                    fields[name] = {key: item if type(item) in _ATOMIC else copy.deepcopy(item, memo)
+                                    for key, item in value.items()}
             else:
                 fields[name] = copy.deepcopy(value, memo)
         return new
