@@ -80,16 +80,33 @@ class Cutter:
         return max(self.radius_mm, 1e-6)
 
     def height_above_tip(self, r2: np.ndarray) -> np.ndarray:
-        """``h`` at squared distances ``r2`` from the axis (inf beyond the radius)."""
+        """``h`` at squared distances ``r2`` from the axis (inf beyond the radius), in the
+        precision of ``r2`` (floating point; integers as double)."""
         radius = self.reach_mm
         r2 = np.asarray(r2)
-        out = np.zeros(r2.shape, dtype=r2.dtype if r2.dtype.kind == "f" else np.float64)
+        if r2.dtype.kind != "f":
+            r2 = r2.astype(np.float64)
+        kind = r2.dtype.type
+        beyond = r2 > kind(radius * radius * (1.0 + 1e-12))
         if self.tip_angle_deg > 0.0:
-            out = np.sqrt(r2) / math.tan(math.radians(self.tip_angle_deg) / 2.0)
+            out = np.sqrt(r2)
+            out *= kind(1.0 / math.tan(math.radians(self.tip_angle_deg) / 2.0))
         elif self.corner_radius_mm > 0.0:
             rc = self.corner_radius_mm
             flat = radius - rc
-            r = np.sqrt(r2)
-            beyond = np.maximum(r - flat, 0.0)
-            out = rc - np.sqrt(np.maximum(rc * rc - beyond * beyond, 0.0))
-        return np.where(r2 <= radius * radius * (1.0 + 1e-12), out, np.inf).astype(out.dtype, copy=False)
+            if flat > 0.0:
+                side = np.sqrt(r2)
+                side -= kind(flat)
+                np.maximum(side, kind(0.0), out=side)
+                side *= side
+            else:
+                side = r2.copy()
+            # rc - sqrt(max(rc² - side², 0)) where side is the distance beyond the flat face
+            out = np.subtract(kind(rc * rc), side, out=side)
+            np.maximum(out, kind(0.0), out=out)
+            np.sqrt(out, out=out)
+            np.subtract(kind(rc), out, out=out)
+        else:
+            out = np.zeros(r2.shape, dtype=r2.dtype)
+        out[beyond] = np.inf
+        return out
