@@ -249,7 +249,7 @@ class ContactWatch:
                 return  # on the surface (not seen arriving) and moving off
         if t is None:
             leave_mm = Z_GRID_MM if isinstance(material, TurnedBar) else 0.0  # a turned step's slack
-            if material.clearance(body, end) > leave_mm:
+            if "blank" in touching and material.clearance(body, end) > leave_mm:
                 touching.discard("blank")
             return
         probe = body.shape == BALL and self.machine.kind != "lathe"

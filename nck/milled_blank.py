@@ -54,6 +54,9 @@ TOUCH_MM = 1e-9
 """A gap this small at a computed point of contact is rounding: touching."""
 NEAR_MM = 1.0
 """How far around a point the columns are looked at for :meth:`MilledBlank.clearance`."""
+BROAD_SLACK_MM = 1e-6
+"""Margin of the broad phase (:meth:`MilledBlank._near`) for rounding: a column this much
+beyond what the tool can reach is still looked at exactly."""
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
 _SEARCH_STEPS = 64  # golden-section steps: 0.618**64 ≈ 4e-14 of the step
 _ROOT_STEPS = 52  # bisection steps of the root: 2**-52 of the step
@@ -174,8 +177,13 @@ class MilledBlank:
             self.zmap.sweep(starts, ends, Cutter.flat(radius + self.sweep_radius_mm), quarter)
 
     # ------------------------------------------------------------------ questions
-    def _columns(self, low_x: float, high_x: float, low_y: float, high_y: float) -> _Columns | None:
-        """The columns of the cells reaching into the rectangle, ``None`` when none is cut."""
+    def _columns(self, low_x: float, high_x: float, low_y: float, high_y: float,
+                 reach: tuple[Point, Point, float, float] | None = None) -> _Columns | None:
+        """The columns of the cells reaching into the rectangle, ``None`` when none is cut.
+
+        ``reach`` (start, end, radius, lowest Z) is the broad phase: only columns whose square
+        lies within ``radius`` of the step in the plane and whose top is not below the lowest Z
+        are kept (the others cannot be touched: :meth:`_near`)."""
         if self.pending:
             self._sweep()
         zmap = self.zmap
@@ -194,6 +202,9 @@ class MilledBlank:
         column_top = np.where(cut, heights.astype(np.float64), top)
         keep = column_top > bottom
         ix, iy = np.arange(ix0, ix1), np.arange(iy0, iy1)
+        if reach is not None:
+            keep &= _reachable(reach, column_top, zmap.x0_mm + (ix + 0.5) * res, zmap.y0_mm + (iy + 0.5) * res,
+                               res * math.sqrt(0.5))
         shape = keep.shape
         x0 = np.broadcast_to(np.maximum(zmap.x0_mm + ix * res, xs[0]), shape)[keep]
         x1 = np.broadcast_to(np.minimum(zmap.x0_mm + (ix + 1) * res, xs[1]), shape)[keep]
@@ -202,9 +213,18 @@ class MilledBlank:
         return _Columns(x0, x1, y0, y1, column_top[keep], bottom)
 
     def _near(self, body: ToolBody, start: Point, end: Point, margin_mm: float = 0.0) -> _Columns | None:
+        """The columns the tool moving from ``start`` to ``end`` can come within ``margin_mm``
+        of (``None``: nothing cut near it). Broad phase: a cutter touches a column only with
+        its tip at or below the column's top and its axis within its radius of the column's
+        square, a probe's ball only within its radius of the column; columns farther than
+        the radius plus the margin from the step in the plane, or with their top more than the
+        margin (a ball: plus its radius) below the step's lowest tip, are left out: their gap
+        is larger than the margin, so neither a contact nor :meth:`clearance` changes."""
         reach = body.radius_mm + margin_mm
+        lowest = min(start[2], end[2]) - (reach if body.shape == BALL else margin_mm)
         return self._columns(min(start[0], end[0]) - reach, max(start[0], end[0]) + reach,
-                             min(start[1], end[1]) - reach, max(start[1], end[1]) + reach)
+                             min(start[1], end[1]) - reach, max(start[1], end[1]) + reach,
+                             (start, end, reach, lowest))
 
     def touches_cut(self, body: ToolBody, start: Point, end: Point) -> bool:
         """True when the tool moving from ``start`` to ``end`` may pass near something cut (the
@@ -253,6 +273,23 @@ class MilledBlank:
         gaps = columns.select(entered).gap(body, _along(start, end, candidates)) + depth_mm
         deep = (hits[entered] >= entry) | (gaps <= TOUCH_MM)
         return float(candidates[deep].min()) if deep.any() else None
+
+def _reachable(reach: tuple[Point, Point, float, float], column_top: np.ndarray, centre_x: np.ndarray,
+               centre_y: np.ndarray, half_diagonal_mm: float) -> np.ndarray:
+    """Per column (rows Y, columns X): can the step ``reach`` = (start, end, radius, lowest Z)
+    touch it? Its centre within radius + half a cell diagonal of the step in the plane, and
+    its top not below the lowest Z (with :data:`BROAD_SLACK_MM` to spare for rounding)."""
+    start, end, radius, lowest = reach
+    dx, dy = end[0] - start[0], end[1] - start[1]
+    qx = (centre_x - start[0])[None, :]
+    qy = (centre_y - start[1])[:, None]
+    length2 = dx * dx + dy * dy
+    if length2 > 0.0:
+        t = np.clip((qx * dx + qy * dy) / length2, 0.0, 1.0)
+        qx, qy = qx - t * dx, qy - t * dy
+    near = radius + half_diagonal_mm + BROAD_SLACK_MM
+    return (qx * qx + qy * qy <= near * near) & (column_top >= lowest - BROAD_SLACK_MM)
+
 
 def _continues(start: Point, middle: Point, end: Point) -> bool:
     """True when ``middle`` → ``end`` goes on in the direction of ``start`` → ``middle``."""

@@ -20,6 +20,7 @@ from hypothesis import given, settings, strategies as st
 
 from nck.commands import Accepted, WriteMachineSetup
 from nck.contact import BALL, CUTTER, ToolBody, point_along
+from nck import milled_blank
 from nck.milled_blank import MAX_CELLS, MilledBlank, cell_size_mm
 from nck.workpiece import Box, MachineSetup, default_machine_setup
 from tests.setup_job.test_contact_kernel import events, kernel, mda
@@ -222,3 +223,25 @@ def test_scratching_the_reference_block_cuts_nothing_out_of_the_blank() -> None:
     mda(nck, "G0 Z-225\n")
     assert alarm_numbers(nck) == [90002]
     assert events(nck)[-1].position_mcs["Z"] == pytest.approx(-120.0, abs=1e-6)
+
+
+@settings(max_examples=25, deadline=None)
+@given(**STEPS, overtravel=st.sampled_from([0.0, 2.0]))
+def test_broad_phase_changes_no_contact_and_no_clearance(cut_x, cut_y, depth, start, move, probe, overtravel) -> None:
+    """The broad phase (columns out of the tool's reach left out before the exact test) gives
+    bit for bit the first contact (touching and ``overtravel`` deep, as for a probe driven on)
+    and the clearance of the exact test of every column near the step."""
+    block = Box((-10.0, -10.0, -10.0), (10.0, 10.0, 0.0))
+    milled = MilledBlank.of(block)
+    cutter = ToolBody(CUTTER, 3.0, 50.0)
+    milled.cut(cutter, (cut_x, cut_y, 5.0), (cut_x, cut_y, -depth))
+    milled.cut(cutter, (cut_x, cut_y, -depth), (cut_x + 4.0, cut_y - 2.0, -depth))
+    body = ToolBody(BALL, 2.0) if probe else ToolBody(CUTTER, 2.5, 50.0)
+    end = (start[0] + move[0], start[1] + move[1], start[2] + move[2])
+    with_broad_phase = (milled.first_contact(body, start, end, overtravel), milled.clearance(body, start),
+                        milled.clearance(body, end))
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(milled_blank, "_reachable", lambda reach, top, *_: np.ones(top.shape, dtype=bool))
+        every_column = (milled.first_contact(body, start, end, overtravel), milled.clearance(body, start),
+                        milled.clearance(body, end))
+    assert with_broad_phase == every_column
