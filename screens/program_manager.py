@@ -173,8 +173,10 @@ class ProgramManagerScreen(AreaBase):
         table = self.table
         table.add_column(" ", key="mark", width=1)
         table.add_column(_("Name"), key="name", width=28)
-        table.add_column(_("Type"), key="type", width=6)
-        table.add_column(_("Length"), key="size", width=10)
+        # Type and Length as narrow as their values (MPF, at most 8 digits: 50 MB): beside the
+        # exercise side window the list keeps every column at 120 columns (program_manager.tcss)
+        table.add_column(_("Type"), key="type", width=5)
+        table.add_column(_("Length"), key="size", width=8)
         table.add_column(_("Date"), key="date", width=16)
         self.rebuild_tree()
         self.show_directory("MPF")

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from nck.exercise import load_exercises
 from tests.program_screens.conftest import SIZE, lathe_program_app, make_program_app, settle
 
 PINNED_NS = 1_790_000_000 * 10**9  # 2026-09-21 14:13 UTC
@@ -153,3 +154,24 @@ def test_cycle_form_turning_lathe(snap_compare, pinned: Path) -> None:
         await pilot.pause()
 
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+
+
+def test_program_manager_beside_the_exercise_window_at_120x36(snap_compare, pinned: Path) -> None:
+    """An exercise runs: its side window (34 columns) beside the Program manager at the smallest
+    terminal; the tree gives way, the list keeps Name, Type, Length and Date."""
+    app = make_program_app(pinned)
+    exercise = {e.exercise_id: e for e in load_exercises()}["03_single_block_flange"]
+    app.exercise_report_dir = pinned / "reports"  # the report at the end: beside the test's data
+
+    async def run_before(pilot) -> None:
+        assert app.start_exercise(exercise).startswith("Exercise started")
+        private = app.nc_session.session.data_dir
+        for path in private.rglob("*.MPF"):
+            os.utime(path, ns=(PINNED_NS, PINNED_NS))
+        await pilot.press("alt+n")
+        await pilot.pause()
+
+    try:
+        assert snap_compare(app, terminal_size=(120, 36), run_before=run_before)
+    finally:
+        app.end_exercise()
