@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from nck.basic_blocks import BasicBlockLog
 from nck.canon import Dwell, Motion, SpindleCommand
 from nck.channel import ChannelSituation, next_state
 from nck.program_control import ProgramRun
@@ -48,6 +49,7 @@ class ChannelState:
     jogging: bool = False  # a manual motion (JOG, INC, REF, REPOS) is under way
     jog_targets: dict[str, float] = field(default_factory=dict)  # axis -> MCS end of the increments pressed
     jog_rest: dict[str, float] = field(default_factory=dict)  # axis -> increment left by NC STOP
+    basic_blocks: BasicBlockLog | None = None  # the basic block display of the newest run, kept after its end
 
     def transition(self, event: str) -> None:
         """Follow ``event`` in the transition table of :mod:`nck.channel` (no change where it has none)."""

@@ -505,6 +505,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
             flags["dry_run"] = bool(self.switches.program_control["dry_run"])
         run = ProgramRun(kind, name, interp, self._adjust_motion)
         run.listener = self._count_block
+        self.channel.basic_blocks = run.basic_blocks
         return run
 
     def _begin_run(self, run: ProgramRun) -> None:

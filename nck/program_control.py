@@ -26,6 +26,7 @@ from collections import deque
 from dataclasses import dataclass, field, replace
 from typing import Callable, Mapping
 
+from nck.basic_blocks import BasicBlockLog
 from nck.block_search import CONTOUR, END_POINT, WITHOUT_CALCULATION, EndPointStart
 from nck.canon import (
     AuxFunction, Dwell, EdgeSelect, ExactStop, Message, Motion, ProgramEnd, SpindleCommand, StopPoint,
@@ -127,6 +128,8 @@ class ProgramRun:
         self.current: BlockResult | None = None
         self.history: deque[BlockView] = deque(maxlen=DISPLAY_HISTORY)
         self._shown_as: dict[int, tuple[Source, BlockView | None]] = {}  # see _take
+        self.basic_blocks = BasicBlockLog()
+        """The basic block display: the blocks as they are executed, cycles' blocks included."""
         self.blocks_executed = 0
         self.last_motion: Motion | None = None
         # Recent segments by the identity of their block's Source: a line run several
@@ -269,6 +272,7 @@ class ProgramRun:
             self.listener(result)
         self._pending = result
         self._index = 0
+        self.basic_blocks.taken(result)
         if not result.extras.get("display_off"):
             self.current = result
             self.history.append(block_view(result))
@@ -306,6 +310,7 @@ class ProgramRun:
                 if isinstance(command, Motion):
                     command = self._transform(command)
                     self.last_motion = command
+                    self.basic_blocks.moved(command)
                     self.segments[id(command.source)] = command
                 else:
                     self.segments.setdefault(id(command.source), command)
@@ -502,6 +507,7 @@ class ProgramRun:
         finally:
             if isinstance(flags, dict):
                 flags["search"] = False
+        self.basic_blocks.forget_positions()
         return result
 
     def _search_without_calculation(self, number: int | None, text: str, result: SearchResult) -> None:

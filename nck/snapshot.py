@@ -25,6 +25,10 @@ from nck.machine import MachineConfig
 from nck.ncdata import NcData
 from nck.status import AxisStatus, ChannelStatus, ModalView, NckStatus
 
+BASIC_BLOCKS_BEFORE = 8
+BASIC_BLOCKS_AFTER = 16
+"""Display blocks of the basic block display before and after the executing one (on the control
+MD28402 $MC_MM_ABSBLOCK_BUFFER_CONF[0] and [1], 002 L23596-23599)."""
 SERVICE_FIELDS = (
     "position_actual_mm", "control_deviation_mm", "contour_deviation_mm",
     "velocity_setpoint_mm_min", "kv_calculated", "speed_setpoint_pct", "speed_actual_pct",
@@ -89,12 +93,15 @@ def build_status(src: StatusSources) -> NckStatus:
     parked = parked_items[0] if parked_items and run is not None and run is not channel_state.overlay else None
     if current_source is None and parked is not None:
         current_source = parked.source
+    executing_source = current_source  # None: the motion stands, everything taken has run
     if current_source is None and run is not None:
         current_source = run.last_executed_source()
     current = None
     executing: Motion | None = None
     executing_state: Motion | Dwell | None = None  # the segment or dwell in execution
     blocks: tuple = ()
+    basic_blocks: tuple = ()
+    basic_index = -1
     dtg: dict[str, float] = {}
     if run is not None:
         blocks = run.display_blocks()
@@ -113,6 +120,11 @@ def build_status(src: StatusSources) -> NckStatus:
                     executing = segment
         if current is None and blocks:
             current = blocks[-1]
+    if channel_state.basic_blocks is not None:
+        basic_blocks, basic_index = channel_state.basic_blocks.around(
+            executing_source, BASIC_BLOCKS_BEFORE, BASIC_BLOCKS_AFTER)
+        if run is None:
+            basic_index = -1  # the run ended (or RESET): its blocks stay, none is in execution
     offsets = dict(src.outputs.wcs_offset)
     scales: dict[str, float] = {}
     if executing is not None:
@@ -161,7 +173,8 @@ def build_status(src: StatusSources) -> NckStatus:
         mode=situation.mode, machine_function=channel_state.machine_function,
         increment=channel_state.increment, channel_state=situation.channel,
         program_state=situation.program, selected_program=channel_state.selected,
-        current_block=current, blocks=blocks, modal=modal,
+        current_block=current, blocks=blocks, basic_blocks=basic_blocks, basic_block_index=basic_index,
+        modal=modal,
         program_control=dict(src.switches.program_control), overrides=dict(src.switches.overrides),
         path_feed_mm_min=shown.path_velocity_mm_min(), program_runtime_s=runtime.act_s,
         part_count=counters.actual, message=src.alarms.message,

@@ -92,6 +92,8 @@ class ChannelStatus:
     selected_program: str | None = None
     current_block: BlockView | None = None
     blocks: tuple[BlockView, ...] = ()
+    basic_blocks: tuple[BlockView, ...] = ()  # the basic block display (nck.basic_blocks) around the executing block
+    basic_block_index: int = -1  # the executing block's place in basic_blocks; -1: none of them
     modal: ModalView = field(default_factory=ModalView)
     program_control: Mapping[str, object] = field(default_factory=dict)
     overrides: Mapping[str, float] = field(default_factory=dict)

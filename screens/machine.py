@@ -26,7 +26,7 @@ from hmi.area import AreaBase, show_text
 from hmi.focus import focus_now
 from hmi.i18n import N_, _
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
-from hmi.widgets.blocks import BlockWindow
+from hmi.widgets.blocks import BasicBlockWindow, BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
 from hmi.widgets.header import increment_text
 from hmi.widgets.positions import PositionWindow
@@ -76,6 +76,8 @@ class MachineScreen(AreaBase):
         self.view: str | None = None
         self.search_type = "contour"
         """The block search type chosen on the search view (a key of SEARCH_MODES)."""
+        self.show_basic_blocks = False
+        """The basic block display (vertical softkey Basic blocks in AUTO and MDA) is on."""
         self._shown_mode: str | None = None
         self._mda_loaded = False
         self.jog = JogWindows(self)
@@ -94,9 +96,11 @@ class MachineScreen(AreaBase):
             with Vertical(id="view-mda", classes="view"):
                 yield Static(" MDA", id="mda-title", classes="view-title", markup=False)
                 yield TextArea("", id="mda-editor", soft_wrap=False, show_line_numbers=False)
+                yield from self._basic_block_window("mda")
             with Vertical(id="view-auto", classes="view"):
                 yield Static("", id="auto-title", classes="view-title", markup=False)
                 yield BlockWindow(height_lines=20, id="auto-blocks")
+                yield from self._basic_block_window("auto")
             with Vertical(id="view-gfunc", classes="view"):
                 yield Static(" " + _("G functions — all groups"), classes="view-title", markup=False)
                 yield GFunctionsTable(id="gfunc-table")
@@ -119,6 +123,13 @@ class MachineScreen(AreaBase):
                 yield Static(" " + _("Times / Counter"), classes="view-title", markup=False)
                 yield Static("", id="times-table", markup=False)
             yield from self.jog.compose()
+
+    @staticmethod
+    def _basic_block_window(mode: str) -> ComposeResult:
+        """The basic block display under the mode's own window (shown by the softkey)."""
+        yield Static(" " + _("Basic blocks — end positions absolute in the WCS"),
+                     classes="view-title basic-blocks", markup=False)
+        yield BasicBlockWindow(id=f"{mode}-basic", classes="basic-blocks")
 
     def on_mount(self) -> None:
         """Cursor blink off (calm display, stable snapshots), then the base class."""
@@ -197,11 +208,13 @@ class MachineScreen(AreaBase):
             ]
         if view == "view-mda":
             return [Softkey("mda.delete", "Delete\nblocks", "clear_mda",
-                            enabled=lambda s: s._reset_state())]
+                            enabled=lambda s: s._reset_state()),
+                    self._basic_blocks_key("mda")]
         if view == "view-auto":
             return [Softkey("auto.select", "Select\nprogram", "select_program",
                             level=PROGRAM_SELECTION_LEVEL,
-                            enabled=lambda s: s._reset_state())]
+                            enabled=lambda s: s._reset_state()),
+                    self._basic_blocks_key("auto")]
         if view == "view-jog" or view in JOG_WINDOWS:
             return self.jog.vertical_softkeys(self.view)
         return []
@@ -213,6 +226,11 @@ class MachineScreen(AreaBase):
             self.status is not None and self.status.channel.stop_reason == "search target found")
 
     @staticmethod
+    def _basic_blocks_key(mode: str) -> Softkey:
+        return Softkey(f"{mode}.basic_blocks", "Basic\nblocks", "toggle_basic_blocks",
+                       active=lambda s: s.show_basic_blocks)
+
+    @staticmethod
     def _search_mode_key(key_id: str, label: str, search_type: str) -> Softkey:
         return Softkey(key_id, label, f"choose_search_type('{search_type}')",
                        active=lambda s: s.search_type == search_type)
@@ -221,6 +239,12 @@ class MachineScreen(AreaBase):
     def action_toggle_mcs(self) -> None:
         """Actual values in the machine (MCS) or workpiece (WCS) coordinate system."""
         self.show_mcs = not self.show_mcs
+        self._redraw()
+
+    def action_toggle_basic_blocks(self) -> None:
+        """The basic block display under the AUTO / MDA window on or off."""
+        self.show_basic_blocks = not self.show_basic_blocks
+        self.set_class(self.show_basic_blocks, "-basic-blocks")
         self._redraw()
 
     def action_show_view(self, view: str) -> None:
@@ -396,11 +420,15 @@ class MachineScreen(AreaBase):
         elif view_id == "view-mda":
             show_text(self.query_one("#mda-title", Static), 
                 " " + _("MDA — type blocks, CYCLE START (Alt+G) runs them") + f"   {channel.program_state}")
+            if self.show_basic_blocks:
+                self.query_one("#mda-basic", BasicBlockWindow).show(channel)
         elif view_id == "view-auto":
             show_text(self.query_one("#auto-title", Static), self._auto_title(status))
             program = (self.hmi.program_text(channel.selected_program)
                        if channel.selected_program else None)
             self.query_one("#auto-blocks", BlockWindow).show(channel, program, status.alarms)
+            if self.show_basic_blocks:
+                self.query_one("#auto-basic", BasicBlockWindow).show(channel)
         elif view_id == "view-gfunc":
             self.query_one(GFunctionsTable).show(channel.modal.gcodes, getattr(channel.modal, "iso_gcodes", None))
         elif view_id == "view-aux":

@@ -9,6 +9,7 @@ from textual.widgets import Static
 
 from nck.status import AlarmEntry, BlockView, ChannelStatus
 
+from hmi.i18n import _
 from hmi.program_lines import ProgramLines
 
 BEFORE = 3
@@ -30,11 +31,11 @@ def block_lines(blocks: tuple[BlockView, ...], current: BlockView | None, height
     return _window_text(shown, index - start if current is not None else None)
 
 
-def _window_text(shown: Sequence[BlockView], highlight: int | None) -> Text:
+def _window_text(shown: Sequence[BlockView], highlight: int | None, empty: str = "(no program)") -> Text:
     """The block window's text: ``shown`` with the block at ``highlight`` marked."""
     text = Text()
     if not shown:
-        text.append(" (no program)\n", style="dim")
+        text.append(f" {empty}\n", style="dim")
         return text
     for i, block in enumerate(shown):
         if i == highlight:
@@ -92,11 +93,23 @@ class BlockWindow(Static):
     def __init__(self, height_lines: int = 9, **kwargs: object) -> None:
         super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
         self.height_lines = height_lines
+        self.most_lines = height_lines
         self._key: object = None
+        self._shown: tuple | None = None
+
+    def on_resize(self) -> None:
+        """At most as many lines as the window has room for (the basic block display may share
+        its room), so that the marked block stays in sight."""
+        lines = min(self.most_lines, self.size.height) if self.size.height > 0 else self.most_lines
+        if lines != self.height_lines:
+            self.height_lines = lines
+            if self._shown is not None:
+                self.show(*self._shown)
 
     def show(self, channel: ChannelStatus, program: ProgramLines | None = None,
              alarms: Sequence[AlarmEntry] = ()) -> None:
         """Redraw when the program or the marked block (:func:`marked_block`) changed."""
+        self._shown = (channel, program, alarms)
         current = marked_block(channel, alarms)
         if program is not None and (current is None or _same_file(current.file, program.name)):
             key: object = (id(program), current, self.height_lines)
@@ -109,3 +122,39 @@ class BlockWindow(Static):
             return
         self._key = key
         self.update(block_lines(channel.blocks, current, self.height_lines), layout=False)
+
+
+def basic_block_lines(blocks: Sequence[BlockView], index: int, height: int) -> Text:
+    """``height`` lines of the basic block display, the block at ``index`` (in execution) marked
+    with at least a few before it (more when no more follow); -1 marks none."""
+    start = max(0, min(index - BEFORE, len(blocks) - height)) if index >= 0 else max(0, len(blocks) - height)
+    shown = blocks[start:start + height]
+    return _window_text(shown, index - start if index >= 0 else None, _("(no block executed yet)"))
+
+
+class BasicBlockWindow(Static):
+    """The basic block display (softkey Basic blocks): the blocks as the NCK executes them,
+    those a cycle generates included, with absolute end positions in the WCS
+    (:mod:`nck.basic_blocks`; 002 L23515-23530)."""
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__("", markup=False, **kwargs)  # type: ignore[arg-type]
+        self.height_lines = 1
+        self._key: object = None
+        self._shown: ChannelStatus | None = None
+
+    def on_resize(self) -> None:
+        """As many lines as the window has room for."""
+        self.height_lines = max(1, self.size.height)
+        if self._shown is not None:
+            self.show(self._shown)
+
+    def show(self, channel: ChannelStatus) -> None:
+        """Redraw when the display blocks or the one in execution changed."""
+        self._shown = channel
+        key = (channel.basic_blocks, channel.basic_block_index, self.height_lines)
+        if key == self._key:
+            return
+        self._key = key
+        self.update(basic_block_lines(channel.basic_blocks, channel.basic_block_index, self.height_lines),
+                    layout=False)

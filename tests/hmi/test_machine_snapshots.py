@@ -6,6 +6,10 @@ the workflow tests (test_workflows.py) run on the real kernel.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
+from nck.status import BlockView
+
 from hmi.app import HmiApp
 from tests.hmi.conftest import SIZE
 from tests.hmi.fake_nck import FakeNck
@@ -78,6 +82,36 @@ def test_mda_after_cycle_start(snap_compare) -> None:
 def test_auto_single_block_stopped(snap_compare) -> None:
     """AUTO, PART1.MPF, single block: stopped after N40, the current block highlighted."""
     assert snap_compare(app_on(auto_fake()), terminal_size=SIZE)
+
+
+class CycleFake(FakeNck):
+    """Stopped in single block inside CYCLE81 (at the drill's depth), with the basic block
+    display the kernel reports there (tests/kernel/test_basic_blocks.py)."""
+
+    BASIC_BLOCKS = ("N20 T1 D1", "N30 S1200 M3", "N40 G0 X10 Y20 Z50", "Z2", "G1 Z-5 F300")
+
+    def status(self):
+        status = super().status()
+        views = tuple(BlockView("DRILL.MPF", 5, text) for text in self.BASIC_BLOCKS)
+        channel = replace(status.channel, basic_blocks=views, basic_block_index=len(views) - 1)
+        return replace(status, channel=channel)
+
+
+def test_auto_basic_blocks_in_a_cycle(snap_compare) -> None:
+    """⇧F2 Basic blocks: under the program (stopped on its CYCLE81 call) the blocks the cycle
+    executes, the one at the drill's depth marked."""
+    from nck import commands as c
+
+    fake = CycleFake(referenced=True)
+    fake.programs["DRILL.MPF"] = ["N10 G90 G54 G17 F300", "N20 T1 D1", "N30 M3 S1200",
+                                  "N40 G0 X10 Y20 Z50", "N50 CYCLE81(10, 0, 2, -5)", "N60 M30"]
+    fake.submit(c.SelectMode("AUTO"))
+    fake.submit(c.SelectProgram("DRILL.MPF"))
+    fake.submit(c.SetProgramControl("single_block", "SBL1"))
+    for _ in range(4):
+        fake.submit(c.CycleStart())
+    fake.pos["Z"] = -5.0
+    assert snap_compare(app_on(fake), terminal_size=SIZE, press=["shift+f2"])
 
 
 def test_auto_with_alarm(snap_compare) -> None:

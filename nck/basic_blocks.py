@@ -1,0 +1,196 @@
+"""The basic block display: the blocks as the NCK executes them (002 L23515-23800).
+
+A second block display beside the program's own shows every block that acts on the machine,
+also the blocks a cycle generates (a cycle is ``DISPLOF``: the program's display keeps its
+call), with the end positions the block approaches as absolute values in the WCS. A
+:class:`BasicBlockLog` belongs to one program run: the run hands it each block it takes for
+execution (:meth:`BasicBlockLog.taken`) and each path segment it passes on to the motion
+(:meth:`BasicBlockLog.moved`), in the order the main run will execute them; the status asks it
+for the display blocks around the block in execution (:meth:`BasicBlockLog.around`).
+
+How a display block is written (002 L23656-23800, "Structure for a DIN block"):
+
+- the block number of the original block, left out when the block runs under ``DISPLOF``;
+- the G code of group 1 when it differs from that of the last motion block;
+- the axes the block moves, with their absolute end positions in the WCS (the transverse axis
+  as a diameter under DIAMON, as the program writes it); an axis that does not move keeps the
+  last value shown (the manual's example shows ``N20 G91 X1`` as ``N20 X11.123``, L23733);
+  circles add their centre as absolute values (``I=AC(…)``); positions with at most three
+  decimals (MD9004's default resolution);
+- F when a block other than G0 moves at a feed that differs from the last one shown;
+- the other addresses of the block as values: T, D, S and M3/M4/M5, SPOS, M and H functions,
+  the dwell ``G4 F…``/``G4 S…``, M0/M1 and the program end.
+
+Our choices where the manual says more than we model: the other modal G codes are not shown
+(the manual collects changed ones into the next block), nor labels; a block that only
+computes (a cycle's arithmetic, jumps) has no display block. The block search interprets
+without taking blocks, so it writes none (002 L23610: the display is off during block search);
+the first block after it shows every axis again.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass, field
+
+from nck.canon import (
+    AuxFunction, CanonCommand, Dwell, EdgeSelect, Motion, ProgramEnd, SpindleCommand, StopPoint,
+    Source, ToolSelect,
+)
+from nck.interp.api import BlockResult
+from nck.number_text import trimmed
+from nck.status import BlockView
+
+BLOCKS_KEPT = 4096
+"""Display blocks remembered: more than the look-ahead buffer (MD28060, at most 1000 segments)
+lets the interpreter read ahead of the block in execution."""
+POSITION_PLACES = 3
+"""Decimals of a position (MD9004 DISPLAY_RESOLUTION, default 3)."""
+CENTRE_WORDS = {"G17": {"X": "I", "Y": "J"}, "G18": {"Z": "K", "X": "I"}, "G19": {"Y": "J", "Z": "K"}}
+"""The interpolation parameters of a circle's centre, by the plane of the circle."""
+STOP_WORDS = frozenset({"M0", "M00", "M1", "M01"})
+
+
+@dataclass
+class _DisplayBlock:
+    """One display block while it is written: its source and its words."""
+
+    source: Source
+    seq: int
+    label: str
+    motion_words: list[str] = field(default_factory=list)
+    other_words: list[str] = field(default_factory=list)
+    shown: BlockView | None = None  # the view, made again when a word was added
+
+    def view(self) -> BlockView:
+        if self.shown is None:
+            words = ([self.label] if self.label else []) + self.motion_words + self.other_words
+            self.shown = BlockView(self.source.file, self.source.line, " ".join(words))
+        return self.shown
+
+
+class BasicBlockLog:
+    """The display blocks of one program run, oldest first (see the module docstring)."""
+
+    def __init__(self, capacity: int = BLOCKS_KEPT) -> None:
+        self._blocks: deque[_DisplayBlock] = deque(maxlen=capacity)
+        self._by_source: dict[int, _DisplayBlock] = {}
+        self._seq = 0
+        self._motion_code: str | None = None
+        self._feed: float | None = None
+        self._positions: dict[str, float] = {}
+
+    def taken(self, block: BlockResult) -> None:
+        """A block taken for execution: a display block when it acts on the machine."""
+        words = [word for command in block.commands for word in _words_of(command)]
+        moves = any(isinstance(c, Motion) and c.source is block.source for c in block.commands)
+        if not words and not moves:
+            return
+        label = "" if block.extras.get("display_off") or block.source.n is None else f"N{block.source.n}"
+        entry = _DisplayBlock(block.source, self._seq, label, other_words=words)
+        self._seq += 1
+        if len(self._blocks) == self._blocks.maxlen:
+            dropped = self._blocks.popleft()
+            if self._by_source.get(id(dropped.source)) is dropped:
+                del self._by_source[id(dropped.source)]
+        self._blocks.append(entry)
+        self._by_source[id(block.source)] = entry
+
+    def moved(self, motion: Motion) -> None:
+        """A path segment passed on to the motion: its words join its block's display block.
+
+        A segment that its block releases late (radius compensation, RND) still belongs to
+        the block that programmed it."""
+        entry = self._entry(motion.source)
+        if entry is None:
+            return
+        entry.shown = None
+        words = entry.motion_words
+        if motion.kind != self._motion_code:
+            words.append(motion.kind)
+            self._motion_code = motion.kind
+        for axis, value in motion.end_wcs.items():
+            end = float(value)
+            if axis not in self._positions or _shown(end) != _shown(self._positions[axis]):
+                words.append(f"{axis}{_shown(end)}")
+            self._positions[axis] = end
+        centre_words = CENTRE_WORDS.get(motion.plane, {})
+        for axis, value in (motion.center_wcs or {}).items():
+            if axis in centre_words:
+                words.append(f"{centre_words[axis]}=AC({_shown(float(value))})")
+        if motion.kind != "G0" and motion.feed is not None and motion.feed != self._feed:
+            words.append(f"F{trimmed(motion.feed)}")
+            self._feed = motion.feed
+
+    def forget_positions(self) -> None:
+        """After a block search: the next display block shows every axis and its G code."""
+        self._positions.clear()
+        self._motion_code = None
+        self._feed = None
+
+    def around(self, source: Source | None, before: int, after: int) -> tuple[tuple[BlockView, ...], int]:
+        """The display blocks from ``before`` blocks before the one of ``source`` (the block in
+        execution) to ``after`` blocks after it, and the index of that block in them.
+
+        ``source`` None: nothing executes, the motion stands and every block taken has been
+        executed: the newest block is the one marked. A ``source`` without a display block
+        (forgotten): the newest blocks, none marked (-1)."""
+        if not self._blocks:
+            return (), -1
+        if source is None:
+            entry: _DisplayBlock | None = self._blocks[-1]
+        else:
+            entry = self._entry(source)
+        if entry is None:
+            start = max(0, len(self._blocks) - before - 1)
+            return tuple(self._blocks[i].view() for i in range(start, len(self._blocks))), -1
+        index = entry.seq - self._blocks[0].seq
+        start = max(0, index - before)
+        stop = min(len(self._blocks), index + after + 1)
+        shown = tuple(self._blocks[i].view() for i in range(start, stop))
+        return shown, index - start
+
+    def _entry(self, source: Source) -> _DisplayBlock | None:
+        entry = self._by_source.get(id(source))
+        return entry if entry is not None and entry.source is source else None
+
+
+def _shown(value: float) -> str:
+    return trimmed(value, POSITION_PLACES)
+
+
+def _spindle_address(address: str, spindle: int) -> str:
+    """``S``/``M`` of the master spindle, ``S2=``/``M2=`` of another (002 L23774-23781)."""
+    return address if spindle == 1 else f"{address}{spindle}="
+
+
+def _words_of(command: CanonCommand) -> list[str]:
+    """The address words a command other than a path segment adds to its display block."""
+    if isinstance(command, SpindleCommand):
+        words = []
+        if command.speed_rpm is not None:
+            words.append(f"{_spindle_address('S', command.spindle)}{trimmed(command.speed_rpm)}")
+        if command.state in ("M3", "M4", "M5", "M19"):
+            words.append(f"{_spindle_address('M', command.spindle)}{command.state[1:]}")
+        elif command.state == "SPOS" and command.position_deg is not None:
+            name = "SPOS" if command.spindle == 1 else f"SPOS[{command.spindle}]"
+            words.append(f"{name}={trimmed(command.position_deg)}")
+        return words
+    if isinstance(command, ToolSelect):
+        return [f"T{command.tool}"]
+    if isinstance(command, EdgeSelect):
+        return [f"D{command.edge}"]
+    if isinstance(command, AuxFunction):
+        extension = "" if command.extension is None else f"{command.extension}="
+        return [f"{command.address.upper()}{extension}{trimmed(command.value)}"]
+    if isinstance(command, Dwell):
+        if command.wait_spindle:
+            return []
+        if command.revolutions is not None:
+            return [f"G4 S{trimmed(command.revolutions)}"]
+        return [f"G4 F{trimmed(command.seconds or 0.0)}"]
+    if isinstance(command, StopPoint) and command.kind.upper() in STOP_WORDS:
+        return [command.kind.upper()]
+    if isinstance(command, ProgramEnd) and command.kind.upper().startswith("M"):
+        return [command.kind.upper()]
+    return []
