@@ -16,6 +16,7 @@ from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from hmi.dialog import AreaDialog
+from hmi.i18n import _
 from hmi.focus import focus_now
 
 
@@ -93,7 +94,7 @@ class ValueDialog(AreaDialog[str | None]):
                 yield Static(self._hint, id="value-hint", markup=False)
             yield Input(self._value, password=self._password, id="value-input",
                         select_on_focus=not self._typed)
-            yield Static("Enter confirm   F10 / Esc cancel", id="value-keys")
+            yield Static(_("Enter confirm   F10 / Esc cancel"), id="value-keys")
 
     def on_mount(self) -> None:
         """The field has the focus; no blinking cursor (stable screenshots)."""
@@ -132,7 +133,7 @@ class ConfirmDialog(AreaDialog[bool]):
         """The question and the keys."""
         with Vertical(id="confirm-box"):
             yield Static(self._question, id="confirm-question", markup=False)
-            yield Static("Y / Enter: yes     N / F10 / Esc: no", id="confirm-keys")
+            yield Static(_("Y / Enter: yes     N / F10 / Esc: no"), id="confirm-keys")
 
     def action_answer(self, yes: bool) -> None:
         """Close with the answer."""

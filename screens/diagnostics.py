@@ -107,7 +107,7 @@ class DiagnosticsScreen(AreaBase):
             for view in VIEWS:
                 with Vertical(id=f"view-{view}", classes="diag-view"):
                     if view == "log":
-                        yield Input(placeholder="number range and/or text, e.g. 10000-19999 limit",
+                        yield Input(placeholder=_("number range and/or text, e.g. 10000-19999 limit"),
                                     id="log-filter")
                     if view == "trace":
                         yield Static("", id="trace-settings", markup=False)
@@ -340,7 +340,8 @@ class DiagnosticsScreen(AreaBase):
             write_export(path, data, replace=replace)
             return path
 
-        self._export(write, f"Alarm log written to {path} ({len(rows)} entries)", "Export failed")
+        self._export(write, _("Alarm log written to {path} ({count} entries)").replace("{count}", str(len(rows))),
+                     _("Export failed"))
 
     def _export(self, write: Callable[[bool], Path], done: str, failed: str) -> None:
         """Run an export; when its file exists, ask before replacing it (links are refused)."""
@@ -348,7 +349,8 @@ class DiagnosticsScreen(AreaBase):
             try:
                 path = write(replace)
             except FileExistsError as exc:
-                question = f"{Path(exc.filename).name} already exists in {Path(exc.filename).parent}. Replace it?"
+                question = _("{name} already exists in {folder}. Replace it?").format(
+                    name=Path(exc.filename).name, folder=Path(exc.filename).parent)
                 self.app.push_screen(ConfirmDialog(question), lambda yes: attempt(True) if yes else None)
                 return
             except OSError as exc:
@@ -389,10 +391,10 @@ class DiagnosticsScreen(AreaBase):
         if self.trace.running:
             self.trace.stop()
         elif not self.trace.chosen:
-            self.show_hint("Trace: choose at least one signal")
+            self.show_hint(_("Trace: choose at least one signal"))
             return
         elif not self.hmi.bridge.traceable:
-            self.show_hint("Trace: this kernel cannot be traced")
+            self.show_hint(_("Trace: this kernel cannot be traced"))
             return
         else:
             try:
@@ -408,11 +410,11 @@ class DiagnosticsScreen(AreaBase):
         if self.trace is None:
             return
         if not (self.trace.recorder is not None and self.trace.recorder.sample_count):
-            self.show_hint("Trace export: nothing recorded yet")
+            self.show_hint(_("Trace export: nothing recorded yet"))
             return
         trace = self.trace
-        self._export(lambda replace: trace.export(Path(self.export_dir), replace), "Trace written to {path}",
-                     "Trace export")
+        self._export(lambda replace: trace.export(Path(self.export_dir), replace), _("Trace written to {path}"),
+                     _("Trace export"))
 
     def action_arrow(self, direction: int) -> None:
         """Left/Right in the trace view: move the cursor by a hundredth of the recording."""
@@ -500,16 +502,18 @@ class DiagnosticsScreen(AreaBase):
     def _render_axis(self, status: NckStatus) -> None:
         axis = self._selected_axis(status)
         if axis is not None:
-            kind = "spindle" if axis.kind == "spindle" else "axis"
+            title = (_("Spindle {name}  ({number} of {count}, Axis +/− to change)") if axis.kind == "spindle"
+                     else _("Axis {name}  ({number} of {count}, Axis +/− to change)"))
             show_text(self._body("axis"), rows_text(
-                f"{kind.capitalize()} {axis.name}  ({self.axis_index + 1} of {len(status.axes)}, Axis +/− to change)",
+                title.format(name=axis.name, number=self.axis_index + 1, count=len(status.axes)),
                 axis_rows(status, axis)))
 
     def _render_drive(self, status: NckStatus) -> None:
         axis = self._selected_axis(status)
         if axis is not None:
             show_text(self._body("drive"), rows_text(
-                f"Drive of {axis.name}  ({self.axis_index + 1} of {len(status.axes)}, Axis +/− to change)",
+                _("Drive of {name}  ({number} of {count}, Axis +/− to change)").format(
+                    name=axis.name, number=self.axis_index + 1, count=len(status.axes)),
                 drive_rows(status, axis)))
 
     def _render_utilisation(self, status: NckStatus) -> None:

@@ -14,10 +14,11 @@ from rich.text import Text
 from nck import fixed
 from nck.status import AxisStatus, NckStatus
 
+from hmi.i18n import N_, _
 from hmi.utilisation import UtilisationMeter
 
-CONTROLLER_MODES = {0: "0 position control", 1: "1 speed control", 2: "2 hold", 3: "3 parking",
-                    4: "4 follow-up", 5: "5 braking"}
+CONTROLLER_MODES = {0: N_("0 position control"), 1: N_("1 speed control"), 2: N_("2 hold"),
+                    3: N_("3 parking"), 4: N_("4 follow-up"), 5: N_("5 braking")}
 DC_LINK_NOMINAL_V = 600.0
 """The drive model has no DC link: the service drive screen shows the nominal voltage."""
 MOTOR_TEMP_WARN_C = 120.0
@@ -36,7 +37,7 @@ def _extra(axis: AxisStatus, name: str) -> float | None:
 
 
 def _yes(flag: bool | None) -> str:
-    return MISSING if flag is None else ("yes" if flag else "no")
+    return MISSING if flag is None else (N_("yes") if flag else N_("no"))
 
 
 def enables(status: NckStatus, axis: AxisStatus) -> dict[str, bool]:
@@ -45,15 +46,15 @@ def enables(status: NckStatus, axis: AxisStatus) -> dict[str, bool]:
     mode = _extra(axis, "controller_mode")
     follow_up = mode is not None and int(mode) == 4
     return {
-        "Ctrl enable": ready and not follow_up,
-        "Pulse enable": ready,
-        "Referenced": axis.referenced,
-        "Pos. control": ready and not follow_up,
-        "Exact stop C": bool(_extra(axis, "exact_stop_coarse") if _extra(axis, "exact_stop_coarse") is not None
+        N_("Ctrl enable"): ready and not follow_up,
+        N_("Pulse enable"): ready,
+        N_("Referenced"): axis.referenced,
+        N_("Pos. control"): ready and not follow_up,
+        N_("Exact stop C"): bool(_extra(axis, "exact_stop_coarse") if _extra(axis, "exact_stop_coarse") is not None
                              else abs(axis.following_error) < 0.04),
-        "Exact stop F": bool(_extra(axis, "exact_stop_fine") if _extra(axis, "exact_stop_fine") is not None
+        N_("Exact stop F"): bool(_extra(axis, "exact_stop_fine") if _extra(axis, "exact_stop_fine") is not None
                              else abs(axis.following_error) < 0.01),
-        "Not clamped": not bool(_extra(axis, "clamped") or 0.0),
+        N_("Not clamped"): not bool(_extra(axis, "clamped") or 0.0),
     }
 
 
@@ -62,7 +63,8 @@ def overview_text(status: NckStatus) -> Text:
     axes = [a for a in status.axes]
     columns = list(enables(status, axes[0]).keys()) if axes else []
     text = Text(no_wrap=True, end="")
-    text.append(f" {'Axis':<8}" + "".join(f"{c:>14}" for c in columns) + f"{'Foll. error mm':>18}\n", style="bold")
+    text.append(f" {_('Axis'):<8}" + "".join(f"{_(c):>14}" for c in columns) + f"{_('Foll. error mm'):>18}\n",
+                style="bold")
     for axis in axes:
         text.append(f" {axis.name:<8}")
         if axis.kind == "spindle":
@@ -84,15 +86,15 @@ def axis_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
     if axis.kind == "spindle":
         unit = "deg"
         return [
-            ("Position actual value MS1 (MCS)", _num(axis.position_mcs), unit),
-            ("Spindle speed setpoint programmed", _num(status.channel.modal.spindle_speed_rpm, 1), "rpm"),
-            ("Spindle speed setpoint current", _num(_extra(axis, "setpoint_rpm"), 1), "rpm"),
-            ("Speed actual value", _num(axis.speed_rpm, 1), "rpm"),
-            ("Override", _num(_extra(axis, "override_pct") or overrides.get("spindle"), 0), "%"),
-            ("Torque", _num(_extra(axis, "torque_nm"), 2), "Nm"),
-            ("Active measuring system", "1", ""),
-            ("Current gear stage", "1", ""),
-            ("Referenced status", "1" if axis.referenced else "0", "bits"),
+            (N_("Position actual value MS1 (MCS)"), _num(axis.position_mcs), unit),
+            (N_("Spindle speed setpoint programmed"), _num(status.channel.modal.spindle_speed_rpm, 1), "rpm"),
+            (N_("Spindle speed setpoint current"), _num(_extra(axis, "setpoint_rpm"), 1), "rpm"),
+            (N_("Speed actual value"), _num(axis.speed_rpm, 1), "rpm"),
+            (N_("Override"), _num(_extra(axis, "override_pct") or overrides.get("spindle"), 0), "%"),
+            (N_("Torque"), _num(_extra(axis, "torque_nm"), 2), "Nm"),
+            (N_("Active measuring system"), "1", ""),
+            (N_("Current gear stage"), "1", ""),
+            (N_("Referenced status"), "1" if axis.referenced else "0", "bits"),
         ]
     unit = "deg" if axis.kind == "rotary" else "mm"
     rapid = status.channel.modal.gcodes.get(1, "") == "G0" if status.channel.modal.gcodes else False
@@ -100,24 +102,24 @@ def axis_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
     mode = _extra(axis, "controller_mode")
     referenced_bits = (1 if axis.referenced else 0) | (0 if axis.referenced else 2)
     return [
-        ("Following error", _num(axis.following_error), unit),
-        ("System deviation (control error)", _num(_extra(axis, "control_deviation_mm")), unit),
-        ("Contour deviation", _num(_extra(axis, "contour_deviation_mm")), unit),
-        ("Servo gain factor (calculated)", _num(_extra(axis, "kv_calculated")), "(m/min)/mm"),
-        ("Active measuring system", "1", ""),
-        ("Position actual value MS1 (MCS)", _num(_extra(axis, "position_actual_mm")
+        (N_("Following error"), _num(axis.following_error), unit),
+        (N_("System deviation (control error)"), _num(_extra(axis, "control_deviation_mm")), unit),
+        (N_("Contour deviation"), _num(_extra(axis, "contour_deviation_mm")), unit),
+        (N_("Servo gain factor (calculated)"), _num(_extra(axis, "kv_calculated")), "(m/min)/mm"),
+        (N_("Active measuring system"), "1", ""),
+        (N_("Position actual value MS1 (MCS)"), _num(_extra(axis, "position_actual_mm")
                                                  if "position_actual_mm" in axis.extra else axis.position_mcs), unit),
-        ("Position setpoint", _num(axis.setpoint_mcs), unit),
-        ("Velocity actual value", _num(axis.velocity, 1), f"{unit}/min"),
-        ("Speed setpoint", _num(_extra(axis, "speed_setpoint_pct"), 2), "%"),
-        ("Speed actual value", _num(_extra(axis, "speed_actual_pct"), 2), "%"),
-        ("Override", _num(override, 0), "%"),
-        ("Active servo parameter set", _num(_extra(axis, "servo_parameter_set"), 0), ""),
-        ("Controller mode", CONTROLLER_MODES.get(int(mode), str(mode)) if mode is not None else MISSING, ""),
-        ("Referenced status", f"{referenced_bits}", "bits"),
-        ("Exact stop coarse / fine", f"{_yes(bool(_extra(axis, 'exact_stop_coarse') or 0))} / "
+        (N_("Position setpoint"), _num(axis.setpoint_mcs), unit),
+        (N_("Velocity actual value"), _num(axis.velocity, 1), f"{unit}/min"),
+        (N_("Speed setpoint"), _num(_extra(axis, "speed_setpoint_pct"), 2), "%"),
+        (N_("Speed actual value"), _num(_extra(axis, "speed_actual_pct"), 2), "%"),
+        (N_("Override"), _num(override, 0), "%"),
+        (N_("Active servo parameter set"), _num(_extra(axis, "servo_parameter_set"), 0), ""),
+        (N_("Controller mode"), CONTROLLER_MODES.get(int(mode), str(mode)) if mode is not None else MISSING, ""),
+        (N_("Referenced status"), f"{referenced_bits}", "bits"),
+        (N_("Exact stop coarse / fine"), f"{_yes(bool(_extra(axis, 'exact_stop_coarse') or 0))} / "
                                      f"{_yes(bool(_extra(axis, 'exact_stop_fine') or 0))}", ""),
-        ("Clamping active", _yes(bool(_extra(axis, "clamped") or 0)), ""),
+        (N_("Clamping active"), _yes(bool(_extra(axis, "clamped") or 0)), ""),
     ]
 
 
@@ -137,36 +139,37 @@ def drive_rows(status: NckStatus, axis: AxisStatus) -> list[Row]:
     # signals, not the SIMODRIVE 611D terminals (64/63/48/112) of the older manuals.
     # The shared manuals describe only the 611D screen; these names are our choice.
     return [
-        ("ON / OFF1 (r0898.0)", _yes(ready), ""),
-        ("No coast down, OFF2 (r0898.1)", "yes", ""),
-        ("No fast stop, OFF3 (r0898.2)", _yes(ready), ""),
-        ("Enable operation (r0898.3)", _yes(ready), ""),
-        ("Infeed ready, DC link charged (p0864)", "yes", ""),
-        ("Ready for switching on (r0899.0)", "yes", ""),
-        ("Operation enabled (r0899.2)", _yes(ready), ""),
-        ("Pulses enabled (r0899.11)", _yes(ready), ""),
-        ("PLC pulse disable (DBX21.7)", "no", ""),
-        ("Pulses enabled to the PLC (DBX93.7)", _yes(ready), ""),
-        ("Drive ready (DBX93.5)", _yes(ready), ""),
-        ("DC link voltage, nominal (r0070)", _num(DC_LINK_NOMINAL_V, 0), "V"),
-        ("Speed setpoint (r0060)", _num(setpoint, 1), "rpm"),
-        ("Speed actual value (r0063)", _num(actual, 1), "rpm"),
-        ("Smoothed actual current", _num(current, 1), "%"),
-        ("Motor temperature (r0035)", _num(temperature, 1), "°C"),
-        ("Warning: motor temperature", _yes(temperature is not None and temperature > MOTOR_TEMP_WARN_C), ""),
-        ("Warning: power unit at I²t limit", _yes(current is not None and current > 100.0), ""),
-        ("Drive data set, selected / active (r0051)", "1 / 1", ""),
-        ("Operating mode", "main spindle drive" if axis.kind == "spindle" else "feed drive", ""),
+        (N_("ON / OFF1 (r0898.0)"), _yes(ready), ""),
+        (N_("No coast down, OFF2 (r0898.1)"), N_("yes"), ""),
+        (N_("No fast stop, OFF3 (r0898.2)"), _yes(ready), ""),
+        (N_("Enable operation (r0898.3)"), _yes(ready), ""),
+        (N_("Infeed ready, DC link charged (p0864)"), N_("yes"), ""),
+        (N_("Ready for switching on (r0899.0)"), N_("yes"), ""),
+        (N_("Operation enabled (r0899.2)"), _yes(ready), ""),
+        (N_("Pulses enabled (r0899.11)"), _yes(ready), ""),
+        (N_("PLC pulse disable (DBX21.7)"), N_("no"), ""),
+        (N_("Pulses enabled to the PLC (DBX93.7)"), _yes(ready), ""),
+        (N_("Drive ready (DBX93.5)"), _yes(ready), ""),
+        (N_("DC link voltage, nominal (r0070)"), _num(DC_LINK_NOMINAL_V, 0), "V"),
+        (N_("Speed setpoint (r0060)"), _num(setpoint, 1), "rpm"),
+        (N_("Speed actual value (r0063)"), _num(actual, 1), "rpm"),
+        (N_("Smoothed actual current"), _num(current, 1), "%"),
+        (N_("Motor temperature (r0035)"), _num(temperature, 1), "°C"),
+        (N_("Warning: motor temperature"), _yes(temperature is not None and temperature > MOTOR_TEMP_WARN_C), ""),
+        (N_("Warning: power unit at I²t limit"), _yes(current is not None and current > 100.0), ""),
+        (N_("Drive data set, selected / active (r0051)"), "1 / 1", ""),
+        (N_("Operating mode"), N_("main spindle drive") if axis.kind == "spindle" else N_("feed drive"), ""),
     ]
 
 
 def rows_text(title: str, rows: list[Row]) -> Text:
-    """A ``Name | Value | Unit`` table."""
+    """A ``Name | Value | Unit`` table; names and word values (yes, no …) in the panel's language."""
     text = Text(no_wrap=True, end="")
     text.append(f" {title}\n", style="bold")
-    text.append(f" {'Name':<48}{'Value':>22}  Unit\n", style="bold")
-    for name, value, unit in rows:
-        text.append(f" {name:<48}")
+    text.append(f" {_('Name'):<48}{_('Value'):>22}  {_('Unit')}\n", style="bold")
+    for name, english_value, unit in rows:
+        value = " / ".join(_(part) for part in english_value.split(" / "))
+        text.append(f" {_(name):<48}")
         text.append(" " * max(22 - len(value), 0))
         text.append(value, style="bold" if value != MISSING else "dim")
         text.append(f"  {unit}\n")
@@ -180,14 +183,14 @@ def utilisation_rows(meter: UtilisationMeter, ipo_cycle_s: float, buffer: tuple[
     figures = meter.figures(ipo_cycle_s)
     fill, size = buffer
     return [
-        ("IPO cycle", _num(ipo_cycle_s * 1000.0, 1), "ms"),
-        ("Compute time per IPO cycle (mean)", _num(figures["cycle_compute_us"], 1), "µs"),
-        ("Compute time per IPO cycle (worst tick)", _num(figures["cycle_compute_max_us"], 1), "µs"),
-        ("IPO cycle load", _num(figures["ipo_load_pct"], 2), "%"),
-        ("Interpreter blocks per second (wall clock)", _num(figures["blocks_per_s"], 1), "1/s"),
-        ("Interpreter blocks per second (control time)", _num(figures["blocks_per_sim_s"], 1), "1/s"),
-        ("Block buffer fill", f"{fill} / {size}", "blocks"),
-        ("IPO cycles measured", _num(figures["cycles_measured"], 0), ""),
-        ("IPO cycles since power on", str(cycles_total), ""),
-        ("Blocks interpreted since power on", str(blocks_total), ""),
+        (N_("IPO cycle"), _num(ipo_cycle_s * 1000.0, 1), "ms"),
+        (N_("Compute time per IPO cycle (mean)"), _num(figures["cycle_compute_us"], 1), "µs"),
+        (N_("Compute time per IPO cycle (worst tick)"), _num(figures["cycle_compute_max_us"], 1), "µs"),
+        (N_("IPO cycle load"), _num(figures["ipo_load_pct"], 2), "%"),
+        (N_("Interpreter blocks per second (wall clock)"), _num(figures["blocks_per_s"], 1), "1/s"),
+        (N_("Interpreter blocks per second (control time)"), _num(figures["blocks_per_sim_s"], 1), "1/s"),
+        (N_("Block buffer fill"), f"{fill} / {size}", "blocks"),
+        (N_("IPO cycles measured"), _num(figures["cycles_measured"], 0), ""),
+        (N_("IPO cycles since power on"), str(cycles_total), ""),
+        (N_("Blocks interpreted since power on"), str(blocks_total), ""),
     ]

@@ -13,8 +13,12 @@ from rich.text import Text
 
 from nck import MAX_SIGNALS, TraceRecorder, TraceSettings, available_signals, signal_unit, write_export
 
+from hmi.i18n import N_, _
+
 DURATIONS_S = (1.0, 2.0, 5.0, 10.0, 20.0, 60.0)
-TRIGGER_NAMES = {"now": "start now", "nc_start": "on NC START"}
+TRIGGER_NAMES = {"now": N_("start now"), "nc_start": N_("on NC START")}
+TRACE_STATES = (N_("idle"), N_("armed"), N_("recording"), N_("done"))
+"""The recorder's states as the settings line shows them (translated where shown)."""
 
 
 class TraceSession:
@@ -102,6 +106,8 @@ class TraceSession:
             text.append(f"{name:<28}", style="reverse" if index == self.slot else None)
         state = self.recorder.state if self.recorder is not None else "idle"
         samples = self.recorder.sample_count if self.recorder is not None else 0
-        text.append(f"\n Trigger: {TRIGGER_NAMES[self.trigger]}   Duration: {self.duration_s:g} s   "
-                    f"State: {state}   Samples: {samples} (one per IPO cycle)")
+        text.append("\n " + _("Trigger: {trigger}   Duration: {duration} s   State: {state}   Samples: {samples} "
+                               "(one per IPO cycle)").format(trigger=_(TRIGGER_NAMES[self.trigger]),
+                                                             duration=f"{self.duration_s:g}", state=_(state),
+                                                             samples=samples))
         return text

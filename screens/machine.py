@@ -39,6 +39,9 @@ from screens.machine_jog_touch import contact_line
 
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
 SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times", "simrec")
+PROGRAM_STATE_WORDS = {"aborted": N_("aborted"), "running": N_("running"), "stopped": N_("stopped"),
+                       "interrupted": N_("interrupted"), "waiting": N_("waiting")}
+"""The program state as the MDA window's title line names it (the header has the long form)."""
 PROGRAM_SELECTION_LEVEL = 6
 SEARCH_MODES = {
     "contour": "with calculation, contour",
@@ -169,7 +172,7 @@ class MachineScreen(AreaBase):
         if view == "progctl":
             pc = (lambda s: s.status.channel.program_control)
             return [
-                Softkey("progctl.sbl_type", f"Single block\n{self.hmi.single_block_type}",
+                Softkey("progctl.sbl_type", _("Single block") + f"\n{self.hmi.single_block_type}",
                         "toggle_sbl_type"),
                 Softkey("progctl.dry_run", "Dry run\nfeed", "toggle_control('dry_run')",
                         active=lambda s: bool(pc(s).get("dry_run"))),
@@ -289,7 +292,7 @@ class MachineScreen(AreaBase):
         from hmi.dialogs import ChoiceDialog
 
         active = self._skip_levels()
-        choices = [f"/{n}  {'on' if n in active else 'off'}" for n in range(10)]
+        choices = [f"/{n}  {_('on') if n in active else _('off')}" for n in range(10)]
 
         def toggle(choice: str | None) -> None:
             if choice is None:
@@ -299,7 +302,7 @@ class MachineScreen(AreaBase):
             levels.symmetric_difference_update({level})
             self.submit(cmd.SetProgramControl("skip_levels", frozenset(levels)))
 
-        self.app.push_screen(ChoiceDialog("Skip levels (Enter switches on/off)", choices), toggle)
+        self.app.push_screen(ChoiceDialog(_("Skip levels (Enter switches on/off)"), choices), toggle)
 
     def _skip_levels(self) -> frozenset[int]:
         if self.status is None:
@@ -356,7 +359,7 @@ class MachineScreen(AreaBase):
             if text is not None:  # the kernel reads the number and says what is wrong with it
                 self.submit(cmd.WriteData("$AC_REQUIRED_PARTS", text))
 
-        self.app.push_screen(ValueDialog("Required parts ($AC_REQUIRED_PARTS)", str(current)), write)
+        self.app.push_screen(ValueDialog(_("Required parts ($AC_REQUIRED_PARTS)"), str(current)), write)
 
     def action_clear_mda(self) -> None:
         """Delete the MDA blocks."""
@@ -419,7 +422,8 @@ class MachineScreen(AreaBase):
             show_text(self.query_one("#jog-info", Static), self._jog_text(status))
         elif view_id == "view-mda":
             show_text(self.query_one("#mda-title", Static), 
-                " " + _("MDA — type blocks, CYCLE START (Alt+G) runs them") + f"   {channel.program_state}")
+                " " + _("MDA — type blocks, CYCLE START (Alt+G) runs them")
+                + f"   {_(PROGRAM_STATE_WORDS.get(channel.program_state, channel.program_state))}")
             if self.show_basic_blocks:
                 self.query_one("#mda-basic", BasicBlockWindow).show(channel)
         elif view_id == "view-auto":

@@ -19,6 +19,8 @@ from textual.message import Message
 from textual.widget import Widget
 from textual.widgets import Input, Static
 
+from hmi.i18n import _
+
 
 @dataclass(frozen=True)
 class FieldSpec:
@@ -80,11 +82,15 @@ class ChoiceField(Static, can_focus=True):
             self._show()
 
     def _show(self) -> None:
-        self.update(Text(f"◂ {self.value} ▸"))
+        self.update(Text(f"◂ {_(self.value)} ▸"))
 
 
 class JogForm(Vertical):
-    """A titled window of labelled fields with a line of hints below."""
+    """A titled window of labelled fields with a line of hints below.
+
+    The title, the labels, the hint and the choices' values are English, as written in the
+    code; the window shows them in the panel's language (the choices keep their English value).
+    """
 
     DEFAULT_CSS = """
     JogForm { height: 1fr; background: $surface; }
@@ -106,10 +112,10 @@ class JogForm(Vertical):
 
     def compose(self) -> ComposeResult:
         """Title, one row per field, the info line and the hint."""
-        yield Static(f" {self.title}", classes="view-title", markup=False)
+        yield Static(f" {_(self.title)}", classes="view-title", markup=False)
         for spec in self.fields:
             with Horizontal(classes="jog-row"):
-                yield Static(spec.label, classes="jog-label", markup=False)
+                yield Static(_(spec.label), classes="jog-label", markup=False)
                 if spec.choices:
                     yield ChoiceField(spec.choices, spec.initial, id=self.field_id(spec.key))
                 else:
@@ -118,7 +124,7 @@ class JogForm(Vertical):
                     yield field
                 yield Static(spec.unit, classes="jog-unit", markup=False)
         yield Static("", classes="jog-info", id=f"{self.id}-info", markup=False)
-        yield Static(f" {self.hint}", classes="jog-info", markup=False)
+        yield Static(f" {_(self.hint)}", classes="jog-info", markup=False)
 
     def field_id(self, key: str) -> str:
         """The widget id of field ``key``."""

@@ -30,6 +30,7 @@ from nck.queries import (MachineSetupData, ReadData, edge_position, offset_for, 
                          z_surface)
 from nck.status import NckStatus
 
+from hmi.i18n import N_, _
 from hmi.softkeys import Softkey
 from screens.machine_jog_form import FieldSpec, JogForm
 from screens.machine_jog_points import APPROACHES, POINT_WINDOWS, PointWindows
@@ -44,16 +45,16 @@ WORKPIECE_WINDOWS = ("measwp", *POINT_WINDOWS)
 MEASURE_WINDOWS = (*WORKPIECE_WINDOWS, "meastool")
 """The views of the measuring windows."""
 
-WORKPIECE_FUNCTIONS = (("edge", "Edge /\nZ surface", "measwp"), ("corner", "Corner", "meascorner"),
-                       ("rotated", "Rotated\ncorner", "measrot"), ("circle", "Hole /\nspigot", "meascircle"))
+WORKPIECE_FUNCTIONS = (("edge", N_("Edge /\nZ surface"), "measwp"), ("corner", N_("Corner"), "meascorner"),
+                       ("rotated", N_("Rotated\ncorner"), "measrot"), ("circle", N_("Hole /\nspigot"), "meascircle"))
 """The vertical softkeys ⇧F1 … ⇧F4 of Measure workpiece: the measuring function (its window)."""
 
-REFERENCES = ("Z0 typed (WCS)", "reference block")
+REFERENCES = (N_("Z0 typed (WCS)"), N_("reference block"))
 """Where the surface touched for the tool length is known from."""
 
-TOOL_DATA = ("geometry", "wear")
+TOOL_DATA = (N_("geometry"), N_("wear"))
 
-TOOL_MEASURES = ("length", "radius")
+TOOL_MEASURES = (N_("length"), N_("radius"))
 """What Measure tool measures: the length (touch from above) or the radius (touch an X edge)."""
 
 
@@ -143,10 +144,10 @@ class MeasureWindows:
         axis = form.value("axis")
         setpoint = _number(form.value("setpoint"))
         if setpoint is None:
-            return "Setpoint: enter a number"
+            return _("Setpoint: enter a number")
         by_name = {a.name: a for a in status.axes}
         if axis not in by_name:
-            return f"{axis}: no such axis"
+            return _("{axis}: no such axis").format(axis=axis)
         modal = status.channel.modal
         found = touch_now(self.screen.ask, status)
         if isinstance(found, str):
@@ -163,33 +164,33 @@ class MeasureWindows:
         """The active tool's length from the tool's position now, or what is missing."""
         modal = status.channel.modal
         if modal.tool <= 0 or modal.edge <= 0:
-            return "No tool active: load one with T,S,M"
+            return _("No tool active: load one with T,S,M")
         by_name = {a.name: a for a in status.axes}
         if "Z" not in by_name:
-            return "No Z axis"
+            return _("No Z axis")
         z = by_name["Z"]
         form = self._form("meastool")
         if form.value("measure") == "radius":
             x0 = _number(form.value("x0"))
             if x0 is None or "X" not in by_name:
-                return "X0: enter a number"
+                return _("X0: enter a number")
             edge_mcs = x0 + self._translation_in_force("X", status)
             approach = 1 if form.value("approach") == "+" else -1
             radius = tool_radius(by_name["X"].position_mcs, approach, edge_mcs)
             if radius <= 0:
-                return (f"Radius {fixed(radius)}: the tool centre is not before the edge X0 in the "
-                        "approach direction — touch the edge, or check X0 and the direction")
+                return _("Radius {radius}: the tool centre is not before the edge X0 in the approach "
+                         "direction — touch the edge, or check X0 and the direction").format(radius=fixed(radius))
             return LengthPreview(modal.tool, modal.edge, edge_mcs, radius, radius=True)
         if form.value("reference") == REFERENCES[1]:
             setup = self.screen.ask(MachineSetupData())
             reference = getattr(setup, "reference", None)
             if reference is None:
-                return "No reference block in the machine set-up"
+                return _("No reference block in the machine set-up")
             surface = reference.top_z_mcs
         else:
             z0 = _number(form.value("z0"))
             if z0 is None:
-                return "Z0: enter a number"
+                return _("Z0: enter a number")
             # the surface's MCS is its WCS value Z0 plus the translations in force (from the
             # offsets themselves, independent of the tool whose length is being measured)
             surface = z0 + self._translation_in_force("Z", status)
@@ -207,16 +208,20 @@ class MeasureWindows:
             text.append(f" {preview}")
         elif isinstance(preview, EdgePreview):
             modal = status.channel.modal
-            text.append(f" Tool radius {fixed(modal.tool_radius_mm)}   length {fixed(modal.tool_length_mm)}\n")
-            text.append(f" Edge {preview.axis} (MCS) {fixed(preview.edge_mcs)}   → "
-                        f"{preview.axis} {fixed(preview.setpoint)} in the WCS: translation "
-                        f"{fixed(preview.translation)} (no other offset active)", style="bold")
+            text.append(" " + _("Tool radius {radius}   length {length}").format(
+                radius=fixed(modal.tool_radius_mm), length=fixed(modal.tool_length_mm)) + "\n")
+            text.append(" " + _("Edge {axis} (MCS) {edge}   → {axis} {setpoint} in the WCS: translation "
+                                "{translation} (no other offset active)").format(
+                axis=preview.axis, edge=fixed(preview.edge_mcs), setpoint=fixed(preview.setpoint),
+                translation=fixed(preview.translation)), style="bold")
         elif preview.radius:
-            text.append(f" T{preview.tool} D{preview.edge}   edge X (MCS) {fixed(preview.surface_mcs)}\n")
-            text.append(f" Radius = {fixed(preview.length)}", style="bold")
+            text.append(f" T{preview.tool} D{preview.edge}   " + _("edge X (MCS) {edge}").format(
+                edge=fixed(preview.surface_mcs)) + "\n")
+            text.append(" " + _("Radius = {radius}").format(radius=fixed(preview.length)), style="bold")
         else:
-            text.append(f" T{preview.tool} D{preview.edge}   surface Z (MCS) {fixed(preview.surface_mcs)}\n")
-            text.append(f" Length 1 = {fixed(preview.length)}", style="bold")
+            text.append(f" T{preview.tool} D{preview.edge}   " + _("surface Z (MCS) {surface}").format(
+                surface=fixed(preview.surface_mcs)) + "\n")
+            text.append(" " + _("Length 1 = {length}").format(length=fixed(preview.length)), style="bold")
         form.show_info(text)
 
     # -- writing ---------------------------------------------------------------------------
@@ -237,7 +242,7 @@ class MeasureWindows:
             point[preview.axis] = preview.edge_mcs
             if isinstance(self.screen.submit(cmd.SetActualValue(preview.axis, preview.setpoint,
                                                                 point_mcs=point)), cmd.Accepted):
-                say(f"Set WO: edge {preview.axis} = {fixed(preview.setpoint)}")
+                say(_("Set WO: edge {axis} = {setpoint}").format(axis=preview.axis, setpoint=fixed(preview.setpoint)))
             return
         length = self.length_preview(status)
         if isinstance(length, str):

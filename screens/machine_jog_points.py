@@ -30,6 +30,7 @@ from nck import commands as cmd, fixed
 from nck.queries import circle, corner, offset_for, rotated_corner
 from nck.status import NckStatus
 
+from hmi.i18n import N_, _
 from screens.machine_jog_form import FieldSpec, JogForm
 from screens.machine_jog_touch import Touch, touch_now
 
@@ -42,7 +43,7 @@ APPROACHES = ("+", "−")
 DIRECTIONS = {"+X": (1.0, 0.0), "−X": (-1.0, 0.0), "+Y": (0.0, 1.0), "−Y": (0.0, -1.0)}
 """Approach directions of a rotated corner's edges (roughly: the edge need not be parallel)."""
 
-CIRCLES = ("hole", "spigot")
+CIRCLES = (N_("hole"), N_("spigot"))
 
 POINTS_NEEDED = {"meascorner": (2, 2), "measrot": (3, 3), "meascircle": (3, 4)}
 """Points each window needs: (fewest, most)."""
@@ -83,7 +84,7 @@ class PointWindows:
 
     def compose(self) -> ComposeResult:
         """The three windows."""
-        hint = "Touch, ⇧F6 save point   ⇧F7 delete points   ⇧F5 Set WO   F10 back"
+        hint = N_("Touch, ⇧F6 save point   ⇧F7 delete points   ⇧F5 Set WO   F10 back")
         yield JogForm("Measure workpiece — right-angled corner (P1 on the X edge, P2 on the Y edge)", (
             FieldSpec("x_approach", "X edge approached in", choices=APPROACHES),
             FieldSpec("y_approach", "Y edge approached in", choices=APPROACHES),
@@ -114,14 +115,14 @@ class PointWindows:
         points = self.points[view]
         most = POINTS_NEEDED[view][1]
         if len(points) >= most:
-            say(f"{most} points saved: ⇧F5 Set WO, or ⇧F7 delete the points")
+            say(_("{count} points saved: ⇧F5 Set WO, or ⇧F7 delete the points").format(count=most))
             return
         found = touch_now(self.screen.ask, status, max((p.seq for p in points), default=0))
         if isinstance(found, str):
             say(found)
             return
         points.append(found)
-        say(f"P{len(points)} saved")
+        say(_("P{number} saved").format(number=len(points)))
 
     def delete_points(self, view: str) -> None:
         """⇧F7: forget the points of window ``view``."""
@@ -134,42 +135,43 @@ class PointWindows:
         form = self._form(view)
         x0, y0 = _number(form.value("x0")), _number(form.value("y0"))
         if x0 is None or y0 is None:
-            return "X0 / Y0: enter a number"
+            return _("X0 / Y0: enter a number")
         points = self.points[view]
         fewest = POINTS_NEEDED[view][0]
         if len(points) < fewest:
-            return f"Touch and save P{len(points) + 1} ({fewest} points needed)"
+            return _("Touch and save P{number} ({count} points needed)").format(number=len(points) + 1, count=fewest)
         radius = status.channel.modal.tool_radius_mm
         xy = [(p.position_mcs["X"], p.position_mcs["Y"]) for p in points]
         if view == "meascorner":
             x, y = corner(xy[0][0], _sign(form.value("x_approach")), xy[1][1], _sign(form.value("y_approach")),
                           radius)
-            return PointsResult(x, y, (x0, y0), None, "Corner")
+            return PointsResult(x, y, (x0, y0), None, _("Corner"))
         if view == "measrot":
             if xy[0] == xy[1]:
-                return "P1 and P2 are the same point: touch edge 1 at two places"
+                return _("P1 and P2 are the same point: touch edge 1 at two places")
             found = rotated_corner(xy[0], xy[1], DIRECTIONS[form.value("first")], xy[2],
                                    DIRECTIONS[form.value("third")], radius)
             return PointsResult(found.x_mm, found.y_mm, (x0, y0), found.angle_deg,
-                                f"Corner, edge 1 at {fixed(found.angle_deg)}°")
+                                _("Corner, edge 1 at {angle}°").format(angle=fixed(found.angle_deg)))
         hole = form.value("kind") == "hole"
         (ax, ay), (bx, by), (cx, cy) = xy[:3]
         if abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) < 1e-6:
-            return "P1, P2, P3 lie on a straight line: touch the wall at places around it"
+            return _("P1, P2, P3 lie on a straight line: touch the wall at places around it")
         found_circle = circle(xy, radius, hole)
         if found_circle.diameter_mm <= 0.0:
-            return "No spigot that size: touch it from outside (or choose hole)"
+            return _("No spigot that size: touch it from outside (or choose hole)")
         return PointsResult(found_circle.x_mm, found_circle.y_mm, (x0, y0), None,
-                            f"Centre of the {'hole' if hole else 'spigot'}, Ø {fixed(found_circle.diameter_mm)}")
+                            (_("Centre of the hole, Ø {diameter}") if hole else _("Centre of the spigot, Ø {diameter}"))
+                            .format(diameter=fixed(found_circle.diameter_mm)))
 
     def show(self, view: str, status: NckStatus) -> None:
         """Redraw the preview of window ``view``: the points and what they measured."""
         text = Text()
         modal = status.channel.modal
-        text.append(f" Tool radius {fixed(modal.tool_radius_mm)}  ")
+        text.append(" " + _("Tool radius {radius}").format(radius=fixed(modal.tool_radius_mm)) + "  ")
         for number, point in enumerate(self.points[view], start=1):
             text.append(f" P{number} X {fixed(point.position_mcs['X'])} Y {fixed(point.position_mcs['Y'])}"
-                        f"{' (probe)' if point.probe else ''}")
+                        + (" " + _("(probe)") if point.probe else ""))
         text.append("\n")
         found = self.result(view, status)
         if isinstance(found, str):
@@ -178,11 +180,11 @@ class PointWindows:
             tx, ty = offset_for(found.x_mcs, found.setpoint[0]), offset_for(found.y_mcs, found.setpoint[1])
             text.append(f" {found.what}: X (MCS) {fixed(found.x_mcs)}  Y (MCS) {fixed(found.y_mcs)}\n", style="bold")
             if found.angle_deg is None:
-                text.append(f" → X {fixed(found.setpoint[0])} Y {fixed(found.setpoint[1])} in the WCS: translation "
-                            f"X {fixed(tx)} Y {fixed(ty)} (no other offset active)", style="bold")
+                text.append(" " + _("→ X {x} Y {y} in the WCS: translation X {tx} Y {ty} (no other offset active)").format(
+                    x=fixed(found.setpoint[0]), y=fixed(found.setpoint[1]), tx=fixed(tx), ty=fixed(ty)), style="bold")
             else:
-                text.append(f" → rotation Z {fixed(found.angle_deg)}°, corner X {fixed(found.setpoint[0])} "
-                            f"Y {fixed(found.setpoint[1])} in the WCS (into G54 …, not G500)", style="bold")
+                text.append(" " + _("→ rotation Z {angle}°, corner X {x} Y {y} in the WCS (into G54 …, not G500)").format(
+                    angle=fixed(found.angle_deg), x=fixed(found.setpoint[0]), y=fixed(found.setpoint[1])), style="bold")
         self._form(view).show_info(text)
 
     def set_wo(self, view: str, say: Callable[[str], None]) -> None:
@@ -202,5 +204,5 @@ class PointWindows:
         for axis, value in zip(("X", "Y"), found.setpoint):
             if not isinstance(self.screen.submit(cmd.SetActualValue(axis, value, point_mcs=point)), cmd.Accepted):
                 return
-        say(f"Set WO: X {fixed(found.setpoint[0])} Y {fixed(found.setpoint[1])}"
-            + (f", rotation {fixed(found.angle_deg)}°" if found.angle_deg is not None else ""))
+        say(_("Set WO: X {x} Y {y}").format(x=fixed(found.setpoint[0]), y=fixed(found.setpoint[1]))
+            + (", " + _("rotation {angle}°").format(angle=fixed(found.angle_deg)) if found.angle_deg is not None else ""))

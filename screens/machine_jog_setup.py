@@ -36,6 +36,7 @@ from nck import fixed, trimmed
 from nck.queries import ManualSettingsData, ReadData
 from nck.status import NckStatus
 
+from hmi.i18n import N_, _
 from hmi.manual_job import ManualJob
 from hmi.softkeys import Softkey, view_softkey
 from screens.machine_jog_blocks import (
@@ -93,13 +94,13 @@ class JogWindows:
             FieldSpec("unit", "Unit of measurement", choices=tuple(UNITS)),
         ), "↑/↓ field   ←/→ choice   CYCLE START (Alt+G) runs it   F10 back", id="view-tsm")
         yield JogForm("Set WO — actual value in the active work offset", tuple(
-            FieldSpec(axis, f"{axis}  new actual value (WCS)", "mm") for axis in self.axes()
+            FieldSpec(axis, _("{axis}  new actual value (WCS)").format(axis=axis), "mm") for axis in self.axes()
         ), "⇧F1… axis = 0   ⇧F5 Set WO (values typed)   ⇧F6 delete active WO   F10 back", id="view-setwo")
         yield JogForm("Position — traverse one axis to a position (WCS)", (
             FieldSpec("axis", "Axis", choices=self.axes()),
             FieldSpec("target", "Position", "mm"),
             FieldSpec("feed", "Feed F", "mm/min", initial="1000"),
-            FieldSpec("rapid", "Traverse", choices=("feed", "rapid")),
+            FieldSpec("rapid", "Traverse", choices=(N_("feed"), N_("rapid"))),
         ), "↑/↓ field   ←/→ choice   CYCLE START (Alt+G) traverses   F10 back", id="view-position")
         yield JogForm("Settings for manual mode", (
             FieldSpec("jog_feed", "JOG feed (SD41110)", "mm/min"),
@@ -174,11 +175,11 @@ class JogWindows:
         form.focus_first()
         modal = status.channel.modal
         if view == "tsm":
-            tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else "no tool")
-            form.show_info(Text(
-                f" Active: {tool} D{modal.edge}   S {trimmed(modal.spindle_speed_rpm, 3)} rev/min "
-                f"{modal.spindle_state}   {modal.gcodes.get(8, 'G500')}   "
-                f"{'inch' if modal.gcodes.get(13) == 'G70' else 'mm'}   {self._job_state(status)}"))
+            tool = modal.tool_name or (f"T{modal.tool}" if modal.tool else _("no tool"))
+            form.show_info(Text(" " + _("Active: {tool} D{edge}   S {speed} rev/min {spindle}   {offset}   {unit}").format(
+                tool=tool, edge=modal.edge, speed=trimmed(modal.spindle_speed_rpm, 3), spindle=modal.spindle_state,
+                offset=modal.gcodes.get(8, "G500"), unit="inch" if modal.gcodes.get(13) == "G70" else "mm")
+                + f"   {self._job_state(status)}"))
         elif view == "setwo":
             form.show_info(self._setwo_info(status))
         elif view in MEASURE_WINDOWS:
@@ -188,24 +189,26 @@ class JogWindows:
         elif view == "settings":
             data = self._setting_data()
             manual = self.screen.ask(ManualSettingsData())
-            form.show_info(Text(f" Stored: JOG feed {trimmed(data('SD41110'), 3)} mm/min "
-                                f"(0 = MD32020)   variable increment {trimmed(data('SD41010'), 3)} mm"
-                                + (f"\n RP {trimmed(manual.retraction_plane_mm, 3)} mm   SC "
-                                   f"{trimmed(manual.safety_distance_mm, 3)} mm   measuring feed "
-                                   f"{trimmed(manual.measuring_feed_mm_min, 3)} mm/min" if manual else "")))
+            stored = _("Stored: JOG feed {feed} mm/min (0 = MD32020)   variable increment {increment} mm").format(
+                feed=trimmed(data("SD41110"), 3), increment=trimmed(data("SD41010"), 3))
+            if manual:
+                stored += "\n " + _("RP {plane} mm   SC {distance} mm   measuring feed {feed} mm/min").format(
+                    plane=trimmed(manual.retraction_plane_mm, 3), distance=trimmed(manual.safety_distance_mm, 3),
+                    feed=trimmed(manual.measuring_feed_mm_min, 3))
+            form.show_info(Text(f" {stored}"))
 
     def _job_state(self, status: NckStatus) -> str:
         if self.job.running:
-            return f"running as MDA job: {self.job.blocks.strip().replace(chr(10), ' · ')}"
+            return _("running as MDA job: {blocks}").format(blocks=self.job.blocks.strip().replace(chr(10), " · "))
         return ""
 
     def _setwo_info(self, status: NckStatus) -> Text:
         active = status.channel.modal.gcodes.get(8, "G500")
         text = Text()
-        text.append(f" Active work offset: {active}", style="bold")
+        text.append(" " + _("Active work offset: {offset}").format(offset=active), style="bold")
         if active == "G500":
-            text.append("   (Set WO writes the system frame for PRESET and scratching)")
-        text.append("\n Actual values WCS:")
+            text.append("   " + _("(Set WO writes the system frame for PRESET and scratching)"))
+        text.append("\n " + _("Actual values WCS:"))
         for axis in status.axes:
             if axis.kind != "spindle":
                 text.append(f"  {axis.name} {fixed(axis.position_wcs)}")
@@ -254,8 +257,8 @@ class JogWindows:
     def _probing_blocks(self, form: JogForm) -> str:
         status, manual = self.screen.status, self.screen.ask(ManualSettingsData())
         if status is None or manual is None or not active_tool_is_probe(self.screen.ask, status):
-            raise EntryError("CYCLE START measures with a 3D probe (tool type 710); "
-                             "with a cutter jog to the surface")
+            raise EntryError(_("CYCLE START measures with a 3D probe (tool type 710); "
+                               "with a cutter jog to the surface"))
         return probing_blocks(form.value("axis"), 1 if form.value("approach") == "+" else -1,
                               manual.retraction_plane_mm, manual.safety_distance_mm,
                               manual.measuring_feed_mm_min)
@@ -286,10 +289,10 @@ class JogWindows:
             try:
                 wanted[axis] = float(text)
             except ValueError:
-                self.screen.say(f"{axis}: enter a number")
+                self.screen.say(_("{axis}: enter a number").format(axis=axis))
                 return
         if not wanted:
-            self.screen.say("Set WO: enter the new actual value of an axis")
+            self.screen.say(_("Set WO: enter the new actual value of an axis"))
             return
         for axis, value in wanted.items():
             if isinstance(self.screen.submit(cmd.SetActualValue(axis, value)), cmd.Rejected):
@@ -345,7 +348,7 @@ class JogWindows:
                                             for name, value in values.items()})
             if isinstance(self.screen.submit(cmd.WriteManualSettings(changed)), cmd.Rejected):
                 return
-        self.screen.say("Settings saved")
+        self.screen.say(_("Settings saved"))
 
     @staticmethod
     def _setting_number(form: JogForm, key: str, positive: bool) -> float | None:

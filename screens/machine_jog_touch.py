@@ -16,6 +16,8 @@ from nck import fixed
 from nck.queries import ContactEvents, ProbeDeflected, ReadData
 from nck.status import NckStatus
 
+from hmi.i18n import N_, _
+
 PROBE_TOOL_TYPE = 710
 """Tool type of a 3D probe (milling), $TC_DP1."""
 
@@ -50,13 +52,13 @@ def touch_now(ask: Callable[[object], Any], status: NckStatus, after_seq: int = 
     switched = [event for event in ask(ContactEvents(after_seq))
                 if event.kind == "probe" and (event.tool, event.edge) == (modal.tool, modal.edge)]
     if not switched:
-        return "The probe has not switched: jog it against the surface"
+        return _("The probe has not switched: jog it against the surface")
     newest = switched[-1]
     return Touch({name: float(newest.position_mcs.get(name, value)) for name, value in axes.items()},
                  newest.seq, probe=True)
 
 
-CONTACT_WORDS = {"probe": "probe switched", "scratch": "scratching", "crash": "crash"}
+CONTACT_WORDS = {"probe": N_("probe switched"), "scratch": N_("scratching"), "crash": N_("crash")}
 
 
 def contact_line(ask: Callable[[object], Any]) -> str:
@@ -67,6 +69,7 @@ def contact_line(ask: Callable[[object], Any]) -> str:
         return ""
     newest = events[-1]
     where = "  ".join(f"{axis} {fixed(value)}" for axis, value in newest.position_mcs.items())
-    solid = "blank" if newest.solid == "blank" else "reference block"
-    line = f"Last contact: {CONTACT_WORDS.get(newest.kind, newest.kind)} on the {solid} at {where} (MCS)"
-    return line + ("   — probe deflected" if ask(ProbeDeflected()) else "")
+    what = _(CONTACT_WORDS.get(newest.kind, newest.kind))
+    line = (_("Last contact: {what} on the blank at {where} (MCS)") if newest.solid == "blank"
+            else _("Last contact: {what} on the reference block at {where} (MCS)")).format(what=what, where=where)
+    return line + ("   — " + _("probe deflected") if ask(ProbeDeflected()) else "")

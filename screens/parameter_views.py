@@ -33,15 +33,15 @@ TOOL_TYPES = {
 TOOL_GEOMETRY = ((1, N_("Type"), 6), (3, N_("Length 1"), 10), (4, N_("Length 2"), 10), (5, N_("Length 3"), 10),
                  (6, N_("Radius"), 10), (2, N_("Pos"), 4))
 TOOL_WEAR = ((12, N_("ΔLength 1"), 11), (13, N_("ΔLength 2"), 11), (14, N_("ΔLength 3"), 11), (15, N_("ΔRadius"), 11))
-FRAME_COMPONENTS = (("TR", "Translation"), ("FI", "Fine"), ("RT", "Rotation"), ("SC", "Scale"),
-                    ("MI", "Mirror"))
+FRAME_COMPONENTS = (("TR", N_("Translation")), ("FI", N_("Fine")), ("RT", N_("Rotation")), ("SC", N_("Scale")),
+                    ("MI", N_("Mirror")))
 SETTING_DATA = (
     ("JOG", "SD41110", None), ("JOG", "SD41010", None), ("JOG", "SD41200", None),
-    ("Spindle", "SD43210", "spindle"), ("Spindle", "SD43220", "spindle"),
-    ("Spindle", "SD43230", "spindle"),
-    ("Work area", "SD43400", "linear"), ("Work area", "SD43420", "linear"),
-    ("Work area", "SD43410", "linear"), ("Work area", "SD43430", "linear"),
-    ("Dry run", "SD42100", None), ("Dry run", "SD42101", None),
+    (N_("Spindle"), "SD43210", "spindle"), (N_("Spindle"), "SD43220", "spindle"),
+    (N_("Spindle"), "SD43230", "spindle"),
+    (N_("Work area"), "SD43400", "linear"), (N_("Work area"), "SD43420", "linear"),
+    (N_("Work area"), "SD43410", "linear"), (N_("Work area"), "SD43430", "linear"),
+    (N_("Dry run"), "SD42100", None), (N_("Dry run"), "SD42101", None),
 )
 
 
@@ -85,8 +85,14 @@ def tool_table(view: DataView, status: NckStatus | None, levels: LevelOf, wear: 
         title = N_("Tool wear  (ΔLength / ΔRadius are added to the geometry values)")
     else:
         title = N_("Tool list  (lengths and radius in mm; Pos = cutting edge position)")
-    note = "↑↓←→ select   Enter edit" + ("" if wear else "   ▶ active tool/edge")
+    note = _("↑↓←→ select   Enter edit") + ("" if wear else "   " + _("▶ active tool/edge"))
     return DataTable(title, columns, rows, note)
+
+
+def _component_word(title: str) -> str:
+    """A frame component's name inside a sentence: lower case in English, the noun as translated."""
+    translated = _(title)
+    return title.lower() if translated == title else translated
 
 
 def frame_names(view: DataView) -> list[str]:
@@ -125,7 +131,7 @@ def overview_table(view: DataView, status: NckStatus | None, levels: LevelOf) ->
     rows = []
     for frame in ["BASE"] + frame_names(view):
         offset = _offset(view, frame)
-        label = "Base frame" if frame == "BASE" else frame
+        label = _("Base frame") if frame == "BASE" else frame
         row = [Cell("▶" if frame == active else ""), Cell(label)]
         for axis in axes:
             value = float(offset.trans.get(axis, 0.0))
@@ -142,7 +148,7 @@ def overview_table(view: DataView, status: NckStatus | None, levels: LevelOf) ->
 
 def details_table(view: DataView, frame: str, levels: LevelOf) -> DataTable:
     """One frame in full: translation, fine offset, rotation, scale and mirror per axis."""
-    label = "Base frame" if frame == "BASE" else frame
+    label = _("Base frame") if frame == "BASE" else frame
     offset = _offset(view, frame)
     columns = [Column("Axis", 6, "<"), Column("Translation", 12), Column("Fine", 10),
                Column("Rotation [°]", 13), Column("Scale", 9), Column("Mirror", 7)]
@@ -152,7 +158,7 @@ def details_table(view: DataView, frame: str, levels: LevelOf) -> DataTable:
         for comp, title in FRAME_COMPONENTS:
             if comp == "MI":
                 value: Any = bool(offset.mirror.get(axis, False))
-                row.append(Cell("yes" if value else "no", frame_var(frame, axis, comp),
+                row.append(Cell(_("yes") if value else _("no"), frame_var(frame, axis, comp),
                                 "1" if value else "0", levels(frame_var(frame, axis, comp)),
                                 f"{label} {axis} mirror: 1 on, 0 off"))
                 continue
@@ -160,9 +166,9 @@ def details_table(view: DataView, frame: str, levels: LevelOf) -> DataTable:
             value = float(table.get(axis, 1.0 if comp == "SC" else 0.0))
             places = 5 if comp == "SC" else 3
             row.append(_datum(frame_var(frame, axis, comp), fixed(value, places), value, levels,
-                              f"{label} {axis} {title.lower()}"))
+                              f"{label} {axis} {_component_word(title)}"))
         rows.append(row)
-    return DataTable(f"Work offset {label} — details", columns, rows,
+    return DataTable(_("Work offset {frame} — details").format(frame=label), columns, rows,
                      "Enter edit   Details again / F10: back to the overview")
 
 
@@ -174,21 +180,22 @@ def active_chain_table(view: DataView, status: NckStatus | None) -> DataTable:
     active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
     rows = []
     setframe = view.data.setframe  # the system frame for PRESET and scratching (Set WO under G500)
-    rows.append([Cell("PRESET / scratching ($P_SETFR)")] + [Cell(fixed(setframe.trans.get(a, 0.0))) for a in axes])
+    rows.append([Cell(_("PRESET / scratching ($P_SETFR)"))] + [Cell(fixed(setframe.trans.get(a, 0.0))) for a in axes])
     base = view.data.base_frame
-    rows.append([Cell("Base frame")] + [Cell(fixed(base.trans.get(a, 0.0))) for a in axes])
+    rows.append([Cell(_("Base frame"))] + [Cell(fixed(base.trans.get(a, 0.0))) for a in axes])
     settable = view.data.settable_frames.get(active) if active != "G500" else None
-    label = f"Settable frame {active}" + ("" if settable is not None else " (zero)")
+    label = (_("Settable frame {frame}") if settable is not None else _("Settable frame {frame} (zero)")).format(
+        frame=active)
     rows.append([Cell(label)] + [
         Cell(fixed((settable.trans.get(a, 0.0) + settable.fine.get(a, 0.0)) if settable else 0.0))
         for a in axes])
-    rows.append([Cell("Programmable frame")] + [Cell("(program)") for _axis in axes])
+    rows.append([Cell(_("Programmable frame"))] + [Cell(_("(program)")) for _axis in axes])
     if status is not None:
         by_name = {a.name: a for a in status.axes}
-        rows.append([Cell("Total (MCS − WCS, with tool)")] + [
+        rows.append([Cell(_("Total (MCS − WCS, with tool)"))] + [
             Cell(fixed(by_name[a].position_mcs - by_name[a].position_wcs) if a in by_name else "")
             for a in axes])
-    return DataTable(f"Active work offset chain  (active settable frame: {active})", columns, rows,
+    return DataTable(_("Active work offset chain  (active settable frame: {frame})").format(frame=active), columns, rows,
                      "Rotations, scale and mirror: see Overview / Details")
 
 
@@ -262,7 +269,7 @@ def setting_table(view: DataView, levels: LevelOf) -> DataTable:
             name = f"{key}[{axis}]" if axis else key
             value = store.value(name)
             if definition.type == "bool":
-                shown = "on" if value else "off"
+                shown = _("on") if value else _("off")
             elif definition.type == "real":
                 shown = fixed(value)
             else:
@@ -273,7 +280,7 @@ def setting_table(view: DataView, levels: LevelOf) -> DataTable:
             unit = store.unit(name)
             title = data_text("md", definition.number, "title", definition.title)
             hint = f"{definition.identifier}: {title} ({unit or definition.type}{limits})"
-            rows.append([Cell(group), Cell(key), Cell(definition.name), Cell(axis or ""),
+            rows.append([Cell(_(group)), Cell(key), Cell(definition.name), Cell(axis or ""),
                          _datum(name, shown, value, levels, hint), Cell(unit)])
     return DataTable("Setting data  (take effect at once)", columns, rows,
                      "Enter edit   Work area limits act when their enable is on (G25/G26, WALIMON)")

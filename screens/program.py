@@ -41,6 +41,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
+from hmi.i18n import _
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.program_files import ProgramFiles, decode_program
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -539,7 +540,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             return
         title = self.query_one("#prog-title", Static)
         if self.program is None:
-            title.update("No program open — Program manager (Alt+N): select a program and press Open")
+            title.update(_("No program open — Program manager (Alt+N): select a program and press Open"))
             return
         flags = []
         if self._dirty:  # cheap on every cursor move; is_modified() compares the text

@@ -12,10 +12,26 @@ from typing import Any
 
 from nck.queries import setup_fields
 
+from hmi.i18n import N_, _
 from hmi.widgets.data_table import Cell, Column, DataTable
 
-HIDDEN_TEXT = "hidden"
-TITLE = "Machine set-up: what is clamped (positions in the MCS)"
+HIDDEN_TEXT = N_("hidden")
+TITLE = N_("Machine set-up: what is clamped (positions in the MCS)")
+LABEL_PARTS = (
+    N_("Blank"), N_("Reference block"), N_("shape"), N_("Blank hidden from the trainee"),
+    N_("Position X (smallest corner)"), N_("Position Y (smallest corner)"), N_("Position Z (smallest corner)"),
+    N_("Size X"), N_("Size Y"), N_("Size Z"), N_("Rotation about Z (about its centre)"),
+    N_("Position X (lower face centre)"), N_("Position Y (lower face centre)"), N_("Position Z (lower face centre)"),
+    N_("Diameter"), N_("Length"),
+)
+"""The pieces of the fields' labels ``nck setup`` gives (``Blank: Size X``), translated where shown."""
+FIELD_VALUES = (N_("box"), N_("cylinder"), N_("none"), N_("yes"), N_("no"))
+"""The word values of the fields (shapes, the hidden switch): shown translated, typed in English."""
+
+
+def field_label(english: str) -> str:
+    """A field's label (``Blank: Size X``) in the panel's language, piece by piece."""
+    return ": ".join(_(part) for part in english.split(": "))
 
 
 def workpiece_table(setup: Any, level: int, needed_level: int) -> DataTable:
@@ -26,12 +42,13 @@ def workpiece_table(setup: Any, level: int, needed_level: int) -> DataTable:
     rows = []
     for field in setup_fields(setup):
         secret = concealed and field.position
-        text = HIDDEN_TEXT if secret else field.text
-        hint = (f"{field.label}: " + ("box, cylinder or none" if field.name == "blank.shape" else
-                                      "box or none" if field.name == "reference.shape" else
-                                      "yes or no" if field.name == "hidden" else f"{field.unit}, MCS"))
-        rows.append([Cell(field.label), Cell(text, field.name, "" if secret else field.text, needed_level, hint),
+        text = _(HIDDEN_TEXT) if secret else _(field.text)
+        label = field_label(field.label)
+        hint = (f"{label}: " + (_("box, cylinder or none") if field.name == "blank.shape" else
+                                _("box or none") if field.name == "reference.shape" else
+                                _("yes or no") if field.name == "hidden" else f"{field.unit}, MCS"))
+        rows.append([Cell(label), Cell(text, field.name, "" if secret else field.text, needed_level, hint),
                      Cell("" if secret else field.unit), Cell(field.name)])
-    note = (f"Enter edit (level {needed_level})   the blank's position is hidden from the trainee"
-            if concealed else f"Enter edit (level {needed_level})   ⇧F1 hides / shows the blank's position")
+    note = (_("Enter edit (level {level})   the blank's position is hidden from the trainee") if concealed
+            else _("Enter edit (level {level})   ⇧F1 hides / shows the blank's position")).format(level=needed_level)
     return DataTable(TITLE, columns, rows, note)

@@ -9,7 +9,7 @@ from textual.widgets import Static
 
 from nck.status import AlarmEntry, BlockView, ChannelStatus
 
-from hmi.i18n import _
+from hmi.i18n import N_, _
 from hmi.program_lines import ProgramLines
 
 BEFORE = 3
@@ -31,11 +31,11 @@ def block_lines(blocks: tuple[BlockView, ...], current: BlockView | None, height
     return _window_text(shown, index - start if current is not None else None)
 
 
-def _window_text(shown: Sequence[BlockView], highlight: int | None, empty: str = "(no program)") -> Text:
+def _window_text(shown: Sequence[BlockView], highlight: int | None, empty: str = N_("(no program)")) -> Text:
     """The block window's text: ``shown`` with the block at ``highlight`` marked."""
     text = Text()
     if not shown:
-        text.append(f" {empty}\n", style="dim")
+        text.append(f" {_(empty)}\n", style="dim")
         return text
     for i, block in enumerate(shown):
         if i == highlight:

@@ -16,6 +16,7 @@ from textual.widget import Widget
 
 from nck import fixed
 
+from hmi.i18n import _
 from hmi.widgets.toolpath import BrailleCanvas
 
 CURVE_STYLES = ("bold green", "bold yellow", "bold cyan", "bold magenta")
@@ -164,7 +165,7 @@ class TracePlot(Widget):
         height = max(self.size.height - 4, 2)
         text = Text(no_wrap=True, end="")
         if not self.times:
-            text.append(" No samples yet: choose signals, then start the trace.", style="dim")
+            text.append(" " + _("No samples yet: choose signals, then start the trace."), style="dim")
             return text
         for index, (name, unit, curve) in enumerate(zip(self.names, self.units, self.curves)):
             array = np.asarray(curve, dtype=float)

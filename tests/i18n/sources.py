@@ -5,7 +5,8 @@ A text is taken from ``hmi/`` and ``screens/`` where it is
 * the literal argument of ``_("…")`` (translated where shown) or ``N_("…")`` (a table
   defined at import, translated where shown);
 * the title and note of a ``DataTable(…)`` and the title of a ``Column(…)`` (the table
-  window draws them translated);
+  window draws them translated), the title and hint of a ``JogForm(…)`` and the label of a
+  ``FieldSpec(…)`` (the JOG windows draw them translated);
 * the label of a softkey: the second argument of ``Softkey(…)``, ``view_softkey(…)`` and
   the areas' softkey builders of :data:`LABELLED` (the softkey bars and the palette
   translate every label).
@@ -38,8 +39,10 @@ def _name(node: ast.expr) -> str:
 
 TABLE_TEXTS: dict[str, tuple[tuple[int, str], ...]] = {
     "Column": ((0, "title"),), "DataTable": ((0, "title"), (3, "note")),
+    "JogForm": ((0, "title"), (2, "hint")), "FieldSpec": ((1, "label"),),
 }
-"""The data tables' texts (hmi.widgets.data_table draws them translated): position and keyword."""
+"""The data tables' and the JOG windows' texts (hmi.widgets.data_table and
+screens.machine_jog_form draw them translated): position and keyword."""
 
 
 def _arguments(node: ast.Call, name: str) -> list[ast.expr]:
