@@ -24,7 +24,7 @@ from typing import Any
 
 from textual import work
 from textual.timer import Timer
-from textual.worker import get_current_worker
+from textual.worker import Worker, WorkerState, get_current_worker
 
 from nck.queries import CheckSetting, Scrubber
 
@@ -200,19 +200,32 @@ class CheckAndSimulation:
 
         batch: list[ErrorMark] = []
         name = Path(program).name
-        try:
-            for alarm in setting.iter_check(name, text, programs=programs, should_stop=stale):
-                if stale():
-                    return
-                line = (alarm.line or 1) - 1
-                batch.append(ErrorMark(line, alarm.number, alarm.text))
-                if len(batch) >= STREAM_BATCH:
-                    self.app.call_from_thread(self._apply_marks, generation, batch, False)
-                    batch = []
-        except Exception as exc:  # a bug in the check must not take the editor down
-            self.app.call_from_thread(self.say, f"Check failed: {exc!r}")
+        # What the program does wrong comes as alarms; an exception here is a bug of the check
+        # (on_worker_state_changed reports it).
+        for alarm in setting.iter_check(name, text, programs=programs, should_stop=stale):
+            if stale():
+                return
+            line = (alarm.line or 1) - 1
+            batch.append(ErrorMark(line, alarm.number, alarm.text))
+            if len(batch) >= STREAM_BATCH:
+                self.app.call_from_thread(self._apply_marks, generation, batch, False)
+                batch = []
         if not stale():
             self.app.call_from_thread(self._apply_marks, generation, batch, True)
+
+    def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
+        """A check that raised is a bug, not a problem of the program (those are alarms): the
+        app's internal-error report keeps its traceback (and fails a test run); the editor
+        carries on without the check's marks."""
+        if event.worker.group != "program-check" or event.state != WorkerState.ERROR:
+            return
+        self._check_running = False
+        self._show_cursor_message()
+        error = event.worker.error
+        report = getattr(self.app, "report_internal_error", None)
+        if report is None or not isinstance(error, Exception):
+            raise error  # type: ignore[misc]
+        report(error)
 
     def _apply_marks(self, generation: int, marks: list[ErrorMark], done: bool) -> None:
         if generation != self._generation or not self._ready:
