@@ -70,6 +70,9 @@ class ProgramFiles:
 
     def __init__(self, fs: NcFileSystem) -> None:
         self.fs = fs
+        self.scratch: tempfile.TemporaryDirectory[str] | None = None
+        """The temporary folder of ``fs`` when the kernel has no file system (removed with this
+        instance, when the app lets go of it, or at the latest when the process ends)."""
         self.last_program: str | None = None
         self.pending_open: str | None = None
         self.pending_at_end = False
@@ -86,9 +89,12 @@ class ProgramFiles:
         if isinstance(existing, ProgramFiles):
             return existing
         fs = find_file_system(app)
+        scratch = None
         if fs is None:
-            fs = NcFileSystem(Path(tempfile.mkdtemp(prefix="nc-data-")) / "nc")
+            scratch = tempfile.TemporaryDirectory(prefix="nc-data-")
+            fs = NcFileSystem(Path(scratch.name) / "nc")
         files = cls(fs)
+        files.scratch = scratch
         app._program_files = files
         return files
 
@@ -96,6 +102,9 @@ class ProgramFiles:
     def forget(cls, app: Any) -> None:
         """Let go of ``app``'s instance: the kernel and its NC file system were replaced (an
         exercise started or ended), the next :meth:`of_app` finds the new one."""
+        files = getattr(app, "_program_files", None)
+        if isinstance(files, ProgramFiles) and files.scratch is not None:
+            files.scratch.cleanup()
         if hasattr(app, "_program_files"):
             del app._program_files
 
