@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import shutil
 import tempfile
+import weakref
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -53,6 +54,9 @@ class ExerciseRun:
         self.report_dir = report_dir
         self.progress = queries.ExerciseProgress(exercise.steps, exercise.final_checks)
         self.private_root = Path(tempfile.mkdtemp(prefix="nck-exercise-"))
+        # removed by close(); also when the run is dropped unended (an app that ended without
+        # End exercise, a failed test) or at the latest when the process ends
+        self._remove_private = weakref.finalize(self, shutil.rmtree, self.private_root, True)
         self.session: Any = None
         self.trainee_session: Any = None
         self.trainee_kernel: Any = None
@@ -67,7 +71,7 @@ class ExerciseRun:
             queries.prepare_data_dir(self.exercise, directory)
             self.session, kernel = start_session(self.exercise.machine, str(directory))
         except BaseException:
-            shutil.rmtree(self.private_root, ignore_errors=True)
+            self._remove_private()
             raise
         return kernel
 
@@ -121,7 +125,7 @@ class ExerciseRun:
             if self.session is not None:
                 self.session.quit()
         finally:
-            shutil.rmtree(self.private_root, ignore_errors=True)
+            self._remove_private()
 
 
 class ClassroomHost:
