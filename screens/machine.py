@@ -26,6 +26,7 @@ from hmi.area import AreaBase, show_text
 from hmi.focus import focus_now
 from hmi.i18n import N_, _
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
+from hmi.simulation_softkeys import overlay_key, view_keys
 from hmi.widgets.blocks import BasicBlockWindow, BlockWindow
 from hmi.widgets.gfunctions import GFunctionsLine, GFunctionsTable
 from hmi.widgets.header import increment_text
@@ -194,16 +195,8 @@ class MachineScreen(AreaBase):
                 self._search_mode_key("search.serupro", "SERUPRO", "serupro"),
             ]
         if view == "simrec":
-            return [
-                Softkey("simrec.xy", "Top view\nXY", "simrec('view', 'XY')"),
-                Softkey("simrec.xz", "Side view\nXZ", "simrec('view', 'XZ')"),
-                Softkey("simrec.yz", "Side view\nYZ", "simrec('view', 'YZ')"),
-                Softkey("simrec.zoom_in", "Zoom +", "simrec('zoom', 1)"),
-                Softkey("simrec.zoom_out", "Zoom -", "simrec('zoom', -1)"),
-                Softkey("simrec.fit", "Fit", "simrec('fit')"),
-                Softkey("simrec.overlay", "Path\non/off", "simrec('overlay')",
-                        active=lambda s: s.query_one("#simrec-stock", StockView).overlay),
-            ]
+            return [*view_keys("simrec"),
+                    overlay_key("simrec", lambda s: s.query_one("#simrec-stock", StockView).overlay)]
         if view == "times":
             return [
                 Softkey("times.reset_parts", "Reset\npart count", "set_counter('$AC_ACTUAL_PARTS', 0)"),
@@ -490,10 +483,22 @@ class MachineScreen(AreaBase):
         if chords != stock.picture.shown_chords or note != stock.status_text or stock.picture.empty:
             stock.set_picture(picture_of(cut, cut.zmap, chords), note)
 
-    def action_simrec(self, action: str, *args: object) -> None:
-        """A softkey of the simultaneous recording view: the view, zoom, fit, path overlay."""
-        stock = self.query_one("#simrec-stock", StockView)
-        getattr(stock, f"action_{action}")(*args)
+    def action_simrec_view(self, view: str) -> None:
+        """Simultaneous recording: choose the projection (top view or a section)."""
+        self.query_one("#simrec-stock", StockView).action_view(view)
+        self.refresh_softkeys()
+
+    def action_simrec_zoom(self, direction: int) -> None:
+        """Simultaneous recording: zoom in/out."""
+        self.query_one("#simrec-stock", StockView).action_zoom(direction)
+
+    def action_simrec_fit(self) -> None:
+        """Simultaneous recording: fit the blank."""
+        self.query_one("#simrec-stock", StockView).action_fit()
+
+    def action_simrec_overlay(self) -> None:
+        """Simultaneous recording: the toolpath over the material on/off."""
+        self.query_one("#simrec-stock", StockView).action_overlay()
         self.refresh_softkeys()
 
     # -- view texts ----------------------------------------------------------------------------

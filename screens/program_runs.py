@@ -30,6 +30,7 @@ from nck.queries import CheckSetting, Scrubber
 
 from hmi.focus import focus_now
 from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.simulation_softkeys import overlay_key, view_keys
 from hmi.widgets.nc_editor import ErrorMark
 from hmi.widgets.stock_view import StockPicture, material_events, picture_of
 from hmi.widgets.toolpath import PathPiece
@@ -135,15 +136,9 @@ class CheckAndSimulation:
     ask: Any
 
     def _simulation_menu(self) -> SoftkeyMenu:
-        view = lambda v: (lambda s: s.toolpath.view == v)  # noqa: E731
         return SoftkeyMenu.of(
             [
-                Softkey("sim.xy", "Top view\nXY", "sim_view('XY')", active=view("XY")),
-                Softkey("sim.xz", "Side view\nXZ", "sim_view('XZ')", active=view("XZ")),
-                Softkey("sim.yz", "Side view\nYZ", "sim_view('YZ')", active=view("YZ")),
-                Softkey("sim.zoom_in", "Zoom +", "sim_zoom(1)"),
-                Softkey("sim.zoom_out", "Zoom -", "sim_zoom(-1)"),
-                Softkey("sim.fit", "Fit", "sim_fit"),
+                *view_keys("sim", lambda s: s.toolpath.view),
                 Softkey("sim.rerun", "Recalculate", "simulate_run"),
                 Softkey("sim.back", "Editor", "simulate"),
             ],
@@ -155,7 +150,7 @@ class CheckAndSimulation:
                 Softkey("sim.faster", "Speed +", "sim_speed(1)"),
                 Softkey("sim.step_back", "Block ◀", "sim_step(-1)"),
                 Softkey("sim.step_forward", "Block ▶", "sim_step(1)"),
-                Softkey("sim.overlay", "Path\non/off", "sim_overlay", active=lambda s: s.stock.overlay),
+                overlay_key("sim", lambda s: s.stock.overlay),
             ],
         )
 
