@@ -16,6 +16,10 @@ from typing import Mapping, Protocol
 
 
 FEED_PER_REVOLUTION = frozenset({"G95", "G96", "G97", "G952", "G962", "G972"})
+THREAD_AND_TAPPING_KINDS = frozenset({"G33", "G34", "G35", "G331", "G332", "G63"})
+"""Motion kinds of thread cutting (G33, G34, G35) and tapping (G331, G332 without, G63 with
+compensating chuck): the spindle turns with the axes (002 L19681), so they cut without M3/M4;
+dry run modes 10-12 leave their feed as programmed (002 L18151-18182)."""
 """Feed types (G group 15) whose F is a feed per revolution of the master spindle: G95, and
 G96/G97 "as with G95" (001 L2584: with G97 the feedrate is a revolutional feedrate; 002 L5773).
 G961/G971 keep a linear feed."""

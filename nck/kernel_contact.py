@@ -42,11 +42,11 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
+from nck.canon import THREAD_AND_TAPPING_KINDS
 from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
 from nck.contact import BALL, CUTTER, ToolBody, clearance, first_contact
 from nck.errors import NcAlarmError
 from nck.milled_blank import MilledBlank
-from nck.motion.dry_run import THREAD_KINDS
 from nck.turned_bar import Z_GRID_MM, TurnedBar
 from nck.workpiece import Cylinder, Point
 
@@ -184,7 +184,7 @@ class ContactWatch:
         if not self._contact_watched():
             return None
         self._contact.rapid = self._moving_at_rapid()
-        self._contact.threading = not self.channel.jogging and self._segment_kind() in THREAD_KINDS  # type: ignore[attr-defined]
+        self._contact.threading = not self.channel.jogging and self._segment_kind() in THREAD_AND_TAPPING_KINDS  # type: ignore[attr-defined]
         self._note_measuring_block()
         return self._path_positions(self.motion)  # type: ignore[attr-defined]
 

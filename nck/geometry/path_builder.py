@@ -53,8 +53,10 @@ ALARM_FRAME_INSTRUCTION = 18311  # G58/G59 without MD24000 FRAME_ADD_COMPONENTS
 ALARM_FINE_NOT_CONFIGURED = 18312  # G58/G59 without a fine offset (MD18600 MM_FRAME_FINE_TRANS)
 ROTARY_MODES = ("DC", "ACP", "ACN")
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
-THREAD_KINDS = ("G33", "G331", "G332")  # G331/G332: rigid tapping with the spindle in position control
-PATH_KINDS = ("G0", "G1") + THREAD_KINDS + ARC_KINDS
+LEAD_KINDS = ("G33", "G331", "G332")
+"""Path motions programmed with a lead (the thread pitch, I/J/K): thread cutting G33 and
+rigid tapping G331/G332 (the spindle in position control); the path builder reads the lead."""
+PATH_KINDS = ("G0", "G1") + LEAD_KINDS + ARC_KINDS
 INTERP_LETTERS = "IJK"
 ROUND_DIGITS = 9
 _LENGTH_PARAMS = (1, 3, 4, 5, 12, 13, 14, 21, 22, 23)  # $TC_DP of the tool length vector: type, L1-L3 geometry, wear, base
@@ -362,7 +364,7 @@ class PathBuilder:
         else:
             element = LineElement(self._vec(start), self._vec(end))
         lead = None
-        if kind in THREAD_KINDS:
+        if kind in LEAD_KINDS:
             lead = self._thread_lead(words, geo, units)
             self._check_thread_frame(words, geo.frames.transform(), start, end)
         context = {

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-THREAD_KINDS = frozenset({"G33", "G34", "G35", "G331", "G332", "G63"})
+from nck.canon import THREAD_AND_TAPPING_KINDS
 
 
 @dataclass(frozen=True, slots=True)
@@ -29,7 +29,7 @@ class DryRun:
         """
         if kind == "G0" or self.feed_mm_min <= 0.0:
             return programmed_mm_min
-        if self.mode >= 10 and kind in THREAD_KINDS:
+        if self.mode >= 10 and kind in THREAD_AND_TAPPING_KINDS:
             return programmed_mm_min
         base = self.mode % 10
         if programmed_mm_min is None or base not in (0, 1):

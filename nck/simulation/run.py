@@ -36,11 +36,11 @@ from typing import Any
 import numpy as np
 
 from nck import canon
+from nck.canon import THREAD_AND_TAPPING_KINDS
 from nck.errors import NcAlarmError
 from nck.headless import DEFAULT_RAPID_MM_MIN, RunResult, run_program
 from nck.interp.api import ProgramSource
 from nck.machine import MachineConfig, load_machine
-from nck.motion.dry_run import THREAD_KINDS
 from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
 from nck.resources import alarm_text
@@ -322,7 +322,7 @@ class PathRecorder:
         line = self._main_line_of.pop(id(motion), None) or motion.source.line or 0
         # Tapping and thread cutting (G331 after SPOS, G33, G63) turn the spindle with the axes
         # (002 L19681): not a cut with the spindle stopped, as the machine's contact watch says.
-        turning_spindle = self.spindle_on or motion.kind in THREAD_KINDS
+        turning_spindle = self.spindle_on or motion.kind in THREAD_AND_TAPPING_KINDS
         self._meta.extend((line, motion.kind == "G0", self.tool, cutter, turning_spindle, n))
         if motion.feed is not None:
             self.feed = motion.feed
