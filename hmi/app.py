@@ -37,13 +37,14 @@ from pathlib import Path
 from typing import Any, Callable
 
 from textual import events, on
+from textual.message import Message
 from textual.app import App, SystemCommand
-from textual.command import CommandPalette
+from textual.command import CommandList, CommandPalette
 from textual.driver import Driver
 from textual.drivers.linux_driver import LinuxDriver
 from textual.drivers.web_driver import WebDriver
 from textual.screen import Screen
-from textual.theme import Theme
+from textual.theme import Theme, ThemeProvider
 
 from nck import commands as cmd
 from nck.commands import Accepted, SubmitResult
@@ -216,6 +217,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         self.nc_session: Any = None  # hmi.startup.NcDataSession when running on a data directory
         self._program_cache: dict[str, ProgramLines] = {}
         self._held_updates = 0
+        self._keys_behind_palette: list[events.Key] | None = None
+        """Keys that came while the command the palette chose waits to run (None: no hold)."""
         self.area_screens: list[AreaBase] = []
         """The area screens built so far (each area's screen lives as long as the app)."""
         self._snapshot_shown = False
@@ -323,6 +326,9 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         if not isinstance(event, events.Key):
             await super().on_event(event)
             return
+        if self._keys_behind_palette is not None:
+            self._keys_behind_palette.append(event)
+            return
         self.exercise_key(event.key)
         focused = self.focused
         binding = own_binding(self.screen, focused, event)
@@ -334,8 +340,36 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         target = focused or self.screen
         if target.is_attached:
             await wait_until_handled(self, target)
+        if isinstance(self.screen, CommandPalette):
+            # Enter on the list: the choice travels from the list to the palette, which closes
+            # and queues the command (the keys behind wait for it, :meth:`post_message`)
+            await wait_until_handled(self, self.screen.query_one(CommandList))
         if isinstance(self.screen, CommandPalette):  # the keys behind a typed name see its search's list
             await wait_for_workers(self.screen)
+
+    # -- keys behind the palette's choice ----------------------------------------------------
+    def post_message(self, message: Message) -> bool:
+        """Queue ``message``; the palette's choice starts holding the keys behind it.
+
+        The palette posts ``Closed`` and then queues the chosen command with ``call_later``,
+        behind the keys already in the queue: an area key typed right after Enter would run
+        first and the command would then take the panel elsewhere (or pop a screen that is
+        gone). From here on keys wait until the command has run (:meth:`_palette_closed`).
+        """
+        if isinstance(message, CommandPalette.Closed) and message.option_selected:
+            self._keys_behind_palette = self._keys_behind_palette or []
+        return super().post_message(message)
+
+    @on(CommandPalette.Closed)
+    def _palette_closed(self) -> None:
+        """The palette's command is queued next: release the held keys after it, in their order."""
+        if self._keys_behind_palette is not None:
+            self.call_later(self._release_keys_behind_palette)
+
+    async def _release_keys_behind_palette(self) -> None:
+        held, self._keys_behind_palette = self._keys_behind_palette or [], None
+        for key in held:
+            await self.on_event(key)
 
     async def on_cursor_position(self, event: events.CursorPosition) -> None:
         """Turn a lone ``ESC [1;2R`` back into Shift+F3 (VSK3), in its place among the keys.
@@ -580,15 +614,20 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
             return
         if any(isinstance(screen, CommandPalette) for screen in self.screen_stack):
             return  # one is open already, perhaps under the key overview (F11) opened over it
-        super().action_command_palette()
+        if self.use_command_palette:
+            self.push_screen(CommandPalette(id="--command-palette", placeholder=_("Search for commands…")))
+
+    def search_themes(self) -> None:
+        """The palette's theme list (the Theme command), its search field in the panel's language."""
+        self.push_screen(CommandPalette(providers=[ThemeProvider], placeholder=_("Search for themes…")))
 
     def get_system_commands(self, screen: Screen) -> Any:
         """The palette's system commands: theme, keys (the F11 help), screenshot, quit (Ctrl+Q's way)."""
-        yield SystemCommand("Theme", "Change the colour theme", self.action_change_theme)
-        yield SystemCommand("Keys", "Show the keys in force (as F11)", self.action_help)
-        yield SystemCommand("Screenshot", "Save an SVG picture of the screen",
+        yield SystemCommand(_("Theme"), _("Change the colour theme"), self.action_change_theme)
+        yield SystemCommand(_("Keys"), _("Show the keys in force (as F11)"), self.action_help)
+        yield SystemCommand(_("Screenshot"), _("Save an SVG picture of the screen"),
                             lambda: self.set_timer(0.1, self.deliver_screenshot))
-        yield SystemCommand("Quit", "Quit the HMI (NC data is saved first)", self.action_quit_hmi)
+        yield SystemCommand(_("Quit"), _("Quit the HMI (NC data is saved first)"), self.action_quit_hmi)
 
     def palette_places(self) -> list[Place]:
         """Every operating area and the softkeys of its top level (:mod:`hmi.palette`).

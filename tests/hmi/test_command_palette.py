@@ -9,9 +9,11 @@ from textual.widgets import Input
 
 from hmi.app import HmiApp
 from hmi.help import HelpScreen
+from hmi.i18n import set_language
 from hmi.keymap import default_keymap
 from hmi.palette import PlaceProvider, area_places
 from hmi.softkeys import Softkey, SoftkeyMenu
+from tests.burst import burst
 from tests.hmi.conftest import SIZE
 
 
@@ -162,3 +164,34 @@ async def test_palette_goes_to_a_softkey_of_a_sub_level(fake_app: HmiApp) -> Non
         await pilot.pause()
         assert fake_app.current_mode == "diagnostics"
         assert fake_app.screen.view == "logbook"
+
+
+async def test_area_key_right_behind_the_choice_in_one_burst(fake_app: HmiApp) -> None:
+    """The palette runs the chosen place after Enter (Textual: call_later); an area key typed
+    right behind Enter in the same read of the terminal comes after it: the operator's last
+    key decides where the panel stands (the guide's key rule: no key reordered)."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+p", *"diagn")
+        await pilot.pause()
+        await burst(pilot, "down", "enter", "alt+o")
+        await pilot.pause()
+        assert not isinstance(fake_app.screen, CommandPalette)
+        assert fake_app.current_mode == "parameter"
+
+
+async def test_palette_texts_in_german(fake_app: HmiApp) -> None:
+    """In German the palette's search field and its system commands speak German (Textual's
+    own English texts are replaced where it takes them: the placeholder, the commands)."""
+    set_language("de")
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+p")
+        await pilot.pause()
+        assert fake_app.screen.query_one(Input).placeholder == "Befehle suchen…"
+        names = [command.title for command in fake_app.get_system_commands(fake_app.screen)]
+        assert names == ["Farbschema", "Tasten", "Bildschirmfoto", "Beenden"]
+        await pilot.press(*"farbschema")
+        await pilot.pause()
+        await fake_app.workers.wait_for_complete()
+        await pilot.press("down", "enter")
+        await pilot.pause()
+        assert fake_app.screen.query_one(Input).placeholder == "Farbschemata suchen…"
