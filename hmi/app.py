@@ -914,7 +914,7 @@ def main(argv: list[str] | None = None) -> int:
             print("hmi: --max-sessions needs 1 or more, --port a port number 1…65535", file=sys.stderr)
             return 2
         return serve(args.host, args.port, args.max_sessions, args.machine, args.data_dir,
-                     str(reports_dir_of(args.reports_dir, args.data_dir)))
+                     str(reports_dir_of(args.reports_dir, args.data_dir)), args.lang)
     started = time.perf_counter()
     # SIGTERM/SIGHUP while starting or ending: a normal exit, so a temporary copy is removed
     with exit_on_termination():

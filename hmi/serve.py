@@ -43,11 +43,15 @@ class SessionSlots:
         self.in_use = max(0, self.in_use - 1)
 
 
-def panel_command(machine: str | None = None, data_dir: str | None = None, reports_dir: str | None = None) -> str:
+def panel_command(machine: str | None = None, data_dir: str | None = None, reports_dir: str | None = None,
+                  lang: str | None = None) -> str:
     """The shell command of one browser session's panel: this Python, ``-m hmi --ephemeral``
     (a private copy of ``data_dir``, or of the user's data directory), writing exercise
-    reports into ``reports_dir`` — outside the copy, which goes with the tab."""
+    reports into ``reports_dir`` — outside the copy, which goes with the tab — and showing
+    its texts in ``lang`` (None: the language kept in the copied data)."""
     words = [sys.executable, "-m", "hmi", "--ephemeral"]
+    if lang:
+        words += ["--lang", lang]
     if machine:
         words += ["--machine", machine]
     if data_dir:
@@ -61,7 +65,7 @@ BUSY_TEXT = "All {limit} panels of this trainer are in use: close one, or try ag
 
 
 def make_server(host: str, port: int, max_sessions: int, machine: str | None = None,
-                data_dir: str | None = None, reports_dir: str | None = None) -> Any:
+                data_dir: str | None = None, reports_dir: str | None = None, lang: str | None = None) -> Any:
     """A textual-serve server of the panel, bounded to ``max_sessions`` at once.
 
     Raises ImportError when textual-serve is not installed.
@@ -93,15 +97,15 @@ def make_server(host: str, port: int, max_sessions: int, machine: str | None = N
             finally:
                 self.slots.give_back()
 
-    return PanelServer(panel_command(machine, data_dir, reports_dir), host=host, port=port,
+    return PanelServer(panel_command(machine, data_dir, reports_dir, lang), host=host, port=port,
                        title="SINUMERIK Operate trainer")
 
 
 def serve(host: str, port: int, max_sessions: int, machine: str | None = None,
-          data_dir: str | None = None, reports_dir: str | None = None) -> int:
+          data_dir: str | None = None, reports_dir: str | None = None, lang: str | None = None) -> int:
     """Serve the panel until Ctrl+C; return the exit code (2: textual-serve missing)."""
     try:
-        server = make_server(host, port, max_sessions, machine, data_dir, reports_dir)
+        server = make_server(host, port, max_sessions, machine, data_dir, reports_dir, lang)
     except ImportError:
         print("hmi: --serve needs textual-serve (installed by make: pip install -e '.[serve]')",
               file=sys.stderr)

@@ -4,6 +4,7 @@ what the project adds, without opening a port (no network in tests)."""
 
 from __future__ import annotations
 
+import importlib.util
 import shlex
 import sys
 
@@ -87,3 +88,23 @@ async def test_alt_keys_from_a_browser_are_panel_keys_never_text(monkeypatch: py
     keys = [(m.key, m.character) for m in driver.messages if isinstance(m, events.Key)]
     assert keys == [("alt+d", None), ("G", "G"), ("0", "0"), ("alt+g", None), ("alt+g", None)]
     assert packets.closed  # "exit" ended the input: the X after it is not read
+
+
+def test_serve_in_german_gives_each_panel_the_language(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``hmi --serve --lang de``: every browser tab's panel process starts with ``--lang de``."""
+    import hmi.serve
+
+    started: list[tuple] = []
+
+    def serve(*args) -> int:
+        started.append(args)
+        return 0
+
+    monkeypatch.setattr(hmi.serve, "serve", serve)
+    assert main(["--serve", "--lang", "de"]) == 0
+    lang = started[0][-1]
+    assert lang == "de"
+    words = shlex.split(panel_command(lang=lang))
+    assert words[words.index("--lang") + 1] == "de" and "--ephemeral" in words
+    if importlib.util.find_spec("textual_serve") is not None:
+        assert make_server("127.0.0.1", 8123, 3, lang="de").command == panel_command(lang="de")
