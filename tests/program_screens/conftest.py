@@ -11,6 +11,7 @@ from nck.kernel import Nck
 from nck.machine import load_machine
 
 from hmi.app import HmiApp
+from hmi.cycle_forms import cycle_menus
 from nck import programs_in_execution
 from nck.storage import NcFileSystem
 
@@ -70,3 +71,26 @@ async def settle(pilot) -> None:
     await pilot.pause()
     await pilot.app.workers.wait_for_complete()
     await pilot.pause()
+
+
+def keys_to_form(cycle: str) -> list[str]:
+    """The keys from the editor to ``cycle``'s form: Shift+F7, the menu's horizontal softkey,
+    the key's vertical softkey (and the sub-level's when the key holds several cycles)."""
+    for menu_index, menu in enumerate(cycle_menus()):
+        for key_index, key in enumerate(menu.keys):
+            if cycle in key.cycles:
+                keys = ["shift+f7", f"f{menu_index + 1}", f"shift+f{key_index + 1}"]
+                if len(key.cycles) > 1:
+                    keys.append(f"shift+f{key.cycles.index(cycle) + 1}")
+                return keys
+    raise AssertionError(f"{cycle} has no softkey")
+
+
+def on_lathe(cycle: str) -> bool:
+    """True for the turning cycles (their menu is the lathe's)."""
+    return any(cycle in menu.cycles() for menu in cycle_menus() if menu.machine == "lathe")
+
+
+def app_for_cycle(root: Path, cycle: str) -> HmiApp:
+    """The mill for the drilling and milling cycles, the lathe for the turning cycles."""
+    return lathe_program_app(root) if on_lathe(cycle) else make_program_app(root)

@@ -18,23 +18,11 @@ import pytest
 
 from hmi.app import HmiApp
 from hmi.cycle_form_dialog import CycleFormDialog
-from hmi.cycle_forms import CycleParam, cycle_forms, cycle_menus
+from hmi.cycle_forms import CycleParam, cycle_forms
 from tests.burst import burst
-from tests.program_screens.conftest import SIZE, lathe_program_app, make_program_app
+from tests.program_screens.conftest import SIZE, app_for_cycle, keys_to_form
 
 PROGRAM = "N10 G0 X0\nN20 M30\n"
-
-
-def keys_to_form(cycle: str) -> list[str]:
-    """Shift+F7, the menu's horizontal softkey, the key's vertical softkey (and the sub-level's)."""
-    for menu_index, menu in enumerate(cycle_menus()):
-        for key_index, key in enumerate(menu.keys):
-            if cycle in key.cycles:
-                keys = ["shift+f7", f"f{menu_index + 1}", f"shift+f{key_index + 1}"]
-                if len(key.cycles) > 1:
-                    keys.append(f"shift+f{key.cycles.index(cycle) + 1}")
-                return keys
-    raise AssertionError(f"{cycle} has no softkey")
 
 
 def typed_value(param: CycleParam, index: int) -> str:
@@ -62,12 +50,6 @@ def changed_field(params: list[CycleParam], values: list[str]) -> tuple[int, str
     raise AssertionError("no field to change")
 
 
-def _app(root: Path, cycle: str) -> HmiApp:
-    """The mill for drilling and milling, the lathe for the turning cycles."""
-    on_lathe = any(cycle in menu.cycles() for menu in cycle_menus() if menu.machine == "lathe")
-    return lathe_program_app(root) if on_lathe else make_program_app(root)
-
-
 @pytest.mark.parametrize("cycle", sorted(cycle_forms()))
 async def test_form_call_line_and_recompile_round_trip(cycle: str, data_dir: Path) -> None:
     """Type a value into every field; the call line holds them in order; Recompile gives them
@@ -75,7 +57,7 @@ async def test_form_call_line_and_recompile_round_trip(cycle: str, data_dir: Pat
     (data_dir / "MPF" / "DEMO.MPF").write_text(PROGRAM)
     form = cycle_forms()[cycle]
     values = [typed_value(param, index) for index, param in enumerate(form.params)]
-    app = _app(data_dir, cycle)
+    app = app_for_cycle(data_dir, cycle)
     async with app.run_test(size=SIZE) as pilot:
         await burst(pilot, "alt+n", "f3", "down")  # open DEMO.MPF, cursor on N20
         await pilot.pause()

@@ -13,7 +13,13 @@ from pathlib import Path
 import pytest
 
 from nck.exercise import load_exercises
-from tests.program_screens.conftest import SIZE, lathe_program_app, make_program_app, settle
+from pytest_textual_snapshot import SVGImageExtension
+from syrupy.assertion import SnapshotAssertion
+
+from hmi.cycle_forms import cycle_forms
+from tests.burst import burst
+from tests.program_screens.conftest import (SIZE, keys_to_form, lathe_program_app, make_program_app, on_lathe,
+                                            settle)
 
 PINNED_NS = 1_790_000_000 * 10**9  # 2026-09-21 14:13 UTC
 
@@ -90,19 +96,6 @@ def test_simulation_top_view(snap_compare, pinned: Path) -> None:
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
 
 
-def test_cycle_form_drilling(snap_compare, pinned: Path) -> None:
-    """Cycles, Deep hole drilling → CYCLE83 form: parameters with units and ranges, help and sketch of DAM."""
-    app = make_program_app(pinned)
-
-    async def run_before(pilot) -> None:
-        await pilot.press("alt+n", "f3", "shift+f7", "shift+f3")  # CYCLE83
-        await pilot.pause()
-        await pilot.press(*["down"] * 7)  # cursor on DAM
-        await pilot.pause()
-
-    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
-
-
 def test_cycle_level_drilling_keys(snap_compare, pinned: Path) -> None:
     """Shift+F7 Cycles: F1 Drilling pressed, F2 Milling, F3 Turning greyed (a mill), F8 Back;
     the drilling keys on the vertical bar."""
@@ -130,48 +123,33 @@ def test_cycle_level_positions_sub_level(snap_compare, pinned: Path) -> None:
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
 
 
-def test_cycle_form_milling_long(snap_compare, pinned: Path) -> None:
-    """Milling, Pocket, Rectangular pocket: a form longer than its window scrolls with the cursor (_RAD1)."""
-    app = make_program_app(pinned)
-
-    async def run_before(pilot) -> None:
-        await pilot.press("alt+n", "f3", "shift+f7", "f2", "shift+f2", "shift+f1")  # POCKET3
-        await pilot.pause()
-        await pilot.press(*["down"] * 21)  # cursor on _RAD1
-        await pilot.pause()
-
-    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
+FORM_CURSOR_LINES = {"CYCLE83": 7, "POCKET3": 21, "CYCLE95": 1}
+"""Fields the cursor goes down in a form before the picture: CYCLE83 on DAM (the sketch marks the
+degression), POCKET3 on _RAD1 (a form longer than its window scrolls with the cursor), CYCLE95
+on MID (after the contour's program name); every other form on its first field."""
 
 
-def test_cycle_form_turning_lathe(snap_compare, pinned: Path) -> None:
-    """On the lathe: Turning, Stock removal → CYCLE95 form with the contour's program name first."""
-    app = lathe_program_app(pinned)
+@pytest.mark.parametrize("machine", ["mill", "lathe"])
+async def test_cycle_forms(snapshot: SnapshotAssertion, pinned: Path, machine: str) -> None:
+    """Every cycle form (Shift+F7, the menu, the cycle's keys; the turning cycles on the lathe):
+    parameters with units and ranges, the help line and the sketch of the field under the cursor.
 
-    async def run_before(pilot) -> None:
-        await pilot.press("alt+n", "f3", "shift+f7", "f3", "shift+f1")  # CYCLE95
-        await pilot.pause()
-        await pilot.press("down")  # cursor on MID
-        await pilot.pause()
-
-    assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
-
-
-def test_program_manager_beside_the_exercise_window_at_120x36(snap_compare, pinned: Path) -> None:
-    """An exercise runs: its side window (34 columns) beside the Program manager at the smallest
-    terminal; the tree gives way, the list keeps Name, Type, Length and Date."""
-    app = make_program_app(pinned)
-    exercise = {e.exercise_id: e for e in load_exercises()}["03_single_block_flange"]
-    app.exercise_report_dir = pinned / "reports"  # the report at the end: beside the test's data
-
-    async def run_before(pilot) -> None:
-        assert app.start_exercise(exercise).startswith("Exercise started")
-        private = app.nc_session.session.data_dir
-        for path in private.rglob("*.MPF"):
-            os.utime(path, ns=(PINNED_NS, PINNED_NS))
-        await pilot.press("alt+n")
-        await pilot.pause()
-
-    try:
-        assert snap_compare(app, terminal_size=(120, 36), run_before=run_before)
-    finally:
-        app.end_exercise()
+    One panel per machine opens the forms one after another (Escape, back to the editor's
+    softkeys) and compares each picture with its own snapshot file, as ``snap_compare`` does
+    for one picture: a panel started per form made the set cost a minute."""
+    svg_snapshot = snapshot.use_extension(SVGImageExtension)
+    cycles = [cycle for cycle in sorted(cycle_forms()) if on_lathe(cycle) == (machine == "lathe")]
+    app = lathe_program_app(pinned) if machine == "lathe" else make_program_app(pinned)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "f3")  # DEMO.MPF in the editor
+        await settle(pilot)  # its check done: "no errors found" on the message line
+        editor = app.screen
+        for cycle in cycles:
+            await burst(pilot, *keys_to_form(cycle), *["down"] * FORM_CURSOR_LINES.get(cycle, 0))
+            await pilot.pause()
+            await pilot.wait_for_scheduled_animations()
+            await pilot.pause()
+            assert app.export_screenshot(title=app.title, simplify=True) == svg_snapshot(name=cycle)
+            await burst(pilot, "escape")
+            await pilot.pause()
+            editor.clear_softkey_levels()
