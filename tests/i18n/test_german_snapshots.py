@@ -1,5 +1,6 @@
-"""SVG snapshots of the main screens in German (issue 27): Machine JOG, the alarm list, the
-Program manager and Setup. The English pictures of the same screens are in tests/hmi,
+"""SVG snapshots of the main screens in German (issue 27): Machine JOG, MDA and AUTO, Parameter
+(tool list, active work offsets), the alarm list, the Program manager and Setup. The English
+pictures of the same screens are in tests/hmi,
 tests/diagnostics, tests/program_screens and tests/parameter_setup; these set the panel's
 language to German first (as Setup ▸ Change language or ``hmi --lang de`` do)."""
 
@@ -86,5 +87,35 @@ def test_setup(snap_compare, tmp_path: Path, name: str, keys: list[str]) -> None
     app = make_app(data_dir=str(tmp_path / "data"), realtime=False, lang="de")
     try:
         assert snap_compare(app, terminal_size=SIZE, press=keys)
+    finally:
+        app.nc_session.quit()
+
+
+def test_machine_mda(snap_compare) -> None:
+    """MDA with a block typed: the MDA window's title and state word in German."""
+    from tests.hmi.test_machine_snapshots import app_on, referenced_fake
+
+    assert snap_compare(app_on(referenced_fake()), terminal_size=SIZE, press=["alt+d", *"G0 X12.5 Y-7 Z-3"])
+
+
+def test_machine_auto(snap_compare) -> None:
+    """AUTO with a program stopped in single block: header, program window, softkeys in German."""
+    from tests.hmi.test_machine_snapshots import app_on, auto_fake
+
+    assert snap_compare(app_on(auto_fake()), terminal_size=SIZE)
+
+
+@pytest.mark.parametrize(("name", "keys"), [
+    ("tools", ["alt+o", "down"]),
+    ("wo_active", ["alt+o", "f3", "shift+f1"]),
+])
+def test_parameter(snap_compare, tmp_path: Path, name: str, keys: list[str]) -> None:
+    """Parameter: the tool list and the active work offsets (frame names, totals) in German."""
+    from tests.parameter_setup.conftest import fill
+
+    app = make_app(data_dir=str(tmp_path), realtime=False, lang="de")
+    try:
+        fill(app)
+        assert snap_compare(app, terminal_size=SIZE, press=["alt+t", "alt+t", *keys])
     finally:
         app.nc_session.quit()
