@@ -44,7 +44,7 @@ def N_(message: str) -> str:  # noqa: N802 - the gettext convention
 
 
 def data_text(kind: str, key: object, field: str, english: str) -> str:
-    """A text of a data table (``alarm``, ``md``, ``group``) in the language shown now."""
+    """A text of a data table (a kind of ``nck.translations.OVERLAY_TABLES``) in the language shown now."""
     return localized(_active["code"], kind, key, field, english)
 
 

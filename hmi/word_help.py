@@ -81,12 +81,12 @@ def word_help(word: str) -> str:
         return ""
     g_function = g_functions().get(name)
     if g_function is not None:
-        kind = _("modal") if g_function.modal else _("non-modal (this block only)")
+        modality = _("modal") if g_function.modal else _("non-modal (this block only)")
         group = _("group {number} ({meaning})").format(
             number=g_function.group,
             meaning=data_text("group", g_function.group, "meaning", g_function.group_meaning))
         meaning = code_meaning(name)
-        return f"{name}: {meaning} — {group}, {kind}" if meaning else f"{name}: {group}, {kind}"
+        return f"{name}: {meaning} — {group}, {modality}" if meaning else f"{name}: {group}, {modality}"
     words = _words()
     for kind, section in (("m_function", "m_functions"), ("system_variable", "system_variables")):
         english = words.get(section, {}).get(name)
