@@ -91,8 +91,8 @@ def screen_lines(app) -> list[str]:
 
 
 WALKS: dict[str, list[list[str]]] = {
-    "machine_jog": [["alt+m", "alt+j"], *[["alt+m", "alt+j", "f10", f"f{n}"] for n in range(1, 9)],
-                    *[["alt+m", "alt+j", "f10", f"shift+f{n}"] for n in range(1, 7)]],
+    "machine_jog": [["alt+m", "alt+j"], *[["alt+m", "alt+j", "f10", f"f{n}"] for n in range(1, 9)]],
+    "machine_jog_windows": [["alt+m", "alt+j", "f10", f"shift+f{n}"] for n in range(1, 7)],
     "machine_mda": [["alt+m", "alt+d"], ["alt+m", "alt+d", "f10", "f4"]],
     "machine_auto": [["alt+m", "alt+u"], ["alt+m", "alt+u", "f10", "f4"]],
     "parameter": [["alt+o"], *[["alt+o", "f10", f"f{n}"] for n in range(1, 8)]],
