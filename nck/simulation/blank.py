@@ -16,7 +16,11 @@ Operate (no manual in our library describes it):
   Z -28…2.
 
 The tube and polygon forms are not simulated (our choice: such a program falls back to the
-clamped blank of the machine set-up, else a box around the path).
+clamped blank of the machine set-up, else a box around the path). Their argument order was
+looked for again on 2026-11-27 in public source code (programs with ``WORKPIECE(`` and
+``"PIPE"``, ``"N_CORNER"``/``"POLYGON"``, ``"CYLINDER"``): no program written by a control or a
+known post-processor turned up, only one code generator writing ``"CYLINDER"`` and a
+``"RECTANGLE"`` form with an argument order of its own — nothing whose meaning is clear.
 """
 
 from __future__ import annotations
