@@ -5,17 +5,20 @@ of :mod:`nck.channel`), the program run, the MDA overlay, the interrupted progra
 REPOS point, manual traversing and the emergency stop. :class:`ControlSwitches` holds the
 operator's program-control switches and override positions; :class:`MachineOutputs` holds
 what the main run has output to the machine (active tool and edge, spindle, auxiliary
-functions, the work offset of the last segment). ``Nck`` creates one of each and hands them
-to its parts (the status snapshot, block search, manual traversing, contact watch).
+functions, the work offset of the last segment); :class:`MachinePlant` the machine and the
+motion system moving its axes. ``Nck`` creates one of each and hands them to its parts (the
+status snapshot, block search, manual traversing, contact watch).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from nck.basic_blocks import BasicBlockLog
 from nck.canon import Dwell, Motion, SpindleCommand
 from nck.channel import ChannelSituation, next_state
+from nck.machine import MachineConfig
 from nck.program_control import ProgramRun
 
 OVERRIDE_NAMES = ("feed", "rapid", "spindle")
@@ -115,3 +118,17 @@ class MachineOutputs:
     spindle_rpm: float = 0.0  # its programmed speed
     aux: dict[str, str] = field(default_factory=dict)  # address (+ extension) -> value, e.g. "T", "M"
     wcs_offset: dict[str, float] = field(default_factory=dict)  # axis -> MCS - WCS of the last segment
+
+
+@dataclass
+class MachinePlant:
+    """The active machine and the motion system that moves its axes; both are replaced when
+    stored machine data come into effect, so parts hold the plant, not the two objects."""
+
+    machine: MachineConfig
+    motion: Any
+
+    def positions(self, motion: Any = None) -> dict[str, float]:
+        """Actual MCS positions of the path axes (no spindles) of ``motion`` (default: the machine's)."""
+        positions = (self.motion if motion is None else motion).positions_mcs()
+        return {axis: float(positions[axis]) for axis in self.machine.path_axes if axis in positions}

@@ -34,7 +34,7 @@ from nck import commands as cmd
 from nck.access import AccessControl
 from nck.alarms import AlarmServer
 from nck.block_search import circle_tolerance
-from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
+from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs, MachinePlant
 from nck.canon import (END_COMMANDS, AuxFunction, EdgeSelect, Motion, Source, SpindleCommand,
                        ToolSelect, UserAlarm)
 from nck.channel import (
@@ -90,7 +90,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
-class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
+class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -104,14 +104,15 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         access: AccessControl | None = None,
         batch_cycles: int = DEFAULT_BATCH_CYCLES,
     ) -> None:
-        self.machine = machine or load_machine()
+        config = machine or load_machine()
         self.data = data if data is not None else NcData()
         self.programs: ProgramSource = programs if programs is not None else _NoPrograms()
         self._interpreter_factory = interpreter_factory or _default_interpreter_factory
         self.batch_cycles = max(1, int(batch_cycles))  # see step()
         self._cycles_in_step = 1
         self._prefed: tuple[ProgramRun, list[RunEvent]] | None = None  # see _feed_between_cycles
-        self.motion = (motion_factory or planned_motion_factory)(self.machine)
+        # The machine and its motion system (both replaced when stored machine data come into effect).
+        self.plant = MachinePlant(config, (motion_factory or planned_motion_factory)(config))
         getattr(self.motion, "attach_setting_data", lambda _data: None)(self.data.setting_data)
         for axis in self.machine.path_axes:
             # MD34210 ENC_REFP_STATE = 2: absolute encoder adjusted (or buffered
@@ -157,8 +158,27 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
         self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
         self._contact = ContactState()  # contacts with the blank / reference block (nck.kernel_contact)
+        self.manual = ManualControl(self.plant, self.data, self.channel, self._contact, self._park)  # JOG, INC, REF
         self._apply_overrides()
         self._interpreter("AUTO")  # its reset G codes are shown from power on
+
+    @property
+    def machine(self) -> MachineConfig:
+        """The active machine (replaced when stored machine data come into effect)."""
+        return self.plant.machine
+
+    @machine.setter
+    def machine(self, machine: MachineConfig) -> None:
+        self.plant.machine = machine
+
+    @property
+    def motion(self) -> Any:
+        """The machine's motion system (rebuilt for a new machine)."""
+        return self.plant.motion
+
+    @motion.setter
+    def motion(self, motion: Any) -> None:
+        self.plant.motion = motion
 
     # ------------------------------------------------------------------ API
     def submit(self, command: object) -> SubmitResult:
@@ -405,7 +425,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         if self.channel.estop_active:
             return Rejected("Emergency stop active")
         if mode == "JOG" or (self.channel.situation.channel == INTERRUPTED and self.channel.situation.program == ABORTED):
-            return self._continue_jog()
+            return self.manual.continue_jog()
         if self.channel.situation.channel == ACTIVE:
             return Rejected("Channel already active")
         self.alarms.clear("nc_start", self._time_s)
@@ -524,7 +544,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
         if self.channel.situation.channel != ACTIVE:
             return Rejected("NC STOP acts only while the channel is active")
         if self.channel.jogging:
-            self._stop_jog(keep_rest=True)
+            self.manual.stop_jog(keep_rest=True)
             self.channel.transition("nc_stop")
             return Accepted()
         self._path_motion().hold()
@@ -874,8 +894,7 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
 
     def _path_positions(self, motion: Any) -> dict[str, float]:
         """Actual MCS positions of the path axes (no spindles) of ``motion``."""
-        positions = motion.positions_mcs()
-        return {axis: float(positions[axis]) for axis in self.machine.path_axes if axis in positions}
+        return self.plant.positions(motion)
 
     def _actual_position(self, axis: str) -> float:
         """Actual MCS position of ``axis`` (for ``$AA_IM`` and friends)."""
@@ -948,10 +967,11 @@ class Nck(ManualControl, ControlSettings, JobSetup, ContactWatch, BlockSearchCon
 
 COMMANDS: CommandTable[Nck] = CommandTable()
 """Where each command is carried out: command class -> the ``Nck`` method (some live in the
-kernel_* modules Nck is assembled from). Typed: mypy checks that a handler takes its command."""
+kernel_* modules Nck is assembled from) or the method of one of its parts (``nck.manual``:
+nck.kernel_manual). Typed: mypy checks that a handler takes its command."""
 COMMANDS.register(cmd.SelectMode, Nck._select_mode)
-COMMANDS.register(cmd.SelectMachineFunction, Nck._select_machine_function)
-COMMANDS.register(cmd.SelectIncrement, Nck._select_increment)
+COMMANDS.register_part(cmd.SelectMachineFunction, lambda nck: nck.manual, ManualControl.select_machine_function)
+COMMANDS.register_part(cmd.SelectIncrement, lambda nck: nck.manual, ManualControl.select_increment)
 COMMANDS.register(cmd.CycleStart, Nck._cycle_start)
 COMMANDS.register(cmd.CycleStop, Nck._cycle_stop)
 COMMANDS.register(cmd.Reset, Nck._reset)
@@ -961,7 +981,7 @@ COMMANDS.register(cmd.SetMdaProgram, Nck._set_mda)
 COMMANDS.register(cmd.SetProgramControl, Nck._set_program_control)
 COMMANDS.register(cmd.SetOverride, Nck._set_override)
 COMMANDS.register(cmd.CancelAlarms, Nck._cancel_alarms)
-COMMANDS.register(cmd.Jog, Nck._jog)
+COMMANDS.register_part(cmd.Jog, lambda nck: nck.manual, ManualControl.jog)
 COMMANDS.register(cmd.SetControllerEnable, Nck._set_controller_enable)
 COMMANDS.register(cmd.StartBlockSearch, Nck._start_block_search)
 COMMANDS.register(cmd.WriteData, Nck._write_data)

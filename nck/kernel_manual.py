@@ -1,4 +1,4 @@
-"""Manual traversing for :class:`nck.kernel.Nck`: JOG, INC, REF, REPOS (a mixin).
+"""Manual traversing, a part of :class:`nck.kernel.Nck`: JOG, INC, REF, REPOS.
 
 JOG continuous while a direction key is held, INC increments (1 … 10000 in
 0.001 mm, or VAR from SD41010), REF starts the reference point approach with
@@ -9,14 +9,13 @@ NC START continues it (Table 9-3 situations 8 and 15).
 
 from __future__ import annotations
 
-from typing import Any, Callable
+from typing import Callable
 
-from nck.channel_state import ChannelState
+from nck.channel_state import ChannelState, MachinePlant
 from nck import commands as cmd
 from nck.channel import ABORTED, ACTIVE, INTERRUPTED, MACHINE_FUNCTIONS
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.kernel_contact import ContactState
-from nck.machine import MachineConfig
 from nck.ncdata import NcData
 
 DEFAULT_JOG_MM_MIN = 2000.0  # MD32020 JOG_VELO
@@ -24,16 +23,18 @@ DEFAULT_JOG_RAPID_MM_MIN = 10000.0  # MD32010 JOG_VELO_RAPID
 
 
 class ManualControl:
-    """JOG, INC, REF and REPOS handling; mixed into ``Nck``: what it uses of the kernel is declared here."""
+    """JOG, INC, REF and REPOS handling on the parts it is given."""
 
-    machine: MachineConfig
-    motion: Any
-    data: NcData
-    channel: ChannelState  # the channel's state (nck.channel_state)
-    _contact: ContactState  # contacts with the blank (nck.kernel_contact): a rapid JOG into it is a crash
-    _park: Callable[[], None]  # keeps the interrupted program's rest before the axes move by hand
+    def __init__(self, plant: MachinePlant, data: NcData, channel: ChannelState, contact: ContactState,
+                 park: Callable[[], None]) -> None:
+        self.plant = plant  # the machine and its motion system
+        self.data = data  # SD41010 (VAR increment), SD41110 (JOG feed)
+        self.channel = channel  # the channel's state (nck.channel_state)
+        self.contact = contact  # contacts with the blank (nck.kernel_contact): a rapid JOG into it is a crash
+        self.park = park  # keeps the interrupted program's rest before the axes move by hand
 
-    def _select_machine_function(self, command: cmd.SelectMachineFunction) -> SubmitResult:
+    def select_machine_function(self, command: cmd.SelectMachineFunction) -> SubmitResult:
+        """REF, REPOS, INC or none (JOG continuous), in JOG and MDA while the channel is not active."""
         function = command.function.upper() if command.function else None
         if function is not None and function not in MACHINE_FUNCTIONS:
             return Rejected(f"unknown machine function {command.function!r}")
@@ -46,7 +47,8 @@ class ManualControl:
         self.channel.machine_function = function
         return Accepted()
 
-    def _select_increment(self, command: cmd.SelectIncrement) -> SubmitResult:
+    def select_increment(self, command: cmd.SelectIncrement) -> SubmitResult:
+        """INC 1 … 10000 (0.001 mm) or VAR (None), in JOG only."""
         value = command.increment
         if value is not None and value not in (1, 10, 100, 1000, 10000):
             return Rejected("Increment must be 1, 10, 100, 1000, 10000 or VAR")
@@ -57,16 +59,17 @@ class ManualControl:
             self.channel.machine_function = "INC"
         return Accepted()
 
-    def _jog(self, command: cmd.Jog) -> SubmitResult:
+    def jog(self, command: cmd.Jog) -> SubmitResult:
+        """A direction key of an axis or spindle pressed (+1/-1) or released (0)."""
         axis = command.axis.upper()
-        if axis in self.machine.spindles:
+        if axis in self.plant.machine.spindles:
             return self._jog_spindle(axis, command.direction)
-        if axis not in self.machine.path_axes:
+        if axis not in self.plant.machine.path_axes:
             return Rejected(f"no axis {command.axis}")
         function = self.channel.machine_function
         if command.direction == 0:
             if self.channel.jogging and function is None:
-                self.motion.jog_continuous(axis, 0, 0.0)
+                self.plant.motion.jog_continuous(axis, 0, 0.0)
             return Accepted()
         if self.channel.estop_active:
             return Rejected("Emergency stop active")
@@ -75,30 +78,30 @@ class ManualControl:
         if self.channel.situation.channel == ACTIVE and not self.channel.jogging:
             return Rejected("Channel active")
         direction = 1 if command.direction > 0 else -1
-        self._park()
-        position = self.motion.positions_mcs()[axis]
+        self.park()
+        position = self.plant.motion.positions_mcs()[axis]
         if function == "REF":
-            plus = int(self.machine.md_value("MD34010", axis, 0) or 0) == 0
+            plus = int(self.plant.machine.md_value("MD34010", axis, 0) or 0) == 0
             if (direction > 0) != plus:
                 return Accepted()  # wrong direction key: nothing happens
-            self.motion.start_reference(axis)
+            self.plant.motion.start_reference(axis)
         elif function == "REPOS":
             if self.channel.repos_point is None or axis not in self.channel.repos_point:
                 return Rejected("No REPOS point")
             distance = self.channel.repos_point[axis] - position
             if abs(distance) < 1e-9 or (distance > 0) != (direction > 0):
                 return Accepted()
-            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, command.rapid))
+            self.plant.motion.jog_increment(axis, distance, self.jog_velocity(axis, command.rapid))
         elif function == "INC":
             # A press while an increment still runs adds its increment to that target:
             # every press is one increment (keymap), none cut short by the next.
             target = self.channel.jog_targets.get(axis, position) + direction * self._increment_mm()
-            self.motion.jog_increment(axis, target - position, self._jog_velocity(axis, command.rapid))
+            self.plant.motion.jog_increment(axis, target - position, self.jog_velocity(axis, command.rapid))
             self.channel.jog_targets[axis] = target
         else:
-            self.motion.jog_continuous(axis, direction, self._jog_velocity(axis, command.rapid))
+            self.plant.motion.jog_continuous(axis, direction, self.jog_velocity(axis, command.rapid))
         self.channel.jog_rest.clear()
-        self._contact.jog_rapid = command.rapid  # a rapid move into the blank is a crash (nck.kernel_contact)
+        self.contact.jog_rapid = command.rapid  # a rapid move into the blank is a crash (nck.kernel_contact)
         if not self.channel.jogging:
             self.channel.jogging = True
             self.channel.transition("jog_start")
@@ -111,38 +114,41 @@ class ManualControl:
                 return Rejected("Emergency stop active")
             if self.channel.situation.mode != "JOG" or self.channel.situation.channel == ACTIVE:
                 return Rejected("The spindle can be jogged only in JOG")
-        self.motion.jog_continuous(spindle, 0 if direction == 0 else (1 if direction > 0 else -1),
-                                   self._jog_velocity(spindle, False))
+        self.plant.motion.jog_continuous(spindle, 0 if direction == 0 else (1 if direction > 0 else -1),
+                                   self.jog_velocity(spindle, False))
         return Accepted()
 
-    def _stop_jog(self, keep_rest: bool) -> None:
-        positions = self.motion.positions_mcs()
+    def stop_jog(self, keep_rest: bool) -> None:
+        """NC STOP of a manual motion; ``keep_rest``: NC START continues the increments."""
+        positions = self.plant.motion.positions_mcs()
         rest = {axis: target - positions[axis] for axis, target in self.channel.jog_targets.items()}
-        for axis in self.machine.path_axes:
-            self.motion.jog_continuous(axis, 0, 0.0)
+        for axis in self.plant.machine.path_axes:
+            self.plant.motion.jog_continuous(axis, 0, 0.0)
         self.channel.jogging = False
         self.channel.jog_targets.clear()
         self.channel.jog_rest = {a: d for a, d in rest.items() if abs(d) > 1e-9} if keep_rest else {}
 
-    def _continue_jog(self) -> SubmitResult:
+    def continue_jog(self) -> SubmitResult:
+        """NC START in JOG: continue the increments NC STOP interrupted."""
         if self.channel.situation.channel != INTERRUPTED or self.channel.situation.program != ABORTED or not self.channel.jog_rest:
             return Rejected("NC START in JOG only continues a stopped increment")
-        positions = self.motion.positions_mcs()
+        positions = self.plant.motion.positions_mcs()
         for axis, distance in self.channel.jog_rest.items():
-            self.motion.jog_increment(axis, distance, self._jog_velocity(axis, False))
+            self.plant.motion.jog_increment(axis, distance, self.jog_velocity(axis, False))
             self.channel.jog_targets[axis] = positions[axis] + distance
         self.channel.jog_rest.clear()
         self.channel.jogging = True
         self.channel.transition("jog_start")
         return Accepted()
 
-    def _jog_velocity(self, axis: str, rapid: bool) -> float:
+    def jog_velocity(self, axis: str, rapid: bool) -> float:
+        """The JOG velocity of ``axis`` (rapid: MD32010; else SD41110 for linear axes, MD32020)."""
         if rapid:
-            return float(self.machine.md_value("MD32010", axis, DEFAULT_JOG_RAPID_MM_MIN) or DEFAULT_JOG_RAPID_MM_MIN)
+            return float(self.plant.machine.md_value("MD32010", axis, DEFAULT_JOG_RAPID_MM_MIN) or DEFAULT_JOG_RAPID_MM_MIN)
         set_velo = float(self.data.setting_data.get("SD41110") or 0.0)
-        if set_velo > 0.0 and self.machine.axis(axis).kind == "linear":
+        if set_velo > 0.0 and self.plant.machine.axis(axis).kind == "linear":
             return set_velo  # SD41110 JOG_SET_VELO: the JOG feed of linear axes; 0 = MD32020
-        return float(self.machine.md_value("MD32020", axis, DEFAULT_JOG_MM_MIN) or DEFAULT_JOG_MM_MIN)
+        return float(self.plant.machine.md_value("MD32020", axis, DEFAULT_JOG_MM_MIN) or DEFAULT_JOG_MM_MIN)
 
     def _increment_mm(self) -> float:
         if self.channel.increment is None:
