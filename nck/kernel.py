@@ -47,10 +47,11 @@ from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
 from nck.iso.dialect import dialect_for
-from nck.kernel_contact import ContactState, ContactWatch
+from nck.kernel_contact import ContactEvent, ContactWatch
 from nck.kernel_manual import ManualControl
 from nck.kernel_search import BlockSearchControl
 from nck.kernel_settings import ControlSettings
+from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_setup import JobSetup
 from nck.machine import MachineConfig, load_machine
 from nck.motion.instant import InstantMotion, instant_motion_factory
@@ -90,7 +91,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
-class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
+class Nck(ControlSettings, BlockSearchControl):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -107,7 +108,6 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         config = machine or load_machine()
         self.data = data if data is not None else NcData()
         self.programs: ProgramSource = programs if programs is not None else _NoPrograms()
-        self._interpreter_factory = interpreter_factory or _default_interpreter_factory
         self.batch_cycles = max(1, int(batch_cycles))  # see step()
         self._cycles_in_step = 1
         self._prefed: tuple[ProgramRun, list[RunEvent]] | None = None  # see _feed_between_cycles
@@ -128,8 +128,10 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         self.channel = ChannelState()  # mode, channel and program state (nck.channel_state)
         self.switches = ControlSwitches()  # program control and overrides
         self.outputs = MachineOutputs()  # active T/D, spindle, aux functions of the main run
-        self._interpreters: dict[str, Interpreter] = {}
-        self._last_interp: Interpreter | None = None  # the interpreter whose program ended last
+        # The channel's interpreters by mode, the one holding the channel's state, the kept G codes
+        self.interpreters = ChannelInterpreters(self.plant, self.programs,
+                                                self.data, interpreter_factory or _default_interpreter_factory,
+                                                self._wire_interpreter)
         md27880 = self.machine.md_value("MD27880", None, DEFAULT_PART_COUNTER)
         md27882 = self.machine.md_value("MD27882", None, None)
         self.counters = PartCounters(mode_bits=int(md27880 if isinstance(md27880, int) else DEFAULT_PART_COUNTER))
@@ -157,10 +159,14 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         self.cycles_done = 0  # IPO cycles since power on (system utilisation)
         self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
         self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
-        self._contact = ContactState()  # contacts with the blank / reference block (nck.kernel_contact)
-        self.manual = ManualControl(self.plant, self.data, self.channel, self._contact, self._park)  # JOG, INC, REF
+        # Contacts with the blank / reference block (nck.kernel_contact)
+        self.contact = ContactWatch(self.plant, self.data, self.channel, self.switches, self.outputs, self.alarms,
+                                    self._ipo_s, path_motion=self._path_motion, clock=lambda: self._time_s,
+                                    motion_alarm=self._motion_alarm)
+        self.manual = ManualControl(self.plant, self.data, self.channel, self.contact.state, self._park)  # JOG, INC, REF
+        self.setup = JobSetup(self.plant, self.data, self.channel, self.interpreters, self._require)  # Set WO, set-up
         self._apply_overrides()
-        self._interpreter("AUTO")  # its reset G codes are shown from power on
+        self.interpreters.get("AUTO")  # its reset G codes are shown from power on
 
     @property
     def machine(self) -> MachineConfig:
@@ -326,6 +332,14 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
             return len(queue), BUFFER_SEGMENTS
         return 0, 0
 
+    def contact_events(self, since_seq: int = 0) -> tuple[ContactEvent, ...]:
+        """The contacts with the blank or the reference block after ``since_seq`` (oldest first, bounded)."""
+        return self.contact.events(since_seq)
+
+    def probe_deflected(self) -> bool:
+        """True while the active tool is a 3D probe in contact with a solid."""
+        return self.contact.probe_deflected()
+
     def alarm_history(self) -> tuple[AlarmEntry, ...]:
         """The alarm log with come/go times, oldest first (bounded)."""
         return self.alarms.history()
@@ -361,8 +375,8 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         # The frames that give the WCS while nothing executes: the run's, else those of the
         # interpreter that holds the channel's state (the one that ran last); None until a
         # program has run: the power-on state, read from the stored frames.
-        modal = run.interp if run is not None else self._interpreters.get("AUTO")
-        frames = run.interp if run is not None else self._last_interp
+        modal = run.interp if run is not None else self.interpreters.existing("AUTO")
+        frames = run.interp if run is not None else self.interpreters.holder
         return StatusSources(
             machine=self.machine, data=self.data, channel=self.channel, switches=self.switches,
             outputs=self.outputs, motion=self.motion, shown_motion=self._display_motion(),
@@ -370,20 +384,6 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
             alarms=self.alarms, runtime=self.runtime, counters=self.counters,
             access_level=self._access_level(), internal_errors=len(self.internal_errors),
         )
-
-    def _renew_interpreters(self) -> None:
-        """Stored machine data came into effect: the interpreters of the old machine go; the
-        new AUTOMATIC one takes over the channel's state (tool, kept G codes) if an
-        interpreter held it (the others are created on first use)."""
-        held = self._last_interp is not None
-        self._interpreters.clear()
-        self._last_interp = None
-        auto = self._interpreter("AUTO")
-        if held:
-            sync_tool = getattr(auto, "sync_tool", None)
-            if sync_tool is not None:
-                sync_tool(self.outputs.tool, self.outputs.edge, int(self.outputs.aux.get("T", self.outputs.tool)))
-            self._last_interp = auto
 
     def _access_level(self) -> int:
         if self._access is not None:
@@ -562,13 +562,13 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         self.outputs.aux.pop("T", None)  # no preselection beyond RESET (the interpreter's too)
         if self._test_motion is not None:
             self._test_motion.abort()
-        for interp in self._interpreters.values():
+        for interp in self.interpreters.all():
             try:
                 interp.reset()
             except NcAlarmError as error:
                 self._raise(error)
         if self.channel.run is not None:
-            self._share_kept_gcodes(self.channel.run.interp)
+            self.interpreters.share_kept_gcodes(self.channel.run.interp, self.plant.positions())
         self.channel.clear_programs()
         keep = frozenset({ALARM_EMERGENCY_STOP}) if self.channel.estop_pressed else frozenset()
         self.alarms.clear("reset", self._time_s, keep=keep)
@@ -580,7 +580,7 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         if not self.switches.program_control["program_test"]:
             self._test_motion = None
         self._activate_data("reset")  # stored MD of activation re/cf take effect
-        self._reset_system_frames()
+        self.setup.reset_system_frames()
         return Accepted()
 
     def _emergency_stop(self, command: cmd.EmergencyStop) -> SubmitResult:
@@ -661,8 +661,8 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
             if events:
                 fed = False
                 self._handle_events(run, events)
-        cycles = self._contact_cycle_limit(self._batch_size(limit, fed))
-        before = self._contact_positions()
+        cycles = self.contact.cycle_limit(self._batch_size(limit, fed))
+        before = self.contact.positions_before()
         if cycles > 1 and self._event_batching():
             cycles = self.motion.advance_cycles(cycles, self._feed_between_cycles)
         else:
@@ -674,7 +674,7 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
             self._test_motion.advance(dt_s)
         for error in self.motion.drain_alarms():
             self._motion_alarm(error)
-        self._watch_contact(before)
+        self.contact.watch(before)
         cleared = getattr(self.motion, "drain_cleared_alarms", None)
         if cleared is not None:
             for number in cleared():
@@ -757,7 +757,7 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
             run.interp.reset()
         except NcAlarmError as error:
             self._raise(error)
-        self._share_kept_gcodes(run.interp)
+        self.interpreters.share_kept_gcodes(run.interp, self.plant.positions())
         if run.kind == "AUTO":
             self.counters.on_program_end(bool(self.switches.program_control["program_test"]))
             self.runtime.program_end()
@@ -877,20 +877,19 @@ class Nck(ControlSettings, JobSetup, ContactWatch, BlockSearchControl):
         self.channel.parked = None
 
     def _interpreter(self, kind: str) -> Interpreter:
-        interp = self._interpreters.get(kind)
-        if interp is None:
-            interp = self._interpreter_factory(self.machine, self.programs, self.data)
-            if hasattr(interp, "position_source"):
-                # Read only after the implicit STOPRE of needs_preprocessing_stop().
-                interp.position_source = self._actual_position  # type: ignore[attr-defined]
-            if hasattr(interp, "measurement_source"):  # MEAS/MEAW results (nck.kernel_contact)
-                interp.measurement_source = self._measurement  # type: ignore[attr-defined]
-            if hasattr(interp, "access_level"):  # setting-data writes of part programs
-                interp.access_level = self._access_level  # type: ignore[attr-defined]
-            self._apply_skip_levels(interp)
-            self._take_kept_gcodes(interp)
-            self._interpreters[kind] = interp
-        return interp
+        """The interpreter of mode ``kind`` (created on first use)."""
+        return self.interpreters.get(kind)
+
+    def _wire_interpreter(self, interp: Interpreter) -> None:
+        """Connect a new interpreter to the kernel: positions, probe results, access level, skip levels."""
+        if hasattr(interp, "position_source"):
+            # Read only after the implicit STOPRE of needs_preprocessing_stop().
+            interp.position_source = self._actual_position  # type: ignore[attr-defined]
+        if hasattr(interp, "measurement_source"):  # MEAS/MEAW results (nck.kernel_contact)
+            interp.measurement_source = self.contact.measurement  # type: ignore[attr-defined]
+        if hasattr(interp, "access_level"):  # setting-data writes of part programs
+            interp.access_level = self._access_level  # type: ignore[attr-defined]
+        self._apply_skip_levels(interp)
 
     def _path_positions(self, motion: Any) -> dict[str, float]:
         """Actual MCS positions of the path axes (no spindles) of ``motion``."""
@@ -992,8 +991,8 @@ COMMANDS.register(cmd.ChangePassword, Nck._change_password)
 COMMANDS.register(cmd.DeleteToolEdge, Nck._delete_tool_edge)
 COMMANDS.register(cmd.ClearRParameters, Nck._clear_r_parameters)
 COMMANDS.register(cmd.ActivateMachineData, Nck._activate_machine_data)
-COMMANDS.register(cmd.WriteMachineSetup, Nck._write_machine_setup)
-COMMANDS.register(cmd.WriteManualSettings, Nck._write_manual_settings)
-COMMANDS.register(cmd.SetActualValue, Nck._set_actual_value)
-COMMANDS.register(cmd.SetWorkOffsetRotation, Nck._set_work_offset_rotation)
-COMMANDS.register(cmd.DeleteActiveWorkOffset, Nck._delete_active_work_offset)
+COMMANDS.register_part(cmd.WriteMachineSetup, lambda nck: nck.setup, JobSetup.write_machine_setup)
+COMMANDS.register_part(cmd.WriteManualSettings, lambda nck: nck.setup, JobSetup.write_manual_settings)
+COMMANDS.register_part(cmd.SetActualValue, lambda nck: nck.setup, JobSetup.set_actual_value)
+COMMANDS.register_part(cmd.SetWorkOffsetRotation, lambda nck: nck.setup, JobSetup.set_work_offset_rotation)
+COMMANDS.register_part(cmd.DeleteActiveWorkOffset, lambda nck: nck.setup, JobSetup.delete_active_work_offset)

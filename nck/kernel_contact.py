@@ -1,4 +1,4 @@
-"""Contact of the tool with the blank or the reference block during motion (a mixin of ``Nck``).
+"""Contact of the tool with the blank or the reference block during motion (a part of ``Nck``).
 
 Every kernel step, when something is clamped (``NcData.machine_setup``) and the axes move,
 the straight segment the tool tip travelled in that step is intersected with each solid
@@ -40,13 +40,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Callable
 
+from nck.alarms import AlarmServer
 from nck.canon import THREAD_AND_TAPPING_KINDS
-from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs
+from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs, MachinePlant
 from nck.contact import BALL, CUTTER, ToolBody, clearance, first_contact
 from nck.errors import NcAlarmError
 from nck.milled_blank import MilledBlank
+from nck.ncdata import NcData
 from nck.turned_bar import Z_GRID_MM, TurnedBar
 from nck.workpiece import Cylinder, Point
 
@@ -112,34 +114,43 @@ class ContactState:
 
 
 class ContactWatch:
-    """Contact detection in the kernel cycle; mixed into ``Nck`` (uses its state)."""
-    channel: ChannelState
-    switches: ControlSwitches
-    outputs: MachineOutputs
+    """Contact detection in the kernel cycle, on the parts it is given; it owns the contact
+    bookkeeping (:attr:`state`)."""
 
-    data: Any
-    machine: Any
-    motion: Any
-    _contact: ContactState
+    def __init__(self, plant: MachinePlant, data: NcData, channel: ChannelState, switches: ControlSwitches,
+                 outputs: MachineOutputs, alarms: AlarmServer, ipo_s: float, *,
+                 path_motion: Callable[[], Any], clock: Callable[[], float],
+                 motion_alarm: Callable[[NcAlarmError], None]) -> None:
+        self.state = ContactState()
+        self.plant = plant  # the machine and its motion system
+        self.data = data  # the machine set-up (what is clamped) and the tool edges
+        self.channel = channel
+        self.switches = switches  # no contact under program test
+        self.outputs = outputs  # the active tool and edge, the spindle
+        self.alarms = alarms  # a crash alarm already pending is not raised again
+        self.ipo_s = ipo_s
+        self.path_motion = path_motion  # the motion system programs run on (the kernel's choice)
+        self.clock = clock  # the control time of an event
+        self.motion_alarm = motion_alarm  # raises a crash with the reactions of a motion alarm
 
     # ---------------------------------------------------------------- reading
-    def contact_events(self, since_seq: int = 0) -> tuple[ContactEvent, ...]:
+    def events(self, since_seq: int = 0) -> tuple[ContactEvent, ...]:
         """The contact events after ``since_seq`` (oldest first, bounded)."""
-        return tuple(event for event in self._contact.events if event.seq > since_seq)
+        return tuple(event for event in self.state.events if event.seq > since_seq)
 
     def probe_deflected(self) -> bool:
         """True while the active tool is a 3D probe in contact with a solid."""
-        return bool(self._contact.touching) and self._tool_body()[0].shape == BALL
+        return bool(self.state.touching) and self.tool_body()[0].shape == BALL
 
     # ---------------------------------------------------------------- the tool
-    def _tool_body(self) -> tuple[ToolBody, Point]:
+    def tool_body(self) -> tuple[ToolBody, Point]:
         """The active tool's body and its tip offset (machine position − tip) in X, Y, Z."""
-        edge = self.data.edge(self.outputs.tool, self.outputs.edge) if self.outputs.edge else None  # type: ignore[attr-defined]
+        edge = self.data.edge(self.outputs.tool, self.outputs.edge) if self.outputs.edge else None
         if edge is None:
             return ToolBody(CUTTER, 0.0, 0.0), (0.0, 0.0, 0.0)
         radius = max(edge.get(6) + edge.get(15), 0.0)
         length1, length2 = edge.get(3) + edge.get(12), edge.get(4) + edge.get(13)
-        if self.machine.kind == "lathe":  # L1 along X, L2 along Z; the cutting edge a ball
+        if self.plant.machine.kind == "lathe":  # L1 along X, L2 along Z; the cutting edge a ball
             return ToolBody(BALL, radius), (length1, 0.0, length2)
         shape = BALL if edge.tool_type == PROBE_TOOL_TYPE else CUTTER
         true_length = self.data.machine_setup.true_length(self.outputs.tool)  # a tool whose data are wrong
@@ -150,85 +161,85 @@ class ContactWatch:
         return (positions.get("X", 0.0) - offset[0], positions.get("Y", 0.0) - offset[1],
                 positions.get("Z", 0.0) - offset[2])
 
-    def _contact_watched(self) -> bool:
-        return bool(self.data.machine_setup.solids()) and not self.switches.program_control["program_test"]  # type: ignore[attr-defined]
+    def _watched(self) -> bool:
+        return bool(self.data.machine_setup.solids()) and not self.switches.program_control["program_test"]
 
     # ---------------------------------------------------------------- the cycle
-    def _contact_cycle_limit(self, cycles: int) -> int:
+    def cycle_limit(self, cycles: int) -> int:
         """At most as many IPO cycles as the tool surely cannot reach a solid in."""
-        self._contact.free = None
-        if cycles <= 1 or not self._contact_watched():
+        self.state.free = None
+        if cycles <= 1 or not self._watched():
             return cycles
-        if (self.channel.run is None and self.channel.overlay is None and not self.channel.jogging  # type: ignore[attr-defined]
-                and self.motion.is_idle()):
+        if (self.channel.run is None and self.channel.overlay is None and not self.channel.jogging
+                and self.plant.motion.is_idle()):
             return cycles  # nothing can start moving inside this step
-        body, offset = self._tool_body()
-        tip = self._tip(self._path_positions(self.motion), offset)  # type: ignore[attr-defined]
+        body, offset = self.tool_body()
+        tip = self._tip(self.plant.positions(), offset)
         bar = self._material()
         if not isinstance(bar, TurnedBar):
             bar = None  # a milled blank: the solid's gap is a lower bound of the gap to what is left
         gap = min(bar.clearance(body, tip) if bar and name == "blank" else clearance(body, solid, tip)
                   for name, solid in self.data.machine_setup.solids())
-        self._contact.free = (gap, body, offset)
-        step_mm = self._max_path_mm_s() * self._ipo_s * STEP_MARGIN  # type: ignore[attr-defined]
+        self.state.free = (gap, body, offset)
+        step_mm = self._max_path_mm_s() * self.ipo_s * STEP_MARGIN
         return max(1, min(cycles, int(gap / step_mm))) if gap > 0.0 else 1
 
     def _max_path_mm_s(self) -> float:
-        speeds = [float(self.machine.md_value("MD32000", axis, 10000.0) or 10000.0)
-                  for axis in self.machine.path_axes]
+        speeds = [float(self.plant.machine.md_value("MD32000", axis, 10000.0) or 10000.0)
+                  for axis in self.plant.machine.path_axes]
         return math.sqrt(sum(v * v for v in speeds)) / 60.0
 
-    def _contact_positions(self) -> dict[str, float] | None:
+    def positions_before(self) -> dict[str, float] | None:
         """Before a step: the machine positions (``None`` when nothing is watched); notes
         whether the motion of the step starts at rapid traverse."""
-        if not self._contact_watched():
+        if not self._watched():
             return None
-        self._contact.rapid = self._moving_at_rapid()
-        self._contact.threading = not self.channel.jogging and self._segment_kind() in THREAD_AND_TAPPING_KINDS  # type: ignore[attr-defined]
+        self.state.rapid = self._moving_at_rapid()
+        self.state.threading = not self.channel.jogging and self._segment_kind() in THREAD_AND_TAPPING_KINDS
         self._note_measuring_block()
-        return self._path_positions(self.motion)  # type: ignore[attr-defined]
+        return self.plant.positions()
 
-    def _watch_contact(self, before: dict[str, float] | None) -> None:
+    def watch(self, before: dict[str, float] | None) -> None:
         """After a step: judge the tip's segment from ``before`` to now against every solid."""
-        free, self._contact.free = self._contact.free, None
+        free, self.state.free = self.state.free, None
         if before is None:
             return
-        after = self._path_positions(self.motion)  # type: ignore[attr-defined]
+        after = self.plant.positions()
         if all(abs(after[a] - before.get(a, after[a])) <= 0.0 for a in after):
             return
-        body, offset = self._tool_body()
+        body, offset = self.tool_body()
         start, end = self._tip(before, offset), self._tip(after, offset)
-        if (free is not None and not self._contact.touching and free[1:] == (body, offset)
+        if (free is not None and not self.state.touching and free[1:] == (body, offset)
                 and math.dist(start, end) < free[0]):
             return  # the tool moved less than its gap to every solid: nothing can be touched
         material = self._material()
         for name, solid in self.data.machine_setup.solids():
-            if (isinstance(material, MilledBlank) and name == "blank" and name in self._contact.touching
+            if (isinstance(material, MilledBlank) and name == "blank" and name in self.state.touching
                     and body.shape != BALL and self._crash_number() is None):
                 material.cut(body, start, end)  # goes on cutting (no new event) until it is clear of the blank
                 if clearance(body, solid, end) > 0.0:
-                    self._contact.touching.discard(name)
+                    self.state.touching.discard(name)
                 continue
             if material is not None and name == "blank" and (
                     isinstance(material, TurnedBar) or material.touches_cut(body, start, end)):
                 self._watch_material(material, body, before, after, start, end)
                 continue
-            touching_before = name in self._contact.touching
+            touching_before = name in self.state.touching
             t = first_contact(body, solid, start, end)
             if t is None:
-                self._contact.touching.discard(name)
+                self.state.touching.discard(name)
                 continue
             if t == 0.0 and not touching_before and _leaving(body, solid, start, end):
                 continue  # on the surface (not seen arriving: the solid or the tool changed) and moving off
             if t > 0.0 or not touching_before:
-                self._contact.touching.add(name)
+                self.state.touching.add(name)
                 self._on_contact(name, body, before, after, t)
             elif clearance(body, solid, end) < clearance(body, solid, start) - DEEPER_MM:
                 self._on_deeper(name, body, solid, before, after, start, end)
             if isinstance(material, MilledBlank) and name == "blank" and self._crash_number() is None:
                 material.cut(body, start, end)  # a rotating cutter at feed in the blank cuts it
             if clearance(body, solid, end) > 0.0:
-                self._contact.touching.discard(name)
+                self.state.touching.discard(name)
 
     def _watch_material(self, material: TurnedBar | MilledBlank, body: ToolBody, before: dict[str, float],
                         after: dict[str, float], start: Point, end: Point) -> None:
@@ -236,7 +247,7 @@ class ContactWatch:
         a cut): a first touch is a contact event; while the tool stays on the surface it cuts
         without new events (a crash still stops it, a probe driven on past its overtravel is
         one); a rotating cutter at feed removes what it passes."""
-        touching = self._contact.touching
+        touching = self.state.touching
         crash = self._crash_number()
         cutting = crash is None and body.shape != BALL
         if "blank" in touching and cutting:
@@ -252,7 +263,7 @@ class ContactWatch:
             if "blank" in touching and material.clearance(body, end) > leave_mm:
                 touching.discard("blank")
             return
-        probe = body.shape == BALL and self.machine.kind != "lathe"
+        probe = body.shape == BALL and self.plant.machine.kind != "lathe"
         if "blank" not in touching:
             touching.add("blank")
             self._on_contact("blank", body, before, after, t)
@@ -269,18 +280,19 @@ class ContactWatch:
         """What is left of the clamped blank: on a lathe the bar as turned, on a mill the block
         or round blank as milled (whole again for a newly clamped blank; not retained data)."""
         blank = self.data.machine_setup.blank
-        if blank is None or (self.machine.kind == "lathe" and not isinstance(blank, Cylinder)):
+        lathe = self.plant.machine.kind == "lathe"
+        if blank is None or (lathe and not isinstance(blank, Cylinder)):
             return None
-        state = self._contact
+        state = self.state
         if state.material is None or state.material_from is not blank:
-            state.material = TurnedBar.of(blank) if self.machine.kind == "lathe" else MilledBlank.of(blank)
+            state.material = TurnedBar.of(blank) if lathe and isinstance(blank, Cylinder) else MilledBlank.of(blank)
             state.material_from = blank
         return state.material
 
     def _on_contact(self, name: str, body: ToolBody, before: dict[str, float], after: dict[str, float],
                     t: float) -> None:
         at = _point(before, after, t)
-        if body.shape == BALL and self.machine.kind != "lathe":
+        if body.shape == BALL and self.plant.machine.kind != "lathe":
             self._record("probe", name, at)
             self._halt_jog()
             self._measured(at)
@@ -293,7 +305,7 @@ class ContactWatch:
 
     def _on_deeper(self, name: str, body: ToolBody, solid: Any, before: dict[str, float],
                    after: dict[str, float], start: Point, end: Point) -> None:
-        if body.shape == BALL and self.machine.kind != "lathe":
+        if body.shape == BALL and self.plant.machine.kind != "lathe":
             t = first_contact(body, solid, start, end, PROBE_OVERTRAVEL_MM)
             if t is not None:
                 self._crash(ALARM_CRASH_PROBE_OVERTRAVEL, name, _point(before, after, t))
@@ -304,11 +316,11 @@ class ContactWatch:
 
     def _crash_number(self) -> int | None:
         """The crash alarm for a cutter touching now, ``None`` when it is scratching (cutting)."""
-        if self._contact.rapid:
+        if self.state.rapid:
             return ALARM_CRASH_RAPID
-        if self._contact.threading:
+        if self.state.threading:
             return None  # tapping, thread cutting: the spindle turns with the axes (002 L19681)
-        turning = self.outputs.spindle_state in ("M3", "M4") and self.outputs.spindle_rpm > 0.0  # type: ignore[attr-defined]
+        turning = self.outputs.spindle_state in ("M3", "M4") and self.outputs.spindle_rpm > 0.0
         return None if turning else ALARM_CRASH_SPINDLE_STOPPED
 
     def _segment_kind(self) -> str | None:
@@ -318,8 +330,8 @@ class ContactWatch:
         return getattr(segment, "kind", None)
 
     def _moving_at_rapid(self) -> bool:
-        if self.channel.jogging:  # type: ignore[attr-defined]
-            return self._contact.jog_rapid
+        if self.channel.jogging:
+            return self.state.jog_rapid
         return self._segment_kind() == "G0"
 
     # ---------------------------------------------------------------- MEAS / MEAW
@@ -328,7 +340,7 @@ class ContactWatch:
         run, source = self._executing()
         segment = run.segments.get(id(source)) if run is not None and source is not None else None
         measuring = segment if getattr(segment, "measure", None) else None
-        state = self._contact
+        state = self.state
         state.measuring = measuring
         if measuring is not None and id(measuring) != state.measured_block:
             state.measured_block = id(measuring)
@@ -338,7 +350,7 @@ class ContactWatch:
         """The probe switched: in a measuring block its trigger position is the result
         (``$AA_MM`` MCS, ``$AA_MW`` WCS of that block), ``$AC_MEA[1]`` = 1; ``MEAS`` deletes
         the distance to go (the axes brake; the next block starts where they stop)."""
-        state = self._contact
+        state = self.state
         segment = state.measuring
         if segment is None or state.switched:
             return
@@ -348,11 +360,11 @@ class ContactWatch:
                    for a in segment.end_mcs if a in segment.end_wcs}
         state.measured_wcs = {a: value - offsets.get(a, 0.0) for a, value in at.items()}
         if segment.measure == "MEAS":
-            self._path_motion().abort(keep_spindles=self.machine.spindles)  # type: ignore[attr-defined]
+            self.path_motion().abort(keep_spindles=self.plant.machine.spindles)
 
-    def _measurement(self, name: str, axis: str) -> float:
+    def measurement(self, name: str, axis: str) -> float:
         """The interpreter's ``$AA_MM[axis]``, ``$AA_MW[axis]``, ``$AC_MEA[1]``."""
-        state = self._contact
+        state = self.state
         if name == "$AC_MEA":
             return 1.0 if state.switched else 0.0
         values = state.measured_mcs if name == "$AA_MM" else state.measured_wcs
@@ -361,32 +373,32 @@ class ContactWatch:
     def _executing(self) -> tuple[Any, Any]:
         """The program run whose block executes now and that block's source (``None``s in JOG)."""
         run = self.channel.active_run()
-        return run, (self._path_motion().current_source() if run is not None else None)  # type: ignore[attr-defined]
+        return run, (self.path_motion().current_source() if run is not None else None)
 
     def _record(self, kind: str, name: str, at: dict[str, float]) -> None:
-        state = self._contact
+        state = self.state
         state.seq += 1
-        state.events.append(ContactEvent(state.seq, kind, name, at, self.outputs.tool, self.outputs.edge,  # type: ignore[attr-defined]
-                                         self._time_s))  # type: ignore[attr-defined]
+        state.events.append(ContactEvent(state.seq, kind, name, at, self.outputs.tool, self.outputs.edge,
+                                         self.clock()))
         del state.events[:-EVENT_LIMIT]
 
     def _crash(self, number: int, name: str, at: dict[str, float]) -> None:
-        if any(entry.number == number for entry in self.alarms.active):  # type: ignore[attr-defined]
+        if any(entry.number == number for entry in self.alarms.active):
             self._halt_jog()  # still crashed (braking, or driven on): one event, one alarm
             return
         self._record("crash", name, at)
         what = "blank" if name == "blank" else "reference block"
         _, source = self._executing()
         where = {"file": source.file, "line": source.line, "n": source.n} if source is not None else {}
-        self._motion_alarm(NcAlarmError(number, f"T{self.outputs.tool}", what, **where))  # type: ignore[attr-defined]
+        self.motion_alarm(NcAlarmError(number, f"T{self.outputs.tool}", what, **where))
         self._halt_jog()
 
     def _halt_jog(self) -> None:
         """Brake every JOG motion (an increment is not continued); the channel ends JOG when
         the axes stand, as after a released key."""
-        if not self.channel.jogging:  # type: ignore[attr-defined]
+        if not self.channel.jogging:
             return
-        for axis in self.machine.path_axes:
-            self.motion.jog_continuous(axis, 0, 0.0)
-        self.channel.jog_targets.clear()  # type: ignore[attr-defined]
-        self.channel.jog_rest.clear()  # type: ignore[attr-defined]
+        for axis in self.plant.machine.path_axes:
+            self.plant.motion.jog_continuous(axis, 0, 0.0)
+        self.channel.jog_targets.clear()
+        self.channel.jog_rest.clear()

@@ -160,7 +160,7 @@ class DataWrites:
         if planned and not motion.is_idle():
             return  # axes in motion keep their data; the next RESET / NEW CONFIG adopts it
         self.machine = machine
-        self._renew_interpreters()  # type: ignore[attr-defined]
+        self.interpreters.renew(self.outputs)  # type: ignore[attr-defined]
         if not planned:
             return  # the stand-in motion has no machine values
         positions = dict(motion.positions_mcs())

@@ -24,6 +24,7 @@ from nck.channel import RESET
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import RuntimeTimer
 from nck.interp.api import Interpreter
+from nck.kernel_interpreters import ChannelInterpreters
 from nck.motion.instant import InstantMotion
 from nck.errors import NcAlarmError
 from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun
@@ -39,7 +40,7 @@ class BlockSearchControl:
     switches: ControlSwitches  # program test is switched on and off for SERUPRO
     runtime: RuntimeTimer
     _test_motion: InstantMotion | None  # the simulated axes under program test
-    _interpreters: dict[str, Interpreter]
+    interpreters: ChannelInterpreters  # the channel's interpreters (nck.kernel_interpreters)
     _interpreter: Callable[[str], Interpreter]  # the mode's interpreter (created on first use)
     _new_run: Callable[[str, str, Interpreter], ProgramRun]
     _begin_run: Callable[[ProgramRun], None]
@@ -118,7 +119,7 @@ class BlockSearchControl:
         self.channel.serupro = False
         self.switches.program_control["program_test"] = False
         self._test_motion = None
-        for interp in self._interpreters.values():
+        for interp in self.interpreters.all():
             flags = getattr(interp, "flags", None)
             if isinstance(flags, dict):
                 flags["test"] = False

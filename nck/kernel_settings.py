@@ -24,6 +24,8 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import PartCounters
 from nck.interp.api import Interpreter
 from nck.kernel_data import DataWrites
+from nck.kernel_interpreters import ChannelInterpreters
+from nck.kernel_setup import JobSetup
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
 from nck.value_text import InvalidValue, number_from_text
@@ -46,14 +48,14 @@ class ControlSettings(DataWrites):
     counters: PartCounters  # $AC_…_PARTS written through WriteData
     logbook: list[LogbookEntry]  # refused password entries
     alarms: AlarmServer
-    _interpreters: dict[str, Interpreter]  # the kernel's interpreters, by mode (AUTO, MDA)
+    interpreters: ChannelInterpreters  # the channel's interpreters (nck.kernel_interpreters)
+    setup: JobSetup  # Set WO and the stored frames (nck.kernel_setup)
     _test_motion: InstantMotion | None  # the simulated axes under program test
     _access: AccessControl | None  # None: no protection (a bare kernel), created by a password entry
     _keyswitch: int  # keyswitch position 0 … 3 while there is no access control
     _time_s: float
     _raise_number: Callable[..., None]  # raises an alarm by number with its parameters
     _refuse_selection_in_serupro: Callable[[str], SubmitResult | None]  # nck.kernel_search
-    _activate_stored_frames: Callable[[], None]  # nck.kernel_setup
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
@@ -90,7 +92,7 @@ class ControlSettings(DataWrites):
             if self.channel.situation.channel == ACTIVE:
                 return Rejected("Skip levels can be changed only in STOP or RESET")
             self.switches.program_control[name] = levels
-            for interp in self._interpreters.values():
+            for interp in self.interpreters.all():
                 self._apply_skip_levels(interp)
         else:
             return Rejected(f"unknown program control {name!r}")
@@ -206,7 +208,7 @@ class ControlSettings(DataWrites):
         if not int(self.machine_data.active_value("MD9440") or 0):
             return
         if self.channel.situation.channel == RESET:
-            self._activate_stored_frames()
+            self.setup.activate_stored_frames()
         else:
             self.channel.offsets_edited = True
 
@@ -214,7 +216,7 @@ class ControlSettings(DataWrites):
         """NC START: offsets edited while stopped under MD9440 = 1 become active."""
         if self.channel.offsets_edited:
             self.channel.offsets_edited = False
-            self._activate_stored_frames()
+            self.setup.activate_stored_frames()
 
     def _apply_dry_run(self) -> None:
         """Hand the dry run (SD42100 feed, SD42101 mode) or its absence to the motion systems
@@ -226,7 +228,7 @@ class ControlSettings(DataWrites):
         for motion in (self.motion, self._test_motion):
             if motion is not None:
                 motion.set_dry_run(feed, mode)
-        for interp in self._interpreters.values():
+        for interp in self.interpreters.all():
             flags = getattr(interp, "flags", None)
             if isinstance(flags, dict):
                 flags["dry_run"] = on

@@ -58,7 +58,7 @@ def test_02_nc_stop_interrupts_and_nc_start_resumes_in_the_same_block() -> None:
     assert until_state(nck, "reset", "aborted")
     assert x(nck) == pytest.approx(100.0)
     assert nck.positions_mcs()["Y"] == pytest.approx(10.0)
-    assert nck._interpreters["AUTO"].steps == 3  # N10, N20, N30 once each: N10 not re-run
+    assert nck.interpreters.get("AUTO").steps == 3  # N10, N20, N30 once each: N10 not re-run
 
 
 # 3 -------------------------------------------------------------------------
@@ -73,7 +73,7 @@ def test_03_reset_aborts_clears_reset_alarms_and_restarts_at_block_one() -> None
     assert nck.submit(c.Reset()) == c.Accepted()
     assert states(nck) == ("AUTO", "reset", "aborted")
     assert alarm_numbers(nck) == []
-    interp = nck._interpreters["AUTO"]
+    interp = nck.interpreters.get("AUTO")
     assert interp.absolute is True  # G group 14 back to its reset value (G90)
     assert nck.submit(c.CycleStart()) == c.Accepted()
     nck.step(1)

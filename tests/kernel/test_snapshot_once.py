@@ -100,6 +100,6 @@ def test_new_config_gives_the_channel_the_new_machines_interpreter() -> None:
     assert isinstance(nck_.submit(cmd.WriteData("MD32000[Y]", 2000)), cmd.Accepted)
     assert isinstance(nck_.submit(cmd.ActivateMachineData()), cmd.Accepted)
     assert nck_.machine is not machine and nck_.machine.md_value("MD32000", "Y", None) == 2000
-    holder = nck_._frame_interpreter()
+    holder = nck_.setup.frame_interpreter()
     assert holder.machine is nck_.machine
     assert created[-1] is holder
