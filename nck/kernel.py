@@ -129,8 +129,8 @@ class Nck(ControlSettings, BlockSearchControl):
         self.switches = ControlSwitches()  # program control and overrides
         self.outputs = MachineOutputs()  # active T/D, spindle, aux functions of the main run
         # The channel's interpreters by mode, the one holding the channel's state, the kept G codes
-        self.interpreters = ChannelInterpreters(self.plant, self.programs,
-                                                self.data, interpreter_factory or _default_interpreter_factory,
+        self.interpreters = ChannelInterpreters(self.plant, self.programs, self.data,
+                                                interpreter_factory or _default_interpreter_factory,
                                                 self._wire_interpreter)
         md27880 = self.machine.md_value("MD27880", None, DEFAULT_PART_COUNTER)
         md27882 = self.machine.md_value("MD27882", None, None)
@@ -160,10 +160,10 @@ class Nck(ControlSettings, BlockSearchControl):
         self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
         self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
         # Contacts with the blank / reference block (nck.kernel_contact)
-        self.contact = ContactWatch(self.plant, self.data, self.channel, self.switches, self.outputs, self.alarms,
-                                    self._ipo_s, path_motion=self._path_motion, clock=lambda: self._time_s,
-                                    motion_alarm=self._motion_alarm)
-        self.manual = ManualControl(self.plant, self.data, self.channel, self.contact.state, self._park)  # JOG, INC, REF
+        self.contact_watch = ContactWatch(
+            self.plant, self.data, self.channel, self.switches, self.outputs, self.alarms, self._ipo_s,
+            path_motion=self._path_motion, clock=lambda: self._time_s, motion_alarm=self._motion_alarm)
+        self.manual = ManualControl(self.plant, self.data, self.channel, self.contact_watch.state, self._park)  # JOG, INC, REF
         self.setup = JobSetup(self.plant, self.data, self.channel, self.interpreters, self._require)  # Set WO, set-up
         self._apply_overrides()
         self.interpreters.get("AUTO")  # its reset G codes are shown from power on
@@ -334,11 +334,11 @@ class Nck(ControlSettings, BlockSearchControl):
 
     def contact_events(self, since_seq: int = 0) -> tuple[ContactEvent, ...]:
         """The contacts with the blank or the reference block after ``since_seq`` (oldest first, bounded)."""
-        return self.contact.events(since_seq)
+        return self.contact_watch.events(since_seq)
 
     def probe_deflected(self) -> bool:
         """True while the active tool is a 3D probe in contact with a solid."""
-        return self.contact.probe_deflected()
+        return self.contact_watch.probe_deflected()
 
     def alarm_history(self) -> tuple[AlarmEntry, ...]:
         """The alarm log with come/go times, oldest first (bounded)."""
@@ -661,8 +661,8 @@ class Nck(ControlSettings, BlockSearchControl):
             if events:
                 fed = False
                 self._handle_events(run, events)
-        cycles = self.contact.cycle_limit(self._batch_size(limit, fed))
-        before = self.contact.positions_before()
+        cycles = self.contact_watch.cycle_limit(self._batch_size(limit, fed))
+        before = self.contact_watch.positions_before()
         if cycles > 1 and self._event_batching():
             cycles = self.motion.advance_cycles(cycles, self._feed_between_cycles)
         else:
@@ -674,7 +674,7 @@ class Nck(ControlSettings, BlockSearchControl):
             self._test_motion.advance(dt_s)
         for error in self.motion.drain_alarms():
             self._motion_alarm(error)
-        self.contact.watch(before)
+        self.contact_watch.watch(before)
         cleared = getattr(self.motion, "drain_cleared_alarms", None)
         if cleared is not None:
             for number in cleared():
@@ -886,7 +886,7 @@ class Nck(ControlSettings, BlockSearchControl):
             # Read only after the implicit STOPRE of needs_preprocessing_stop().
             interp.position_source = self._actual_position  # type: ignore[attr-defined]
         if hasattr(interp, "measurement_source"):  # MEAS/MEAW results (nck.kernel_contact)
-            interp.measurement_source = self.contact.measurement  # type: ignore[attr-defined]
+            interp.measurement_source = self.contact_watch.measurement  # type: ignore[attr-defined]
         if hasattr(interp, "access_level"):  # setting-data writes of part programs
             interp.access_level = self._access_level  # type: ignore[attr-defined]
         self._apply_skip_levels(interp)
@@ -966,8 +966,9 @@ class Nck(ControlSettings, BlockSearchControl):
 
 COMMANDS: CommandTable[Nck] = CommandTable()
 """Where each command is carried out: command class -> the ``Nck`` method (some live in the
-kernel_* modules Nck is assembled from) or the method of one of its parts (``nck.manual``:
-nck.kernel_manual). Typed: mypy checks that a handler takes its command."""
+kernel_* mixins Nck is still assembled from) or the method of one of its parts (``Nck.manual``
+of nck.kernel_manual, ``Nck.setup`` of nck.kernel_setup). Typed: mypy checks that a handler
+takes its command."""
 COMMANDS.register(cmd.SelectMode, Nck._select_mode)
 COMMANDS.register_part(cmd.SelectMachineFunction, lambda nck: nck.manual, ManualControl.select_machine_function)
 COMMANDS.register_part(cmd.SelectIncrement, lambda nck: nck.manual, ManualControl.select_increment)

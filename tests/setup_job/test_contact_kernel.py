@@ -150,7 +150,7 @@ def probe_blank(x: float, y: float, angle: float, feed: int, override: float) ->
     sx, sy = cx - 45.0 * dx, cy - 45.0 * dy  # 45 mm from the centre: outside the 60 x 40 block
     nck.submit(SetOverride("feed", override))
     mda(nck, f"T1 D1 M6\nG0 X{sx:.4f} Y{sy:.4f}\nZ-230\nG1 X{cx:.4f} Y{cy:.4f} F{feed}\n")
-    body, offset = nck.contact.tool_body()
+    body, offset = nck.contact_watch.tool_body()
     found = events(nck)
     assert [e.kind for e in found] == ["probe", "crash"]  # switched, then driven on past overtravel
     assert [a.number for a in nck.alarms.active] == [90003]
