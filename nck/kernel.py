@@ -91,7 +91,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
-class Nck(ControlSettings, BlockSearchControl):
+class Nck(ControlSettings):
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -165,6 +165,10 @@ class Nck(ControlSettings, BlockSearchControl):
             path_motion=self._path_motion, clock=lambda: self._time_s, motion_alarm=self._motion_alarm)
         self.manual = ManualControl(self.plant, self.data, self.channel, self.contact_watch.state, self._park)  # JOG, INC, REF
         self.setup = JobSetup(self.plant, self.data, self.channel, self.interpreters, self._require)  # Set WO, set-up
+        self.search = BlockSearchControl(  # block search, SERUPRO
+            self.plant, self.channel, self.switches, self.runtime, self.interpreters, new_run=self._new_run,
+            begin_run=self._begin_run, path_motion=self._path_motion, program_test_ended=self._program_test_ended,
+            output=self._output, raise_number=self._raise_number)
         self._apply_overrides()
         self.interpreters.get("AUTO")  # its reset G codes are shown from power on
 
@@ -472,7 +476,7 @@ class Nck(ControlSettings, BlockSearchControl):
                 run.requeue([], replace(approach, start_mcs=self._path_positions(self._path_motion())))
             self.channel.transition("program_start")
             return Accepted()
-        self._start_serupro_spindles()
+        self.search.start_serupro_spindles()
         self._resume_motion(run)
         run.continue_after_stop()
         self.channel.transition("program_start")
@@ -576,7 +580,7 @@ class Nck(ControlSettings, BlockSearchControl):
             self.channel.estop_active = False
         self.alarms.set_message("", self._time_s)
         self.channel.situation = next_state(self.channel.situation, "reset") or self.channel.situation
-        self._end_serupro()
+        self.search.end_serupro()
         if not self.switches.program_control["program_test"]:
             self._test_motion = None
         self._activate_data("reset")  # stored MD of activation re/cf take effect
@@ -744,7 +748,7 @@ class Nck(ControlSettings, BlockSearchControl):
                 self._mark_interrupted(run)
                 self.channel.transition("block_stop")
                 if event.text == SEARCH_TARGET_FOUND:
-                    self._serupro_target_found(run)
+                    self.search.serupro_target_found(run)
             elif event.kind == "end":
                 self._program_end(run, event.text)
 
@@ -761,7 +765,7 @@ class Nck(ControlSettings, BlockSearchControl):
         if run.kind == "AUTO":
             self.counters.on_program_end(bool(self.switches.program_control["program_test"]))
             self.runtime.program_end()
-            self._end_serupro()  # the target was not found
+            self.search.end_serupro()  # the target was not found
         if kind in END_COMMANDS:
             self.outputs.aux.pop("T", None)  # no preselection beyond M2 / M30
             self._reset_spindles_at_program_end(run.name)
@@ -951,6 +955,13 @@ class Nck(ControlSettings, BlockSearchControl):
         except Exception:  # noqa: BLE001 - the alarm server itself failed
             pass
 
+    def _program_test_ended(self) -> None:
+        """Program test was switched off by SERUPRO: the simulated axes go, the machine's get
+        the override and dry-run switches."""
+        self._test_motion = None
+        self._apply_overrides()
+        self._apply_dry_run()
+
     def _internal_reset(self) -> None:
         """After an internal error in a cycle: stop everything, keep the alarms."""
         try:
@@ -967,7 +978,7 @@ class Nck(ControlSettings, BlockSearchControl):
 COMMANDS: CommandTable[Nck] = CommandTable()
 """Where each command is carried out: command class -> the ``Nck`` method (some live in the
 kernel_* mixins Nck is still assembled from) or the method of one of its parts (``Nck.manual``
-of nck.kernel_manual, ``Nck.setup`` of nck.kernel_setup). Typed: mypy checks that a handler
+of nck.kernel_manual, ``Nck.setup`` of nck.kernel_setup, ``Nck.search`` of nck.kernel_search). Typed: mypy checks that a handler
 takes its command."""
 COMMANDS.register(cmd.SelectMode, Nck._select_mode)
 COMMANDS.register_part(cmd.SelectMachineFunction, lambda nck: nck.manual, ManualControl.select_machine_function)
@@ -983,7 +994,7 @@ COMMANDS.register(cmd.SetOverride, Nck._set_override)
 COMMANDS.register(cmd.CancelAlarms, Nck._cancel_alarms)
 COMMANDS.register_part(cmd.Jog, lambda nck: nck.manual, ManualControl.jog)
 COMMANDS.register(cmd.SetControllerEnable, Nck._set_controller_enable)
-COMMANDS.register(cmd.StartBlockSearch, Nck._start_block_search)
+COMMANDS.register_part(cmd.StartBlockSearch, lambda nck: nck.search, BlockSearchControl.start_block_search)
 COMMANDS.register(cmd.WriteData, Nck._write_data)
 COMMANDS.register(cmd.SetKeyswitch, Nck._set_keyswitch)
 COMMANDS.register(cmd.EnterPassword, Nck._enter_password)

@@ -1,4 +1,4 @@
-"""Block search on :class:`nck.kernel.Nck` (a mixin): the four search types of 002 L18283-18309.
+"""Block search, a part of :class:`nck.kernel.Nck`: the four search types of 002 L18283-18309.
 
 Types 1, 2 and 4 interpret (or skip) up to the target at once (:meth:`ProgramRun.search`);
 NC START outputs the action blocks, 10208 follows, the next NC START continues.
@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
-from nck.channel_state import ChannelState, ControlSwitches
+from nck.channel_state import ChannelState, ControlSwitches, MachinePlant
 from nck import commands as cmd
 from nck.block_search import SEARCH_TYPES, SERUPRO
 from nck.canon import Source, SpindleCommand
@@ -25,7 +25,6 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import RuntimeTimer
 from nck.interp.api import Interpreter
 from nck.kernel_interpreters import ChannelInterpreters
-from nck.motion.instant import InstantMotion
 from nck.errors import NcAlarmError
 from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun
 
@@ -33,25 +32,29 @@ ALARM_SELECTION_IN_SERUPRO = 16935  # program test or dry run selected during SE
 
 
 class BlockSearchControl:
-    """Block search of every type; mixed into ``Nck``: what it uses of the kernel is declared here."""
+    """Block search of every type on the parts it is given; the kernel's steps it needs
+    (a new run, starting it, the program-test motion off, outputs, alarms) are handed in."""
 
-    motion: Any
-    channel: ChannelState  # the channel's state (nck.channel_state): the run, REPOS point, SERUPRO
-    switches: ControlSwitches  # program test is switched on and off for SERUPRO
-    runtime: RuntimeTimer
-    _test_motion: InstantMotion | None  # the simulated axes under program test
-    interpreters: ChannelInterpreters  # the channel's interpreters (nck.kernel_interpreters)
-    _interpreter: Callable[[str], Interpreter]  # the mode's interpreter (created on first use)
-    _new_run: Callable[[str, str, Interpreter], ProgramRun]
-    _begin_run: Callable[[ProgramRun], None]
-    _path_positions: Callable[[Any], dict[str, float]]
-    _path_motion: Callable[[], Any]
-    _apply_overrides: Callable[[], None]
-    _apply_dry_run: Callable[[], None]
-    _output: Callable[[object], None]
-    _raise_number: Callable[..., None]
+    def __init__(self, plant: MachinePlant, channel: ChannelState, switches: ControlSwitches,
+                 runtime: RuntimeTimer, interpreters: ChannelInterpreters, *,
+                 new_run: Callable[[str, str, Interpreter], ProgramRun],
+                 begin_run: Callable[[ProgramRun], None], path_motion: Callable[[], Any],
+                 program_test_ended: Callable[[], None], output: Callable[[object], None],
+                 raise_number: Callable[..., None]) -> None:
+        self.plant = plant  # the machine's axes: where a search starts from
+        self.channel = channel  # the run, REPOS point, SERUPRO
+        self.switches = switches  # program test is switched on and off for SERUPRO
+        self.runtime = runtime
+        self.interpreters = interpreters
+        self.new_run = new_run  # a program run of the kernel (its tool, position, spindle synchronised)
+        self.begin_run = begin_run  # the run starts from reset
+        self.path_motion = path_motion  # the motion system programs run on (the simulated one in program test)
+        self.program_test_ended = program_test_ended  # the simulated axes go; overrides and dry run to the machine's
+        self.output = output  # a spindle command to the machine
+        self.raise_number = raise_number  # an alarm by number with its parameters
 
-    def _start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
+    def start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
+        """Search the target in the selected program (AUTOMATIC, channel reset or cascaded)."""
         if self.channel.situation.mode != "AUTO":
             return Rejected("Block search is possible in AUTOMATIC only")
         if self.channel.selected is None:
@@ -63,12 +66,12 @@ class BlockSearchControl:
         cascaded = self.channel.run is not None and self.channel.run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
         if self.channel.situation.channel != RESET and not cascaded:
             return Rejected("Block search is possible only in channel reset")
-        interp = self._interpreter("AUTO")
+        interp = self.interpreters.get("AUTO")
         interp.reset()
         interp.start(self.channel.selected)
-        run = self._new_run("AUTO", self.channel.selected, interp)
+        run = self.new_run("AUTO", self.channel.selected, interp)
         try:
-            result = run.search(command.target, self._path_positions(self.motion),
+            result = run.search(command.target, self.plant.positions(),
                                 command.search_type)
         except NcAlarmError:
             interp.reset()
@@ -90,20 +93,20 @@ class BlockSearchControl:
         assert self.channel.selected is not None
         self.switches.program_control["program_test"] = True
         self.channel.serupro = True
-        interp = self._interpreter("AUTO")
+        interp = self.interpreters.get("AUTO")
         interp.reset()
         interp.start(self.channel.selected)
-        run = self._new_run("AUTO", self.channel.selected, interp)
+        run = self.new_run("AUTO", self.channel.selected, interp)
         run.stop_before(target)
-        self._begin_run(run)
+        self.begin_run(run)
         self.channel.transition("program_start")
         return Accepted()
 
-    def _serupro_target_found(self, run: ProgramRun) -> None:
+    def serupro_target_found(self, run: ProgramRun) -> None:
         """The program stands before the target block: program test off; the next NC START
         repositions from the real axes to where the simulated ones stand."""
-        simulated = self._path_positions(self._path_motion())
-        self._end_serupro()
+        simulated = self.plant.positions(self.path_motion())
+        self.end_serupro()
         self.channel.repos_point = simulated
         self.channel.parked = []
         view = getattr(run.interp, "modal_view", None)
@@ -112,30 +115,28 @@ class BlockSearchControl:
             self.channel.serupro_spindle = SpindleCommand(Source(run.name, 0), 1, state=modal.spindle_state,
                                                    speed_rpm=modal.spindle_speed_rpm)
 
-    def _end_serupro(self) -> None:
+    def end_serupro(self) -> None:
         """Program test off again (target found, program end or RESET)."""
         if not self.channel.serupro:
             return
         self.channel.serupro = False
         self.switches.program_control["program_test"] = False
-        self._test_motion = None
         for interp in self.interpreters.all():
             flags = getattr(interp, "flags", None)
             if isinstance(flags, dict):
                 flags["test"] = False
-        self._apply_overrides()
-        self._apply_dry_run()
+        self.program_test_ended()
 
-    def _start_serupro_spindles(self) -> None:
+    def start_serupro_spindles(self) -> None:
         """NC START after SERUPRO: the spindles start before the axes reposition."""
         command, self.channel.serupro_spindle = self.channel.serupro_spindle, None
         if command is not None:
-            self._output(command)
+            self.output(command)
 
-    def _refuse_selection_in_serupro(self, name: str) -> SubmitResult | None:
+    def refuse_selection_in_serupro(self, name: str) -> SubmitResult | None:
         """Program test and dry run cannot be selected while SERUPRO runs (16935)."""
         if self.channel.serupro and name in ("program_test", "dry_run"):
-            self._raise_number(ALARM_SELECTION_IN_SERUPRO)
+            self.raise_number(ALARM_SELECTION_IN_SERUPRO)
             return Rejected("Program test and dry run cannot be selected during SERUPRO",
                             alarm=ALARM_SELECTION_IN_SERUPRO)
         return None

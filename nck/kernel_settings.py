@@ -25,6 +25,7 @@ from nck.counters import PartCounters
 from nck.interp.api import Interpreter
 from nck.kernel_data import DataWrites
 from nck.kernel_interpreters import ChannelInterpreters
+from nck.kernel_search import BlockSearchControl
 from nck.kernel_setup import JobSetup
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
@@ -55,11 +56,11 @@ class ControlSettings(DataWrites):
     _keyswitch: int  # keyswitch position 0 … 3 while there is no access control
     _time_s: float
     _raise_number: Callable[..., None]  # raises an alarm by number with its parameters
-    _refuse_selection_in_serupro: Callable[[str], SubmitResult | None]  # nck.kernel_search
+    search: BlockSearchControl  # refuses program test and dry run during SERUPRO (nck.kernel_search)
 
     def _set_program_control(self, command: cmd.SetProgramControl) -> SubmitResult:
         name, value = command.name, command.value
-        refused = self._refuse_selection_in_serupro(name)
+        refused = self.search.refuse_selection_in_serupro(name)
         if refused is not None:
             return refused
         if name == "single_block":
