@@ -142,7 +142,8 @@ class JobSetup:
         return self.data.setframe if target == SETFR else self.data.settable_frame(target)
 
     def frame_interpreter(self) -> Any:
-        """The interpreter whose frames the WCS display shows (the MDA one when none ran yet)."""
+        """The interpreter whose frames Set WO changes: the run's, else the one holding the channel's
+        state, else AUTOMATIC's (created at power on)."""
         run = self.channel.active_run()
         if run is not None:
             return run.interp
