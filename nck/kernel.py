@@ -365,7 +365,8 @@ class Nck(ControlSettings):
     def status(self) -> NckStatus:
         """The immutable snapshot, built once after each command or kernel step (not once per
         call); ``seq`` grows when anything in it changed. Reading it changes nothing."""
-        if self._snapshot is None:
+        if self._snapshot is None or self._snapshot.access_level != self._access_level():
+            # (The access control is the session's too: a level changed there shows at once.)
             body = build_status(self._status_sources())
             if body != self._last_body:
                 self._seq += 1

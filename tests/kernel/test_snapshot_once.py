@@ -103,3 +103,15 @@ def test_new_config_gives_the_channel_the_new_machines_interpreter() -> None:
     holder = nck_.setup.frame_interpreter()
     assert holder.machine is nck_.machine
     assert created[-1] is holder
+
+
+def test_an_access_level_changed_by_the_session_shows_at_once() -> None:
+    # The kernel shares its access control with the data directory's session (nck.build).
+    from nck.access import AccessControl, AccessState
+
+    access = AccessControl(AccessState(keyswitch_position=0))
+    nck_ = build_nck(load_machine(), NcData(), MemorySource(), access=access,
+                     motion_factory=instant_motion_factory)
+    assert nck_.status().access_level == 7
+    access.set_keyswitch(3)
+    assert nck_.status().access_level == 4
