@@ -9,6 +9,7 @@ leave every other section intact.
 
 from __future__ import annotations
 
+import atexit
 import shutil
 import tempfile
 from pathlib import Path
@@ -27,6 +28,7 @@ SECTION_NAMES = sorted(SECTIONS)
 def _template() -> Path:
     """A data directory with two generations of every section."""
     root = Path(tempfile.mkdtemp(prefix="nck-corrupt-template-"))
+    atexit.register(shutil.rmtree, root, True)  # one per test process: gone when it ends
     session = Session.open(root, install_samples=False)
     data = session.ncdata
     data.tools[(1, 1)] = ToolEdge({1: 120.0, 3: 75.5, 6: 5.0})
