@@ -29,6 +29,7 @@ from nck.motion.servo_paths import process_fast
 
 SMALL_ROWS = 8  # up to this many rows the speed range is taken in Python floats (cheaper than numpy)
 
+
 def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
     """The following-error bound after ``rows`` when no monitor can respond in them, else None.
 
