@@ -209,13 +209,18 @@ class CheckAndSimulation:
             self.app.call_from_thread(self._apply_marks, generation, batch, True)
 
     def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
-        """A check that raised is a bug, not a problem of the program (those are alarms): the
-        app's internal-error report keeps its traceback (and fails a test run); the editor
-        carries on without the check's marks."""
-        if event.worker.group != "program-check" or event.state != WorkerState.ERROR:
+        """A check or simulation that raised is a bug, not a problem of the program (those are
+        alarms and simulation events): the app's internal-error report keeps its traceback (and
+        fails a test run); the editor carries on without the check's marks or the picture."""
+        if event.state != WorkerState.ERROR or event.worker.group not in ("program-check",
+                                                                          "program-material"):
             return
-        self._check_running = False
-        self._show_cursor_message()
+        if event.worker.group == "program-check":
+            self._check_running = False
+            self._show_cursor_message()
+        else:
+            self.stock.set_picture(StockPicture(), "simulation not possible")
+            self.toolpath.set_pieces([], "simulation not possible")
         error = event.worker.error
         report = getattr(self.app, "report_internal_error", None)
         if report is None or not isinstance(error, Exception):
@@ -275,12 +280,9 @@ class CheckAndSimulation:
     def _material_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
         """The AUTO run and the material removal, off the key path (a worker thread)."""
         worker = get_current_worker()
-        try:
-            simulation = setting.simulate(Path(program).name, text, programs=programs)
-        except Exception as exc:  # never crash the screen
-            self.app.call_from_thread(self.stock.set_picture, StockPicture(), f"simulation failed: {exc!r}")
-            self.app.call_from_thread(self.toolpath.set_pieces, [], f"simulation failed: {exc!r}")
-            return
+        # What the program does wrong comes as alarms and events of the simulation; an exception
+        # here is a bug (on_worker_state_changed reports it).
+        simulation = setting.simulate(Path(program).name, text, programs=programs)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._show_material, simulation)
 

@@ -1,7 +1,7 @@
-"""A check that raises is a bug of the check, not a problem of the program: it reaches the tests
-(the app's internal-error report raises under pytest) and is never shown as a Python text in
-the panel's words ("Check failed: TypeError(...)" was); what a program does wrong stays an
-alarm on its line."""
+"""A check or simulation that raises is a bug, not a problem of the program: it reaches the
+tests (the app's internal-error report raises under pytest) and is never shown as a Python text
+in the panel's words ("Check failed: TypeError(...)" and "simulation failed: TypeError(...)"
+were); what a program does wrong stays an alarm on its line."""
 
 from __future__ import annotations
 
@@ -16,6 +16,10 @@ from tests.program_screens.conftest import SIZE, make_program_app, settle
 
 def _broken_check(*args: object, **kwargs: object) -> None:
     raise TypeError("a bug in the check")
+
+
+def _broken_simulation(*args: object, **kwargs: object) -> None:
+    raise TypeError("a bug in the simulation")
 
 
 async def test_a_bug_in_the_check_fails_the_test(data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -54,3 +58,28 @@ async def test_a_faulty_program_is_an_alarm_on_its_line(data_dir: Path) -> None:
         await settle(pilot)
         assert [(m.line, m.number) for m in screen.editor.error_marks.values()] == [(9, 12080)]
         assert app.internal_errors == []
+
+
+async def test_a_bug_in_the_simulation_fails_the_test(data_dir: Path,
+                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(CheckContext, "simulate", _broken_simulation)
+    app = make_program_app(data_dir)
+    with pytest.raises(TypeError, match="a bug in the simulation"):
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("alt+n", "f3", "f5")  # DEMO.MPF in the editor, Simulation
+            await settle(pilot)
+
+
+async def test_outside_tests_the_simulation_bug_is_kept_and_said_in_the_panels_words(
+        data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(CheckContext, "simulate", _broken_simulation)
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        monkeypatch.delenv("PYTEST_CURRENT_TEST")
+        await pilot.press("alt+n", "f3", "f5")
+        await settle(pilot)
+        screen = app.screen
+        notes = [screen.stock.status_text, screen.toolpath.status_text]
+        assert notes == ["simulation not possible"] * 2
+        assert len(app.internal_errors) == 1 and "a bug in the simulation" in app.internal_errors[0]
+        assert app.screen is screen and screen.simulating  # the panel carries on
