@@ -102,7 +102,10 @@ def _work_offset(check: Mapping[str, Any], state: State, events: list[dict]) -> 
         wanted = float(check["value"])
     actual = state["offsets"].get(frame, {}).get(axis, 0.0)
     ok = abs(actual - wanted) <= within + 1e-9
-    return ok, f"{frame} {axis} is {actual:.3f} mm, {abs(actual - wanted):.3f} mm from where it belongs (within {within:g})"
+    # The reason names the value entered and the tolerance, never the distance to the true
+    # value: the side window shows it live, and "5.000 mm off" would hand a measuring
+    # exercise's answer to the trainee.
+    return ok, f"{frame} {axis} is {actual:.3f} mm: not within {within:g} mm of where it belongs"
 
 
 def _tool_length(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
@@ -112,7 +115,7 @@ def _tool_length(check: Mapping[str, Any], state: State, events: list[dict]) -> 
         return False, f"T{check['t']} D{check.get('d', 1)} has no data"
     actual, wanted = state["tools"][key], float(check["value"])
     return abs(actual - wanted) <= within + 1e-9, \
-        f"T{check['t']} length is {actual:.3f} mm, {abs(actual - wanted):.3f} mm off (within {within:g})"
+        f"T{check['t']} length is {actual:.3f} mm: not within {within:g} mm of its true length"
 
 
 def _single_block(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
