@@ -727,8 +727,10 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         concerns = []
         status = self.latest_status
         if status is not None and status.channel.channel_state in ("active", "interrupted"):
-            program = status.channel.selected_program or "the MDA program"
-            concerns.append(f"{program} is {'running' if status.channel.channel_state == 'active' else 'interrupted'}")
+            program = status.channel.selected_program or _("the MDA program")
+            concern = _("{program} is running") if status.channel.channel_state == "active" \
+                else _("{program} is interrupted")
+            concerns.append(concern.format(program=program))
         concerns += [work for work in (screen.unsaved_work() for screen in self.area_screens) if work]
         return concerns
 
@@ -744,8 +746,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
                 self.quit_now()
 
         lines = [concern[:1].upper() + concern[1:] + "." for concern in concerns]
-        self.push_screen(ConfirmDialog("\n".join(["Quit the HMI?", *lines, "Unsaved program text is kept"
-                                                   " in the editor journal and offered at the next start."])),
+        self.push_screen(ConfirmDialog("\n".join([_("Quit the HMI?"), *lines, _(
+            "Unsaved program text is kept in the editor journal and offered at the next start.")])),
                          answered)
 
     def quit_now(self) -> None:

@@ -337,7 +337,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
 
     def unsaved_work(self) -> str:
         """What quitting now would leave unsaved: the program with changes (else ``""``)."""
-        return f"unsaved changes in {self.program}" if self.is_modified() else ""
+        return _("unsaved changes in {program}").format(program=self.program) if self.is_modified() else ""
 
     def keep_before_quit(self) -> None:
         """The app is about to close (Ctrl+Q): unsaved text goes into the journal, offered next time.

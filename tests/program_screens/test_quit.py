@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from hmi.i18n import set_language
 from hmi.journal import EditorJournal
 from nck import commands as cmd
 
@@ -68,6 +69,20 @@ async def test_quit_with_interrupted_program_asks(data_dir: Path) -> None:
         assert "is interrupted" in str(app.screen.query_one("#confirm-question").render())
         await burst(pilot, "escape")
         assert app.is_running and type(app.screen).__name__ != "ConfirmDialog"
+
+
+async def test_the_question_in_german(data_dir: Path) -> None:
+    """In German the question and its lines are German (they were English in a German panel)."""
+    set_language("de")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_demo_and_type(app, pilot, "N5")
+        await burst(pilot, "ctrl+q")
+        question = str(app.screen.query_one("#confirm-question").render())
+        assert question.splitlines()[:2] == ["HMI beenden?", "Nicht gespeicherte Änderungen in MPF/DEMO.MPF."]
+        assert "Editor-Journal" in question and "Unsaved" not in question
+        await burst(pilot, "n")
+        assert app.is_running
 
 
 async def test_termination_with_interrupted_program_quits_without_asking(data_dir: Path) -> None:
