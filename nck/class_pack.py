@@ -40,9 +40,9 @@ from nck.exercise import (
 )
 from nck.machine import MachineFileError, load_machine
 from nck.persistence import (
-    ARCHIVE_FORMAT, ARCHIVE_LIMIT_BYTES, ARCHIVE_VERSION, CLASS_PACK_CONTENT, BadFile, decode_document,
+    ARCHIVE_FORMAT, ARCHIVE_VERSION, CLASS_PACK_CONTENT, read_archive_document,
 )
-from nck.regular_files import check_export_target, read_regular_bytes
+from nck.regular_files import check_export_target
 from nck.storage import StorageError, check_program_size
 
 EXERCISE_FILE = re.compile(r"[A-Za-z0-9][A-Za-z0-9_-]{0,63}\.toml")
@@ -139,16 +139,8 @@ def _program_entry(name: str, raw: bytes) -> dict[str, str]:
 
 def read_pack(path: Path | str) -> ClassPack:
     """The checked content of the pack ``path``; PackError says why it cannot be used."""
-    try:
-        document = decode_document(read_regular_bytes(path, ARCHIVE_LIMIT_BYTES, follow_links=True))
-    except OSError as exc:
-        raise PackError(f"{path}: not a readable class pack ({exc.strerror or exc})") from None
-    except BadFile as exc:
-        raise PackError(f"{path}: not a readable class pack ({exc})") from None
-    if not isinstance(document, dict) or document.get("format") != ARCHIVE_FORMAT:
-        raise PackError(f"{path}: not a class pack (not an archive of this trainer)")
-    if document.get("format_version") != ARCHIVE_VERSION:
-        raise PackError(f"{path}: archive version {document.get('format_version')!r} not supported")
+    document = read_archive_document(path, PackError, "class pack",
+                                     "not a class pack (not an archive of this trainer)")
     if document.get("content") != CLASS_PACK_CONTENT:
         raise PackError(f"{path}: an NC data archive, not a class pack (import it with 'nck archive import')")
     try:

@@ -431,6 +431,24 @@ def section_text(name: str, rd: RetainedData) -> str:
     return json.dumps(document, indent=1, sort_keys=True, ensure_ascii=False) + "\n"
 
 
+def read_archive_document(path: Path | str, error: Callable[[str], Exception], noun: str,
+                          not_ours: str) -> dict[str, Any]:
+    """The archive document in the file ``path`` (an NC data archive or a class pack), its format
+    and version checked; otherwise ``error(message)`` is raised, the message naming the file as
+    a ``noun`` ("archive", "class pack") or saying ``not_ours`` for a file of another kind."""
+    try:
+        document = decode_document(read_regular_bytes(path, ARCHIVE_LIMIT_BYTES, follow_links=True))
+    except OSError as exc:
+        raise error(f"{path}: not a readable {noun} ({exc.strerror or exc})") from exc
+    except BadFile as exc:
+        raise error(f"{path}: not a readable {noun} ({exc})") from exc
+    if not isinstance(document, dict) or document.get("format") != ARCHIVE_FORMAT:
+        raise error(f"{path}: {not_ours}")
+    if document.get("format_version") != ARCHIVE_VERSION:
+        raise error(f"{path}: archive version {document.get('format_version')!r} not supported")
+    return document
+
+
 def decode_document(raw: bytes) -> Any:
     """The JSON document in ``raw``, bounded in depth and numbers; BadFile says why not."""
     try:
@@ -801,16 +819,7 @@ class Session:
         too low) is raised and nothing changes.
         """
         level = self.access.level if level is None else level
-        try:
-            archive = decode_document(read_regular_bytes(path, ARCHIVE_LIMIT_BYTES, follow_links=True))
-        except OSError as exc:
-            raise ArchiveError(f"{path}: not a readable archive ({exc.strerror or exc})") from exc
-        except BadFile as exc:
-            raise ArchiveError(f"{path}: not a readable archive ({exc})") from exc
-        if not isinstance(archive, dict) or archive.get("format") != ARCHIVE_FORMAT:
-            raise ArchiveError(f"{path}: not an NC data archive")
-        if archive.get("format_version") != ARCHIVE_VERSION:
-            raise ArchiveError(f"{path}: archive version {archive.get('format_version')!r} not supported")
+        archive = read_archive_document(path, ArchiveError, "archive", "not an NC data archive")
         if archive.get("content") == CLASS_PACK_CONTENT:
             raise ArchiveError(f"{path}: a class pack, not NC data (import it with 'nck class-pack import')")
         try:
