@@ -18,8 +18,9 @@ from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Input, Static
 
-from hmi.cycle_forms import CycleForm
+from hmi.cycle_forms import CycleForm, CycleParam
 from hmi.dialog import AreaDialog
+from hmi.i18n import data_text
 from hmi.focus import focus_now
 
 
@@ -62,7 +63,8 @@ class CycleFormDialog(AreaDialog[str | None]):
         """Title, the parameter rows, help, message, sketch and keys."""
         verb = "Recompile" if self._recompile else "New"
         with Vertical(id="cycle-box"):
-            yield Static(f"{self.form.cycle} {self.form.title} ({verb})", id="cycle-title", markup=False)
+            title = data_text("cycle_form", self.form.cycle, "title", self.form.title)
+            yield Static(f"{self.form.cycle} {title} ({verb})", id="cycle-title", markup=False)
             with VerticalScroll(id="cycle-rows"):
                 for index, (param, text) in enumerate(zip(self.form.params, self._texts)):
                     with Horizontal(classes="cycle-row"):
@@ -92,9 +94,13 @@ class CycleFormDialog(AreaDialog[str | None]):
         if isinstance(focused, FieldInput) and focused in self.fields():
             self._show_param(self.fields().index(focused))
 
+    def param_help(self, param: CycleParam) -> str:
+        """The help line of ``param`` in the language shown now."""
+        return data_text("cycle_param", f"{self.form.cycle}.{param.name}", "help", param.help)
+
     def _show_param(self, index: int) -> None:
         param = self.form.params[index]
-        self.query_one("#cycle-help", Static).update(Text(f"{param.name}: {param.help}"))
+        self.query_one("#cycle-help", Static).update(Text(f"{param.name}: {self.param_help(param)}"))
         sketch = Text(self.form.sketch)
         sketch.highlight_regex(rf"(?<![A-Z0-9_]){re.escape(param.name)}(?![A-Z0-9_])", "reverse")
         self.query_one("#cycle-sketch", Static).update(sketch)

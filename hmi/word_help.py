@@ -98,7 +98,7 @@ def word_help(word: str) -> str:
     form = _cycle_forms().get(name)
     if form is not None:
         params = ", ".join(str(param["name"]) for param in form.get("params", []))
-        title = _("cycle {title}").format(title=form.get("title", ""))
+        title = _("cycle {title}").format(title=data_text("cycle_form", name, "title", form.get("title", "")))
         return f"{name}: {title} — {name}({params})"
     return ""
 

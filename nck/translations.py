@@ -13,7 +13,8 @@ folder ``data/lang/<code>/``:
   ``[md.32000] title = "…"`` in ``md.toml``, ``[group.1] meaning = "…"`` (also ``[code.G1]``,
   ``[iso_m_group.1]``, ``[iso_t_group.1]``) in ``gcode.toml``, ``[key."nc.reset"] label = "…"``
   in ``keymap.toml``, ``[m_function.M3] meaning = "…"`` (also ``[system_variable."$P_F"]``,
-  ``[system_variable_prefix."$MN_"]``) in ``words.toml``.
+  ``[system_variable_prefix."$MN_"]``) in ``words.toml``, ``[cycle_form.CYCLE81] title = "…"``
+  and ``[cycle_param."CYCLE81.RTP"] help = "…"`` (the editor's cycle forms) in ``cycles.toml``.
 
 Pure: reads files below ``data/`` only, keeps no state but caches of those files.
 """
@@ -37,7 +38,8 @@ OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "grou
                                   "code": "gcode.toml", "iso_m_group": "gcode.toml",
                                   "iso_t_group": "gcode.toml", "key": "keymap.toml",
                                   "m_function": "words.toml", "system_variable": "words.toml",
-                                  "system_variable_prefix": "words.toml"}
+                                  "system_variable_prefix": "words.toml",
+                                  "cycle_form": "cycles.toml", "cycle_param": "cycles.toml"}
 """Kind of data entry -> the overlay file in ``data/lang/<code>/`` that translates it."""
 
 

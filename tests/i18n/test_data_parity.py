@@ -2,7 +2,8 @@
 
 The English texts are the entries of ``data/alarms`` (text and the help's explanation and
 remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
-G functions' meanings, and the editor's word help of ``words.toml``); the translations are the
+G functions' meanings, and the editor's word help of ``words.toml``) and ``data/cycles/cycles.toml``
+(the editor's cycle forms: each form's title and each parameter's help line); the translations are the
 overlays ``data/lang/<code>/*.toml``.
 """
 
@@ -40,6 +41,10 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     for kind, section in (("m_function", "m_functions"), ("system_variable", "system_variables"),
                           ("system_variable_prefix", "system_variable_prefixes")):
         entries[kind] = {name: {"meaning": meaning} for name, meaning in words[section].items()}
+    forms = read_table(data_path("cycles", "cycles.toml"))["forms"]
+    entries["cycle_form"] = {name: {"title": form["title"]} for name, form in forms.items()}
+    entries["cycle_param"] = {f"{name}.{param['name']}": {"help": param["help"]}
+                              for name, form in forms.items() for param in form["params"]}
     return entries
 
 

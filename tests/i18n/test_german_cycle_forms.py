@@ -1,0 +1,43 @@
+"""The program editor's cycle forms in German (issue 27): the form's title and the help line of
+the parameter under the cursor from data/lang/de/cycles.toml, the word help's cycle title too.
+
+Keys as tests/program_screens/test_cycle_forms.py: Shift+F7 Cycles (drilling keys), Shift+F3
+Deep hole drilling; ↓ moves to the next field. Parameter order CYCLE83(RTP, RFP, SDIS, …)
+as data/cycles/README.md.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from hmi.cycle_form_dialog import CycleFormDialog
+from hmi.i18n import set_language
+from hmi.word_help import word_help
+from tests.burst import burst
+from tests.program_screens.conftest import SIZE, data_dir, make_program_app  # noqa: F401 (fixture)
+
+
+def shown(form: CycleFormDialog, widget_id: str) -> str:
+    return str(form.query_one(widget_id).render())
+
+
+async def test_deep_hole_drilling_form_in_german(data_dir: Path) -> None:
+    """Opened in one burst; the help follows the cursor from RTP to SDIS."""
+    set_language("de")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "f3", "down", "shift+f7", "shift+f3")
+        form = app.screen
+        assert isinstance(form, CycleFormDialog) and form.form.cycle == "CYCLE83"
+        assert shown(form, "#cycle-title").startswith("CYCLE83 Tieflochbohren")
+        assert shown(form, "#cycle-help") == "RTP: Rückzugsebene (absolut)"
+        await burst(pilot, "down", "down")
+        assert shown(form, "#cycle-help") == "SDIS: Sicherheitsabstand über RFP (ohne Vorzeichen)"
+
+
+def test_word_help_names_the_cycle_in_german() -> None:
+    set_language("de")
+    assert word_help("CYCLE83").startswith("CYCLE83: Zyklus Tieflochbohren — CYCLE83(RTP, RFP, SDIS, DP, DPR, ")
+    assert word_help("CYCLE81").startswith("CYCLE81: Zyklus Zentrieren — ")
+    set_language("en")
+    assert word_help("CYCLE83").startswith("CYCLE83: cycle Deep hole drilling — ")
