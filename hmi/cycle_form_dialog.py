@@ -20,7 +20,7 @@ from textual.widgets import Input, Static
 
 from hmi.cycle_forms import CycleForm, CycleParam
 from hmi.dialog import AreaDialog
-from hmi.i18n import data_text
+from hmi.i18n import _, data_text
 from hmi.focus import focus_now
 
 
@@ -61,7 +61,7 @@ class CycleFormDialog(AreaDialog[str | None]):
 
     def compose(self) -> ComposeResult:
         """Title, the parameter rows, help, message, sketch and keys."""
-        verb = "Recompile" if self._recompile else "New"
+        verb = _("Recompile") if self._recompile else _("New")
         with Vertical(id="cycle-box"):
             title = data_text("cycle_form", self.form.cycle, "title", self.form.title)
             yield Static(f"{self.form.cycle} {title} ({verb})", id="cycle-title", markup=False)
@@ -77,7 +77,7 @@ class CycleFormDialog(AreaDialog[str | None]):
             yield Static("", id="cycle-help", markup=False)
             yield Static("", id="cycle-message", markup=False)
             yield Static("", id="cycle-sketch", markup=False)
-            yield Static("↑/↓ field   Enter next field / OK on the last   F10 / Esc cancel", id="cycle-keys")
+            yield Static(_("↑/↓ field   Enter next field / OK on the last   F10 / Esc cancel"), id="cycle-keys")
 
     def on_mount(self) -> None:
         """The cursor on the first field."""

@@ -29,7 +29,8 @@ async def test_deep_hole_drilling_form_in_german(data_dir: Path) -> None:
         await burst(pilot, "alt+n", "f3", "down", "shift+f7", "shift+f3")
         form = app.screen
         assert isinstance(form, CycleFormDialog) and form.form.cycle == "CYCLE83"
-        assert shown(form, "#cycle-title").startswith("CYCLE83 Tieflochbohren")
+        assert shown(form, "#cycle-title") == "CYCLE83 Tieflochbohren (Neu)"
+        assert shown(form, "#cycle-keys").startswith("↑/↓ Feld   Enter nächstes Feld")
         assert shown(form, "#cycle-help") == "RTP: Rückzugsebene (absolut)"
         await burst(pilot, "down", "down")
         assert shown(form, "#cycle-help") == "SDIS: Sicherheitsabstand über RFP (ohne Vorzeichen)"
