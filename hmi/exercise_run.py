@@ -21,6 +21,7 @@ from typing import Any
 from nck import queries
 from nck.status import NckStatus
 
+from hmi.i18n import _, exercise_text, step_text
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
@@ -94,20 +95,20 @@ class ExerciseRun:
 
     def side_text(self) -> str:
         """The side window: exercise, current step, its hint (none in an exam)."""
-        steps = self.exercise.steps
-        lines = [f"EXERCISE: {self.exercise.title}", ""]
+        exercise = self.exercise
+        lines = [_("EXERCISE: {title}").format(title=exercise_text(exercise, "title")), ""]
         if self.progress.finished:
-            lines += ["All steps done.", "", "End the exercise for the report:",
-                      "Diagnostics, More, Exercises, End exercise."]
+            lines += [_("All steps done."), "", _("End the exercise for the report:"),
+                      _("Diagnostics, More, Exercises, End exercise.")]
             return "\n".join(lines)
         index = self.progress.current
-        step = steps[index]
-        lines += [f"Step {index + 1} of {len(steps)}", step.text]
-        if step.hint and not self.exercise.exam:
-            lines += ["", f"Hint: {step.hint}"]
+        lines += [_("Step {number} of {count}").format(number=index + 1, count=len(exercise.steps)),
+                  step_text(exercise, index, "text")]
+        if exercise.steps[index].hint and not exercise.exam:
+            lines += ["", _("Hint: {hint}").format(hint=step_text(exercise, index, "hint"))]
         why = self.progress.results[index].why_not
         if why:
-            lines += ["", "Still open:", *(f"- {reason}" for reason in why)]
+            lines += ["", _("Still open:"), *(f"- {reason}" for reason in why)]
         return "\n".join(lines)
 
     # -- the end ----------------------------------------------------------------------------
@@ -181,7 +182,7 @@ class ClassroomHost:
         self.exercise_run = run
         self.exercise_snapshot(self.bridge.poll(force=True))
         self._mark_areas(True)
-        return f"Exercise started: {exercise.title}"
+        return _("Exercise started: {title}").format(title=exercise_text(exercise, "title"))
 
     def end_exercise(self) -> str:
         """Score the exercise, write its report, give the trainee's own panel back."""
@@ -192,7 +193,7 @@ class ClassroomHost:
         if unsaved and not self.ending:  # type: ignore[attr-defined]
             return f"Not ended: {unsaved} (save or close it first)"
         try:
-            text_path, _ = run.finish()
+            text_path = run.finish()[0]
             said = f"Exercise ended, score {run.report['score'] if run.report else 0}/100: report in {text_path}"
         except OSError as exc:
             said = f"The exercise report could not be written: {exc}"

@@ -13,10 +13,12 @@ it at start and when the operator picks another one, and rebuilds its areas then
 
 from __future__ import annotations
 
+from typing import Any
+
 from nck import LANGUAGES, SOURCE_LANGUAGE, alarm_text_in, check_language, gettext_catalogue, localized
 from nck.status import AlarmEntry
 
-__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "language", "set_language"]
+__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "exercise_text", "language", "set_language", "step_text"]
 
 _active = {"code": SOURCE_LANGUAGE}
 
@@ -46,6 +48,17 @@ def N_(message: str) -> str:  # noqa: N802 - the gettext convention
 def data_text(kind: str, key: object, field: str, english: str) -> str:
     """A text of a data table (a kind of ``nck.translations.OVERLAY_TABLES``) in the language shown now."""
     return localized(_active["code"], kind, key, field, english)
+
+
+def exercise_text(exercise: Any, field: str) -> str:
+    """The ``title`` or ``summary`` of a guided exercise (``nck.exercise.Exercise``) in the language shown now."""
+    return data_text("exercise", exercise.exercise_id, field, getattr(exercise, field))
+
+
+def step_text(exercise: Any, index: int, field: str) -> str:
+    """The ``text`` or ``hint`` of step ``index`` (from 0) of a guided exercise in the language shown now."""
+    return data_text("exercise_step", f"{exercise.exercise_id}.{index + 1}", field,
+                     getattr(exercise.steps[index], field))
 
 
 def alarm_text(entry: AlarmEntry) -> str:

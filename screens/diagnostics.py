@@ -31,7 +31,7 @@ from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, alarm_text
+from hmi.i18n import N_, _, alarm_text, exercise_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -263,7 +263,7 @@ class DiagnosticsScreen(AreaBase):
             return
         exercise = self.exercises[self.exercise_index]
         said = self.hmi.start_exercise(exercise)
-        self._running_exercise = exercise.title if self.hmi.exercise_side else None
+        self._running_exercise = exercise_text(exercise, "title") if self.hmi.exercise_side else None
         self.say(said)
         self._refresh_view()
 

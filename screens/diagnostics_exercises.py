@@ -11,27 +11,29 @@ from typing import Any
 
 from rich.text import Text
 
+from hmi.i18n import _, exercise_text
+
 
 def exercises_text(exercises: list[Any], selected: int, running: str | None, exam_note: bool = True) -> Text:
     """The list with the selected exercise marked and its summary under it."""
     text = Text()
     if running:
-        text.append(f" Running: {running}  (End exercise: ⇧F2)\n\n", style="bold")
+        text.append(" " + _("Running: {title}  (End exercise: ⇧F2)").format(title=running) + "\n\n", style="bold")
     if not exercises:
-        text.append(" No exercises found.\n")
+        text.append(" " + _("No exercises found.") + "\n")
         return text
     for index, exercise in enumerate(exercises):
         mark = "▶" if index == selected else " "
         level = f"[{exercise.level}]" if exercise.level else ""
-        line = f" {mark} {index + 1:2d}  {exercise.title:<50} {level}"
+        line = f" {mark} {index + 1:2d}  {exercise_text(exercise, 'title'):<50} {level}"
         if exercise.waits_for:
             line += "  (waits)"
         text.append(line + "\n", style="reverse" if index == selected else "")
     chosen = exercises[selected]
     text.append("\n")
-    text.append(f" {chosen.summary}\n")
+    text.append(f" {exercise_text(chosen, 'summary')}\n")
     if chosen.exam and exam_note:
-        text.append(" Exam: no hints are shown.\n")
+        text.append(" " + _("Exam: no hints are shown.") + "\n")
     if chosen.waits_for:
         text.append(f" Waits for {chosen.waits_for}.\n", style="italic")
     return text
