@@ -15,7 +15,7 @@ folder ``data/lang/<code>/``:
   in ``keymap.toml``, ``[m_function.M3] meaning = "…"`` (also ``[system_variable."$P_F"]``,
   ``[system_variable_prefix."$MN_"]``) in ``words.toml``, ``[cycle_form.CYCLE81] title = "…"``
   and ``[cycle_param."CYCLE81.RTP"] help = "…"`` (the editor's cycle forms) in ``cycles.toml``,
-  ``[exercise.<id>] title = "…"`` (also ``summary``) and ``[exercise_step."<id>.<step number>"]
+  ``[exercise.<id>] title = "…"`` (also ``level``, ``summary``) and ``[exercise_step."<id>.<step number>"]
   text = "…"`` (also ``hint``) in ``exercises.toml``.
 
 Pure: reads files below ``data/`` only, keeps no state but caches of those files.

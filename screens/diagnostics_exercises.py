@@ -24,7 +24,7 @@ def exercises_text(exercises: list[Any], selected: int, running: str | None, exa
         return text
     for index, exercise in enumerate(exercises):
         mark = "▶" if index == selected else " "
-        level = f"[{exercise.level}]" if exercise.level else ""
+        level = f"[{exercise_text(exercise, 'level')}]" if exercise.level else ""
         line = f" {mark} {index + 1:2d}  {exercise_text(exercise, 'title'):<50} {level}"
         if exercise.waits_for:
             line += "  (waits)"

@@ -4,7 +4,7 @@ The English texts are the entries of ``data/alarms`` (text and the help's explan
 remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
 G functions' meanings, and the editor's word help of ``words.toml``), ``data/cycles/cycles.toml``
 (the editor's cycle forms: each form's title and each parameter's help line) and the guided exercises
-of ``data/exercises`` (title, summary, every step's text and hint); the translations are the
+of ``data/exercises`` (title, level, summary, every step's text and hint); the translations are the
 overlays ``data/lang/<code>/*.toml``.
 """
 
@@ -48,7 +48,7 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     entries["cycle_param"] = {f"{name}.{param['name']}": {"help": param["help"]}
                               for name, form in forms.items() for param in form["params"]}
     exercises = load_exercises()
-    entries["exercise"] = {e.exercise_id: {"title": e.title, **({"summary": e.summary} if e.summary else {})}
+    entries["exercise"] = {e.exercise_id: {"title": e.title, **{name: getattr(e, name) for name in ("level", "summary") if getattr(e, name)}}
                            for e in exercises}
     entries["exercise_step"] = {f"{e.exercise_id}.{number}": {"text": step.text, **({"hint": step.hint} if step.hint else {})}
                                 for e in exercises for number, step in enumerate(e.steps, 1)}

@@ -23,7 +23,7 @@ async def test_exercise_list_and_side_window_in_german(tmp_path: Path) -> None:
         listed = str(app.screen.query_one("#diag-exercises", Static).render())
         assert "Einschalten: Achsen referenzieren" in listed
         assert "Nach dem Einschalten wissen die Messsysteme nicht" in listed
-        assert "Power on" not in listed
+        assert "[Grundlagen]" in listed and "Power on" not in listed and "[basic]" not in listed
         await burst(pilot, START)
         assert app.hint == "Übung gestartet: Einschalten: Achsen referenzieren"
         side = str(app.screen.query_one("#exercise-side", Static).render())
