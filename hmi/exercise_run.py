@@ -21,7 +21,7 @@ from typing import Any
 from nck import queries
 from nck.status import NckStatus
 
-from hmi.i18n import _, exercise_text, step_text
+from hmi.i18n import _, exercise_text, reason_text, step_text
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
@@ -108,7 +108,7 @@ class ExerciseRun:
             lines += ["", _("Hint: {hint}").format(hint=step_text(exercise, index, "hint"))]
         why = self.progress.results[index].why_not
         if why:
-            lines += ["", _("Still open:"), *(f"- {reason}" for reason in why)]
+            lines += ["", _("Still open:"), *(f"- {reason_text(reason)}" for reason in why)]
         return "\n".join(lines)
 
     # -- the end ----------------------------------------------------------------------------

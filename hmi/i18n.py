@@ -18,7 +18,7 @@ from typing import Any
 from nck import LANGUAGES, SOURCE_LANGUAGE, alarm_text_in, check_language, gettext_catalogue, localized
 from nck.status import AlarmEntry
 
-__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "exercise_text", "language", "set_language", "step_text"]
+__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "exercise_text", "language", "reason_text", "set_language", "step_text"]
 
 _active = {"code": SOURCE_LANGUAGE}
 
@@ -59,6 +59,14 @@ def step_text(exercise: Any, index: int, field: str) -> str:
     """The ``text`` or ``hint`` of step ``index`` (from 0) of a guided exercise in the language shown now."""
     return data_text("exercise_step", f"{exercise.exercise_id}.{index + 1}", field,
                      getattr(exercise.steps[index], field))
+
+
+def reason_text(reason: str) -> str:
+    """Why an exercise check does not hold (``nck.exercise_checks.Reason``) in the language shown now."""
+    template = getattr(reason, "template", None)
+    if template is None:
+        return reason
+    return _(template).format(**reason.fields)  # type: ignore[attr-defined]
 
 
 def alarm_text(entry: AlarmEntry) -> str:

@@ -67,28 +67,44 @@ def state_of(status: Any, data: Any) -> State:
     }
 
 
+class Reason(str):
+    """Why a check does not hold: the English sentence (what reports and recordings keep), with
+    its ``template`` and ``fields`` so that a panel can say it in another language (the
+    template is a text of the panel's catalogue, formatted with ``str.format``)."""
+
+    template: str
+    fields: dict[str, Any]
+
+    def __new__(cls, template: str, **fields: Any) -> Reason:
+        reason = super().__new__(cls, template.format(**fields))
+        reason.template = template
+        reason.fields = fields
+        return reason
+
+
 # ------------------------------------------------------------------ the vocabulary
 def _axes_referenced(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
     axes = check.get("axes") or sorted(state["referenced"])
     missing = [a for a in axes if not state["referenced"].get(a)]
-    return not missing, f"axes not referenced: {', '.join(missing)}"
+    return not missing, Reason("axes not referenced: {axes}", axes=", ".join(missing))
 
 
 def _mode(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
-    return state["mode"] == check["is"], f"operating mode is {state['mode']}, not {check['is']}"
+    return state["mode"] == check["is"], Reason("operating mode is {mode}, not {wanted}", mode=state["mode"], wanted=check["is"])
 
 
 def _program_selected(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
     wanted = _stem(check["name"])
-    return _stem(state["program"]) == wanted, f"{check['name']} is not selected"
+    return _stem(state["program"]) == wanted, Reason("{program} is not selected", program=check["name"])
 
 
 def _no_active_alarm(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
-    return not state["active_alarms"], "alarms still active: " + ", ".join(map(str, state["active_alarms"]))
+    return not state["active_alarms"], Reason("alarms still active: {numbers}",
+                                                numbers=", ".join(map(str, state["active_alarms"])))
 
 
 def _emergency_stop_released(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
-    return not state["estop"], "EMERGENCY STOP is still active (release it, then RESET)"
+    return not state["estop"], Reason("EMERGENCY STOP is still active (release it, then RESET)")
 
 
 def _work_offset(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
@@ -96,7 +112,7 @@ def _work_offset(check: Mapping[str, Any], state: State, events: list[dict]) -> 
     within = float(check.get("within_mm", 0.01))
     if "blank" in check:  # "low" / "high": that corner of the clamped blank, in the MCS
         if state["blank"] is None:
-            return False, "no blank is clamped"
+            return False, Reason("no blank is clamped")
         wanted = state["blank"][check["blank"]]["XYZ".index(axis)] + float(check.get("plus_mm", 0.0))
     else:
         wanted = float(check["value"])
@@ -105,21 +121,23 @@ def _work_offset(check: Mapping[str, Any], state: State, events: list[dict]) -> 
     # The reason names the value entered and the tolerance, never the distance to the true
     # value: the side window shows it live, and "5.000 mm off" would hand a measuring
     # exercise's answer to the trainee.
-    return ok, f"{frame} {axis} is {actual:.3f} mm: not within {within:g} mm of where it belongs"
+    return ok, Reason("{frame} {axis} is {actual:.3f} mm: not within {within:g} mm of where it belongs",
+                      frame=frame, axis=axis, actual=actual, within=within)
 
 
 def _tool_length(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
     key = f"{check['t']},{check.get('d', 1)}"
     within = float(check.get("within_mm", 0.02))
     if key not in state["tools"]:
-        return False, f"T{check['t']} D{check.get('d', 1)} has no data"
+        return False, Reason("T{tool} D{edge} has no data", tool=check["t"], edge=check.get("d", 1))
     actual, wanted = state["tools"][key], float(check["value"])
     return abs(actual - wanted) <= within + 1e-9, \
-        f"T{check['t']} length is {actual:.3f} mm: not within {within:g} mm of its true length"
+        Reason("T{tool} length is {actual:.3f} mm: not within {within:g} mm of its true length",
+               tool=check["t"], actual=actual, within=within)
 
 
 def _single_block(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
-    return state["single_block"] is not None, "single block is off"
+    return state["single_block"] is not None, Reason("single block is off")
 
 
 def _program_ended(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
@@ -129,14 +147,23 @@ def _program_ended(check: Mapping[str, Any], state: State, events: list[dict]) -
         ends = [e for e in ends if not e["alarms"]]
     least = int(check.get("single_block_stops", 0))
     ends = [e for e in ends if e["single_block_stops"] >= least]
-    what = check.get("program", "the program")
-    extra = f" with at least {least} single-block stops" if least else ""
-    return bool(ends), f"{what} has not run to its end without alarm{extra}"
+    program = check.get("program")
+    if program and least:
+        why = Reason("{program} has not run to its end without alarm with at least {least} single-block stops",
+                     program=program, least=least)
+    elif program:
+        why = Reason("{program} has not run to its end without alarm", program=program)
+    elif least:
+        why = Reason("the program has not run to its end without alarm with at least {least} single-block stops",
+                     least=least)
+    else:
+        why = Reason("the program has not run to its end without alarm")
+    return bool(ends), why
 
 
 def _alarm_came(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
     number = int(check["number"])
-    return any(e["kind"] == "alarm_came" and e["number"] == number for e in events), f"alarm {number} did not come"
+    return any(e["kind"] == "alarm_came" and e["number"] == number for e in events), Reason("alarm {number} did not come", number=number)
 
 
 def _alarm_cleared(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
@@ -147,8 +174,12 @@ def _alarm_cleared(check: Mapping[str, Any], state: State, events: list[dict]) -
     if right:
         return True, ""
     if went:
-        return False, f"alarm {number} was cleared with {went[-1]['by'] or 'nothing'}, not {' or '.join(keys)}"
-    return False, f"alarm {number} was not cleared"
+        if not went[-1]["by"]:
+            return False, Reason("alarm {number} was cleared with nothing, not {keys}", number=number,
+                                 keys=" or ".join(keys))
+        return False, Reason("alarm {number} was cleared with {key}, not {keys}", number=number,
+                             key=went[-1]["by"], keys=" or ".join(keys))
+    return False, Reason("alarm {number} was not cleared", number=number)
 
 
 def _command_used(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
@@ -162,20 +193,23 @@ def _command_used(check: Mapping[str, Any], state: State, events: list[dict]) ->
         if all(fields.get(k) == v for k, v in wanted.items()) and all(
                 str(v).upper() in str(fields.get(k, "")).upper() for k, v in contains.items()):
             return True, ""
-    return False, f"{name} was not used{' as asked' if wanted or contains else ''}"
+    if wanted or contains:
+        return False, Reason("{command} was not used as asked", command=name)
+    return False, Reason("{command} was not used", command=name)
 
 
 def _stopped(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
     reason = check["reason"]
     count = sum(1 for e in events if e["kind"] == "stop" and e["reason"] == reason)
     least = int(check.get("at_least", 1))
-    return count >= least, f"the program stopped {count} time(s) with {reason}, at least {least} asked"
+    return count >= least, Reason("the program stopped {count} time(s) with {reason}, at least {least} asked",
+                                 count=count, reason=reason, least=least)
 
 
 def _no_alarm_came(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
     numbers = set(check.get("numbers", []))
     came = [e["number"] for e in events if e["kind"] == "alarm_came" and (not numbers or e["number"] in numbers)]
-    return not came, "alarms came: " + ", ".join(map(str, came))
+    return not came, Reason("alarms came: {numbers}", numbers=", ".join(map(str, came)))
 
 
 CHECK_KINDS: dict[str, Callable[[Mapping[str, Any], State, list[dict]], Verdict]] = {

@@ -3,7 +3,8 @@
 A text is taken from ``hmi/`` and ``screens/`` where it is
 
 * the literal argument of ``_("…")`` (translated where shown) or ``N_("…")`` (a table
-  defined at import, translated where shown);
+  defined at import, translated where shown), and of ``Reason("…")`` in the kernel modules of
+  :data:`KERNEL_MODULES` (the exercise checks' reasons, which the side window translates);
 * the title and note of a ``DataTable(…)`` and the title of a ``Column(…)`` (the table
   window draws them translated), the title and hint of a ``JogForm(…)`` and the label of a
   ``FieldSpec(…)`` (the JOG windows draw them translated);
@@ -24,7 +25,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("hmi", "screens")
-MARKERS = frozenset({"_", "N_"})
+MARKERS = frozenset({"_", "N_", "Reason"})
+KERNEL_MODULES = ("nck/exercise_checks.py",)
+"""Modules of the kernel whose texts the panel translates: the exercise checks' ``Reason(…)``."""
 LABELLED = frozenset({"Softkey", "view_softkey", "view_key", "_view_key", "_search_mode_key"})
 """Functions whose second argument is a softkey label (the areas' small softkey builders)."""
 
@@ -73,11 +76,11 @@ def texts_of(source: str, filename: str = "<source>") -> dict[str, int]:
 def code_texts() -> dict[str, str]:
     """Every translatable text of the panel -> the first place it occurs (``path:line``)."""
     texts: dict[str, str] = {}
-    for package in PACKAGES:
-        for path in sorted((ROOT / package).rglob("*.py")):
-            relative = path.relative_to(ROOT)
-            for text, line in texts_of(path.read_text(encoding="utf-8"), str(relative)).items():
-                texts.setdefault(text, f"{relative}:{line}")
+    paths = [path for package in PACKAGES for path in sorted((ROOT / package).rglob("*.py"))]
+    for path in paths + [ROOT / module for module in KERNEL_MODULES]:
+        relative = path.relative_to(ROOT)
+        for text, line in texts_of(path.read_text(encoding="utf-8"), str(relative)).items():
+            texts.setdefault(text, f"{relative}:{line}")
     return texts
 
 
