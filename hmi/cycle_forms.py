@@ -20,6 +20,8 @@ from functools import cache
 from nck import trimmed
 from nck.queries import load_toml
 
+from hmi.i18n import _
+
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,23}$")
 
 
@@ -44,35 +46,38 @@ class CycleParam:
     def range_text(self) -> str:
         """The permitted values as the form shows them."""
         if self.kind == "name":
-            return "program name"
+            return _("program name")
         if self.choices:
             return " / ".join(str(c) for c in self.choices)
-        whole = " whole" if self.integer else ""
-        return f"{_limit(self.min_value)} … {_limit(self.max_value)}{whole}"
+        low, high = _limit(self.min_value), _limit(self.max_value)
+        if self.integer:
+            return _("{low} … {high} whole").format(low=low, high=high)
+        return f"{low} … {high}"
 
     def refusal(self, text: str) -> str | None:
         """Why ``text`` is not a value of this parameter, or None when it is (empty: not programmed)."""
         text = text.strip()
         if self.kind == "name":
             if _NAME.match(text) is None:
-                return f"{self.name}: '{text}' is not a program name (letters, digits, _; 24 at most)"
+                return _("{name}: '{text}' is not a program name (letters, digits, _; 24 at most)").format(
+                    name=self.name, text=text)
             return None
         if not text:
             return None
         try:
             value = float(text)
         except ValueError:
-            return f"{self.name}: '{text}' is not a number"
+            return _("{name}: '{text}' is not a number").format(name=self.name, text=text)
         if self.choices:
             if value not in self.choices:
-                return f"{self.name}: only {self.range_text()} permitted"
+                return _("{name}: only {values} permitted").format(name=self.name, values=self.range_text())
             return None
         if self.integer and value != int(value):
-            return f"{self.name}: only whole numbers permitted"
+            return _("{name}: only whole numbers permitted").format(name=self.name)
         if self.min_value is not None and value < self.min_value:
-            return f"{self.name}: value below the lower limit {_limit(self.min_value)}"
+            return _("{name}: value below the lower limit {limit}").format(name=self.name, limit=_limit(self.min_value))
         if self.max_value is not None and value > self.max_value:
-            return f"{self.name}: value above the upper limit {_limit(self.max_value)}"
+            return _("{name}: value above the upper limit {limit}").format(name=self.name, limit=_limit(self.max_value))
         return None
 
     def argument(self, text: str) -> str:

@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from hmi.cycle_form_dialog import CycleFormDialog
+from hmi.cycle_forms import cycle_forms
 from hmi.i18n import set_language
 from hmi.word_help import word_help
 from tests.burst import burst
@@ -42,3 +43,14 @@ def test_word_help_names_the_cycle_in_german() -> None:
     assert word_help("CYCLE81").startswith("CYCLE81: Zyklus Zentrieren — ")
     set_language("en")
     assert word_help("CYCLE83").startswith("CYCLE83: cycle Deep hole drilling — ")
+
+
+def test_range_and_refusals_in_german() -> None:
+    """The ranges of data/cycles/cycles.toml: CYCLE83 SDIS 0 … 99999.999, VARI 0 / 1; CYCLE95 NPP a name."""
+    set_language("de")
+    forms = cycle_forms()
+    sdis, vari = forms["CYCLE83"].params[2], forms["CYCLE83"].params[11]
+    assert sdis.refusal("-1") == "SDIS: Wert unter der unteren Grenze 0"
+    assert sdis.refusal("x") == "SDIS: 'x' ist keine Zahl"
+    assert vari.refusal("2") == "VARI: nur 0 / 1 zulässig"
+    assert forms["CYCLE95"].params[0].range_text() == "Programmname"
