@@ -101,7 +101,7 @@ class CycleFormDialog(AreaDialog[str | None]):
     def _show_param(self, index: int) -> None:
         param = self.form.params[index]
         self.query_one("#cycle-help", Static).update(Text(f"{param.name}: {self.param_help(param)}"))
-        sketch = Text(self.form.sketch)
+        sketch = Text(data_text("cycle_sketch", self.form.sketch_name, "text", self.form.sketch).strip("\n"))
         sketch.highlight_regex(rf"(?<![A-Z0-9_]){re.escape(param.name)}(?![A-Z0-9_])", "reverse")
         self.query_one("#cycle-sketch", Static).update(sketch)
 

@@ -110,6 +110,8 @@ class CycleForm:
     key_label: str
     sketch: str
     params: tuple[CycleParam, ...]
+    sketch_name: str = ""
+    """The name of the shared sketch in ``[sketches]`` (its translations are keyed by it); empty: own sketch."""
 
     def defaults(self) -> list[str]:
         """The field texts of a new call."""
@@ -275,8 +277,9 @@ def _form(name: str, entry: dict, sketches: dict) -> CycleForm:
         )
         for p in entry["params"]
     )
+    sketch_name = entry["sketch"] if entry["sketch"] in sketches else ""
     sketch = sketches.get(entry["sketch"], entry["sketch"])
-    return CycleForm(name, entry["title"], entry.get("key", name), sketch.strip("\n"), params)
+    return CycleForm(name, entry["title"], entry.get("key", name), sketch.strip("\n"), params, sketch_name)
 
 
 def _default_text(default: float | int | str) -> str:

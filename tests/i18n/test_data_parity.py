@@ -3,7 +3,7 @@
 The English texts are the entries of ``data/alarms`` (text and the help's explanation and
 remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
 G functions' meanings, and the editor's word help of ``words.toml``), ``data/cycles/cycles.toml``
-(the editor's cycle forms: each form's title and each parameter's help line) and the guided exercises
+(the editor's cycle forms: each form's title, each parameter's help line and each sketch) and the guided exercises
 of ``data/exercises`` (title, level, summary, every step's text and hint); the translations are the
 overlays ``data/lang/<code>/*.toml``.
 """
@@ -47,6 +47,8 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     entries["cycle_form"] = {name: {"title": form["title"]} for name, form in forms.items()}
     entries["cycle_param"] = {f"{name}.{param['name']}": {"help": param["help"]}
                               for name, form in forms.items() for param in form["params"]}
+    sketches = read_table(data_path("cycles", "cycles.toml"))["sketches"]
+    entries["cycle_sketch"] = {name: {"text": text} for name, text in sketches.items()}
     exercises = load_exercises()
     entries["exercise"] = {e.exercise_id: {"title": e.title, **{name: getattr(e, name) for name in ("level", "summary") if getattr(e, name)}}
                            for e in exercises}
@@ -74,3 +76,14 @@ def test_alarm_translations_keep_the_parameters(code: str) -> None:
     for number, fields in overlay(code, "alarm").items():
         english = alarm_catalog()[int(number)].text
         assert sorted(ALARM_PARAMETER.findall(fields["text"])) == sorted(ALARM_PARAMETER.findall(english)), number
+
+
+PARAMETER_NAME = re.compile(r"(?<![A-Za-z0-9_])_?[A-Z][A-Z0-9_]*[0-9A-Z](?![A-Za-z0-9_])")
+
+
+@pytest.mark.parametrize("code", OTHER_LANGUAGES)
+def test_cycle_sketches_keep_the_parameter_names(code: str) -> None:
+    """The form marks the parameter under the cursor where its name stands in the sketch."""
+    english = read_table(data_path("cycles", "cycles.toml"))["sketches"]
+    for name, fields in overlay(code, "cycle_sketch").items():
+        assert sorted(set(PARAMETER_NAME.findall(fields["text"]))) == sorted(set(PARAMETER_NAME.findall(english[name]))), name

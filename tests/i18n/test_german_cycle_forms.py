@@ -33,6 +33,7 @@ async def test_deep_hole_drilling_form_in_german(data_dir: Path) -> None:
         assert shown(form, "#cycle-title") == "CYCLE83 Tieflochbohren (Neu)"
         assert shown(form, "#cycle-keys").startswith("↑/↓ Feld   Enter nächstes Feld")
         assert shown(form, "#cycle-help") == "RTP: Rückzugsebene (absolut)"
+        assert "FDEP / FDPR  erste Bohrtiefe" in shown(form, "#cycle-sketch")
         await burst(pilot, "down", "down")
         assert shown(form, "#cycle-help") == "SDIS: Sicherheitsabstand über RFP (ohne Vorzeichen)"
 
