@@ -14,7 +14,8 @@ folder ``data/lang/<code>/``:
   ``[iso_m_group.1]``, ``[iso_t_group.1]``) in ``gcode.toml``, ``[key."nc.reset"] label = "…"``
   in ``keymap.toml``, ``[m_function.M3] meaning = "…"`` (also ``[system_variable."$P_F"]``,
   ``[system_variable_prefix."$MN_"]``) in ``words.toml``, ``[cycle_form.CYCLE81] title = "…"``
-  and ``[cycle_param."CYCLE81.RTP"] help = "…"``, ``[cycle_sketch.drill] text = "…"`` (the editor's
+  and ``[cycle_param."CYCLE81.RTP"] help = "…"``, ``[cycle_sketch.drill] text = "…"``, ``[cycle_menu.drilling] label = "…"``,
+  ``[cycle_menu_key."drilling.0"] label = "…"`` (the editor's
   cycle forms) in ``cycles.toml``,
   ``[exercise.<id>] title = "…"`` (also ``level``, ``summary``) and ``[exercise_step."<id>.<step number>"]
   text = "…"`` (also ``hint``) in ``exercises.toml``.
@@ -43,7 +44,8 @@ OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "grou
                                   "m_function": "words.toml", "system_variable": "words.toml",
                                   "system_variable_prefix": "words.toml",
                                   "cycle_form": "cycles.toml", "cycle_param": "cycles.toml",
-                                  "cycle_sketch": "cycles.toml",
+                                  "cycle_sketch": "cycles.toml", "cycle_menu": "cycles.toml",
+                                  "cycle_menu_key": "cycles.toml",
                                   "exercise": "exercises.toml", "exercise_step": "exercises.toml"}
 """Kind of data entry -> the overlay file in ``data/lang/<code>/`` that translates it."""
 

@@ -20,6 +20,7 @@ from typing import Any
 from hmi.cycle_form_dialog import CycleFormDialog
 from hmi.cycle_forms import (CallLine, CycleForm, CycleMenu, called_cycle, cycle_forms, cycle_menus,
                              is_modal_call_off, modal_call_toggled, read_call)
+from hmi.i18n import data_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 
 BACK_ID = "cycles.back"
@@ -73,7 +74,8 @@ class CycleActions:
         menu = next(m for m in cycle_menus() if m.menu_id == menu_id)
         forms = cycle_forms()
         vertical: list[Softkey | None] = [
-            Softkey(f"cycle.{cycle}", forms[cycle].key_label, f"cycle_form('{cycle}')", enabled=_writable)
+            Softkey(f"cycle.{cycle}", data_text("cycle_form", cycle, "key", forms[cycle].key_label),
+                    f"cycle_form('{cycle}')", enabled=_writable)
             for cycle in menu.keys[index].cycles
         ]
         vertical += [None] * (7 - len(vertical)) + [Softkey(BACK_ID, "<<\nBack", "pop_menu")]
@@ -113,7 +115,8 @@ class CycleActions:
     def _cycle_bar(self) -> list[Softkey | None]:
         """The horizontal softkeys of the cycle level: one per menu, ``<< Back`` on F8."""
         keys: list[Softkey | None] = [
-            Softkey(f"cycles.{menu.menu_id}", menu.label, f"cycle_menu('{menu.menu_id}')",
+            Softkey(f"cycles.{menu.menu_id}", data_text("cycle_menu", menu.menu_id, "label", menu.label),
+                    f"cycle_menu('{menu.menu_id}')",
                     enabled=on_lathe if menu.machine == "lathe" else None,
                     active=lambda s, menu_id=menu.menu_id: s.cycle_menu_id == menu_id)
             for menu in cycle_menus()
@@ -123,13 +126,14 @@ class CycleActions:
     def _cycle_level(self, menu: CycleMenu) -> SoftkeyMenu:
         vertical = []
         for index, key in enumerate(menu.keys):
+            label = data_text("cycle_menu_key", f"{menu.menu_id}.{index}", "label", key.label)
             if key.mcall:
-                vertical.append(Softkey("cycles.mcall", key.label, "modal_call", enabled=_writable))
+                vertical.append(Softkey("cycles.mcall", label, "modal_call", enabled=_writable))
             elif len(key.cycles) == 1:
                 cycle = key.cycles[0]
-                vertical.append(Softkey(f"cycle.{cycle}", key.label, f"cycle_form('{cycle}')", enabled=_writable))
+                vertical.append(Softkey(f"cycle.{cycle}", label, f"cycle_form('{cycle}')", enabled=_writable))
             else:
-                vertical.append(Softkey(f"cycles.{menu.menu_id}.{index}", key.label,
+                vertical.append(Softkey(f"cycles.{menu.menu_id}.{index}", label,
                                         f"cycle_group('{menu.menu_id}', {index})", enabled=_writable))
         return SoftkeyMenu.of(self._cycle_bar(), vertical)
 

@@ -44,7 +44,11 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
                           ("system_variable_prefix", "system_variable_prefixes")):
         entries[kind] = {name: {"meaning": meaning} for name, meaning in words[section].items()}
     forms = read_table(data_path("cycles", "cycles.toml"))["forms"]
-    entries["cycle_form"] = {name: {"title": form["title"]} for name, form in forms.items()}
+    entries["cycle_form"] = {name: {"title": form["title"], "key": form["key"]} for name, form in forms.items()}
+    menus = read_table(data_path("cycles", "cycles.toml"))["menus"]
+    entries["cycle_menu"] = {name: {"label": menu["label"]} for name, menu in menus.items()}
+    entries["cycle_menu_key"] = {f"{name}.{index}": {"label": key["label"]}
+                                 for name, menu in menus.items() for index, key in enumerate(menu["keys"])}
     entries["cycle_param"] = {f"{name}.{param['name']}": {"help": param["help"]}
                               for name, form in forms.items() for param in form["params"]}
     sketches = read_table(data_path("cycles", "cycles.toml"))["sketches"]

@@ -27,7 +27,15 @@ async def test_deep_hole_drilling_form_in_german(data_dir: Path) -> None:
     set_language("de")
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+n", "f3", "down", "shift+f7", "shift+f3")
+        await burst(pilot, "alt+n", "f3", "down", "shift+f7")
+        menu = app.screen.current_menu()
+        assert [key.label for key in menu.horizontal[:3]] == ["Bohren", "Fräsen", "Drehen"]
+        assert menu.slot("v3").label == "Tiefloch-\nbohren"
+        await burst(pilot, "shift+f4")  # Boring: a sub-level of four cycles
+        assert app.screen.current_menu().slot("v2").label == "Ausdrehen\nmit Stopp"  # CYCLE87
+        await burst(pilot, "f8")  # back to the drilling keys
+        assert app.screen.current_menu().find("cycle.CYCLE83") == "v3"
+        await burst(pilot, "shift+f3")
         form = app.screen
         assert isinstance(form, CycleFormDialog) and form.form.cycle == "CYCLE83"
         assert shown(form, "#cycle-title") == "CYCLE83 Tieflochbohren (Neu)"
