@@ -20,8 +20,8 @@ from textual.widgets import Input, Static
 
 from hmi.cycle_forms import CycleForm, CycleParam
 from hmi.dialog import AreaDialog
-from hmi.i18n import _, data_text
 from hmi.focus import focus_now
+from hmi.i18n import _, data_text
 
 
 class FieldInput(Input):
