@@ -4,20 +4,17 @@ One table for both: the codes' meanings of data/gcode/siemens.toml and the group
 German from data/lang/de/gcode.toml; the M functions and system variables of
 data/gcode/words.toml, German from data/lang/de/words.toml; the ISO dialects' G groups from
 data/gcode/iso_m.toml / iso_t.toml, German from the same gcode.toml. Groups as in
-tests/program_screens/test_word_help.py (G1 group 1 modal, G4 group 2 non-modal, G91 group 14).
+tests/program_screens/test_word_help.py (G1 group 1 modal, G4 group 2 non-modal, G91 group 14),
+which also walks the editor's message line in German.
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 from rich.console import Console
 
 from hmi.i18n import set_language
 from hmi.widgets.gfunctions import all_groups_table, iso_group_meanings
 from hmi.word_help import word_help
-from tests.burst import burst
-from tests.program_screens.conftest import SIZE, data_dir, make_program_app, settle  # noqa: F401 (fixture)
 
 
 def shown(table) -> str:
@@ -55,21 +52,3 @@ def test_g_functions_screen_in_german() -> None:
     turning = shown(all_groups_table({1: "G01"}, iso_group_meanings("iso-t")))
     assert "Bewegung und Drehzyklen" in turning and "Schneidenradiuskorrektur" in turning
 
-
-async def test_editor_message_line_in_german(data_dir: Path) -> None:
-    """As tests/program_screens/test_word_help.py, with the panel in German: typed in a burst,
-    the cursor put on G01 and then on M30 by Up, Home, Right and Down, End."""
-    set_language("de")
-    app = make_program_app(data_dir)
-    async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+n", "f2", *"worte", "enter")
-        screen = app.screen
-        assert screen.AREA_ID == "program"
-        await burst(pilot, "ctrl+end", *"N10 G01 X10 F100", "enter", *"N20 M30", "up", "home")
-        screen.check_now()
-        await settle(pilot)
-        message = lambda: str(screen.query_one("#prog-message").render())  # noqa: E731
-        await burst(pilot, "right", "right", "right", "right", "right")
-        assert "G1: Gerade mit dem Vorschub F — Gruppe 1 (modale Bewegungsbefehle), modal" in message()
-        await burst(pilot, "down", "end")
-        assert "M30: Programmende, wie M2" in message()

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from rich.console import Console
 
+from hmi.i18n import set_language
 from hmi.widgets.gfunctions import MAIN_GROUPS, all_groups_table
 from hmi.word_help import g_functions, word_at, word_help
 from tests.burst import burst
@@ -62,11 +64,20 @@ def test_g_functions_screen_uses_the_same_table() -> None:
     assert "plane selection" in shown  # no active code: the group's meaning
 
 
-async def test_editor_message_line_shows_the_meaning(data_dir: Path) -> None:
-    """Typed in a burst; Up, Home and Right keys put the cursor on G01, then Down, End on M30."""
+@pytest.mark.parametrize("language, name, g1_text, m30_text", [
+    ("en", "words", "G1: straight line at the feedrate F — group 1 (modal motion commands), modal",
+     "M30: end of the program, as M2"),
+    ("de", "worte", "G1: Gerade mit dem Vorschub F — Gruppe 1 (modale Bewegungsbefehle), modal",
+     "M30: Programmende, wie M2"),
+])
+async def test_editor_message_line_shows_the_meaning(language: str, name: str, g1_text: str, m30_text: str,
+                                                     data_dir: Path) -> None:
+    """Typed in a burst; Up, Home and Right keys put the cursor on G01, then Down, End on M30;
+    in either language of the panel."""
+    set_language(language)
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+n", "f2", *"words", "enter")
+        await burst(pilot, "alt+n", "f2", *name, "enter")
         screen = app.screen
         assert screen.AREA_ID == "program"
         await burst(pilot, "ctrl+end", *"N10 G01 X10 F100", "enter", *"N20 M30", "up", "home")
@@ -76,6 +87,6 @@ async def test_editor_message_line_shows_the_meaning(data_dir: Path) -> None:
         await settle(pilot)
         message = lambda: str(screen.query_one("#prog-message").render())  # noqa: E731
         await burst(pilot, "right", "right", "right", "right", "right")
-        assert "G1: straight line at the feedrate F — group 1 (modal motion commands), modal" in message()
+        assert g1_text in message()
         await burst(pilot, "down", "end")
-        assert "M30: end of the program, as M2" in message()
+        assert m30_text in message()
