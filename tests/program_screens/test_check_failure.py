@@ -22,12 +22,18 @@ def _broken_simulation(*args: object, **kwargs: object) -> None:
     raise TypeError("a bug in the simulation")
 
 
-async def test_a_bug_in_the_check_fails_the_test(data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(CheckContext, "iter_check", _broken_check)
+@pytest.mark.parametrize("method, broken, keys, bug", [
+    ("iter_check", _broken_check, ("alt+n", "f3"), "a bug in the check"),  # DEMO.MPF opened: its check
+    ("simulate", _broken_simulation, ("alt+n", "f3", "f5"), "a bug in the simulation"),  # and Simulation
+])
+async def test_a_bug_in_the_check_or_simulation_fails_the_test(
+        method: str, broken: object, keys: tuple[str, ...], bug: str, data_dir: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(CheckContext, method, broken)
     app = make_program_app(data_dir)
-    with pytest.raises(TypeError, match="a bug in the check"):
+    with pytest.raises(TypeError, match=bug):
         async with app.run_test(size=SIZE) as pilot:
-            await pilot.press("alt+n", "f3")  # DEMO.MPF in the editor: its check starts
+            await pilot.press(*keys)
             await settle(pilot)
 
 
@@ -58,16 +64,6 @@ async def test_a_faulty_program_is_an_alarm_on_its_line(data_dir: Path) -> None:
         await settle(pilot)
         assert [(m.line, m.number) for m in screen.editor.error_marks.values()] == [(9, 12080)]
         assert app.internal_errors == []
-
-
-async def test_a_bug_in_the_simulation_fails_the_test(data_dir: Path,
-                                                      monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(CheckContext, "simulate", _broken_simulation)
-    app = make_program_app(data_dir)
-    with pytest.raises(TypeError, match="a bug in the simulation"):
-        async with app.run_test(size=SIZE) as pilot:
-            await pilot.press("alt+n", "f3", "f5")  # DEMO.MPF in the editor, Simulation
-            await settle(pilot)
 
 
 async def test_outside_tests_the_simulation_bug_is_kept_and_said_in_the_panels_words(
