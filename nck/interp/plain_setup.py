@@ -16,7 +16,6 @@ from typing import Any
 
 from nck.errors import NcAlarmError
 from nck.geometry.trc_canon import STAGE_ATTRIBUTE
-from nck.geometry.units import UnitSystem
 from nck.interp.host import InterpreterHost
 from nck.lang.lines import TextLines
 
@@ -119,8 +118,8 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
         tool = path.tool_vector(modal)
     except NcAlarmError:
         return None
-    units = _units(interp, gcodes.get(13, "G71"))
-    if units[1] != geo.feed_unit_mm:
+    units = path.units(modal)
+    if units.feed_mm != geo.feed_unit_mm:
         return None  # F was programmed under another G70/G71/G700/G710: the path builder keeps it
     if gcodes.get(29) == "DIAM90":
         return None  # diameter or radius by G90/G91: the path builder
@@ -129,8 +128,8 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
         absolute=distance == "G90",
         kind=1 if kind == "G1" else 0,
         feed=float(modal.feed),
-        position_mm=units[0],
-        feed_mm=units[1],
+        position_mm=units.position_mm,
+        feed_mm=units.feed_mm,
         diameter=tuple(diameter_on and a in path.diameter_axes for a in GEOMETRY),  # type: ignore[arg-type]
         scale=affine[0],
         offset=affine[1],
@@ -140,16 +139,6 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
         axes=machine.axes,
         diameter_on=diameter_on,
     )
-
-
-def _units(interp: InterpreterHost, code: str) -> tuple[float, float]:
-    """(position_mm, feed_mm) of G group 13 member ``code`` (cached per interpreter)."""
-    table = interp.__dict__.setdefault("_plain_units", {})
-    found = table.get(code)
-    if found is None:
-        units = UnitSystem(code, basic_metric=interp.builder.path.basic_metric)
-        found = table[code] = (units.position_mm, units.feed_mm)
-    return found
 
 
 def r_round(value: float) -> float:
