@@ -372,7 +372,7 @@ def batch_clock(machine: MachineConfig, batch: Any, clock: float,
     """
     import numpy as np
 
-    from nck.interp.interpreter import BLOCK_COST_S
+    from nck.interp.api import BLOCK_COST_S
 
     steps = np.zeros((batch.blocks, 2))
     steps[:, 0] = BLOCK_COST_S

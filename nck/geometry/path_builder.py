@@ -63,8 +63,9 @@ _LENGTH_PARAMS = (1, 3, 4, 5, 12, 13, 14, 21, 22, 23)  # $TC_DP of the tool leng
 _UNIT_SYSTEMS: dict[tuple[str, bool], UnitSystem] = {}  # (G group 13 code, basic system metric): immutable
 
 
-def _r(value: float) -> float:
-    """Round away floating noise (sub-nanometre) and negative zero."""
+def round_position(value: float) -> float:
+    """A position as the path builder keeps it: floating noise (sub-nanometre) and negative
+    zero rounded away (every machine and WCS end point goes through this)."""
     return round(float(value), ROUND_DIGITS) + 0.0
 
 
@@ -86,6 +87,7 @@ class PathBuilder:
         self.frame_add_components = bool(machine.md_value("MD24000", default=0))
         self.frame_fine_configured = bool(machine.md_value("MD18600", default=1))
         self.basic_metric = bool(machine.md_value("MD10240", default=1))
+        self._gcodes_copy: dict[int, str] = {}
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -183,13 +185,30 @@ class PathBuilder:
     def from_mm(self, axis: str, value: float, modal: Any, units: UnitSystem) -> float:
         """An internal value back in programmed units (WCS display)."""
         if not self._is_length(axis):
-            return _r(value)
+            return round_position(value)
         out = float(value) / units.position_mm
-        return _r(out * 2.0 if self._diameter(axis, modal) else out)
+        return round_position(out * 2.0 if self._diameter(axis, modal) else out)
 
     def wcs_view(self, geo: GeometryState, modal: Any) -> dict[str, float]:
         """The programmed WCS position in program units, per path axis."""
         return self._display(geo.wcs_mm, modal.gcodes, self.units(modal))
+
+    def wcs_display(self, values_mm: Mapping[str, float], modal: Any) -> dict[str, float]:
+        """WCS values (mm) in program units under ``modal``'s units and DIAMON state, per path
+        axis (0 where ``values_mm`` has none): what :meth:`wcs_view` shows of a position."""
+        return self._display(values_mm, modal.gcodes, self.units(modal))
+
+    def shared_gcodes(self, gcodes: Mapping[int, str]) -> dict[int, str]:
+        """A copy of ``gcodes`` for a motion, the same object as the last one while they are
+        equal (motions of consecutive blocks share it; it is never changed)."""
+        if self._gcodes_copy != gcodes:
+            self._gcodes_copy = dict(gcodes)
+        return self._gcodes_copy
+
+    def cartesian_xyz(self) -> bool:
+        """True when X, Y and Z are the geometry axes, all of them linear path axes."""
+        return self.geo_axes == ("X", "Y", "Z") and all(
+            a in self.path_axes and self._is_length(a) for a in self.geo_axes)
 
     def _display(self, values_mm: Mapping[str, float], gcodes: Mapping[int, str],
                  units: UnitSystem) -> dict[str, float]:
@@ -605,7 +624,7 @@ class PathBuilder:
         end_mcs = dict(start_mcs)
         for axis in words.axes:
             if axis in end_mcs:
-                end_mcs[axis] = _r(end_bcs[axis] + tool.get(axis, 0.0))
+                end_mcs[axis] = round_position(end_bcs[axis] + tool.get(axis, 0.0))
         wcs = full.inverse().apply(end_bcs)
         for axis in words.axes:
             geo.wcs_mm[axis] = wcs.get(axis, 0.0)
@@ -640,7 +659,7 @@ class PathBuilder:
             value = bcs.get(axis, 0.0) + tool.get(axis, 0.0)
             if axis in kept:
                 value = start_mcs.get(axis, value)
-            out[axis] = _r(value)
+            out[axis] = round_position(value)
         return out
 
     def _kept_axes(self, context: Mapping[str, Any]) -> tuple[str, ...]:
@@ -669,7 +688,7 @@ class PathBuilder:
             else:
                 factor, offset = transform.axial.get(axis, (1.0, 0.0))
                 wcs_mm = (bcs - offset) / factor
-            actual = _r(self.from_mm(axis, wcs_mm, modal, units))
+            actual = round_position(self.from_mm(axis, wcs_mm, modal, units))
             if abs(actual - end_wcs.get(axis, actual)) > 1e-6:
                 end_wcs[axis] = actual
 
@@ -804,7 +823,7 @@ def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[
         n = cof @ np.asarray(axis, dtype=float)
         n = n / float(np.linalg.norm(n))
         names = transform.geometry_axes
-        found = normals[key] = {names[i]: _r(n[i]) for i in range(3)}
+        found = normals[key] = {names[i]: round_position(n[i]) for i in range(3)}
     return dict(found)
 
 

@@ -329,6 +329,13 @@ def flush(modal: Any, path: Any, data: Any) -> list[canon.Motion]:
     return _writable(modal, found).flush(modal, path, data)
 
 
+def compensating(geo: Any) -> bool | None:
+    """True while radius compensation is active in the geometry state ``geo``, False when it
+    is off, None while the stage has not been created (no block has asked for it yet)."""
+    found = getattr(geo, STAGE_ATTRIBUTE, None)
+    return None if found is None else found.compensator.active
+
+
 def holding(modal: Any) -> bool:
     """True while the compensation look-ahead holds a programmed block back."""
     geo = getattr(modal, "geometry", None)

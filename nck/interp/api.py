@@ -12,6 +12,9 @@ from typing import Protocol
 
 from nck.canon import CanonCommand, Source
 
+BLOCK_COST_S = 0.001
+"""Simulated time one interpreted block costs (1 ms), whatever path interpreted it."""
+
 
 @dataclass(frozen=True, slots=True)
 class BlockResult:

@@ -45,7 +45,7 @@ from nck.alarm_ids import BLOCK_TOO_COMPLEX, ILLEGAL_ARRAY_INDEX_1, MEMORY_CAPAC
 from nck.errors import NcAlarmError
 from nck.access import LEVEL_FEWEST_RIGHTS
 from nck.interp import data_writes
-from nck.interp.api import BlockResult, ProgramSource
+from nck.interp.api import BLOCK_COST_S, BlockResult, ProgramSource
 from nck.interp.block_run import (  # noqa: F401 - re-exported language limits
     MAX_PASSES, MAX_PROGRAM_LEVELS, PROGRAM_CONTROL_M, BlockRun,
 )
@@ -70,7 +70,6 @@ from nck.lang.lexer import tokenize
 from nck.lang.parser import BlockParser
 from nck.resources import data_path
 
-BLOCK_COST_S = 0.001  # simulated time one interpreted block costs (1 ms)
 
 
 @dataclass

@@ -32,9 +32,9 @@ from typing import Any
 import numpy as np
 
 from nck.geometry.contour_aids import LineElement
-from nck.geometry.path_builder import end_tangent
+from nck.geometry.path_builder import ROUND_DIGITS, end_tangent, round_position
 from nck.interp.host import InterpreterHost
-from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, r_round, simple_setup
+from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_WORDS
 
 BATCH_LINES = 32_768
@@ -235,7 +235,7 @@ def _plan_words(interp: InterpreterHost, setup: Setup, first: int, words: _Words
                           words.first_executable, np.zeros((0, 3)), empty, setup.wcs)
     wcs = np.empty((moves, 3))
     mcs = np.empty((moves, len(axes)))
-    rounded_start = np.array([r_round(v) for v in start_mcs])
+    rounded_start = np.array([round_position(v) for v in start_mcs])
     for i, axis in enumerate(axes):
         mcs[:, i] = rounded_start[i]
     for i in range(3):
@@ -296,9 +296,9 @@ def _forward_fill(mask: np.ndarray, values: np.ndarray, initial: float) -> np.nd
 
 
 def _round_array(values: np.ndarray) -> np.ndarray:
-    """:func:`_r` of every element: values numpy rounds to themselves are kept (see module notes)."""
+    """:func:`round_position` of every element: values numpy rounds to themselves are kept (see module notes)."""
     out = values + 0.0
-    same = (np.round(values, 9) == values) & (np.abs(values) < ROUND_SAFE_MM)
+    same = (np.round(values, ROUND_DIGITS) == values) & (np.abs(values) < ROUND_SAFE_MM)
     for i in np.flatnonzero(~same).tolist():
-        out[i] = r_round(values[i])
+        out[i] = round_position(values[i])
     return out

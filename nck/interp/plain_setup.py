@@ -15,12 +15,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from nck.errors import NcAlarmError
-from nck.geometry.trc_canon import STAGE_ATTRIBUTE
+from nck.geometry.trc_canon import compensating
 from nck.interp.host import InterpreterHost
 from nck.lang.lines import TextLines
 
 GEOMETRY = ("X", "Y", "Z")
-BLOCK_COST_S = 0.001  # the interpreter's cost of one block (nck.interp.interpreter.BLOCK_COST_S)
 
 
 @dataclass
@@ -38,31 +37,7 @@ class Setup:
     tool: tuple[float, float, float]
     wcs: tuple[float, float, float]
     mcs: dict[str, float]  # the modal MCS position (read only)
-    axes: tuple[str, ...]
-    diameter_on: bool
-
-
-@dataclass(frozen=True)
-class MachineAxes:
-    """What the fast path needs of the machine (fixed for an interpreter)."""
-
-    usable: bool  # X, Y, Z are the linear geometry axes and path axes
-    axes: tuple[str, ...]  # path axes
-    linear: tuple[bool, ...]  # per path axis: a linear axis (mm) or not (degrees)
-    diameter: tuple[bool, ...]  # per path axis: programmed in diameter under DIAMON
-
-
-def machine_axes(interp: InterpreterHost) -> MachineAxes:
-    cached = interp.__dict__.get("_plain_machine")
-    if cached is None:
-        path = interp.builder.path
-        axes = tuple(path.path_axes)
-        usable = path.geo_axes == GEOMETRY and all(a in axes for a in GEOMETRY) \
-            and all(path.kinds.get(a, "linear") == "linear" for a in GEOMETRY)
-        cached = MachineAxes(usable, axes, tuple(path.kinds.get(a, "linear") == "linear" for a in axes),
-                          tuple(a in path.diameter_axes for a in axes))
-        interp.__dict__["_plain_machine"] = cached
-    return cached
+    axes: tuple[str, ...]  # the machine's path axes
 
 
 def plain_frame(interp: InterpreterHost) -> tuple[Any, Any] | None:
@@ -89,8 +64,8 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
     """
     if interp.dialect.name != "siemens":
         return None
-    machine = machine_axes(interp)
-    if not machine.usable:
+    path = interp.builder.path
+    if not path.cartesian_xyz():
         return None
     modal = interp.modal
     geo = modal.geometry
@@ -107,13 +82,11 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
         return None
     if geo.feed_override_pct != 100.0 or geo.accel_pct:
         return None  # OVR and ACC go through the path builder
-    stage = getattr(geo, STAGE_ATTRIBUTE, None)
-    if stage is None or stage.compensator.active:
+    if compensating(geo) is not False:
         return None
     affine = geo.frames.transform().axis_affine()
     if affine is None:
         return None
-    path = interp.builder.path
     try:
         tool = path.tool_vector(modal)
     except NcAlarmError:
@@ -136,11 +109,5 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
         tool=(float(tool.get("X", 0.0)), float(tool.get("Y", 0.0)), float(tool.get("Z", 0.0))),
         wcs=(float(geo.wcs_mm.get("X", 0.0)), float(geo.wcs_mm.get("Y", 0.0)), float(geo.wcs_mm.get("Z", 0.0))),
         mcs=modal.position_mcs,
-        axes=machine.axes,
-        diameter_on=diameter_on,
+        axes=tuple(path.path_axes),
     )
-
-
-def r_round(value: float) -> float:
-    """The path builder's rounding (9 decimals, no negative zero)."""
-    return round(float(value), 9) + 0.0

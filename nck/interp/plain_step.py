@@ -12,11 +12,10 @@ from __future__ import annotations
 
 from nck import canon
 from nck.geometry.contour_aids import LineElement
-from nck.geometry.path_builder import end_tangent
-from nck.interp.api import BlockResult
+from nck.geometry.path_builder import end_tangent, round_position
+from nck.interp.api import BLOCK_COST_S, BlockResult
 from nck.interp.host import InterpreterHost
-from nck.interp.plain_setup import (BLOCK_COST_S, GEOMETRY, Setup, machine_axes, plain_frame, r_round,
-                                    simple_setup)
+from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_LINE, axis_value, feed_value
 
 
@@ -96,20 +95,19 @@ def _move(interp: InterpreterHost, setup: Setup, source: canon.Source, kind: int
         if setup.diameter[i]:
             value_mm = value_mm / 2.0
         end[axis] = value_mm if setup.absolute else end.get(axis, 0.0) + value_mm
-        machine_geo[axis] = r_round((end[axis] * setup.scale[i] + setup.offset[i]) + setup.tool[i])
+        machine_geo[axis] = round_position((end[axis] * setup.scale[i] + setup.offset[i]) + setup.tool[i])
     start_mcs = dict(modal.position_mcs)
-    end_mcs = {axis: machine_geo[axis] if axis in machine_geo else r_round(start_mcs.get(axis, 0.0))
+    end_mcs = {axis: machine_geo[axis] if axis in machine_geo else round_position(start_mcs.get(axis, 0.0))
                for axis in setup.axes}
     geo.wcs_mm = end
     geo.tangent = end_tangent(LineElement(
         (float(start.get("X", 0.0)), float(start.get("Y", 0.0)), float(start.get("Z", 0.0))),
         (float(end["X"]), float(end["Y"]), float(end["Z"]))))
-    modal.position_wcs = _wcs_view(interp, setup, end)
+    path = interp.builder.path
+    modal.position_wcs = path.wcs_display(end, modal)
     modal.position_mcs = dict(end_mcs)
     gcodes = modal.gcodes
-    shared = interp.__dict__.get("_plain_gcodes")
-    if shared != gcodes:  # consecutive motions share one (read-only) copy of the G codes
-        shared = interp.__dict__["_plain_gcodes"] = dict(gcodes)
+    shared = path.shared_gcodes(gcodes)
     rapid = kind == 0
     return canon.Motion(
         kind="G1" if kind else "G0", source=source, plane=gcodes.get(6, "G17"),
@@ -133,18 +131,6 @@ def _reported_wcs(interp: InterpreterHost, setup: Setup, texts: tuple[str | None
                 if reported is end_mm:
                     reported = dict(end_mm)
                 reported[axis] = actual_mm
-    return dict(interp.modal.position_wcs) if reported is end_mm else _wcs_view(interp, setup, reported)
-
-
-def _wcs_view(interp: InterpreterHost, setup: Setup, wcs_mm: dict[str, float]) -> dict[str, float]:
-    """The path builder's ``wcs_view``: program units per path axis, rounded."""
-    machine = machine_axes(interp)
-    out: dict[str, float] = {}
-    for axis, linear, diameter in zip(machine.axes, machine.linear, machine.diameter):
-        value = wcs_mm.get(axis, 0.0)
-        if not linear:
-            out[axis] = r_round(value)
-            continue
-        value = float(value) / setup.position_mm
-        out[axis] = r_round(value * 2.0 if diameter and setup.diameter_on else value)
-    return out
+    if reported is end_mm:
+        return dict(interp.modal.position_wcs)
+    return interp.builder.path.wcs_display(reported, interp.modal)
