@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 from array import array
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Mapping
 import numpy as np
 
 from nck import canon
@@ -59,6 +59,7 @@ CUT_EPSILON_MM = 0.01
 
 _PLANE_INDEX = {"G17": (0, 1), "G18": (2, 0), "G19": (1, 2)}
 _LINEAR_MASK = np.array([True, True, True])
+Point = tuple[float, float, float]
 
 
 @dataclass(frozen=True, slots=True)
@@ -215,7 +216,7 @@ class PathRecorder:
         self.states: list[ModalState] = []  # per motion; equal states are one object
         self._state_of: dict[tuple[Any, ...], ModalState] = {}
         self.tool_times: dict[int, float] = {}
-        self.position: np.ndarray | None = None
+        self.position: Point | None = None  # the tool tip after the last motion
         self.mcs_minus_wcs: tuple[float, float, float] | None = None  # the work offset, tool length taken out
         # Flat buffers, not an array or a tuple per motion (a 200,000-block program kept 100 MB
         # of small objects): chord starts and ends (X Y Z per chord), per motion its chord count
@@ -279,8 +280,8 @@ class PathRecorder:
             self._motion(command)
 
     def _motion(self, motion: canon.Motion) -> None:
-        end_wcs = dict(motion.end_wcs)
-        end_mcs = dict(motion.end_mcs)
+        end_wcs = motion.end_wcs
+        end_mcs = motion.end_mcs
         first = not self.counts
         if self.mcs_minus_wcs is None and self.turning and all(a in end_wcs and a in end_mcs for a in "XZ"):
             # Lathe: MCS X in radius, WCS X a diameter (DIAMON); length 1 along X, 2 along Z (G18).
@@ -296,25 +297,36 @@ class PathRecorder:
         in_blank = not self.turning and self.mcs_minus_wcs is not None
         if self.position is None:
             if in_blank:
-                self.position = self._blank_point(dict(motion.start_mcs) or end_mcs, None)
+                self.position = self._blank_point(motion.start_mcs or end_mcs, None)
             else:
-                start_mcs = dict(motion.start_mcs)
-                self.position = np.array([
+                start_mcs = motion.start_mcs
+                self.position = tuple(
                     float(start_mcs.get(a, end_mcs.get(a, 0.0))) + float(end_wcs.get(a, 0.0)) - float(end_mcs.get(a, 0.0))
-                    if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ"])
+                    if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ")
         start = self.position
         if in_blank:
             end = self._blank_point(end_mcs, start)
-            points = self._points_in_blank(motion, start, end)
         else:
-            end = np.array([float(end_wcs.get(a, start[i])) for i, a in enumerate("XYZ")])
-            points = self._points(motion, start, end)
-        length = float(np.linalg.norm(np.diff(np.vstack([start[None, :], points]), axis=0), axis=1).sum())
+            end = tuple(float(end_wcs[a]) if a in end_wcs else start[i] for i, a in enumerate("XYZ"))
+        if motion.kind in ("G2", "G3"):
+            points = self._points_in_blank(motion, start, end) if in_blank else self._points(motion, start, end)
+        else:
+            points = None
+        if points is None:
+            # A straight move is one chord (the norm as numpy's of one row: ((dx² + dy²) + dz²)).
+            dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+            length = math.sqrt(dx * dx + dy * dy + dz * dz)
+            self._starts.extend(start)
+            self._ends.extend(end)
+            self.counts.append(1)
+        else:
+            chained = np.vstack([np.array(start)[None, :], points])
+            length = float(np.linalg.norm(np.diff(chained, axis=0), axis=1).sum())
+            self._starts.frombytes(np.ascontiguousarray(chained[:-1], dtype=np.float64).tobytes())
+            self._ends.frombytes(np.ascontiguousarray(points, dtype=np.float64).tobytes())
+            self.counts.append(len(points))
         feed = DEFAULT_RAPID_MM_MIN if motion.kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
         self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
-        self._starts.frombytes(np.ascontiguousarray(np.vstack([start[None, :], points[:-1]]), dtype=np.float64).tobytes())
-        self._ends.frombytes(np.ascontiguousarray(points, dtype=np.float64).tobytes())
-        self.counts.append(len(points))
         # The first motion comes from wherever the machine stands (the reference point, beyond
         # the blank): it is drawn but cuts nothing (our choice; a real set-up starts clear).
         cutter = self._cutter() if not first else self._no_cutter()
@@ -346,47 +358,48 @@ class PathRecorder:
         edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
         return edge.get(3) + edge.get(12) if edge is not None else 0.0
 
-    def _blank_point(self, mcs: dict[str, float], keep: np.ndarray | None) -> np.ndarray:
+    def _blank_point(self, mcs: Mapping[str, float], keep: Point | None) -> Point:
         """A point of the toolholder reference in the MCS as the tool tip in the blank's frame
         (the work offset of the first motion, :attr:`mcs_minus_wcs`); axes missing: ``keep``'s."""
         offset = self.mcs_minus_wcs or (0.0, 0.0, 0.0)
         shift = (offset[0], offset[1], offset[2] + self._length())
-        return np.array([float(mcs[a]) - shift[i] if a in mcs else (float(keep[i]) if keep is not None else 0.0)
-                         for i, a in enumerate("XYZ")])
+        return tuple(float(mcs[a]) - shift[i] if a in mcs else (keep[i] if keep is not None else 0.0)
+                     for i, a in enumerate("XYZ"))  # type: ignore[return-value]
 
-    def _points_in_blank(self, motion: canon.Motion, start: np.ndarray, end: np.ndarray) -> np.ndarray:
-        """The chords of a mill's motion in the blank's frame, from its MCS geometry: a frame
-        that mirrors or rotates in the plane moves the cut where the machine cuts. An arc whose
-        axis is not the plane's normal in the MCS (a frame tilting the plane) is one chord (our
-        choice)."""
-        if motion.kind not in ("G2", "G3") or not motion.center_mcs:
-            return end[None, :]
+    def _points_in_blank(self, motion: canon.Motion, start: Point, end: Point) -> np.ndarray | None:
+        """The chords' end points of a mill's arc in the blank's frame, from its MCS geometry
+        (None: one chord): a frame that mirrors or rotates in the plane moves the cut where the
+        machine cuts. An arc whose axis is not the plane's normal in the MCS (a frame tilting
+        the plane) is one chord (our choice)."""
+        if not motion.center_mcs:
+            return None
         plane = _PLANE_INDEX.get(motion.plane, (0, 1))
         normal_axis = "XYZ"[3 - plane[0] - plane[1]]
         clockwise = motion.kind == "G2"
         if motion.arc_normal_mcs:
             component = float(dict(motion.arc_normal_mcs).get(normal_axis, 0.0))
             if abs(component) < 0.999:
-                return end[None, :]
+                return None
             clockwise = component < 0.0
         centre = self._blank_point(dict(motion.center_mcs), start)
         return self._arc_chords(start, end, (float(centre[plane[0]]), float(centre[plane[1]])), plane, clockwise,
                                 motion.turns)
 
-    def _points(self, motion: canon.Motion, start: np.ndarray, end: np.ndarray) -> np.ndarray:
-        if motion.kind not in ("G2", "G3") or not motion.center_wcs:
-            return end[None, :]
+    def _points(self, motion: canon.Motion, start: Point, end: Point) -> np.ndarray | None:
+        """The chords' end points of an arc in the WCS (None: one chord)."""
+        if not motion.center_wcs:
+            return None
         plane = _PLANE_INDEX.get(motion.plane, (0, 1))
         centre = dict(motion.center_wcs)
         names = "XYZ"
         c = (float(centre.get(names[plane[0]], start[plane[0]])), float(centre.get(names[plane[1]], start[plane[1]])))
         return self._arc_chords(start, end, c, plane, motion.kind == "G2", motion.turns)
 
-    def _arc_chords(self, start: np.ndarray, end: np.ndarray, centre: tuple[float, float], plane: tuple[int, int],
-                    clockwise: bool, turns: int) -> np.ndarray:
-        segment = arc_segment(start, end, centre, plane, clockwise, turns, _LINEAR_MASK)
+    def _arc_chords(self, start: Point, end: Point, centre: tuple[float, float], plane: tuple[int, int],
+                    clockwise: bool, turns: int) -> np.ndarray | None:
+        segment = arc_segment(np.array(start), np.array(end), centre, plane, clockwise, turns, _LINEAR_MASK)
         if segment.arc is None:
-            return end[None, :]
+            return None
         radius = max(segment.arc[4], segment.arc[5])
         sweep = abs(segment.arc[7])
         step = 2.0 * math.acos(max(1.0 - self.tol / max(radius, 1e-9), -1.0)) if radius > self.tol else math.pi
