@@ -78,7 +78,7 @@ class BasicBlockLog:
         self._seq = 0
         self._motion_code: str | None = None
         self._feed: float | None = None
-        self._positions: dict[str, float] = {}
+        self._positions: dict[str, tuple[float, str]] = {}  # per axis: the last end and its text
 
     def taken(self, block: BlockResult) -> None:
         """A block taken for execution: a display block when it acts on the machine."""
@@ -109,11 +109,16 @@ class BasicBlockLog:
         if motion.kind != self._motion_code:
             words.append(motion.kind)
             self._motion_code = motion.kind
+        positions = self._positions
         for axis, value in motion.end_wcs.items():
             end = float(value)
-            if axis not in self._positions or _shown(end) != _shown(self._positions[axis]):
-                words.append(f"{axis}{_shown(end)}")
-            self._positions[axis] = end
+            last = positions.get(axis)
+            if last is not None and last[0] == end:
+                continue  # the same value: the same text
+            shown = _shown(end)
+            if last is None or shown != last[1]:
+                words.append(f"{axis}{shown}")
+            positions[axis] = (end, shown)
         centre_words = CENTRE_WORDS.get(motion.plane, {})
         for axis, value in (motion.center_wcs or {}).items():
             if axis in centre_words:
