@@ -5,9 +5,10 @@ of :mod:`nck.channel`), the program run, the MDA overlay, the interrupted progra
 REPOS point, manual traversing and the emergency stop. :class:`ControlSwitches` holds the
 operator's program-control switches and override positions; :class:`MachineOutputs` holds
 what the main run has output to the machine (active tool and edge, spindle, auxiliary
-functions, the work offset of the last segment); :class:`MachinePlant` the machine and the
-motion system moving its axes. ``Nck`` creates one of each and hands them to its parts (the
-status snapshot, block search, manual traversing, contact watch).
+functions, the work offset of the last segment); :class:`MachinePlant` the machine, the
+motion system moving its axes and the simulated axes of program test. ``Nck`` creates one of
+each and hands them to its parts (the status snapshot, block search, manual traversing,
+contact watch, program control, data writes).
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from nck.basic_blocks import BasicBlockLog
 from nck.canon import Dwell, Motion, SpindleCommand
 from nck.channel import ChannelSituation, next_state
 from nck.machine import MachineConfig
+from nck.motion.instant import InstantMotion
 from nck.program_control import ProgramRun
 
 OVERRIDE_NAMES = ("feed", "rapid", "spindle")
@@ -123,10 +125,12 @@ class MachineOutputs:
 @dataclass
 class MachinePlant:
     """The active machine and the motion system that moves its axes; both are replaced when
-    stored machine data come into effect, so parts hold the plant, not the two objects."""
+    stored machine data come into effect, so parts hold the plant, not the two objects.
+    Under program test the program runs on ``test_motion``, a simulated copy of the axes."""
 
     machine: MachineConfig
     motion: Any
+    test_motion: InstantMotion | None = None  # the simulated axes under program test (None: none)
 
     def positions(self, motion: Any = None) -> dict[str, float]:
         """Actual MCS positions of the path axes (no spindles) of ``motion`` (default: the machine's)."""

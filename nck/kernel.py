@@ -31,7 +31,7 @@ from dataclasses import replace
 from typing import Any, Callable, Collection
 
 from nck import commands as cmd
-from nck.access import AccessControl
+from nck.access import AccessControl, AccessState, Action
 from nck.alarms import AlarmServer
 from nck.block_search import circle_tolerance
 from nck.channel_state import ChannelState, ControlSwitches, MachineOutputs, MachinePlant
@@ -47,13 +47,16 @@ from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
 from nck.iso.dialect import dialect_for
+from nck.kernel_access import Protection
 from nck.kernel_contact import ContactEvent, ContactWatch
+from nck.kernel_data import DataWrites
 from nck.kernel_manual import ManualControl
 from nck.kernel_search import BlockSearchControl
 from nck.kernel_settings import ControlSettings
 from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_setup import JobSetup
 from nck.machine import MachineConfig, load_machine
+from nck.machine_data import MachineDataStore
 from nck.motion.instant import InstantMotion, instant_motion_factory
 from nck.motion.system import planned_motion_factory
 from nck.ncdata import NcData
@@ -91,7 +94,7 @@ def _default_interpreter_factory(
     return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
-class Nck(ControlSettings):
+class Nck:
     """The simulated NCK; see the module docstring."""
 
     def __init__(
@@ -119,7 +122,6 @@ class Nck(ControlSettings):
             # position) -> referenced at power on without any motion.
             adjusted = self.machine.md_value("MD34210", axis, 0) == 2
             self.motion.set_referenced(axis, referenced or adjusted)
-        self._test_motion: InstantMotion | None = None
         self.alarms = AlarmServer()
         self.internal_errors: list[str] = []
         self._time_s = 0.0
@@ -138,10 +140,6 @@ class Nck(ControlSettings):
         if isinstance(md27882, list) and len(md27882) == 3:
             self.counters.m_codes = tuple(int(v) for v in md27882)  # type: ignore[assignment]
         self.runtime = RuntimeTimer()
-        # Access control (keyswitch, passwords) of nck.access; created on first
-        # use because the default password hashes cost time to compute.
-        self._access = access
-        self._keyswitch = access.state.keyswitch_position if access is not None else 0
         self._seq = 0
         self._last_body: NckStatus | None = None
         self._snapshot: NckStatus | None = None  # the last built snapshot; None: something changed since
@@ -159,17 +157,25 @@ class Nck(ControlSettings):
         self.cycles_done = 0  # IPO cycles since power on (system utilisation)
         self.blocks_interpreted = 0  # blocks the interpreter handed over since power on
         self.logbook: list[LogbookEntry] = []  # access-level and MD/SD changes since power on
+        # Keyswitch and passwords (nck.kernel_access); without an access control: unprotected
+        self.protection = Protection(access, self.logbook, self.alarms, clock=lambda: self._time_s,
+                                     raise_number=self._raise_number)
         # Contacts with the blank / reference block (nck.kernel_contact)
         self.contact_watch = ContactWatch(
             self.plant, self.data, self.channel, self.switches, self.outputs, self.alarms, self._ipo_s,
             path_motion=self._path_motion, clock=lambda: self._time_s, motion_alarm=self._motion_alarm)
         self.manual = ManualControl(self.plant, self.data, self.channel, self.contact_watch.state, self._park)  # JOG, INC, REF
-        self.setup = JobSetup(self.plant, self.data, self.channel, self.interpreters, self._require)  # Set WO, set-up
+        self.setup = JobSetup(self.plant, self.data, self.channel, self.interpreters, self.protection.require)  # Set WO, set-up
         self.search = BlockSearchControl(  # block search, SERUPRO
             self.plant, self.channel, self.switches, self.runtime, self.interpreters, new_run=self._new_run,
             begin_run=self._begin_run, path_motion=self._path_motion, program_test_ended=self._program_test_ended,
             output=self._output, raise_number=self._raise_number)
-        self._apply_overrides()
+        self.settings = ControlSettings(  # program control, overrides
+            self.plant, self.data, self.channel, self.switches, self.interpreters, self.search)
+        self.data_writes = DataWrites(  # WriteData and the other data commands, MD activation
+            self.plant, self.data, self.channel, self.outputs, self.interpreters, self.protection,
+            self.counters, self.setup, motion_renewed=self.settings.apply_overrides)
+        self.settings.apply_overrides()
         self.interpreters.get("AUTO")  # its reset G codes are shown from power on
 
     @property
@@ -189,6 +195,40 @@ class Nck(ControlSettings):
     @motion.setter
     def motion(self, motion: Any) -> None:
         self.plant.motion = motion
+
+    @property
+    def access(self) -> AccessControl:
+        """Keyswitch and passwords (protection levels 0 … 7); created on first use."""
+        return self.protection.access
+
+    @property
+    def access_state(self) -> AccessState | None:
+        """Keyswitch position and password state, None when unprotected."""
+        return self.protection.state()
+
+    def action_level(self, action: Action | str) -> int:
+        """The protection level ``action`` (an Action or its name, ``"READ_TOOL"``) needs;
+        7 when unprotected. Creates nothing."""
+        return self.protection.action_level(action)
+
+    @property
+    def md_store(self) -> MachineDataStore | None:
+        """The machine/setting data store given to the kernel (the session's); None: a store of
+        the machine's own values is created on first use."""
+        return self.data_writes.md_store
+
+    @md_store.setter
+    def md_store(self, store: MachineDataStore | None) -> None:
+        self.data_writes.md_store = store
+
+    @property
+    def machine_data(self) -> MachineDataStore:
+        """The MD/SD store of this kernel (read it for the MD lists; write via ``WriteData``)."""
+        return self.data_writes.machine_data
+
+    def required_level(self, name: str) -> int:
+        """The protection level writing the datum ``name`` needs (7 when unprotected)."""
+        return self.data_writes.required_level(name)
 
     # ------------------------------------------------------------------ API
     def submit(self, command: object) -> SubmitResult:
@@ -391,9 +431,7 @@ class Nck(ControlSettings):
         )
 
     def _access_level(self) -> int:
-        if self._access is not None:
-            return self._access.level
-        return 7 - self._keyswitch
+        return self.protection.level()
 
     # ------------------------------------------------------------ commands
     def _select_mode(self, command: cmd.SelectMode) -> SubmitResult:
@@ -441,8 +479,8 @@ class Nck(ControlSettings):
         if unreferenced:
             self._raise_number(ALARM_START_UNREFERENCED, unreferenced[0])
             return Rejected("Axes not referenced: " + " ".join(unreferenced), alarm=ALARM_START_UNREFERENCED)
-        self._apply_dry_run()  # SD42100/SD42101 written during the interruption
-        self._apply_offset_edits()  # MD9440: work offsets edited during the interruption
+        self.settings.apply_dry_run()  # SD42100/SD42101 written during the interruption
+        self.data_writes.apply_offset_edits()  # MD9440: work offsets edited during the interruption
         if mode == "AUTO":
             return self._start_auto()
         return self._start_mda()
@@ -533,6 +571,13 @@ class Nck(ControlSettings):
         self.channel.basic_blocks = run.basic_blocks
         return run
 
+    def _adjust_motion(self, motion: Motion) -> Motion:
+        """The WCS offset bookkeeping of every segment handed to the motion."""
+        for axis, mcs in motion.end_mcs.items():
+            if axis in motion.end_wcs:
+                self.outputs.wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
+        return motion
+
     def _begin_run(self, run: ProgramRun) -> None:
         self.channel.begin_run(run)
         if run.kind == "AUTO" and self.run_recorder_factory is not None:
@@ -541,9 +586,9 @@ class Nck(ControlSettings):
             run.listener = lambda block: self._record_block(recording, block)
         self.motion.resume()
         if self.switches.program_control["program_test"]:
-            self._test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
-            self._apply_overrides()  # the simulated axes run with the override switches too
-        self._apply_dry_run()
+            self.plant.test_motion = InstantMotion(self.machine, self.motion.positions_mcs())
+            self.settings.apply_overrides()  # the simulated axes run with the override switches too
+        self.settings.apply_dry_run()
 
     def _cycle_stop(self, command: cmd.CycleStop) -> SubmitResult:
         if self.channel.situation.channel != ACTIVE:
@@ -565,8 +610,8 @@ class Nck(ControlSettings):
         self.motion.abort(keep_spindles=kept)
         self._spindle_display_after_reset(kept)
         self.outputs.aux.pop("T", None)  # no preselection beyond RESET (the interpreter's too)
-        if self._test_motion is not None:
-            self._test_motion.abort()
+        if self.plant.test_motion is not None:
+            self.plant.test_motion.abort()
         for interp in self.interpreters.all():
             try:
                 interp.reset()
@@ -583,8 +628,8 @@ class Nck(ControlSettings):
         self.channel.situation = next_state(self.channel.situation, "reset") or self.channel.situation
         self.search.end_serupro()
         if not self.switches.program_control["program_test"]:
-            self._test_motion = None
-        self._activate_data("reset")  # stored MD of activation re/cf take effect
+            self.plant.test_motion = None
+        self.data_writes.activate_data("reset")  # stored MD of activation re/cf take effect
         self.setup.reset_system_frames()
         return Accepted()
 
@@ -597,8 +642,8 @@ class Nck(ControlSettings):
             self.channel.estop_active = True
             self.motion.abort()
             self._spindle_display_after_reset(())  # every spindle brakes and loses its S
-            if self._test_motion is not None:
-                self._test_motion.abort()
+            if self.plant.test_motion is not None:
+                self.plant.test_motion.abort()
             self.channel.stop_manual_motion()
             run = self.channel.active_run()
             self._mark_interrupted(run)
@@ -624,6 +669,10 @@ class Nck(ControlSettings):
         self.channel.mda_text = command.text
         return Accepted()
 
+    def _cancel_alarms(self, command: cmd.CancelAlarms) -> SubmitResult:
+        self.alarms.clear("cancel", self._time_s)
+        return Accepted()
+
     # ------------------------------------------------------------- cycle
     def _batch_size(self, limit: int, fed: bool) -> int:
         """How many IPO cycles may run as one motion step now (1 = cycle by cycle).
@@ -646,7 +695,7 @@ class Nck(ControlSettings):
     def _event_batching(self) -> bool:
         """True when the motion ends its batches at block events (planned motion, no JOG)."""
         return (
-            self._test_motion is None and not self.channel.jogging
+            self.plant.test_motion is None and not self.channel.jogging
             and getattr(self.motion, "advance_cycles", None) is not None
             and not self.motion.jog_active()
         )
@@ -675,8 +724,8 @@ class Nck(ControlSettings):
         self._cycles_in_step = cycles
         dt_s = self._ipo_s * cycles
         self._time_s += dt_s - self._ipo_s
-        if self._test_motion is not None:
-            self._test_motion.advance(dt_s)
+        if self.plant.test_motion is not None:
+            self.plant.test_motion.advance(dt_s)
         for error in self.motion.drain_alarms():
             self._motion_alarm(error)
         self.contact_watch.watch(before)
@@ -707,7 +756,7 @@ class Nck(ControlSettings):
         first, as the cycle-by-cycle kernel does before that cycle's motion.
         """
         run = self.channel.active_run()
-        if self.channel.jogging or self._test_motion is not None:
+        if self.channel.jogging or self.plant.test_motion is not None:
             return 0
         if run is None or self.channel.situation.channel != ACTIVE:
             return self.batch_cycles  # nothing is fed: the cycles may run on
@@ -894,7 +943,7 @@ class Nck(ControlSettings):
             interp.measurement_source = self.contact_watch.measurement  # type: ignore[attr-defined]
         if hasattr(interp, "access_level"):  # setting-data writes of part programs
             interp.access_level = self._access_level  # type: ignore[attr-defined]
-        self._apply_skip_levels(interp)
+        self.settings.apply_skip_levels(interp)
 
     def _path_positions(self, motion: Any) -> dict[str, float]:
         """Actual MCS positions of the path axes (no spindles) of ``motion``."""
@@ -910,10 +959,11 @@ class Nck(ControlSettings):
 
     def _path_motion(self) -> Any:
         """The motion system programs run on: the simulated one under program test."""
-        return self._test_motion if self.switches.program_control["program_test"] and self._test_motion else self.motion
+        test_motion = self.plant.test_motion
+        return test_motion if self.switches.program_control["program_test"] and test_motion else self.motion
 
     def _display_motion(self) -> Any:
-        return self._test_motion if self._test_motion is not None else self.motion
+        return self.plant.test_motion if self.plant.test_motion is not None else self.motion
 
     def _run_options(self) -> RunOptions:
         return RunOptions(single_block=self.switches.program_control["single_block"], m01=bool(self.switches.program_control["m01"]))  # type: ignore[arg-type]
@@ -959,9 +1009,9 @@ class Nck(ControlSettings):
     def _program_test_ended(self) -> None:
         """Program test was switched off by SERUPRO: the simulated axes go, the machine's get
         the override and dry-run switches."""
-        self._test_motion = None
-        self._apply_overrides()
-        self._apply_dry_run()
+        self.plant.test_motion = None
+        self.settings.apply_overrides()
+        self.settings.apply_dry_run()
 
     def _internal_reset(self) -> None:
         """After an internal error in a cycle: stop everything, keep the alarms."""
@@ -970,16 +1020,19 @@ class Nck(ControlSettings):
         except Exception:  # noqa: BLE001
             pass
         self.channel.clear_programs()
-        self._test_motion = None if not self.switches.program_control["program_test"] else self._test_motion
+        if not self.switches.program_control["program_test"]:
+            self.plant.test_motion = None
         self.channel.situation = ChannelSituation(self.channel.situation.mode, RESET, ABORTED)
 
     # ------------------------------------------------------------- status
 
 
 COMMANDS: CommandTable[Nck] = CommandTable()
-"""Where each command is carried out: command class -> the ``Nck`` method (some live in the
-kernel_* mixins Nck is still assembled from) or the method of one of its parts (``Nck.manual``
-of nck.kernel_manual, ``Nck.setup`` of nck.kernel_setup, ``Nck.search`` of nck.kernel_search). Typed: mypy checks that a handler
+"""Where each command is carried out: command class -> the ``Nck`` method (the channel's
+commands: modes, NC START/STOP, RESET, program selection) or the method of one of its parts
+(``Nck.manual`` of nck.kernel_manual, ``Nck.settings`` of nck.kernel_settings,
+``Nck.protection`` of nck.kernel_access, ``Nck.data_writes`` of nck.kernel_data, ``Nck.setup``
+of nck.kernel_setup, ``Nck.search`` of nck.kernel_search). Typed: mypy checks that a handler
 takes its command."""
 COMMANDS.register(cmd.SelectMode, Nck._select_mode)
 COMMANDS.register_part(cmd.SelectMachineFunction, lambda nck: nck.manual, ManualControl.select_machine_function)
@@ -990,20 +1043,20 @@ COMMANDS.register(cmd.Reset, Nck._reset)
 COMMANDS.register(cmd.EmergencyStop, Nck._emergency_stop)
 COMMANDS.register(cmd.SelectProgram, Nck._select_program)
 COMMANDS.register(cmd.SetMdaProgram, Nck._set_mda)
-COMMANDS.register(cmd.SetProgramControl, Nck._set_program_control)
-COMMANDS.register(cmd.SetOverride, Nck._set_override)
+COMMANDS.register_part(cmd.SetProgramControl, lambda nck: nck.settings, ControlSettings.set_program_control)
+COMMANDS.register_part(cmd.SetOverride, lambda nck: nck.settings, ControlSettings.set_override)
 COMMANDS.register(cmd.CancelAlarms, Nck._cancel_alarms)
 COMMANDS.register_part(cmd.Jog, lambda nck: nck.manual, ManualControl.jog)
-COMMANDS.register(cmd.SetControllerEnable, Nck._set_controller_enable)
+COMMANDS.register_part(cmd.SetControllerEnable, lambda nck: nck.settings, ControlSettings.set_controller_enable)
 COMMANDS.register_part(cmd.StartBlockSearch, lambda nck: nck.search, BlockSearchControl.start_block_search)
-COMMANDS.register(cmd.WriteData, Nck._write_data)
-COMMANDS.register(cmd.SetKeyswitch, Nck._set_keyswitch)
-COMMANDS.register(cmd.EnterPassword, Nck._enter_password)
-COMMANDS.register(cmd.DeletePassword, Nck._delete_password)
-COMMANDS.register(cmd.ChangePassword, Nck._change_password)
-COMMANDS.register(cmd.DeleteToolEdge, Nck._delete_tool_edge)
-COMMANDS.register(cmd.ClearRParameters, Nck._clear_r_parameters)
-COMMANDS.register(cmd.ActivateMachineData, Nck._activate_machine_data)
+COMMANDS.register_part(cmd.WriteData, lambda nck: nck.data_writes, DataWrites.write_data)
+COMMANDS.register_part(cmd.SetKeyswitch, lambda nck: nck.protection, Protection.set_keyswitch)
+COMMANDS.register_part(cmd.EnterPassword, lambda nck: nck.protection, Protection.enter_password)
+COMMANDS.register_part(cmd.DeletePassword, lambda nck: nck.protection, Protection.delete_password)
+COMMANDS.register_part(cmd.ChangePassword, lambda nck: nck.protection, Protection.change_password)
+COMMANDS.register_part(cmd.DeleteToolEdge, lambda nck: nck.data_writes, DataWrites.delete_tool_edge)
+COMMANDS.register_part(cmd.ClearRParameters, lambda nck: nck.data_writes, DataWrites.clear_r_parameters)
+COMMANDS.register_part(cmd.ActivateMachineData, lambda nck: nck.data_writes, DataWrites.activate_machine_data)
 COMMANDS.register_part(cmd.WriteMachineSetup, lambda nck: nck.setup, JobSetup.write_machine_setup)
 COMMANDS.register_part(cmd.WriteManualSettings, lambda nck: nck.setup, JobSetup.write_manual_settings)
 COMMANDS.register_part(cmd.SetActualValue, lambda nck: nck.setup, JobSetup.set_actual_value)

@@ -8,6 +8,7 @@ import pytest
 
 from nck import commands as c
 from nck.kernel import Nck
+from nck.motion.instant import instant_motion_factory
 from nck.persistence import Session
 
 
@@ -194,3 +195,24 @@ def gain(nck: Nck) -> float:
     """MD32200[0,X] as the kernel's machine has it."""
     value = nck.machine.md_value("MD32200", "X", None)
     return value[0] if isinstance(value, list) else value
+
+
+def test_the_active_tool_of_a_running_program_cannot_be_deleted(session: Session) -> None:
+    # 002 L58406-58407: active compensation data blocks (D numbers) cannot be deleted;
+    # after RESET (the program no longer runs) the tool may go.
+    nck = kernel(session, motion_factory=instant_motion_factory, referenced=True)
+    nck.submit(c.SetKeyswitch(3))  # level 4: tool geometry
+    for tool in (7, 8):
+        assert nck.submit(c.WriteData(f"$TC_DP1[{tool},1]", 120)) == c.Accepted()
+        assert nck.submit(c.WriteData(f"$TC_DP3[{tool},1]", 50)) == c.Accepted()
+    nck.submit(c.SelectMode("MDA"))
+    nck.submit(c.SetMdaProgram("T7 D1 M6\nG1 X100 F100\nM30"))
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.positions_mcs()["X"] > 1.0, 10.0)
+    assert nck.status().channel.channel_state == "active"
+    assert "active tool" in rejected(nck.submit(c.DeleteToolEdge(7)))
+    assert (7, 1) in nck.data.tools
+    assert nck.submit(c.DeleteToolEdge(8)) == c.Accepted()
+    nck.submit(c.Reset())
+    assert nck.submit(c.DeleteToolEdge(7)) == c.Accepted()
+    assert (7, 1) not in nck.data.tools
