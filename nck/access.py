@@ -377,6 +377,10 @@ class AccessControl:
         self.state = state if state is not None else AccessState()
         self.user_class = user_class
         self.log: list[str] = []  # level changes, for the logbook
+        self.revision = 0
+        """Grows with every change made through this object (keyswitch, passwords, failed
+        attempts): whoever shows the access state (the kernel's snapshot) is stale when it moved,
+        whichever door (panel, command line, session) made the change."""
 
     @property
     def keyswitch_level(self) -> int:
@@ -395,6 +399,7 @@ class AccessControl:
             raise AccessLocked()
 
     def _note(self, before: int, reason: str) -> None:
+        self.revision += 1
         if self.level != before:
             self.log.append(f"access level {before} -> {self.level} ({reason})")
 
@@ -420,6 +425,7 @@ class AccessControl:
         """Check a password at a door: a wrong one counts as a failed attempt, a right one
         clears the count (and renews a hash made with fewer iterations than today's)."""
         level = self.check_password(password)
+        self.revision += 1
         if level is None:
             self.state.failed_attempts += 1
             self.log.append(f"password not accepted (failed attempt {self.state.failed_attempts})")
@@ -471,6 +477,7 @@ class AccessControl:
             if other != level and record.matches(new_password, derived):
                 raise PasswordError(f"that password already belongs to level {other}")
         self.state.password_hashes[level] = PasswordHash.create(new_password)
+        self.revision += 1
 
     def required(self, action: Action) -> int:
         """Return the level ``action`` needs with the current USER_CLASS data."""

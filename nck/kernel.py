@@ -143,6 +143,7 @@ class Nck:
         self._seq = 0
         self._last_body: NckStatus | None = None
         self._snapshot: NckStatus | None = None  # the last built snapshot; None: something changed since
+        self._snapshot_outside: tuple[int, ...] = ()  # the outside change counters it was built at
         # Optional observers for headless runs and tools (not for the HMI, which
         # reads status() and the alarm log): every interpreted block, every alarm raised.
         self.block_listener: Callable[[Any], None] | None = None
@@ -404,15 +405,23 @@ class Nck:
 
     def status(self) -> NckStatus:
         """The immutable snapshot, built once after each command or kernel step (not once per
-        call); ``seq`` grows when anything in it changed. Reading it changes nothing."""
-        if self._snapshot is None or self._snapshot.access_level != self._access_level():
-            # (The access control is the session's too: a level changed there shows at once.)
+        call) and when state shared with other doors changed (:meth:`_outside_revisions`);
+        ``seq`` grows when anything in it changed. Reading it changes nothing."""
+        outside = self._outside_revisions()
+        if self._snapshot is None or outside != self._snapshot_outside:
             body = build_status(self._status_sources())
             if body != self._last_body:
                 self._seq += 1
                 self._last_body = body
             self._snapshot = replace(body, seq=self._seq, time_s=self._time_s)
+            self._snapshot_outside = outside
         return self._snapshot
+
+    def _outside_revisions(self) -> tuple[int, ...]:
+        """The change counters of what the kernel shares with other doors (the session's access
+        control, turned by its command line or an exercise set-up): the kept snapshot is
+        stale when one of them moved."""
+        return (self.protection.revision(),)
 
     def _status_sources(self) -> StatusSources:
         run = self.channel.active_run()

@@ -3,7 +3,7 @@
 The commands ``SetKeyswitch``, ``EnterPassword``, ``DeletePassword`` and ``ChangePassword``
 work on an :class:`nck.access.AccessControl`. The HMI and the CLI on a data directory hand
 the kernel the session's access control, which other doors (the command line, an exercise
-set-up) change as well.
+set-up) change as well; its ``revision`` tells the kernel that its snapshot is stale.
 
 A bare kernel (unit tests) has no access control: it is a commissioning bench without
 protection (level 7 shown, every write allowed) until a password or keyswitch command (or a
@@ -53,6 +53,10 @@ class Protection:
     def state(self) -> AccessState | None:
         """Keyswitch position and password state; None when unprotected."""
         return self.control.state if self.control is not None else None
+
+    def revision(self) -> int:
+        """Grows with every change of the access state, made by the kernel or another door."""
+        return self.control.revision if self.control is not None else 0
 
     def action_level(self, action: Action | str) -> int:
         """The protection level ``action`` (an Action or its name, ``"READ_TOOL"``) needs;

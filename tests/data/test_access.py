@@ -230,3 +230,28 @@ def test_require_write_matrix() -> None:
     with pytest.raises(AccessDenied):
         control.require_write("$TC_DP6[1,1]")
     control_at(4).require_write("$TC_DP6[1,1]")
+
+
+def test_every_change_through_the_access_control_moves_its_revision() -> None:
+    # Whoever shows the access state (the kernel's snapshot) knows from the revision that it
+    # is stale, whichever door made the change - also one that leaves the level as it was.
+    control = AccessControl(fresh_state())
+    seen = [control.revision]
+
+    def moved() -> bool:
+        seen.append(control.revision)
+        return seen[-1] > seen[-2]
+
+    control.set_keyswitch(0)  # the same position: the level stays 7
+    assert moved()
+    with pytest.raises(PasswordError):
+        control.enter_password("WRONG")  # a failed attempt is counted
+    assert moved()
+    control.enter_password("CUSTOMER")
+    assert moved()
+    control.change_password(3, "NEWONE")
+    assert moved()
+    control.delete_password()
+    assert moved()
+    assert control.level == 7 and not control.may(Action.WRITE_TOOL_GEOMETRY)  # reading changes nothing
+    assert not moved()

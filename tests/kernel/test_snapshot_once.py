@@ -7,6 +7,7 @@ import pytest
 
 import nck.kernel
 from nck import commands as cmd
+from nck.access import AccessControl, AccessState
 from nck.build import build_nck
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
@@ -107,11 +108,25 @@ def test_new_config_gives_the_channel_the_new_machines_interpreter() -> None:
 
 def test_an_access_level_changed_by_the_session_shows_at_once() -> None:
     # The kernel shares its access control with the data directory's session (nck.build).
-    from nck.access import AccessControl, AccessState
-
     access = AccessControl(AccessState(keyswitch_position=0))
     nck_ = build_nck(load_machine(), NcData(), MemorySource(), access=access,
                      motion_factory=instant_motion_factory)
     assert nck_.status().access_level == 7
     access.set_keyswitch(3)
     assert nck_.status().access_level == 4
+
+
+def test_any_change_of_the_shared_access_control_makes_the_kept_snapshot_stale() -> None:
+    # One rule for every change outside the kernel: the access control's revision moved.
+    # A change that leaves the level as it was builds the snapshot again too (same seq:
+    # nothing in it changed); without a change the kept snapshot is handed out.
+    access = AccessControl(AccessState(keyswitch_position=0))
+    nck_ = build_nck(load_machine(), NcData(), MemorySource(), access=access,
+                     motion_factory=instant_motion_factory)
+    first = nck_.status()
+    assert nck_.status() is first
+    access.set_keyswitch(0)  # turned to where it was, by the session
+    second = nck_.status()
+    assert second is not first
+    assert (second.seq, second.access_level) == (first.seq, 7)
+    assert nck_.status() is second
