@@ -1,8 +1,8 @@
 """The interpreter as its block execution and fast path see it.
 
 :class:`InterpreterHost` lists what :mod:`nck.interp.block_run` (one general block) and
-the plain fast path (:mod:`nck.interp.plain_setup`, :mod:`~nck.interp.plain_run`,
-:mod:`~nck.interp.plain_step`) use of :class:`~nck.interp.interpreter.Interpreter`. They
+the fast paths (:mod:`nck.interp.plain_setup`, :mod:`~nck.interp.plain_run`,
+:mod:`~nck.interp.simple_step`) use of :class:`~nck.interp.interpreter.Interpreter`. They
 are typed against it, so they need not import the interpreter module, which imports them:
 the arrows run one way, from the interpreter down to its parts.
 

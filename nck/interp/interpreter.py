@@ -16,10 +16,11 @@ alarm restores both, so a failed block changes nothing.
 Every interpreted block costs :data:`BLOCK_COST_S` of simulated time, so that
 an endless loop without motion still advances the clock and ends at a timeout.
 
-Plain motion blocks (``G1 X… Y… Z…``, :mod:`nck.lang.plain`) under a simple
-modal state take a fast path with the same result (:mod:`nck.interp.plain_step`;
-:meth:`plain_batch` plans a whole run of them for ``nck check``);
-:attr:`fast_path` switches both off.
+Simple motion blocks (G0–G3 with X Y Z, I J K, ``CR=``, F, :mod:`nck.lang.plain`) take
+a fast step with the same result: their precompiled words go to the same motion builder
+without the tree walk and the snapshot (:mod:`nck.interp.simple_step`); :meth:`plain_batch`
+plans a whole run of plain ``G0``/``G1`` blocks for ``nck check``; :attr:`fast_path`
+switches both off.
 
 Program-control hooks for the channel: :attr:`skip_levels` (active ``/n``
 levels), :attr:`position_source` (actual positions for ``$AA_IM``), :attr:`access_level`
@@ -55,7 +56,7 @@ from nck.interp.host import RunState
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import MotionBuilder
 from nck.interp.plain_run import plan
-from nck.interp.plain_step import step_plain
+from nck.interp.simple_step import step_simple
 from nck.interp.program import load_program
 from nck.lang.values import convert, to_number
 from nck.lang import ast
@@ -236,7 +237,7 @@ class Interpreter:
         if self.run_state.finished:
             return BlockResult(source=canon.Source("", 0, None), text="", finished=True)
         if self.fast_path and self.run_state.frames:
-            fast = step_plain(self)  # a plain motion block: same result without parser and snapshot
+            fast = step_simple(self)  # a simple motion block: the same builder, no tree walk or snapshot
             if fast is not None:
                 self.undo_journal = []
                 self.run_state.blocks += 1

@@ -41,7 +41,7 @@ BATCH_LINES = 32_768
 """At most this many blocks per batch (bounds the memory of the arrays)."""
 
 MIN_BATCH_LINES = 16
-"""Shorter runs of plain blocks go block by block (:mod:`nck.interp.plain_step`): the same
+"""Shorter runs of plain blocks go block by block (:mod:`nck.interp.simple_step`): the same
 result, without the fixed cost of the arrays (CAM code mixes a few lines between arcs)."""
 
 ROUND_SAFE_MM = 4.0e6  # below this, a value that numpy rounds to itself is Python-rounded to itself

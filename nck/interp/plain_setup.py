@@ -5,8 +5,8 @@ motion type is G0/G1, the distance mode G90/G91, the feed type G94, radius
 compensation off (G40, nothing buffered), no chamfer or rounding pending or
 modal, the settable frame current, and the frame chain maps every geometry
 axis on its own (:meth:`~nck.geometry.transform.Transform.axis_affine`). Then a plain block only moves the
-programmed point: :mod:`nck.interp.plain_run` (batches) and
-:mod:`nck.interp.plain_step` (one block) compute it without the general path.
+programmed point: :mod:`nck.interp.plain_run` computes a run of them as one batch
+without the general path.
 """
 
 from __future__ import annotations

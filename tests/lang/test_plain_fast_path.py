@@ -5,8 +5,10 @@ the general path (``Interpreter.fast_path`` off) and once with runs of plain
 blocks planned as batches (:mod:`nck.interp.plain_run`). Status, block count,
 machine time (bit for bit), alarms with their line and block number, and the
 modal state afterwards must be identical. Block by block (the kernel's and the
-editor's way), the plain-block step must give the same block results — the
-same canonical motions — as the general path.
+editor's way), the fast step of simple motion blocks (:mod:`nck.interp.simple_step`:
+G0-G3 with I/J/K or CR=, F, N, comments) must give the same block results — the
+same canonical motions, arc centres included, and alarms at the same line — as
+the general path.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from hypothesis import strategies as st
 
 from bench.corpus import cam_milling
 from nck.headless import interpret_only
-from nck.interp import plain_run, plain_step
+from nck.interp import plain_run, simple_step
 from nck.interp import program as program_module
 from nck.interp.interpreter import Interpreter
 from nck.interp.sources import MemorySource
@@ -114,11 +116,49 @@ def plain_lines(draw: Any) -> str:
     return line
 
 
+@st.composite
+def simple_lines(draw: Any) -> str:
+    """A simple motion line (nck.lang.plain.SIMPLE_LINE): G0-G3, X Y Z, a centre I/J/K or a
+    radius CR=, F, N and a comment; now and then in another word order or lower case, which the
+    general path reads (both paths must agree either way). Random centres often miss the end
+    point (alarm 14040 at that line); a half circle drawn incrementally always meets it."""
+    if draw(st.integers(0, 2)) == 0:
+        half = draw(st.integers(1, 400)) / 8
+        helix = f" Z{_number(draw, True)}" if draw(st.booleans()) else ""
+        return f"G91 {draw(st.sampled_from(['G2', 'G3']))} X{2 * half} Y0{helix} I{half} J0"
+    words: list[str] = []
+    if draw(st.booleans()):
+        words.append(f"N{draw(st.integers(0, 9999))}")
+    if draw(st.integers(0, 2)):
+        words.append(draw(st.sampled_from(["G2", "G3", "G02", "G03", "G1", "G0"])))
+    if draw(st.integers(0, 8)) == 0:
+        words.append(draw(st.sampled_from(["G90", "G91"])))
+    for axis in "XYZ":
+        if draw(st.integers(0, 2)):
+            words.append(axis + _number(draw, True))
+    if draw(st.booleans()):
+        for centre in "IJK":
+            if draw(st.integers(0, 2)):
+                words.append(centre + _number(draw, True))
+    elif draw(st.integers(0, 2)):
+        words.append("CR=" + _number(draw, True))
+    if draw(st.integers(0, 6)) == 0:
+        words.append("F" + draw(st.sampled_from(["0", "250", "1500.5"])))
+    if draw(st.integers(0, 9)) == 0:
+        words = draw(st.permutations(words))
+    line = draw(st.sampled_from([" ", " ", ""])).join(words)
+    if draw(st.integers(0, 9)) == 0:
+        line = line.lower()
+    if draw(st.integers(0, 9)) == 0:
+        line += " ; arc"
+    return line
+
+
 SETUP = [
     "G90", "G91", "G0", "G1", "F1000", "G1 F200", "G70", "G71", "G700", "G54", "G500",
     "TRANS X10 Y-5.5 Z0.25", "ATRANS Z3", "SCALE X2 Y2", "SCALE X0.5", "MIRROR X0", "ROT Z30",
     "$TC_DP1[1,1]=120\n$TC_DP3[1,1]=50.5\nT1 D1 M6", "G17", "G19", "G64", "G60", "G95 F0.1 S100 M3",
-    "G94", "G41 G1 X0 Y0 F100", "RNDM=1", "R1=0", "M3 S1000",
+    "G94", "G41 G1 X0 Y0 F100", "RNDM=1", "R1=0", "M3 S1000", "G18", "G2 F500", "G3 F500", "G91 G2 F300",
 ]
 MIXED = [
     "R1=R1+1", "G2 X10 Y0 CR=5", "G3 X0 Y10 CR=-7", "G2 X5 Y5 I2.5 J2.5", "G1 X=R1", "CHF=0.5", "G40", "G4 F0.1", "M1", "G17 G1 X1", "MSG(\"HI\")",
@@ -130,7 +170,10 @@ MIXED = [
 @st.composite
 def programs(draw: Any) -> str:
     lines = draw(st.lists(st.sampled_from(SETUP), max_size=4))
-    body = draw(st.lists(st.one_of(plain_lines(), plain_lines(), plain_lines(), st.sampled_from(MIXED)),
+    if draw(st.integers(0, 3)):  # mostly with a feed: a G1/G2/G3 block without one is alarm 10860
+        lines.insert(0, "G1 F1000")
+    body = draw(st.lists(st.one_of(plain_lines(), plain_lines(), simple_lines(), simple_lines(), simple_lines(),
+                                   st.sampled_from(MIXED)),
                          min_size=1, max_size=60))
     lines += body
     if draw(st.booleans()):
@@ -182,34 +225,34 @@ def test_plain_steps_give_the_general_block_results(text: str) -> None:
     assert _steps(text, True) == _steps(text, False), text
 
 
-def test_a_straight_block_after_an_arc_is_plain(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Group 1 holds G2/G3 after an arc; a block that programs G1 itself is plain again."""
+def test_arcs_and_lines_take_the_fast_step(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A circle with ``CR=`` and the lines after it take the fast step; M30 does not."""
     taken: list[bool] = []
-    original = plain_step.step_plain
+    original = simple_step.step_simple
 
     def spy(interp: Interpreter) -> Any:
         found = original(interp)
         taken.append(found is not None)
         return found
 
-    monkeypatch.setattr("nck.interp.interpreter.step_plain", spy)
+    monkeypatch.setattr("nck.interp.interpreter.step_simple", spy)
     text = "G90 G1 X10 Y0 F1000\nG3 X0 Y10 CR=10\nG1 X-5 Y10\nX-5 Y0\nM30"
     results, alarms, _ = _steps(text, True)
     assert not alarms and len(results) == 5
-    assert taken[1:] == [False, True, True, False]  # the arc and M30 take the general path
+    assert taken[1:] == [True, True, True, False]  # M30 takes the general path
     assert _steps(text, True) == _steps(text, False)
 
 
 def test_plain_steps_are_taken_in_a_cam_program(monkeypatch: pytest.MonkeyPatch) -> None:
     taken: list[int] = []
-    original = plain_step.step_plain
+    original = simple_step.step_simple
 
     def spy(interp: Interpreter) -> Any:
         found = original(interp)
         taken.append(found is not None)
         return found
 
-    monkeypatch.setattr("nck.interp.interpreter.step_plain", spy)
+    monkeypatch.setattr("nck.interp.interpreter.step_simple", spy)
     results, alarms, _ = _steps(_cam(150), True)
     assert not alarms and len(results) == 152 and sum(taken) >= 148
 
@@ -318,3 +361,26 @@ def test_plain_steps_agree_block_by_block_on_the_cam_corpus() -> None:
     results, alarms, state = _steps(text, True)
     assert not alarms and len(results) == 190 + 8
     assert (results, alarms, state) == _steps(text, False)
+
+
+def test_a_line_plan_is_not_taken_to_another_machine() -> None:
+    """A loaded program's lines are shared; the precompiled plan of ``G1 X10 Y5`` made on the
+    mill (Y an axis) must not run on the lathe (X and Z only: Y is alarm 12550, name not
+    defined). Both machines give the general path's result."""
+    lathe = load_machine("lathe2")
+    text = "G1 F100\nG1 X10 Y5\nM30\n"
+    outcomes = []
+    for machine in (MACHINE, lathe, MACHINE):
+        per_path = []
+        for fast in (False, True):
+            Interpreter.fast_path = fast
+            try:  # the program cache is kept between the runs: the lines (and plans) are shared
+                result = interpret_only(machine, MemorySource(), NcData(), "SHARED.MPF", text=text,
+                                        keep_commands=True)
+            finally:
+                Interpreter.fast_path = True
+            per_path.append((result.status, result.blocks, [(a.number, a.line) for a in result.alarms]))
+        assert per_path[0] == per_path[1]
+        outcomes.append(per_path[1])
+    assert outcomes[0] == outcomes[2] and not outcomes[0][2]
+    assert outcomes[1][2] == [(12550, 2)]

@@ -1,0 +1,171 @@
+"""One simple motion block without the parser's tree walk and the per-block snapshot: the fast
+path of :meth:`Interpreter.step`.
+
+A *simple* motion line (:data:`nck.lang.plain.SIMPLE_LINE`: N, G0–G3, G90/G91, X Y Z, I J K,
+``CR=``, F, a comment) is what CAM posts write for almost every block. Its syntax tree comes
+without the lexer (:func:`nck.lang.plain.simple_block`); here it is turned once into a
+:class:`MotionPlan` (its G codes by group, axis values and other words, already converted),
+kept with the parsed line, and each execution hands the plan's words to the general motion
+builder — the same G-code table, feed, path geometry (lines, arcs with I/J/K or ``CR=``, the
+14040 end-point check, planes, frames, tool offsets) and canonical motions as a block of the
+general path. What the fast step leaves out is only what such a block cannot need: the
+evaluation of expressions, control flow, calls, and the full snapshot of the run state.
+
+Instead of the snapshot the step saves the fields of the modal and the geometry state that
+the motion builder replaces (every change it makes to them is an assignment of a field) and
+the G groups the line writes. When the builder raises an NC alarm, they are put back and the
+step returns None: the general path then interprets the same block, with its full snapshot,
+and raises the alarm at the same line with the same state. So do lines and states the step
+does not take (a modal call, a section repeat, radius compensation, a held-back corner,
+chamfer/rounding modal, G641 rounding by distance, an ISO program).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from nck import canon
+from nck.errors import NcAlarmError
+from nck.geometry.trc_canon import compensating
+from nck.interp.api import BLOCK_COST_S, BlockResult
+from nck.interp.host import InterpreterHost
+from nck.interp.modal import ModalState
+from nck.interp.motion_builder import BlockWords
+from nck.interp.plain_setup import plain_frame
+from nck.lang import ast
+from nck.lang.lines import Line
+
+
+@dataclass(frozen=True)
+class MotionPlan:
+    """A simple motion line, precompiled: what its execution hands to the motion builder."""
+
+    gcodes: tuple[tuple[int, str], ...]  # (G group, code) in the order written; every group modal
+    axes: tuple[tuple[str, float], ...]  # (path axis, value as the block run converts it)
+    words: tuple[tuple[str, float], ...]  # (I/J/K/CR/F, value)
+    motion: str | None  # the group-1 code the line writes
+
+
+def motion_plan(interp: InterpreterHost, line: Line) -> MotionPlan | None:
+    """The plan of a simple motion line, or None when the line is not one the fast step takes
+    (not simple, no words, an axis the machine lacks, a G code not modal in this table)."""
+    block = line.block
+    if not line.simple or block is None or not block.statements:
+        return None
+    table = interp.table
+    path_axes = interp.machine.path_axes
+    gcodes: list[tuple[int, str]] = []
+    axes: list[tuple[str, float]] = []
+    words: list[tuple[str, float]] = []
+    motion = None
+    for statement in block.statements:
+        if type(statement) is ast.GWord:
+            group = table.group_of.get(statement.code)
+            if group is None or not table.groups[group].modal:
+                return None
+            gcodes.append((group, statement.code))
+            if group == 1:
+                motion = statement.code
+            continue
+        assert type(statement) is ast.AddressWord and type(statement.value) is ast.Num
+        address, value = statement.address, float(statement.value.value)
+        if address in path_axes:
+            axes.append((address, value))
+        elif address in ("X", "Y", "Z"):
+            return None  # not an axis of this machine: the block run's alarm
+        else:
+            words.append((address, value))
+    return MotionPlan(tuple(gcodes), tuple(axes), tuple(words), motion)
+
+
+def takes_motion(interp: InterpreterHost, motion: str) -> bool:
+    """True when the modal state lets a simple motion block under group-1 code ``motion`` go
+    straight to the motion builder: nothing held back or waiting, no chamfer/rounding or
+    G641 rounding that would hold the element back, radius compensation off, the settable
+    frame current, a Siemens program."""
+    if motion not in ("G0", "G1", "G2", "G3") or interp.dialect.name != "siemens":
+        return False
+    modal = interp.modal
+    geo = modal.geometry
+    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None \
+            or geo.waiting:
+        return False
+    gcodes = modal.gcodes
+    if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
+        return False
+    if gcodes.get(7, "G40") != "G40" or compensating(geo) is not False:
+        return False
+    return geo.frames.settable_code == gcodes.get(8, "G500")
+
+
+def step_simple(interp: InterpreterHost) -> BlockResult | None:
+    """Interpret the next block if it is a simple motion line the state lets through (else None,
+    nothing changed: the general path interprets it).
+
+    Gives exactly the general path's :class:`BlockResult` and state (property-tested).
+    """
+    found = plain_frame(interp)
+    if found is None:
+        return None
+    frame, lines = found
+    program = frame.program
+    index = frame.pc
+    if index >= len(lines) or index in program.structure_errors:
+        return None
+    line = lines[index]
+    plan = _plan_of(interp, line)
+    if plan is None:
+        return None
+    modal = interp.modal
+    if not takes_motion(interp, plan.motion or modal.gcodes.get(1, "G1")):
+        return None
+    block = line.block
+    assert block is not None  # a line with a plan has its tree
+    source = canon.Source(program.name, line.number, block.number)
+    words = BlockWords(source=source, gcodes=dict(plan.gcodes), axes={a: (v, None) for a, v in plan.axes},
+                       words=dict(plan.words))
+    geo = modal.geometry
+    saved_modal, saved_geo = dict(modal.__dict__), dict(geo.__dict__)
+    gcodes = modal.gcodes
+    saved_groups = [(group, gcodes.get(group)) for group, _ in plan.gcodes]
+    for group, code in plan.gcodes:
+        gcodes[group] = code
+    try:
+        commands = interp.builder.build(words, modal)
+    except NcAlarmError:
+        _restore(modal, saved_modal, saved_groups)
+        geo.__dict__.clear()
+        geo.__dict__.update(saved_geo)
+        return None
+    frame.def_open = False
+    frame.pc = index + 1
+    interp.skip_run = None
+    return BlockResult(
+        source=source, text=line.text, commands=tuple(commands), action_block=bool(commands), finished=False,
+        cost_s=BLOCK_COST_S,
+        extras={"level": len(interp.run_state.frames), "preprocessing_stop": False,
+                "single_block_off": frame.single_block_off, "display_off": frame.display_off},
+    )
+
+
+def _plan_of(interp: InterpreterHost, line: Line) -> MotionPlan | None:
+    """The line's plan, made once per G-code table and set of path axes (a loaded program's
+    lines are shared by interpreters of other machines)."""
+    table, path_axes = interp.table, interp.machine.path_axes
+    cached = line.plan
+    if cached is None or cached[0] is not table or cached[1] != path_axes:
+        cached = line.plan = (table, path_axes, motion_plan(interp, line))
+    return cached[2]
+
+
+def _restore(modal: ModalState, fields: dict, groups: list[tuple[int, str | None]]) -> None:
+    """Put back the modal state's fields and the G groups the line wrote (in place: the
+    G-code dict is shared with the saved fields)."""
+    gcodes = fields["gcodes"]
+    for group, code in reversed(groups):
+        if code is None:
+            gcodes.pop(group, None)
+        else:
+            gcodes[group] = code
+    modal.__dict__.clear()
+    modal.__dict__.update(fields)
