@@ -20,7 +20,8 @@ from hmi.app import HmiApp
 from hmi.cycle_form_dialog import CycleFormDialog
 from hmi.cycle_forms import CycleParam, cycle_forms
 from tests.burst import burst
-from tests.program_screens.conftest import SIZE, app_for_cycle, keys_to_form
+from tests.program_screens.conftest import (SIZE, keys_to_form, lathe_program_app, make_program_app,
+                                            on_lathe)
 
 PROGRAM = "N10 G0 X0\nN20 M30\n"
 
@@ -50,35 +51,51 @@ def changed_field(params: list[CycleParam], values: list[str]) -> tuple[int, str
     raise AssertionError("no field to change")
 
 
-@pytest.mark.parametrize("cycle", sorted(cycle_forms()))
-async def test_form_call_line_and_recompile_round_trip(cycle: str, data_dir: Path) -> None:
-    """Type a value into every field; the call line holds them in order; Recompile gives them
-    back; a changed field replaces the call."""
+@pytest.mark.parametrize("machine", ["mill", "lathe"])
+async def test_form_call_line_and_recompile_round_trip(machine: str, data_dir: Path) -> None:
+    """For every cycle of the machine: type a value into every field; the call line holds them in
+    order; Recompile gives them back; a changed field replaces the call.
+
+    One panel per machine takes the forms one after another (a panel started per form made the
+    set cost three minutes); between two cycles the program is put back and the editor's softkeys
+    return to their first level, as an operator leaving the cycle level would find them."""
     (data_dir / "MPF" / "DEMO.MPF").write_text(PROGRAM)
+    cycles = [cycle for cycle in sorted(cycle_forms()) if on_lathe(cycle) == (machine == "lathe")]
+    app = lathe_program_app(data_dir) if machine == "lathe" else make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "f3")  # open DEMO.MPF
+        await pilot.pause()
+        screen = app.screen
+        editor = screen.editor
+        for cycle in cycles:
+            editor.text = PROGRAM
+            editor.cursor_location = (1, 0)  # on N20
+            screen.clear_softkey_levels()
+            await pilot.pause()
+            await round_trip(pilot, app, editor, cycle)
+
+
+async def round_trip(pilot, app: HmiApp, editor, cycle: str) -> None:
+    """The form of ``cycle`` filled, its call checked, reopened by Recompile, changed and checked."""
     form = cycle_forms()[cycle]
     values = [typed_value(param, index) for index, param in enumerate(form.params)]
-    app = app_for_cycle(data_dir, cycle)
-    async with app.run_test(size=SIZE) as pilot:
-        await burst(pilot, "alt+n", "f3", "down")  # open DEMO.MPF, cursor on N20
-        await pilot.pause()
-        editor = app.screen.editor
-        await burst(pilot, *keys_to_form(cycle))
-        await pilot.pause()
-        dialog = app.screen
-        assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle
-        for value in values:
-            await burst(pilot, *value, "enter")
-        await pilot.pause()
-        args = [f'"{v}"' if p.kind == "name" else v for p, v in zip(form.params, values)]
-        call = f"{cycle}({','.join(args)})"
-        assert editor.text == f"N10 G0 X0\n{call}\nN20 M30\n"
-        await burst(pilot, *keys_to_form(cycle)[1:])  # the same softkey on the call: Recompile
-        await pilot.pause()
-        dialog = app.screen
-        assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle
-        assert [field.value for field in dialog.fields()] == values
-        changed, value = changed_field(form.params, values)
-        await burst(pilot, *["down"] * changed, *value, *["enter"] * (len(values) - changed))
-        await pilot.pause()
-        args[changed] = value
-        assert editor.text == f"N10 G0 X0\n{cycle}({','.join(args)})\nN20 M30\n"  # replaced, not added
+    await burst(pilot, *keys_to_form(cycle))
+    await pilot.pause()
+    dialog = app.screen
+    assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle, cycle
+    for value in values:
+        await burst(pilot, *value, "enter")
+    await pilot.pause()
+    args = [f'"{v}"' if p.kind == "name" else v for p, v in zip(form.params, values)]
+    call = f"{cycle}({','.join(args)})"
+    assert editor.text == f"N10 G0 X0\n{call}\nN20 M30\n", cycle
+    await burst(pilot, *keys_to_form(cycle)[1:])  # the same softkey on the call: Recompile
+    await pilot.pause()
+    dialog = app.screen
+    assert isinstance(dialog, CycleFormDialog) and dialog.form.cycle == cycle, cycle
+    assert [field.value for field in dialog.fields()] == values, cycle
+    changed, value = changed_field(form.params, values)
+    await burst(pilot, *["down"] * changed, *value, *["enter"] * (len(values) - changed))
+    await pilot.pause()
+    args[changed] = value
+    assert editor.text == f"N10 G0 X0\n{cycle}({','.join(args)})\nN20 M30\n", cycle  # replaced
