@@ -436,7 +436,8 @@ class Nck:
             outputs=self.outputs, motion=self.motion, shown_motion=self._display_motion(),
             path_motion=self._path_motion(), modal_interpreter=modal, frame_interpreter=frames,
             alarms=self.alarms, runtime=self.runtime, counters=self.counters,
-            access_level=self._access_level(), internal_errors=len(self.internal_errors),
+            access_level=self._access_level(), keyswitch_position=self.protection.keyswitch_position(),
+            internal_errors=len(self.internal_errors),
         )
 
     def _access_level(self) -> int:

@@ -50,6 +50,10 @@ class Protection:
         """The current access level (7, the fewest rights, when unprotected)."""
         return self.control.level if self.control is not None else LEVEL_FEWEST_RIGHTS
 
+    def keyswitch_position(self) -> int | None:
+        """The keyswitch position 0 … 3; None when unprotected."""
+        return self.control.state.keyswitch_position if self.control is not None else None
+
     def state(self) -> AccessState | None:
         """Keyswitch position and password state; None when unprotected."""
         return self.control.state if self.control is not None else None

@@ -77,6 +77,7 @@ class StatusSources:
     runtime: RuntimeTimer
     counters: PartCounters
     access_level: int
+    keyswitch_position: int | None  # None: a kernel without access control
     internal_errors: int
 
 
@@ -186,7 +187,7 @@ def build_status(src: StatusSources) -> NckStatus:
     )
     return NckStatus(
         seq=0, time_s=0.0, channel=channel, axes=tuple(axes), alarms=src.alarms.active,
-        access_level=src.access_level, machine_name=src.machine.name,
+        access_level=src.access_level, keyswitch_position=src.keyswitch_position, machine_name=src.machine.name,
         emergency_stop=channel_state.estop_active, mode_group_ready=not channel_state.estop_active,
         alarm_log_seq=src.alarms.last_seq, internal_errors=src.internal_errors,
     )

@@ -127,7 +127,7 @@ class NckStatus:
     mode_group_ready: bool = True
     alarm_log_seq: int = 0  # newest entry of the alarm/message log (Nck.alarm_log_since)
     internal_errors: int = 0  # count of internal errors (alarm 1) since power on
-    keyswitch_position: int | None = None  # 0…3 when the kernel reports it (the HMI's Alt+T cycles it)
+    keyswitch_position: int | None = None  # 0…3; None for a kernel without access control (the HMI's Alt+T cycles it)
 
 
 @dataclass(frozen=True, slots=True)

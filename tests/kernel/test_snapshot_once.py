@@ -130,3 +130,21 @@ def test_any_change_of_the_shared_access_control_makes_the_kept_snapshot_stale()
     assert second is not first
     assert (second.seq, second.access_level) == (first.seq, 7)
     assert nck_.status() is second
+
+
+def test_the_keyswitch_turned_by_the_session_under_a_password_shows_at_once() -> None:
+    # 002 L1413-1452, L1455-1458: a password overrides the keyswitch; the switch (four
+    # positions) still stands where it was turned, which the snapshot reports (the panel's
+    # Alt+T turns on from it). The level stays 3.
+    access = AccessControl(AccessState(keyswitch_position=3, password_level=3))
+    nck_ = build_nck(load_machine(), NcData(), MemorySource(), access=access,
+                     motion_factory=instant_motion_factory)
+    assert (nck_.status().access_level, nck_.status().keyswitch_position) == (3, 3)
+    access.set_keyswitch(1)
+    assert (nck_.status().access_level, nck_.status().keyswitch_position) == (3, 1)
+    assert nck_.submit(cmd.SetKeyswitch(0)) == cmd.Accepted()
+    assert nck_.status().keyswitch_position == 0
+
+
+def test_a_kernel_without_access_control_reports_no_keyswitch() -> None:
+    assert kernel().status().keyswitch_position is None
