@@ -56,7 +56,7 @@ from nck.interp.host import RunState
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import MotionBuilder
 from nck.interp.plain_run import plan
-from nck.interp.simple_step import step_simple
+from nck.interp.simple_step import SimpleStep
 from nck.interp.program import load_program
 from nck.lang.values import convert, to_number
 from nck.lang import ast
@@ -103,6 +103,7 @@ class Interpreter:
         self.dialect = dialect  # the language mode in front (ISO: nck.iso.dialect)
         self.table = gtable(dialect.gcode_table)
         self.builder = MotionBuilder(machine, data)
+        self.simple_step = SimpleStep()  # the fast step of simple motion blocks
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
         self.position_source: Callable[[str], float] | None = None
@@ -237,7 +238,7 @@ class Interpreter:
         if self.run_state.finished:
             return BlockResult(source=canon.Source("", 0, None), text="", finished=True)
         if self.fast_path and self.run_state.frames:
-            fast = step_simple(self)  # a simple motion block: the same builder, no tree walk or snapshot
+            fast = self.simple_step.step(self)  # a simple motion block: the same builder, no tree walk or snapshot
             if fast is not None:
                 self.undo_journal = []
                 self.run_state.blocks += 1

@@ -32,8 +32,12 @@ from nck.interp.host import InterpreterHost
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import BlockWords
 from nck.interp.plain_setup import plain_frame
-from nck.lang import ast
-from nck.lang.lines import Line
+from nck.lang.gcodes import GTable
+from nck.lang.lines import remember_bounded
+from nck.lang.plain import SIMPLE_LINE, simple_words
+
+PLANS_KEPT = 4096
+"""Plans kept per interpreter, by line text (the oldest go first)."""
 
 
 @dataclass(frozen=True)
@@ -44,38 +48,38 @@ class MotionPlan:
     axes: tuple[tuple[str, float], ...]  # (path axis, value as the block run converts it)
     words: tuple[tuple[str, float], ...]  # (I/J/K/CR/F, value)
     motion: str | None  # the group-1 code the line writes
+    number: int | None  # its block number N
 
 
-def motion_plan(interp: InterpreterHost, line: Line) -> MotionPlan | None:
+def motion_plan(text: str, table: GTable, path_axes: tuple[str, ...]) -> MotionPlan | None:
     """The plan of a simple motion line, or None when the line is not one the fast step takes
-    (not simple, no words, an axis the machine lacks, a G code not modal in this table)."""
-    block = line.block
-    if not line.simple or block is None or not block.statements:
+    (not simple, no words, an axis the machine lacks, a G code not modal in ``table``)."""
+    found = SIMPLE_LINE.fullmatch(text)
+    if found is None:
         return None
-    table = interp.table
-    path_axes = interp.machine.path_axes
+    codes, written = simple_words(found)
+    if not codes and not written:
+        return None
     gcodes: list[tuple[int, str]] = []
+    motion = None
+    for code in codes:
+        group = table.group_of.get(code)
+        if group is None or not table.groups[group].modal:
+            return None
+        gcodes.append((group, code))
+        if group == 1:
+            motion = code
     axes: list[tuple[str, float]] = []
     words: list[tuple[str, float]] = []
-    motion = None
-    for statement in block.statements:
-        if type(statement) is ast.GWord:
-            group = table.group_of.get(statement.code)
-            if group is None or not table.groups[group].modal:
-                return None
-            gcodes.append((group, statement.code))
-            if group == 1:
-                motion = statement.code
-            continue
-        assert type(statement) is ast.AddressWord and type(statement.value) is ast.Num
-        address, value = statement.address, float(statement.value.value)
+    for address, value in written:
         if address in path_axes:
-            axes.append((address, value))
+            axes.append((address, float(value)))
         elif address in ("X", "Y", "Z"):
             return None  # not an axis of this machine: the block run's alarm
         else:
-            words.append((address, value))
-    return MotionPlan(tuple(gcodes), tuple(axes), tuple(words), motion)
+            words.append((address, float(value)))
+    number = found.group(1)
+    return MotionPlan(tuple(gcodes), tuple(axes), tuple(words), motion, None if number is None else int(number))
 
 
 def takes_motion(interp: InterpreterHost, motion: str) -> bool:
@@ -98,64 +102,73 @@ def takes_motion(interp: InterpreterHost, motion: str) -> bool:
     return geo.frames.settable_code == gcodes.get(8, "G500")
 
 
-def step_simple(interp: InterpreterHost) -> BlockResult | None:
-    """Interpret the next block if it is a simple motion line the state lets through (else None,
-    nothing changed: the general path interprets it).
+class SimpleStep:
+    """The fast step of one interpreter, with its plans by line text (a subprogram's or a
+    loop's lines are planned once) for its G-code table and path axes."""
 
-    Gives exactly the general path's :class:`BlockResult` and state (property-tested).
-    """
-    found = plain_frame(interp)
-    if found is None:
-        return None
-    frame, lines = found
-    program = frame.program
-    index = frame.pc
-    if index >= len(lines) or index in program.structure_errors:
-        return None
-    line = lines[index]
-    plan = _plan_of(interp, line)
-    if plan is None:
-        return None
-    modal = interp.modal
-    if not takes_motion(interp, plan.motion or modal.gcodes.get(1, "G1")):
-        return None
-    block = line.block
-    assert block is not None  # a line with a plan has its tree
-    source = canon.Source(program.name, line.number, block.number)
-    words = BlockWords(source=source, gcodes=dict(plan.gcodes), axes={a: (v, None) for a, v in plan.axes},
-                       words=dict(plan.words))
-    geo = modal.geometry
-    saved_modal, saved_geo = dict(modal.__dict__), dict(geo.__dict__)
-    gcodes = modal.gcodes
-    saved_groups = [(group, gcodes.get(group)) for group, _ in plan.gcodes]
-    for group, code in plan.gcodes:
-        gcodes[group] = code
-    try:
-        commands = interp.builder.build(words, modal)
-    except NcAlarmError:
-        _restore(modal, saved_modal, saved_groups)
-        geo.__dict__.clear()
-        geo.__dict__.update(saved_geo)
-        return None
-    frame.def_open = False
-    frame.pc = index + 1
-    interp.skip_run = None
-    return BlockResult(
-        source=source, text=line.text, commands=tuple(commands), action_block=bool(commands), finished=False,
-        cost_s=BLOCK_COST_S,
-        extras={"level": len(interp.run_state.frames), "preprocessing_stop": False,
-                "single_block_off": frame.single_block_off, "display_off": frame.display_off},
-    )
+    def __init__(self) -> None:
+        self._plans: dict[str, MotionPlan | None] = {}
+        self._table: GTable | None = None
+        self._path_axes: tuple[str, ...] = ()
 
+    def plan(self, interp: InterpreterHost, text: str) -> MotionPlan | None:
+        """The plan of the line ``text`` (None: not one the fast step takes)."""
+        table, path_axes = interp.table, interp.builder.path.path_axes
+        if table is not self._table or path_axes != self._path_axes:
+            self._plans, self._table, self._path_axes = {}, table, path_axes
+        plans = self._plans
+        if text in plans:
+            return plans[text]
+        found = motion_plan(text, table, path_axes)
+        remember_bounded(plans, text, found, PLANS_KEPT)
+        return found
 
-def _plan_of(interp: InterpreterHost, line: Line) -> MotionPlan | None:
-    """The line's plan, made once per G-code table and set of path axes (a loaded program's
-    lines are shared by interpreters of other machines)."""
-    table, path_axes = interp.table, interp.machine.path_axes
-    cached = line.plan
-    if cached is None or cached[0] is not table or cached[1] != path_axes:
-        cached = line.plan = (table, path_axes, motion_plan(interp, line))
-    return cached[2]
+    def step(self, interp: InterpreterHost) -> BlockResult | None:
+        """Interpret the next block if it is a simple motion line the state lets through (else
+        None, nothing changed: the general path interprets it).
+
+        Gives exactly the general path's :class:`BlockResult` and state (property-tested).
+        """
+        found = plain_frame(interp)
+        if found is None:
+            return None
+        frame, lines = found
+        program = frame.program
+        index = frame.pc
+        if index >= len(lines) or index in program.structure_errors:
+            return None
+        text = lines.raw(index)
+        plan = self.plan(interp, text)
+        if plan is None:
+            return None
+        modal = interp.modal
+        if not takes_motion(interp, plan.motion or modal.gcodes.get(1, "G1")):
+            return None
+        source = canon.Source(program.name, index + 1, plan.number)
+        words = BlockWords(source=source, gcodes=dict(plan.gcodes), axes={a: (v, None) for a, v in plan.axes},
+                           words=dict(plan.words))
+        geo = modal.geometry
+        saved_modal, saved_geo = dict(modal.__dict__), dict(geo.__dict__)
+        gcodes = modal.gcodes
+        saved_groups = [(group, gcodes.get(group)) for group, _ in plan.gcodes]
+        for group, code in plan.gcodes:
+            gcodes[group] = code
+        try:
+            commands = interp.builder.build(words, modal)
+        except NcAlarmError:
+            _restore(modal, saved_modal, saved_groups)
+            geo.__dict__.clear()
+            geo.__dict__.update(saved_geo)
+            return None
+        frame.def_open = False
+        frame.pc = index + 1
+        interp.skip_run = None
+        return BlockResult(
+            source=source, text=text, commands=tuple(commands), action_block=bool(commands), finished=False,
+            cost_s=BLOCK_COST_S,
+            extras={"level": len(interp.run_state.frames), "preprocessing_stop": False,
+                    "single_block_off": frame.single_block_off, "display_off": frame.display_off},
+        )
 
 
 def _restore(modal: ModalState, fields: dict, groups: list[tuple[int, str | None]]) -> None:

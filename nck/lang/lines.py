@@ -42,8 +42,6 @@ class Line:
     error: NcAlarmError | None = None
     touches_modal: bool | None = None  # cache for the interpreter's block snapshot
     main_run_read: bool | None = None  # cache: the block reads $A…/$V… (preprocessing stop)
-    simple: bool = False  # a simple motion line (nck.lang.plain.SIMPLE_LINE): its tree came without the lexer
-    plan: Any = None  # cache of the interpreter's fast block step, per G table and axes (nck.interp.simple_step)
 
 
 class LineSequence(Protocol):
@@ -106,8 +104,7 @@ class TextLines:
             line = Line(index + 1, raw, None, error)
         else:
             try:  # a simple motion line needs no lexer (the parser's tree, property-tested)
-                simple = simple_block(raw, index + 1)
-                line = Line(index + 1, raw, simple or parse_block(raw, index + 1), simple=simple is not None)
+                line = Line(index + 1, raw, simple_block(raw, index + 1) or parse_block(raw, index + 1))
             except NcAlarmError as alarm:  # cannot happen for a line that parsed at load time
                 line = Line(index + 1, raw, None, alarm)
         self.remember(index, line)

@@ -86,6 +86,16 @@ SIMPLE_LINE = re.compile(SIMPLE_PATTERN)
 """Full-match this against one line."""
 
 
+def simple_words(found: re.Match[str]) -> tuple[list[str], list[tuple[str, int | float]]]:
+    """The words of a :data:`SIMPLE_LINE` match as the parser reads them: the normalised G
+    codes in source order (``G02`` is ``G2``) and ``(address, constant)`` in line order."""
+    groups = found.groups()
+    gcodes = [code if len(code) == 3 and code[1] == "9" else "G" + code[-1]
+              for code in groups[1:5] if code is not None]
+    return gcodes, [(address, _literal(text)) for address, text in zip(SIMPLE_ADDRESSES, groups[5:13])
+                    if text is not None]
+
+
 def simple_block(line: str, number: int) -> ast.Block | None:
     """The syntax tree of a simple motion line — exactly the block parser's, property-tested —
     or None when ``line`` is not simple (then the parser reads it). ``number``: its 1-based
@@ -93,15 +103,12 @@ def simple_block(line: str, number: int) -> ast.Block | None:
     found = SIMPLE_LINE.fullmatch(line)
     if found is None:
         return None
-    groups = found.groups()
-    statements: list[ast.Statement] = [ast.GWord(code if len(code) == 3 and code[1] == "9" else "G" + code[-1])
-                                       for code in groups[1:5] if code is not None]
-    for address, text in zip(SIMPLE_ADDRESSES, groups[5:13]):
-        if text is not None:
-            statements.append(ast.AddressWord(address, ast.Num(_literal(text))))
-    block_number = groups[0]
+    gcodes, words = simple_words(found)
+    statements: list[ast.Statement] = [ast.GWord(code) for code in gcodes]
+    statements += [ast.AddressWord(address, ast.Num(value)) for address, value in words]
+    block_number = found.group(1)
     return ast.Block(line=number, text=line, number=None if block_number is None else int(block_number),
-                     statements=tuple(statements), comment=groups[13])
+                     statements=tuple(statements), comment=found.group(14))
 
 
 def _literal(text: str) -> int | float:

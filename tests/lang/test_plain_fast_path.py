@@ -228,14 +228,14 @@ def test_plain_steps_give_the_general_block_results(text: str) -> None:
 def test_arcs_and_lines_take_the_fast_step(monkeypatch: pytest.MonkeyPatch) -> None:
     """A circle with ``CR=`` and the lines after it take the fast step; M30 does not."""
     taken: list[bool] = []
-    original = simple_step.step_simple
+    original = simple_step.SimpleStep.step
 
-    def spy(interp: Interpreter) -> Any:
-        found = original(interp)
+    def spy(self: simple_step.SimpleStep, interp: Interpreter) -> Any:
+        found = original(self, interp)
         taken.append(found is not None)
         return found
 
-    monkeypatch.setattr("nck.interp.interpreter.step_simple", spy)
+    monkeypatch.setattr(simple_step.SimpleStep, "step", spy)
     text = "G90 G1 X10 Y0 F1000\nG3 X0 Y10 CR=10\nG1 X-5 Y10\nX-5 Y0\nM30"
     results, alarms, _ = _steps(text, True)
     assert not alarms and len(results) == 5
@@ -245,14 +245,14 @@ def test_arcs_and_lines_take_the_fast_step(monkeypatch: pytest.MonkeyPatch) -> N
 
 def test_plain_steps_are_taken_in_a_cam_program(monkeypatch: pytest.MonkeyPatch) -> None:
     taken: list[int] = []
-    original = simple_step.step_simple
+    original = simple_step.SimpleStep.step
 
-    def spy(interp: Interpreter) -> Any:
-        found = original(interp)
+    def spy(self: simple_step.SimpleStep, interp: Interpreter) -> Any:
+        found = original(self, interp)
         taken.append(found is not None)
         return found
 
-    monkeypatch.setattr("nck.interp.interpreter.step_simple", spy)
+    monkeypatch.setattr(simple_step.SimpleStep, "step", spy)
     results, alarms, _ = _steps(_cam(150), True)
     assert not alarms and len(results) == 152 and sum(taken) >= 148
 
