@@ -662,6 +662,9 @@ def _check_aux_limits(words: BlockWords) -> None:
     Raises:
         NcAlarmError: 12010 (address type programmed too often) naming the address.
     """
+    if not (words.m_codes or words.h_codes or words.extended) \
+            and len(words.words) <= min(AUX_LIMITS["F"], AUX_LIMIT_TOTAL):
+        return  # S, T, D at most once each (every limit ≥ 1), F/FA and the total at most len(words)
     counts = {
         "M": len(words.m_codes),
         "S": len({ext or 1 for (a, ext) in words.extended if a == "S"} | ({1} if "S" in words.words else set())),
