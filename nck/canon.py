@@ -102,10 +102,11 @@ class Motion:
 @dataclass(frozen=True, slots=True)
 class Dwell:
     """G4: wait ``seconds`` of time or ``revolutions`` of the spindle; with ``wait_spindle``
-    (SPOS, M19, WAITS) wait until the master spindle is positioned, stands or turns at
-    its set speed (002 L51302-51335). ``gcodes`` (the active member of every G group) and
-    ``feed`` (the programmed F in force, in its own units) are the block's modal state, shown
-    while the dwell runs."""
+    (SPOS, M19, WAITS) wait until the master spindle is positioned, stands or turns in
+    its set speed range (002 L51302-51335); with ``feed_enable`` too, the machining block
+    after a programmed speed change waits so (MD35500, 002 L54545-54562). ``gcodes`` (the
+    active member of every G group) and ``feed`` (the programmed F in force, in its own
+    units) are the block's modal state, shown while the dwell runs."""
 
     source: Source
     seconds: float | None = None
@@ -113,6 +114,7 @@ class Dwell:
     wait_spindle: bool = False
     gcodes: Mapping[int, str] = field(default_factory=dict)
     feed: float | None = None
+    feed_enable: bool = False  # with wait_spindle: a machining block waits for the set speed range (MD35500)
 
 
 @dataclass(frozen=True, slots=True)
@@ -166,6 +168,7 @@ class SpindleCommand:
     position_deg: float | None = None
     approach: str | None = None  # SPOS approach: DC (shortest), AC, ACP (+), ACN (-), IC
     positioning_rpm: float | None = None  # FA[S<n>] for SPOS/M19; None: MD35300 (002 L51375-51385)
+    speed_change: bool = False  # M3/M4 or S programmed: the next machining block checks the speed (MD35500)
 
 
 @dataclass(frozen=True, slots=True)

@@ -170,10 +170,15 @@ def build_status(src: StatusSources) -> NckStatus:
                  if a in now and a in src.machine.path_axes}
     situation = channel_state.situation
     runtime, counters = src.runtime, src.counters
+    program_state = situation.program
+    if program_state == "running" and getattr(src.path_motion, "waiting_for_spindle", False):
+        # A machining block waits for the spindle's set speed range (MD35500): the channel
+        # stays active, the program waits (002 L21016-21040, L21104-21108).
+        program_state = "waiting"
     channel = ChannelStatus(
         mode=situation.mode, machine_function=channel_state.machine_function,
         increment=channel_state.increment, channel_state=situation.channel,
-        program_state=situation.program, selected_program=channel_state.selected,
+        program_state=program_state, selected_program=channel_state.selected,
         current_block=current, blocks=blocks, basic_blocks=basic_blocks, basic_block_index=basic_index,
         modal=modal,
         program_control=dict(src.switches.program_control), overrides=dict(src.switches.overrides),

@@ -66,6 +66,9 @@ class GeometryState:
         waiting: outputs of blocks that wait for a motion held back before them (chamfer,
             rounding, radius compensation look-ahead), in block order; see
             :mod:`nck.interp.waiting_outputs`.
+        spindle_check_due: a speed change of the master spindle was programmed (M3, M4, S)
+            and no machining block has started since: the next one checks the set speed
+            range first (MD35500).
     """
 
     frames: FrameChain = field(default_factory=FrameChain)
@@ -88,6 +91,7 @@ class GeometryState:
     setframe_active: bool = True
     contour_first: tuple[float, str, Any] | None = None
     waiting: tuple[Any, ...] = ()
+    spindle_check_due: bool = False
 
     def __deepcopy__(self, memo: dict) -> "GeometryState":
         """Snapshots before each block: frames, pole and elements are immutable and shared
@@ -121,3 +125,4 @@ class GeometryState:
         self.loaded = False
         self.contour_first = None
         self.waiting = ()
+        self.spindle_check_due = False

@@ -64,6 +64,7 @@ AUX_LIMIT_TOTAL = 10
 CIRCLE_WORDS = ("CR", "AR", "TURN")  # radius, opening angle, helix turns: G2/G3 only
 CENTRE_WORDS = ("I", "J", "K")  # interpolation parameters: a circle's centre or a thread's lead
 LINEAR_KINDS = ("G0", "G1")  # straight lines, where I/J/K mean nothing (001 L3137-3155)
+NOT_WAITING_FOR_SPEED = ("G0", "G331", "G332")  # motions that start without the spindle's set speed range
 UNAVAILABLE_WORDS = ("SR", "OVRA")  # retraction on a fast NCK input; override of FA / a spindle
 
 
@@ -120,8 +121,8 @@ class MotionBuilder:
         pending = geo.pending
         if pending is not None and pending.aid == AID and not self.path.has_path_words(words, modal):
             # G641: a block with outputs but no path motion ends the rounding (implicit stop).
-            return self.release_held(modal) + self._build(words, modal, geo)
-        return self._build(words, modal, geo)
+            return _wait_for_spindle_speed(self.release_held(modal) + self._build(words, modal, geo), geo)
+        return _wait_for_spindle_speed(self._build(words, modal, geo), geo)
 
     def _build(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> list[canon.CanonCommand]:
         """The commands of the block once a held-back G641 corner is settled."""
@@ -526,6 +527,7 @@ class MotionBuilder:
         if words.gcodes.get(3) in ("G25", "G26"):
             self._speed_limits(words.gcodes[3], speeds)
             speeds = {}
+        programmed = set(speeds)  # S written (also a cutting speed under G96), not computed
         for ext, value in words.m_codes:
             if value in SPINDLE_M:
                 spindle = ext or 1
@@ -572,7 +574,9 @@ class MotionBuilder:
             out.append(canon.SpindleCommand(src, spindle, state=state, speed_rpm=speed,
                                             position_deg=positions.get(spindle),
                                             approach=modes.get(spindle),
-                                            positioning_rpm=None if speed_deg_min is None else speed_deg_min / 360.0))
+                                            positioning_rpm=None if speed_deg_min is None else speed_deg_min / 360.0,
+                                            speed_change=state in ("M3", "M4") or (
+                                                spindle in programmed and modal.spindle_state in ("M3", "M4"))))
             if spindle == 1 and spindle in positions:
                 modal.spindle_position_deg = positions[spindle]
 
@@ -627,6 +631,31 @@ class MotionBuilder:
         if abs(rpm - modal.spindle_speed_rpm) > 1e-6:
             modal.spindle_speed_rpm = rpm
             out.append(canon.SpindleCommand(src, 1, speed_rpm=rpm))
+
+
+def _wait_for_spindle_speed(commands: list[canon.CanonCommand], geo: GeometryState) -> list[canon.CanonCommand]:
+    """``commands`` with the wait for the set speed range before the first machining motion
+    after a programmed speed change of the master spindle (M3, M4, S), in this block or an
+    earlier one (MD35500 = 1, 002 L51282-51285, L54530-54536, L54560-54562: checked only at
+    the start of a traversing block after a speed change). G0 does not wait, nor does
+    tapping with G331/G332 (the spindle is position-controlled, where "spindle in setpoint
+    range" means nothing, 002 L72955). The motion system leaves the wait out when the
+    spindle's MD35500 is 0 or MD35150 is 0 (:meth:`Spindle.settle_s`).
+
+    Our choice where the manual is silent: the path stops at the start of that block (as
+    with MD35500 = 2) even when the spindle is already up to speed then."""
+    due = geo.spindle_check_due
+    out: list[canon.CanonCommand] = []
+    for command in commands:
+        if isinstance(command, canon.SpindleCommand) and command.spindle == 1 and command.speed_change:
+            due = True
+        elif due and isinstance(command, canon.Motion) and command.kind not in NOT_WAITING_FOR_SPEED:
+            out.append(canon.Dwell(command.source, wait_spindle=True, feed_enable=True,
+                                   gcodes=command.gcodes, feed=command.feed))
+            due = False
+        out.append(command)
+    geo.spindle_check_due = due
+    return out
 
 
 def _refuse_words_without_effect(words: BlockWords, modal: ModalState) -> None:

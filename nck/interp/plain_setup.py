@@ -71,7 +71,7 @@ def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | 
     geo = modal.geometry
     gcodes = modal.gcodes
     if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None \
-            or geo.waiting:
+            or geo.waiting or geo.spindle_check_due:
         return None
     if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
         return None  # every corner is rounded: the path builder holds each element back

@@ -38,7 +38,10 @@ class PathInterpolator:
     jog: Any
     _dwell_s: Any
     _spindle_settle_s: Any
+    _spindles_to: Callable[[int], None]
     spindle_wait: bool
+    spindle_feed_enable: bool  # the spindle wait is a machining block's (MD35500), not WAITS/SPOS
+    spindle_checked: bool  # the spindle wait has been checked once after its first cycle
     exact_wait: tuple[np.ndarray, np.ndarray] | None
     disabled: set[int]
     names: list[str]
@@ -64,12 +67,9 @@ class PathInterpolator:
         T = self.T
         while k < n:
             if self.spindle_wait and self.wait_cycles == 0:
-                # The cycles of a spindle wait ran out (in a batch: in the last step, the
+                # The first cycle of a spindle wait ran out (in a batch: in the last step, the
                 # block's outputs have gone out since): wait on while the spindle moves.
-                left_s = self._spindle_settle_s()
-                self.spindle_wait = left_s > T / 2.0
-                if self.spindle_wait:
-                    self.wait_cycles = max(1, int(math.ceil(left_s / T - 1e-9)))
+                self._check_spindle(k)
             if self.wait_cycles > 0:
                 if self.settle_point is not None:
                     self.cmd, self.settle_point = self.settle_point, None
@@ -77,6 +77,10 @@ class PathInterpolator:
                 rows[k:k + m] = self.cmd
                 self.wait_cycles -= m
                 k += m
+                if self.wait_cycles == 0 and self.spindle_wait and self.spindle_checked:
+                    self._check_spindle(k)
+                    if self.spindle_wait:
+                        continue  # waiting on: not a block event
                 if self.wait_cycles == 0:
                     if stop_at_event:
                         n = k  # the dwell or the wait for the window ends in this cycle
@@ -136,6 +140,17 @@ class PathInterpolator:
             if self.run is None and not self.held and not self.faulted:
                 self._start_next(carry)
         return k, False, n
+
+    def _check_spindle(self, k: int) -> None:
+        """Go on waiting while the spindle is not positioned or not in its set speed range;
+        checked again at least every RECHECK_CYCLES (an override or a speed limit changed
+        meanwhile moves the end; a drive that never gets there keeps the block waiting)."""
+        self._spindles_to(k)
+        self.spindle_checked = True
+        left_s = self._spindle_settle_s()
+        self.spindle_wait = left_s > 1e-9
+        if self.spindle_wait:
+            self.wait_cycles = max(1, min(int(math.ceil(min(left_s / self.T, 1e9) - 1e-9)), RECHECK_CYCLES))
 
     def _sample_steps(self, m: int) -> np.ndarray:
         """``T * [1, 2, … m]`` (the sample times of a fill after the last one; table grown on demand)."""
@@ -232,10 +247,12 @@ class PathInterpolator:
                 self.settle_point = end  # held while waiting (a batch step may end on a profile sample)
             seconds = head.seconds if head.revolutions is None else self._dwell_s(head.revolutions)
             if head.wait_spindle:
-                # At least one cycle: the block's spindle output goes out at its start;
-                # then checked again until the spindle has settled (_path_fill).
-                seconds = max(self._spindle_settle_s(), self.T)
+                # One cycle: the spindle output before it goes out at its start; then
+                # checked again until the spindle has settled (_path_fill).
+                self.spindle_feed_enable = head.feed_enable
+                seconds = self.T
                 self.spindle_wait = True
+                self.spindle_checked = False
             cycles = int(round(min(seconds, MAX_DWELL_S) / self.T))
             if unsettled is not None:
                 cycles = max(cycles, 1)  # output the end point once, then check the window

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from nck.machine import MachineConfig
+from nck.md_catalog import catalog
 
 #: Every MD number this package reads (listed for the MD catalogue).
 MD_READ = (
@@ -109,6 +110,8 @@ class SpindleParams:
     inertia_kgm2: float
     thermal_time_s: float
     rated_temp_rise_k: float
+    speed_tolerance: float = 0.1  # MD35150: the set speed range is ± this share of the set speed
+    on_speed_at_ipo_start: int = 1  # MD35500: a machining block waits for the set speed range (0: never)
 
 
 @dataclass(frozen=True, slots=True)
@@ -214,7 +217,16 @@ def _spindle_params(machine: MachineConfig, name: str, index: int) -> SpindlePar
         inertia_kgm2=sim("spindle_inertia_kgm2", name, 0.05),
         thermal_time_s=sim("thermal_time_s", name, 1200.0),
         rated_temp_rise_k=sim("rated_temp_rise_k", name, 90.0),
+        speed_tolerance=max(md("MD35150", name, _default("MD35150")), 0.0),
+        on_speed_at_ipo_start=int(md("MD35500", name, _default("MD35500"))),
     )
+
+
+def _default(ident: str) -> float:
+    """The catalogue's default of a numeric machine datum."""
+    definition = catalog().get(ident)
+    assert definition is not None, ident
+    return float(definition.default)
 
 
 def motion_params(machine: MachineConfig) -> MotionParams:

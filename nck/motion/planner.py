@@ -105,6 +105,7 @@ class DwellItem:
     source: Source | None
     revolutions: float | None = None
     wait_spindle: bool = False  # WAITS, SPOS, M19: until the master spindle has settled
+    feed_enable: bool = False  # with wait_spindle: a machining block waits for the set speed range (MD35500)
 
 
 @dataclass

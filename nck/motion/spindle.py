@@ -51,6 +51,8 @@ class Spindle:
         self._accel_rpm_s = params.accel_rev_s2 * 60.0
         self.setting_data: Mapping[str, Any] | None = None  # SD43210/43220/43235, read live
         self._positioning: _Positioning | None = None
+        # An injected drive fault (exercises): the actual speed stays within ± this (None: none).
+        self.drive_limit_rpm: float | None = None
 
     def command(self, state: str | None, speed_rpm: float | None, position_deg: float | None = None,
                 approach: str | None = None, positioning_rpm: float | None = None) -> None:
@@ -98,11 +100,27 @@ class Spindle:
         """True while SPOS/M19 turns the spindle to its position."""
         return self._positioning is not None
 
-    def settle_s(self) -> float:
-        """Time until the spindle is positioned, stands or turns at its set speed (WAITS)."""
+    def settle_s(self, feed_enable: bool = False) -> float:
+        """Time until the spindle is positioned, stands, or turns in its set speed range.
+
+        The set speed range ("spindle in setpoint range", DB31 DBX83.5) is the set speed
+        ± MD35150 times it (002 L54545-54551); WAITS ends when the spindle enters it
+        (002 L51326-51335), with MD35150 = 0 when the setpoint reaches its target
+        (002 L51344-51348). ``feed_enable``: the wait of a machining block under MD35500
+        (002 L51282-51288, L54530-54536): a spindle without a set speed (M5) does not hold
+        the path (that is MD35510's), nor does MD35150 = 0 (002 L54555-54556).
+        """
         if self._positioning is not None:
             return self._positioning.remaining_s
-        return abs(self.state.setpoint_rpm - self.state.actual_rpm) / self._accel_rpm_s
+        st = self.state
+        set_rpm = st.setpoint_rpm
+        tolerance = self.params.speed_tolerance
+        if feed_enable and (set_rpm == 0.0 or tolerance == 0.0):
+            return 0.0
+        window_rpm = tolerance * abs(set_rpm)
+        if self.drive_limit_rpm is not None and abs(set_rpm) - window_rpm > self.drive_limit_rpm:
+            return math.inf  # the faulty drive never reaches the set speed range
+        return max(abs(set_rpm - st.actual_rpm) - window_rpm, 0.0) / self._accel_rpm_s
 
     def jog(self, direction: int) -> None:
         """Spindle JOG: turn at the JOG speed (MD32020 in rpm) while ``direction`` ≠ 0."""
@@ -161,14 +179,17 @@ class Spindle:
         if self.setting_data:
             self._update_setpoint()  # the limits in the setting data act at once
         start = st.actual_rpm
-        diff = st.setpoint_rpm - start
+        reachable = st.setpoint_rpm
+        if self.drive_limit_rpm is not None:
+            reachable = math.copysign(min(abs(reachable), self.drive_limit_rpm), reachable)
+        diff = reachable - start
         ramp_s = abs(diff) / self._accel_rpm_s
         if ramp_s >= dt_s:
             end = start + math.copysign(self._accel_rpm_s * dt_s, diff)
             revolutions = (start + end) / 2.0 * dt_s / 60.0
             accel = math.copysign(self._accel_rpm_s, diff)
         else:
-            end = st.setpoint_rpm
+            end = reachable
             revolutions = ((start + end) / 2.0 * ramp_s + end * (dt_s - ramp_s)) / 60.0
             accel = 0.0
         st.actual_rpm = end

@@ -81,6 +81,8 @@ class PlannedMotion(PathInterpolator):
         self.stop_source: Source | None = None  # the block a motion alarm stopped (refused or tripped)
         self.refused_source: Source | None = None  # the block whose segment a push refused last
         self.spindle_wait = False  # a WAITS/SPOS wait: checked again when its cycles ran out
+        self.spindle_feed_enable = False  # that wait is a machining block's for the set speed range
+        self.spindle_checked = False  # that wait has been checked once after its first cycle
         self.hold_point: np.ndarray | None = None
         self.repos_feed: float | None = None
         self.repos_pending = False
@@ -88,6 +90,7 @@ class PlannedMotion(PathInterpolator):
         self.time_s = 0.0
         self.cycles = 0
         self._fraction = 0.0
+        self._spun = 0
         self._alarms: list[NcAlarmError] = []
         self._last_source: Source | None = None
         self._trace: list[tuple[np.ndarray, np.ndarray]] | None = None
@@ -108,7 +111,12 @@ class PlannedMotion(PathInterpolator):
     def push(self, item: Motion | Dwell) -> None:
         """Plan a segment (or buffer a dwell) behind the ones already buffered."""
         if isinstance(item, Dwell):
-            if item.wait_spindle:
+            if item.wait_spindle and item.feed_enable:
+                master = self._master()
+                if master is not None and master.params.on_speed_at_ipo_start and master.params.speed_tolerance > 0.0:
+                    # MD35500 = 0, or MD35150 = 0 (the signal is always 1): no path control.
+                    self.la.append(DwellItem(0.0, item.source, wait_spindle=True, feed_enable=True))
+            elif item.wait_spindle:
                 self.la.append(DwellItem(0.0, item.source, wait_spindle=True))
             elif item.seconds is None:
                 # G4 S: counted in revolutions of the master spindle when the dwell starts.
@@ -271,7 +279,7 @@ class PlannedMotion(PathInterpolator):
         columns = self.jog.fill(n, self.cmd.copy())
         rows = np.empty((n, len(self.names)))
         k = 0
-        spun = 0  # cycles the spindles have been advanced by
+        self._spun = 0  # cycles of this step the spindles have been advanced by
         limit = n
         while k < limit:
             k_end, sync, limit = self._path_fill(rows, k, limit, stop_at_event)
@@ -297,16 +305,20 @@ class PlannedMotion(PathInterpolator):
                     limit = max(k, 1)  # the exact stop is reached: the next block may start
             if (on_block_event is not None and k == limit and 0 < k < n
                     and not self._alarms and not self.jog.alarms and not self.faulted):
-                self._advance_spindles(k - spun)  # the caller may read the spindle speeds
-                spun = k
+                self._spindles_to(k)  # the caller may read the spindle speeds
                 allowed = on_block_event(offset + k)
                 if allowed > 0:
                     limit = min(n, k + allowed)
         self.servo.settle()  # the step ends: queued blocks through the position control now
         if k == 0:  # a trip in the very first cycle still took that cycle
             k = 1
-        self._advance_spindles(k - spun)
+        self._spindles_to(k)
         return k
+
+    def _spindles_to(self, k: int) -> None:
+        """Advance the spindles to row ``k`` of the step :meth:`_run_moving` is in."""
+        self._advance_spindles(k - self._spun)
+        self._spun = k
 
     def _advance_spindles(self, cycles: int) -> None:
         master = self._master()
@@ -363,6 +375,7 @@ class PlannedMotion(PathInterpolator):
         self.stop_source = None
         self.refused_source = None
         self.spindle_wait = False
+        self.spindle_feed_enable = False
         self.wait_cycles = 0
         self.dwell_rest_cycles = 0
         self.exact_wait = None
@@ -679,9 +692,16 @@ class PlannedMotion(PathInterpolator):
             self._replan_run()
 
     def _spindle_settle_s(self) -> float:
-        """Seconds until the master spindle is positioned, stands or turns at its speed."""
+        """Seconds until the master spindle is positioned, stands or turns in its set speed
+        range (for a machining block's wait: see :meth:`Spindle.settle_s`)."""
         master = self._master()
-        return master.settle_s() if master is not None else 0.0
+        return master.settle_s(self.spindle_feed_enable) if master is not None else 0.0
+
+    @property
+    def waiting_for_spindle(self) -> bool:
+        """True while a machining block waits for the master spindle's set speed range
+        (MD35500; DB31 DBX83.5 is 0)."""
+        return self.spindle_wait and self.spindle_feed_enable and self.run is None
 
     def _dwell_s(self, revolutions: float) -> float:
         """Seconds the master spindle needs for ``revolutions`` from its speed now (0 if it stands)."""

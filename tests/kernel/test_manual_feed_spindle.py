@@ -270,12 +270,18 @@ def test_m19_reads_the_position_of_its_spindle_from_sd43240() -> None:
 def test_waits_holds_the_next_block_until_the_spindle_is_at_speed() -> None:
     """Digest 828d-3 rank 17 (WAITS)."""
     # 002 L51302-51335: with WAITS the next block waits until the spindle is in its set
-    # speed range; without it the axis starts at once. S1000 needs (1000/60)/MD35200 s.
-    nck = make({})
-    ramp_s = (1000 / 60) / machine_datum(nck, "MD35200")
-    plain = run_time_s(make({"P.MPF": "N10 S1000 M3\nN30 G1 X10 F600\nN40 M30"}), "P.MPF")
-    waiting = run_time_s(make({"P.MPF": "N10 S1000 M3\nN20 WAITS\nN30 G1 X10 F600\nN40 M30"}), "P.MPF")
-    assert waiting - plain == pytest.approx(ramp_s, abs=0.01)
+    # speed range (MD35150 = 0.1: 900 rpm of S1000); without it, and with MD35500 = 0 (the
+    # cut does not wait for the speed itself, 002 L51282-51285), the axis starts at once.
+    # S1000 needs (1000/60)/MD35200 s to full speed, 90 % of that into the range.
+    from nck.machine import load_machine
+
+    machine = load_machine()
+    machine.md["MD35500"] = {"SP": 0}
+    ramp_s = (1000 / 60) / machine_datum(make({}), "MD35200")
+    plain = run_time_s(make({"P.MPF": "N10 S1000 M3\nN30 G1 X10 F600\nN40 M30"}, machine=machine), "P.MPF")
+    waiting = run_time_s(make({"P.MPF": "N10 S1000 M3\nN20 WAITS\nN30 G1 X10 F600\nN40 M30"},
+                              machine=machine), "P.MPF")
+    assert waiting - plain == pytest.approx(0.9 * ramp_s, abs=0.01)
 
 
 def test_check_agrees_with_the_run_on_spindle_positioning_words() -> None:

@@ -62,15 +62,18 @@ def _smallest_step_near(samples: list[tuple[float, dict, str]], x_mm: float) -> 
 def test_canonical_order_before_during_and_after_the_motion() -> None:
     """Digest 828d-1 rank 6: T, D, M3 (bit 5) go out before the motion, behind an implicit
     exact stop; S (bit 6) with them; M8 and H5 without a defined behaviour after the motion,
-    whose block ends at interpolator end (002 L14480-14540, L14633-14636, L4797-4809)."""
+    whose block ends at interpolator end (002 L14480-14540, L14633-14636, L4797-4809). The
+    cut after M3 first waits for the spindle's set speed range (MD35500, 002 L54530-54536)."""
     r = run(lines("N10 G64 G1 X10 F100 M8 H5 S200 M3 T1 D1", "N20 M30"))
     block = [cmd for cmd in r.commands if cmd.source.n == 10]
     kinds = [type(cmd).__name__ for cmd in block]
-    assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "ExactStop", "Motion",
+    assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "ExactStop", "Dwell", "Motion",
                      "AuxFunction", "AuxFunction"]
-    motion = block[4]
+    wait = block[4]
+    assert isinstance(wait, canon.Dwell) and wait.wait_spindle and wait.feed_enable
+    motion = block[5]
     assert isinstance(motion, canon.Motion) and motion.exact_stop and motion.exact_stop_window == "G603"
-    assert [(cmd.address, cmd.value) for cmd in block[5:]] == [("M", 8.0), ("H", 5.0)]
+    assert [(cmd.address, cmd.value) for cmd in block[6:]] == [("M", 8.0), ("H", 5.0)]
 
 
 def test_spindle_speed_alone_goes_out_during_the_motion_without_a_stop() -> None:
