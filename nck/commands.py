@@ -136,6 +136,16 @@ class SetControllerEnable:
 
 
 @dataclass(frozen=True, slots=True)
+class SetSpindleDriveFault:
+    """A simulated drive fault of a spindle (an exercise's injected fault; the trainer has no
+    drive): its actual speed stays within ``limit_rpm`` whatever the set speed (None: the
+    drive is sound). A machining block then waits for the set speed range (MD35500)."""
+
+    spindle: str
+    limit_rpm: float | None
+
+
+@dataclass(frozen=True, slots=True)
 class StartBlockSearch:
     """Block search to block number ``target`` (``N260``) or to the first block containing
     the text ``target``; ``search_type`` names the type (:mod:`nck.block_search`):
@@ -267,7 +277,7 @@ class DeleteActiveWorkOffset:
 Command = (
     SelectMode | SelectMachineFunction | SelectIncrement | CycleStart | CycleStop | Reset
     | EmergencyStop | SelectProgram | SetMdaProgram | SetProgramControl | SetOverride
-    | CancelAlarms | Jog | SetControllerEnable | StartBlockSearch | WriteData | EnterPassword | DeletePassword
+    | CancelAlarms | Jog | SetControllerEnable | SetSpindleDriveFault | StartBlockSearch | WriteData | EnterPassword | DeletePassword
     | SetKeyswitch | ChangePassword | DeleteToolEdge | ClearRParameters | ActivateMachineData
     | WriteMachineSetup | WriteManualSettings | SetActualValue | SetWorkOffsetRotation | DeleteActiveWorkOffset
 )

@@ -47,9 +47,9 @@ FAULT_KINDS = {
     "broken_line": ("program", "line", "text"),  # one line of a program replaced
     "emergency_stop": (),  # E-stop pressed at the start
     "unreferenced": (),  # axes not referenced after power on (the normal state; stated for the list)
+    "spindle_drive": ("limit_rpm",),  # the master spindle's drive reaches only this speed
 }
-"""Injected faults and their fields. A spindle that does not reach its speed waits for a
-spindle fault model in the kernel (there is none yet)."""
+"""Injected faults and their fields."""
 
 
 IMPORTED_EXERCISES_DIR = "exercises"

@@ -29,7 +29,7 @@ from typing import Any, Callable, Iterable, Mapping
 
 State = dict[str, Any]
 """Plain state read by the checks: ``referenced`` (axis → bool), ``mode``, ``program``,
-``channel``, ``active_alarms`` (numbers), ``estop``, ``offsets`` ("G54" → axis → mm),
+``channel``, ``program_state`` (aborted/running/stopped/interrupted/waiting), ``active_alarms`` (numbers), ``estop``, ``offsets`` ("G54" → axis → mm),
 ``tools`` ("T,D" → effective length 1 in mm), ``blank`` (low/high MCS corners or None),
 ``single_block``."""
 
@@ -58,6 +58,7 @@ def state_of(status: Any, data: Any) -> State:
         "mode": channel.mode,
         "program": channel.selected_program,
         "channel": channel.channel_state,
+        "program_state": channel.program_state,
         "active_alarms": sorted({a.number for a in status.alarms}),
         "estop": bool(status.emergency_stop),
         "offsets": offsets,
@@ -134,6 +135,11 @@ def _tool_length(check: Mapping[str, Any], state: State, events: list[dict]) -> 
     return abs(actual - wanted) <= within + 1e-9, \
         Reason("T{tool} length is {actual:.3f} mm: not within {within:g} mm of its true length",
                tool=check["t"], actual=actual, within=within)
+
+
+def _program_state(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
+    wanted = check["state"]
+    return state.get("program_state") == wanted, Reason("the program status is not {state}", state=wanted)
 
 
 def _single_block(check: Mapping[str, Any], state: State, events: list[dict]) -> Verdict:
@@ -221,6 +227,7 @@ CHECK_KINDS: dict[str, Callable[[Mapping[str, Any], State, list[dict]], Verdict]
     "work_offset": _work_offset,
     "tool_length": _tool_length,
     "single_block": _single_block,
+    "program_state": _program_state,
     "program_ended": _program_ended,
     "alarm_came": _alarm_came,
     "alarm_cleared": _alarm_cleared,

@@ -4,7 +4,8 @@ The trainee's own data directory is never touched: the set-up is written into a 
 directory (the caller's, e.g. a temporary one) as retained data of the same kind the
 panel keeps — tools, work offsets, the clamped blank and its instructor switch
 ``hidden`` (:mod:`nck.workpiece`), the keyswitch, programs — so the kernel built on it
-starts exactly as the exercise says. Faults that need a running kernel (E-stop) are
+starts exactly as the exercise says. Faults that need a running kernel (E-stop, a spindle
+drive fault) are
 returned as commands for the caller to send after the start (:func:`start_commands`).
 """
 
@@ -84,10 +85,16 @@ def _inject(fault: dict[str, Any], session: Any) -> None:
 
 
 def start_commands(exercise: Exercise) -> list[Any]:
-    """Commands to send to the new kernel at the start: program selection, E-stop."""
+    """Commands to send to the new kernel at the start: program selection, E-stop, a spindle
+    drive fault (faults that live in the running kernel, not in the retained data)."""
     commands: list[Any] = []
     if exercise.setup.get("select"):
         commands.append(cmd.SelectProgram(exercise.setup["select"]))
-    if any(f["kind"] == "emergency_stop" for f in exercise.setup.get("faults", [])):
+    faults = exercise.setup.get("faults", [])
+    if any(f["kind"] == "emergency_stop" for f in faults):
         commands.append(cmd.EmergencyStop(True))
+    spindles = load_machine(exercise.machine).spindles
+    for fault in faults:
+        if fault["kind"] == "spindle_drive" and spindles:
+            commands.append(cmd.SetSpindleDriveFault(spindles[0], float(fault["limit_rpm"])))
     return commands

@@ -1058,6 +1058,7 @@ COMMANDS.register_part(cmd.SetOverride, lambda nck: nck.settings, ControlSetting
 COMMANDS.register(cmd.CancelAlarms, Nck._cancel_alarms)
 COMMANDS.register_part(cmd.Jog, lambda nck: nck.manual, ManualControl.jog)
 COMMANDS.register_part(cmd.SetControllerEnable, lambda nck: nck.settings, ControlSettings.set_controller_enable)
+COMMANDS.register_part(cmd.SetSpindleDriveFault, lambda nck: nck.settings, ControlSettings.set_spindle_drive_fault)
 COMMANDS.register_part(cmd.StartBlockSearch, lambda nck: nck.search, BlockSearchControl.start_block_search)
 COMMANDS.register_part(cmd.WriteData, lambda nck: nck.data_writes, DataWrites.write_data)
 COMMANDS.register_part(cmd.SetKeyswitch, lambda nck: nck.protection, Protection.set_keyswitch)

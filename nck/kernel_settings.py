@@ -104,6 +104,14 @@ class ControlSettings:
         set_enable(command.axis, command.enabled)
         return Accepted()
 
+    def set_spindle_drive_fault(self, command: cmd.SetSpindleDriveFault) -> SubmitResult:
+        """Inject (or remove) a spindle drive fault that keeps its actual speed low."""
+        spindle = (getattr(self.plant.motion, "spindles", None) or {}).get(command.spindle)
+        if spindle is None:
+            return Rejected(f"no spindle {command.spindle}")
+        spindle.drive_limit_rpm = None if command.limit_rpm is None else abs(float(command.limit_rpm))
+        return Accepted()
+
     # ------------------------------------------------------------- applying
     def apply_skip_levels(self, interp: Interpreter) -> None:
         """Hand the skip levels to ``interp``."""

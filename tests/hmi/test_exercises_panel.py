@@ -125,13 +125,14 @@ async def test_emergency_stop_cleared_with_the_wrong_key_then_the_right_one(tmp_
         assert not app.bridge.status.emergency_stop  # the trainee's machine never was in E-stop
 
 
-async def test_exam_shows_no_hint_and_a_waiting_exercise_does_not_start(tmp_path: Path) -> None:
+async def test_exam_shows_no_hint_and_the_spindle_exercise_starts(tmp_path: Path) -> None:
     app = trainee_app(tmp_path)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press(*OPEN_LIST, *[NEXT] * 13, START)  # 14: the spindle fault waits
-        assert app.hint.startswith("This exercise waits for a spindle that does not reach its speed")
-        assert not app.has_class("-exercise")
-        await pilot.press(PREVIOUS, START)  # 13: the exam
+        await pilot.press(*OPEN_LIST, *[NEXT] * 13, START)  # 14: the spindle drive fault
+        assert app.hint == "Exercise started: The spindle does not reach its speed"
+        assert "Step 1 of 3" in side(app) and "Hint" in side(app)
+        await pilot.press(END)
+        await pilot.press(*OPEN_LIST, PREVIOUS, START)  # 13: the exam (the list kept its place)
         assert "Step 1 of 3" in side(app) and "Hint" not in side(app)
         await pilot.press(END)
         assert "score 25/100" in app.hint  # 1 of 4: only the final check (no alarm) holds
