@@ -5,14 +5,12 @@ immutable records. Positions are dictionaries keyed by axis name. ``*_wcs``
 values are in program units in the workpiece coordinate system of the
 programmed tool tip; ``*_mcs`` values are machine coordinates in millimetres
 (tool length compensation applied).
-
-Sinks receive commands one by one through :meth:`Sink.emit`.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Mapping, Protocol
+from typing import Mapping
 
 
 FEED_PER_REVOLUTION = frozenset({"G95", "G96", "G97", "G952", "G962", "G972"})
@@ -216,21 +214,3 @@ CanonCommand = (
     Motion | Dwell | ExactStop | AuxFunction | ToolSelect | EdgeSelect | SpindleCommand | Message
     | StopPoint | ProgramEnd | UserAlarm
 )
-
-
-class Sink(Protocol):
-    """Anything that receives canonical commands."""
-
-    def emit(self, command: CanonCommand) -> None:
-        """Receive one command."""
-
-
-class ListSink:
-    """A sink that keeps every command in a list (tests, headless runs)."""
-
-    def __init__(self) -> None:
-        self.commands: list[CanonCommand] = []
-
-    def emit(self, command: CanonCommand) -> None:
-        """Append the command."""
-        self.commands.append(command)

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Iterator
 
 from nck.alarm_ids import BLOCK_TOO_COMPLEX
-from nck.canon import CanonCommand, Motion, UserAlarm
+from nck.canon import Motion, UserAlarm
 from nck.errors import NcAlarmError
 from nck.iso.dialect import dialect_for
 from nck.machine import load_machine
@@ -295,11 +295,6 @@ def motion_refusal(motions: list[Motion], machine: Any, data: NcData) -> CheckAl
 def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:
     """Every problem of a program text as a list (see :func:`iter_check`)."""
     return list(iter_check(name, text, **options))
-
-
-def commands_of(result: RunResult) -> list[CanonCommand]:
-    """The collected motions as canonical commands (for sinks and golden files)."""
-    return list(result.motions)
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ bare axis name, as in ``nck run --trace``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, Mapping, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
 from nck.number_text import fixed
 
@@ -238,13 +238,6 @@ def trace_csv(times_s: Sequence[float], columns: Mapping[str, Sequence[float]]) 
         row = [fixed(t, 3)] + [fixed(column[index], 6) for column in values]
         lines.append(",".join(row))
     return "\n".join(lines) + "\n"
-
-
-def axis_trace_recorder(machine: Any, axes: Iterable[str] | None = None,
-                        duration_s: float = 1e12) -> "AxisTrace":
-    """A recorder of the MCS positions of every path axis (the ``nck run --trace`` file)."""
-    names = list(axes) if axes is not None else [a.name for a in machine.axes if a.kind != "spindle"]
-    return AxisTrace(names, duration_s)
 
 
 class AxisTrace:

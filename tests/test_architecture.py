@@ -9,6 +9,7 @@ The rules (the rules of the house and issue 21's target map):
   module; a screen never imports the module of another operating area.
 - No import circles, counting function-local and ``TYPE_CHECKING`` imports.
 - No ``_private`` name imported from another module.
+- No top-level definition that nothing names (``tests/definition_uses.py``).
 
 Today's breaks are listed in ``architecture_allowlist.py``; those lists may only shrink.
 """
@@ -22,6 +23,7 @@ import pytest
 
 from hmi.app import AREAS
 from tests import architecture_allowlist as allowed
+from tests.definition_uses import unnamed_definitions
 from tests.import_graph import (
     LayerRules,
     collect_imports,
@@ -216,3 +218,23 @@ def test_the_ratchet_reports_new_breaks_and_stale_entries() -> None:
     assert ratchet_report({("a", "b")}, listed, "break") == [
         "break gone, delete it from architecture_allowlist.py: ('c', 'd')"
     ]
+
+
+USING_PACKAGES = (*PACKAGES, "tests", "bench")
+
+
+def test_no_definition_that_nothing_names_apart_from_the_listed_ones() -> None:
+    found = unnamed_definitions(ROOT, PACKAGES, USING_PACKAGES)
+    assert ratchet_report(found, allowed.UNNAMED_DEFINITIONS, "unnamed definition") == []
+
+
+def test_a_definition_nothing_names_is_found(tmp_path: Path) -> None:
+    (tmp_path / "nck").mkdir()
+    (tmp_path / "tests").mkdir()
+    (tmp_path / "nck" / "a.py").write_text(
+        "from nck.b import used\nLIMIT = 3\nWORDS = (N_('x'),)\n\n\ndef helper():\n    return used\n\n\n"
+        "class Orphan:\n    pass\n")
+    (tmp_path / "nck" / "b.py").write_text("def used():\n    return 1\n")
+    (tmp_path / "tests" / "test_a.py").write_text("from nck.a import helper\n")
+    found = unnamed_definitions(tmp_path, ("nck",), ("nck", "tests"))
+    assert found == {("nck/a.py", "LIMIT"), ("nck/a.py", "Orphan")}

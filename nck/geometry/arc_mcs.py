@@ -16,7 +16,6 @@ from nck.canon import Motion
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
 # plane -> (abscissa, ordinate, applicate) axis names
 PLANE_AXES = {"G17": ("X", "Y", "Z"), "G18": ("Z", "X", "Y"), "G19": ("Y", "Z", "X")}
-AXIS_TOL = 1e-9
 
 
 def is_arc(motion: Motion) -> bool:

@@ -412,12 +412,3 @@ def arc_tangential(plane: Plane, start: Vec3, end: Vec3, tangent: Vec3, turns: i
     k = (da * da + do * do) / (2.0 * across)  # signed distance of the centre along the normal
     center = (s[0] + k * na, s[1] + k * no)
     return plane_arc(plane, start, end, center, clockwise=k < 0, turns=turns)
-
-
-def end_tangent_of_line(start: Vec3, end: Vec3) -> Vec3:
-    """Unit direction of a straight segment (zero vector for a zero-length move)."""
-    d = np.subtract(end, start)
-    n = float(np.linalg.norm(d))
-    if n < POINT_EPS:
-        return (0.0, 0.0, 0.0)
-    return (float(d[0] / n), float(d[1] / n), float(d[2] / n))

@@ -51,7 +51,6 @@ ALARM_WRONG_AXIS_TYPE = 14092
 
 Matrix3 = tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
 IDENTITY3: Matrix3 = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
-ANGLE_TOL_DEG = 1e-9
 
 
 def as_matrix3(array: np.ndarray) -> Matrix3:

@@ -23,7 +23,6 @@ machine position is ``MCS = BCS (tool tip) + offset vector``.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import Any
 
 from nck.errors import NcAlarmError
@@ -104,14 +103,6 @@ def length_offset(
     for length, index in zip(lengths, length_axes(edge.tool_type, plane_code, length_const, length_type)):
         out[geometry_axes[index]] += length * data_mm
     return out
-
-
-@dataclass(frozen=True, slots=True)
-class ActiveTool:
-    """The tool and cutting edge whose offsets are active (T, D), 0 = none."""
-
-    tool: int = 0
-    edge: int = 0
 
 
 def resolve_edge(data: NcData, tool: int, edge: int) -> ToolEdge | None:

@@ -262,16 +262,6 @@ def offset(curve: Curve, distance_left: float) -> Curve:
     )
 
 
-def offset_start_point(curve: Curve, distance_left: float) -> Vec:
-    """Start point of the offset curve (the tool in normal position at the start)."""
-    return add(curve.start, scale(left_normal(tangent_start(curve)), distance_left))
-
-
-def offset_end_point(curve: Curve, distance_left: float) -> Vec:
-    """End point of the offset curve (the tool in normal position at the end)."""
-    return add(curve.end, scale(left_normal(tangent_end(curve)), distance_left))
-
-
 def _line_line(p: Vec, u: Vec, q: Vec, v: Vec) -> list[Vec]:
     denom = cross(u, v)
     if abs(denom) < EPS_PARALLEL:

@@ -560,8 +560,3 @@ def check_cycle(tracker: FrameTracker, code: int | None) -> None:
     """A drilling cycle under G16 raises 61814 (the cycles here take Cartesian hole positions)."""
     if tracker.polar:
         raise NcAlarmError(ALARM_CYCLE_POLAR, f"G{code}")
-
-
-def trans_block(values: dict[str, float]) -> str:
-    """The ``$P_ISOFR_TRANS`` assignment alone (older form of :func:`trans_blocks`)."""
-    return trans_blocks("", values)[0]
