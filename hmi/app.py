@@ -58,7 +58,7 @@ from hmi.bridge import NckBridge
 from hmi.browser_driver import PanelBrowserDriver
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
-from hmi.exercise_run import EXAM_HELP_LIMITED, ClassroomHost, reports_dir_of
+from hmi.exercise_run import EXAM_HELP_LIMITED, ClassroomHost, reports_dir_of, served_dir_of
 from hmi.alarm_help import AlarmHelpScreen
 from hmi.i18n import LANGUAGES, N_, _, language, set_language
 from hmi.help import HelpScreen, area_keys
@@ -833,7 +833,7 @@ def detach_lost_terminal() -> None:
 def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral: bool = False,
              *, nck: Any = None, program: str | None = None, realtime: bool = True,
              confirm: Callable[[str], bool] | None = None, lang: str | None = None,
-             reports_dir: str | None = None) -> HmiApp:
+             reports_dir: str | None = None, class_dir: str | None = None) -> HmiApp:
     """Build the application (shared by the console script and the tests).
 
     Args:
@@ -850,6 +850,8 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
         reports_dir: where exercise reports go (``--reports-dir``); None: ``exercise_reports``
             of the data directory — with ``ephemeral`` of the directory copied, so that the
             reports outlive the copy (:func:`hmi.exercise_run.reports_dir_of`).
+        class_dir: the data directory whose class packs the panel lists and imports into
+            (``--class-dir``; a browser tab's the one served); None: its own.
     """
     on_quit = None
     session = None
@@ -866,6 +868,8 @@ def make_app(machine: str | None = None, data_dir: str | None = None, ephemeral:
     app.nc_session = session
     if reports_dir is not None or ephemeral:
         app.exercise_report_dir = reports_dir_of(reports_dir, data_dir)
+    if class_dir is not None:
+        app.class_pack_dir = served_dir_of(class_dir)
     return app
 
 
@@ -901,6 +905,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--reports-dir", metavar="DIR",
                         help="where exercise reports are written (default: exercise_reports in the data "
                              "directory; with --ephemeral or --serve in the one copied)")
+    parser.add_argument("--class-dir", metavar="DIR",
+                        help="data directory whose class packs the Exercises list shows and imports into "
+                             "(default: the panel's own; --serve passes the directory served)")
     parser.add_argument("--serve", action="store_true",
                         help="serve the panel to browsers (classroom): one panel on a private copy of the "
                              "NC data per browser tab (needs textual-serve, installed by make)")
@@ -916,13 +923,15 @@ def main(argv: list[str] | None = None) -> int:
             print("hmi: --max-sessions needs 1 or more, --port a port number 1…65535", file=sys.stderr)
             return 2
         return serve(args.host, args.port, args.max_sessions, args.machine, args.data_dir,
-                     str(reports_dir_of(args.reports_dir, args.data_dir)), args.lang)
+                     str(reports_dir_of(args.reports_dir, args.data_dir)), args.lang,
+                     str(served_dir_of(args.data_dir)))
     started = time.perf_counter()
     # SIGTERM/SIGHUP while starting or ending: a normal exit, so a temporary copy is removed
     with exit_on_termination():
         try:
             app = make_app(args.machine, args.data_dir, args.ephemeral, program=args.program,
-                           confirm=ask_on_terminal, lang=args.lang, reports_dir=args.reports_dir)
+                           confirm=ask_on_terminal, lang=args.lang, reports_dir=args.reports_dir,
+                           class_dir=args.class_dir)
         except Exception as exc:  # a CLI/file problem: a clear message, no traceback
             # an exception without text (MemoryError) must not leave a bare "hmi: "
             message = str(exc) or f"cannot start: internal error ({type(exc).__name__})"

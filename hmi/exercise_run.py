@@ -29,13 +29,19 @@ REPORTS_FOLDER = "exercise_reports"
 """The folder of a data directory the exercise reports go to (unless ``--reports-dir`` names one)."""
 
 
+def served_dir_of(data_dir: str | None) -> Path:
+    """The data directory ``data_dir`` (``--data-dir``, None: the user's), absolute: the one a
+    browser tab's panel copies, where its reports and class packs go."""
+    return (Path(data_dir).expanduser() if data_dir else queries.default_data_dir()).absolute()
+
+
 def reports_dir_of(reports_dir: str | None, data_dir: str | None) -> Path:
     """Where reports go: ``reports_dir`` (``--reports-dir``), else :data:`REPORTS_FOLDER` of the
     data directory ``data_dir`` (``--data-dir``, None: the user's) — the directory itself, not a
     temporary copy of it, so that a report outlives an ``--ephemeral`` panel or a browser tab."""
     if reports_dir:
         return Path(reports_dir).expanduser().absolute()
-    return (Path(data_dir).expanduser() if data_dir else queries.default_data_dir()).absolute() / REPORTS_FOLDER
+    return served_dir_of(data_dir) / REPORTS_FOLDER
 
 
 EXAM_HELP_LIMITED = "Exam: help is limited to the key overview (F11)"
@@ -145,6 +151,9 @@ class ClassroomHost:
     """The side window's text ("" while no exercise runs)."""
     exercise_report_dir: Path | None = None
     """Where reports go (None: ``exercise_reports`` in the trainee's data directory, else a temporary folder)."""
+    class_pack_dir: Path | None = None
+    """The data directory whose class packs the panel lists and imports into (``--class-dir``:
+    a browser tab's the one served, not its copy); None: the trainee's own."""
 
     @property
     def exam_running(self) -> bool:
@@ -212,15 +221,15 @@ class ClassroomHost:
     def exercise_list(self) -> list[Any]:
         """The exercises to choose from: the shipped ones and those class packs brought into the
         trainee's data directory (``ExerciseError`` names a file that cannot be read)."""
-        return queries.available_exercises(self._trainee_data_dir())
+        return queries.available_exercises(self._class_dir())
 
     def import_class_pack(self, path: str) -> str:
         """Check the class pack ``path`` whole, then write its exercises and programs into the
-        trainee's data directory (:mod:`nck.class_pack`); return what to say. The caller
-        checks the protection level."""
+        trainee's data directory, or the one served to this browser tab (:mod:`nck.class_pack`,
+        file by file atomically); return what to say. The caller checks the protection level."""
         if self.exercise_run is not None:
             return "Class pack not imported: end the running exercise first"
-        data_dir = self._trainee_data_dir()
+        data_dir = self._class_dir()
         if data_dir is None:
             return "Class pack not imported: the panel runs without a data directory"
         try:
@@ -231,6 +240,10 @@ class ClassroomHost:
         except OSError as exc:
             return f"Class pack not imported: {exc.filename}: {exc.strerror or exc}"
         return f"Class pack imported: {pack.summary()} ({len(written)} files new or changed)"
+
+    def _class_dir(self) -> Path | None:
+        """Where class packs are listed from and imported into (see :attr:`class_pack_dir`)."""
+        return self.class_pack_dir if self.class_pack_dir is not None else self._trainee_data_dir()
 
     def _trainee_data_dir(self) -> Path | None:
         """The trainee's own data directory (not an exercise's private one); None without one."""

@@ -9,7 +9,9 @@ process to quit. The number of panels at once is bounded (:data:`DEFAULT_MAX_SES
 ``--max-sessions``): each is a simulated machine that computes all the time, and the
 machine has few cores. A connection beyond the bound gets a line saying so and is closed.
 Exercise reports are written outside the copies, into one folder for every tab
-(``--reports-dir``, default ``exercise_reports`` of the data directory served).
+(``--reports-dir``, default ``exercise_reports`` of the data directory served). Class packs
+imported in a tab go into the data directory served (``--class-dir``), not into the tab's
+copy: every tab lists them the next time it shows its exercises.
 """
 
 from __future__ import annotations
@@ -44,11 +46,12 @@ class SessionSlots:
 
 
 def panel_command(machine: str | None = None, data_dir: str | None = None, reports_dir: str | None = None,
-                  lang: str | None = None) -> str:
+                  lang: str | None = None, class_dir: str | None = None) -> str:
     """The shell command of one browser session's panel: this Python, ``-m hmi --ephemeral``
     (a private copy of ``data_dir``, or of the user's data directory), writing exercise
-    reports into ``reports_dir`` — outside the copy, which goes with the tab — and showing
-    its texts in ``lang`` (None: the language kept in the copied data)."""
+    reports into ``reports_dir`` and class packs into ``class_dir`` — outside the copy, which
+    goes with the tab — and showing its texts in ``lang`` (None: the language kept in the
+    copied data)."""
     words = [sys.executable, "-m", "hmi", "--ephemeral"]
     if lang:
         words += ["--lang", lang]
@@ -58,6 +61,8 @@ def panel_command(machine: str | None = None, data_dir: str | None = None, repor
         words += ["--data-dir", data_dir]
     if reports_dir:
         words += ["--reports-dir", reports_dir]
+    if class_dir:
+        words += ["--class-dir", class_dir]
     return shlex.join(words)
 
 
@@ -65,7 +70,8 @@ BUSY_TEXT = "All {limit} panels of this trainer are in use: close one, or try ag
 
 
 def make_server(host: str, port: int, max_sessions: int, machine: str | None = None,
-                data_dir: str | None = None, reports_dir: str | None = None, lang: str | None = None) -> Any:
+                data_dir: str | None = None, reports_dir: str | None = None, lang: str | None = None,
+                class_dir: str | None = None) -> Any:
     """A textual-serve server of the panel, bounded to ``max_sessions`` at once.
 
     Raises ImportError when textual-serve is not installed.
@@ -97,15 +103,16 @@ def make_server(host: str, port: int, max_sessions: int, machine: str | None = N
             finally:
                 self.slots.give_back()
 
-    return PanelServer(panel_command(machine, data_dir, reports_dir, lang), host=host, port=port,
+    return PanelServer(panel_command(machine, data_dir, reports_dir, lang, class_dir), host=host, port=port,
                        title="SINUMERIK Operate trainer")
 
 
 def serve(host: str, port: int, max_sessions: int, machine: str | None = None,
-          data_dir: str | None = None, reports_dir: str | None = None, lang: str | None = None) -> int:
+          data_dir: str | None = None, reports_dir: str | None = None, lang: str | None = None,
+          class_dir: str | None = None) -> int:
     """Serve the panel until Ctrl+C; return the exit code (2: textual-serve missing)."""
     try:
-        server = make_server(host, port, max_sessions, machine, data_dir, reports_dir, lang)
+        server = make_server(host, port, max_sessions, machine, data_dir, reports_dir, lang, class_dir)
     except ImportError:
         print("hmi: --serve needs textual-serve (installed by make: pip install -e '.[serve]')",
               file=sys.stderr)

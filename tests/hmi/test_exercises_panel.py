@@ -195,3 +195,38 @@ def test_browser_panels_write_reports_outside_their_copies(tmp_path: Path) -> No
     assert reports_dir_of(None, None) == default_data_dir().absolute() / "exercise_reports"
     words = shlex.split(panel_command("mill3", str(tmp_path), str(tmp_path / "r")))
     assert words[words.index("--reports-dir") + 1] == str(tmp_path / "r")
+
+
+async def test_a_class_pack_imported_in_a_browser_tab_goes_to_the_served_directory(tmp_path: Path) -> None:
+    """hmi --serve: each tab runs on a copy of the served directory (--ephemeral) and names the
+    served one with --class-dir. A pack imported in one tab is written there (not into the
+    tab's copy), and another tab, started before the import, lists it when it opens its list."""
+    served = tmp_path / "trainee"
+    trainee_app(tmp_path).nc_session.quit()
+    pack = tmp_path / "c.pack"
+    folder = tmp_path / "course"
+    (folder / "programs").mkdir(parents=True)
+    (folder / "20_square.toml").write_text(PACKED_EXERCISE)
+    (folder / "programs" / "SQUARE.MPF").write_text(SQUARE)
+    export_pack(pack, [folder / "20_square.toml"])
+    tabs = [make_app(data_dir=str(served), ephemeral=True, realtime=False, class_dir=str(served)) for _ in range(2)]
+    try:
+        async with tabs[0].run_test(size=SIZE) as pilot:
+            await burst(pilot, *OPEN_LIST, IMPORT, *str(pack), "enter")
+            assert tabs[0].hint == "Import class pack: needs access level 2"  # checked in the tab
+            tabs[0].submit(cmd.EnterPassword("EVENING"))
+            await pilot.pause()
+            await burst(pilot, IMPORT, *str(pack), "enter")
+            assert tabs[0].hint == "Class pack imported: 1 exercise, 1 program (2 files new or changed)"
+        assert (served / "exercises" / "programs" / "SQUARE.MPF").read_text() == SQUARE
+        assert not (tabs[0].nc_session.session.data_dir / "exercises").exists()
+        async with tabs[1].run_test(size=SIZE) as pilot:
+            await burst(pilot, *OPEN_LIST, *[NEXT] * 14, START)
+            assert tabs[1].hint == "Exercise started: Run the instructor's square"
+            assert tabs[1].nc_session.session.files.read("MPF/SQUARE.MPF") == SQUARE
+            await burst(pilot, END)
+    finally:
+        for tab in tabs:
+            tab.nc_session.quit()
+    words = shlex.split(panel_command("mill3", str(served), class_dir=str(served)))
+    assert words[words.index("--class-dir") + 1] == str(served)

@@ -15,6 +15,7 @@ from textual import events
 from textual.app import App
 
 from hmi.app import HmiApp, main
+from nck.paths import default_data_dir
 from hmi.browser_driver import PanelBrowserDriver
 from hmi.serve import BUSY_TEXT, SessionSlots, make_server, panel_command
 
@@ -102,8 +103,9 @@ def test_serve_in_german_gives_each_panel_the_language(monkeypatch: pytest.Monke
 
     monkeypatch.setattr(hmi.serve, "serve", serve)
     assert main(["--serve", "--lang", "de"]) == 0
-    lang = started[0][-1]
+    lang, class_dir = started[0][-2:]
     assert lang == "de"
+    assert class_dir == str(default_data_dir().absolute())  # packs go to the directory served
     words = shlex.split(panel_command(lang=lang))
     assert words[words.index("--lang") + 1] == "de" and "--ephemeral" in words
     if importlib.util.find_spec("textual_serve") is not None:
