@@ -46,6 +46,7 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.counters import DEFAULT_PART_COUNTER, PartCounters, RuntimeTimer
 from nck.errors import NcAlarmError
 from nck.interp.api import Interpreter, ProgramSource
+from nck.interp.interpreter import Interpreter as RealInterpreter
 from nck.iso.dialect import dialect_for
 from nck.kernel_access import Protection
 from nck.kernel_contact import ContactEvent, ContactWatch
@@ -57,7 +58,7 @@ from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_setup import JobSetup
 from nck.machine import MachineConfig, load_machine
 from nck.machine_data import MachineDataStore
-from nck.motion.instant import InstantMotion, instant_motion_factory
+from nck.motion.instant import BUFFER_SEGMENTS, InstantMotion, instant_motion_factory
 from nck.motion.system import planned_motion_factory
 from nck.ncdata import NcData
 from nck.program_control import (
@@ -89,8 +90,6 @@ class _NoPrograms:
 def _default_interpreter_factory(
     machine: MachineConfig, programs: ProgramSource, data: NcData
 ) -> Interpreter:
-    from nck.interp.interpreter import Interpreter as RealInterpreter  # noqa: PLC0415
-
     return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
 
 
@@ -372,8 +371,6 @@ class Nck:
             return len(planner), int(motion.params.buffer_segments)
         queue = getattr(motion, "_queue", None)
         if queue is not None:
-            from nck.motion.instant import BUFFER_SEGMENTS  # noqa: PLC0415
-
             return len(queue), BUFFER_SEGMENTS
         return 0, 0
 
