@@ -51,16 +51,32 @@ def changed_field(params: list[CycleParam], values: list[str]) -> tuple[int, str
     raise AssertionError("no field to change")
 
 
-@pytest.mark.parametrize("machine", ["mill", "lathe"])
-async def test_form_call_line_and_recompile_round_trip(machine: str, data_dir: Path) -> None:
-    """For every cycle of the machine: type a value into every field; the call line holds them in
+CYCLES_PER_PANEL = 6
+"""Cycles one panel takes in turn: a panel per form cost three minutes of make test, all of a
+machine's forms in one panel ran past the test timeout on a loaded machine."""
+
+
+def panel_batches() -> list[tuple[str, list[str]]]:
+    """The cycles in batches of one machine each, at most :data:`CYCLES_PER_PANEL` per batch."""
+    batches = []
+    for machine in ("mill", "lathe"):
+        cycles = [cycle for cycle in sorted(cycle_forms()) if on_lathe(cycle) == (machine == "lathe")]
+        for start in range(0, len(cycles), CYCLES_PER_PANEL):
+            batches.append((machine, cycles[start:start + CYCLES_PER_PANEL]))
+    return batches
+
+
+@pytest.mark.parametrize(("machine", "cycles"), panel_batches(),
+                         ids=[f"{machine}-{cycles[0]}" for machine, cycles in panel_batches()])
+async def test_form_call_line_and_recompile_round_trip(machine: str, cycles: list[str],
+                                                       data_dir: Path) -> None:
+    """For each cycle of the batch: type a value into every field; the call line holds them in
     order; Recompile gives them back; a changed field replaces the call.
 
-    One panel per machine takes the forms one after another (a panel started per form made the
-    set cost three minutes); between two cycles the program is put back and the editor's softkeys
-    return to their first level, as an operator leaving the cycle level would find them."""
+    One panel takes the batch's forms one after another; between two cycles the program is put
+    back and the editor's softkeys return to their first level, as an operator leaving the cycle
+    level would find them."""
     (data_dir / "MPF" / "DEMO.MPF").write_text(PROGRAM)
-    cycles = [cycle for cycle in sorted(cycle_forms()) if on_lathe(cycle) == (machine == "lathe")]
     app = lathe_program_app(data_dir) if machine == "lathe" else make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
         await burst(pilot, "alt+n", "f3")  # open DEMO.MPF
