@@ -308,14 +308,20 @@ class PathRecorder:
                 self.position = self._blank_point(motion.start_mcs or end_mcs, None)
             else:
                 start_mcs = motion.start_mcs
-                self.position = tuple(
-                    float(start_mcs.get(a, end_mcs.get(a, 0.0))) + float(end_wcs.get(a, 0.0)) - float(end_mcs.get(a, 0.0))
-                    if a in end_wcs and a in end_mcs else float(end_wcs.get(a, 0.0)) for a in "XYZ")
+
+                def start_of(a: str) -> float:
+                    if a in end_wcs and a in end_mcs:
+                        return (float(start_mcs.get(a, end_mcs.get(a, 0.0))) + float(end_wcs.get(a, 0.0))
+                                - float(end_mcs.get(a, 0.0)))
+                    return float(end_wcs.get(a, 0.0))
+
+                self.position = (start_of("X"), start_of("Y"), start_of("Z"))
         start = self.position
         if in_blank:
             end = self._blank_point(end_mcs, start)
         else:
-            end = tuple(float(end_wcs[a]) if a in end_wcs else start[i] for i, a in enumerate("XYZ"))
+            x, y, z = (float(end_wcs[a]) if a in end_wcs else start[i] for i, a in enumerate("XYZ"))
+            end = (x, y, z)
         if motion.kind in ("G2", "G3"):
             points = self._points_in_blank(motion, start, end) if in_blank else self._points(motion, start, end)
         else:
