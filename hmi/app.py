@@ -60,7 +60,7 @@ from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.exercise_run import EXAM_HELP_LIMITED, ClassroomHost, reports_dir_of, served_dir_of
 from hmi.alarm_help import AlarmHelpScreen
-from hmi.i18n import LANGUAGES, N_, _, language, set_language
+from hmi.i18n import LANGUAGES, N_, _, language, refusal_text, set_language
 from hmi.help import HelpScreen, area_keys
 from hmi.key_input import own_binding
 from hmi.key_settle import wait_for_workers, wait_until_handled
@@ -535,7 +535,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
     def on_command_rejected(self, message: CommandRejected) -> None:
         """Show why the kernel refused a command."""
         prefix = f"{message.alarm}: " if message.alarm else ""
-        self.set_hint(f"{prefix}{message.reason}")
+        self.set_hint(f"{prefix}{refusal_text(message.refusal)}")
 
     def set_hint(self, text: str) -> None:
         """Write the dialog line of the current area: the message belongs to that area only."""

@@ -157,6 +157,11 @@ class AreaBase(BindingsInPlace):
         """
         return self.pop_softkeys()
 
+    def refusal_of(self, label: str) -> str:
+        """What the message line says when the softkey ``label`` (translated) is greyed by the
+        area's state; areas that know the cause more precisely (the editor is read-only) say it."""
+        return _("{softkey}: not possible in this state").format(softkey=label)
+
     def press_softkey(self, slot_id: str) -> bool:
         """Run the softkey in slot ``h1`` … ``v8`` if it is allowed; True if it ran."""
         key = self.current_menu().slot(slot_id)
@@ -168,7 +173,7 @@ class AreaBase(BindingsInPlace):
             if self.access_level > key.level:
                 self.say(_("{softkey}: needs access level {level}").format(softkey=label, level=key.level))
             else:
-                self.say(_("{softkey}: not possible in this state").format(softkey=label))
+                self.say(self.refusal_of(label))
             return False
         try:
             self.perform(key.action)

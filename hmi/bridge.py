@@ -20,7 +20,7 @@ from typing import Any, Callable, Protocol
 
 from textual.message_pump import MessagePump
 
-from nck import queries
+from nck import queries, refuse
 from nck.commands import Accepted, EnterPassword, Rejected, SubmitResult
 from nck.status import NckStatus
 
@@ -218,15 +218,14 @@ class NckBridge:
         if isinstance(command, EnterPassword):
             wait_s = self._password_open_at_s - self.clock()
             if wait_s > 0:
-                result: SubmitResult = Rejected(
-                    f"Password not checked: next try in {math.ceil(wait_s)} s after a wrong password")
-                self._post(CommandRejected(command, result.reason, None))
+                result: SubmitResult = refuse("password_wait", seconds=math.ceil(wait_s))
+                self._post(CommandRejected(command, result))
                 return result
         result = self.nck.submit(command)
         if isinstance(command, EnterPassword):
             self._password_open_at_s = self.clock() + self._password_delay_s()
         if isinstance(result, Rejected):
-            self._post(CommandRejected(command, result.reason, result.alarm))
+            self._post(CommandRejected(command, result))
         self.poll()
         return result if isinstance(result, (Accepted, Rejected)) else Accepted()
 

@@ -16,9 +16,11 @@ from __future__ import annotations
 from typing import Any
 
 from nck import LANGUAGES, SOURCE_LANGUAGE, alarm_text_in, check_language, gettext_catalogue, localized
+from nck.commands import Rejected
 from nck.status import AlarmEntry
 
-__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "exercise_text", "language", "reason_text", "set_language", "step_text"]
+__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "exercise_text", "language", "reason_text", "refusal_text",
+           "set_language", "step_text"]
 
 _active = {"code": SOURCE_LANGUAGE}
 
@@ -45,6 +47,11 @@ def N_(message: str) -> str:  # noqa: N802 - the gettext convention
     return message
 
 
+WORDED_UNITS = (N_("rev/min"), N_("mm/rev"), N_("rev/s²"))
+"""The units of the data tables (machine data, JOG fields) with an English word in them: the
+tables draw every unit through :func:`_`, these are the ones the catalogue translates (U/min …)."""
+
+
 def data_text(kind: str, key: object, field: str, english: str) -> str:
     """A text of a data table (a kind of ``nck.translations.OVERLAY_TABLES``) in the language shown now."""
     return localized(_active["code"], kind, key, field, english)
@@ -67,6 +74,18 @@ def reason_text(reason: str) -> str:
     if template is None:
         return reason
     return _(template).format(**reason.fields)  # type: ignore[attr-defined]
+
+
+def refusal_text(refusal: Rejected) -> str:
+    """Why the kernel refused a command, in the language shown now: a keyed refusal from the
+    overlay of ``data/refusals.toml``, one that raised an alarm in the alarm's text, else as given."""
+    code = _active["code"]
+    if refusal.key:
+        template = localized(code, "refusal", refusal.key, "text", "")
+        return template.format(**dict(refusal.fields)) if template else refusal.reason
+    if refusal.alarm is not None and refusal.alarm_params:
+        return alarm_text_in(code, refusal.alarm, refusal.alarm_params, refusal.reason)
+    return refusal.reason
 
 
 def alarm_text(entry: AlarmEntry) -> str:

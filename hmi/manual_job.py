@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
-from nck import commands as cmd
+from nck import commands as cmd, refuse
 from nck.status import NckStatus
 
 Submit = Callable[[Any], cmd.SubmitResult]
@@ -44,9 +44,9 @@ class ManualJob:
         """
         channel = status.channel
         if self.running:
-            return cmd.Rejected("A JOG job is already running")
+            return refuse("jog_job_running")
         if channel.mode != "JOG" or channel.channel_state != "reset":
-            return cmd.Rejected("Only in JOG with the channel in reset")
+            return refuse("jog_job_needs_reset")
         self._saved_mda_text = channel.mda_text  # running from here: the screens see the job
         self._armed = False
         self.blocks = blocks

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from textual.message import Message
 
+from nck.commands import Rejected
 from nck.status import AlarmEntry, NckStatus
 
 
@@ -24,13 +25,14 @@ class NckStatusChanged(Message):
 
 
 class CommandRejected(Message):
-    """The kernel refused an operator command; ``reason`` is shown on the dialog line."""
+    """The kernel refused an operator command; ``refusal`` (its reason) is shown on the dialog line."""
 
-    def __init__(self, command: object, reason: str, alarm: int | None = None) -> None:
+    def __init__(self, command: object, refusal: Rejected) -> None:
         super().__init__()
         self.command = command
-        self.reason = reason
-        self.alarm = alarm
+        self.refusal = refusal
+        self.reason = refusal.reason
+        self.alarm = refusal.alarm
 
 
 class AlarmLogged(Message):

@@ -39,6 +39,8 @@ from nck.trace import (MAX_SIGNALS as MAX_SIGNALS, TraceError as TraceError, Tra
 from nck.canon import Motion as Motion
 # The ISO dialect's G groups as the G-functions window shows them.
 from nck.iso.display import ISO_MAIN_GROUPS_M as ISO_MAIN_GROUPS_M, iso_table as iso_table
+# A refusal by its key in data/refusals.toml (the panel's own refusals of operator commands).
+from nck.refusals import refuse as refuse
 # Operator texts in more than one language: gettext catalogues and data-table overlays (data/lang).
 from nck.translations import (LANGUAGES as LANGUAGES, SOURCE_LANGUAGE as SOURCE_LANGUAGE,
                               UnknownLanguage as UnknownLanguage, alarm_text_in as alarm_text_in,

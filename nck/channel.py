@@ -21,6 +21,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from nck.commands import Rejected
+from nck.refusals import refuse
+
 MODES = ("JOG", "MDA", "AUTO")
 MACHINE_FUNCTIONS = ("REF", "REPOS", "INC")
 INCREMENTS = (1, 10, 100, 1000, 10000)  # in 0.001 mm; None = INC VAR
@@ -30,8 +33,6 @@ RESET, ACTIVE, INTERRUPTED = "reset", "active", "interrupted"
 ABORTED, RUNNING, STOPPED, PROG_INTERRUPTED, WAITING = (
     "aborted", "running", "stopped", "interrupted", "waiting",
 )
-
-MODE_CHANGE_REFUSED = "Operating mode cannot be changed until after NC Stop"
 
 
 @dataclass(frozen=True, slots=True)
@@ -140,19 +141,19 @@ def next_state(situation: ChannelSituation, event: str) -> ChannelSituation | No
 
 def mode_change_allowed(
     situation: ChannelSituation, target_mode: str, interrupted_owner: str | None
-) -> str | None:
-    """Return None if the mode change is allowed, else the reason it is refused.
+) -> Rejected | None:
+    """Return None if the mode change is allowed, else its refusal.
 
     ``interrupted_owner`` is the mode (``AUTO``/``MDA``) whose program is
     stopped or interrupted, if any. Rules (digest §1.6): no change while the
     channel is active; an interrupted MDA program cannot go straight to AUTO.
     """
     if target_mode not in MODES:
-        return f"unknown mode {target_mode!r}"
+        return refuse("unknown_mode", mode=repr(target_mode))
     if situation.channel == ACTIVE:
-        return MODE_CHANGE_REFUSED
+        return refuse("mode_change_refused")
     if target_mode == "AUTO" and interrupted_owner == "MDA":
-        return "Interrupted MDA program: RESET before AUTOMATIC"
+        return refuse("mda_interrupted")
     return None
 
 

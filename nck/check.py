@@ -61,6 +61,8 @@ class CheckAlarm:
         n: block number of the block, if known.
         text: the formatted alarm text.
         params: the alarm parameters.
+        text_params: every value of the text's placeholders (the channel and block first, then
+            ``params``): what a panel needs to format the text in another language.
     """
 
     number: int
@@ -68,6 +70,7 @@ class CheckAlarm:
     n: int | None
     text: str
     params: tuple[str, ...] = ()
+    text_params: tuple[str, ...] = ()
 
 
 @dataclass(slots=True)
@@ -91,6 +94,7 @@ def _alarm(error: NcAlarmError, fallback_line: int | None = None) -> CheckAlarm:
         n=error.n,
         text=alarm_text(error.number, params + error.params),
         params=error.params,
+        text_params=params + error.params,
     )
 
 

@@ -21,10 +21,19 @@ class Accepted:
 
 @dataclass(frozen=True, slots=True)
 class Rejected:
-    """The command was refused; nothing changed. ``alarm`` is set when an alarm was raised."""
+    """The command was refused; nothing changed. ``alarm`` is set when an alarm was raised.
+
+    ``reason`` is the English text. A refusal of the kernel's own (``nck.refusals.refuse``)
+    also carries its ``key`` in ``data/refusals.toml`` and the values of its placeholders
+    (``fields``); one that raised an alarm carries the alarm's parameters (``alarm_params``).
+    With them a panel says the refusal in its own language.
+    """
 
     reason: str
     alarm: int | None = None
+    key: str = ""
+    fields: tuple[tuple[str, str], ...] = ()
+    alarm_params: tuple[str, ...] = ()
 
 
 SubmitResult = Accepted | Rejected

@@ -64,6 +64,7 @@ from nck.ncdata import NcData
 from nck.program_control import (
     SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun, RunEvent, RunOptions,
 )
+from nck.refusals import refuse
 from nck.snapshot import StatusSources, build_status
 from nck.status import AlarmEntry, AlarmEvent, LogbookEntry, NckStatus
 
@@ -235,7 +236,7 @@ class Nck:
         """Carry out one operator command; never raises."""
         handler = COMMANDS.handler(type(command))
         if handler is None:
-            return Rejected(f"unknown command {type(command).__name__}")
+            return refuse("unknown_command", command=type(command).__name__)
         try:
             logged = isinstance(command, _LOGBOOK_COMMANDS)
             level_before = self._access_level() if logged else 7
@@ -245,10 +246,10 @@ class Nck:
             return result
         except NcAlarmError as error:
             entry = self._raise(error)
-            return Rejected(entry.text, alarm=error.number)
+            return Rejected(entry.text, alarm=error.number, alarm_params=tuple(entry.params))
         except Exception as exc:  # noqa: BLE001 - every bug becomes alarm 1
             self._internal_error(exc)
-            return Rejected("internal error", alarm=ALARM_INTERNAL)
+            return refuse("internal_error", alarm=ALARM_INTERNAL)
         finally:
             self._snapshot = None
 
@@ -446,11 +447,11 @@ class Nck:
         mode = {"AUTOMATIC": "AUTO", "MDI": "MDA"}.get(mode, mode)
         if mode == self.channel.situation.mode:
             return Accepted()
-        reason = mode_change_allowed(self.channel.situation, mode, self.channel.owner)
-        if reason is None and mode == "AUTO" and self.channel.overlay is not None:
-            reason = "Interrupted MDA program: RESET before AUTOMATIC"
-        if reason is not None:
-            return Rejected(reason)
+        refusal = mode_change_allowed(self.channel.situation, mode, self.channel.owner)
+        if refusal is None and mode == "AUTO" and self.channel.overlay is not None:
+            refusal = refuse("mda_interrupted")
+        if refusal is not None:
+            return refusal
         new = situation_after_mode_change(self.channel.situation, mode, self.channel.owner)
         self._park()
         if self.channel.situation.channel == INTERRUPTED and self.channel.situation.program == ABORTED:
@@ -473,19 +474,19 @@ class Nck:
     def _cycle_start(self, command: cmd.CycleStart) -> SubmitResult:
         mode = self.channel.situation.mode
         if self.channel.estop_active:
-            return Rejected("Emergency stop active")
+            return refuse("emergency_stop_active")
         if mode == "JOG" or (self.channel.situation.channel == INTERRUPTED and self.channel.situation.program == ABORTED):
             return self.manual.continue_jog()
         if self.channel.situation.channel == ACTIVE:
-            return Rejected("Channel already active")
+            return refuse("channel_already_active")
         self.alarms.clear("nc_start", self._time_s)
         if self.alarms.has_reaction("nc_start_disable"):
             self._raise_number(ALARM_START_WITH_ALARM)
-            return Rejected("No NC START with an alarm active", alarm=ALARM_START_WITH_ALARM)
+            return refuse("start_with_alarm", alarm=ALARM_START_WITH_ALARM)
         unreferenced = self._unreferenced_axes()
         if unreferenced:
             self._raise_number(ALARM_START_UNREFERENCED, unreferenced[0])
-            return Rejected("Axes not referenced: " + " ".join(unreferenced), alarm=ALARM_START_UNREFERENCED)
+            return refuse("axes_not_referenced", alarm=ALARM_START_UNREFERENCED, axes=" ".join(unreferenced))
         self.settings.apply_dry_run()  # SD42100/SD42101 written during the interruption
         self.data_writes.apply_offset_edits()  # MD9440: work offsets edited during the interruption
         if mode == "AUTO":
@@ -495,10 +496,10 @@ class Nck:
     def _start_auto(self) -> SubmitResult:
         run = self.channel.run
         if next_state(self.channel.situation, "program_start") is None:
-            return Rejected("NC START not possible in this state")
+            return refuse("start_not_possible")
         if self.channel.situation.program == ABORTED:
             if self.channel.selected is None:
-                return Rejected("No program selected")
+                return refuse("no_program_selected")
             interp = self._interpreter("AUTO")
             interp.reset()
             interp.start(self.channel.selected)
@@ -507,7 +508,7 @@ class Nck:
             self.channel.transition("program_start")
             return Accepted()
         if run is None or self.channel.owner != "AUTO":
-            return Rejected("No interrupted program to continue: RESET")
+            return refuse("nothing_to_continue")
         if run.phase == SEARCH_FOUND:
             self._handle_events(run, run.output_search_actions())
             self.channel.transition("program_start")
@@ -530,7 +531,7 @@ class Nck:
 
     def _start_mda(self) -> SubmitResult:
         if next_state(self.channel.situation, "program_start") is None:
-            return Rejected("NC START not possible in this state")
+            return refuse("start_not_possible")
         if self.channel.owner == "AUTO":
             overlay = self.channel.overlay
             if overlay is not None and overlay.phase != "ended":
@@ -538,7 +539,7 @@ class Nck:
                 overlay.continue_after_stop()
             else:
                 if not self.channel.mda_text.strip():
-                    return Rejected("MDA buffer is empty")
+                    return refuse("mda_buffer_empty")
                 interp = self._interpreter("MDA")
                 interp.reset()
                 interp.start_text(MDA_NAME, self.channel.mda_text)
@@ -551,7 +552,7 @@ class Nck:
             self.channel.transition("program_start")
             return Accepted()
         if not self.channel.mda_text.strip():
-            return Rejected("MDA buffer is empty")
+            return refuse("mda_buffer_empty")
         interp = self._interpreter("MDA")
         interp.reset()
         interp.start_text(MDA_NAME, self.channel.mda_text)
@@ -599,7 +600,7 @@ class Nck:
 
     def _cycle_stop(self, command: cmd.CycleStop) -> SubmitResult:
         if self.channel.situation.channel != ACTIVE:
-            return Rejected("NC STOP acts only while the channel is active")
+            return refuse("stop_not_active")
         if self.channel.jogging:
             self.manual.stop_jog(keep_rest=True)
             self.channel.transition("nc_stop")
@@ -663,16 +664,16 @@ class Nck:
 
     def _select_program(self, command: cmd.SelectProgram) -> SubmitResult:
         if self.channel.situation.channel != RESET:
-            return Rejected("Program selection is possible only in channel reset")
+            return refuse("select_needs_reset")
         if self.programs.read_program(command.name) is None:
-            return Rejected(f"Program {command.name} not found")
+            return refuse("program_not_found", program=command.name)
         self.channel.selected = command.name
         return Accepted()
 
     def _set_mda(self, command: cmd.SetMdaProgram) -> SubmitResult:
         mda_busy = (self.channel.run is not None and self.channel.run.kind == "MDA") or self.channel.overlay is not None
         if mda_busy and self.channel.situation.channel != RESET:
-            return Rejected("MDA program in progress: RESET first")
+            return refuse("mda_in_progress")
         self.channel.mda_text = command.text
         return Accepted()
 

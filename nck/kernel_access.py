@@ -19,6 +19,7 @@ from nck.access import (ALARM_PASSWORD_REFUSED, LEVEL_FEWEST_RIGHTS, AccessContr
                         AccessLocked, AccessState, Action)
 from nck.alarms import AlarmServer
 from nck.commands import Accepted, Rejected, SubmitResult
+from nck.refusals import refuse
 from nck.status import LogbookEntry
 
 
@@ -78,7 +79,7 @@ class Protection:
     def set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
         """Turn the keyswitch to position 0 … 3 (refused while an exam fixes the level)."""
         if command.position not in (0, 1, 2, 3):
-            return Rejected("keyswitch positions are 0 … 3")
+            return refuse("keyswitch_positions")
         try:
             self.access.set_keyswitch(command.position)
         except AccessLocked as error:

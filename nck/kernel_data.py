@@ -27,6 +27,7 @@ from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_setup import JobSetup
 from nck.machine_data import DataError, MachineDataStore
 from nck.ncdata import NcData
+from nck.refusals import refuse
 from nck.value_text import InvalidValue, number_from_text
 from nck.writes import DataWriter, WriteRefused
 
@@ -82,13 +83,13 @@ class DataWrites:
             return handled
         name = command.name.strip().upper()
         if name not in PART_COUNTER_FIELDS:
-            return Rejected(f"{command.name} cannot be written here")
+            return refuse("not_writable_here", name=command.name)
         try:
             value = int(number_from_text(command.value, name, whole=True))
         except InvalidValue as refusal:
             return Rejected(str(refusal))
         if not 0 <= value <= PART_COUNTER_MAX:
-            return Rejected(f"part counters range over 0 … {PART_COUNTER_MAX}")
+            return refuse("part_counter_range", max=PART_COUNTER_MAX)
         setattr(self.counters, PART_COUNTER_FIELDS[name], value)
         return Accepted()
 
@@ -102,7 +103,7 @@ class DataWrites:
         except AccessError as error:
             return Rejected(str(error))
         except (WriteRefused, DataError) as error:
-            return Rejected(str(error) or f"bad value for {command.name}")
+            return Rejected(str(error)) if str(error) else refuse("bad_value", name=command.name)
         result = written.md
         if result is not None and result.active_now and result.ref.definition.kind == "md" \
                 and result.ref.definition.scope != "display":
@@ -119,9 +120,9 @@ class DataWrites:
         keys = [k for k in tools if k[0] == command.tool and (command.edge is None or k[1] == command.edge)]
         if not keys:
             what = f"T{command.tool}" + (f" D{command.edge}" if command.edge is not None else "")
-            return Rejected(f"{what} does not exist")
+            return refuse("tool_missing", tool=what)
         if command.tool == self.outputs.tool and self.channel.situation.channel != RESET:
-            return Rejected(f"T{command.tool} is the active tool of a running program")
+            return refuse("tool_in_use", tool=f"T{command.tool}")
         for key in keys:
             del tools[key]
         return Accepted()
@@ -139,7 +140,7 @@ class DataWrites:
     def activate_machine_data(self, command: cmd.ActivateMachineData) -> SubmitResult:
         """NEW CONFIG: stored machine data of activation ``cf`` take effect (channel reset only)."""
         if self.channel.situation.channel != RESET:
-            return Rejected("Set MD active is possible only in channel reset")
+            return refuse("md_active_needs_reset")
         self.activate_data("new_config")
         return Accepted()
 

@@ -17,6 +17,7 @@ from nck.channel import ABORTED, ACTIVE, INTERRUPTED, MACHINE_FUNCTIONS
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.kernel_contact import ContactState
 from nck.ncdata import NcData
+from nck.refusals import refuse
 
 DEFAULT_JOG_MM_MIN = 2000.0  # MD32020 JOG_VELO
 DEFAULT_JOG_RAPID_MM_MIN = 10000.0  # MD32010 JOG_VELO_RAPID
@@ -37,13 +38,13 @@ class ManualControl:
         """REF, REPOS, INC or none (JOG continuous), in JOG and MDA while the channel is not active."""
         function = command.function.upper() if command.function else None
         if function is not None and function not in MACHINE_FUNCTIONS:
-            return Rejected(f"unknown machine function {command.function!r}")
+            return refuse("unknown_machine_function", function=repr(command.function))
         if self.channel.situation.mode == "AUTO" and function is not None:
-            return Rejected("Machine functions are available in JOG and MDA only")
+            return refuse("machine_function_mode")
         if function == "INC" and self.channel.situation.mode != "JOG":
-            return Rejected("INC is available in JOG only")
+            return refuse("inc_jog_only")
         if self.channel.situation.channel == ACTIVE:
-            return Rejected("Channel active: stop the motion first")
+            return refuse("channel_active_stop_first")
         self.channel.machine_function = function
         return Accepted()
 
@@ -51,9 +52,9 @@ class ManualControl:
         """INC 1 … 10000 (0.001 mm) or VAR (None), in JOG only."""
         value = command.increment
         if value is not None and value not in (1, 10, 100, 1000, 10000):
-            return Rejected("Increment must be 1, 10, 100, 1000, 10000 or VAR")
+            return refuse("increment_values")
         if self.channel.situation.mode != "JOG":
-            return Rejected("INC is available in JOG only")
+            return refuse("inc_jog_only")
         self.channel.increment = value
         if self.channel.machine_function not in ("REF", "REPOS"):
             self.channel.machine_function = "INC"
@@ -65,18 +66,18 @@ class ManualControl:
         if axis in self.plant.machine.spindles:
             return self._jog_spindle(axis, command.direction)
         if axis not in self.plant.machine.path_axes:
-            return Rejected(f"no axis {command.axis}")
+            return refuse("no_axis", axis=command.axis)
         function = self.channel.machine_function
         if command.direction == 0:
             if self.channel.jogging and function is None:
                 self.plant.motion.jog_continuous(axis, 0, 0.0)
             return Accepted()
         if self.channel.estop_active:
-            return Rejected("Emergency stop active")
+            return refuse("emergency_stop_active")
         if self.channel.situation.mode == "AUTO" or (self.channel.situation.mode == "MDA" and function not in ("REF", "REPOS")):
-            return Rejected("Axes can be traversed by hand only in JOG")
+            return refuse("traverse_jog_only")
         if self.channel.situation.channel == ACTIVE and not self.channel.jogging:
-            return Rejected("Channel active")
+            return refuse("channel_active")
         direction = 1 if command.direction > 0 else -1
         self.park()
         position = self.plant.motion.positions_mcs()[axis]
@@ -87,7 +88,7 @@ class ManualControl:
             self.plant.motion.start_reference(axis)
         elif function == "REPOS":
             if self.channel.repos_point is None or axis not in self.channel.repos_point:
-                return Rejected("No REPOS point")
+                return refuse("no_repos_point")
             distance = self.channel.repos_point[axis] - position
             if abs(distance) < 1e-9 or (distance > 0) != (direction > 0):
                 return Accepted()
@@ -111,9 +112,9 @@ class ManualControl:
         """Spindle JOG: turns at its JOG speed while the key is held (JOG mode only)."""
         if direction != 0:
             if self.channel.estop_active:
-                return Rejected("Emergency stop active")
+                return refuse("emergency_stop_active")
             if self.channel.situation.mode != "JOG" or self.channel.situation.channel == ACTIVE:
-                return Rejected("The spindle can be jogged only in JOG")
+                return refuse("spindle_jog_only")
         self.plant.motion.jog_continuous(spindle, 0 if direction == 0 else (1 if direction > 0 else -1),
                                    self.jog_velocity(spindle, False))
         return Accepted()
@@ -131,7 +132,7 @@ class ManualControl:
     def continue_jog(self) -> SubmitResult:
         """NC START in JOG: continue the increments NC STOP interrupted."""
         if self.channel.situation.channel != INTERRUPTED or self.channel.situation.program != ABORTED or not self.channel.jog_rest:
-            return Rejected("NC START in JOG only continues a stopped increment")
+            return refuse("jog_start_continues_increment")
         positions = self.plant.motion.positions_mcs()
         for axis, distance in self.channel.jog_rest.items():
             self.plant.motion.jog_increment(axis, distance, self.jog_velocity(axis, False))

@@ -27,6 +27,7 @@ from nck.interp.api import Interpreter
 from nck.kernel_interpreters import ChannelInterpreters
 from nck.errors import NcAlarmError
 from nck.program_control import SEARCH_ACTIONS_DONE, SEARCH_FOUND, SEARCH_TARGET_FOUND, ProgramRun
+from nck.refusals import refuse
 
 ALARM_SELECTION_IN_SERUPRO = 16935  # program test or dry run selected during SERUPRO
 
@@ -56,16 +57,16 @@ class BlockSearchControl:
     def start_block_search(self, command: cmd.StartBlockSearch) -> SubmitResult:
         """Search the target in the selected program (AUTOMATIC, channel reset or cascaded)."""
         if self.channel.situation.mode != "AUTO":
-            return Rejected("Block search is possible in AUTOMATIC only")
+            return refuse("search_auto_only")
         if self.channel.selected is None:
-            return Rejected("No program selected")
+            return refuse("no_program_selected")
         if command.search_type not in SEARCH_TYPES:
-            return Rejected(f"Unknown block search type {command.search_type}")
+            return refuse("unknown_search_type", search_type=command.search_type)
         if command.search_type == SERUPRO:
             return self._start_serupro(command.target)
         cascaded = self.channel.run is not None and self.channel.run.phase in (SEARCH_FOUND, SEARCH_ACTIONS_DONE)
         if self.channel.situation.channel != RESET and not cascaded:
-            return Rejected("Block search is possible only in channel reset")
+            return refuse("search_needs_reset")
         interp = self.interpreters.get("AUTO")
         interp.reset()
         interp.start(self.channel.selected)
@@ -78,7 +79,7 @@ class BlockSearchControl:
             raise
         if not result.found:
             interp.reset()
-            return Rejected(f"Search target {command.target} not found")
+            return refuse("search_target_not_found", target=command.target)
         self.channel.adopt_searched_run(run)
         self.runtime.start_from_reset()
         self.channel.transition("search_found")
@@ -89,7 +90,7 @@ class BlockSearchControl:
         """Run the selected program in program test up to ``target`` (only from RESET: it
         cannot follow another search, 002 L19035-19037)."""
         if self.channel.situation.channel != RESET:
-            return Rejected("SERUPRO starts only in channel reset")
+            return refuse("serupro_needs_reset")
         assert self.channel.selected is not None
         self.switches.program_control["program_test"] = True
         self.channel.serupro = True
@@ -137,6 +138,5 @@ class BlockSearchControl:
         """Program test and dry run cannot be selected while SERUPRO runs (16935)."""
         if self.channel.serupro and name in ("program_test", "dry_run"):
             self.raise_number(ALARM_SELECTION_IN_SERUPRO)
-            return Rejected("Program test and dry run cannot be selected during SERUPRO",
-                            alarm=ALARM_SELECTION_IN_SERUPRO)
+            return refuse("selection_in_serupro", alarm=ALARM_SELECTION_IN_SERUPRO)
         return None

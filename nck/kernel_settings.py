@@ -22,6 +22,7 @@ from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_search import BlockSearchControl
 from nck.motion.instant import InstantMotion
 from nck.ncdata import NcData
+from nck.refusals import refuse
 
 DEFAULT_DRY_RUN_MM_MIN = 5000.0  # SD42100 DRY_RUN_FEED
 # 002 L56312-56319: path feed and spindle 0 … 200 %, rapid traverse 0 … 100 %
@@ -53,7 +54,7 @@ class ControlSettings:
             if text == "SBL3":
                 text = "SBL2"
             if text not in (None, "SBL1", "SBL2"):
-                return Rejected("single block is None, SBL1 or SBL2")
+                return refuse("single_block_values")
             self.switches.program_control[name] = text
         elif name in ("dry_run", "m01", "rapid_override"):
             self.switches.program_control[name] = bool(value)
@@ -61,7 +62,7 @@ class ControlSettings:
             self.apply_dry_run()
         elif name == "program_test":
             if self.channel.situation.channel != RESET:
-                return Rejected("Program test can be switched only in channel reset")
+                return refuse("program_test_needs_reset")
             self.switches.program_control[name] = bool(value)
             self.plant.test_motion = (
                 InstantMotion(self.plant.machine, self.plant.motion.positions_mcs()) if value else None
@@ -72,26 +73,26 @@ class ControlSettings:
             try:
                 levels = frozenset(int(v) for v in cast(Any, value or ()))
             except (TypeError, ValueError):
-                return Rejected("skip levels are numbers 0 … 9")
+                return refuse("skip_level_values")
             if any(level < 0 or level > 9 for level in levels):
-                return Rejected("skip levels are numbers 0 … 9")
+                return refuse("skip_level_values")
             if self.channel.situation.channel == ACTIVE:
-                return Rejected("Skip levels can be changed only in STOP or RESET")
+                return refuse("skip_levels_need_stop")
             self.switches.program_control[name] = levels
             for interp in self.interpreters.all():
                 self.apply_skip_levels(interp)
         else:
-            return Rejected(f"unknown program control {name!r}")
+            return refuse("unknown_program_control", name=repr(name))
         return Accepted()
 
     def set_override(self, command: cmd.SetOverride) -> SubmitResult:
         """Turn the feed, rapid or spindle override switch (percent)."""
         if command.which not in OVERRIDE_LIMITS_PERCENT:
-            return Rejected(f"unknown override {command.which!r}")
+            return refuse("unknown_override", which=repr(command.which))
         low, high = OVERRIDE_LIMITS_PERCENT[command.which]
         percent = float(command.percent)
         if not low <= percent <= high:
-            return Rejected(f"{command.which} override must be {low:g} … {high:g} %")
+            return refuse("override_range", which=command.which, low=f"{low:g}", high=f"{high:g}")
         self.switches.overrides[command.which] = percent
         self.apply_overrides()
         return Accepted()
@@ -100,7 +101,7 @@ class ControlSettings:
         """Switch the controller enable of a machine axis."""
         set_enable = getattr(self.plant.motion, "set_controller_enable", None)
         if set_enable is None or command.axis not in self.plant.machine.path_axes:
-            return Rejected(f"no machine axis {command.axis}")
+            return refuse("no_machine_axis", axis=command.axis)
         set_enable(command.axis, command.enabled)
         return Accepted()
 

@@ -28,6 +28,7 @@ from nck.geometry.preset import TARGET_SETFRAME, TARGET_SETTABLE, translation_ch
 from nck.kernel_interpreters import ChannelInterpreters
 from nck.ncdata import SETTABLE_FRAME_NAMES, NcData, WorkOffset
 from nck.manual_settings import ManualSettings, settings_from_plain, settings_to_plain
+from nck.refusals import refuse
 from nck.workpiece import MachineSetup
 
 SETFR = "SETFR"
@@ -53,16 +54,16 @@ class JobSetup:
         except AccessError as error:
             return Rejected(str(error))
         if not isinstance(command.setup, MachineSetup):
-            return Rejected("not a machine set-up")
+            return refuse("not_a_machine_setup")
         if self.channel.situation.channel == "active":
-            return Rejected("The machine set-up can be changed only while the channel is not active")
+            return refuse("setup_needs_inactive")
         self.data.machine_setup = command.setup
         return Accepted()
 
     def write_manual_settings(self, command: cmd.WriteManualSettings) -> SubmitResult:
         """Retraction plane, safety distance and measuring feed, checked as the retained file's."""
         if not isinstance(command.settings, ManualSettings):
-            return Rejected("not settings for manual mode")
+            return refuse("not_manual_settings")
         try:  # the same checks as the retained file's
             settings = settings_from_plain(settings_to_plain(command.settings))
         except ValueError as error:
@@ -77,7 +78,7 @@ class JobSetup:
         path, modal = interp.builder.path, interp.modal
         axis = command.axis.strip().upper()
         if axis not in self.plant.machine.path_axes:
-            return Rejected(f"no axis {command.axis}")
+            return refuse("no_axis", axis=command.axis)
         target = self._preset_target(command.target, modal)
         if isinstance(target, Rejected):
             return target
@@ -102,7 +103,7 @@ class JobSetup:
         if isinstance(target, Rejected):
             return target
         if target == SETFR:
-            return Rejected("The PRESET frame holds no rotation: select a work offset (G54 …)")
+            return refuse("preset_no_rotation")
         self._target_offset(target).rot[command.axis.strip().upper()] = float(command.angle_deg)
         self.activate_stored_frames()
         return Accepted()
@@ -120,18 +121,18 @@ class JobSetup:
     def _preset_target(self, wanted: str | None, modal: Any) -> str | Rejected:
         """The frame a Set WO writes (``"G54"`` …, or :data:`SETFR`), checked; else the refusal."""
         if self.channel.situation.channel == "active":
-            return Rejected("Set WO is possible only while the channel is not active")
+            return refuse("set_wo_needs_inactive")
         target = (wanted or modal.gcodes.get(8, "G500")).strip().upper()
         if target in ("G500", "$P_SETFR"):
             target = SETFR
         if target == SETFR:
             if not int(self.plant.machine.md_value("MD28082", None, 33) or 0) & SETFR_MASK_BIT:
-                return Rejected("No system frame for PRESET and scratching (MD28082 bit 0)")
+                return refuse("no_preset_frame")
             action = Action.PRESET
         elif target in SETTABLE_FRAME_NAMES:
             action = Action.WRITE_WORK_OFFSET
         else:
-            return Rejected(f"{wanted} is not a work offset")
+            return refuse("not_a_work_offset", name=wanted)
         try:
             self.require(action)
         except AccessError as error:

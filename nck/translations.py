@@ -18,7 +18,8 @@ folder ``data/lang/<code>/``:
   ``[cycle_menu_key."drilling.0"] label = "…"`` (the editor's
   cycle forms) in ``cycles.toml``,
   ``[exercise.<id>] title = "…"`` (also ``level``, ``summary``) and ``[exercise_step."<id>.<step number>"]
-  text = "…"`` (also ``hint``) in ``exercises.toml``.
+  text = "…"`` (also ``hint``) in ``exercises.toml``, ``[refusal.<key>] text = "…"`` (the kernel's
+  refusals of operator commands, ``data/refusals.toml``) in ``refusals.toml``.
 
 Pure: reads files below ``data/`` only, keeps no state but caches of those files.
 """
@@ -46,7 +47,8 @@ OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "grou
                                   "cycle_form": "cycles.toml", "cycle_param": "cycles.toml",
                                   "cycle_sketch": "cycles.toml", "cycle_menu": "cycles.toml",
                                   "cycle_menu_key": "cycles.toml",
-                                  "exercise": "exercises.toml", "exercise_step": "exercises.toml"}
+                                  "exercise": "exercises.toml", "exercise_step": "exercises.toml",
+                                  "refusal": "refusals.toml"}
 """Kind of data entry -> the overlay file in ``data/lang/<code>/`` that translates it."""
 
 

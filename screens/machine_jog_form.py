@@ -122,7 +122,7 @@ class JogForm(Vertical):
                     field = FieldInput(spec.initial, id=self.field_id(spec.key))
                     field.cursor_blink = False
                     yield field
-                yield Static(spec.unit, classes="jog-unit", markup=False)
+                yield Static(_(spec.unit), classes="jog-unit", markup=False)
         yield Static("", classes="jog-info", id=f"{self.id}-info", markup=False)
         yield Static(f" {_(self.hint)}", classes="jog-info", markup=False)
 

@@ -36,7 +36,7 @@ from nck import fixed, trimmed
 from nck.queries import ManualSettingsData, ReadData
 from nck.status import NckStatus
 
-from hmi.i18n import N_, _
+from hmi.i18n import N_, _, refusal_text
 from hmi.manual_job import ManualJob
 from hmi.softkeys import Softkey, view_softkey
 from screens.machine_jog_blocks import (
@@ -87,7 +87,7 @@ class JogWindows:
         yield JogForm("T, S, M — tool change, spindle, M function", (
             FieldSpec("tool", "T  tool (number or name)"),
             FieldSpec("edge", "D  cutting edge", initial="1"),
-            FieldSpec("speed", "Spindle S", "rev/min"),
+            FieldSpec("speed", "Spindle S", N_("rev/min")),
             FieldSpec("spindle", "Spindle M function", choices=SPINDLE_FUNCTIONS),
             FieldSpec("m", "Other M function"),
             FieldSpec("work_offset", "Work offset", choices=(UNCHANGED, "G500", *self._work_offsets())),
@@ -233,7 +233,7 @@ class JogWindows:
             return False
         result = self.job.prepare(blocks, status)
         if isinstance(result, cmd.Rejected):
-            self.screen.say(result.reason)
+            self.screen.say(refusal_text(result))
             return False
         self.screen.call_later(self._arm_job)  # the app gives NC START right after this
         return True

@@ -281,6 +281,6 @@ def setting_table(view: DataView, levels: LevelOf) -> DataTable:
             title = data_text("md", definition.number, "title", definition.title)
             hint = f"{definition.identifier}: {title} ({unit or definition.type}{limits})"
             rows.append([Cell(_(group)), Cell(key), Cell(definition.name), Cell(axis or ""),
-                         _datum(name, shown, value, levels, hint), Cell(unit)])
+                         _datum(name, shown, value, levels, hint), Cell(_(unit))])
     return DataTable("Setting data  (take effect at once)", columns, rows,
                      "Enter edit   Work area limits act when their enable is on (G25/G26, WALIMON)")

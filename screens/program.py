@@ -41,7 +41,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
-from hmi.i18n import _
+from hmi.i18n import _, refusal_text
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.program_files import ProgramFiles, decode_program
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -240,7 +240,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             canonical = self.files.canonical(program)
             raw = self.files.fs.read_bytes(canonical) if text is None else text.encode("utf-8")
         except Exception as exc:  # a file problem is a notification, never a traceback
-            self.say(f"{program}: cannot be read ({exc})")
+            self.say(_("{program}: cannot be read ({error})").format(program=program, error=exc))
             return False
         decoded, binary = decode_program(raw)
         self.program = canonical
@@ -258,7 +258,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         editor.set_error_marks([])
         self._update_read_only()
         if binary:
-            self.say(f"{self.program} is not a UTF-8 text file: opened read-only")
+            self.say(_("{program} is not a UTF-8 text file: opened read-only").format(program=self.program))
         self._update_title()
         self.refresh_softkeys()
         focus_now(editor)
@@ -364,7 +364,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         try:
             self.write_journal()
         except OSError as exc:
-            self.say(f"Journal could not be written: {exc}")
+            self.say(_("Journal could not be written: {error}").format(error=exc))
 
     def write_journal(self) -> None:
         """Write unsaved text into the journal if it changed since the last write (``OSError`` if it cannot)."""
@@ -403,7 +403,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             entries = []
         if not entries:
             if self.program is not None:
-                self.say("No unsaved programs in the journal")
+                self.say(_("No unsaved programs in the journal"))
             return
         by_label = {f"Restore {e.program}": e for e in entries}
 
@@ -414,7 +414,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             elif choice == "Discard all unsaved texts":
                 for entry in entries:
                     self.journal.discard(entry.program)
-                self.say("Unsaved texts discarded")
+                self.say(_("Unsaved texts discarded"))
 
         self.app.push_screen(
             ChoiceDialog(
@@ -450,28 +450,35 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         editor.replace(entry.text, (0, 0), editor.document.end)
         self._dirty = True
         self._update_title()
-        self.say(f"{entry.program}: unsaved text restored (not saved yet)")
+        self.say(_("{program}: unsaved text restored (not saved yet)").format(program=entry.program))
         self.schedule_check()
 
     # -- read-only rules -----------------------------------------------------------------------
+    def refusal_of(self, label: str) -> str:
+        """A greyed softkey of the editor: the reason the text is read-only, when it is."""
+        if self.read_only_reason:
+            return _("{softkey}: {reason}").format(softkey=label, reason=self.read_only_reason)
+        return super().refusal_of(label)
+
     def _update_read_only(self) -> None:
         reason = ""
+        executing = False
         if self.program is None:
-            reason = "no program"
+            reason = _("no program")
         elif self.binary:
-            reason = "not a text file"
+            reason = _("not a text file")
         elif _is_executing(self.status, self.program):
-            reason = "program is being executed"
+            reason, executing = _("program is being executed"), True
         elif self.files.is_in_use(self.program):
-            reason = "program is in use (selected)"
+            reason = _("program is in use (selected)")
         elif self.access_level > edit_level():
-            reason = f"editing needs access level {edit_level()}"
+            reason = _("editing needs access level {level}").format(level=edit_level())
         changed = reason != self.read_only_reason
         self.read_only_reason = reason
         if self._ready:
             self.editor.read_only = bool(reason)
-            if changed and reason == "program is being executed":
-                self.say(f"{self.program} is being executed: editing is not possible")
+            if changed and executing:
+                self.say(_("{program} is being executed: editing is not possible").format(program=self.program))
         if changed:
             self._update_title()
             self.refresh_softkeys()
@@ -524,8 +531,9 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             message.update(f"⚠ {mark.label}")
             message.set_class(True, "-error")
         else:
-            state = "checking …" if self._check_running else (
-                f"{count} faulty line(s) — Shift+F1: next error" if count else "no errors found")
+            state = _("checking …") if self._check_running else (
+                _("{count} faulty line(s) — Shift+F1: next error").format(count=count) if count
+                else _("no errors found"))
             meaning = self._word_meaning()
             message.update((f"{state}   │ {meaning}" if meaning else state) if self.program else "")
             message.set_class(False, "-error")
@@ -544,33 +552,34 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             return
         flags = []
         if self._dirty:  # cheap on every cursor move; is_modified() compares the text
-            flags.append("modified")
+            flags.append(_("modified"))
         if self.read_only_reason:
-            flags.append(f"read-only: {self.read_only_reason}")
+            flags.append(_("read-only: {reason}").format(reason=self.read_only_reason))
         lines = self.editor.document.line_count
         row, column = self.editor.cursor_location
         suffix = f"  [{', '.join(flags)}]" if flags else ""
-        title.update(f" {self.program}{suffix}   line {row + 1}/{lines}  col {column + 1}")
+        place = _("line {line}/{lines}  col {column}").format(line=row + 1, lines=lines, column=column + 1)
+        title.update(f" {self.program}{suffix}   {place}")
 
     # -- save, execute -------------------------------------------------------------------------
     def action_save(self) -> bool:
         """Save softkey: write the text atomically through the NC file system."""
         if self.program is None or self.editor.read_only:
             if self.read_only_reason:
-                self.say(f"Not saved: {self.read_only_reason}")
+                self.say(_("Not saved: {reason}").format(reason=self.read_only_reason))
             return False
         text = self.editor.text
         try:
             self.files.fs.save(self.program, text)
         except Exception as exc:  # storage refusals are notifications
-            self.say(f"{self.program} not saved: {exc}")
+            self.say(_("{program} not saved: {error}").format(program=self.program, error=exc))
             return False
         self.saved_text = text
         self._dirty = False
         self.journal.discard(self.program)
         self._journaled_hash = ""
         self._update_title()
-        self.say(f"{self.program} saved")
+        self.say(_("{program} saved").format(program=self.program))
         return True
 
     def action_execute(self) -> None:
@@ -582,11 +591,11 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         if self.status is not None and self.status.channel.mode != "AUTO":
             result = self.submit(cmd.SelectMode("AUTO"))
             if isinstance(result, Rejected):
-                self.say(f"Execute: {result.reason}")
+                self.say(_("Execute: {reason}").format(reason=refusal_text(result)))
                 return
         result = self.submit(cmd.SelectProgram(self.program))
         if isinstance(result, Rejected):
-            self.say(f"Execute: {result.reason}")
+            self.say(_("Execute: {reason}").format(reason=refusal_text(result)))
             return
         self.perform("app.switch_area('machine')")
 

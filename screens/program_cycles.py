@@ -20,7 +20,7 @@ from typing import Any
 from hmi.cycle_form_dialog import CycleFormDialog
 from hmi.cycle_forms import (CallLine, CycleForm, CycleMenu, called_cycle, cycle_forms, cycle_menus,
                              is_modal_call_off, modal_call_toggled, read_call)
-from hmi.i18n import data_text
+from hmi.i18n import _, data_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 
 BACK_ID = "cycles.back"
@@ -103,13 +103,13 @@ class CycleActions:
         toggled = modal_call_toggled(line)
         if toggled is not None:
             self.editor.replace(toggled, (row, 0), (row, len(line)))
-            self.say("Modal call on" if len(toggled) > len(line) else "Modal call off")
+            self.say(_("Modal call on") if len(toggled) > len(line) else _("Modal call off"))
         elif is_modal_call_off(line):
-            self.say("MCALL: the modal call is switched off on this line already")
+            self.say(_("MCALL: the modal call is switched off on this line already"))
             return
         else:
             self._put_line("MCALL", row)
-            self.say("MCALL inserted: the modal call is off from here")
+            self.say(_("MCALL inserted: the modal call is off from here"))
         self.editor.move_cursor((row, 0))
 
     def _cycle_bar(self) -> list[Softkey | None]:
@@ -155,6 +155,6 @@ class CycleActions:
             else:
                 self._put_line(call, row)
             self.editor.move_cursor((row, 0))
-            self.say(f"{form.cycle} {'recompiled' if old else 'inserted'}")
+            self.say((_("{cycle} recompiled") if old else _("{cycle} inserted")).format(cycle=form.cycle))
 
         self.app.push_screen(CycleFormDialog(form, texts, recompile=old is not None), confirmed)

@@ -15,6 +15,7 @@ from textual.widgets import Input
 from textual.widgets.text_area import Selection
 
 from hmi.focus import focus_now
+from hmi.i18n import _
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import find_text, renumber_blocks
 
@@ -68,7 +69,7 @@ class EditActions:
         """Mark: start (or end) marking a block from the cursor."""
         if self._mark_anchor is None:
             self._mark_anchor = self.editor.cursor_location
-            self.say("Marking: move the cursor, then Copy / Cut / Delete")
+            self.say(_("Marking: move the cursor, then Copy / Cut / Delete"))
         else:
             self._mark_anchor = None
             self.editor.selection = Selection.cursor(self.editor.cursor_location)
@@ -83,7 +84,7 @@ class EditActions:
         text = self._selected_text()
         if text:
             self.app.copy_to_clipboard(text)
-            self.say(f"{len(text.splitlines()) or 1} line(s) copied")
+            self.say(_("{count} line(s) copied").format(count=len(text.splitlines()) or 1))
         self._end_mark()
 
     def action_cut(self) -> None:
@@ -134,7 +135,7 @@ class EditActions:
             self.editor.replace(new, (0, 0), self.editor.document.end)
             row = min(cursor[0], self.editor.document.line_count - 1)
             self.editor.move_cursor((row, 0))
-            self.say("Blocks renumbered (step 10)")
+            self.say(_("Blocks renumbered (step 10)"))
 
     # -- search --------------------------------------------------------------------------------
     def action_search(self) -> None:
@@ -169,7 +170,7 @@ class EditActions:
         after = (start[0], start[1] - 1) if start else (row, column - 1)
         found = find_text(lines, query, after)
         if found is None:
-            self.say(f"'{query}' not found")
+            self.say(_("'{text}' not found").format(text=query))
             return False
         row, column = found
         self.editor.selection = Selection((row, column), (row, column + len(query)))
@@ -202,4 +203,4 @@ class EditActions:
         new, count = re.subn(re.escape(query), lambda _m: replacement, text, flags=re.IGNORECASE)
         if count:
             self.editor.replace(new, (0, 0), self.editor.document.end)
-        self.say(f"{count} replaced")
+        self.say(_("{count} replaced").format(count=count))

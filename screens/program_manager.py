@@ -34,7 +34,7 @@ from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _
+from hmi.i18n import N_, _, refusal_text
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
 
@@ -377,11 +377,11 @@ class ProgramManagerScreen(AreaBase):
         if self.status is not None and self.status.channel.mode != "AUTO":
             result = self.submit(cmd.SelectMode("AUTO"))
             if isinstance(result, Rejected):
-                self.say(f"Execute: {result.reason}")
+                self.say(_("Execute: {reason}").format(reason=refusal_text(result)))
                 return
         result = self.submit(cmd.SelectProgram(entry.path))
         if isinstance(result, Rejected):
-            self.say(f"Execute: {result.reason}")
+            self.say(_("Execute: {reason}").format(reason=refusal_text(result)))
             return
         self.refresh_listing()
         self.perform("app.switch_area('machine')")

@@ -26,9 +26,11 @@ from textual import work
 from textual.timer import Timer
 from textual.worker import Worker, WorkerState, get_current_worker
 
+from nck import alarm_text_in
 from nck.queries import CheckSetting, Scrubber
 
 from hmi.focus import focus_now
+from hmi.i18n import _, language
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.simulation_softkeys import overlay_key, view_keys
 from hmi.widgets.nc_editor import ErrorMark
@@ -50,7 +52,7 @@ PLAY_TICK_S = 0.1
 
 def speed_text(blocks_s: float) -> str:
     """A playing speed in the panel's words."""
-    return "at once" if blocks_s == math.inf else f"{blocks_s:g} blocks/s"
+    return _("at once") if blocks_s == math.inf else _("{rate} blocks/s").format(rate=f"{blocks_s:g}")
 
 
 class _Breather:
@@ -82,26 +84,34 @@ def pieces_of(simulation: Any) -> list[PathPiece]:
                                                path.rapid.tolist(), path.lines.tolist())]
 
 
+def _first_alarm(simulation: Any) -> str:
+    """The run's first alarm, number and text, in the panel's language."""
+    alarm = simulation.alarms[0]
+    english = simulation.alarm_text().partition(" ")[2]
+    return f"{alarm.number} {alarm_text_in(language(), alarm.number, alarm.params, english)}"
+
+
 def path_note(simulation: Any) -> str:
     """The toolpath view's note: where the run stopped, else its blocks and pieces."""
     if simulation.alarms:
-        return f"stopped at line {simulation.alarms[0].line}: {simulation.alarm_text()}"
+        return _("stopped at line {line}: {alarm}").format(line=simulation.alarms[0].line,
+                                                           alarm=_first_alarm(simulation))
     if simulation.status == "timeout":
-        return f"stopped after {simulation.blocks} blocks"
-    return f"{simulation.blocks} blocks, {len(simulation.path.starts)} moves"
+        return _("stopped after {blocks} blocks").format(blocks=simulation.blocks)
+    return _("{blocks} blocks, {moves} moves").format(blocks=simulation.blocks, moves=len(simulation.path.starts))
 
 
 def material_note(simulation: Any) -> str:
     """One line: how the run ended (its alarm), the events, the machining time."""
     minutes, seconds = divmod(simulation.machine_time_s, 60.0)
-    parts = [f"time {int(minutes)}:{seconds:04.1f}"]
+    parts = [_("time {time}").format(time=f"{int(minutes)}:{seconds:04.1f}")]
     if simulation.alarms:
         alarm = simulation.alarms[0]
-        parts.append(f"alarm {alarm.number} at line {alarm.line}")
+        parts.append(_("alarm {number} at line {line}").format(number=alarm.number, line=alarm.line))
     if simulation.events:
         parts.append(material_events(simulation))
     if not simulation.alarms and not simulation.events:
-        parts.append("no alarms")
+        parts.append(_("no alarms"))
     return ", ".join(parts)
 
 
@@ -201,7 +211,7 @@ class CheckAndSimulation:
             if stale():
                 return
             line = (alarm.line or 1) - 1
-            batch.append(ErrorMark(line, alarm.number, alarm.text))
+            batch.append(ErrorMark(line, alarm.number, alarm_text_in(language(), alarm.number, alarm.text_params, alarm.text)))
             if len(batch) >= STREAM_BATCH:
                 self.app.call_from_thread(self._apply_marks, generation, batch, False)
                 batch = []
@@ -219,8 +229,8 @@ class CheckAndSimulation:
             self._check_running = False
             self._show_cursor_message()
         else:
-            self.stock.set_picture(StockPicture(), "simulation not possible")
-            self.toolpath.set_pieces([], "simulation not possible")
+            self.stock.set_picture(StockPicture(), _("simulation not possible"))
+            self.toolpath.set_pieces([], _("simulation not possible"))
         error = event.worker.error
         report = getattr(self.app, "report_internal_error", None)
         if report is None or not isinstance(error, Exception):
@@ -241,7 +251,7 @@ class CheckAndSimulation:
         """Next error softkey: put the cursor on the next faulty line."""
         line = self.editor.next_error_line()
         if line is None:
-            self.say("No errors found")
+            self.say(_("No errors found"))
             return
         self.editor.move_cursor((line, 0), center=True)
         focus_now(self.editor)
@@ -267,8 +277,8 @@ class CheckAndSimulation:
         if self.program is None:
             return
         self._stop_playing()
-        self.toolpath.set_pieces([], "calculating …")
-        self.stock.set_picture(StockPicture(), "calculating …")
+        self.toolpath.set_pieces([], _("calculating …"))
+        self.stock.set_picture(StockPicture(), _("calculating …"))
         self._material = None
         self._scrubber = None
         self.stock.highlight_line = self.editor.cursor_location[0] + 1
@@ -366,7 +376,7 @@ class CheckAndSimulation:
         """The note under the picture, with the playing speed while playing."""
         if self._play_timer is None:
             return self._shown_note
-        return f"▶ {SPEEDS_BLOCKS_S[self._speed]:g} blocks/s  {self._shown_note}"
+        return f"▶ {speed_text(SPEEDS_BLOCKS_S[self._speed])}  {self._shown_note}"
 
     @property
     def sim_playing(self) -> bool:
@@ -392,7 +402,7 @@ class CheckAndSimulation:
         line = self.editor.cursor_location[0] + 1
         steps = [i for i, (block_line, _chords) in enumerate(self._material_blocks) if block_line == line]
         if not steps:
-            self.say(f"Line {line} was not executed")
+            self.say(_("Line {line} was not executed").format(line=line))
             return
         later = [i for i in steps if i > self._material_step]
         target = later[0] if later else steps[0]
@@ -406,7 +416,7 @@ class CheckAndSimulation:
     def action_sim_speed(self, direction: int) -> None:
         """Speed - / Speed +: blocks per second while playing."""
         self._speed = min(max(self._speed + direction, 0), len(SPEEDS_BLOCKS_S) - 1)
-        self.say(f"Simulation speed: {speed_text(SPEEDS_BLOCKS_S[self._speed])}")
+        self.say(_("Simulation speed: {speed}").format(speed=speed_text(SPEEDS_BLOCKS_S[self._speed])))
         if self._play_timer is not None:
             self.stock.status_text = self._play_note()
 

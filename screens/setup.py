@@ -103,7 +103,7 @@ def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) 
                     f"{ACTIVATION_TEXT[d.activation]}")
         rows.append([Cell(str(d.number)), Cell(d.name),
                      Cell(row.value_text, row.ref.text, edit, row.write_level, hint),
-                     Cell(row.unit), Cell(row.activation), Cell(str(row.write_level)),
+                     Cell(_(row.unit)), Cell(row.activation), Cell(str(row.write_level)),
                      Cell("*" if row.pending else "")])
     title = _(MD_VIEWS[scope]) + (" — " + _("axis {axis}").format(axis=axis) if axis else "")
     if search:

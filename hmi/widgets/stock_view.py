@@ -27,6 +27,7 @@ from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
 
+from hmi.i18n import N_, _
 from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
 
 BACKGROUND = np.array([16, 20, 28], dtype=np.uint8)
@@ -45,8 +46,8 @@ BLOCK_CUT_TINT = 0.6
 TOOL_HEIGHT_MM = 30.0
 """How much of the tool the sections draw above its tip."""
 
-VIEW_TITLES = {"XY": "Top view XY", "XZ": "Front section XZ", "YZ": "Side section YZ"}
-TURNING_TITLE = "Half section Z-X"
+VIEW_TITLES = {"XY": N_("Top view XY"), "XZ": N_("Front section XZ"), "YZ": N_("Side section YZ")}
+TURNING_TITLE = N_("Half section Z-X")
 TURNING_VIEW = "XZ"
 """A lathe's picture is always drawn as this section (its "X" is Z, its "Z" the radius)."""
 VIEW_AXES = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
@@ -115,8 +116,8 @@ def material_events(simulation: Any) -> str:
     """The sweep's events in one phrase: the first one (and how many more), else none."""
     events = simulation.events
     if not events:
-        return "no collisions"
-    more = f" (+{len(events) - 1} more)" if len(events) > 1 else ""
+        return _("no collisions")
+    more = _(" (+{count} more)").format(count=len(events) - 1) if len(events) > 1 else ""
     return events[0].text + more
 
 
@@ -362,8 +363,8 @@ class StockView(Widget, can_focus=True):
         width = max(self.size.width, 1)
         rows = max(self.size.height - 1, 1)
         title = TURNING_TITLE if self.picture.turning else VIEW_TITLES[self.view]
-        caption = Text(f"{title}  zoom {self.zoom:.2f}  path {'on' if self.overlay else 'off'}"
-                       f"  {self.status_text}"[:width], style="bold")
+        path = _("path on") if self.overlay else _("path off")
+        caption = Text(f"{_(title)}  {_('zoom')} {self.zoom:.2f}  {path}  {self.status_text}"[:width], style="bold")
         if self.picture.empty:
             return caption
         width_px, height_px = width, rows * 2

@@ -34,7 +34,7 @@ def tfs_lines(status: NckStatus) -> Text:
     # programmed: F in its feed type. Per revolution (G95, G96, G97) each value carries its own unit.
     actual = fixed(status.channel.path_feed_mm_min, 3, 10)
     if modal.feed_per_revolution:
-        text.append(f"{actual} mm/min / {fixed(modal.feed, 3, 8)} mm/rev")
+        text.append(f"{actual} mm/min / {fixed(modal.feed, 3, 8)} {_('mm/rev')}")
     else:
         text.append(f"{actual} / {fixed(modal.feed, 3, 10)} mm/min")
     text.append(f"  {format_override(overrides.get('feed', 100)):>3} %\n")

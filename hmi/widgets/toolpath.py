@@ -27,12 +27,14 @@ from textual.widget import Widget
 
 from nck import Motion
 
+from hmi import i18n
+
 Point3 = tuple[float, float, float]
 
 VIEWS: dict[str, tuple[int, int, str]] = {
-    "XY": (0, 1, "Top view XY  (→X ↑Y)"),
-    "XZ": (0, 2, "Side view XZ  (→X ↑Z)"),
-    "YZ": (1, 2, "Side view YZ  (→Y ↑Z)"),
+    "XY": (0, 1, i18n.N_("Top view XY  (→X ↑Y)")),
+    "XZ": (0, 2, i18n.N_("Side view XZ  (→X ↑Z)")),
+    "YZ": (1, 2, i18n.N_("Side view YZ  (→Y ↑Z)")),
 }
 """Projection of each view: index of the horizontal and the vertical coordinate, and its title."""
 
@@ -416,11 +418,12 @@ class ToolpathView(Widget, can_focus=True):
         title = VIEWS[self.view][2]
         scale_mm = viewport.mm_per_dot * 2 * 10  # ten characters
         head = Text(no_wrap=True, end="")
-        head.append(f" {title} ", Style(bold=True, reverse=True))
-        head.append(f"  zoom {self._zoom:g}x   10 chars = {scale_mm:.3f} mm   ")
-        head.append("── feed  ", KIND_STYLES["feed"])
-        head.append("┄┄ rapid  ", KIND_STYLES["rapid"])
-        head.append("── current block  ", KIND_STYLES["current"])
+        head.append(f" {i18n._(title)} ", Style(bold=True, reverse=True))
+        head.append("  " + i18n._("zoom {zoom}x   10 chars = {scale} mm").format(zoom=f"{self._zoom:g}", scale=f"{scale_mm:.3f}")
+                    + "   ")
+        head.append("── " + i18n._("feed") + "  ", KIND_STYLES["feed"])
+        head.append("┄┄ " + i18n._("rapid") + "  ", KIND_STYLES["rapid"])
+        head.append("── " + i18n._("current block") + "  ", KIND_STYLES["current"])
         if self.status_text:
             head.append(self.status_text)
         head.truncate(width)  # one line, whatever the terminal width

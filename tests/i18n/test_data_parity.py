@@ -4,7 +4,8 @@ The English texts are the entries of ``data/alarms`` (text and the help's explan
 remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
 G functions' meanings, and the editor's word help of ``words.toml``), ``data/cycles/cycles.toml``
 (the editor's cycle forms: each form's title, each parameter's help line and each sketch) and the guided exercises
-of ``data/exercises`` (title, level, summary, every step's text and hint); the translations are the
+of ``data/exercises`` (title, level, summary, every step's text and hint) and the kernel's refusals of
+``data/refusals.toml``; the translations are the
 overlays ``data/lang/<code>/*.toml``.
 """
 
@@ -15,6 +16,7 @@ import re
 import pytest
 
 from nck.exercise import load_exercises
+from nck.refusals import refusal_texts
 from nck.resources import alarm_catalog, data_path, read_table
 from nck.translations import LANGUAGES, SOURCE_LANGUAGE, overlay
 
@@ -58,6 +60,7 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
                            for e in exercises}
     entries["exercise_step"] = {f"{e.exercise_id}.{number}": {"text": step.text, **({"hint": step.hint} if step.hint else {})}
                                 for e in exercises for number, step in enumerate(e.steps, 1)}
+    entries["refusal"] = {key: {"text": text} for key, text in refusal_texts().items()}
     return entries
 
 
@@ -80,6 +83,15 @@ def test_alarm_translations_keep_the_parameters(code: str) -> None:
     for number, fields in overlay(code, "alarm").items():
         english = alarm_catalog()[int(number)].text
         assert sorted(ALARM_PARAMETER.findall(fields["text"])) == sorted(ALARM_PARAMETER.findall(english)), number
+
+
+PLACEHOLDER = re.compile(r"\{(\w+)\}")
+
+
+@pytest.mark.parametrize("code", OTHER_LANGUAGES)
+def test_refusal_translations_keep_the_placeholders(code: str) -> None:
+    for key, fields in overlay(code, "refusal").items():
+        assert sorted(PLACEHOLDER.findall(fields["text"])) == sorted(PLACEHOLDER.findall(refusal_texts()[key])), key
 
 
 PARAMETER_NAME = re.compile(r"(?<![A-Za-z0-9_])_?[A-Z][A-Z0-9_]*[0-9A-Z](?![A-Za-z0-9_])")

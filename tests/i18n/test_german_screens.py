@@ -33,7 +33,7 @@ FUNCTION_WORDS = frozenset(
 """English words common in sentences, counted as English even if no catalogue text had them."""
 
 ALLOWED = frozenset({
-    "rev", "min", "rpm", "deg", "inch",  # units as the control writes them (rev/min, deg)
+    "min", "rpm", "deg", "inch",  # units as the control writes them (rev/min, deg)
     "mm", "po", "re", "cf", "so",  # unit; machine-data activation (power on, reset, config, at once)
     "reset",  # the Kanal RESET state and the RESET key, as Operate writes them in German too
     "hidden",  # the instructor's switch by its `nck setup` field name (Setup ▸ Machine set-up)
@@ -91,16 +91,25 @@ def screen_lines(app) -> list[str]:
 
 
 WALKS: dict[str, list[list[str]]] = {
-    "machine_jog": [["alt+m", "alt+j"], *[["alt+m", "alt+j", "f10", f"f{n}"] for n in range(1, 9)]],
+    # NC STOP in channel reset: the kernel's refusal on the message line
+    "machine_jog": [["alt+m", "alt+j"], ["alt+h"], *[["alt+m", "alt+j", "f10", f"f{n}"] for n in range(1, 9)]],
     "machine_jog_windows": [["alt+m", "alt+j", "f10", f"shift+f{n}"] for n in range(1, 7)],
     "machine_mda": [["alt+m", "alt+d"], ["alt+m", "alt+d", "f10", "f4"]],
     "machine_auto": [["alt+m", "alt+u"], ["alt+m", "alt+u", "f10", "f4"]],
     "parameter": [["alt+o"], *[["alt+o", "f10", f"f{n}"] for n in range(1, 8)]],
     "program": [["alt+p"], ["alt+n"]],
+    # the editor on ALARM_DEMO (alarm 10860 in line 5): header, check message, a greyed key at
+    # keyswitch 0 (editing needs level 4), next error; at level 4 the cycle level, MCALL, back
+    "program_editor": [["alt+n", "f3"], ["shift+f7"], ["shift+f1"], ["alt+t", "alt+t", "alt+t"],
+                       ["shift+f7"], ["f1"], ["shift+f7"], ["f8"], ["f5"]],
     "diagnostics": [["alt+a"], *[["alt+a", "f10", f"f{n}"] for n in range(1, 8)]],
     "setup": [["alt+s"], *[["alt+s", "f10", f"f{n}"] for n in range(1, 7)], ["alt+s", "f6", "shift+f5"]],
 }
 """Per area: the key bursts that show each screen checked (area key, then its softkeys)."""
+ENGLISH_UNIT = re.compile(r"\brev/min\b|\bmm/rev\b")
+"""Units written with a slash are names to the word check; these are English (German: U/min, mm/U)."""
+PROGRAM_COMMENT = re.compile(r";[^▕▎│]*")
+"""A comment of the program shown in the editor: the sample programs are commented in English."""
 
 
 @pytest.fixture(scope="module")
@@ -122,8 +131,12 @@ async def test_german_screens_show_no_english(tmp_path: Path, english: frozenset
             for keys in WALKS[area]:
                 await pilot.press(*keys)
                 await pilot.pause()
+                await app.workers.wait_for_complete()  # the editor's check, the simulation
+                await pilot.pause()
                 for line in screen_lines(app):
-                    if _words(line) & english:
+                    if area == "program_editor":
+                        line = PROGRAM_COMMENT.sub("", line)
+                    if _words(line) & english or ENGLISH_UNIT.search(line):
                         found.setdefault(line.strip(), " ".join(keys))
     finally:
         app.nc_session.quit()
