@@ -526,7 +526,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
     def show_alarm_help(self, number: int, text: str = "") -> None:
         """Open the help of alarm ``number`` (``text``: as displayed, with its values); none in an exam."""
         if self.exam_running:
-            self.set_hint(EXAM_HELP_LIMITED)
+            self.set_hint(_(EXAM_HELP_LIMITED))
             return
         if isinstance(self.screen, AlarmHelpScreen):
             return
@@ -610,7 +610,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
     def action_command_palette(self) -> None:
         """Ctrl+P: the command palette (it finds any softkey by name: not in an exam)."""
         if self.exam_running:
-            self.set_hint(EXAM_HELP_LIMITED)
+            self.set_hint(_(EXAM_HELP_LIMITED))
             return
         if any(isinstance(screen, CommandPalette) for screen in self.screen_stack):
             return  # one is open already, perhaps under the key overview (F11) opened over it

@@ -21,7 +21,7 @@ from typing import Any
 from nck import queries
 from nck.status import NckStatus
 
-from hmi.i18n import _, exercise_text, reason_text, step_text
+from hmi.i18n import N_, _, exercise_text, reason_text, step_text
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
@@ -44,7 +44,7 @@ def reports_dir_of(reports_dir: str | None, data_dir: str | None) -> Path:
     return served_dir_of(data_dir) / REPORTS_FOLDER
 
 
-EXAM_HELP_LIMITED = "Exam: help is limited to the key overview (F11)"
+EXAM_HELP_LIMITED = N_("Exam: help is limited to the key overview (F11)")
 """Said instead of opening the command palette or an alarm's help during an exam."""
 
 
@@ -168,17 +168,18 @@ class ClassroomHost:
         aside unchanged (saved first) until :meth:`end_exercise`.
         """
         if self.exercise_run is not None:
-            return f"Exercise '{self.exercise_run.exercise.title}' is still running: end it first"
+            return _("Exercise '{title}' is still running: end it first").format(
+                title=exercise_text(self.exercise_run.exercise, "title"))
         if exercise.waits_for:
-            return f"This exercise waits for {exercise.waits_for}"
+            return _("This exercise waits for {what}").format(what=exercise.waits_for)
         unsaved = self._unsaved_work()
         if unsaved:
-            return f"Not started: {unsaved} (save or close it first)"
+            return _("Not started: {unsaved} (save or close it first)").format(unsaved=unsaved)
         run = ExerciseRun(exercise, self._report_dir())
         try:
             kernel = run.open_session()
         except Exception as exc:  # noqa: BLE001 - a broken exercise file: say so, keep the trainee's panel
-            return f"Exercise could not be started: {exc}"
+            return _("Exercise could not be started: {error}").format(error=exc)
         self.save_nc_data()  # type: ignore[attr-defined]
         run.trainee_session = self.nc_session
         run.trainee_kernel = self.bridge.replace_kernel(kernel)
@@ -197,15 +198,16 @@ class ClassroomHost:
         """Score the exercise, write its report, give the trainee's own panel back."""
         run = self.exercise_run
         if run is None:
-            return "No exercise is running"
+            return _("No exercise is running")
         unsaved = self._unsaved_work()
         if unsaved and not self.ending:  # type: ignore[attr-defined]
-            return f"Not ended: {unsaved} (save or close it first)"
+            return _("Not ended: {unsaved} (save or close it first)").format(unsaved=unsaved)
         try:
             text_path = run.finish()[0]
-            said = f"Exercise ended, score {run.report['score'] if run.report else 0}/100: report in {text_path}"
+            said = _("Exercise ended, score {score}/100: report in {path}").format(
+                score=run.report["score"] if run.report else 0, path=text_path)
         except OSError as exc:
-            said = f"The exercise report could not be written: {exc}"
+            said = _("The exercise report could not be written: {error}").format(error=exc)
         finally:
             self.exercise_run = None
             self.exercise_side = ""
@@ -228,18 +230,21 @@ class ClassroomHost:
         trainee's data directory, or the one served to this browser tab (:mod:`nck.class_pack`,
         file by file atomically); return what to say. The caller checks the protection level."""
         if self.exercise_run is not None:
-            return "Class pack not imported: end the running exercise first"
+            return _("Class pack not imported: end the running exercise first")
         data_dir = self._class_dir()
         if data_dir is None:
-            return "Class pack not imported: the panel runs without a data directory"
+            return _("Class pack not imported: the panel runs without a data directory")
         try:
             pack = queries.read_pack(path)
             written = queries.install_pack(pack, data_dir)
         except queries.PackError as exc:
-            return f"Class pack not imported: {exc}"
+            return _("Class pack not imported: {error}").format(error=exc)
         except OSError as exc:
-            return f"Class pack not imported: {exc.filename}: {exc.strerror or exc}"
-        return f"Class pack imported: {pack.summary()} ({len(written)} files new or changed)"
+            return _("Class pack not imported: {error}").format(error=f"{exc.filename}: {exc.strerror or exc}")
+        exercises, programs = len(pack.exercises), len(pack.programs)
+        summary = ", ".join(((_("{count} exercise") if exercises == 1 else _("{count} exercises")).format(count=exercises),
+                             (_("{count} program") if programs == 1 else _("{count} programs")).format(count=programs)))
+        return _("Class pack imported: {summary} ({files} files new or changed)").format(summary=summary, files=len(written))
 
     def _class_dir(self) -> Path | None:
         """Where class packs are listed from and imported into (see :attr:`class_pack_dir`)."""

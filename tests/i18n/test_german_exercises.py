@@ -35,3 +35,4 @@ async def test_exercise_list_and_side_window_in_german(tmp_path: Path) -> None:
         assert "Step" not in side and "Hint" not in side and "Reference every axis" not in side
         await burst(pilot, END)
         assert app.exercise_run is None
+        assert app.hint.startswith("Übung beendet, Bewertung ")
