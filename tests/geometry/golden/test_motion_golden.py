@@ -195,7 +195,9 @@ def test_thread_dwell_and_spindle() -> None:
     thread = r.block(30)[0]
     assert thread.kind == "G33" and thread.lead_mm == pytest.approx(1.5)
     assert thread.feed_mm_min == pytest.approx(1500.0)
-    dwells = [c for c in r.commands if isinstance(c, canon.Dwell)]
+    # The cuts after M3 (N30, N80) first wait for the set speed range (MD35500, 002 L54530-54536).
+    assert [c.source.n for c in r.commands if isinstance(c, canon.Dwell) and c.feed_enable] == [30, 80]
+    dwells = [c for c in r.commands if isinstance(c, canon.Dwell) and not c.feed_enable]
     assert [(d.seconds, d.revolutions, d.wait_spindle) for d in dwells] == [
         (2.5, None, False), (None, 10.0, False),
         (None, None, True)]  # SPOS: the block waits until the spindle is positioned (002 L51162-51165)

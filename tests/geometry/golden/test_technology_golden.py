@@ -124,7 +124,8 @@ def test_aux_output_order() -> None:
     """
     r = run(lines("N10 G1 X10 F100 M8 H5 S200 M3 T1 D1", "N20 M30"))
     kinds = [type(c).__name__ for c in r.commands if c.source.n == 10]
-    assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "ExactStop", "Motion",
+    # the cut after M3 first waits for the spindle's set speed range (MD35500, 002 L54530-54536)
+    assert kinds == ["ToolSelect", "EdgeSelect", "SpindleCommand", "ExactStop", "Dwell", "Motion",
                      "AuxFunction", "AuxFunction"]
     aux = [(c.address, c.value) for c in r.commands if c.source.n == 10 and isinstance(c, canon.AuxFunction)]
     assert aux == [("M", 8.0), ("H", 5.0)]
