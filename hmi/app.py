@@ -319,9 +319,14 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         the keymap's are priority bindings, run before the key went down). It ends
         here: Textual would try it again on the focus of the moment, a dialog opened
         by a later key of the burst (Ctrl+U, Enter on the tool list emptied the new
-        field).
+        field). The command palette is Textual's own screen: its bindings run as Textual runs
+        them.
         """
         if isinstance(event, events.Key) and event.is_forwarded:
+            if isinstance(self.screen, CommandPalette):
+                # Textual's palette is not a BindingsInPlace screen: its own bindings (Escape)
+                # run where Textual runs them, when the key comes back up to the app.
+                await super().on_event(event)
             return
         if not isinstance(event, events.Key):
             await super().on_event(event)

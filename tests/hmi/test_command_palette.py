@@ -116,6 +116,19 @@ async def test_keymap_keys_never_type_into_the_palette(fake_app: HmiApp) -> None
         assert len(fake_app.screen_stack) == 1 and fake_app.screen.view is None
 
 
+async def test_escape_closes_the_palette(fake_app: HmiApp) -> None:
+    """Escape leaves the palette, with or without a search typed (Textual's own palette binding;
+    the panel kept every key that came back up to it, so Escape did nothing)."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+p")
+        await pilot.press("escape")
+        assert not isinstance(fake_app.screen, CommandPalette)
+        await burst(pilot, "ctrl+p", *"nothing like this", "escape", "escape")
+        await fake_app.workers.wait_for_complete()
+        await pilot.pause()
+        assert not isinstance(fake_app.screen, CommandPalette) and len(fake_app.screen_stack) == 1
+
+
 async def test_keys_command_shows_the_help(fake_app: HmiApp) -> None:
     """The system command "Keys" shows the F11 help of the keys in force."""
     async with fake_app.run_test(size=SIZE) as pilot:
