@@ -89,8 +89,3 @@ def keys_to_form(cycle: str) -> list[str]:
 def on_lathe(cycle: str) -> bool:
     """True for the turning cycles (their menu is the lathe's)."""
     return any(cycle in menu.cycles() for menu in cycle_menus() if menu.machine == "lathe")
-
-
-def app_for_cycle(root: Path, cycle: str) -> HmiApp:
-    """The mill for the drilling and milling cycles, the lathe for the turning cycles."""
-    return lathe_program_app(root) if on_lathe(cycle) else make_program_app(root)
