@@ -87,7 +87,6 @@ class PathBuilder:
         self.frame_add_components = bool(machine.md_value("MD24000", default=0))
         self.frame_fine_configured = bool(machine.md_value("MD18600", default=1))
         self.basic_metric = bool(machine.md_value("MD10240", default=1))
-        self._gcodes_copy: dict[int, str] = {}
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -192,18 +191,6 @@ class PathBuilder:
     def wcs_view(self, geo: GeometryState, modal: Any) -> dict[str, float]:
         """The programmed WCS position in program units, per path axis."""
         return self._display(geo.wcs_mm, modal.gcodes, self.units(modal))
-
-    def wcs_display(self, values_mm: Mapping[str, float], modal: Any) -> dict[str, float]:
-        """WCS values (mm) in program units under ``modal``'s units and DIAMON state, per path
-        axis (0 where ``values_mm`` has none): what :meth:`wcs_view` shows of a position."""
-        return self._display(values_mm, modal.gcodes, self.units(modal))
-
-    def shared_gcodes(self, gcodes: Mapping[int, str]) -> dict[int, str]:
-        """A copy of ``gcodes`` for a motion, the same object as the last one while they are
-        equal (motions of consecutive blocks share it; it is never changed)."""
-        if self._gcodes_copy != gcodes:
-            self._gcodes_copy = dict(gcodes)
-        return self._gcodes_copy
 
     def cartesian_xyz(self) -> bool:
         """True when X, Y and Z are the geometry axes, all of them linear path axes."""

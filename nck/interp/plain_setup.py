@@ -56,34 +56,45 @@ def plain_frame(interp: InterpreterHost) -> tuple[Any, Any] | None:
     return frame, lines
 
 
+def simple_state(interp: InterpreterHost) -> bool:
+    """True when the modal state lets a motion block go straight to the path geometry: a Siemens
+    program, nothing held back or waiting, no chamfer/rounding, no G641 rounding that holds every
+    element back, radius compensation off, the settable frame current."""
+    if interp.dialect.name != "siemens":
+        return False
+    geo = interp.modal.geometry
+    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None \
+            or geo.waiting:
+        return False
+    gcodes = interp.modal.gcodes
+    if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
+        return False  # every corner is rounded: the path builder holds each element back
+    if gcodes.get(7, "G40") != "G40" or compensating(geo) is not False:
+        return False
+    return geo.frames.settable_code == gcodes.get(8, "G500")
+
+
 def simple_setup(interp: InterpreterHost, motion: str | None = None) -> Setup | None:
     """The constants of the batch when the modal state is simple, else None.
 
     ``motion`` is the G0/G1 the block itself programs: it replaces the modal
     motion of group 1 (a ``G1 X… Y…`` after an arc is plain again).
     """
-    if interp.dialect.name != "siemens":
-        return None
     path = interp.builder.path
-    if not path.cartesian_xyz():
+    if not simple_state(interp) or not path.cartesian_xyz():
         return None
     modal = interp.modal
     geo = modal.geometry
     gcodes = modal.gcodes
-    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None \
-            or geo.waiting or geo.spindle_check_due:
+    if geo.spindle_check_due:
         return None
-    if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
-        return None  # every corner is rounded: the path builder holds each element back
     kind, distance = motion or gcodes.get(1), gcodes.get(14)
-    if kind not in ("G0", "G1") or distance not in ("G90", "G91") or gcodes.get(7, "G40") != "G40":
+    if kind not in ("G0", "G1") or distance not in ("G90", "G91"):
         return None
-    if gcodes.get(15, "G94") != "G94" or geo.feed_type != "G94" or geo.frames.settable_code != gcodes.get(8, "G500"):
+    if gcodes.get(15, "G94") != "G94" or geo.feed_type != "G94":
         return None
     if geo.feed_override_pct != 100.0 or geo.accel_pct:
         return None  # OVR and ACC go through the path builder
-    if compensating(geo) is not False:
-        return None
     affine = geo.frames.transform().axis_affine()
     if affine is None:
         return None

@@ -2,13 +2,13 @@
 path of :meth:`Interpreter.step`.
 
 A *simple* motion line (:data:`nck.lang.plain.SIMPLE_LINE`: N, G0–G3, G90/G91, X Y Z, I J K,
-``CR=``, F, a comment) is what CAM posts write for almost every block. Its syntax tree comes
-without the lexer (:func:`nck.lang.plain.simple_block`); here it is turned once into a
+``CR=``, F, a comment) is what CAM posts write for almost every block. Its words are read as
+the parser reads them (:func:`nck.lang.plain.simple_words`) and turned once into a
 :class:`MotionPlan` (its G codes by group, axis values and other words, already converted),
-kept with the parsed line, and each execution hands the plan's words to the general motion
-builder — the same G-code table, feed, path geometry (lines, arcs with I/J/K or ``CR=``, the
-14040 end-point check, planes, frames, tool offsets) and canonical motions as a block of the
-general path. What the fast step leaves out is only what such a block cannot need: the
+cached per interpreter by line text (:class:`SimpleStep`); each execution hands the plan's words
+to the general motion builder — the same G-code table, feed, path geometry (lines, arcs with
+I/J/K or ``CR=``, the 14040 end-point check, planes, frames, tool offsets) and canonical motions
+as a block of the general path. What the fast step leaves out is only what such a block cannot need: the
 evaluation of expressions, control flow, calls, and the full snapshot of the run state.
 
 Instead of the snapshot the step saves the fields of the modal and the geometry state that
@@ -26,12 +26,11 @@ from dataclasses import dataclass
 
 from nck import canon
 from nck.errors import NcAlarmError
-from nck.geometry.trc_canon import compensating
 from nck.interp.api import BLOCK_COST_S, BlockResult
 from nck.interp.host import InterpreterHost
 from nck.interp.modal import ModalState
 from nck.interp.motion_builder import BlockWords
-from nck.interp.plain_setup import plain_frame
+from nck.interp.plain_setup import plain_frame, simple_state
 from nck.lang.gcodes import GTable
 from nck.lang.lines import remember_bounded
 from nck.lang.plain import SIMPLE_LINE, simple_words
@@ -87,19 +86,7 @@ def takes_motion(interp: InterpreterHost, motion: str) -> bool:
     straight to the motion builder: nothing held back or waiting, no chamfer/rounding or
     G641 rounding that would hold the element back, radius compensation off, the settable
     frame current, a Siemens program."""
-    if motion not in ("G0", "G1", "G2", "G3") or interp.dialect.name != "siemens":
-        return False
-    modal = interp.modal
-    geo = modal.geometry
-    if geo is None or not geo.loaded or geo.pending is not None or geo.rndm_mm or geo.contour_first is not None \
-            or geo.waiting:
-        return False
-    gcodes = modal.gcodes
-    if gcodes.get(10) == "G641" and (geo.adis_mm or geo.adispos_mm):
-        return False
-    if gcodes.get(7, "G40") != "G40" or compensating(geo) is not False:
-        return False
-    return geo.frames.settable_code == gcodes.get(8, "G500")
+    return motion in ("G0", "G1", "G2", "G3") and simple_state(interp)
 
 
 class SimpleStep:

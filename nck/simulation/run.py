@@ -391,11 +391,11 @@ class PathRecorder:
         normal_axis = "XYZ"[3 - plane[0] - plane[1]]
         clockwise = motion.kind == "G2"
         if motion.arc_normal_mcs:
-            component = float(dict(motion.arc_normal_mcs).get(normal_axis, 0.0))
+            component = float(motion.arc_normal_mcs.get(normal_axis, 0.0))
             if abs(component) < 0.999:
                 return None
             clockwise = component < 0.0
-        centre = self._blank_point(dict(motion.center_mcs), start)
+        centre = self._blank_point(motion.center_mcs, start)
         return self._arc_chords(start, end, (float(centre[plane[0]]), float(centre[plane[1]])), plane, clockwise,
                                 motion.turns)
 
@@ -404,7 +404,7 @@ class PathRecorder:
         if not motion.center_wcs:
             return None
         plane = _PLANE_INDEX.get(motion.plane, (0, 1))
-        centre = dict(motion.center_wcs)
+        centre = motion.center_wcs
         names = "XYZ"
         c = (float(centre.get(names[plane[0]], start[plane[0]])), float(centre.get(names[plane[1]], start[plane[1]])))
         return self._arc_chords(start, end, c, plane, motion.kind == "G2", motion.turns)
