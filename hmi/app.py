@@ -63,7 +63,7 @@ from hmi.alarm_help import AlarmHelpScreen
 from hmi.i18n import LANGUAGES, N_, _, language, refusal_text, set_language
 from hmi.help import HelpScreen, area_keys
 from hmi.key_input import own_binding
-from hmi.key_settle import wait_for_workers, wait_until_handled
+from hmi.key_settle import BindingsInPlace, wait_for_workers, wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places, one_line
@@ -319,13 +319,13 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         the keymap's are priority bindings, run before the key went down). It ends
         here: Textual would try it again on the focus of the moment, a dialog opened
         by a later key of the burst (Ctrl+U, Enter on the tool list emptied the new
-        field). The command palette is Textual's own screen: its bindings run as Textual runs
-        them.
+        field). A screen of Textual's own (the command palette) is not one of ours: its bindings
+        run as Textual runs them.
         """
         if isinstance(event, events.Key) and event.is_forwarded:
-            if isinstance(self.screen, CommandPalette):
-                # Textual's palette is not a BindingsInPlace screen: its own bindings (Escape)
-                # run where Textual runs them, when the key comes back up to the app.
+            if not isinstance(self.screen, BindingsInPlace):
+                # A screen of Textual's own (the command palette): its bindings (Escape) run
+                # where Textual runs them, when the key comes back up to the app.
                 await super().on_event(event)
             return
         if not isinstance(event, events.Key):
