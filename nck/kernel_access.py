@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import Callable
 
 from nck import commands as cmd
-from nck.access import (ALARM_PASSWORD_REFUSED, LEVEL_FEWEST_RIGHTS, AccessControl, AccessDenied, AccessError,
+from nck.access import (ALARM_PASSWORD_REFUSED, LEVEL_FEWEST_RIGHTS, KEYSWITCH_POSITIONS, AccessControl, AccessError,
                         AccessLocked, AccessState, Action)
 from nck.alarms import AlarmServer
 from nck.commands import Accepted, Rejected, SubmitResult
@@ -78,7 +78,7 @@ class Protection:
     # ----------------------------------------------------------------- commands
     def set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
         """Turn the keyswitch to position 0 … 3 (refused while an exam fixes the level)."""
-        if command.position not in (0, 1, 2, 3):
+        if command.position not in KEYSWITCH_POSITIONS:
             return refuse("keyswitch_positions")
         try:
             self.access.set_keyswitch(command.position)
@@ -93,13 +93,13 @@ class Protection:
             self.access.enter_password(command.password)
         except AccessError as error:
             failed = self.access.state.failed_attempts
-            if failed > failed_before:  # a wrong password (not a malformed one): logbook and alarm log
+            wrong = failed > failed_before  # a wrong password (not a malformed one): logbook and alarm log
+            if wrong:
                 delay = f"{self.access.retry_delay_s:g}"
                 self.logbook.append(LogbookEntry(self.clock(), "access",
                                                  f"password not accepted (failed attempt {failed})"))
                 self.raise_number(ALARM_PASSWORD_REFUSED, failed, delay)
-            return Rejected(str(error) or "Password not accepted", alarm=ALARM_PASSWORD_REFUSED
-                            if failed > failed_before else None)
+            return Rejected(str(error) or "Password not accepted", alarm=ALARM_PASSWORD_REFUSED if wrong else None)
         # the refusal and its waiting time are over: the alarm goes (the log keeps it)
         self.alarms.clear_number(ALARM_PASSWORD_REFUSED, self.clock())
         return Accepted()
@@ -117,9 +117,7 @@ class Protection:
         """Give a password level (1 … 3) a new password (from that level or one with more rights)."""
         try:
             self.access.change_password(command.level, command.password)
-        except AccessDenied as error:
-            return Rejected(str(error))
-        except AccessError as error:
+        except AccessError as error:  # AccessDenied too (its text is never empty)
             return Rejected(str(error) or "Password not accepted")
         return Accepted()
 
