@@ -68,6 +68,7 @@ from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
 from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places, one_line
 from hmi.placeholder import PlaceholderScreen
+from hmi.serve import DEFAULT_MAX_SESSIONS, DEFAULT_PORT, serve
 from hmi.program_lines import ProgramLines
 from hmi.messages import AlarmLineClicked, CommandRejected, NckStatusChanged, TerminalClosed
 from hmi.startup import start_session
@@ -917,13 +918,11 @@ def main(argv: list[str] | None = None) -> int:
                         help="serve the panel to browsers (classroom): one panel on a private copy of the "
                              "NC data per browser tab (needs textual-serve, installed by make)")
     parser.add_argument("--host", default="127.0.0.1", help="--serve: address to listen on (default 127.0.0.1)")
-    parser.add_argument("--port", type=int, default=8000, help="--serve: port (default 8000)")
-    parser.add_argument("--max-sessions", type=int, default=4, metavar="N",
-                        help="--serve: at most N browser panels at once (default 4)")
+    parser.add_argument("--port", type=int, default=DEFAULT_PORT, help=f"--serve: port (default {DEFAULT_PORT})")
+    parser.add_argument("--max-sessions", type=int, default=DEFAULT_MAX_SESSIONS, metavar="N",
+                        help=f"--serve: at most N browser panels at once (default {DEFAULT_MAX_SESSIONS})")
     args = parser.parse_args(argv)
     if args.serve:
-        from hmi.serve import serve
-
         if args.max_sessions < 1 or not 0 < args.port < 65536:
             print("hmi: --max-sessions needs 1 or more, --port a port number 1…65535", file=sys.stderr)
             return 2

@@ -13,7 +13,7 @@ from typing import Callable
 
 from nck.channel_state import ChannelState, MachinePlant
 from nck import commands as cmd
-from nck.channel import ABORTED, ACTIVE, INTERRUPTED, MACHINE_FUNCTIONS
+from nck.channel import ABORTED, ACTIVE, INCREMENTS, INTERRUPTED, MACHINE_FUNCTIONS
 from nck.commands import Accepted, Rejected, SubmitResult
 from nck.kernel_contact import ContactState
 from nck.ncdata import NcData
@@ -51,7 +51,7 @@ class ManualControl:
     def select_increment(self, command: cmd.SelectIncrement) -> SubmitResult:
         """INC 1 … 10000 (0.001 mm) or VAR (None), in JOG only."""
         value = command.increment
-        if value is not None and value not in (1, 10, 100, 1000, 10000):
+        if value is not None and value not in INCREMENTS:
             return refuse("increment_values")
         if self.channel.situation.mode != "JOG":
             return refuse("inc_jog_only")

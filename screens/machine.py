@@ -39,11 +39,11 @@ from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
 from screens.machine_jog_touch import contact_line
 
 MAIN_VIEWS = {"JOG": "view-jog", "MDA": "view-mda", "AUTO": "view-auto"}
-SOFTKEY_VIEWS = ("gfunc", "aux", "progctl", "search", "times", "simrec")
 PROGRAM_STATE_WORDS = {"aborted": N_("aborted"), "running": N_("running"), "stopped": N_("stopped"),
                        "interrupted": N_("interrupted"), "waiting": N_("waiting")}
 """The program state as the MDA window's title line names it (the header has the long form)."""
 PROGRAM_SELECTION_LEVEL = 6
+"""Program selection needs keyswitch position 1 (access level 6) or better."""
 SEARCH_MODES = {
     "contour": "with calculation, contour",
     "end_point": "with calculation, end point",
@@ -51,7 +51,6 @@ SEARCH_MODES = {
     "serupro": "by program test (SERUPRO)",
 }
 """The block search types the search view offers (002 L18283-18309; :mod:`nck.block_search`)."""
-"""Program selection needs keyswitch position 1 (access level 6) or better."""
 
 
 def format_duration(seconds: float) -> str:

@@ -16,14 +16,8 @@ PRIVATE_IMPORTS: frozenset[tuple[str, str, str]] = frozenset()
 """(importer, module, name) of every ``_private`` name imported from another module."""
 
 UNNAMED_DEFINITIONS: frozenset[tuple[str, str]] = frozenset({
-    ("hmi/serve.py", "DEFAULT_PORT"),
-    ("nck/channel.py", "INCREMENTS"),
-    ("nck/lang/plain.py", "axis_value"),
-    ("nck/lang/plain.py", "feed_value"),
-    ("nck/lang/values.py", "REAL_MAX"),
     ("nck/motion/api.py", "MotionExtensions"),
     ("nck/motion/params.py", "MD_READ"),
-    ("screens/machine.py", "SOFTKEY_VIEWS"),
 })
 """(file, name) of top-level definitions nobody names (``tests/definition_uses.py``); left in
 files other work had open when the check came."""

@@ -139,16 +139,6 @@ def is_plain(line: str) -> bool:
     return PLAIN_LINE.fullmatch(line) is not None
 
 
-def axis_value(text: str) -> float:
-    """The float an axis word's text (``-12.5``, ``7``, ``+.5``) means to the interpreter."""
-    return float(_literal(text))
-
-
-def feed_value(text: str) -> float:
-    """The float of an F word's text (no sign)."""
-    return float(_literal(text))
-
-
 def has_statements(found: re.Match[str]) -> bool:
     """True if the plain line has any word besides its block number."""
     return any(found.group(i) is not None for i in range(2, 10))

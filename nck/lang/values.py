@@ -22,7 +22,6 @@ from nck.errors import NcAlarmError
 INT_MIN = -(2**31)
 INT_MAX = 2**31 - 1
 STRING_MAX = 200
-REAL_MAX = 1.8e308
 LUD_VALUES_MEM_KB = 64  # MD28040 MM_LUD_VALUES_MEM when the machine does not set it (data/md/channel.toml)
 GUD_VALUES_MEM_KB = 12  # MD18150 MM_GUD_VALUES_MEM (data/md/general.toml)
 ELEMENT_BYTES = {"INT": 4, "REAL": 8, "BOOL": 1, "CHAR": 1, "AXIS": 4, "FRAME": 400}

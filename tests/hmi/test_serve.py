@@ -93,7 +93,7 @@ async def test_alt_keys_from_a_browser_are_panel_keys_never_text(monkeypatch: py
 
 def test_serve_in_german_gives_each_panel_the_language(monkeypatch: pytest.MonkeyPatch) -> None:
     """``hmi --serve --lang de``: every browser tab's panel process starts with ``--lang de``."""
-    import hmi.serve
+    import hmi.app
 
     started: list[tuple] = []
 
@@ -101,7 +101,7 @@ def test_serve_in_german_gives_each_panel_the_language(monkeypatch: pytest.Monke
         started.append(args)
         return 0
 
-    monkeypatch.setattr(hmi.serve, "serve", serve)
+    monkeypatch.setattr(hmi.app, "serve", serve)
     assert main(["--serve", "--lang", "de"]) == 0
     lang, class_dir = started[0][-2:]
     assert lang == "de"
