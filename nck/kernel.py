@@ -58,7 +58,7 @@ from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_setup import JobSetup
 from nck.machine import MachineConfig, load_machine
 from nck.machine_data import MachineDataStore
-from nck.motion.instant import BUFFER_SEGMENTS, InstantMotion, instant_motion_factory
+from nck.motion.instant import InstantMotion, instant_motion_factory
 from nck.motion.system import planned_motion_factory
 from nck.ncdata import NcData
 from nck.program_control import (
@@ -366,14 +366,7 @@ class Nck:
 
     def buffer_fill(self) -> tuple[int, int]:
         """Read-only: (items in the motion system's block buffer, its capacity) for the diagnosis."""
-        motion = self._path_motion()
-        planner = getattr(motion, "la", None)
-        if planner is not None and hasattr(motion, "params"):
-            return len(planner), int(motion.params.buffer_segments)
-        queue = getattr(motion, "_queue", None)
-        if queue is not None:
-            return len(queue), BUFFER_SEGMENTS
-        return 0, 0
+        return self._path_motion().buffer_fill()
 
     def contact_events(self, since_seq: int = 0) -> tuple[ContactEvent, ...]:
         """The contacts with the blank or the reference block after ``since_seq`` (oldest first, bounded)."""

@@ -19,6 +19,9 @@ class MotionSystem(Protocol):
     def can_accept(self) -> bool:
         """True while the block buffer has room for another segment."""
 
+    def buffer_fill(self) -> tuple[int, int]:
+        """(segments and dwells in the block buffer, its capacity), for the diagnosis."""
+
     def push(self, item: Motion | Dwell) -> None:
         """Append a segment or dwell to the buffer (planned with look-ahead)."""
 

@@ -92,6 +92,10 @@ class InstantMotion:
         """True while fewer than :data:`BUFFER_SEGMENTS` items are buffered."""
         return len(self._queue) < BUFFER_SEGMENTS
 
+    def buffer_fill(self) -> tuple[int, int]:
+        """(items buffered, :data:`BUFFER_SEGMENTS`)."""
+        return len(self._queue), BUFFER_SEGMENTS
+
     def push(self, item: Motion | Dwell) -> None:
         """Buffer a segment (target = its MCS end point) or a dwell."""
         if isinstance(item, Dwell):

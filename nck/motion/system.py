@@ -108,6 +108,10 @@ class PlannedMotion(PathInterpolator):
         """True while the look-ahead buffer (MD28060) has room."""
         return len(self.la) < self.params.buffer_segments
 
+    def buffer_fill(self) -> tuple[int, int]:
+        """(items in the look-ahead buffer, its capacity MD28060)."""
+        return len(self.la), int(self.params.buffer_segments)
+
     def push(self, item: Motion | Dwell) -> None:
         """Plan a segment (or buffer a dwell) behind the ones already buffered."""
         if isinstance(item, Dwell):
