@@ -397,9 +397,11 @@ class AccessControl:
         if self.state.locked:
             raise AccessLocked()
 
-    def _note(self, before: int, reason: str) -> None:
+    def _changed(self, before: int | None = None, reason: str = "") -> None:
+        """Record a change: :attr:`revision` moves on; a level that is no longer ``before``
+        goes into the log with ``reason``."""
         self.revision += 1
-        if self.level != before:
+        if before is not None and self.level != before:
             self.log.append(f"access level {before} -> {self.level} ({reason})")
 
     def set_keyswitch(self, position: int) -> None:
@@ -409,7 +411,7 @@ class AccessControl:
         self._refuse_when_locked()
         before = self.level
         self.state.keyswitch_position = position
-        self._note(before, f"keyswitch {position}")
+        self._changed(before, f"keyswitch {position}")
 
     def check_password(self, password: str) -> int | None:
         """Return the level that ``password`` opens, or None (nothing changes, nothing counted)."""
@@ -424,7 +426,7 @@ class AccessControl:
         """Check a password at a door: a wrong one counts as a failed attempt, a right one
         clears the count (and renews a hash made with fewer iterations than today's)."""
         level = self.check_password(password)
-        self.revision += 1
+        self._changed()
         if level is None:
             self.state.failed_attempts += 1
             self.log.append(f"password not accepted (failed attempt {self.state.failed_attempts})")
@@ -449,7 +451,7 @@ class AccessControl:
             raise PasswordError("password not accepted")
         before = self.level
         self.state.password_level = level
-        self._note(before, "password set")
+        self._changed(before, "password set")
         return level
 
     def delete_password(self) -> None:
@@ -457,7 +459,7 @@ class AccessControl:
         self._refuse_when_locked()
         before = self.level
         self.state.password_level = None
-        self._note(before, "password deleted")
+        self._changed(before, "password deleted")
 
     def change_password(self, level: int, new_password: str) -> None:
         """Give level ``level`` (1..3) a new password.
@@ -476,7 +478,7 @@ class AccessControl:
             if other != level and record.matches(new_password, derived):
                 raise PasswordError(f"that password already belongs to level {other}")
         self.state.password_hashes[level] = PasswordHash.create(new_password)
-        self.revision += 1
+        self._changed()
 
     def required(self, action: Action) -> int:
         """Return the level ``action`` needs with the current USER_CLASS data."""
