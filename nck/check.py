@@ -74,8 +74,9 @@ class CheckAlarm:
 
 
 @dataclass(slots=True)
-class RunResult:
-    """What a headless run of a program text produced."""
+class TextRun:
+    """A program text interpreted without a channel (:func:`run_text`): its motions, the alarm
+    that stopped it, the blocks interpreted, and whether it reached its end or was cut short."""
 
     motions: list[Motion] = field(default_factory=list)
     alarms: list[CheckAlarm] = field(default_factory=list)
@@ -198,7 +199,7 @@ def run_text(
     data: Any = None,
     max_blocks: int = MAX_RUN_BLOCKS,
     should_stop: Callable[[], bool] | None = None,
-) -> RunResult:
+) -> TextRun:
     """Interpret ``text`` headless as main program ``name`` and collect its motions.
 
     Args:
@@ -213,7 +214,7 @@ def run_text(
     Returns:
         the motions, the alarm that stopped the run (if any), and counters.
     """
-    result = RunResult()
+    result = TextRun()
     try:
         interpreter = _make_interpreter(name, text, machine, programs, data)
     except ImportError:
@@ -332,7 +333,7 @@ class CheckContext:
                         resolution_mm=resolution_mm)
 
     def run_text(self, name: str, text: str, *, programs: Any = None,
-                 should_stop: Callable[[], bool] | None = None) -> RunResult:
+                 should_stop: Callable[[], bool] | None = None) -> TextRun:
         """Interpret ``text`` headless on this machine and data (see :func:`run_text`)."""
         return run_text(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
                         should_stop=should_stop)

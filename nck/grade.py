@@ -66,7 +66,7 @@ class Polyline:
 class RunSummary:
     """What grading compares of one headless run."""
 
-    status: str  # "ended", "alarm" or "timeout" (as RunResult)
+    status: str  # "ended", "alarm" or "timeout" (as HeadlessRun)
     alarms: tuple[tuple[int, str], ...]  # (number, block label)
     position_wcs: dict[str, float]
     tools: tuple[int, ...]
@@ -123,7 +123,7 @@ def block_label(source: canon.Source) -> str:
 
 
 def summarize(result: Any, main_file: str) -> RunSummary:
-    """The :class:`RunSummary` of a :class:`nck.headless.RunResult` kept with its commands."""
+    """The :class:`RunSummary` of a :class:`nck.headless.HeadlessRun` kept with its commands."""
     def label(source: canon.Source) -> str:
         text = block_label(source)
         return text if source.file.upper() == main_file.upper() else f"{source.file} {text}"

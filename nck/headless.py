@@ -33,8 +33,9 @@ DEFAULT_RAPID_MM_MIN = 10000.0
 
 
 @dataclass
-class RunResult:
-    """Outcome of a headless run.
+class HeadlessRun:
+    """A headless run of a program (``nck run`` on the kernel, ``nck check`` on the
+    interpreter alone): how it ended, its alarms and canonical commands, its counters.
 
     ``status`` is ``ended`` (M2/M30/M17/end of file), ``alarm`` or ``timeout``;
     ``exit_code`` follows the CLI contract (0, 1, 3). ``position_mcs`` /
@@ -77,12 +78,12 @@ def run_program(
     on_motion: Callable[[Any], None] | None = None,
     keep_commands: bool = True,
     on_block: Callable[[Any], None] | None = None,
-) -> RunResult:
+) -> HeadlessRun:
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
     ``text`` runs the given text under ``program_name`` instead of reading it.
     ``on_command`` sees every canonical command as it is produced;
-    ``keep_commands=False`` does not collect them in ``RunResult.commands``
+    ``keep_commands=False`` does not collect them in ``HeadlessRun.commands``
     (long programs: memory stays flat).
 
     With ``max_blocks`` (``nck check``) the interpreter is driven directly and
@@ -129,7 +130,7 @@ def run_on_kernel(
     on_motion: Callable[[Any], None] | None = None,
     keep_commands: bool = True,
     on_block: Callable[[Any], None] | None = None,
-) -> RunResult:
+) -> HeadlessRun:
     """The headless run through :class:`nck.kernel.Nck` (see :func:`run_program`).
 
     ``on_motion`` receives the kernel's motion system before the start (e.g. to trace it);
@@ -142,7 +143,7 @@ def run_on_kernel(
     nck = build_nck(machine, data, source, dialect=dialect, referenced=True, on_interpreter=interpreters.append)
     if on_motion is not None:
         on_motion(nck.motion)
-    result = RunResult(status="ended")
+    result = HeadlessRun(status="ended")
     executed = ExecutedCommands(result, on_command, keep_commands)
 
     def block_done(block: object) -> None:
@@ -209,7 +210,7 @@ class ExecutedCommands:
     (002 L2397-2416: a block that would pass a software limit is not started).
     """
 
-    def __init__(self, result: RunResult, on_command: Callable[[canon.CanonCommand], None] | None,
+    def __init__(self, result: HeadlessRun, on_command: Callable[[canon.CanonCommand], None] | None,
                  keep_commands: bool) -> None:
         self.result, self.on_command, self.keep = result, on_command, keep_commands
         self.pending: list[canon.CanonCommand] = []
@@ -281,7 +282,7 @@ def interpret_only(
     skip_levels: frozenset[int] = frozenset(),
     keep_commands: bool = True,
     refusals: Any = None,
-) -> RunResult:
+) -> HeadlessRun:
     """Interpret ``program_name`` without the kernel (``nck check``): each segment is
     placed at its end point; ``machine_time_s`` is the blocks' cost plus a
     feed-based estimate of each segment.
@@ -296,7 +297,7 @@ def interpret_only(
     """
     interp = Interpreter(machine, programs, data, dialect=dialect_for(dialect, machine))
     interp.skip_levels = frozenset(skip_levels)
-    result = RunResult(status="ended", interpreter=interp)
+    result = HeadlessRun(status="ended", interpreter=interp)
     try:
         if text is not None:
             interp.start_text(program_name, text)

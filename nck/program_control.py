@@ -85,8 +85,10 @@ class RunOptions:
 
 
 @dataclass
-class SearchResult:
-    """What a block search collected (``search_type``: a name of :mod:`nck.block_search`)."""
+class SearchFindings:
+    """What a block search found and collected: whether it reached the target, the position
+    to approach, the actions to output first, the blocks searched (``search_type``: a name
+    of :mod:`nck.block_search`)."""
 
     found: bool
     search_type: str = CONTOUR
@@ -151,7 +153,7 @@ class ProgramRun:
         self._index = 0
         self._stop_after: str | None = None
         self._end_kind: str | None = None
-        self._search: SearchResult | None = None
+        self._search: SearchFindings | None = None
         self._end_point: EndPointStart | None = None  # type 4: how the target block's motion starts
         self._stop_before: tuple[int | None, str] | None = None  # SERUPRO: stop before this target
 
@@ -487,7 +489,7 @@ class ProgramRun:
 
     # -- block search --------------------------------------------------------
     def search(self, target: str, start_positions: Mapping[str, float],
-               search_type: str = CONTOUR) -> SearchResult:
+               search_type: str = CONTOUR) -> SearchFindings:
         """Block search of ``search_type`` to block number or text ``target``.
 
         The interpreter must be positioned at the program start. Raises
@@ -495,7 +497,7 @@ class ProgramRun:
         or the target block itself fails.
         """
         number, text = parse_search_target(target)
-        result = SearchResult(found=False, search_type=search_type, position_mcs=dict(start_positions))
+        result = SearchFindings(found=False, search_type=search_type, position_mcs=dict(start_positions))
         flags = getattr(self.interp, "flags", None)
         if isinstance(flags, dict):
             flags["search"] = True
@@ -510,7 +512,7 @@ class ProgramRun:
         self.basic_blocks.forget_positions()
         return result
 
-    def _search_without_calculation(self, number: int | None, text: str, result: SearchResult) -> None:
+    def _search_without_calculation(self, number: int | None, text: str, result: SearchFindings) -> None:
         """Type 1: place the program at the target and interpret only the target block."""
         if not self.interp.skip_to(number, text):
             return
@@ -519,7 +521,7 @@ class ProgramRun:
         result.position_mcs = {}  # nothing to approach
         self._found(block, result)
 
-    def _search_blocks(self, number: int | None, text: str, result: SearchResult) -> None:
+    def _search_blocks(self, number: int | None, text: str, result: SearchFindings) -> None:
         spindles: dict[int, SpindleCommand] = {}
         aux: dict[tuple[str, int | None], AuxFunction] = {}
         tool: ToolSelect | None = None
@@ -558,7 +560,7 @@ class ProgramRun:
             actions += list(spindles.values())
             result.actions = actions
 
-    def _found(self, block: BlockResult, result: SearchResult) -> None:
+    def _found(self, block: BlockResult, result: SearchFindings) -> None:
         """The target block is pending; the channel shows "search target found"."""
         result.found = True
         self._take(block)

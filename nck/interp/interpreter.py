@@ -26,7 +26,8 @@ Program-control hooks for the channel: :attr:`skip_levels` (active ``/n``
 levels), :attr:`position_source` (actual positions for ``$AA_IM``), :attr:`access_level`
 (the protection level setting-data writes are checked against),
 :attr:`flags` (``search``, ``test``, ``dry_run`` for ``$P_…``) and
-:meth:`block_search` (block search with calculation).
+:meth:`skip_to` (block search without calculation; the channel's block search with
+calculation steps the interpreter itself, :mod:`nck.program_control`).
 
 ``BlockResult.extras`` carries ``level`` (program level after the block, 0 at
 the end), ``skipped`` (a ``/`` block that was skipped), ``single_block_off``
@@ -38,7 +39,6 @@ the end), ``skipped`` (a ``/`` block that was skipped), ``single_block_off``
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping
 
 from nck import canon
@@ -70,23 +70,6 @@ from nck.interp.sources import DirectorySource
 from nck.lang.lexer import tokenize
 from nck.lang.parser import BlockParser
 from nck.resources import data_path
-
-
-
-@dataclass
-class SearchResult:
-    """Outcome of :meth:`Interpreter.block_search`.
-
-    ``found`` tells whether the target block was reached; the interpreter then
-    stands before it. ``commands`` are the collected outputs (tool, spindle,
-    aux functions, messages) of the searched blocks — no motion. ``position_wcs``
-    is the calculated position the channel must approach (REPOS) before going on.
-    """
-
-    found: bool
-    blocks: int
-    commands: tuple[canon.CanonCommand, ...]
-    position_wcs: dict[str, float]
 
 
 class Interpreter:
@@ -256,28 +239,6 @@ class Interpreter:
         self.run_state.blocks += 1
         return result
 
-    def block_search(self, target: str, max_blocks: int = 1_000_000) -> SearchResult:
-        """Block search with calculation up to the block ``target`` (``N100``, a label or text).
-
-        Interprets without emitting motion, keeping modal state and positions,
-        and stops *before* the target block. Alarms propagate as in :meth:`step`.
-        """
-        self.flags["search"] = True
-        collected: list[canon.CanonCommand] = []
-        blocks = 0
-        try:
-            while not self.finished and blocks < max_blocks:
-                if self._is_search_target(target):
-                    return SearchResult(True, blocks, tuple(collected),
-                                        dict(self.run_state.modal.position_wcs))
-                result = self.step()
-                blocks += 1
-                collected.extend(c for c in result.commands
-                                 if not isinstance(c, (canon.Motion, canon.Dwell, canon.ExactStop, canon.StopPoint)))
-        finally:
-            self.flags["search"] = False
-        return SearchResult(False, blocks, tuple(collected), dict(self.run_state.modal.position_wcs))
-
     def skip_to(self, number: int | None, text: str) -> bool:
         """Block search without calculation: place the main program before its first block
         numbered ``number`` (or, with ``number`` None, the first block whose text contains
@@ -376,20 +337,6 @@ class Interpreter:
         if source is not None:
             alarm.located(source.file, source.line, source.n)
         return alarm
-
-    def _is_search_target(self, target: str) -> bool:
-        frame = self.run_state.frames[-1]
-        if frame.pc >= len(frame.program.lines):
-            return False
-        line = frame.program.lines[frame.pc]
-        text = target.strip().upper()
-        block = line.block
-        if block is not None:
-            if text.startswith("N") and text[1:].isdigit() and block.number == int(text[1:]):
-                return True
-            if block.label and block.label == text.rstrip(":"):
-                return True
-        return bool(text) and not (text.startswith("N") and text[1:].isdigit()) and text in line.text.upper()
 
     # ---------------------------------------------------------------- one block
     def _step(self) -> BlockResult:

@@ -20,7 +20,7 @@ from __future__ import annotations
 from typing import Any
 
 from nck import canon
-from nck.headless import ExecutedCommands, RunResult
+from nck.headless import ExecutedCommands, HeadlessRun
 from nck.machine import MachineConfig
 from nck.ncdata import NcData
 from nck.simulation.blank import Blank
@@ -55,7 +55,7 @@ class LiveRecording:
         self.recorder.tool, self.recorder.selected, self.recorder.edge = tool, tool, edge
         self.full = False
         self._chords = 0
-        self._executed = ExecutedCommands(RunResult(status="running"), self._record, keep_commands=False)
+        self._executed = ExecutedCommands(HeadlessRun(status="running"), self._record, keep_commands=False)
         self._model: ZMap | TurnProfile | None = None
         self._swept = 0
         self._events: list[SimEvent] = []

@@ -46,7 +46,7 @@ import numpy as np
 from nck import canon
 from nck.canon import THREAD_AND_TAPPING_KINDS
 from nck.errors import NcAlarmError
-from nck.headless import DEFAULT_RAPID_MM_MIN, RunResult, run_program
+from nck.headless import DEFAULT_RAPID_MM_MIN, HeadlessRun, run_program
 from nck.interp.api import ProgramSource
 from nck.machine import MachineConfig, load_machine
 from nck.motion.path import arc as arc_segment
@@ -449,7 +449,7 @@ class PathRecorder:
 class Recording:
     """What :func:`record` collected from the AUTO run."""
 
-    run: RunResult
+    run: HeadlessRun
     path: Toolpath
     tool_times_s: dict[int, float]
     mcs_minus_wcs_mm: tuple[float, float, float] | None  # the work offset seen (no rotation)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from nck import canon
-from nck.headless import RunResult, interpret_only
+from nck.headless import HeadlessRun, interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
 from nck.ncdata import NcData, ToolEdge
@@ -17,7 +17,7 @@ PROLOGUE = "G17 G90 G0 X0 Y0 Z50 F100 S1000 M3\n"  # feed 100 mm/min, 1000 rpm r
 class Cycled:
     """The outcome of a program: status, alarms and the canonical commands in order."""
 
-    result: RunResult
+    result: HeadlessRun
 
     @property
     def alarms(self) -> list[int]:

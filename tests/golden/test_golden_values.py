@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from nck import canon
-from nck.headless import RunResult, interpret_only
+from nck.headless import HeadlessRun, interpret_only
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
 from nck.ncdata import NcData
@@ -35,7 +35,7 @@ class Case:
             options = tomllib.loads((folder / "options.toml").read_text())
         programs = {p.name: p.read_text() for p in folder.iterdir() if p.suffix.lower() in (".spf", ".mpf")}
         self.data = case_data(folder, options)
-        self.result: RunResult = interpret_only(
+        self.result: HeadlessRun = interpret_only(
             load_machine(options.get("machine")), MemorySource(programs), self.data, "main.mpf",
             text=programs["main.mpf"], max_blocks=100_000,
             skip_levels=frozenset(options.get("skip_levels", [])))

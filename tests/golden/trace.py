@@ -7,7 +7,7 @@ from pathlib import Path
 
 from nck import canon
 from nck.cli_tools import read_tool_table
-from nck.headless import RunResult, interpret_only
+from nck.headless import HeadlessRun, interpret_only
 from nck.interp.sources import MemorySource
 from nck.lang.gcodes import gtable
 from nck.machine import load_machine
@@ -53,7 +53,7 @@ def command_line(command: canon.CanonCommand) -> str:
     return f"{where} {type(command).__name__}"
 
 
-def final_lines(result: RunResult, data: NcData) -> list[str]:
+def final_lines(result: HeadlessRun, data: NcData) -> list[str]:
     """The final state: status, alarms, changed G groups, position, tool, spindle, R."""
     interp = result.interpreter
     assert interp is not None

@@ -11,14 +11,14 @@ import math
 import pytest
 
 from nck import canon
-from nck.headless import RunResult, interpret_only
+from nck.headless import HeadlessRun, interpret_only
 from nck.interp.sources import MemorySource
 from nck.iso.translate import translate
 from nck.machine import load_machine
 from nck.ncdata import NcData
 
 
-def run_lathe(text: str, md: dict | None = None) -> RunResult:
+def run_lathe(text: str, md: dict | None = None) -> HeadlessRun:
     """Run ``text`` as an ISO T main program on the lathe, without time simulation."""
     machine = load_machine("lathe2")
     machine.md.update(md or {})
@@ -26,13 +26,13 @@ def run_lathe(text: str, md: dict | None = None) -> RunResult:
                           max_blocks=20_000, dialect="iso-t")
 
 
-def points(result: RunResult, line: int | None = None) -> list[tuple[str, float, float]]:
+def points(result: HeadlessRun, line: int | None = None) -> list[tuple[str, float, float]]:
     """(motion, X, Z) of every segment (of source line ``line``), rounded to 1 µm."""
     return [(m.kind, round(m.end_wcs["X"], 3), round(m.end_wcs["Z"], 3))
             for m in result.segments if line is None or m.source.line == line]
 
 
-def lines_run(result: RunResult) -> list[int]:
+def lines_run(result: HeadlessRun) -> list[int]:
     """Source lines that produced motion, in order (repeats collapsed)."""
     out: list[int] = []
     for motion in result.segments:

@@ -85,27 +85,6 @@ def test_skip_level_runs_are_sampled_at_their_first_block() -> None:
     assert executed == [5, 45, 50]
 
 
-def test_block_search_stops_before_target_with_calculated_state() -> None:
-    interp = make("N10 G0 X10 Y5\nN20 S500 M3\nN30 G91 X5 R1=R1+1\nN40 G1 X1 F100\nN50 M30\n")
-    found = interp.block_search("N40")
-    assert found.found and found.blocks == 3
-    assert found.position_wcs == {"X": 15.0, "Y": 5.0, "Z": 0.0}
-    assert interp.r(1) == 1.0 and interp.modal.gcodes[14] == "G91"
-    assert any(isinstance(c, canon.SpindleCommand) for c in found.commands)
-    assert not any(isinstance(c, canon.Motion) for c in found.commands)
-    assert interp.current_source().n == 40
-    assert interp.flags["search"] is False
-    nxt = interp.step()
-    assert [dict(c.end_wcs)["X"] for c in nxt.commands if isinstance(c, canon.Motion)] == [16.0]
-
-
-def test_block_search_by_label_and_not_found() -> None:
-    interp = make("R1=1\nHERE: R2=2\nM30\n")
-    assert interp.block_search("HERE").found
-    interp = make("R1=1\nM30\n")
-    assert not interp.block_search("N999").found
-
-
 def test_program_global_data_visible_in_subprograms_only_with_md11120() -> None:
     main = "DEF INT SHARED=3\nSUB\nM30\n"
     sub = {"SUB.SPF": "R1=SHARED\nM17\n"}

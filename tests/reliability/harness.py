@@ -3,7 +3,7 @@
 :func:`run_hostile` selects the text as a main program in AUTOMATIC, starts it
 with NC START and lets simulated time run (``nck run`` does the same), with a
 simulated-time budget (the ``--timeout`` of the CLI); a hang is caught by the
-suite's per-test timeout, never by timing a run. It returns the :class:`~nck.headless.RunResult` after asserting the contract
+suite's per-test timeout, never by timing a run. It returns the :class:`~nck.headless.HeadlessRun` after asserting the contract
 of issue 13: the run ended normally, with an NC alarm or at the time budget;
 the kernel logged no internal error (alarm 1 "internal error" is how the
 kernel reports a Python exception).
@@ -14,7 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from nck.errors import NcAlarmError
-from nck.headless import RunResult, run_on_kernel
+from nck.headless import HeadlessRun, run_on_kernel
 from nck.interp.sources import MemorySource
 from nck.machine import load_machine
 from nck.ncdata import NcData
@@ -53,7 +53,7 @@ def golden_subprograms() -> dict[str, str]:
 ALL_SUBPROGRAMS = golden_subprograms()
 
 
-def run_hostile(text: str, sim_budget_s: float = SIM_BUDGET_S) -> RunResult:
+def run_hostile(text: str, sim_budget_s: float = SIM_BUDGET_S) -> HeadlessRun:
     """Run ``text`` through the kernel and assert it ended cleanly (see module doc)."""
     result = run_on_kernel(MACHINE, MemorySource(ALL_SUBPROGRAMS), NcData(), "FUZZ.MPF",
                            text=text, timeout_s=sim_budget_s)
