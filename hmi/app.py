@@ -66,7 +66,7 @@ from hmi.key_input import own_binding
 from hmi.key_settle import BindingsInPlace, wait_for_workers, wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
-from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places, one_line
+from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places
 from hmi.placeholder import PlaceholderScreen
 from hmi.serve import DEFAULT_MAX_SESSIONS, DEFAULT_PORT, serve
 from hmi.program_lines import ProgramLines
@@ -649,7 +649,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
                 screen_class, _problem = load_area_screen(area)
                 screen = screen_class() if screen_class is not None else None
             menu = screen.softkey_menu() if screen is not None else SoftkeyMenu.of()
-            places += area_places(area.id, one_line(_(area.menu_label)), menu, self.keymap,
+            places += area_places(area.id, area.menu_label, menu, self.keymap,
                                   lambda key, screen=screen: getattr(screen, key.submenu)() if key.submenu else None)
         return places
 
@@ -668,7 +668,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         if from_top:
             area.clear_softkey_levels()
         if area.current_menu().find(softkey_ids[0]) is None:
-            area.say("This softkey is not offered in the current view")
+            area.say(_("This softkey is not offered in the current view"))
             return
         area.press_softkey_id(softkey_ids[0])
         if len(softkey_ids) > 1:

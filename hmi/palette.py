@@ -46,12 +46,15 @@ class Place:
         area_id: the operating area (mode id).
         softkey_id: the softkey to press there (``""``: the area itself); below the top
             level the ids of the softkeys to press in turn, joined by ``/``.
+        english_path: the path in English (the code's labels): a German panel finds a
+            place by its English name too (``language`` finds ``Sprache wechseln``).
     """
 
     path: str
     keys: str
     area_id: str
     softkey_id: str = ""
+    english_path: str = ""
 
 
 WORD_BREAK = re.compile(r"-\n(?=[a-zäöüß])")
@@ -67,30 +70,38 @@ SubLevel = Callable[[Softkey], SoftkeyMenu | None]
 """The softkey level a softkey opens (its :attr:`Softkey.submenu`), None for a key that opens none."""
 
 
-def area_places(area_id: str, area_name: str, menu: SoftkeyMenu, keymap: Keymap,
+def label_text(label: str) -> str:
+    """A softkey label as a place's path shows it: on one line, without the ``▸`` of a level key."""
+    return one_line(label).removesuffix("▸").rstrip()
+
+
+def area_places(area_id: str, area_label: str, menu: SoftkeyMenu, keymap: Keymap,
                 sub_level: SubLevel | None = None) -> list[Place]:
     """The area itself and each softkey of ``menu`` with their keys, and below a key that opens
     a softkey level (``sub_level``) the softkeys of that level (``Diagnostics ▸ More ▸ Version``).
 
-    ``area_name`` is given in the panel's language; the softkeys' labels are translated here.
+    ``area_label`` and the softkeys' labels are given in English and translated here; each
+    place keeps its English path as well.
     """
     area_key = keymap.by_id(f"area.{area_id}").key_display
-    places = [Place(area_name, area_key, area_id)]
+    places = [Place(label_text(_(area_label)), area_key, area_id, english_path=label_text(area_label))]
 
-    def add_level(level: SoftkeyMenu, path: str, keys: str, ids: str, depth: int) -> None:
+    def add_level(level: SoftkeyMenu, parent: Place, depth: int) -> None:
         for prefix, bar in (("h", level.horizontal), ("v", level.vertical)):
             for index, softkey in enumerate(bar, start=1):
                 if softkey is None:
                     continue
-                here = path + PATH_SEPARATOR + one_line(_(softkey.label)).removesuffix("▸").rstrip()
-                reached = f"{keys}, {keymap.by_id(f'softkey.{prefix}{index}').key_display}"
-                key_ids = f"{ids}{SOFTKEY_PATH_SEPARATOR}{softkey.id}" if ids else softkey.id
-                places.append(Place(here, reached, area_id, key_ids))
+                ids = parent.softkey_id
+                here = Place(parent.path + PATH_SEPARATOR + label_text(_(softkey.label)),
+                             f"{parent.keys}, {keymap.by_id(f'softkey.{prefix}{index}').key_display}",
+                             area_id, f"{ids}{SOFTKEY_PATH_SEPARATOR}{softkey.id}" if ids else softkey.id,
+                             parent.english_path + PATH_SEPARATOR + label_text(softkey.label))
+                places.append(here)
                 below = sub_level(softkey) if sub_level is not None and depth < MAX_LEVELS else None
                 if below is not None:
-                    add_level(below, here, reached, key_ids, depth + 1)
+                    add_level(below, here, depth + 1)
 
-    add_level(menu, area_name, area_key, "", 1)
+    add_level(menu, places[0], 1)
     return places
 
 
@@ -118,13 +129,17 @@ class PlaceProvider(Provider):
         return go
 
     async def search(self, query: str) -> Hits:
-        """Places whose path matches ``query`` (fuzzy), best first; the keys as help."""
+        """Places whose path (in the panel's language, else in English) matches ``query``
+        (fuzzy), best first; the keys as help."""
         matcher = self.matcher(query)
         for place in self._places:
             score = matcher.match(place.path)
+            shown = matcher.highlight(place.path)
+            if score <= 0 and place.english_path != place.path:
+                score = matcher.match(place.english_path)
+                shown = Text(place.path)
             if score > 0:
-                yield Hit(score, matcher.highlight(place.path), self._go(place), text=place.path,
-                          help=place.keys)
+                yield Hit(score, shown, self._go(place), text=place.path, help=place.keys)
 
     async def discover(self) -> Hits:
         """With nothing typed: the operating areas."""

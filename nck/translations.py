@@ -33,7 +33,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from nck.resources import AlarmDefinition, alarm_catalog, data_path, read_table
+from nck.resources import AlarmDefinition, alarm_catalog, alarm_text, data_path, read_table
 
 SOURCE_LANGUAGE = "en"
 LANGUAGES: dict[str, str] = {"en": "English", "de": "Deutsch"}
@@ -172,12 +172,15 @@ def alarm_definition(number: int, code: str) -> AlarmDefinition | None:
     return replace(definition, text=localized(code, "alarm", number, "text", definition.text))
 
 
-def alarm_text_in(code: str, number: int, params: tuple[str, ...] | list[str], english: str) -> str:
+def alarm_text_in(code: str, number: int, params: tuple[str, ...] | list[str], english: str | None = None) -> str:
     """The text of alarm ``number`` with its parameters (as raised) in language ``code``.
 
-    ``english`` is the text as the kernel formatted it; it is returned for English and
-    for alarms outside the catalogue (cycle alarms, unknown numbers).
+    ``english`` is the text as the kernel formatted it (None: the catalogue's English text
+    with ``params``); it is returned for English and for alarms outside the catalogue
+    (cycle alarms, unknown numbers).
     """
+    if english is None:
+        english = alarm_text(number, params)
     if code == SOURCE_LANGUAGE:
         return english
     definition = alarm_definition(number, code)

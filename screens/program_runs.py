@@ -87,8 +87,7 @@ def pieces_of(simulation: Any) -> list[PathPiece]:
 def _first_alarm(simulation: Any) -> str:
     """The run's first alarm, number and text, in the panel's language."""
     alarm = simulation.alarms[0]
-    english = simulation.alarm_text().partition(" ")[2]
-    return f"{alarm.number} {alarm_text_in(language(), alarm.number, alarm.params, english)}"
+    return f"{alarm.number} {alarm_text_in(language(), alarm.number, alarm.params)}"
 
 
 def path_note(simulation: Any) -> str:

@@ -164,32 +164,46 @@ class SetupScreen(AreaBase):
             view_softkey("setup.axis", "Axis\nMD", "axis"),
             view_softkey("setup.display", "Display\nMD", "display"),
             view_softkey("setup.workpiece", "Machine\nset-up", "workpiece"),
-            view_softkey("setup.password", "Password", "password"),
+            view_softkey("setup.password", "Password", "password", submenu="_password_level"),
             Softkey("setup.new_config", "Set MD\nactive (cf)", "new_config",
                     enabled=lambda s: s.status is not None and s.status.channel.channel_state == "reset"),
             Softkey("setup.power_on", "Reset\n(po)", "power_on"),
         ]
         return SoftkeyMenu.of(horizontal, self._vertical_keys())
 
-    def _vertical_keys(self) -> list[Softkey | None]:
-        if self.view == "password":
+    def _password_level(self) -> SoftkeyMenu:
+        """The vertical keys of the password view (the command palette lists them under Password)."""
+        return SoftkeyMenu.of((), self._vertical_keys("password"))
+
+    def _language_level(self) -> SoftkeyMenu:
+        """The language softkeys (the palette lists them under Change language)."""
+        return SoftkeyMenu.of((), self._vertical_keys("language"))
+
+    def _theme_level(self) -> SoftkeyMenu:
+        """The colour theme softkeys (the palette lists them under Change theme)."""
+        return SoftkeyMenu.of((), self._vertical_keys("theme"))
+
+    def _vertical_keys(self, view: str | None = None) -> list[Softkey | None]:
+        """The vertical keys of ``view`` (None: the view shown now)."""
+        view = view or self.view
+        if view == "password":
             return [
                 Softkey("setup.pw.set", "Set\npassword", "set_password"),
                 Softkey("setup.pw.change", "Change\npassword", "change_password", level=3),
                 Softkey("setup.pw.delete", "Delete\npassword", "delete_password"),
                 None,
-                Softkey("setup.language", "Change\nlanguage", "show_view('language')"),
-                Softkey("setup.theme", "Change\ntheme", "show_view('theme')"),
+                Softkey("setup.language", "Change\nlanguage", "show_view('language')", submenu="_language_level"),
+                Softkey("setup.theme", "Change\ntheme", "show_view('theme')", submenu="_theme_level"),
             ]
-        if self.view == "theme":
+        if view == "theme":
             return [Softkey(f"setup.theme.{theme.name}", THEME_LABELS[theme.name], f"select_theme('{theme.name}')",
                             active=lambda s, name=theme.name: s.app.theme == name)
                     for theme in HMI_THEMES]
-        if self.view == "language":
+        if view == "language":
             return [Softkey(f"setup.language.{code}", name, f"select_language('{code}')",
                             active=lambda s, code=code: language() == code)
                     for code, name in LANGUAGES.items()]
-        if self.view == "workpiece":
+        if view == "workpiece":
             level = self.ask(queries.ActionLevel("WRITE_MACHINE_SETUP"))
             return [Softkey("setup.workpiece.hide", "Hide\nblank", "toggle_hidden", level=level,
                             active=lambda s: bool(s.machine_setup and s.machine_setup.hidden)),
@@ -198,7 +212,7 @@ class SetupScreen(AreaBase):
             Softkey("setup.search", "Search", "focus_search"),
             Softkey("setup.search.clear", "Show\nall", "clear_search", enabled=lambda s: bool(s.search)),
         ]
-        if self.view == "axis":
+        if view == "axis":
             keys += [Softkey("setup.axis.next", "Axis +", "next_axis(1)"),
                      Softkey("setup.axis.prev", "Axis −", "next_axis(-1)")]
         else:

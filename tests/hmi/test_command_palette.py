@@ -9,7 +9,7 @@ from textual.widgets import Input
 
 from hmi.app import HmiApp
 from hmi.help import HelpScreen
-from hmi.i18n import set_language
+from hmi.i18n import language, set_language
 from hmi.keymap import default_keymap
 from hmi.palette import PlaceProvider, area_places
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -208,3 +208,37 @@ async def test_palette_texts_in_german(fake_app: HmiApp) -> None:
         await pilot.press("down", "enter")
         await pilot.pause()
         assert fake_app.screen.query_one(Input).placeholder == "Farbschemata suchen…"
+
+
+async def test_palette_finds_the_language_and_theme_selection(fake_app: HmiApp) -> None:
+    """The language softkeys (Setup ▸ Password ▸ Change language ▸ Deutsch: F6, Shift+F5, then
+    the language's vertical key) and the theme softkeys are places of the palette, with the
+    keys that reach them; choosing "Deutsch" switches the panel to German."""
+    async with fake_app.run_test(size=SIZE) as pilot:
+        places = {place.path: place.keys for place in fake_app.palette_places()}
+        assert places["Setup ▸ Password ▸ Change language"] == "Alt+S, F6, Shift+F5"
+        assert places["Setup ▸ Password ▸ Change language ▸ Deutsch"] == "Alt+S, F6, Shift+F5, Shift+F2"
+        assert places["Setup ▸ Password ▸ Change theme ▸ High contrast"] == "Alt+S, F6, Shift+F6, Shift+F3"
+        await pilot.press("ctrl+p", *"deutsch")
+        await pilot.pause()
+        await fake_app.workers.wait_for_complete()
+        await pilot.press("down", "enter")
+        for _ in range(4):
+            await pilot.pause()
+        assert fake_app.current_mode == "setup"
+        assert language() == "de"
+
+
+async def test_german_palette_finds_places_by_german_and_english_names(fake_app: HmiApp) -> None:
+    """In German "Sprache" and "language" both find Setup ▸ Kennwort ▸ Sprache wechseln; the
+    hit shows the German path."""
+    set_language("de")
+    async with fake_app.run_test(size=SIZE) as pilot:
+        places = [place for place in fake_app.palette_places()
+                  if place.path == "Inbetriebnahme ▸ Kennwort ▸ Sprache wechseln"]
+        assert len(places) == 1
+        provider = PlaceProvider(fake_app.screen)
+        await provider.startup()
+        for query in ("Sprache", "language", "English"):
+            found = [str(hit.text) async for hit in provider.search(query)]
+            assert any(path.startswith("Inbetriebnahme ▸ Kennwort ▸ Sprache wechseln") for path in found), query
