@@ -760,15 +760,21 @@ class Nck:
         if self.channel.jogging or self.plant.test_motion is not None:
             return 0
         if run is None or self.channel.situation.channel != ACTIVE:
-            return self.batch_cycles  # nothing is fed: the cycles may run on
+            return self._contact_allows(cycles_done, self.batch_cycles)  # nothing is fed
         motion = self._path_motion()
         events = run.feed(motion, self._run_options(), self._ipo_s)
         if events:
             self._prefed = (run, events)
             return 0
-        if run.wants_every_cycle(motion):
-            return 1
-        return self.batch_cycles
+        allowed = self._contact_allows(cycles_done, 1 if run.wants_every_cycle(motion) else self.batch_cycles)
+        if allowed == 0:
+            self._prefed = (run, [])  # fed for the next cycle, which a new step runs
+        return allowed
+
+    def _contact_allows(self, cycles_done: int, cycles: int) -> int:
+        """``cycles``, fewer when the tool could reach a solid sooner (nck.kernel_contact)."""
+        left = self.contact_watch.cycles_left(cycles_done)
+        return cycles if left is None else min(cycles, left)
 
     def _record_block(self, recording: Any, block: Any) -> None:
         """A block of a recorded AUTO run: count it, then hand it to the recording."""

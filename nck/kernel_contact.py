@@ -4,9 +4,18 @@ Every kernel step, when something is clamped (``NcData.machine_setup``) and the 
 the straight segment the tool tip travelled in that step is intersected with each solid
 (:func:`nck.contact.first_contact`). Steps are kept short enough near a solid: a step of
 ``n`` IPO cycles may run only while the tip cannot reach any solid within them (the gap
-function is a lower bound of the distance, the path velocity at most the axes' MD32000
-velocities), so every step that can touch is a single IPO cycle — one straight segment
-between two interpolation setpoints, at any feed, override, in JOG, INC, MDA and AUTO.
+function is a lower bound of the distance), so every step that can touch is a single IPO
+cycle — one straight segment between two interpolation setpoints, at any feed, override, in
+JOG, INC, MDA and AUTO. The tip travels at most the path distance, so ``n`` cycles at the
+path velocity bound ``v`` travel at most ``n · v · T`` (times a margin). The bound ``v``:
+
+* a program's path motion: the motion's velocity ceiling (the velocity now and the limit of
+  every buffered segment with the overrides, :meth:`PlannedMotion.path_speed_ceiling_mm_s`).
+  A block buffered inside the step can be faster: at every block event inside the step (the
+  program was just fed) the rest of the gap is divided by the ceiling again, and the step ends
+  there when no further cycle fits (:meth:`ContactWatch.cycles_left`);
+* JOG, a reference point approach, a motion without that ceiling: every path axis at its
+  MD32000 velocity at once.
 
 What a contact is (issue 22; the manuals do not describe a simulated workpiece):
 
@@ -72,6 +81,13 @@ def _leaving(body: ToolBody, solid: Any, start: Point, end: Point) -> bool:
     return before >= -SURFACE_SLACK_MM and clearance(body, solid, end) > before
 
 
+def _cycles_within(budget: StepBudget) -> int:
+    """How many more cycles of ``budget.cycle_mm`` fit into the gap not yet spent."""
+    if budget.cycle_mm <= 0.0:
+        return 1 << 30  # nothing moves at the ceiling: asked again when a block is buffered
+    return max(int((budget.gap_mm - budget.spent_mm) / budget.cycle_mm), 0)
+
+
 def _point(before: dict[str, float], after: dict[str, float], t: float) -> dict[str, float]:
     """The machine positions at parameter ``t`` of the step from ``before`` to ``after``."""
     return {a: before.get(a, after[a]) + (after[a] - before.get(a, after[a])) * t for a in after}
@@ -94,6 +110,17 @@ class ContactEvent:
 
 
 @dataclass
+class StepBudget:
+    """A kernel step bounded by the path velocity ceiling: the gap at its start, the distance
+    the cycles run so far may have travelled, and the distance one more cycle may travel."""
+
+    gap_mm: float
+    spent_mm: float
+    cycles: int  # cycles counted into spent_mm
+    cycle_mm: float
+
+
+@dataclass
 class ContactState:
     """The kernel's contact bookkeeping: the events (bounded) and the solids touched now."""
 
@@ -109,6 +136,7 @@ class ContactState:
     measured_mcs: dict[str, float] = field(default_factory=dict)  # $AA_MM
     measured_wcs: dict[str, float] = field(default_factory=dict)  # $AA_MW
     free: tuple[float, ToolBody, Point] | None = None  # at the step's start: gap to every solid, tool body, tip offset
+    budget: StepBudget | None = None  # the step's gap spent at the motion's velocity ceiling
     material: TurnedBar | MilledBlank | None = None  # what is left of the blank object ``material_from``
     material_from: Any = None
 
@@ -168,6 +196,7 @@ class ContactWatch:
     def cycle_limit(self, cycles: int) -> int:
         """At most as many IPO cycles as the tool surely cannot reach a solid in."""
         self.state.free = None
+        self.state.budget = None
         if cycles <= 1 or not self._watched():
             return cycles
         if (self.channel.run is None and self.channel.overlay is None and not self.channel.jogging
@@ -181,8 +210,36 @@ class ContactWatch:
         gap = min(bar.clearance(body, tip) if bar and name == "blank" else clearance(body, solid, tip)
                   for name, solid in self.data.machine_setup.solids())
         self.state.free = (gap, body, offset)
-        step_mm = self._max_path_mm_s() * self.ipo_s * STEP_MARGIN
-        return max(1, min(cycles, int(gap / step_mm))) if gap > 0.0 else 1
+        if gap <= 0.0:
+            return 1
+        ceiling = self._ceiling()
+        if ceiling is None:
+            return max(1, min(cycles, int(gap / (self._max_path_mm_s() * self.ipo_s * STEP_MARGIN))))
+        budget = StepBudget(gap, 0.0, 0, ceiling * self.ipo_s * STEP_MARGIN)
+        self.state.budget = budget
+        return max(1, min(cycles, _cycles_within(budget)))
+
+    def cycles_left(self, cycles_done: int) -> int | None:
+        """Inside a step, at a block event after ``cycles_done`` cycles (the program was just
+        fed): how many more cycles the tip surely cannot reach a solid in (0: end the step
+        here); ``None`` when the step is not bounded by the motion's velocity ceiling."""
+        budget = self.state.budget
+        if budget is None:
+            return None
+        budget.spent_mm += (cycles_done - budget.cycles) * budget.cycle_mm
+        budget.cycles = cycles_done
+        ceiling = self.plant.motion.buffered_speed_ceiling_mm_s()  # blocks buffered inside the step
+        budget.cycle_mm = max(budget.cycle_mm, ceiling * self.ipo_s * STEP_MARGIN)
+        return _cycles_within(budget)
+
+    def _ceiling(self) -> float | None:
+        """The path velocity ceiling of a program's motion (mm/s), ``None`` while JOG moves
+        (or for a motion without one)."""
+        motion = self.plant.motion
+        ceiling = getattr(motion, "path_speed_ceiling_mm_s", None)
+        if ceiling is None or self.channel.jogging or motion.jog_active():
+            return None
+        return float(ceiling())
 
     def _max_path_mm_s(self) -> float:
         speeds = [float(self.plant.machine.md_value("MD32000", axis, 10000.0) or 10000.0)
@@ -202,6 +259,7 @@ class ContactWatch:
     def watch(self, before: dict[str, float] | None) -> None:
         """After a step: judge the tip's segment from ``before`` to now against every solid."""
         free, self.state.free = self.state.free, None
+        self.state.budget = None
         if before is None:
             return
         after = self.plant.positions()

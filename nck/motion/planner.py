@@ -209,6 +209,7 @@ class LookAhead:
     items: list[BufferItem] = field(default_factory=list)
     feed_pct: float = 100.0
     rapid_pct: float = 100.0
+    ceiling_mm_s: float = 0.0  # the highest velocity limit of the segments buffered since the last recount
 
     def __len__(self) -> int:
         return len(self.items)
@@ -225,6 +226,9 @@ class LookAhead:
         """Buffer an item; update the transition limits backwards."""
         if isinstance(item, PlannedSegment):
             item.exit_limit = 0.0
+            ceiling = self.v_max(item)
+            if ceiling > self.ceiling_mm_s:
+                self.ceiling_mm_s = ceiling
             prev = self.items[-1] if self.items else None
             if isinstance(prev, PlannedSegment):
                 prev.junction_out = junction_limit(self.params, prev, item)
@@ -249,8 +253,15 @@ class LookAhead:
             seg.exit_limit = new
             index -= 1
 
+    def recount_ceiling(self) -> None:
+        """:attr:`ceiling_mm_s` of the segments buffered now (with the current overrides)."""
+        self.ceiling_mm_s = max((self.v_max(item) for item in self.items if isinstance(item, PlannedSegment)),
+                                default=0.0)
+
     def replan_all(self) -> None:
-        """Full backward pass (after an override change)."""
+        """Full backward pass (after an override change, a dry run or a revolutional feed's new
+        spindle speed); the velocity ceiling is counted again."""
+        self.recount_ceiling()
         for index in range(len(self.items) - 1, -1, -1):
             seg = self.items[index]
             if not isinstance(seg, PlannedSegment):
@@ -268,3 +279,4 @@ class LookAhead:
     def clear(self) -> None:
         """Discard everything."""
         self.items.clear()
+        self.ceiling_mm_s = 0.0

@@ -370,6 +370,7 @@ class PlannedMotion(PathInterpolator):
                 if not rapid:
                     planned.kind, planned.programmed_mm_min = "G1", self.repos_feed
                 self.la.items.insert(0, planned)
+                self.la.recount_ceiling()
 
     def abort(self, keep_spindles: Collection[str] = ()) -> None:
         """RESET: brake, discard everything buffered, leave follow-up, stop the spindles
@@ -453,6 +454,31 @@ class PlannedMotion(PathInterpolator):
         if self.run is not None:
             return abs(self.run.state()[1]) * 60.0
         return self.jog.velocity_mm_s() * 60.0
+
+    def path_speed_ceiling_mm_s(self) -> float:
+        """An upper bound of the path velocity (mm/s) until every segment buffered now has run
+        (JOG not included); it also starts the count of :meth:`buffered_speed_ceiling_mm_s`.
+
+        It is the higher of the velocity now and the velocity limit of each buffered segment
+        with the overrides: a segment's profile never runs faster than the higher of its
+        entry velocity and its limit (a braking run only slows down), and whatever raises a
+        limit — an override, a dry run, a new spindle speed for a revolutional feed — replans
+        the buffer, which counts the limits again. A profile replanned in a SOFT acceleration
+        phase may overshoot its limit a little (the caller's margin)."""
+        self.la.recount_ceiling()
+        speed = max(self.v_path, self.la.ceiling_mm_s)
+        run = self.run
+        if run is not None:
+            speed = max(speed, abs(run.state()[1]))
+            if run.kind == "segment":
+                speed = max(speed, self.la.v_max(run.chain[0]))
+        return speed
+
+    def buffered_speed_ceiling_mm_s(self) -> float:
+        """The highest velocity limit (mm/s, overrides applied) of the segments buffered since
+        the last :meth:`path_speed_ceiling_mm_s` (cheap: kept as they are buffered). With that
+        figure it bounds the path velocity until they have run."""
+        return self.la.ceiling_mm_s
 
     def drain_alarms(self) -> list[NcAlarmError]:
         """Alarms raised by monitoring, limits and referencing since the last call."""
