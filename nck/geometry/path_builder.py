@@ -56,11 +56,22 @@ ARC_KINDS = ("G2", "G3", "CIP", "CT")
 LEAD_KINDS = ("G33", "G331", "G332")
 """Path motions programmed with a lead (the thread pitch, I/J/K): thread cutting G33 and
 rigid tapping G331/G332 (the spindle in position control); the path builder reads the lead."""
-PATH_KINDS = ("G0", "G1") + LEAD_KINDS + ARC_KINDS
+LINE_KINDS = ("G0", "G1")
+PATH_KINDS = LINE_KINDS + LEAD_KINDS + ARC_KINDS
+LINE_AID_WORDS = frozenset(("ANG", "RP", "AP", "CHF", "CHR", "RND", "RNDM"))
+"""Words of a line block that need the general geometry: contour definition, polar end point,
+chamfer and rounding."""
 INTERP_LETTERS = "IJK"
 ROUND_DIGITS = 9
 _LENGTH_PARAMS = (1, 3, 4, 5, 12, 13, 14, 21, 22, 23)  # $TC_DP of the tool length vector: type, L1-L3 geometry, wear, base
 _UNIT_SYSTEMS: dict[tuple[str, bool], UnitSystem] = {}  # (G group 13 code, basic system metric): immutable
+
+
+def machine_mm(wcs_mm: Any, scale: float, offset: float, tool_mm: float) -> Any:
+    """A geometry axis' machine position under a frame that maps the axis on its own
+    (:meth:`Transform.axis_affine`): ``(wcs · m_ii + t_i) + tool``, before rounding. The one
+    formula of the path builder's lines and of the G1 batch (a float or a numpy array)."""
+    return (wcs_mm * scale + offset) + tool_mm
 
 
 def round_position(value: float) -> float:
@@ -71,6 +82,10 @@ def round_position(value: float) -> float:
 
 class PathBuilder:
     """Computes the path geometry of blocks for one machine (see module docstring)."""
+
+    separable_lines = True
+    """Lines on a separable frame take :meth:`_separable_line` (the tests switch it off to
+    compare with the general element path)."""
 
     def __init__(self, machine: MachineConfig, data: NcData) -> None:
         self.machine = machine
@@ -357,6 +372,10 @@ class PathBuilder:
         suppress = words.gcodes.get(9)
         if suppress in SUPPRESSION_CODES:
             return self.flush(modal) + [self._suppressed_move(kind, words, modal, geo, units, suppress, feed)]
+        if kind in LINE_KINDS and self.separable_lines:
+            line = self._separable_line(kind, words, modal, geo, feed, units, pl.code)
+            if line is not None:
+                return [line]
         start = dict(geo.wcs_mm)
         end, programmed = self._targets(words, modal, geo, units, pl)
         if "ANG" in words.words:
@@ -393,6 +412,93 @@ class PathBuilder:
         else:
             modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
         return out
+
+    # ---------------------------------------------------------------- lines on a separable frame
+    def _separable_line(self, kind: str, words: Any, modal: Any, geo: GeometryState, feed: dict[str, Any],
+                        units: UnitSystem, plane_code: str) -> canon.Motion | None:
+        """The motion of a G0/G1 line when nothing but the line itself can happen: no contour
+        aid (chamfer, rounding, G641 corner, ``ANG=``), no polar words, only geometry axes
+        programmed, and a frame that maps every geometry axis on its own
+        (:meth:`Transform.axis_affine`). Then :meth:`motion` would build a line element, map
+        its end through the frame and emit it; here the same operations in the same order run
+        on 3-tuples (:func:`machine_mm`, :meth:`_display`, :func:`line_tangent`), and
+        the modal state is updated as :meth:`motion` updates it. None when the block is not
+        such a line (nothing changed: :meth:`motion` builds it).
+        """
+        w = words.words
+        if geo.pending is not None or geo.rndm_mm or self.geo_axes != GEOMETRY_AXES_DEFAULT \
+                or not LINE_AID_WORDS.isdisjoint(w):
+            return None
+        gcodes = modal.gcodes
+        exact = gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9"
+        if not exact and gcodes.get(10) == "G641" and (geo.adispos_mm if kind == "G0" else geo.adis_mm) > 0.0:
+            return None  # G641 holds the line back for its corner
+        transform = geo.frames.transform()
+        affine = transform.axis_affine()
+        if affine is None:
+            return None
+        absolute = gcodes.get(14, "G90") == "G90"
+        geo_axes = self.geo_axes
+        end = dict(geo.wcs_mm)
+        for axis in geo_axes:
+            end.setdefault(axis, 0.0)
+        for axis, (value, mode) in words.axes.items():
+            if axis not in geo_axes or mode in ROTARY_MODES:
+                return None
+            incremental = mode == "IC" or (mode is None and not absolute)
+            v = self.to_mm(axis, value, modal, units, incremental=incremental)
+            end[axis] = end.get(axis, 0.0) + v if incremental else v
+        start, stop = self._vec(geo.wcs_mm), self._vec(end)
+        if not math.isfinite(stop[0] + stop[1] + stop[2]):
+            return None  # the frame maps it with numpy's matrix product
+        tool = self.tool_vector(modal)
+        scales, offsets = affine
+        start_mcs = modal.position_mcs
+        end_mcs: dict[str, float] = {}
+        kept: list[str] = []
+        for axis in self.path_axes:
+            if axis in geo_axes:
+                i = geo_axes.index(axis)
+                if axis in words.axes or axis not in start_mcs:
+                    end_mcs[axis] = round_position(machine_mm(stop[i], scales[i], offsets[i], tool.get(axis, 0.0)))
+                else:
+                    end_mcs[axis] = round_position(start_mcs[axis])
+            elif axis in start_mcs:
+                end_mcs[axis] = round_position(start_mcs[axis])
+            else:
+                factor, offset = transform.axial.get(axis, (1.0, 0.0))
+                bcs = factor * float(end[axis]) + offset if axis in end else 0.0
+                end_mcs[axis] = round_position(bcs + tool.get(axis, 0.0))
+            if axis not in words.axes:
+                kept.append(axis)
+        position_wcs = self._display(end, gcodes, units)
+        end_wcs = dict(position_wcs)
+        for axis in kept:  # as _report_actual: where a kept axis stands, seen through the frame
+            bcs = float(end_mcs[axis]) - tool.get(axis, 0.0)
+            if axis in geo_axes:
+                i = geo_axes.index(axis)
+                wcs_mm = (bcs - offsets[i]) / scales[i]
+            else:
+                factor, offset = transform.axial.get(axis, (1.0, 0.0))
+                wcs_mm = (bcs - offset) / factor
+            actual = round_position(self.from_mm(axis, wcs_mm, modal, units))
+            if abs(actual - end_wcs.get(axis, actual)) > 1e-6:
+                end_wcs[axis] = actual
+        rapid = kind == "G0"
+        motion = canon.Motion(
+            kind=kind, source=words.source, plane=plane_code, end_wcs=end_wcs, end_mcs=end_mcs,
+            start_mcs=dict(start_mcs),
+            feed=None if rapid else feed.get("feed"),
+            feed_mm_min=None if rapid else self._feed_value(feed, math.dist(start, stop)),
+            feed_mm_rev=None if rapid else feed.get("feed_mm_rev"),
+            accel_pct=feed.get("accel_pct"), exact_stop=exact, exact_stop_window=gcodes.get(12, "G601"),
+            gcodes=dict(gcodes),
+        )
+        geo.wcs_mm = end
+        geo.tangent = line_tangent(start, stop)
+        modal.position_wcs = position_wcs
+        modal.position_mcs = dict(end_mcs)
+        return motion
 
     # ---------------------------------------------------------------- targets
     def _vec(self, point: Mapping[str, float]) -> tuple[float, float, float]:
@@ -818,7 +924,13 @@ def end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None
     """The unit direction at the end of ``element``; ``None`` for a line of no (or no finite) length."""
     if isinstance(element, Arc):
         return element.tangent_at(1.0)
-    d = [float(e) - float(s) for e, s in zip(element.end, element.start)]
+    return line_tangent(element.start, element.end)
+
+
+def line_tangent(start: tuple[float, float, float], end: tuple[float, float, float]
+                 ) -> tuple[float, float, float] | None:
+    """The unit direction of the line from ``start`` to ``end``; ``None`` for no (or no finite) length."""
+    d = [float(e) - float(s) for e, s in zip(end, start)]
     n = math.hypot(*d)  # no overflow for huge coordinates (numpy's norm warns)
     if n < 1e-12 or not math.isfinite(n):
         return None

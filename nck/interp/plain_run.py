@@ -31,8 +31,7 @@ from typing import Any
 
 import numpy as np
 
-from nck.geometry.contour_aids import LineElement
-from nck.geometry.path_builder import ROUND_DIGITS, end_tangent, round_position
+from nck.geometry.path_builder import ROUND_DIGITS, line_tangent, machine_mm, round_position
 from nck.interp.host import InterpreterHost
 from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_WORDS
@@ -101,8 +100,8 @@ class PlainBatch:
         for i, axis in enumerate(GEOMETRY):
             wcs[axis] = float(end[i])
         geo.wcs_mm = wcs
-        geo.tangent = end_tangent(LineElement(tuple(float(v) for v in before),  # type: ignore[arg-type]
-                                               (wcs["X"], wcs["Y"], wcs["Z"])))
+        geo.tangent = line_tangent((float(before[0]), float(before[1]), float(before[2])),
+                                   (wcs["X"], wcs["Y"], wcs["Z"]))
         mcs = self.mcs_mm[moves - 1]
         modal.position_mcs = {axis: float(mcs[i]) for i, axis in enumerate(self.axes)}
         modal.position_wcs = path.wcs_view(geo, modal)
@@ -250,7 +249,7 @@ def _plan_words(interp: InterpreterHost, setup: Setup, first: int, words: _Words
             running = np.cumsum(np.concatenate(([setup.wcs[i]], steps)))[1:]
             column = _forward_fill(mask, running, setup.wcs[i])
         wcs[:, i] = column
-        machine = _round_array((column * setup.scale[i] + setup.offset[i]) + setup.tool[i])
+        machine = _round_array(machine_mm(column, setup.scale[i], setup.offset[i], setup.tool[i]))
         where = axes.index(GEOMETRY[i])
         mcs[:, where] = _forward_fill(mask, machine, rounded_start[where])
     starts = np.vstack((start_mcs[None, :], mcs[:-1]))

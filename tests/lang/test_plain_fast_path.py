@@ -13,13 +13,15 @@ the general path.
 
 from __future__ import annotations
 
-from typing import Any
+from contextlib import contextmanager
+from typing import Any, Iterator
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from bench.corpus import cam_milling
+from nck.geometry.path_builder import PathBuilder
 from nck.headless import interpret_only
 from nck.interp import plain_run, simple_step
 from nck.interp import program as program_module
@@ -38,15 +40,25 @@ motion (no machine time passes), so both paths end at this budget instead (found
 fixed Hypothesis seed drew such a program)."""
 
 
+@contextmanager
+def _paths(fast: bool) -> Iterator[None]:
+    """The fast paths on (``fast``) or the reference: the general block path, with lines built
+    as elements (:attr:`PathBuilder.separable_lines` off)."""
+    Interpreter.fast_path = fast
+    PathBuilder.separable_lines = fast
+    try:
+        yield
+    finally:
+        Interpreter.fast_path = True
+        PathBuilder.separable_lines = True
+
+
 def _run(text: str, fast: bool, **limits: Any) -> dict[str, Any]:
     limits.setdefault("max_blocks", BLOCK_BUDGET)
     program_module._RECENT.clear()
-    Interpreter.fast_path = fast
-    try:
+    with _paths(fast):
         result = interpret_only(MACHINE, MemorySource(), NcData(), "PLAIN.MPF", text=text,
                                 keep_commands=not fast, **limits)
-    finally:
-        Interpreter.fast_path = True
     interp = result.interpreter
     assert interp is not None
     modal = interp.modal
@@ -195,11 +207,15 @@ def test_fast_path_stops_at_the_same_block_budget_and_time(text: str, blocks: in
     _same(text, timeout_s=timeout)
 
 
-def _steps(text: str, fast: bool) -> tuple[list[Any], list[Any], dict[str, Any]]:
+def _steps(text: str, fast: bool, lines: bool | None = None, machine: Any = MACHINE,
+           data: NcData | None = None) -> tuple[list[Any], list[Any], dict[str, Any]]:
+    """Block by block, with the fast step on or off (the lines on a separable frame as
+    ``lines`` says, else with the fast step)."""
     program_module._RECENT.clear()
-    data = NcData()
-    interp = Interpreter(MACHINE, MemorySource(), data)
+    data = NcData() if data is None else data
+    interp = Interpreter(machine, MemorySource(), data)
     interp.fast_path = fast
+    interp.builder.path.separable_lines = fast if lines is None else lines
     interp.start_text("PLAIN.MPF", text)
     results: list[Any] = []
     alarms: list[Any] = []
@@ -223,6 +239,63 @@ def _steps(text: str, fast: bool) -> tuple[list[Any], list[Any], dict[str, Any]]
 @given(programs())
 def test_plain_steps_give_the_general_block_results(text: str) -> None:
     assert _steps(text, True) == _steps(text, False), text
+
+
+FRAMES = [
+    "G54", "G500", "TRANS X10 Y-5.5 Z0.25", "ATRANS Z3", "SCALE X2 Y2", "ASCALE Z0.5", "SCALE X-1",
+    "MIRROR X0", "AMIRROR Z0", "TRANS", "ROT Y30", "G70", "G71", "G700", "G710", "G90", "G91", "G0", "G1",
+    "$TC_DP1[1,1]=120\n$TC_DP3[1,1]=50.5\nT1 D1 M6", "D0", "G9", "G60", "G64", "G641 ADIS=0.5", "SUPA",
+    "DIAMON", "DIAM90", "DIAMOF", "G95 F0.2", "G94 F500", "OVR=50", "ACC[X]=50", "G93 F2",
+]
+
+
+@st.composite
+def frame_lines(draw: Any, axes: str) -> str:
+    """A line block under changing frames, tool offsets, units and modes; axes absolute,
+    incremental, ``=AC()``/``=IC()``, sometimes only one axis (the others are kept and
+    reported where they stand through the new frame)."""
+    if draw(st.integers(0, 2)) == 0:
+        return draw(st.sampled_from(FRAMES))
+    words = [draw(st.sampled_from(["", "G0", "G1", "N5 G1"]))]
+    for axis in axes:
+        if draw(st.integers(0, 2)):
+            if draw(st.integers(0, 3)):
+                words.append(axis + _number(draw, True))
+            else:
+                words.append(f"{axis}={draw(st.sampled_from(['AC', 'IC']))}({draw(st.integers(-8000, 8000)) / 8})")
+    if draw(st.integers(0, 5)) == 0:
+        words.append("F" + draw(st.sampled_from(["100", "2500.5"])))
+    return " ".join(word for word in words if word)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(["mill", "lathe2"]).flatmap(
+    lambda name: st.tuples(st.just(name), st.lists(frame_lines("XYZ" if name == "mill" else "XZ"),
+                                                   min_size=1, max_size=40))),
+    st.sampled_from([(0.0, 1.0, False), (-12.5, 1.0, False), (30.25, 2.0, True), (7.0, -1.0, False)]))
+def test_lines_on_a_separable_frame_give_the_element_path(program: tuple[str, list[str]],
+                                                           offset: tuple[float, float, bool]) -> None:
+    """:meth:`PathBuilder._separable_line` against the general path's line element, frame
+    mapping and emit (:attr:`PathBuilder.separable_lines` off): every block result (end
+    points in WCS and MCS, kept axes reported through the frame, feeds), alarm and the state
+    after, block by block, under work offsets with translation, scale and mirroring."""
+    machine_name, lines = program
+    machine = MACHINE if machine_name == "mill" else load_machine(machine_name)
+    text = "G1 F1000\n" + "\n".join(lines) + "\nM30\n"
+    shift, scale, mirror = offset
+
+    def data() -> NcData:
+        found = NcData()
+        g54 = found.settable_frames["G54"]
+        g54.trans.update({"X": shift, "Z": -shift / 2})
+        if scale != 1.0:
+            g54.scale.update({"X": scale, "Z": scale})
+        if mirror:
+            g54.mirror.update({"Z": True})
+        return found
+
+    assert _steps(text, True, machine=machine, data=data()) == \
+        _steps(text, False, lines=False, machine=machine, data=data()), text
 
 
 def test_arcs_and_lines_take_the_fast_step(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -331,11 +404,8 @@ def test_the_kernel_run_is_the_same_with_plain_steps() -> None:
     outcomes = []
     for fast in (False, True):
         program_module._RECENT.clear()
-        Interpreter.fast_path = fast
-        try:
+        with _paths(fast):
             result = run_on_kernel(MACHINE, MemorySource(), NcData(), "K.MPF", text=text, timeout_s=120.0)
-        finally:
-            Interpreter.fast_path = True
         outcomes.append((result.status, result.blocks, result.machine_time_s, result.segments))
     assert outcomes[0] == outcomes[1]
     assert outcomes[1][0] == "ended" and len(outcomes[1][3]) == 300
@@ -373,12 +443,9 @@ def test_a_line_plan_is_not_taken_to_another_machine() -> None:
     for machine in (MACHINE, lathe, MACHINE):
         per_path = []
         for fast in (False, True):
-            Interpreter.fast_path = fast
-            try:  # the program cache is kept between the runs: the lines (and plans) are shared
+            with _paths(fast):  # the program cache is kept between the runs: the lines (and plans) are shared
                 result = interpret_only(machine, MemorySource(), NcData(), "SHARED.MPF", text=text,
                                         keep_commands=True)
-            finally:
-                Interpreter.fast_path = True
             per_path.append((result.status, result.blocks, [(a.number, a.line) for a in result.alarms]))
         assert per_path[0] == per_path[1]
         outcomes.append(per_path[1])
