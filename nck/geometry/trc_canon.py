@@ -315,6 +315,8 @@ def split_released(motions: list[canon.Motion], source: canon.Source) -> tuple[l
     The look-ahead releases earlier blocks' motions while a later block is built;
     they belong before that block's own auxiliary functions.
     """
+    if all(m.source is source for m in motions):
+        return [], motions  # the usual case: the block's own motions only
     earlier = [m for m in motions if m.source != source]
     own = [m for m in motions if m.source == source]
     return earlier, own

@@ -65,6 +65,8 @@ CIRCLE_WORDS = ("CR", "AR", "TURN")  # radius, opening angle, helix turns: G2/G3
 CENTRE_WORDS = ("I", "J", "K")  # interpolation parameters: a circle's centre or a thread's lead
 LINEAR_KINDS = ("G0", "G1")  # straight lines, where I/J/K mean nothing (001 L3137-3155)
 NOT_WAITING_FOR_SPEED = ("G0", "G331", "G332")  # motions that start without the spindle's set speed range
+SPINDLE_WORDS = frozenset(("S", "SPOS", "SPOSA", "LIMS"))
+"""Words :meth:`MotionBuilder._spindle` reads (with M codes, extended ``S1=`` words, G25/G26 and G96)."""
 UNAVAILABLE_WORDS = ("SR", "OVRA")  # retraction on a fast NCK input; override of FA / a spindle
 
 
@@ -514,6 +516,9 @@ class MotionBuilder:
     def _spindle(self, words: BlockWords, modal: ModalState, geo: GeometryState,
                  out: list[canon.CanonCommand]) -> None:
         """S / M3 M4 M5 M19 / SPOS per spindle (``S2=``, ``M2=3`` address spindle 2; plain = master)."""
+        if not (words.m_codes or words.extended) and words.gcodes.get(3) not in ("G25", "G26") \
+                and modal.gcodes.get(15) != "G96" and words.words.keys().isdisjoint(SPINDLE_WORDS):
+            return  # nothing for a spindle in this block
         src = words.source
         speeds: dict[int, float] = {}
         states: dict[int, str] = {}
@@ -645,6 +650,8 @@ def _wait_for_spindle_speed(commands: list[canon.CanonCommand], geo: GeometrySta
     Our choice where the manual is silent: the path stops at the start of that block (as
     with MD35500 = 2) even when the spindle is already up to speed then."""
     due = geo.spindle_check_due
+    if not due and not any(isinstance(command, canon.SpindleCommand) for command in commands):
+        return commands  # no speed change before or in this block: nothing waits
     out: list[canon.CanonCommand] = []
     for command in commands:
         if isinstance(command, canon.SpindleCommand) and command.spindle == 1 and command.speed_change:
@@ -670,6 +677,8 @@ def _refuse_words_without_effect(words: BlockWords, modal: ModalState) -> None:
     control uses for ``ANG=`` in a circle block: the function is not available there.
     """
     present = words.words
+    if not present:
+        return
     if modal.gcodes.get(1) not in ("G2", "G3"):
         for key in CIRCLE_WORDS:
             if key in present:

@@ -41,11 +41,15 @@ PLANS_KEPT = 4096
 
 @dataclass(frozen=True)
 class MotionPlan:
-    """A simple motion line, precompiled: what its execution hands to the motion builder."""
+    """A simple motion line, precompiled: what its execution hands to the motion builder.
+
+    The dicts are built once and handed to every execution's :class:`BlockWords` as they are
+    (the motion builder reads a block's words and never changes them)."""
 
     gcodes: tuple[tuple[int, str], ...]  # (G group, code) in the order written; every group modal
-    axes: tuple[tuple[str, float], ...]  # (path axis, value as the block run converts it)
-    words: tuple[tuple[str, float], ...]  # (I/J/K/CR/F, value)
+    block_gcodes: dict[int, str]  # the same as the block's G codes by group
+    axes: dict[str, tuple[float, str | None]]  # path axis -> (value as the block run converts it, None: no AC/IC)
+    words: dict[str, float]  # I/J/K/CR/F -> value
     motion: str | None  # the group-1 code the line writes
     number: int | None  # its block number N
 
@@ -68,17 +72,17 @@ def motion_plan(text: str, table: GTable, path_axes: tuple[str, ...]) -> MotionP
         gcodes.append((group, code))
         if group == 1:
             motion = code
-    axes: list[tuple[str, float]] = []
-    words: list[tuple[str, float]] = []
+    axes: dict[str, tuple[float, str | None]] = {}
+    words: dict[str, float] = {}
     for address, value in written:
         if address in path_axes:
-            axes.append((address, float(value)))
+            axes[address] = (float(value), None)
         elif address in ("X", "Y", "Z"):
             return None  # not an axis of this machine: the block run's alarm
         else:
-            words.append((address, float(value)))
+            words[address] = float(value)
     number = found.group(1)
-    return MotionPlan(tuple(gcodes), tuple(axes), tuple(words), motion, None if number is None else int(number))
+    return MotionPlan(tuple(gcodes), dict(gcodes), axes, words, motion, None if number is None else int(number))
 
 
 def takes_motion(interp: InterpreterHost, motion: str) -> bool:
@@ -132,8 +136,7 @@ class SimpleStep:
         if not takes_motion(interp, plan.motion or modal.gcodes.get(1, "G1")):
             return None
         source = canon.Source(program.name, index + 1, plan.number)
-        words = BlockWords(source=source, gcodes=dict(plan.gcodes), axes={a: (v, None) for a, v in plan.axes},
-                           words=dict(plan.words))
+        words = BlockWords(source=source, gcodes=plan.block_gcodes, axes=plan.axes, words=plan.words)
         geo = modal.geometry
         saved_modal, saved_geo = dict(modal.__dict__), dict(geo.__dict__)
         gcodes = modal.gcodes
