@@ -35,6 +35,7 @@ from typing import Any, Callable, Iterator
 from nck.alarm_ids import BLOCK_TOO_COMPLEX
 from nck.canon import Motion, UserAlarm
 from nck.errors import NcAlarmError
+from nck.headless import interpret_only
 from nck.iso.dialect import dialect_for
 from nck.machine import load_machine
 from nck.motion.system import PlannedMotion
@@ -275,26 +276,28 @@ def iter_check(
         return
     machine = machine or load_machine()
     data = data if data is not None else NcData()
-    run = run_text(name, text, machine=machine, programs=programs, data=data, should_stop=should_stop)
-    refusal = motion_refusal(run.motions, machine, data)
-    if refusal is not None:
-        yield refusal  # the run stops there, before any later interpreter alarm
-        return
-    for alarm in run.alarms:
-        if alarm.line not in syntax_lines:
-            yield alarm
+    stopped_by = _run_alarm(name, text, machine, programs, data, should_stop)
+    if stopped_by is not None:
+        yield stopped_by
 
 
-def motion_refusal(motions: list[Motion], machine: Any, data: NcData) -> CheckAlarm | None:
-    """The first motion the run's motion would refuse: software limit (10720), working area
-    (10730, with the setting data as the program left them), value range — the axes
-    referenced, as they must be for NC START."""
-    planner = PlannedMotion(machine, referenced=True, setting_data=data.setting_data)
-    for motion in motions:
-        alarm = planner.refusal_of(motion)
-        if alarm is not None:
-            return _alarm(alarm)
-    return None
+def _run_alarm(name: str, text: str, machine: Any, programs: Any, data: NcData,
+               should_stop: Callable[[], bool] | None = None) -> CheckAlarm | None:
+    """The alarm that ends the run of ``text`` (pass 2), or None.
+
+    The run is ``nck check``'s (:func:`nck.headless.interpret_only`): it ends at the first
+    interpreter alarm, SETAL, or motion the run's motion would refuse — software limit
+    (10720), working area (10730), value range — with the axes referenced, as they must be
+    for NC START. No motion is kept, so runs of plain blocks go in batches.
+    """
+    refusals = PlannedMotion(machine, referenced=True, setting_data=data.setting_data)
+    try:
+        outcome = interpret_only(machine, _OverlaySource(name, text, programs), data, name, text=text,
+                                 max_blocks=MAX_RUN_BLOCKS, keep_commands=False, refusals=refusals,
+                                 should_stop=should_stop)
+    except RecursionError:
+        return _alarm(NcAlarmError(BLOCK_TOO_COMPLEX))
+    return _alarm(outcome.alarms[0]) if outcome.alarms else None
 
 
 def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:

@@ -37,7 +37,8 @@ class HeadlessRun:
     """A headless run of a program (``nck run`` on the kernel, ``nck check`` on the
     interpreter alone): how it ended, its alarms and canonical commands, its counters.
 
-    ``status`` is ``ended`` (M2/M30/M17/end of file), ``alarm`` or ``timeout``;
+    ``status`` is ``ended`` (M2/M30/M17/end of file), ``alarm`` or ``timeout`` (a time or
+    block budget ran out, or the caller asked the run to stop);
     ``exit_code`` follows the CLI contract (0, 1, 3). ``position_mcs`` /
     ``position_wcs`` are where the path axes stand at the end of a kernel run
     (None for ``nck check``, which moves nothing: the interpreter's end point).
@@ -282,6 +283,7 @@ def interpret_only(
     skip_levels: frozenset[int] = frozenset(),
     keep_commands: bool = True,
     refusals: Any = None,
+    should_stop: Callable[[], bool] | None = None,
 ) -> HeadlessRun:
     """Interpret ``program_name`` without the kernel (``nck check``): each segment is
     placed at its end point; ``machine_time_s`` is the blocks' cost plus a
@@ -294,6 +296,8 @@ def interpret_only(
     When nobody consumes the canonical commands (``keep_commands=False`` and no
     ``on_command``), runs of plain motion blocks are interpreted as batches
     (:meth:`Interpreter.plain_batch`, :func:`batch_clock`) with the same result.
+
+    ``should_stop`` is polled before every block or batch; True ends the run (``timeout``).
     """
     interp = Interpreter(machine, programs, data, dialect=dialect_for(dialect, machine))
     interp.skip_levels = frozenset(skip_levels)
@@ -311,7 +315,8 @@ def interpret_only(
     batches = not keep_commands and on_command is None  # nobody needs the motions: plain runs in one go
     while not interp.finished:
         if (timeout_s is not None and clock >= timeout_s) or (
-                max_blocks is not None and result.blocks >= max_blocks):
+                max_blocks is not None and result.blocks >= max_blocks) or (
+                should_stop is not None and should_stop()):
             result.status = "timeout"
             break
         if batches:
