@@ -204,9 +204,11 @@ class ContactWatch:
             return cycles  # nothing can start moving inside this step
         body, offset = self.tool_body()
         tip = self._tip(self.plant.positions(), offset)
-        bar = self._material()
+        # A milled blank: the solid's gap is a lower bound of the gap to what is left (its
+        # height map is built only when the tool comes near: ``watch``).
+        bar = self._material() if self.plant.machine.kind == "lathe" else None
         if not isinstance(bar, TurnedBar):
-            bar = None  # a milled blank: the solid's gap is a lower bound of the gap to what is left
+            bar = None
         gap = min(bar.clearance(body, tip) if bar and name == "blank" else clearance(body, solid, tip)
                   for name, solid in self.data.machine_setup.solids())
         self.state.free = (gap, body, offset)
