@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from array import array
 from dataclasses import dataclass
+from itertools import islice
 from typing import Any, Iterator, Protocol
 
 from nck.errors import NcAlarmError
@@ -57,14 +58,18 @@ class LineSequence(Protocol):
 def remember_bounded(cache: dict, key: Any, value: Any, limit: int) -> None:
     """Put ``key: value`` into an insertion-ordered cache of at most ``limit`` entries.
 
-    The oldest entries go first. The HMI checks programs in a worker thread, so
-    an eviction racing with another thread is tolerated.
+    The oldest entries go first, a quarter of ``limit`` at a time: removing one at a time,
+    each ``next(iter(cache))`` walks over the slots the earlier removals left empty at the
+    front (~4 us a line in a 4,096-line cache, where a CAM program's lines are all new). The
+    HMI checks programs in a worker thread, so an eviction racing with another thread is
+    tolerated.
     """
-    try:
-        while len(cache) >= limit:
-            cache.pop(next(iter(cache)), None)
-    except (RuntimeError, StopIteration):
-        pass
+    if len(cache) >= limit:
+        try:
+            for old in list(islice(cache, len(cache) - limit + max(1, limit // 4))):
+                cache.pop(old, None)
+        except RuntimeError:
+            pass
     cache[key] = value
 
 
