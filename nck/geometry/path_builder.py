@@ -102,6 +102,7 @@ class PathBuilder:
         self.frame_add_components = bool(machine.md_value("MD24000", default=0))
         self.frame_fine_configured = bool(machine.md_value("MD18600", default=1))
         self.basic_metric = bool(machine.md_value("MD10240", default=1))
+        self._no_tool: Mapping[str, float] = {axis: 0.0 for axis in self.geo_axes}  # read only
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -242,12 +243,16 @@ class PathBuilder:
         The vector is kept per input (the edge's type and lengths, plane, setting data,
         units): every motion block asks for it.
         """
+        return dict(self._tool_lengths(modal))
+
+    def _tool_lengths(self, modal: Any) -> Mapping[str, float]:
+        """:meth:`tool_vector` as kept (shared: read it, never change it)."""
         tool, edge = int(modal.tool), int(modal.edge)
         if tool == 0 or edge == 0:
-            return {axis: 0.0 for axis in self.geo_axes}
+            return self._no_tool
         found = self.data.edge(tool, edge)
         if found is None and not any(t == tool for t, _ in self.data.tools):
-            return {axis: 0.0 for axis in self.geo_axes}
+            return self._no_tool
         found = resolve_edge(self.data, tool, edge)
         assert found is not None
         sd = self.data.setting_data
@@ -266,7 +271,7 @@ class PathBuilder:
                 cache.clear()
             vector = cache[key] = length_offset(found, plane_code, self.geo_axes, length_const=length_const,
                                                 length_type=length_type, wear_sign=wear_sign, data_mm=data_mm)
-        return dict(vector)
+        return vector
 
     def wear_sign(self) -> int:
         """SD42930 now (taken over by the next edge selection)."""
@@ -368,14 +373,14 @@ class PathBuilder:
         if kind not in PATH_KINDS:
             raise NcAlarmError(NAME_NOT_DEFINED, kind)
         units = self.units(modal)
-        pl = self.plane(modal)
         suppress = words.gcodes.get(9)
         if suppress in SUPPRESSION_CODES:
             return self.flush(modal) + [self._suppressed_move(kind, words, modal, geo, units, suppress, feed)]
         if kind in LINE_KINDS and self.separable_lines:
-            line = self._separable_line(kind, words, modal, geo, feed, units, pl.code)
+            line = self._separable_line(kind, words, modal, geo, feed, units, modal.gcodes.get(6, "G17"))
             if line is not None:
                 return [line]
+        pl = self.plane(modal)
         start = dict(geo.wcs_mm)
         end, programmed = self._targets(words, modal, geo, units, pl)
         if "ANG" in words.words:
@@ -451,7 +456,7 @@ class PathBuilder:
         start, stop = self._vec(geo.wcs_mm), self._vec(end)
         if not math.isfinite(stop[0] + stop[1] + stop[2]):
             return None  # the frame maps it with numpy's matrix product
-        tool = self.tool_vector(modal)
+        tool = self._tool_lengths(modal)
         scales, offsets = affine
         start_mcs = modal.position_mcs
         end_mcs: dict[str, float] = {}
@@ -930,8 +935,8 @@ def end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None
 def line_tangent(start: tuple[float, float, float], end: tuple[float, float, float]
                  ) -> tuple[float, float, float] | None:
     """The unit direction of the line from ``start`` to ``end``; ``None`` for no (or no finite) length."""
-    d = [float(e) - float(s) for e, s in zip(end, start)]
-    n = math.hypot(*d)  # no overflow for huge coordinates (numpy's norm warns)
+    d0, d1, d2 = float(end[0]) - float(start[0]), float(end[1]) - float(start[1]), float(end[2]) - float(start[2])
+    n = math.hypot(d0, d1, d2)  # no overflow for huge coordinates (numpy's norm warns)
     if n < 1e-12 or not math.isfinite(n):
         return None
-    return (d[0] / n, d[1] / n, d[2] / n)
+    return (d0 / n, d1 / n, d2 / n)

@@ -220,7 +220,7 @@ class MotionBuilder:
         motions = self.path.motion(words, modal, geo, feed)
         motions = trc_canon.process(motions, modal, self.path, self.data, self.machine, src)
         earlier, motions = trc_canon.split_released(motions, src)
-        measure = next((key for key in ("MEAS", "MEAW") if key in words.words), None)
+        measure = "MEAS" if "MEAS" in words.words else "MEAW" if "MEAW" in words.words else None
         if measure is not None:  # the probe measures in this block's motion (nck.kernel_contact)
             motions = [replace(m, measure=measure) if isinstance(m, canon.Motion) else m for m in motions]
         own: list[canon.CanonCommand] = list(motions)
@@ -465,7 +465,7 @@ class MotionBuilder:
     # ------------------------------------------------------------------ tool
     def _tool(self, words: BlockWords, modal: ModalState, out: list[canon.CanonCommand]) -> None:
         src = words.source
-        change = any(v == 6 and ext in (None, 0, 1) for ext, v in words.m_codes)
+        change = bool(words.m_codes) and any(v == 6 and ext in (None, 0, 1) for ext, v in words.m_codes)
         if "T" in words.words:
             tool = int(words.words["T"])
             if tool < 0:

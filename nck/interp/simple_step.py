@@ -22,7 +22,7 @@ chamfer/rounding modal, G641 rounding by distance, an ISO program).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from nck import canon
 from nck.errors import NcAlarmError
@@ -39,12 +39,12 @@ PLANS_KEPT = 4096
 """Plans kept per interpreter, by line text (the oldest go first)."""
 
 
-@dataclass(frozen=True)
-class MotionPlan:
+class MotionPlan(NamedTuple):
     """A simple motion line, precompiled: what its execution hands to the motion builder.
 
     The dicts are built once and handed to every execution's :class:`BlockWords` as they are
-    (the motion builder reads a block's words and never changes them)."""
+    (the motion builder reads a block's words and never changes them). A named tuple: a CAM
+    program's lines are all new, so a plan is made for almost every block."""
 
     gcodes: tuple[tuple[int, str], ...]  # (G group, code) in the order written; every group modal
     block_gcodes: dict[int, str]  # the same as the block's G codes by group
