@@ -36,7 +36,11 @@ from nck.alarm_ids import BLOCK_TOO_COMPLEX
 from nck.canon import Motion, UserAlarm
 from nck.errors import NcAlarmError
 from nck.headless import interpret_only
+from nck.interp.interpreter import Interpreter
+from nck.interp.program import load_program
 from nck.iso.dialect import dialect_for
+from nck.lang.parser import parse_block
+from nck.lang.plain import parses_without_alarm
 from nck.machine import load_machine
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
@@ -106,9 +110,6 @@ def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
 
     The cache makes re-checking an edited program cost only the changed lines.
     """
-    from nck.lang.parser import parse_block
-    from nck.lang.plain import parses_without_alarm
-
     if parses_without_alarm(line):  # plain and simple motion blocks are valid without the parser
         return None
     try:
@@ -116,7 +117,7 @@ def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
     except NcAlarmError as error:
         return error.number, error.params, error.n
     except RecursionError:
-        return 12540, (), None
+        return BLOCK_TOO_COMPLEX, (), None
     return None
 
 
@@ -127,10 +128,6 @@ def iter_syntax_alarms(
 
     ``should_stop`` is polled every 16 lines; True ends the pass early.
     """
-    try:
-        import nck.lang.parser  # noqa: F401
-    except ImportError:  # the language is not there: nothing to check line by line
-        return
     for index, line in enumerate(text.split("\n"), start=1):
         if should_stop is not None and index % 16 == 0 and should_stop():
             return
@@ -151,10 +148,6 @@ def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:
     Uses the interpreter's program loader, which knows the nesting rules; run it
     only on a text without syntax errors (it would report those again).
     """
-    try:
-        from nck.interp.program import load_program
-    except ImportError:
-        return
     try:
         problems = load_program(name, text, dialect_for("siemens", None)).problems()
     except RecursionError:
@@ -182,9 +175,7 @@ class _OverlaySource:
         return self._fallback.read_program(name)
 
 
-def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: Any) -> Any:
-    from nck.interp.interpreter import Interpreter
-
+def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: Any) -> Interpreter:
     source = _OverlaySource(name, text, programs)
     machine = machine or load_machine()
     return Interpreter(machine, source, data if data is not None else NcData(),
@@ -216,10 +207,7 @@ def run_text(
         the motions, the alarm that stopped the run (if any), and counters.
     """
     result = TextRun()
-    try:
-        interpreter = _make_interpreter(name, text, machine, programs, data)
-    except ImportError:
-        return result
+    interpreter = _make_interpreter(name, text, machine, programs, data)
     try:
         interpreter.start_text(name, text)
         while not interpreter.finished:

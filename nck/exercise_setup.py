@@ -18,6 +18,7 @@ from nck import commands as cmd
 from nck.exercise import Exercise, ExerciseError, exercise_program
 from nck.machine import load_machine
 from nck.ncdata import ToolEdge
+from nck.persistence import Session
 from nck.workpiece import MachineSetup, solid_from_plain
 
 TRUE_LENGTH_FIELD = "true_length1"
@@ -29,8 +30,6 @@ TOOL_FIELDS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 
 
 def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
     """Write the exercise's starting set-up as the retained data of ``directory`` (new)."""
-    from nck.persistence import Session
-
     setup = exercise.setup
     session = Session.open(directory, load_machine(exercise.machine))
     data = session.ncdata

@@ -16,17 +16,21 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
+import numpy as np
+
 from nck.alarm_ids import INTERNAL_ERROR, PROGRAM_NOT_FOUND
 from nck import canon
 from nck import commands as cmd
 from nck.build import build_nck
 from nck.errors import NcAlarmError
-from nck.interp.api import ProgramSource
+from nck.interp.api import BLOCK_COST_S, ProgramSource
 from nck.interp.interpreter import Interpreter
+from nck.interp.program import load_program
 from nck.iso.dialect import dialect_for
 from nck.machine import MachineConfig
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
+from nck.resources import alarm_catalog
 from nck.translations import SOURCE_LANGUAGE, alarm_text_in
 
 DEFAULT_RAPID_MM_MIN = 10000.0
@@ -376,10 +380,6 @@ def batch_clock(machine: MachineConfig, batch: Any, clock: float,
     The same sums as the block-by-block loop, in the same order: per block its
     cost, then its segment's time (:func:`segment_time_s`).
     """
-    import numpy as np
-
-    from nck.interp.api import BLOCK_COST_S
-
     steps = np.zeros((batch.blocks, 2))
     steps[:, 0] = BLOCK_COST_S
     steps[batch.motion_line, 1] = segment_times_s(machine, batch.axes, batch.deltas_mm, batch.feed_mm_min)
@@ -395,8 +395,6 @@ def batch_clock(machine: MachineConfig, batch: Any, clock: float,
 
 def segment_times_s(machine: MachineConfig, axes: tuple[str, ...], deltas_mm: Any, feed_mm_min: Any) -> Any:
     """:func:`segment_time_s` of many segments (rows of ``deltas_mm``; NaN feed = rapid)."""
-    import numpy as np
-
     squares = deltas_mm[:, 0] * deltas_mm[:, 0] if len(axes) else np.zeros(len(feed_mm_min))
     for i in range(1, len(axes)):
         squares = squares + deltas_mm[:, i] * deltas_mm[:, i]
@@ -440,8 +438,6 @@ def check_outcome(machine: MachineConfig, programs: ProgramSource, name: str, te
                   data: NcData | None = None, max_blocks: int = CHECK_BLOCK_BUDGET,
                   dialect: str = "siemens") -> CheckOutcome:
     """As :func:`check_program`, and say whether the program ended within ``max_blocks``."""
-    from nck.interp.program import load_program
-
     found = load_program(name, text, dialect_for(dialect, machine)).problems()
     if found:
         return CheckOutcome(found, True, 0)
@@ -475,8 +471,6 @@ def format_alarm(alarm: NcAlarmError, language: str = SOURCE_LANGUAGE) -> str:
 
 def alarm_message(alarm: NcAlarmError, language: str = SOURCE_LANGUAGE) -> str:
     """The alarm text with channel and block filled in, in ``language`` (``nck --lang``)."""
-    from nck.resources import alarm_catalog
-
     block = f"N{alarm.n}" if alarm.n is not None else (str(alarm.line) if alarm.line else "-")
     if alarm.number not in alarm_catalog():
         kind = "cycle/user alarm" if 60000 <= alarm.number <= 69999 else "alarm"

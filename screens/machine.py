@@ -23,6 +23,7 @@ from nck.queries import RecordedCut
 from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
+from hmi.dialogs import ChoiceDialog, ValueDialog
 from hmi.focus import focus_now
 from hmi.i18n import N_, _
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
@@ -281,8 +282,6 @@ class MachineScreen(AreaBase):
 
     def action_choose_skip_level(self) -> None:
         """Choose a skip level /0 … /9 to switch on or off."""
-        from hmi.dialogs import ChoiceDialog
-
         active = self._skip_levels()
         choices = [f"/{n}  {_('on') if n in active else _('off')}" for n in range(10)]
 
@@ -304,8 +303,6 @@ class MachineScreen(AreaBase):
 
     def action_select_program(self) -> None:
         """Choose the part program for AUTOMATIC from the programs the kernel knows."""
-        from hmi.dialogs import ChoiceDialog
-
         names = self.hmi.program_names()
         selected = self.status.channel.selected_program if self.status else None
 
@@ -343,8 +340,6 @@ class MachineScreen(AreaBase):
 
     def action_enter_required_parts(self) -> None:
         """Ask for the number of parts required ($AC_REQUIRED_PARTS)."""
-        from hmi.dialogs import ValueDialog
-
         current = self.status.channel.parts_required if self.status else 0
 
         def write(text: str | None) -> None:

@@ -40,6 +40,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
+from hmi.dialogs import ChoiceDialog
 from hmi.focus import focus_now
 from hmi.i18n import _, refusal_text
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
@@ -301,8 +302,6 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self._ask_unsaved(after="manager")
 
     def _ask_unsaved(self, after: str) -> None:
-        from hmi.dialogs import ChoiceDialog
-
         program = self.program
 
         def decided(choice: str | None) -> None:
@@ -395,8 +394,6 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
 
     def action_offer_restore_any(self) -> None:
         """Restore softkey: list the journal entries and restore the chosen one."""
-        from hmi.dialogs import ChoiceDialog
-
         try:
             entries = self.journal.entries()
         except OSError:
@@ -425,8 +422,6 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         )
 
     def _ask_restore(self, entry: Any) -> None:
-        from hmi.dialogs import ChoiceDialog
-
         def chosen(choice: str | None) -> None:
             if choice == "Restore unsaved text":
                 self._restore(entry)

@@ -197,8 +197,6 @@ class EditActions:
         replacement = self.query_one("#prog-replace", Input).value
         if self.editor.read_only or not query:
             return
-        import re
-
         text = self.editor.text
         new, count = re.subn(re.escape(query), lambda _m: replacement, text, flags=re.IGNORECASE)
         if count:

@@ -32,9 +32,10 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
-from hmi.dialogs import ConfirmDialog
+from hmi.dialogs import ChoiceDialog, ConfirmDialog
 from hmi.focus import focus_now
 from hmi.i18n import N_, _, refusal_text
+from hmi.journal import EditorJournal
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
 
@@ -185,8 +186,6 @@ class ProgramManagerScreen(AreaBase):
 
     def _hint_unsaved_journal(self) -> None:
         """After a crash, point at the unsaved editor text the journal still holds."""
-        from hmi.journal import EditorJournal
-
         try:
             entries = EditorJournal(self.files.journal_dir).entries()
         except OSError:
@@ -452,8 +451,6 @@ class ProgramManagerScreen(AreaBase):
 
     def action_delete(self) -> None:
         """Delete: ask, then delete (refused for the program being executed)."""
-        from hmi.dialogs import ChoiceDialog
-
         entry = self.current_entry()
         if entry is None:
             return

@@ -9,7 +9,10 @@ truth; this helper turns it into what a planar interpolator needs.
 
 from __future__ import annotations
 
+import math
 from typing import Mapping
+
+import numpy as np
 
 from nck.canon import Motion
 
@@ -57,10 +60,6 @@ def arc_points_mcs(motion: Motion, count: int = 32) -> list[dict[str, float]]:
     axis, so it also draws arcs that a frame has tilted out of G17/G18/G19. A line
     gives just its start and end.
     """
-    import math
-
-    import numpy as np
-
     axes = ("X", "Y", "Z")
     start = np.array([float(motion.start_mcs.get(a, motion.end_mcs.get(a, 0.0))) for a in axes])
     end = np.array([float(motion.end_mcs.get(a, 0.0)) for a in axes])

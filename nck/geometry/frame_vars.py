@@ -25,6 +25,7 @@ from typing import Any
 from nck.alarm_ids import DATA_WRITE_PROTECTED, NAME_NOT_DEFINED, WRONG_AXIS_TYPE
 from nck.errors import NcAlarmError
 from nck.geometry.chain import frame_from_work_offset
+from nck.geometry.frame_functions import GeoFrameValue, as_frame
 from nck.geometry.frames import Frame, as_matrix3, rpy_matrix
 from nck.lang.values import FrameValue, to_number
 from nck.ncdata import WorkOffset
@@ -210,8 +211,6 @@ def _guard_stored(interp: Any, name: str, code: str | None) -> None:
 # --------------------------------------------------------------------------- whole frames
 def _whole_frame_read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
     """``$P_PFRAME``, ``$P_IFRAME``, ``$P_UBFR``, ``$P_UIFR[n]`` as FRAME values (None: not whole)."""
-    from nck.geometry.frame_functions import GeoFrameValue
-
     path = interp.builder.path
     modal = interp.modal
     frame: Frame | None = None
@@ -232,8 +231,6 @@ def _whole_frame_read(interp: Any, name: str, indices: tuple[Any, ...]) -> Any:
 
 
 def _whole_frame_write(interp: Any, name: str, indices: tuple[Any, ...], value: Any) -> None:
-    from nck.geometry.frame_functions import as_frame
-
     frame = as_frame(value, name)
     path = interp.builder.path
     modal = interp.modal

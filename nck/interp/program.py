@@ -20,6 +20,8 @@ from array import array
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
+import numpy as np
+
 from nck.alarm_ids import (
     CONTROL_STRUCTURES_NOT_NESTED, CONTROL_STRUCTURES_TOO_DEEP, DEFINITION_AFTER_STATEMENT,
     G_FUNCTION_UNKNOWN, G_GROUP_PROGRAMMED_TWICE, JUMP_TARGET_NOT_FOUND, LABEL_DEFINED_TWICE,
@@ -257,8 +259,6 @@ def line_checkpoints(text: str) -> array:
     """Offsets of the starts of lines 0, 64, 128, … of ``text``."""
     step = CHECKPOINT_LINES
     if text.isascii() and len(text) > 4096:
-        import numpy as np
-
         found = array("q", [0])
         seen = 0  # line ends before the window
         window = 1 << 20

@@ -16,7 +16,7 @@ Supported now:
   the edge);
 * ``$MN_…``, ``$MC_…``, ``$MA_…[ax]``, ``$SN_``/``$SC_``/``$SA_`` — machine and setting
   data read from the machine configuration (``MD<number>`` keys), by identifier via the
-  machine-data catalogue when it exists, else via :data:`FALLBACK_MD_NUMBERS`.
+  machine-data catalogue, else via :data:`FALLBACK_MD_NUMBERS`.
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ from nck.interp.modal import ModalState
 from nck.lang.values import Axis, to_number
 from nck.lang.dialect import Dialect, InterpreterContext
 from nck.machine import MachineConfig
+from nck.machine_data import catalog, number_of
 from nck.ncdata import NcData
 from nck.lang.gcodes import gtable
 
@@ -235,27 +236,13 @@ def _gg(ctx: SysContext, indices: tuple[Any, ...]) -> int:
 
 def md_number(identifier: str) -> int | None:
     """Number of an MD/SD identifier (``MAX_AX_VELO`` → 32000), or None."""
-    try:  # the machine-data catalogue, once it exists, is the authority
-        from nck import machine_data  # type: ignore[attr-defined]
-
-        lookup = getattr(machine_data, "number_of", None)
-        if lookup is not None:
-            found = lookup(identifier)
-            if found is not None:
-                return int(found)
-    except Exception:  # noqa: BLE001 - catalogue missing or still under construction
-        pass
-    return FALLBACK_MD_NUMBERS.get(identifier)
+    found = number_of(identifier)  # the machine-data catalogue is the authority
+    return found if found is not None else FALLBACK_MD_NUMBERS.get(identifier)
 
 
 def _catalog_definition(name: str) -> Any:
     """The machine-data catalogue entry of ``$MC_…``-style names, or None."""
-    try:
-        from nck.machine_data import catalog
-
-        return catalog().get("$" + name.lstrip("$"))
-    except Exception:  # noqa: BLE001 - catalogue missing or still under construction
-        return None
+    return catalog().get("$" + name.lstrip("$"))
 
 
 def _from_catalog(ctx: SysContext, name: str, definition: Any, indices: tuple[Any, ...]) -> Any:

@@ -389,6 +389,7 @@ def test_the_editor_check_skips_the_parser_for_plain_lines(monkeypatch: pytest.M
         return original(text, line)
 
     monkeypatch.setattr(parser_module, "parse_block", spy)
+    monkeypatch.setattr(check, "parse_block", spy)
     check._line_problem.cache_clear()
     alarms = list(check.iter_syntax_alarms("G1 X1 Y2 F100\nN20 G0 Z-5\nX1..5\nR1=2\n"))
     assert [(a.number, a.line) for a in alarms] == [(12080, 3)]

@@ -139,6 +139,7 @@ def test_the_scan_and_the_editor_check_parse_no_cam_arc(monkeypatch: pytest.Monk
 
     monkeypatch.setattr(parser_module, "parse_block", spy)
     monkeypatch.setattr(program_module, "parse_block", spy)
+    monkeypatch.setattr(check, "parse_block", spy)
     check._line_problem.cache_clear()
     list(check.iter_syntax_alarms(text))
     program_module._RECENT.clear()
