@@ -152,6 +152,20 @@ def cycle_edges(graph: Mapping[str, set[str]]) -> set[tuple[str, str]]:
     return edges
 
 
+KERNEL_PACKAGES_BELOW: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("nck.lang", ("nck.interp", "nck.iso", "nck.geometry", "nck.motion", "nck.simulation")),
+    ("nck.geometry", ("nck.interp", "nck.iso", "nck.motion", "nck.simulation")),
+    ("nck.iso", ("nck.interp", "nck.motion", "nck.simulation")),
+    ("nck.interp", ("nck.iso", "nck.motion", "nck.simulation")),
+    ("nck.motion", ("nck.lang", "nck.interp", "nck.iso", "nck.geometry", "nck.simulation")),
+)
+"""The kernel's packages and the ones they may not import (issue 21's map, ``one-door.md``):
+``interp -> {lang, geometry, canon}`` and never ``iso``; ``iso -> {lang, geometry}``, a front
+end the interpreter does not know; ``geometry -> lang``; ``lang`` is the bottom; the motion
+system takes canonical motion and machine data only. The simulation and the kernel's own
+modules sit above them all."""
+
+
 @dataclass(frozen=True)
 class LayerRules:
     """What may import what; each rule yields (importer, imported) module pairs that break it."""
@@ -163,8 +177,8 @@ class LayerRules:
     hmi: str = "hmi"
     screens: str = "screens"
     areas: tuple[str, ...] = ()
-    interpreter: str = "nck.interp"
-    dialect: str = "nck.iso"
+    below: tuple[tuple[str, tuple[str, ...]], ...] = KERNEL_PACKAGES_BELOW
+    """(kernel package, the kernel packages it may not import): the arrows of issue 21's map."""
 
     def area_of(self, module: str) -> str:
         """The operating area a ``screens`` module belongs to: the longest area id its name starts with.
@@ -188,7 +202,8 @@ class LayerRules:
         if in_package(importer, self.kernel):
             if any(in_package(imported, package) for package in self.forbidden_in_kernel):
                 return True
-            return in_package(importer, self.interpreter) and in_package(imported, self.dialect)
+            return any(in_package(importer, package) and any(in_package(imported, above) for above in others)
+                       for package, others in self.below)
         if not any(in_package(importer, package) for package in self.ui_packages):
             return False
         if in_package(imported, self.kernel):

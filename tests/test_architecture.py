@@ -3,7 +3,10 @@
 The rules (the rules of the house and issue 21's target map):
 
 - ``nck/`` imports no UI library, no wall clock and no threads; it never imports ``hmi``/``screens``.
-- ``nck.interp`` never imports ``nck.iso`` (the dialect sits in front of the interpreter).
+- The kernel's packages import downwards only (``tests/import_graph.KERNEL_PACKAGES_BELOW``):
+  ``nck.interp`` never imports ``nck.iso`` (the dialect sits in front of the interpreter),
+  ``nck.iso`` and ``nck.geometry`` never the interpreter, ``nck.lang`` none of them, the motion
+  system no language or geometry.
 - ``hmi/`` and ``screens/`` import the kernel only through its façade (``nck``, ``nck.commands``,
   ``nck.status``, ``nck.queries``); ``hmi/`` reads only the ``screens`` registry, not an area's
   module; a screen never imports the module of another operating area.
@@ -164,8 +167,11 @@ def test_every_layer_rule_reports_its_break(tmp_path: Path) -> None:
             "nck/kernel.py": "def f():\n    import textual.app\n    from hmi import bridge\n",
             "nck/commands.py": "",
             "nck/interp/block_run.py": "from nck.iso.macros import expand\nfrom nck.lang import parser\n",
-            "nck/iso/macros.py": "from nck.interp import block_run\n",
-            "nck/lang/parser.py": "",
+            "nck/iso/macros.py": "from nck.interp import block_run\nfrom nck.geometry import frames\n",
+            "nck/lang/parser.py": "from nck.geometry.frames import Frame\n",
+            "nck/geometry/frames.py": "from nck.lang import parser\nfrom nck.motion import servo\n",
+            "nck/motion/servo.py": "from nck.canon import Motion\nfrom nck.lang.values import REAL\n",
+            "nck/canon.py": "",
             "hmi/bridge.py": "from nck.kernel import Nck\nfrom nck import commands\nfrom screens import AREAS\n",
             "hmi/app.py": "from screens.machine import AreaScreen\n",
             "screens/program.py": "from screens.program_edit import EditActions\nfrom nck.status import NckStatus\n",
@@ -181,6 +187,10 @@ def test_every_layer_rule_reports_its_break(tmp_path: Path) -> None:
         ("nck.kernel", "textual.app"),
         ("nck.kernel", "hmi.bridge"),
         ("nck.interp.block_run", "nck.iso.macros"),
+        ("nck.iso.macros", "nck.interp.block_run"),
+        ("nck.lang.parser", "nck.geometry.frames"),
+        ("nck.geometry.frames", "nck.motion.servo"),
+        ("nck.motion.servo", "nck.lang.values"),
         ("hmi.bridge", "nck.kernel"),
         ("hmi.app", "screens.machine"),
         ("screens.program_edit", "screens.machine"),
