@@ -40,7 +40,7 @@ from nck.interp.interpreter import Interpreter
 from nck.interp.program import load_program
 from nck.iso.dialect import dialect_for
 from nck.lang.parser import parse_block
-from nck.lang.plain import parses_without_alarm
+from nck.lang.plain import NOT_SIMPLE_LINE
 from nck.machine import load_machine
 from nck.motion.system import PlannedMotion
 from nck.ncdata import NcData
@@ -108,10 +108,9 @@ def _alarm(error: NcAlarmError, fallback_line: int | None = None) -> CheckAlarm:
 def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
     """Parse one line; return (alarm number, params, block number) or None (cached by text).
 
-    The cache makes re-checking an edited program cost only the changed lines.
+    The cache makes re-checking an edited program cost only the changed lines. The syntax pass
+    asks only about lines that are not simple motion lines (those are valid without the parser).
     """
-    if parses_without_alarm(line):  # plain and simple motion blocks are valid without the parser
-        return None
     try:
         parse_block(line, 1)
     except NcAlarmError as error:
@@ -121,25 +120,49 @@ def _line_problem(line: str) -> tuple[int, tuple[str, ...], int | None] | None:
     return None
 
 
+SCAN_CHUNK_CHARS = 1 << 16
+"""The syntax pass scans the text in pieces of about this many characters (whole lines), so that
+``should_stop`` is polled between them."""
+
+
 def iter_syntax_alarms(
     text: str, should_stop: Callable[[], bool] | None = None
 ) -> Iterator[CheckAlarm]:
     """Yield a syntax alarm for every line the block parser refuses (pass 1).
 
-    ``should_stop`` is polled every 16 lines; True ends the pass early.
+    Stretches of simple motion lines (valid without the parser) are skipped by one pattern
+    scan; the other lines are parsed. ``should_stop`` is polled before every piece of the scan
+    and every 16 parsed lines; True ends the pass early.
     """
-    for index, line in enumerate(text.split("\n"), start=1):
-        if should_stop is not None and index % 16 == 0 and should_stop():
+    index = 0  # 0-based line of ``counted_to``
+    counted_to = 0
+    position, size = 0, len(text)
+    parsed = 0
+    while position < size:
+        if should_stop is not None and should_stop():
             return
-        if not line.strip():
-            continue
-        problem = _line_problem(line)
-        if problem is not None:
-            number, params, n = problem
-            if n is None:
-                block = _BLOCK_NUMBER.match(line)
-                n = int(block.group(1)) if block else None
-            yield _alarm(NcAlarmError(number, *params, line=index, n=n), index)
+        end = text.find("\n", position + SCAN_CHUNK_CHARS)
+        end = size if end < 0 else end + 1
+        for found in NOT_SIMPLE_LINE.finditer(text, position, end):
+            line = found.group(1)
+            if not line:
+                break  # the end of the piece (a line that is not simple is never empty)
+            begin = found.start(1)
+            index += text.count("\n", counted_to, begin)
+            counted_to = begin
+            parsed += 1
+            if should_stop is not None and parsed % 16 == 0 and should_stop():
+                return
+            if not line.strip():
+                continue
+            problem = _line_problem(line)
+            if problem is not None:
+                number, params, n = problem
+                if n is None:
+                    block = _BLOCK_NUMBER.match(line)
+                    n = int(block.group(1)) if block else None
+                yield _alarm(NcAlarmError(number, *params, line=index + 1, n=n), index + 1)
+        position = end
 
 
 def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:

@@ -85,6 +85,11 @@ the lexer; what it means is decided by the interpreter. Groups: 1 N, 2-5 the G w
 SIMPLE_LINE = re.compile(SIMPLE_PATTERN)
 """Full-match this against one line."""
 
+NOT_SIMPLE_LINE = re.compile(rf"(?:{re.sub(r'[(](?![?])', '(?:', SIMPLE_PATTERN)}(?:\n|\Z))*+([^\n]*)")
+"""As :data:`NOT_PLAIN_LINE` for simple lines: ``finditer`` over a text (from a line start, up to
+a line start or the text's end) → per match, group 1 is the next line that is *not* simple ('' at
+the end); the simple lines before it are skipped in one go."""
+
 
 def simple_words(found: re.Match[str]) -> tuple[list[str], list[tuple[str, int | float]]]:
     """The words of a :data:`SIMPLE_LINE` match as the parser reads them: the normalised G

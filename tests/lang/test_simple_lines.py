@@ -16,6 +16,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from nck.errors import NcAlarmError
 from nck.interp import program as program_module
 from nck.lang import ast
 from nck.lang.parser import parse_block
@@ -146,3 +147,38 @@ def test_the_scan_and_the_editor_check_parse_no_cam_arc(monkeypatch: pytest.Monk
     load_program("ARCS.MPF", text)
     program_module._RECENT.clear()
     assert parsed == ["N50 G2 X1 IF", "N50 G2 X1 IF"]
+
+
+BLOCK_NUMBER = re.compile(r"\s*(?:/\d?\s*)?[Nn](\d+)\b")
+
+
+def _each_line_parsed(text: str) -> list[tuple[int, int | None, tuple[str, ...], int | None]]:
+    """The syntax alarms of ``text`` found by giving every non-blank line to the parser."""
+    found = []
+    for number, line in enumerate(text.split("\n"), start=1):
+        if not line.strip():
+            continue
+        try:
+            parse_block(line, 1)
+        except NcAlarmError as error:
+            block = BLOCK_NUMBER.match(line)
+            n = error.n if error.n is not None else (int(block.group(1)) if block else None)
+            found.append((error.number, number, error.params, n))
+    return found
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.one_of(simple_lines(), st.sampled_from(OTHER + ["X=", "G1 X1 X2", "N12 G1 Y", "\r", "  "])),
+                min_size=1, max_size=40),
+       st.sampled_from(["\n", "\r\n"]), st.booleans(), st.sampled_from([1, 7, 40, 1 << 16]))
+def test_the_syntax_pass_skipping_simple_lines_finds_what_parsing_every_line_finds(
+        lines: list[str], end: str, last_end: bool, chunk: int) -> None:
+    """The editor's syntax pass scans past stretches of simple lines in pieces of ``chunk``
+    characters; it must report every faulty line, at its line number, as parsing each line does."""
+    from nck import check
+
+    text = end.join(lines) + (end if last_end else "")
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(check, "SCAN_CHUNK_CHARS", chunk)
+        skipping = [(a.number, a.line, a.params, a.n) for a in check.iter_syntax_alarms(text)]
+    assert skipping == _each_line_parsed(text), text
