@@ -394,6 +394,13 @@ class Nck:
         """Displayed machine positions (program test: the simulated ones)."""
         return dict(self._display_motion().positions_mcs())
 
+    def axis_states(self) -> dict[str, Any]:
+        """Read-only: the drives' service values per path axis of the displayed motion
+        (``nck.motion.servo.AxisState``; program test: the simulated one), empty when the
+        motion system has none (the stand-in)."""
+        getter = getattr(self._display_motion(), "axis_states", None)
+        return dict(getter()) if getter is not None else {}
+
     def status(self) -> NckStatus:
         """The immutable snapshot, built once after each command or kernel step (not once per
         call) and when state shared with other doors changed (:meth:`_outside_revisions`);

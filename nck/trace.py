@@ -116,8 +116,7 @@ def _reader(signal: str) -> Callable[[Any, dict[str, Any]], float]:
 
     def states(nck: Any, cache: dict[str, Any]) -> dict[str, Any]:
         if "states" not in cache:
-            getter = getattr(nck._display_motion(), "axis_states", None)
-            cache["states"] = getter() if getter is not None else {}
+            cache["states"] = nck.axis_states()
         return cache["states"]
 
     if quantity == "position":
