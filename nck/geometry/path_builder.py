@@ -103,6 +103,7 @@ class PathBuilder:
         self.frame_fine_configured = bool(machine.md_value("MD18600", default=1))
         self.basic_metric = bool(machine.md_value("MD10240", default=1))
         self._no_tool: Mapping[str, float] = {axis: 0.0 for axis in self.geo_axes}  # read only
+        self._display_axes: dict[str | None, tuple[tuple[str, bool, bool], ...]] = {}  # by G group 29 code
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -217,7 +218,7 @@ class PathBuilder:
                  units: UnitSystem) -> dict[str, float]:
         """:meth:`from_mm` of every path axis (0 where ``values_mm`` has none), the same operations."""
         code = gcodes.get(29)
-        table = self.__dict__.setdefault("_display_axes", {})
+        table = self._display_axes
         axes = table.get(code)
         if axes is None:  # (axis, is a length, shown as a diameter) per path axis
             diameter = code in ("DIAMON", "DIAM90")
