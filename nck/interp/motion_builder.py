@@ -61,6 +61,8 @@ ALARM_PATH_VELOCITY = 14800
 ALARM_ADDRESS_TOO_OFTEN = 12010  # address type programmed too often
 AUX_LIMITS = {"M": 5, "S": 3, "H": 3, "T": 1, "D": 1, "F": 6}  # per block (H2, 828D)
 AUX_LIMIT_TOTAL = 10
+AUX_WORDS_WITHIN_LIMITS = min(AUX_LIMITS["F"], AUX_LIMIT_TOTAL)
+"""A block without M, H and extended words and with at most this many others keeps every limit."""
 CIRCLE_WORDS = ("CR", "AR", "TURN")  # radius, opening angle, helix turns: G2/G3 only
 CENTRE_WORDS = ("I", "J", "K")  # interpolation parameters: a circle's centre or a thread's lead
 LINEAR_KINDS = ("G0", "G1")  # straight lines, where I/J/K mean nothing (001 L3137-3155)
@@ -700,8 +702,7 @@ def _check_aux_limits(words: BlockWords) -> None:
     Raises:
         NcAlarmError: 12010 (address type programmed too often) naming the address.
     """
-    if not (words.m_codes or words.h_codes or words.extended) \
-            and len(words.words) <= min(AUX_LIMITS["F"], AUX_LIMIT_TOTAL):
+    if not (words.m_codes or words.h_codes or words.extended) and len(words.words) <= AUX_WORDS_WITHIN_LIMITS:
         return  # S, T, D at most once each (every limit ≥ 1), F/FA and the total at most len(words)
     counts = {
         "M": len(words.m_codes),
