@@ -38,6 +38,7 @@ from hmi.key_settle import BindingsInPlace
 from hmi.panel_keys import PanelKey, PanelKeys
 from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalSoftkeys
 from hmi.widgets.header import AreaHeader
+from hmi.widgets.shown_text import show_text
 
 if TYPE_CHECKING:
     from hmi.host import AreaHost
@@ -53,18 +54,6 @@ TOO_SMALL_TEXT = N_("The panel needs a terminal of at least {columns} × {rows} 
 
 class DialogLine(Static):
     """The line above the horizontal softkeys: operator hints and refused commands."""
-
-
-def show_text(widget: Static, content: object) -> None:
-    """Update a fixed-size Static only when ``content`` differs from what it shows.
-
-    No layout pass is made: area windows have fixed sizes, so a refresh repaints
-    just the widget (this keeps a refresh well under the 15 ms CPU budget).
-    """
-    if getattr(widget, "_shown_content", None) == content:
-        return
-    widget._shown_content = content  # type: ignore[attr-defined]
-    widget.update(content, layout=False)  # type: ignore[arg-type]
 
 
 class AreaBase(BindingsInPlace):
@@ -248,10 +237,7 @@ class AreaBase(BindingsInPlace):
     def show_hint(self, text: str) -> None:
         """Write ``text`` on the dialog line (empty clears it)."""
         if self.is_mounted:
-            line = self.query_one(DialogLine)
-            if getattr(line, "_last_text", None) != text:
-                line._last_text = text  # type: ignore[attr-defined]
-                line.update(text, layout=False)
+            show_text(self.query_one(DialogLine), text)
 
     def say(self, text: str) -> None:
         """Write ``text`` on this area's dialog line and keep it when the area is shown again.

@@ -11,6 +11,7 @@ from nck.status import AlarmEntry, NckStatus
 
 from hmi.i18n import N_, _, alarm_text
 from hmi.messages import AlarmLineClicked
+from hmi.widgets.shown_text import show_text
 
 CHANNEL_STATE_TEXT = {
     "reset": N_("Channel reset"),
@@ -174,7 +175,4 @@ class AreaHeader(Vertical):
 
     @staticmethod
     def _set(widget: Static, text: str) -> None:
-        # every header field has a fixed size (hmi.tcss), so a new text needs no new layout
-        if getattr(widget, "_last_text", None) != text:
-            widget._last_text = text  # type: ignore[attr-defined]
-            widget.update(text, layout=False)
+        show_text(widget, text)  # every header field has a fixed size (hmi.tcss): no new layout
