@@ -46,6 +46,8 @@ def reports_dir_of(reports_dir: str | None, data_dir: str | None) -> Path:
 
 EXAM_HELP_LIMITED = N_("Exam: help is limited to the key overview (F11)")
 """Said instead of opening the command palette or an alarm's help during an exam."""
+CLASS_PACK_COUNTS = (N_("{count} exercise"), N_("{count} exercises"), N_("{count} program"), N_("{count} programs"))
+"""The texts of ``ClassPack.summary`` (nck.class_pack), which the panel translates through it."""
 
 
 class ExerciseRun:
@@ -241,10 +243,8 @@ class ClassroomHost:
             return _("Class pack not imported: {error}").format(error=exc)
         except OSError as exc:
             return _("Class pack not imported: {error}").format(error=f"{exc.filename}: {exc.strerror or exc}")
-        exercises, programs = len(pack.exercises), len(pack.programs)
-        summary = ", ".join(((_("{count} exercise") if exercises == 1 else _("{count} exercises")).format(count=exercises),
-                             (_("{count} program") if programs == 1 else _("{count} programs")).format(count=programs)))
-        return _("Class pack imported: {summary} ({files} files new or changed)").format(summary=summary, files=len(written))
+        return _("Class pack imported: {summary} ({files} files new or changed)").format(
+            summary=pack.summary(_), files=len(written))
 
     def _class_dir(self) -> Path | None:
         """Where class packs are listed from and imported into (see :attr:`class_pack_dir`)."""

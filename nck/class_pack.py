@@ -31,7 +31,7 @@ import re
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Iterable, Mapping
+from typing import Any, Callable, Iterable, Mapping
 
 from nck.atomic import atomic_write_bytes, atomic_write_text
 from nck.exercise import (
@@ -60,11 +60,13 @@ class ClassPack:
     exercises: Mapping[str, str]
     programs: Mapping[str, bytes]
 
-    def summary(self) -> str:
-        """What the pack holds, in words ("2 exercises, 1 program")."""
-        def counted(count: int, word: str) -> str:
-            return f"{count} {word}" + ("" if count == 1 else "s")
-        return f"{counted(len(self.exercises), 'exercise')}, {counted(len(self.programs), 'program')}"
+    def summary(self, translate: Callable[[str], str] = str) -> str:
+        """What the pack holds, in words ("2 exercises, 1 program"); ``translate`` gives each
+        count's text in the language shown (the panel's gettext; the command line's English)."""
+        def counted(count: int, one: str, more: str) -> str:
+            return translate(one if count == 1 else more).format(count=count)
+        return ", ".join((counted(len(self.exercises), "{count} exercise", "{count} exercises"),
+                          counted(len(self.programs), "{count} program", "{count} programs")))
 
 
 def _program_names(exercise: Exercise) -> list[str]:
