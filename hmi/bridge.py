@@ -25,7 +25,7 @@ from nck.commands import Accepted, EnterPassword, Rejected, SubmitResult
 from nck.status import NckStatus
 
 from hmi.alarm_times import AlarmTimes
-from hmi.messages import AlarmLogged, CommandRejected, NckStatusChanged
+from hmi.messages import CommandRejected, NckStatusChanged
 from hmi.utilisation import UtilisationMeter
 
 REFRESH_PERIOD_S = 0.05
@@ -182,24 +182,24 @@ class NckBridge:
         recorder.attach(self.nck)
 
     def poll(self, force: bool = False) -> NckStatus:
-        """Read the snapshot; post it when ``seq`` changed, and post new log entries."""
+        """Read the snapshot; post it when ``seq`` changed, and stamp new log entries with the
+        wall clock (:attr:`alarm_times`)."""
         status = self.nck.status()
         self._status = status
         if force or status.seq != self._last_seq:
             self._last_seq = status.seq
             self.refresh_count += 1
             self._post(NckStatusChanged(status))
-        self._post_new_log_entries()
+        self._stamp_new_log_entries()
         return status
 
-    def _post_new_log_entries(self) -> None:
+    def _stamp_new_log_entries(self) -> None:
         reader = getattr(self.nck, "alarm_log_since", None)
         if not callable(reader):
             return
         for entry in reader(self._last_log_seq):
             self._last_log_seq = max(self._last_log_seq, entry.seq)
             self.alarm_times.record(entry)
-            self._post(AlarmLogged(entry))
         self.alarm_times.record_logbook(len(getattr(self.nck, "logbook", ()) or ()))
 
     def _password_delay_s(self) -> float:

@@ -9,7 +9,7 @@ from __future__ import annotations
 from textual.message import Message
 
 from nck.commands import Rejected
-from nck.status import AlarmEntry, NckStatus
+from nck.status import NckStatus
 
 
 class NckStatusChanged(Message):
@@ -33,14 +33,6 @@ class CommandRejected(Message):
         self.refusal = refusal
         self.reason = refusal.reason
         self.alarm = refusal.alarm
-
-
-class AlarmLogged(Message):
-    """A new entry appeared in the kernel's alarm/message log."""
-
-    def __init__(self, entry: AlarmEntry) -> None:
-        super().__init__()
-        self.entry = entry
 
 
 class TerminalClosed(Message):
