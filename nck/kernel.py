@@ -30,6 +30,7 @@ import traceback
 from dataclasses import replace
 from typing import Any, Callable, Collection
 
+from nck.alarm_ids import INTERNAL_ERROR
 from nck import commands as cmd
 from nck.access import AccessControl, AccessState, Action
 from nck.alarms import AlarmServer
@@ -71,7 +72,6 @@ from nck.status import AlarmEntry, AlarmEvent, LogbookEntry, NckStatus
 DEFAULT_IPO_S = 0.004
 DEFAULT_BATCH_CYCLES = 2500  # IPO cycles per motion step at most (10 s at 4 ms)
 LEGACY_BATCH_CYCLES = 16  # per step for motion systems without block events (stand-in, JOG)
-ALARM_INTERNAL = 1
 ALARM_EMERGENCY_STOP = 3000
 ALARM_START_WITH_ALARM = 10200
 ALARM_START_UNREFERENCED = 10203
@@ -249,7 +249,7 @@ class Nck:
             return Rejected(entry.text, alarm=error.number, alarm_params=tuple(entry.params))
         except Exception as exc:  # noqa: BLE001 - every bug becomes alarm 1
             self._internal_error(exc)
-            return refuse("internal_error", alarm=ALARM_INTERNAL)
+            return refuse("internal_error", alarm=INTERNAL_ERROR)
         finally:
             self._snapshot = None
 
@@ -1016,7 +1016,7 @@ class Nck:
         self.internal_errors.append(traceback.format_exc())
         text = f"{type(exc).__name__}: {exc}"[:120]
         try:
-            self.alarms.raise_alarm(ALARM_INTERNAL, (text,), now_s=self._time_s)
+            self.alarms.raise_alarm(INTERNAL_ERROR, (text,), now_s=self._time_s)
         except Exception:  # noqa: BLE001 - the alarm server itself failed
             pass
 

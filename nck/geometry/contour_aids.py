@@ -19,11 +19,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from nck.alarm_ids import CHAMFER_OR_ROUNDING_NEGATIVE
 from nck.errors import NcAlarmError
 from nck.geometry.circles import Arc, plane_arc
 from nck.geometry.planes import Plane
 
-ALARM_CHAMFER_NEGATIVE = 16500  # chamfer or rounding negative
 
 Vec3 = tuple[float, float, float]
 Vec2 = tuple[float, float]
@@ -159,7 +159,7 @@ def corner_turn(first: FlatElement, second: FlatElement) -> tuple[float, float]:
 
 def _check(value: float) -> None:
     if value < 0.0:
-        raise NcAlarmError(ALARM_CHAMFER_NEGATIVE)
+        raise NcAlarmError(CHAMFER_OR_ROUNDING_NEGATIVE)
 
 
 # --- chamfer ------------------------------------------------------------------------------

@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from nck.alarm_ids import NAME_NOT_DEFINED, TYPE_CONVERSION_IMPOSSIBLE
+from nck.alarm_ids import NAME_NOT_DEFINED, TYPE_CONVERSION_IMPOSSIBLE, WRONG_CALL_ARGUMENTS
 from nck.errors import NcAlarmError
 from nck.geometry.frames import Frame
 from nck.geometry.planes import Plane, plane
@@ -27,7 +27,6 @@ from nck.lang.values import FrameValue
 
 NAMES = frozenset(("CTRANS", "CROT", "CRPL", "CSCALE", "CMIRROR", "CFINE"))
 CRPL_AXIS_INDEX = {1: 2, 2: 1, 3: 0}  # CRPL plane number → geometry axis index rotated about
-ALARM_PARAMETERS = 14020  # wrong value or number of parameters in a function call
 
 
 @dataclass
@@ -46,13 +45,13 @@ def call(name: str, args: Sequence[Any], length_mm: float = 1.0,
         axes = [_axis(a, name) for a in args]
         return _value(Frame.cmirror(axes))
     if len(args) % 2:
-        raise NcAlarmError(ALARM_PARAMETERS, name)
+        raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
     pairs: dict[str, float] = {}
     for i in range(0, len(args), 2):
         axis = _axis(args[i], name)
         value = args[i + 1]
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise NcAlarmError(ALARM_PARAMETERS, name)
+            raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
         pairs[axis] = float(value)
     if name == "CTRANS":
         return _value(Frame.ctrans({a: v * length_mm for a, v in pairs.items()}))
@@ -68,12 +67,12 @@ def call(name: str, args: Sequence[Any], length_mm: float = 1.0,
 def _crpl(args: Sequence[Any], active_plane: Plane) -> Frame:
     """``CRPL(plane, angle)``: rotation in the active plane (0) or about Z (1), Y (2), X (3) (002 L28005-28020)."""
     if len(args) != 2 or any(isinstance(a, bool) or not isinstance(a, (int, float)) for a in args):
-        raise NcAlarmError(ALARM_PARAMETERS, "CRPL")
+        raise NcAlarmError(WRONG_CALL_ARGUMENTS, "CRPL")
     number, angle = args
     if number == 0:
         return Frame.crpl(active_plane, float(angle))
     if number not in CRPL_AXIS_INDEX:
-        raise NcAlarmError(ALARM_PARAMETERS, "CRPL")
+        raise NcAlarmError(WRONG_CALL_ARGUMENTS, "CRPL")
     axes = active_plane.geometry_axes
     return Frame.crot({axes[CRPL_AXIS_INDEX[int(number)]]: float(angle)}, axes)
 
@@ -98,5 +97,5 @@ def _value(frame: Frame) -> GeoFrameValue:
 
 def _axis(value: Any, name: str) -> str:
     if not isinstance(value, str) or not value:
-        raise NcAlarmError(ALARM_PARAMETERS, name)
+        raise NcAlarmError(WRONG_CALL_ARGUMENTS, name)
     return str(value)

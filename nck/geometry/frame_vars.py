@@ -22,7 +22,7 @@ from __future__ import annotations
 import copy
 from typing import Any
 
-from nck.alarm_ids import DATA_WRITE_PROTECTED, NAME_NOT_DEFINED, WRONG_AXIS_TYPE
+from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED, WRONG_AXIS_TYPE
 from nck.errors import NcAlarmError
 from nck.geometry.chain import frame_from_work_offset
 from nck.geometry.frame_functions import GeoFrameValue, as_frame
@@ -34,7 +34,6 @@ from nck.writes import ValueOutOfLimits, check_frame_component
 COMPONENTS = frozenset(("TR", "FI", "RT", "SC", "MI"))
 NAMES = frozenset(("$P_UIFR", "$P_PFRAME", "$P_UBFR", "$P_IFRAME", "$P_UIFRNUM", "$AA_IW", "$P_SETFR"))
 SETFR_MASK_BIT = 1  # MD28082 bit 0: the system frame for PRESET and scratching is configured
-ALARM_INDEX = 17020  # illegal array index
 ALARM_SCALE_ZERO = 18309
 
 
@@ -46,7 +45,7 @@ def settable_code(index: int) -> str:
         return f"G{53 + index}"
     if 5 <= index <= 99:
         return f"G{500 + index}"
-    raise NcAlarmError(ALARM_INDEX, "$P_UIFR")
+    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, "$P_UIFR")
 
 
 def settable_index(code: str) -> int:
@@ -171,7 +170,7 @@ def _setframe_address(interp: Any, name: str, indices: tuple[Any, ...]) -> tuple
         raise NcAlarmError(NAME_NOT_DEFINED, name)
     axis, comp = _address(interp, name, indices)
     if comp != "TR":
-        raise NcAlarmError(ALARM_INDEX, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return axis, comp
 
 
@@ -251,7 +250,7 @@ def _whole_frame_write(interp: Any, name: str, indices: tuple[Any, ...], value: 
         _guard_stored(interp, name, code)
         interp.data.settable_frames[code] = _checked_offset(name, frame)
         return
-    raise NcAlarmError(ALARM_INDEX, name)
+    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
 
 
 def _checked_offset(name: str, frame: Frame) -> WorkOffset:
@@ -277,30 +276,30 @@ def work_offset_of(frame: Frame) -> WorkOffset:
 
 # --------------------------------------------------------------------------- helpers
 def _bad(name: str) -> Any:
-    raise NcAlarmError(ALARM_INDEX, name)
+    raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
 
 
 def _int(value: Any, name: str) -> int:
     number = to_number(value, name)
     if int(number) != number:
-        raise NcAlarmError(ALARM_INDEX, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return int(number)
 
 
 def _axis(interp: Any, name: str, indices: tuple[Any, ...]) -> str:
     axis = indices[0]
     if not isinstance(axis, str) or axis not in interp.machine.path_axes and axis not in ("X", "Y", "Z"):
-        raise NcAlarmError(ALARM_INDEX, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return str(axis)
 
 
 def _address(interp: Any, name: str, indices: tuple[Any, ...]) -> tuple[str, str]:
     if len(indices) != 2:
-        raise NcAlarmError(ALARM_INDEX, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     axis = _axis(interp, name, indices[:1])
     comp = str(indices[1]).upper()
     if comp not in COMPONENTS:
-        raise NcAlarmError(ALARM_INDEX, name)
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
     return axis, comp
 
 

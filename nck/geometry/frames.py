@@ -39,6 +39,7 @@ from typing import Iterable, Mapping
 
 import numpy as np
 
+from nck.alarm_ids import WRONG_AXIS_TYPE
 from nck.errors import NcAlarmError
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane
 from nck.geometry.transform import Transform
@@ -47,7 +48,6 @@ from nck.geometry.transform import Transform
 # number for it; this project uses 18309 (see data/alarms/geometry.toml).
 ALARM_FRAME_SCALE_ZERO = 18309
 # Rotation about an axis that is not a geometry axis: "axis is wrong axis type".
-ALARM_WRONG_AXIS_TYPE = 14092
 
 Matrix3 = tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
 IDENTITY3: Matrix3 = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
@@ -158,7 +158,7 @@ class Frame:
         angles = [0.0, 0.0, 0.0]
         for axis, value in angles_deg.items():
             if axis not in geometry_axes:
-                raise NcAlarmError(ALARM_WRONG_AXIS_TYPE, axis)
+                raise NcAlarmError(WRONG_AXIS_TYPE, axis)
             angles[geometry_axes.index(axis)] = float(value)
         matrix = rpy_matrix((angles[0], angles[1], angles[2]))
         return cls(geometry_axes=geometry_axes, rotation=as_matrix3(matrix))

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from nck.alarm_ids import CHAMFER_OR_ROUNDING_NEGATIVE
+from nck.alarm_ids import CHAMFER_OR_ROUNDING_NEGATIVE, CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION
 from nck import canon
 from nck.errors import NcAlarmError
 from nck.geometry.circles import Arc
@@ -23,7 +23,6 @@ from nck.geometry.rounding_distance import AID, criterion_mm, limit_feed, round_
 from nck.geometry.planes import Plane
 from nck.geometry.units import UnitSystem
 
-ALARM_AID_WITHOUT_MOTION = 10882  # chamfer/rounding programmed in a block without path motion
 
 
 def aid_of(words: Any, geo: GeometryState, units: UnitSystem) -> tuple[str, float] | None:
@@ -87,7 +86,7 @@ def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
         return out
     if aid is not None and not in_plane and ("CHF" in words.words or "CHR" in words.words
                                              or "RND" in words.words):
-        raise NcAlarmError(ALARM_AID_WITHOUT_MOTION)
+        raise NcAlarmError(CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION)
     out.append(builder.emit(element, context, start_mcs))
     return out
 

@@ -24,12 +24,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+from nck.alarm_ids import VALUE_RANGE_EXCEEDED
 from nck.errors import NcAlarmError
 
 Vec2 = tuple[float, float]
 
 # A polar radius must not be negative: reported as "value range exceeded" (12160).
-ALARM_POLAR_RADIUS_NEGATIVE = 12160
 POLE_CODES = ("G110", "G111", "G112")
 
 
@@ -88,7 +88,7 @@ class PolarState:
     def with_values(self, radius_mm: float | None = None, angle_deg: float | None = None) -> "PolarState":
         """Return the state with a new modal ``RP`` and/or ``AP`` (absolute values)."""
         if radius_mm is not None and radius_mm < 0.0:
-            raise NcAlarmError(ALARM_POLAR_RADIUS_NEGATIVE, "RP")
+            raise NcAlarmError(VALUE_RANGE_EXCEEDED, "RP")
         return replace(
             self,
             radius_mm=self.radius_mm if radius_mm is None else float(radius_mm),

@@ -21,16 +21,15 @@ import copy
 from typing import Any, Callable
 
 from nck.access import LEVEL_MOST_RIGHTS
-from nck.alarm_ids import VALUE_ABOVE_UPPER_LIMIT, VALUE_BELOW_LOWER_LIMIT
+from nck.alarm_ids import (
+    DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED, OPERATION_DOES_NOT_FIT_TYPE,
+    VALUE_ABOVE_UPPER_LIMIT, VALUE_BELOW_LOWER_LIMIT,
+)
 from nck.errors import NcAlarmError
 from nck.machine_data import DataValueError, MachineDataStore, UnknownDataError
 
-ALARM_WRITE_PROTECTED = 17070
 ALARM_BELOW_LIMIT = VALUE_BELOW_LOWER_LIMIT
 ALARM_ABOVE_LIMIT = VALUE_ABOVE_UPPER_LIMIT
-ALARM_UNKNOWN = 12550
-ALARM_WRONG_TYPE = 12150
-ALARM_INDEX = 17020
 
 
 def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: Any,
@@ -42,17 +41,17 @@ def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: 
     try:
         ref = store.resolve(text)
     except UnknownDataError:  # a known name with a bad index or axis is 17020
-        raise NcAlarmError(ALARM_INDEX if store.catalog.get(name) else ALARM_UNKNOWN, name) from None
+        raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1 if store.catalog.get(name) else NAME_NOT_DEFINED, name) from None
     definition = ref.definition
     if definition.kind != "sd" or definition.activation != "so":
-        raise NcAlarmError(ALARM_WRITE_PROTECTED, name)
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name)
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         if definition.min is not None and value < definition.min:
             raise NcAlarmError(ALARM_BELOW_LIMIT, name)
         if definition.max is not None and value > definition.max:
             raise NcAlarmError(ALARM_ABOVE_LIMIT, name)
     if interp.access_level() > definition.write_level:
-        raise NcAlarmError(ALARM_WRITE_PROTECTED, name)
+        raise NcAlarmError(DATA_WRITE_PROTECTED, name)
     key = definition.key
     had, old = key in interp.data.setting_data, copy.deepcopy(interp.data.setting_data.get(key))
     try:
@@ -60,7 +59,7 @@ def write_setting_data(interp: Any, name: str, indices: tuple[Any, ...], value: 
         # screen (MD9215) guards the operator's door, not the NCK's part-program door.
         store.write(ref, value, level=LEVEL_MOST_RIGHTS)
     except DataValueError:
-        raise NcAlarmError(ALARM_WRONG_TYPE, name) from None
+        raise NcAlarmError(OPERATION_DOES_NOT_FIT_TYPE, name) from None
     setting_data = interp.data.setting_data
 
     def undo() -> None:

@@ -129,7 +129,7 @@ def read(ctx: SysContext, name: str, indices: tuple[Any, ...]) -> Any:
     if name == "$AC_MEA":  # probe status of the last measuring block: 1 switched, 0 not
         number = to_number(indices[0], name) if len(indices) == 1 else 0
         if number != 1:  # one probe input
-            raise NcAlarmError(frame_vars.ALARM_INDEX, name)
+            raise NcAlarmError(ILLEGAL_ARRAY_INDEX_1, name)
         return float(ctx.measurement(name, ""))
     if name == "$P_EP":
         axis = _axis_arg(ctx, name, indices)

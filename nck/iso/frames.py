@@ -62,17 +62,16 @@ from typing import Any
 
 import numpy as np
 
-from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1
+from nck.alarm_ids import (
+    DATA_WRITE_PROTECTED, G_FUNCTION_UNKNOWN, ILLEGAL_ARRAY_INDEX_1, SYNTAX_ERROR, VALUE_OUTSIDE_LIMITS,
+)
 from nck.errors import NcAlarmError
 from nck.lang.values import to_number
 from nck.number_text import trimmed
 from nck.geometry.frames import Frame, as_matrix3, axis_rotation
 from nck.geometry.polar import PolarState
 
-ALARM_SYNTAX = 12080
-ALARM_LIMITS = 12560
 ALARM_SCALE_ZERO = 18309
-ALARM_UNKNOWN_G = 12470
 ALARM_CYCLE_POLAR = 61814
 PREFIX = "$P_ISOFR_"
 GEO = ("X", "Y", "Z")
@@ -313,7 +312,7 @@ def _rotate(interp: Any, geo: Any, state: IsoFrameState, args: list[Any], angle:
     if mask & 8:  # 3D: rotation about the vector I/J/K, missing pivot = workpiece zero
         length = float(np.linalg.norm(vector))
         if length < 1e-12:
-            raise NcAlarmError(ALARM_LIMITS, "I J K")
+            raise NcAlarmError(VALUE_OUTSIDE_LIMITS, "I J K")
         pivot = [programmed[i] if mask & (1 << i) else 0.0 for i in range(3)]
         matrix = _about_vector(vector / length, angle)
     else:  # 2D: about the applicate of the plane, missing pivot = current position
@@ -355,7 +354,7 @@ def _scale_factors(interp: Any, args: list[Any], p_value: float) -> tuple[tuple[
     if mask & 8 or not axial:
         raw = p_value if mask & 8 else sd.get("SD42140")
         if mask & 8 and p_value < 0:
-            raise NcAlarmError(ALARM_LIMITS, "P")
+            raise NcAlarmError(VALUE_OUTSIDE_LIMITS, "P")
         factor = float(raw) * unit if raw else 1.0
         factors = {axis: factor for axis in GEO}
     else:
@@ -419,10 +418,10 @@ def _alone(words: list[Any], gcodes: list[str], allowed_g: set[str], letters: st
         if word.letter == "G":
             continue
         if word.letter != "N" and word.letter not in letters:
-            raise NcAlarmError(ALARM_SYNTAX, f"{code} not alone in block")
+            raise NcAlarmError(SYNTAX_ERROR, f"{code} not alone in block")
     for g in gcodes:
         if g not in allowed_g:
-            raise NcAlarmError(ALARM_SYNTAX, f"{code} not alone in block")
+            raise NcAlarmError(SYNTAX_ERROR, f"{code} not alone in block")
 
 
 def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
@@ -437,7 +436,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
     if turning:  # ISO T: G68/G69 is the double turret, no G51/G51.1/G16 (not modelled)
         for code in gcodes:
             if code in ("G68", "G51", "G51.1", "G16"):
-                raise NcAlarmError(ALARM_UNKNOWN_G, code)
+                raise NcAlarmError(G_FUNCTION_UNKNOWN, code)
         return FrameBlocks()
     for code in gcodes:
         if code in ("G17", "G18", "G19"):
@@ -465,7 +464,7 @@ def frame_codes(words: list[Any], gcodes: list[str], values: dict[str, float],
         if any(letter in raw for letter in "IJK"):
             mask |= 8
             if not any(vector):
-                raise NcAlarmError(ALARM_LIMITS, "I0 J0 K0")
+                raise NcAlarmError(VALUE_OUTSIDE_LIMITS, "I0 J0 K0")
         if "R" in values:
             mask |= 16
         args = [str(mask)] + [trimmed(values.get(axis, 0.0)) for axis in GEO] + [trimmed(v) for v in vector]

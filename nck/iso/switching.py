@@ -22,12 +22,11 @@ from __future__ import annotations
 import functools
 import re
 
+from nck.alarm_ids import G_FUNCTION_UNKNOWN, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.lang.gcodes import gtable
 from nck.resources import load_toml
 
-ALARM_SYNTAX = 12080
-ALARM_UNKNOWN_G = 12470
 PASS_UNKNOWN_BIT = 1 << 3  # MD 20734 bit 3
 
 SIEMENS_STATEMENTS = frozenset({
@@ -68,13 +67,13 @@ def unknown_g(code: str) -> NcAlarmError:
     """The alarm for a G function the ISO translator does not take: 12080 for a Siemens-only
     G function (``G500``), else 12470."""
     if code in _siemens_only_codes():
-        return NcAlarmError(ALARM_SYNTAX, f"{code} unknown")
-    return NcAlarmError(ALARM_UNKNOWN_G, code)
+        return NcAlarmError(SYNTAX_ERROR, f"{code} unknown")
+    return NcAlarmError(G_FUNCTION_UNKNOWN, code)
 
 
 def pass_to_siemens(alarm: NcAlarmError, function_mask: int) -> bool:
     """MD 20734 bit 3: a block the ISO translator rejects with 12080 goes to the Siemens one."""
-    return bool(function_mask & PASS_UNKNOWN_BIT) and alarm.number == ALARM_SYNTAX
+    return bool(function_mask & PASS_UNKNOWN_BIT) and alarm.number == SYNTAX_ERROR
 
 
 def start_unit(reset_values: object) -> str:

@@ -27,14 +27,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, SYNTAX_ERROR
+from nck.alarm_ids import DATA_WRITE_PROTECTED, ILLEGAL_ARRAY_INDEX_1, NAME_NOT_DEFINED, SYNTAX_ERROR
 from nck.errors import NcAlarmError
 from nck.lang.values import to_number
 from nck.number_text import trimmed
 
 H_NUMBER_PARAM = 0  # ToolEdge.params key of $TC_DPH (the $TC_DP numbers are 1 … 25)
 ALARM_H_TWICE = 17183
-ALARM_NOT_DEFINED = 12550
 EDGE_VAR = "$TC_ISOH_EDGE"  # internal: [tool, number] → edge D (read only)
 DATA_VAR = "$TC_ISOH_DP"  # internal: [h, dp parameter] of the edge with that H number
 G10_PARAMS = {10: 3, 11: 12, 1: 12, 12: 6, 13: 15}  # L → $TC_DP<n>
@@ -118,13 +117,13 @@ def edge_for(data: Any, tool: int, number: int) -> int:
     for (t, edge), edge_data in data.tools.items():
         if t == tool and int(edge_data.params.get(H_NUMBER_PARAM, 0)) == number:
             return edge
-    raise NcAlarmError(ALARM_NOT_DEFINED, f"H{number}")
+    raise NcAlarmError(NAME_NOT_DEFINED, f"H{number}")
 
 
 def _edge_of_h(data: Any, h_number: int) -> tuple[int, int]:
     found = _h_numbers(data).get(h_number)
     if found is None:
-        raise NcAlarmError(ALARM_NOT_DEFINED, f"H{h_number}")
+        raise NcAlarmError(NAME_NOT_DEFINED, f"H{h_number}")
     return found
 
 

@@ -180,7 +180,7 @@ def translate_block_words(words: list[Word], modal: _Modal, settings: IsoSetting
     """The Siemens blocks for the words of one ISO block (``modal`` is updated)."""
     switches = [w for w in words if w.letter == "G" and g_name(w) in ("G290", "G291")]
     if switches and any(w.letter != "N" for w in words if w not in switches) or len(switches) > 1:
-        raise NcAlarmError(switching.ALARM_SYNTAX, f"{g_name(switches[0])} not alone in block")  # 003 L393
+        raise NcAlarmError(SYNTAX_ERROR, f"{g_name(switches[0])} not alone in block")  # 003 L393
     macro = iso_macros.macro_block(words, modal, settings, translate_block_words)  # G65/G66/G67/G05
     if macro is not None:
         return macro

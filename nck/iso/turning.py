@@ -41,7 +41,9 @@ import copy
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from nck.alarm_ids import ADDRESS_PROGRAMMED_TWICE, G_FUNCTION_UNKNOWN, NAME_NOT_DEFINED, SYNTAX_ERROR
+from nck.alarm_ids import (
+    ADDRESS_PROGRAMMED_TWICE, G_FUNCTION_UNKNOWN, JUMP_TARGET_NOT_FOUND, NAME_NOT_DEFINED, SYNTAX_ERROR,
+)
 from nck.errors import NcAlarmError
 from nck.number_text import trimmed
 from nck.iso import turning_cycles as tc
@@ -52,7 +54,6 @@ from nck.iso.words import TranslateWords, g_name, word_value
 ALARM_START_POINT = 61607  # starting point incorrectly specified / not known
 ALARM_ABS_AND_INC = 61805  # value programmed both absolute and incremental
 ALARM_BAD_VALUE = 61812
-ALARM_BLOCK_NOT_FOUND = 14080  # jump destination (contour block P/Q) not found
 
 START_BLOCK = "G0 G291 G18 G95 DIAMON"
 """Reset motion, plane G18, feed per revolution and diameter programming of an ISO T main program."""
@@ -114,7 +115,7 @@ class LatheState:
                 words = words[1:]
             if words and words[0].letter == "N" and int(words[0].value) == number:
                 return index
-        raise NcAlarmError(ALARM_BLOCK_NOT_FOUND, f"N{number}")
+        raise NcAlarmError(JUMP_TARGET_NOT_FOUND, f"N{number}")
 
 
 def attach(modal: Any, lines: list[str], settings: Any) -> None:
