@@ -417,7 +417,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         try:
             self.nc_session.save()
         except OSError as exc:  # a full or read-only disk: say so, keep running
-            self.set_hint(f"NC data could not be saved: {exc}")
+            self.set_hint(_("NC data could not be saved: {error}").format(error=exc))
 
     # -- colour theme ---------------------------------------------------------------------------
     def _apply_kept_theme(self) -> None:
@@ -540,7 +540,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
 
     def on_command_rejected(self, message: CommandRejected) -> None:
         """Show why the kernel refused a command."""
-        prefix = f"{message.alarm}: " if message.alarm else ""
+        alarm = message.refusal.alarm
+        prefix = f"{alarm}: " if alarm else ""
         self.set_hint(f"{prefix}{refusal_text(message.refusal)}")
 
     def set_hint(self, text: str) -> None:
@@ -764,7 +765,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         """
         failures = self._keep_unsaved_text()
         if failures:
-            self.set_hint(f"Not quit: unsaved text could not be kept in the journal: {failures[0]}")
+            self.set_hint(_("Not quit: unsaved text could not be kept in the journal: {error}").format(
+                error=failures[0]))
             return
         self._leave(0)
 

@@ -16,17 +16,21 @@ from textual.widgets import Input, OptionList, Static
 from textual.widgets.option_list import Option
 
 from hmi.dialog import AreaDialog
-from hmi.i18n import _
+from hmi.i18n import N_, _
 from hmi.focus import focus_now
 
 
 class ChoiceDialog(AreaDialog[str | None]):
-    """Choose one entry of a list with the arrow keys and Enter (F10 cancels)."""
+    """Choose one entry of a list with the arrow keys and Enter (F10 cancels).
+
+    The entries are shown in the panel's language (a text of the catalogue, as the caller
+    wrote it in English, is translated; a name is shown as it is) and the chosen one is
+    returned as given. The title is shown as given (the caller translates it)."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
 
     def __init__(self, title: str, choices: Sequence[str], selected: str | None = None,
-                 empty_text: str = "nothing to choose") -> None:
+                 empty_text: str = N_("nothing to choose")) -> None:
         super().__init__(classes="choice-dialog")
         self._title = title
         self._choices = list(choices)
@@ -38,11 +42,11 @@ class ChoiceDialog(AreaDialog[str | None]):
         with Vertical(id="choice-box"):
             yield Static(self._title, id="choice-title")
             if self._choices:
-                options = [Option(choice, id=f"choice-{i}") for i, choice in enumerate(self._choices)]
+                options = [Option(_(choice), id=f"choice-{i}") for i, choice in enumerate(self._choices)]
                 yield OptionList(*options, id="choice-list")
             else:
-                yield Static(self._empty_text, id="choice-empty")
-            yield Static("↑/↓ choose   Enter confirm   F10 cancel", id="choice-keys")
+                yield Static(_(self._empty_text), id="choice-empty")
+            yield Static(_("↑/↓ choose   Enter confirm   F10 cancel"), id="choice-keys")
 
     def on_mount(self) -> None:
         """Put the cursor on the preselected entry."""

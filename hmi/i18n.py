@@ -47,9 +47,10 @@ def N_(message: str) -> str:  # noqa: N802 - the gettext convention
     return message
 
 
-WORDED_UNITS = (N_("rev/min"), N_("mm/rev"), N_("rev/s²"))
-"""The units of the data tables (machine data, JOG fields) with an English word in them: the
-tables draw every unit through :func:`_`, these are the ones the catalogue translates (U/min …)."""
+WORDED_UNITS = (N_("rev/min"), N_("rpm"), N_("mm/rev"), N_("rev/s²"))
+"""The units with an English word in them (machine data, JOG fields, the speed displays): the
+tables and displays draw every unit through :func:`_`, these are the ones the catalogue
+translates (U/min …)."""
 
 
 def data_text(kind: str, key: object, field: str, english: str) -> str:
@@ -69,11 +70,27 @@ def step_text(exercise: Any, index: int, field: str) -> str:
 
 
 def reason_text(reason: str) -> str:
-    """Why an exercise check does not hold (``nck.exercise_checks.Reason``) in the language shown now."""
+    """A sentence of the kernel (``nck.phrase.Phrase``: why an exercise check does not hold, a
+    simulation event) in the language shown now; a plain ``str`` as it is."""
     template = getattr(reason, "template", None)
     if template is None:
         return reason
-    return _(template).format(**reason.fields)  # type: ignore[attr-defined]
+    fields = {name: reason_text(value) if isinstance(value, str) else value
+              for name, value in reason.fields.items()}  # type: ignore[attr-defined]
+    return _(template).format(**fields)
+
+
+def refusal_fields_in(code: str, fields: dict[str, str]) -> dict[str, str]:
+    """A refusal's placeholder values in language ``code``: an access action's title (``action``,
+    with its key ``action_id``) from the ``action`` overlay, and the ``what`` of an access refusal
+    from the refusal its ``what_key`` names (``nck.access.AccessDenied``)."""
+    if "action_id" in fields:
+        fields["action"] = localized(code, "action", fields["action_id"], "title", fields["action"])
+    if "what_key" in fields:
+        template = localized(code, "refusal", fields["what_key"], "text", "")
+        if template:
+            fields["what"] = template.format(**fields)
+    return fields
 
 
 def refusal_text(refusal: Rejected) -> str:
@@ -82,7 +99,7 @@ def refusal_text(refusal: Rejected) -> str:
     code = _active["code"]
     if refusal.key:
         template = localized(code, "refusal", refusal.key, "text", "")
-        return template.format(**dict(refusal.fields)) if template else refusal.reason
+        return template.format(**refusal_fields_in(code, dict(refusal.fields))) if template else refusal.reason
     if refusal.alarm is not None and refusal.alarm_params:
         return alarm_text_in(code, refusal.alarm, refusal.alarm_params, refusal.reason)
     return refusal.reason

@@ -17,6 +17,8 @@ from nck import commands as cmd
 from nck.commands import Accepted, Rejected
 from nck.status import NckStatus
 
+from hmi.i18n import _
+
 AXIS_KEY_NAMES = ("X", "Y", "Z")
 """The axis keys 1-3 of the machine control panel select the axis of this name (a lathe's
 panel has X and Z keys); the key after them selects the 4th axis by its position."""
@@ -135,11 +137,11 @@ class MachineControlPanel:
         if index < len(AXIS_KEY_NAMES):
             name = AXIS_KEY_NAMES[index]
             if name not in axes:
-                self.set_hint(f"This machine has no axis {name}")
+                self.set_hint(_("This machine has no axis {name}").format(name=name))
                 return
             index = axes.index(name)
         if index >= len(axes):
-            self.set_hint(f"This machine has no axis {index + 1}")
+            self.set_hint(_("This machine has no axis {name}").format(name=index + 1))
             return
         self.selected_axis_index = index
         self.spindle_selected = False
@@ -148,7 +150,7 @@ class MachineControlPanel:
     def action_select_spindle(self) -> None:
         """Spindle key."""
         if not self.spindle_names():
-            self.set_hint("This machine has no spindle")
+            self.set_hint(_("This machine has no spindle"))
             return
         self.spindle_selected = True
         self._refresh_area()
@@ -180,7 +182,7 @@ class MachineControlPanel:
         """
         axis = self.selected_axis
         if axis is None:
-            self.set_hint("No axis selected")
+            self.set_hint(_("No axis selected"))
             return
         channel = self._status().channel
         continuous = channel.machine_function != "INC"
@@ -205,10 +207,10 @@ class MachineControlPanel:
         """
         axis = self.selected_axis
         if axis is None:
-            self.set_hint("No axis selected")
+            self.set_hint(_("No axis selected"))
             return
         if self._status().channel.machine_function != "INC":
-            self.set_hint("Handwheel: select its weighting with INC (Alt+I) first")
+            self.set_hint(_("Handwheel: select its weighting with INC (Alt+I) first"))
             return
         self.submit(cmd.Jog(axis, 1 if detents > 0 else -1))
 

@@ -25,14 +25,13 @@ class NckStatusChanged(Message):
 
 
 class CommandRejected(Message):
-    """The kernel refused an operator command; ``refusal`` (its reason) is shown on the dialog line."""
+    """The kernel refused an operator command; ``refusal`` (its key, reason and alarm) is shown on
+    the dialog line in the panel's language."""
 
     def __init__(self, command: object, refusal: Rejected) -> None:
         super().__init__()
         self.command = command
         self.refusal = refusal
-        self.reason = refusal.reason
-        self.alarm = refusal.alarm
 
 
 class TerminalClosed(Message):

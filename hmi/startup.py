@@ -150,7 +150,7 @@ def _import_at_start(holder: NcDataSession, local: Path, confirm: Callable[[str]
         access = holder.session.access
         if not access.may(Action.EDIT_PROGRAM):
             raise ValueError(f"program {local}: {target} already exists in the NC memory with another "
-                             f"text; {AccessDenied('replacing it', access.required(Action.EDIT_PROGRAM), access.level)}")
+                             f"text; {AccessDenied('program_replace', access.required(Action.EDIT_PROGRAM), access.level)}")
         if confirm is None or not confirm(f"{target} already exists in the NC memory with another text. "
                                           "Replace it (the old one is kept as a copy)?"):
             raise ValueError(f"program {local}: {target} already exists in the NC memory; not replaced")

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Mapping
 
 from nck.md_catalog import catalog
+from nck.refused import Refused, refusal_texts
 from nck.resources import load_toml
 
 LEVEL_MOST_RIGHTS = 0
@@ -185,24 +186,38 @@ def action_for_write(name: str) -> Action | None:
     return None
 
 
-class AccessError(Exception):
-    """A refused protected operation; ``str()`` is a message for the operator."""
+class AccessError(Refused):
+    """A refused protected operation: a refusal of ``data/refusals.toml`` (``str()``: its English text)."""
 
 
 class AccessDenied(AccessError):
-    """The current level does not allow the operation; nothing was changed."""
+    """The current level does not allow the operation; nothing was changed.
 
-    def __init__(self, what: str, needed_level: int, current_level: int) -> None:
-        self.what = what
+    ``what_key`` names the refusal that says what was refused (``access_action``: an action's
+    title, ``md_write``: writing a datum …), filled from ``fields``; ``what`` is its English text.
+    The refusal is ``access_denied`` with ``what`` and, for a panel in another language, the
+    ``what_key`` and the fields (:func:`hmi.i18n.refusal_text` says ``what`` in its language).
+    An action's title is given as ``action`` with the action's key as ``action_id``.
+    """
+
+    def __init__(self, what_key: str, needed_level: int, current_level: int, **fields: object) -> None:
+        self.what = refusal_texts()[what_key].format(**fields)
         self.needed_level = needed_level
         self.current_level = current_level
-        super().__init__(
-            f"{what} needs protection level {needed_level} or lower "
-            f"(current level {current_level})"
-        )
+        super().__init__("access_denied", what=self.what, needed=needed_level, current=current_level,
+                         what_key=what_key, **fields)
+
+    @classmethod
+    def of_action(cls, action: Action, needed_level: int, current_level: int, datum: str = "") -> "AccessDenied":
+        """``action`` (its title), on the datum ``datum`` when given, is refused."""
+        title = action_rules()[action].title
+        if datum:
+            return cls("access_action_datum", needed_level, current_level, action=title,
+                       action_id=action.value, datum=datum)
+        return cls("access_action", needed_level, current_level, action=title, action_id=action.value)
 
 
-ACCESS_LOCKED_TEXT = "Exam: the access level is fixed (keyswitch and passwords have no effect)"
+ACCESS_LOCKED_TEXT = refusal_texts()["access_locked"]
 """What the panel says when the keyswitch or a password is tried during an exam."""
 
 
@@ -210,7 +225,7 @@ class AccessLocked(AccessError):
     """The access level is fixed (an exam): keyswitch and passwords are refused."""
 
     def __init__(self) -> None:
-        super().__init__(ACCESS_LOCKED_TEXT)
+        super().__init__("access_locked")
 
 
 class PasswordError(AccessError):
@@ -224,9 +239,9 @@ def normalize_password(password: str) -> str:
     """
     stripped = password.rstrip(" ")
     if not stripped:
-        raise PasswordError("a password needs at least one character")
+        raise PasswordError("password_empty")
     if len(stripped) > PASSWORD_MAX_CHARS:
-        raise PasswordError(f"a password has at most {PASSWORD_MAX_CHARS} characters")
+        raise PasswordError("password_too_long", max=PASSWORD_MAX_CHARS)
     return stripped.ljust(PASSWORD_MAX_CHARS)
 
 
@@ -448,7 +463,7 @@ class AccessControl:
         normalize_password(password)
         level = self.try_password(password)
         if level is None:
-            raise PasswordError("password not accepted")
+            raise PasswordError("password_not_accepted")
         before = self.level
         self.state.password_level = level
         self._changed(before, "password set")
@@ -468,15 +483,15 @@ class AccessControl:
         not already open another level.
         """
         if level not in PASSWORD_LEVELS:
-            raise PasswordError(f"only levels 1..3 have passwords, not {level}")
+            raise PasswordError("password_levels", level=level)
         self._refuse_when_locked()
         if self.level > level:
-            raise AccessDenied(f"changing the password of level {level}", level, self.level)
+            raise AccessDenied("password_change", level, self.level, level=level)
         normalize_password(new_password)
         derived: dict[tuple[str, int], str] = {}
         for other, record in self.state.password_hashes.items():
             if other != level and record.matches(new_password, derived):
-                raise PasswordError(f"that password already belongs to level {other}")
+                raise PasswordError("password_taken", level=other)
         self.state.password_hashes[level] = PasswordHash.create(new_password)
         self._changed()
 
@@ -493,12 +508,12 @@ class AccessControl:
         (see :func:`action_for_write`; names it does not know are not checked here)."""
         action = action_for_write(name)
         if action is not None:
-            self.require(action, f"{action_rules()[action].title} ({name})")
+            self.require(action, name)
 
-    def require(self, action: Action | int, what: str | None = None) -> None:
-        """Raise AccessDenied unless the current level allows ``action``."""
+    def require(self, action: Action | int, datum: str = "") -> None:
+        """Raise AccessDenied unless the current level allows ``action`` (on the datum ``datum``)."""
         needed = action if isinstance(action, int) else self.required(action)
         if self.level > needed:
-            label = what or (action_rules()[action].title if isinstance(action, Action)
-                             else "this operation")
-            raise AccessDenied(label, needed, self.level)
+            if isinstance(action, Action):
+                raise AccessDenied.of_action(action, needed, self.level, datum)
+            raise AccessDenied("access_operation", needed, self.level)

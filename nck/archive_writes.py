@@ -67,7 +67,7 @@ def section_names(section: str, data: NcData, md_changes: dict[str, Any]) -> dic
             try:
                 index = settable_frame_index(frame)
             except ValueError:
-                raise WriteRefused(f"{frame} is not a settable frame") from None
+                raise WriteRefused("not_a_work_offset", name=frame) from None
             names.update(_frame_names(f"$P_UIFR[{index},", offset))
         return names
     if section == "user_data":
@@ -110,7 +110,7 @@ def write_import(current: NcData, current_md: dict[str, Any], imported: NcData, 
             if before.get(name) != after.get(name):
                 needed = checker.required_level(name)
                 if checker.level > needed:
-                    raise AccessDenied(f"importing {name}", needed, checker.level)
+                    raise AccessDenied("import_datum", needed, checker.level, datum=name)
         for name, value in after.items():
             validator.write(name, value)
         if section == "user_data":
@@ -125,11 +125,11 @@ def _check_gud_protection(checker: DataWriter, before: dict[str, dict[str, int]]
     for name in set(before) | set(after):
         old, new = before.get(name, {}), after.get(name, {})
         if any(not 0 <= level <= 7 for level in new.values()):
-            raise WriteRefused(f"{name}: protection levels are 0 … 7")
+            raise WriteRefused("protection_level_values", name=name)
         if old != new:
             needed = min([checker.required_level(f"GUD:{name}"), *old.values(), *new.values()])
             if checker.level > needed:
-                raise AccessDenied(f"importing the protection levels of {name}", needed, checker.level)
+                raise AccessDenied("import_protection_levels", needed, checker.level, name=name)
 
 
 def md_write_level(key: str) -> int:

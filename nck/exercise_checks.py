@@ -27,6 +27,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Mapping
 
+from nck.phrase import Phrase
+
 State = dict[str, Any]
 """Plain state read by the checks: ``referenced`` (axis → bool), ``mode``, ``program``,
 ``channel``, ``program_state`` (aborted/running/stopped/interrupted/waiting), ``active_alarms`` (numbers), ``estop``, ``offsets`` ("G54" → axis → mm),
@@ -68,19 +70,10 @@ def state_of(status: Any, data: Any) -> State:
     }
 
 
-class Reason(str):
+class Reason(Phrase):
     """Why a check does not hold: the English sentence (what reports and recordings keep), with
     its ``template`` and ``fields`` so that a panel can say it in another language (the
     template is a text of the panel's catalogue, formatted with ``str.format``)."""
-
-    template: str
-    fields: dict[str, Any]
-
-    def __new__(cls, template: str, **fields: Any) -> Reason:
-        reason = super().__new__(cls, template.format(**fields))
-        reason.template = template
-        reason.fields = fields
-        return reason
 
 
 # ------------------------------------------------------------------ the vocabulary

@@ -18,8 +18,8 @@ from nck import commands as cmd
 from nck.access import (ALARM_PASSWORD_REFUSED, LEVEL_FEWEST_RIGHTS, KEYSWITCH_POSITIONS, AccessControl, AccessError,
                         AccessLocked, AccessState, Action)
 from nck.alarms import AlarmServer
-from nck.commands import Accepted, Rejected, SubmitResult
-from nck.refusals import refuse
+from nck.commands import Accepted, SubmitResult
+from nck.refusals import refuse, rejected_by
 from nck.status import LogbookEntry
 
 
@@ -70,10 +70,10 @@ class Protection:
             action = Action[action.strip().upper()]
         return self.control.required(action) if self.control is not None else LEVEL_FEWEST_RIGHTS
 
-    def require(self, action: Action, what: str | None = None) -> None:
+    def require(self, action: Action) -> None:
         """Raise AccessDenied unless the current level allows ``action`` (nothing when unprotected)."""
         if self.control is not None:
-            self.control.require(action, what)
+            self.control.require(action)
 
     # ----------------------------------------------------------------- commands
     def set_keyswitch(self, command: cmd.SetKeyswitch) -> SubmitResult:
@@ -83,7 +83,7 @@ class Protection:
         try:
             self.access.set_keyswitch(command.position)
         except AccessLocked as error:
-            return Rejected(str(error))
+            return rejected_by(error)
         return Accepted()
 
     def enter_password(self, command: cmd.EnterPassword) -> SubmitResult:
@@ -99,7 +99,7 @@ class Protection:
                 self.logbook.append(LogbookEntry(self.clock(), "access",
                                                  f"password not accepted (failed attempt {failed})"))
                 self.raise_number(ALARM_PASSWORD_REFUSED, failed, delay)
-            return Rejected(str(error) or "Password not accepted", alarm=ALARM_PASSWORD_REFUSED if wrong else None)
+            return rejected_by(error, alarm=ALARM_PASSWORD_REFUSED if wrong else None)
         # the refusal and its waiting time are over: the alarm goes (the log keeps it)
         self.alarms.clear_number(ALARM_PASSWORD_REFUSED, self.clock())
         return Accepted()
@@ -110,15 +110,15 @@ class Protection:
             try:
                 self.control.delete_password()
             except AccessLocked as error:
-                return Rejected(str(error))
+                return rejected_by(error)
         return Accepted()
 
     def change_password(self, command: cmd.ChangePassword) -> SubmitResult:
         """Give a password level (1 … 3) a new password (from that level or one with more rights)."""
         try:
             self.access.change_password(command.level, command.password)
-        except AccessError as error:  # AccessDenied too (its text is never empty)
-            return Rejected(str(error) or "Password not accepted")
+        except AccessError as error:  # AccessDenied too
+            return rejected_by(error)
         return Accepted()
 
 

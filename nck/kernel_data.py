@@ -20,14 +20,14 @@ from nck import commands as cmd
 from nck.access import AccessError, Action, action_for_write
 from nck.channel import RESET
 from nck.channel_state import ChannelState, MachineOutputs, MachinePlant
-from nck.commands import Accepted, Rejected, SubmitResult
+from nck.commands import Accepted, SubmitResult
 from nck.counters import PartCounters
 from nck.kernel_access import Protection
 from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_setup import JobSetup
 from nck.machine_data import DataError, MachineDataStore
 from nck.ncdata import NcData
-from nck.refusals import refuse
+from nck.refusals import refuse, rejected_by
 from nck.value_text import InvalidValue, number_from_text
 from nck.writes import DataWriter, WriteRefused
 
@@ -87,7 +87,7 @@ class DataWrites:
         try:
             value = int(number_from_text(command.value, name, whole=True))
         except InvalidValue as refusal:
-            return Rejected(str(refusal))
+            return rejected_by(refusal)
         if not 0 <= value <= PART_COUNTER_MAX:
             return refuse("part_counter_range", max=PART_COUNTER_MAX)
         setattr(self.counters, PART_COUNTER_FIELDS[name], value)
@@ -100,10 +100,8 @@ class DataWrites:
             return None
         try:
             written = writer.write(command.name, command.value)
-        except AccessError as error:
-            return Rejected(str(error))
-        except (WriteRefused, DataError) as error:
-            return Rejected(str(error)) if str(error) else refuse("bad_value", name=command.name)
+        except (AccessError, WriteRefused, DataError) as error:
+            return rejected_by(error)
         result = written.md
         if result is not None and result.active_now and result.ref.definition.kind == "md" \
                 and result.ref.definition.scope != "display":
@@ -113,9 +111,9 @@ class DataWrites:
     def delete_tool_edge(self, command: cmd.DeleteToolEdge) -> SubmitResult:
         """Delete a tool's edge (or all its edges); not the active tool of a running program."""
         try:
-            self.protection.require(Action.WRITE_TOOL_GEOMETRY, "Deleting tool data")
+            self.protection.require(Action.WRITE_TOOL_GEOMETRY)
         except AccessError as error:
-            return Rejected(str(error))
+            return rejected_by(error)
         tools = self.data.tools
         keys = [k for k in tools if k[0] == command.tool and (command.edge is None or k[1] == command.edge)]
         if not keys:
@@ -132,7 +130,7 @@ class DataWrites:
         try:
             self.protection.require(Action.CLEAR_R_PARAMETERS)
         except AccessError as error:
-            return Rejected(str(error))
+            return rejected_by(error)
         r = self.data.r
         r[:] = [0.0] * len(r)
         return Accepted()

@@ -16,7 +16,7 @@ from typing import Any, cast
 from nck import commands as cmd
 from nck.channel import ACTIVE, RESET
 from nck.channel_state import ChannelState, ControlSwitches, MachinePlant
-from nck.commands import Accepted, Rejected, SubmitResult
+from nck.commands import Accepted, SubmitResult
 from nck.interp.api import Interpreter
 from nck.kernel_interpreters import ChannelInterpreters
 from nck.kernel_search import BlockSearchControl
@@ -109,7 +109,7 @@ class ControlSettings:
         """Inject (or remove) a spindle drive fault that keeps its actual speed low."""
         spindle = (getattr(self.plant.motion, "spindles", None) or {}).get(command.spindle)
         if spindle is None:
-            return Rejected(f"no spindle {command.spindle}")
+            return refuse("no_spindle", spindle=command.spindle)
         spindle.drive_limit_rpm = None if command.limit_rpm is None else abs(float(command.limit_rpm))
         return Accepted()
 

@@ -27,8 +27,8 @@ from nck.commands import Accepted, Rejected, SubmitResult
 from nck.geometry.preset import TARGET_SETFRAME, TARGET_SETTABLE, translation_change, wcs_of_point
 from nck.kernel_interpreters import ChannelInterpreters
 from nck.ncdata import SETTABLE_FRAME_NAMES, NcData, WorkOffset
-from nck.manual_settings import ManualSettings, settings_from_plain, settings_to_plain
-from nck.refusals import refuse
+from nck.manual_settings import BadSetting, ManualSettings, settings_from_plain, settings_to_plain
+from nck.refusals import refuse, rejected_by
 from nck.workpiece import MachineSetup
 
 SETFR = "SETFR"
@@ -52,7 +52,7 @@ class JobSetup:
         try:
             self.require(Action.WRITE_MACHINE_SETUP)
         except AccessError as error:
-            return Rejected(str(error))
+            return rejected_by(error)
         if not isinstance(command.setup, MachineSetup):
             return refuse("not_a_machine_setup")
         if self.channel.situation.channel == "active":
@@ -66,8 +66,8 @@ class JobSetup:
             return refuse("not_manual_settings")
         try:  # the same checks as the retained file's
             settings = settings_from_plain(settings_to_plain(command.settings))
-        except ValueError as error:
-            return Rejected(str(error))
+        except BadSetting as error:
+            return rejected_by(error)
         self.data.manual_settings = settings
         return Accepted()
 
@@ -136,7 +136,7 @@ class JobSetup:
         try:
             self.require(action)
         except AccessError as error:
-            return Rejected(str(error))
+            return rejected_by(error)
         return target
 
     def _target_offset(self, target: str) -> WorkOffset:

@@ -75,12 +75,12 @@ def parse_ref(text: str, axes: Iterable[str], cat: Catalog | None = None) -> Dat
     axis_names = list(axes)
     match = _NAME.match(text)
     if not match:
-        raise UnknownDataError(f"{text!r} is not a machine or setting data name")
+        raise UnknownDataError("md_bad_name", name=repr(text))
     definition = cat.get(match["base"])
     if definition is None and match["base"].isdigit():  # a bare number: MD and SD share one range
         definition = cat.get("MD" + match["base"]) or cat.get("SD" + match["base"])
     if definition is None:
-        raise UnknownDataError(f"{match['base']} is not in the machine/setting data catalogue")
+        raise UnknownDataError("md_not_in_catalogue", name=match['base'])
     args = [a.strip() for a in match["args"].split(",")] if match["args"] is not None else []
     axis: str | None = None
     index: int | None = None
@@ -88,14 +88,12 @@ def parse_ref(text: str, axes: Iterable[str], cat: Catalog | None = None) -> Dat
         axis = _axis_name(args.pop(), axis_names, definition)
     if args:
         if len(args) > 1 or not args[0].lstrip("-").isdigit():
-            raise UnknownDataError(f"{text}: bad index {match['args']!r}")
+            raise UnknownDataError("md_bad_index", name=text, index=repr(match['args']))
         index = int(args[0])
         if not definition.array:
-            raise UnknownDataError(f"{definition.key} is not an array")
+            raise UnknownDataError("md_not_array", name=definition.key)
         if not 0 <= index < definition.array:
-            raise UnknownDataError(
-                f"{definition.key}: index {index} outside 0..{definition.array - 1}"
-            )
+            raise UnknownDataError("md_index_limits", name=definition.key, index=index, last=definition.array - 1)
     return DataRef(definition, axis, index)
 
 
@@ -104,7 +102,7 @@ def _axis_name(name: str, axes: list[str], definition: DataDefinition) -> str:
     for axis in axes:
         if axis.upper() == upper:
             return axis
-    raise UnknownDataError(f"{definition.key}: the machine has no axis {name}")
+    raise UnknownDataError("md_no_axis", name=definition.key, axis=name)
 
 
 @dataclass(frozen=True, slots=True)
@@ -277,7 +275,7 @@ class MachineDataStore:
         """Raise AccessDenied when ``level`` may not read the datum."""
         ref = self._ref(ref)
         if level > ref.definition.read_level:
-            raise AccessDenied(f"reading {ref.text}", ref.definition.read_level, level)
+            raise AccessDenied("md_read", ref.definition.read_level, level, datum=ref.text)
 
     def check_write(self, ref: DataRef | str, value: Any, level: int) -> Any:
         """Validate a write without doing it; return the converted value.
@@ -288,17 +286,14 @@ class MachineDataStore:
         d = ref.definition
         needed = self.required_write_level(ref)
         if level > needed:
-            raise AccessDenied(f"writing {ref.text} ({d.identifier})", needed, level)
+            raise AccessDenied("md_write", needed, level, datum=ref.text, identifier=d.identifier)
         if d.per_axis and ref.axis is None:
-            raise UnknownDataError(f"{d.key} is axis data: name the axis, e.g. {d.key}[{self.axes[0]}]")
+            raise UnknownDataError("md_axis_data", name=d.key, axis=self.axes[0])
         if d.array and ref.index is None:
-            raise UnknownDataError(f"{d.key} is an array: name the element, e.g. {d.key}[0]")
+            raise UnknownDataError("md_array_element", name=d.key)
         new = d.coerce(value)
         if d.is_user_class and new < level:
-            raise AccessDenied(
-                f"setting {ref.text} to level {new} (a level with more rights than your own)",
-                new, level,
-            )
+            raise AccessDenied("md_user_class", new, level, datum=ref.text, level=new)
         return new
 
     def write(self, ref: DataRef | str, value: Any, *, level: int) -> WriteResult:

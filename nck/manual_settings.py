@@ -21,6 +21,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping
 
+from nck.refused import Refused
+
 
 @dataclass(frozen=True, slots=True)
 class ManualSettings:
@@ -35,6 +37,10 @@ FIELDS = ("retraction_plane_mm", "safety_distance_mm", "measuring_feed_mm_min")
 POSITIVE = ("safety_distance_mm", "measuring_feed_mm_min")
 
 
+class BadSetting(Refused, ValueError):
+    """A manual setting that is no number or, for the distance and the feed, not above 0."""
+
+
 def settings_to_plain(settings: ManualSettings) -> dict[str, float]:
     """The settings as JSON-ready data."""
     return {name: getattr(settings, name) for name in FIELDS}
@@ -42,15 +48,16 @@ def settings_to_plain(settings: ManualSettings) -> dict[str, float]:
 
 def settings_from_plain(data: Mapping[str, Any]) -> ManualSettings:
     """The settings of :func:`settings_to_plain`'s form (missing ones at their default);
-    ``ValueError`` for a value that is no number or, for the distance and the feed, not above 0."""
+    :class:`BadSetting` (a ``ValueError``) for a value that is no number or, for the distance
+    and the feed, not above 0."""
     values: dict[str, float] = {}
     for name in FIELDS:
         if name not in data:
             continue
         value = data[name]
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise ValueError(f"{name}: {value!r} is not a number")
+            raise BadSetting("manual_setting_not_number", name=name, value=repr(value))
         if name in POSITIVE and value <= 0.0:
-            raise ValueError(f"{name} must be greater than 0")
+            raise BadSetting("manual_setting_not_positive", name=name)
         values[name] = float(value)
     return ManualSettings(**values)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import Any, Iterable, Mapping
 
 from nck.number_text import trimmed
+from nck.refused import Refused
 from nck.resources import data_path, load_toml
 from nck.value_text import InvalidValue, number_from_text
 
@@ -40,10 +41,12 @@ PREFIX = {
     ("sd", "axis"): "$SA_",
 }
 TYPES = ("real", "int", "bool", "string")
+INVALID_VALUE_REFUSALS = {"bool": "md_invalid_bool", "int": "md_invalid_int", "real": "md_invalid_real"}
+"""The refusal (``data/refusals.toml``) of a value that is not of the datum's type, by type."""
 USER_CLASS_FIRST, USER_CLASS_LAST = 9200, 9299
 
 
-class DataError(Exception):
+class DataError(Refused):
     """A machine/setting datum could not be read or written; ``str()`` says why."""
 
 
@@ -99,15 +102,11 @@ class DataDefinition:
         converted = _convert(self.type, value, self.key)
         if self.type in ("real", "int"):
             if self.min is not None and converted < self.min:
-                raise DataValueError(
-                    f"{self.key} {format_value(self, converted)} is below the lower limit "
-                    f"{format_value(self, self.min)}"
-                )
+                raise DataValueError("md_below_limit", name=self.key, value=format_value(self, converted),
+                                     limit=format_value(self, self.min))
             if self.max is not None and converted > self.max:
-                raise DataValueError(
-                    f"{self.key} {format_value(self, converted)} is above the upper limit "
-                    f"{format_value(self, self.max)}"
-                )
+                raise DataValueError("md_above_limit", name=self.key, value=format_value(self, converted),
+                                     limit=format_value(self, self.max))
         return converted
 
 
@@ -155,10 +154,9 @@ def _convert(kind: str, value: Any, key: str) -> Any:
     except (ValueError, OverflowError, InvalidValue):
         pass
     if text == "":
-        raise DataValueError(f"{key}: no value entered")
+        raise DataValueError("value_missing", name=key)
     shown = f"“{text}”" if text is not None else repr(value)
-    expected = {"bool": "TRUE or FALSE", "int": "a whole number", "real": "a number"}.get(kind, kind)
-    raise DataValueError(f"{key}: {shown} is not valid, enter {expected}")
+    raise DataValueError(INVALID_VALUE_REFUSALS.get(kind, "md_invalid_string"), name=key, value=shown)
 
 
 def format_value(definition: DataDefinition, value: Any) -> str:

@@ -770,10 +770,10 @@ class Session:
             before = self.retained.md_by_machine.get(other, {})
             for key in set(values) | set(before):
                 if values.get(key) != before.get(key) and level > md_write_level(key):
-                    raise AccessDenied(f"importing {key} of machine {other}", md_write_level(key), level)
+                    raise AccessDenied("import_machine_datum", md_write_level(key), level, datum=key, machine=other)
         if ("access" in names and scratch.access.to_json() != self.retained.access.to_json()
                 and level > min(PASSWORD_LEVELS)):
-            raise AccessDenied("importing the passwords", min(PASSWORD_LEVELS), level)
+            raise AccessDenied("import_passwords", min(PASSWORD_LEVELS), level)
         for name in ("counters", "mda", "panel"):  # kept by the kernel, not protected data
             if name in names:
                 SECTIONS[name][1](SECTIONS[name][0](scratch), result)
@@ -845,7 +845,7 @@ class Session:
             if programs or workpieces:
                 needed = self.access.required(Action.EDIT_PROGRAM)
                 if level > needed:
-                    raise AccessDenied("importing programs", needed, level)
+                    raise AccessDenied("import_programs", needed, level)
         except ArchiveError:
             raise
         except AccessDenied as exc:

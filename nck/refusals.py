@@ -4,24 +4,26 @@ an operator command gets, with its English text from ``data/refusals.toml``.
 The key is the refusal's identity (a panel shows its text in its own language from
 ``data/lang/<code>/refusals.toml``); the English sentence stays the ``reason`` that the
 headless command line, the logs and the tests read. Placeholders are named
-(``{program}``) and filled from the keyword arguments. Pure: reads the data table only.
+(``{program}``) and filled from the keyword arguments. An exception of the data layers
+(:class:`nck.refused.Refused`) becomes the same keyed refusal with :func:`rejected_by`.
+Pure: reads the data table only.
 """
 
 from __future__ import annotations
 
-import functools
-
 from nck.commands import Rejected
-from nck.resources import load_toml
-
-
-@functools.cache
-def refusal_texts() -> dict[str, str]:
-    """Every refusal's English text by key (``data/refusals.toml``)."""
-    return {str(key): str(entry["text"]) for key, entry in load_toml("refusals.toml")["refusal"].items()}
+from nck.refused import Refused, refusal_fields, refusal_texts
 
 
 def refuse(key: str, *, alarm: int | None = None, **fields: object) -> Rejected:
     """The refusal ``key`` with its placeholders filled from ``fields`` (``KeyError``: no such key)."""
-    values = tuple((name, str(value)) for name, value in fields.items())
+    values = refusal_fields(fields)
     return Rejected(refusal_texts()[key].format(**dict(values)), alarm=alarm, key=key, fields=values)
+
+
+def rejected_by(error: Refused, *, alarm: int | None = None) -> Rejected:
+    """The keyed refusal an exception of the data layers carries (its English text as the reason)."""
+    return Rejected(str(error), alarm=alarm, key=error.key, fields=error.fields)
+
+
+__all__ = ["refusal_texts", "refuse", "rejected_by"]

@@ -48,7 +48,7 @@ OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "grou
                                   "cycle_sketch": "cycles.toml", "cycle_menu": "cycles.toml",
                                   "cycle_menu_key": "cycles.toml",
                                   "exercise": "exercises.toml", "exercise_step": "exercises.toml",
-                                  "refusal": "refusals.toml"}
+                                  "refusal": "refusals.toml", "action": "access.toml"}
 """Kind of data entry -> the overlay file in ``data/lang/<code>/`` that translates it."""
 
 

@@ -18,10 +18,12 @@ import math
 import re
 from typing import Any
 
+from nck.refused import Refused
+
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:EX?[+-]?\d+)?", re.IGNORECASE)
 
 
-class InvalidValue(Exception):
+class InvalidValue(Refused):
     """The operator's entry is not a value the datum can take; ``str()`` says what to enter."""
 
 
@@ -33,18 +35,18 @@ def number_from_text(value: Any, what: str, *, whole: bool = False) -> float:
             number, a fraction where a whole number is needed.
     """
     if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-        raise InvalidValue(f"{what}: enter a number")
+        raise InvalidValue("value_enter_number", name=what)
     if isinstance(value, str):
         text = value.strip()
         if not text:
-            raise InvalidValue(f"{what}: no value entered")
+            raise InvalidValue("value_missing", name=what)
         if not _NUMBER.fullmatch(text):
-            raise InvalidValue(f"{what}: “{text}” is not a number")
+            raise InvalidValue("value_not_a_number", name=what, text=text)
         number = float(re.sub("EX", "E", text, flags=re.IGNORECASE))
     else:
         number = float(value)
     if not math.isfinite(number):
-        raise InvalidValue(f"{what}: the value is out of range")
+        raise InvalidValue("value_out_of_range", name=what)
     if whole and not number.is_integer():
-        raise InvalidValue(f"{what}: enter a whole number")
+        raise InvalidValue("value_enter_whole_number", name=what)
     return number

@@ -24,10 +24,11 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from nck.access import AccessControl, AccessDenied, Action, action_for_write, action_rules, required_level
+from nck.access import AccessControl, AccessDenied, Action, action_for_write, required_level
 from nck.alarm_ids import VALUE_ABOVE_UPPER_LIMIT, VALUE_BELOW_LOWER_LIMIT
 from nck.machine_data import DataError, MachineDataStore, WriteResult
 from nck.ncdata import NcData, ToolEdge, WorkOffset
+from nck.refused import Refused
 from nck.value_text import InvalidValue, number_from_text
 
 TOOL_PARAM_COUNT = 25
@@ -46,7 +47,7 @@ _GUD = re.compile(r"^GUD:([A-Z_][A-Z0-9_]*)(?:\[\s*(\d+)\s*\])?$")
 _R = re.compile(r"^R(?:(\d+)|\[\s*(\d+)\s*\])$")
 
 
-class WriteRefused(Exception):
+class WriteRefused(Refused):
     """The value does not fit the datum (type, limits) or the datum does not exist; nothing changed."""
 
 
@@ -54,8 +55,8 @@ class ValueOutOfLimits(WriteRefused):
     """A number outside the datum's limits; ``above`` says which (a part program's alarm:
     17090 above the upper limit, else 17080 below the lower one)."""
 
-    def __init__(self, message: str, *, above: bool) -> None:
-        super().__init__(message)
+    def __init__(self, key: str, *, above: bool, **fields: object) -> None:
+        super().__init__(key, **fields)
         self.above = above
 
     @property
@@ -64,9 +65,9 @@ class ValueOutOfLimits(WriteRefused):
         return VALUE_ABOVE_UPPER_LIMIT if self.above else VALUE_BELOW_LOWER_LIMIT
 
 
-def _within(number: float, low: float, high: float, message: str) -> None:
+def _within(number: float, low: float, high: float, key: str, **fields: object) -> None:
     if not low <= number <= high:
-        raise ValueOutOfLimits(message, above=not number < low)
+        raise ValueOutOfLimits(key, above=not number < low, **fields)
 
 
 def check_tool_value(param: int, number: float) -> None:
@@ -76,25 +77,25 @@ def check_tool_value(param: int, number: float) -> None:
     for a number outside its limits.
     """
     if param in (1, 2) and not number.is_integer():
-        raise WriteRefused(f"$TC_DP{param} ({'tool type' if param == 1 else 'edge position'}) "
-                           "is a whole number")
+        raise WriteRefused("tool_type_whole" if param == 1 else "edge_position_whole", name=f"$TC_DP{param}")
     if param == 1:
-        _within(number, 0, 999, "tool type outside 0 … 999")
+        _within(number, 0, 999, "tool_type_limits")
     if param == 2:
-        _within(number, 0, 9, "cutting edge position outside 0 … 9")
-    _within(number, -TOOL_VALUE_LIMIT_MM, TOOL_VALUE_LIMIT_MM, f"$TC_DP{param} outside ±{TOOL_VALUE_LIMIT_MM:g}")
+        _within(number, 0, 9, "edge_position_limits")
+    _within(number, -TOOL_VALUE_LIMIT_MM, TOOL_VALUE_LIMIT_MM, "tool_value_limits", name=f"$TC_DP{param}",
+            limit=f"{TOOL_VALUE_LIMIT_MM:g}")
 
 
 def check_frame_component(comp: str, number: float) -> None:
     """Raise ValueOutOfLimits unless ``number`` (mm, degrees or a factor) fits frame component
     ``comp`` (TR, FI, RT, SC) of a stored work offset — the rule of every door, part programs too."""
     if comp in ("TR", "FI"):
-        _within(number, -FRAME_TRANSLATION_LIMIT_MM, FRAME_TRANSLATION_LIMIT_MM,
-                f"translation outside ±{FRAME_TRANSLATION_LIMIT_MM:g} mm")
+        _within(number, -FRAME_TRANSLATION_LIMIT_MM, FRAME_TRANSLATION_LIMIT_MM, "translation_limits",
+                limit=f"{FRAME_TRANSLATION_LIMIT_MM:g}")
     elif comp == "RT":
-        _within(number, -360.0, 360.0, "rotation outside -360 … 360 degrees")
+        _within(number, -360.0, 360.0, "rotation_limits")
     elif comp == "SC" and (number <= 0.0 or number > 1000.0):
-        raise ValueOutOfLimits("scale factor outside 0 … 1000 (0 not allowed)", above=number > 0.0)
+        raise ValueOutOfLimits("scale_limits", above=number > 0.0)
 
 
 def settable_frame_name(index: int) -> str:
@@ -103,7 +104,7 @@ def settable_frame_name(index: int) -> str:
         return f"G{53 + index}"
     if 5 <= index <= 99:
         return f"G{500 + index}"
-    raise WriteRefused(f"settable frame index {index} does not exist (1 … 99)")
+    raise WriteRefused("no_settable_frame_index", index=index)
 
 
 def settable_frame_index(name: str) -> int:
@@ -120,7 +121,7 @@ def finite_number(value: Any, what: str) -> float:
     try:
         return number_from_text(value, what)
     except InvalidValue as refusal:
-        raise WriteRefused(str(refusal)) from None
+        raise WriteRefused(refusal.key, **dict(refusal.fields)) from None
 
 
 @dataclass(frozen=True, slots=True)
@@ -188,7 +189,7 @@ class DataWriter:
             return Written(upper, self.store.write(upper, value, level=self.level))
         action = self._action(upper)
         if action is not None:
-            self._require(action, f"{action_rules()[action].title} ({upper})")
+            self._require(action, upper)
         match = _R.match(upper)
         if match:
             return self._write_r(int(match[1] or match[2]), value, upper)
@@ -206,7 +207,7 @@ class DataWriter:
         match = _GUD.match(upper)
         if match:
             return self._write_gud(match[1], None if match[2] is None else int(match[2]), value, upper)
-        raise WriteRefused(f"{name.strip()} cannot be written here")
+        raise WriteRefused("not_writable_here", name=name.strip())
 
     # ---------------------------------------------------------------- checks
     @staticmethod
@@ -222,34 +223,33 @@ class DataWriter:
             return self.access.required(action)
         return required_level(action, self.store.user_class)
 
-    def _require(self, action: Action, what: str) -> None:
+    def _require(self, action: Action, datum: str) -> None:
         if self.access is None and self._level is None:
             return  # a commissioning bench: no protection
         needed = self._needed(action)
         if self.level > needed:
-            raise AccessDenied(what, needed, self.level)
+            raise AccessDenied.of_action(action, needed, self.level, datum)
 
     # ---------------------------------------------------------------- writes
     def _write_r(self, index: int, value: Any, name: str) -> Written:
         r = self.data.r
         if index >= len(r):
-            raise WriteRefused(f"R parameter {index} does not exist (R0 … R{len(r) - 1})")
+            raise WriteRefused("no_r_parameter", index=index, last=len(r) - 1)
         r[index] = finite_number(value, name)
         return Written(name)
 
     def _write_tool(self, tool: int, edge: int, param: int, value: Any, name: str) -> Written:
         if not 1 <= param <= TOOL_PARAM_COUNT:
-            raise WriteRefused(f"$TC_DP{param} does not exist (1 … {TOOL_PARAM_COUNT})")
+            raise WriteRefused("no_tool_parameter", name=f"$TC_DP{param}", count=TOOL_PARAM_COUNT)
         if not 1 <= tool <= TOOL_NUMBER_MAX:
-            raise WriteRefused(f"tool number {tool} outside 1 … {TOOL_NUMBER_MAX}")
+            raise WriteRefused("tool_number_limits", tool=tool, max=TOOL_NUMBER_MAX)
         if not 1 <= edge <= TOOL_EDGE_MAX:
-            raise WriteRefused(f"cutting edge D{edge} outside 1 … {TOOL_EDGE_MAX}")
+            raise WriteRefused("edge_number_limits", edge=f"D{edge}", max=TOOL_EDGE_MAX)
         number = finite_number(value, name)
         check_tool_value(param, number)
         edge_count = int(self.store.value("MD18100"))
         if not self.data.has_room_for_edge(tool, edge, edge_count):
-            raise WriteRefused(f"the tool offset memory holds {edge_count} cutting edges (MD18100): "
-                               f"no room for T{tool} D{edge}")
+            raise WriteRefused("tool_memory_full", count=edge_count, edge=f"T{tool} D{edge}")
         tools = self.data.tools
         edge_data = tools.get((tool, edge))
         if edge_data is None:
@@ -263,15 +263,15 @@ class DataWriter:
     def _write_frame(self, offset: WorkOffset, axis: str, comp: str, value: Any, name: str,
                      frame: str) -> Written:
         if axis not in [a for a in self.store.axes if a not in self.store.machine.spindles]:
-            raise WriteRefused(f"the machine has no axis {axis}")
+            raise WriteRefused("machine_no_axis", axis=axis)
         if comp not in FRAME_COMPONENTS:
-            raise WriteRefused(f"frame component {comp} does not exist (TR FI RT SC MI)")
+            raise WriteRefused("no_frame_component", component=comp)
         number = finite_number(value, f"{frame} {axis} {FRAME_COMPONENT_TEXT[comp]}")
         check_frame_component(comp, number)
         if comp == "MI" and number not in (0.0, 1.0):
-            raise WriteRefused("mirror is 0 or 1")
+            raise WriteRefused("mirror_values")
         if comp == "FI":
-            self._require(Action.WRITE_FINE_OFFSET, f"{action_rules()[Action.WRITE_FINE_OFFSET].title} ({name})")
+            self._require(Action.WRITE_FINE_OFFSET, name)
         if comp == "MI":
             offset.mirror[axis] = bool(number)
         else:
@@ -281,17 +281,17 @@ class DataWriter:
     def _write_gud(self, name: str, index: int | None, value: Any, full: str) -> Written:
         gud = self.data.gud
         if name not in gud:
-            raise WriteRefused(f"user variable {name} is not defined")
+            raise WriteRefused("gud_missing", name=name)
         current = gud[name]
         if isinstance(current, list):
             if index is None or not 0 <= index < len(current):
-                raise WriteRefused(f"{name} is an array of {len(current)}: name the element")
+                raise WriteRefused("gud_array", name=name, count=len(current))
             items = list(current)
             items[index] = _like(items[index], value, name)
             gud[name] = items
         else:
             if index is not None:
-                raise WriteRefused(f"{name} is not an array")
+                raise WriteRefused("gud_not_array", name=name)
             gud[name] = _like(current, value, name)
         return Written(full)
 
@@ -305,18 +305,18 @@ def _like(current: Any, value: Any, name: str) -> Any:
                 return True
             if text in ("FALSE", "0"):
                 return False
-            raise WriteRefused(f"{name} is BOOL: enter TRUE or FALSE")
+            raise WriteRefused("gud_bool", name=name)
         return bool(value)
     if isinstance(current, int):
         number = finite_number(value, name)
         if not number.is_integer():
-            raise WriteRefused(f"{name}: enter a whole number")
+            raise WriteRefused("value_enter_whole_number", name=name)
         return int(number)
     if isinstance(current, float):
         return finite_number(value, name)
     if isinstance(current, str):
         return str(value)
-    raise WriteRefused(f"{name} cannot be written here")
+    raise WriteRefused("not_writable_here", name=name)
 
 
 __all__ = ["DataWriter", "ValueOutOfLimits", "WriteRefused", "Written", "check_frame_component",

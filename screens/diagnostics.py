@@ -283,7 +283,7 @@ class DiagnosticsScreen(AreaBase):
             self.exercises = []  # read again with the imported ones
             self._refresh_view()
 
-        self.app.push_screen(ValueDialog("Import class pack", f"{self.export_dir}{os.sep}",
+        self.app.push_screen(ValueDialog(_("Import class pack"), f"{self.export_dir}{os.sep}",
                                          "The class pack's file (written by nck class-pack export)"), imported)
 
     def action_next_axis(self, step: int) -> None:
@@ -462,7 +462,7 @@ class DiagnosticsScreen(AreaBase):
             try:
                 self.exercises = self.hmi.exercise_list()
             except queries.ExerciseError as exc:
-                self.say(f"Exercises cannot be read: {exc}")
+                self.say(_("Exercises cannot be read: {error}").format(error=exc))
         running = self._running_exercise if self.hmi.exercise_side else None
         show_text(self._body("exercises"), exercises_text(self.exercises, self.exercise_index, running))
 
@@ -526,7 +526,7 @@ class DiagnosticsScreen(AreaBase):
         rows = utilisation_rows(self.hmi.bridge.utilisation, ipo, self.ask(queries.BufferFill()),
                                 counters.cycles_done, counters.blocks_interpreted)
         show_text(self._body("utilisation"), rows_text(
-            "Measured on this computer (wall-clock time spent per simulated IPO cycle)", rows))
+            _("Measured on this computer (wall-clock time spent per simulated IPO cycle)"), rows))
 
     def _render_trace(self, status: NckStatus) -> None:
         machine = self.ask(queries.ReadData()).machine
@@ -555,28 +555,28 @@ class DiagnosticsScreen(AreaBase):
     def _render_version(self, status: NckStatus) -> None:
         machine = self.ask(queries.ReadData()).machine
         rows = [
-            ("Product", "SINUMERIK Operate trainer (828D / 840D sl behaviour)", ""),
-            ("NCK kernel version", str(getattr(nck_package, "__version__", "?")), ""),
-            ("Machine", status.machine_name or "—", ""),
+            (N_("Product"), _("SINUMERIK Operate trainer (828D / 840D sl behaviour)"), ""),
+            (N_("NCK kernel version"), str(getattr(nck_package, "__version__", "?")), ""),
+            (N_("Machine"), status.machine_name or "—", ""),
         ]
         if machine is not None:
             axes = ", ".join(f"{a.name} ({a.kind})" for a in machine.axes)
-            rows.append(("Axes", axes, ""))
-            rows.append(("IPO cycle", f"{self.ask(queries.Counters()).ipo_cycle_s * 1000:.1f}", "ms"))
-            rows.append(("Block buffer (MD28060)", str(machine.md_value("MD28060", None, "—")), "blocks"))
+            rows.append((N_("Axes"), axes, ""))
+            rows.append((N_("IPO cycle"), f"{self.ask(queries.Counters()).ipo_cycle_s * 1000:.1f}", "ms"))
+            rows.append((N_("Block buffer (MD28060)"), str(machine.md_value("MD28060", None, "—")), N_("blocks")))
         text = Text(no_wrap=True, end="")
-        text.append(f" {'Component':<28}Version / configuration\n", style="bold")
+        text.append(f" {_('Component'):<28}{_('Version / configuration')}\n", style="bold")
         for name, value, unit in rows:
-            text.append(f" {name:<28}{value} {unit}\n")
+            text.append(f" {_(name):<28}{value} {_(unit)}\n")
         show_text(self._body("version"), text)
 
     def _render_logbook(self, status: NckStatus) -> None:
         entries = list(self.ask(queries.Logbook()))
         text = Text(no_wrap=True, end="")
-        text.append(f" Current access level: {status.access_level}\n", style="bold")
-        text.append(f" {'Date / time':<20} {'Kind':<8} Change\n", style="bold")
+        text.append(" " + _("Current access level: {level}").format(level=status.access_level) + "\n", style="bold")
+        text.append(f" {_('Date / time'):<20} {_('Kind'):<8} {_('Change')}\n", style="bold")
         if not entries:
-            text.append(" No access-level or machine-data changes since power on.", style="dim")
+            text.append(" " + _("No access-level or machine-data changes since power on."), style="dim")
         times = self.hmi.bridge.alarm_times
         first = max(len(entries) - 40, 0)
         for index in reversed(range(first, len(entries))):

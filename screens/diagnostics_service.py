@@ -172,7 +172,7 @@ def rows_text(title: str, rows: list[Row]) -> Text:
         text.append(f" {_(name):<48}")
         text.append(" " * max(22 - len(value), 0))
         text.append(value, style="bold" if value != MISSING else "dim")
-        text.append(f"  {unit}\n")
+        text.append(f"  {_(unit)}\n")
     return text
 
 
@@ -189,7 +189,7 @@ def utilisation_rows(meter: UtilisationMeter, ipo_cycle_s: float, buffer: tuple[
         (N_("IPO cycle load"), _num(figures["ipo_load_pct"], 2), "%"),
         (N_("Interpreter blocks per second (wall clock)"), _num(figures["blocks_per_s"], 1), "1/s"),
         (N_("Interpreter blocks per second (control time)"), _num(figures["blocks_per_sim_s"], 1), "1/s"),
-        (N_("Block buffer fill"), f"{fill} / {size}", "blocks"),
+        (N_("Block buffer fill"), f"{fill} / {size}", N_("blocks")),
         (N_("IPO cycles measured"), _num(figures["cycles_measured"], 0), ""),
         (N_("IPO cycles since power on"), str(cycles_total), ""),
         (N_("Blocks interpreted since power on"), str(blocks_total), ""),

@@ -311,7 +311,7 @@ class MachineScreen(AreaBase):
                 self.submit(cmd.SelectProgram(choice))
 
         self.app.push_screen(
-            ChoiceDialog("Select program", names, selected, empty_text="no part programs"), select
+            ChoiceDialog(_("Select program"), names, selected, empty_text=N_("no part programs")), select
         )
 
     def action_choose_search_type(self, search_type: str) -> None:

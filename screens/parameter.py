@@ -24,6 +24,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase
 from hmi.dialogs import ConfirmDialog, ValueDialog
+from hmi.i18n import _
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
@@ -198,10 +199,11 @@ class ParameterScreen(AreaBase):
         cursor = self.cursors[self.view]
         cell = self.table.cell(cursor.row, cursor.column)
         if cell is None or not cell.name:
-            self.hmi.set_hint("This value cannot be changed here")
+            self.hmi.set_hint(_("This value cannot be changed here"))
             return
         if self.access_level > cell.level:
-            self.hmi.set_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
+            self.hmi.set_hint(_("{name}: needs access level {level} (current level {current})").format(
+                name=cell.name, level=cell.level, current=self.access_level))
             return
         name = cell.name
 
@@ -209,7 +211,8 @@ class ParameterScreen(AreaBase):
             if text is not None:
                 self.write(name, text.strip())
 
-        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint, typed=typed), write)
+        self.app.push_screen(ValueDialog(_("Change {name}").format(name=name), cell.edit_text, cell.hint, typed=typed),
+                             write)
 
     def write(self, name: str, value: object) -> bool:
         """Send one ``WriteData``; True when the kernel took it."""
@@ -237,16 +240,16 @@ class ParameterScreen(AreaBase):
                 tool = int(parts[0])
                 kind = int(parts[1]) if len(parts) > 1 else DEFAULT_TOOL_TYPE
             except ValueError:
-                self.hmi.set_hint("New tool: give the T number and optionally the type, e.g. 12 120")
+                self.hmi.set_hint(_("New tool: give the T number and optionally the type, e.g. 12 120"))
                 return
-            if any(t == tool for t, _ in self.data_view.data.tools):
-                self.hmi.set_hint(f"T{tool} exists already")
+            if any(t == tool for t, _edge in self.data_view.data.tools):
+                self.hmi.set_hint(_("T{tool} exists already").format(tool=tool))
                 return
             if self.write(f"$TC_DP1[{tool},1]", kind):
                 self._select_tool(tool, 1)
 
-        self.app.push_screen(ValueDialog("New tool: T number and type", "",
-                                         "e.g. 12 120  (120 end mill, 200 twist drill, 500 roughing tool)"),
+        self.app.push_screen(ValueDialog(_("New tool: T number and type"), "",
+                                         _("e.g. 12 120  (120 end mill, 200 twist drill, 500 roughing tool)")),
                              create)
 
     def action_new_edge(self) -> None:
@@ -267,16 +270,16 @@ class ParameterScreen(AreaBase):
         if selected is None:
             return
         tool, edge = selected
-        what = f"T{tool} D{edge}" if edge_only else f"tool T{tool} with all its edges"
+        what = f"T{tool} D{edge}" if edge_only else _("tool T{tool} with all its edges").format(tool=tool)
 
         def delete(yes: bool | None) -> None:
             if yes:
                 result = self.submit(cmd.DeleteToolEdge(tool, edge if edge_only else None))
                 if isinstance(result, Accepted):
-                    self.hmi.set_hint(f"Deleted {what}")
+                    self.hmi.set_hint(_("Deleted {what}").format(what=what))
                 self.refresh_table()
 
-        self.app.push_screen(ConfirmDialog(f"Delete {what}?"), delete)
+        self.app.push_screen(ConfirmDialog(_("Delete {what}?").format(what=what)), delete)
 
     def action_search_tool(self) -> None:
         """Search: put the cursor on the first edge of a T number."""
@@ -285,12 +288,12 @@ class ParameterScreen(AreaBase):
                 try:
                     tool = int(text.strip().lstrip("Tt"))
                 except ValueError:
-                    self.hmi.set_hint("Search: give a T number")
+                    self.hmi.set_hint(_("Search: give a T number"))
                     return
                 if not self._select_tool(tool, None):
-                    self.hmi.set_hint(f"T{tool} not found")
+                    self.hmi.set_hint(_("T{tool} not found").format(tool=tool))
 
-        self.app.push_screen(ValueDialog("Search tool: T number"), find)
+        self.app.push_screen(ValueDialog(_("Search tool: T number")), find)
 
     def _select_tool(self, tool: int, edge: int | None) -> bool:
         keys = sorted(self.data_view.data.tools)
@@ -307,10 +310,11 @@ class ParameterScreen(AreaBase):
         def clear(yes: bool | None) -> None:
             if yes:
                 if isinstance(self.submit(cmd.ClearRParameters()), Accepted):
-                    self.hmi.set_hint("All R parameters are 0")
+                    self.hmi.set_hint(_("All R parameters are 0"))
                 self.refresh_table()
 
-        self.app.push_screen(ConfirmDialog(f"Set all {len(self.data_view.data.r)} R parameters to 0?"), clear)
+        question = _("Set all {count} R parameters to 0?").format(count=len(self.data_view.data.r))
+        self.app.push_screen(ConfirmDialog(question), clear)
 
     # -- display -----------------------------------------------------------------------------------
     def update_status(self, status: NckStatus) -> None:

@@ -73,13 +73,14 @@ def tool_table(view: DataView, status: NckStatus | None, levels: LevelOf, wear: 
     for (tool, edge), data in sorted(view.data.tools.items()):
         kind = int(data.get(1))
         row = [Cell("▶" if (tool, edge) == active else ""), Cell(str(tool)), Cell(str(edge)),
-               Cell(_(TOOL_TYPES[kind]) if kind in TOOL_TYPES else (f"type {kind}" if kind else "—"))]
+               Cell(_(TOOL_TYPES[kind]) if kind in TOOL_TYPES
+                    else (_("type {kind}").format(kind=kind) if kind else "—"))]
         for param, title, _width in fields:
             value = data.get(param)
             shown = str(int(value)) if param in (1, 2) else fixed(value)
             unit = "" if param in (1, 2) else " mm"
             row.append(_datum(f"$TC_DP{param}[{tool},{edge}]", shown, value, levels,
-                              f"T{tool} D{edge} {title}{unit}"))
+                              f"T{tool} D{edge} {_(title)}{unit}"))
         rows.append(row)
     if wear:
         title = N_("Tool wear  (ΔLength / ΔRadius are added to the geometry values)")
@@ -279,7 +280,7 @@ def setting_table(view: DataView, levels: LevelOf) -> DataTable:
                 limits = f", {definition.min:g} … {definition.max:g}"
             unit = store.unit(name)
             title = data_text("md", definition.number, "title", definition.title)
-            hint = f"{definition.identifier}: {title} ({unit or definition.type}{limits})"
+            hint = f"{definition.identifier}: {title} ({_(unit) or definition.type}{limits})"
             rows.append([Cell(_(group)), Cell(key), Cell(definition.name), Cell(axis or ""),
                          _datum(name, shown, value, levels, hint), Cell(_(unit))])
     return DataTable("Setting data  (take effect at once)", columns, rows,

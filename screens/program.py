@@ -42,7 +42,7 @@ from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ChoiceDialog
 from hmi.focus import focus_now
-from hmi.i18n import _, refusal_text
+from hmi.i18n import N_, _, refusal_text
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.program_files import ProgramFiles, decode_program
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -53,6 +53,11 @@ from hmi.word_help import word_at, word_help
 from screens.program_cycles import CycleActions
 from screens.program_edit import EditActions
 from screens.program_runs import CheckAndSimulation
+
+DISCARD_ALL = N_("Discard all unsaved texts")
+RESTORE_ONE = N_("Restore unsaved text")
+DISCARD_ONE = N_("Discard unsaved text")
+"""The journal dialogs' choices that the code answers (shown translated, returned as written)."""
 
 
 def edit_level() -> int:
@@ -322,8 +327,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
 
         self.app.push_screen(
             ChoiceDialog(
-                f"{program} has unsaved changes",
-                ["Save changes", "Discard changes", "Keep unsaved for now", "Back to the editor"],
+                _("{program} has unsaved changes").format(program=program),
+                [N_("Save changes"), N_("Discard changes"), N_("Keep unsaved for now"), N_("Back to the editor")],
             ),
             decided,
         )
@@ -402,35 +407,35 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             if self.program is not None:
                 self.say(_("No unsaved programs in the journal"))
             return
-        by_label = {f"Restore {e.program}": e for e in entries}
+        by_label = {_("Restore {program}").format(program=e.program): e for e in entries}
 
         def chosen(choice: str | None) -> None:
             if choice in by_label:
                 entry = by_label[choice]
                 self._restore(entry)
-            elif choice == "Discard all unsaved texts":
+            elif choice == DISCARD_ALL:
                 for entry in entries:
                     self.journal.discard(entry.program)
                 self.say(_("Unsaved texts discarded"))
 
         self.app.push_screen(
             ChoiceDialog(
-                "Unsaved program text from an earlier session was found",
-                [*by_label, "Discard all unsaved texts"],
+                _("Unsaved program text from an earlier session was found"),
+                [*by_label, DISCARD_ALL],
             ),
             chosen,
         )
 
     def _ask_restore(self, entry: Any) -> None:
         def chosen(choice: str | None) -> None:
-            if choice == "Restore unsaved text":
+            if choice == RESTORE_ONE:
                 self._restore(entry)
-            elif choice == "Discard unsaved text":
+            elif choice == DISCARD_ONE:
                 self.journal.discard(entry.program)
 
         self.app.push_screen(
-            ChoiceDialog(f"{entry.program}: unsaved text from an earlier session",
-                         ["Restore unsaved text", "Discard unsaved text", "Decide later"]),
+            ChoiceDialog(_("{program}: unsaved text from an earlier session").format(program=entry.program),
+                         [RESTORE_ONE, DISCARD_ONE, N_("Decide later")]),
             chosen,
         )
 

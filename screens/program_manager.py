@@ -192,7 +192,8 @@ class ProgramManagerScreen(AreaBase):
             return
         if entries:
             names = ", ".join(e.program for e in entries[:3])
-            self.say(f"Unsaved text from an earlier session ({names}): PROGRAM (Alt+P) offers to restore it")
+            self.say(_("Unsaved text from an earlier session ({names}): PROGRAM (Alt+P) offers to restore it").format(
+                names=names))
 
     def on_screen_resume(self) -> None:
         """Back in the area: list again (files may have changed in the editor)."""
@@ -292,7 +293,8 @@ class ProgramManagerScreen(AreaBase):
             self.entries, odd = [], []
             self.say(f"{self.directory}: {exc}")
         if odd:
-            self.say(f"{self.directory}: skipped {', '.join(odd)} (not a regular file or folder)")
+            self.say(_("{directory}: skipped {names} (not a regular file or folder)").format(
+                directory=self.directory, names=", ".join(odd)))
         selected = (self.status.channel.selected_program if self.status else None) or ""
         selected_name = Path(selected).name.upper()
         table.clear()
@@ -371,7 +373,7 @@ class ProgramManagerScreen(AreaBase):
         """Execute: select the program for AUTO and go to the Machine area."""
         entry = self.current_entry()
         if entry is None or entry.kind != "MPF":
-            self.say("Only a part program (MPF) can be selected")
+            self.say(_("Only a part program (MPF) can be selected"))
             return
         if self.status is not None and self.status.channel.mode != "AUTO":
             result = self.submit(cmd.SelectMode("AUTO"))
@@ -388,7 +390,9 @@ class ProgramManagerScreen(AreaBase):
     def action_new(self) -> None:
         """New: ask for a name and create an empty program (a folder in Workpieces)."""
         directory = self.directory
-        kind = "workpiece" if directory == "WKS" else ("subprogram" if directory == "SPF" else "program")
+        question = (_("New workpiece in {directory}: name") if directory == "WKS"
+                    else _("New subprogram in {directory}: name") if directory == "SPF"
+                    else _("New program in {directory}: name"))
 
         def create(name: str | None) -> None:
             if not name:
@@ -396,23 +400,23 @@ class ProgramManagerScreen(AreaBase):
             try:
                 path = self.files.create(directory, name)
             except (ProgramFileError, OSError) as exc:
-                self.say(f"New: {exc}")
+                self.say(_("New: {exc}").format(exc=exc))
                 return
             self.rebuild_tree()
             self.refresh_listing(select=path)
-            self.say(f"{path} created")
+            self.say(_("{path} created").format(path=path))
             if not path.endswith(".WPD"):
                 self.files.request_open(path, at_end=True)
                 self.perform("app.switch_area('program')")
 
-        self.app.push_screen(PromptDialog(f"New {kind} in {directory}: name", ""), create)
+        self.app.push_screen(PromptDialog(question.format(directory=directory), ""), create)
 
     def action_copy(self) -> None:
         """Copy: remember the program for Paste."""
         entry = self.current_entry()
         if entry is not None and entry.kind != "WPD":
             self._clipboard = entry.path
-            self.say(f"{entry.path} copied — Paste puts a copy into the directory shown")
+            self.say(_("{path} copied — Paste puts a copy into the directory shown").format(path=entry.path))
             self.refresh_softkeys()
 
     def action_paste(self) -> None:
@@ -422,10 +426,10 @@ class ProgramManagerScreen(AreaBase):
         try:
             path = self.files.paste_copy(self._clipboard, self.directory)
         except (ProgramFileError, OSError) as exc:
-            self.say(f"Paste: {exc}")
+            self.say(_("Paste: {exc}").format(exc=exc))
             return
         self.refresh_listing(select=path)
-        self.say(f"{path} created as a copy of {self._clipboard}")
+        self.say(_("{path} created as a copy of {clipboard}").format(path=path, clipboard=self._clipboard))
 
     def action_rename(self) -> None:
         """Rename: ask for the new name (refused for the program being executed)."""
@@ -433,7 +437,7 @@ class ProgramManagerScreen(AreaBase):
         if entry is None or entry.kind == "WPD":
             return
         if entry.path in self._in_use() or entry.name.upper() in {Path(p).name.upper() for p in self._in_use()}:
-            self.say(f"{entry.path} is being executed and cannot be renamed")
+            self.say(_("{path} is being executed and cannot be renamed").format(path=entry.path))
             return
 
         def rename(name: str | None) -> None:
@@ -442,12 +446,12 @@ class ProgramManagerScreen(AreaBase):
             try:
                 path = self.files.fs.rename(entry.path, name).path
             except (ProgramFileError, OSError) as exc:
-                self.say(f"Rename: {exc}")
+                self.say(_("Rename: {exc}").format(exc=exc))
                 return
             self.refresh_listing(select=path)
-            self.say(f"{entry.path} renamed to {path}")
+            self.say(_("{path} renamed to {new}").format(path=entry.path, new=path))
 
-        self.app.push_screen(PromptDialog(f"Rename {entry.path} to:", entry.name), rename)
+        self.app.push_screen(PromptDialog(_("Rename {path} to:").format(path=entry.path), entry.name), rename)
 
     def action_delete(self) -> None:
         """Delete: ask, then delete (refused for the program being executed)."""
@@ -455,7 +459,7 @@ class ProgramManagerScreen(AreaBase):
         if entry is None:
             return
         if entry.name.upper() in {Path(p).name.upper() for p in self._in_use()}:
-            self.say(f"{entry.path} is being executed and cannot be deleted")
+            self.say(_("{path} is being executed and cannot be deleted").format(path=entry.path))
             return
 
         def confirmed(choice: str | None) -> None:
@@ -464,15 +468,16 @@ class ProgramManagerScreen(AreaBase):
             try:
                 self.files.fs.delete(entry.path)
             except (ProgramFileError, OSError) as exc:
-                self.say(f"Delete: {exc}")
+                self.say(_("Delete: {exc}").format(exc=exc))
                 return
             if entry.kind == "WPD":
                 self.rebuild_tree()
             self.refresh_listing()
-            self.say(f"{entry.path} deleted")
+            self.say(_("{path} deleted").format(path=entry.path))
 
-        what = "the workpiece folder and everything in it" if entry.kind == "WPD" else "the program"
-        self.app.push_screen(ChoiceDialog(f"Delete {what} {entry.path}?", ["Cancel", "Delete"]), confirmed)
+        question = (_("Delete the workpiece folder and everything in it {path}?") if entry.kind == "WPD"
+                    else _("Delete the program {path}?"))
+        self.app.push_screen(ChoiceDialog(question.format(path=entry.path), [N_("Cancel"), N_("Delete")]), confirmed)
 
     def action_search(self) -> None:
         """Search: find a program by (part of) its name in all NC directories."""
@@ -483,7 +488,7 @@ class ProgramManagerScreen(AreaBase):
             self._search_text = text
             self.find_next(text)
 
-        self.app.push_screen(PromptDialog("Search program name:", self._search_text), search)
+        self.app.push_screen(PromptDialog(_("Search program name:"), self._search_text), search)
 
     def find_next(self, text: str) -> bool:
         """Move the cursor to the next program whose name contains ``text`` (all directories)."""
@@ -501,9 +506,9 @@ class ProgramManagerScreen(AreaBase):
                     self.directory = folder
                     self.refresh_listing(select=entry.path)
                     focus_now(self.table)
-                    self.say(f"Found {entry.path}")
+                    self.say(_("Found {path}").format(path=entry.path))
                     return True
-        self.say(f"No program name contains '{text}'")
+        self.say(_("No program name contains '{text}'").format(text=text))
         return False
 
     def action_import_file(self) -> None:
@@ -516,13 +521,14 @@ class ProgramManagerScreen(AreaBase):
             try:
                 target = self.files.fs.import_file(Path(path).expanduser(), directory).path
             except (ProgramFileError, OSError) as exc:
-                self.say(f"Import: {exc}")
+                self.say(_("Import: {exc}").format(exc=exc))
                 return
             self.directory = directory
             self.refresh_listing(select=target)
-            self.say(f"{path} imported as {target}")
+            self.say(_("{path} imported as {target}").format(path=path, target=target))
 
-        self.app.push_screen(PromptDialog(f"Import into {directory}: path of the file on this PC", ""), do_import)
+        self.app.push_screen(PromptDialog(_("Import into {directory}: path of the file on this PC").format(
+            directory=directory), ""), do_import)
 
     def action_export_file(self) -> None:
         """Export: write a copy of the program to a path of the PC."""
@@ -536,16 +542,17 @@ class ProgramManagerScreen(AreaBase):
             try:
                 target = self.files.fs.export_file(entry.path, Path(path).expanduser(), replace)
             except FileExistsError as exc:
-                self.app.push_screen(ConfirmDialog(f"{exc.filename} already exists. Replace it?"),
+                question = _("{filename} already exists. Replace it?").format(filename=exc.filename)
+                self.app.push_screen(ConfirmDialog(question),
                                      lambda yes: do_export(path, True) if yes else None)
                 return
             except (ProgramFileError, OSError) as exc:
-                self.say(f"Export: {exc}")
+                self.say(_("Export: {exc}").format(exc=exc))
                 return
-            self.say(f"{entry.path} exported to {target}")
+            self.say(_("{path} exported to {target}").format(path=entry.path, target=target))
 
-        self.app.push_screen(PromptDialog(f"Export {entry.path} to (file or folder on this PC):", str(Path.cwd())),
-                             do_export)
+        question = _("Export {path} to (file or folder on this PC):").format(path=entry.path)
+        self.app.push_screen(PromptDialog(question, str(Path.cwd())), do_export)
 
 
 AreaScreen = ProgramManagerScreen

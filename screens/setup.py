@@ -42,8 +42,8 @@ from screens.setup_workpiece import workpiece_table
 MD_VIEWS = {"general": N_("General machine data"), "channel": N_("Channel machine data"),
             "axis": N_("Axis machine data"), "display": N_("Display machine data")}
 TABLE_VIEWS = (*MD_VIEWS, "workpiece")
-ACTIVATION_TEXT = {"so": "immediately", "re": "at RESET", "cf": "at NEW CONFIG (Set MD active) or RESET",
-                   "po": "at POWER ON (Reset (po))"}
+ACTIVATION_TEXT = {"so": N_("immediately"), "re": N_("at RESET"), "cf": N_("at NEW CONFIG (Set MD active) or RESET"),
+                   "po": N_("at POWER ON (Reset (po))")}
 LEVEL_NAMES = {0: N_("System"), 1: N_("Manufacturer"), 2: N_("Service"), 3: N_("User")}
 
 wall_clock: Callable[[], datetime] = datetime.now
@@ -93,14 +93,16 @@ def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) 
         d = row.ref.definition
         title = data_text("md", d.number, "title", d.title)
         if d.array:
-            hint = (f"{d.identifier}: {title}. Array of {d.array}: give index and value, e.g. 0 5 "
-                    f"(takes effect {ACTIVATION_TEXT[d.activation]})")
+            hint = _("{identifier}: {title}. Array of {count}: give index and value, e.g. 0 5 "
+                     "(takes effect {when})").format(
+                identifier=d.identifier, title=title, count=d.array, when=_(ACTIVATION_TEXT[d.activation]))
             edit = "0 "
         else:
             edit = row.value_text if d.type != "bool" else ("1" if store.value(row.ref) else "0")
             limits = f", {d.min:g} … {d.max:g}" if d.min is not None and d.max is not None else ""
-            hint = (f"{d.identifier}: {title} ({row.unit or d.type}{limits}); takes effect "
-                    f"{ACTIVATION_TEXT[d.activation]}")
+            hint = _("{identifier}: {title} ({unit}{limits}); takes effect {when}").format(
+                identifier=d.identifier, title=title, unit=_(row.unit) or d.type, limits=limits,
+                when=_(ACTIVATION_TEXT[d.activation]))
         rows.append([Cell(str(d.number)), Cell(d.name),
                      Cell(row.value_text, row.ref.text, edit, row.write_level, hint),
                      Cell(_(row.unit)), Cell(row.activation), Cell(str(row.write_level)),
@@ -295,12 +297,14 @@ class SetupScreen(AreaBase):
         if cell is None or not cell.name:
             return
         if self.access_level > cell.level:
-            self.hmi.set_hint(f"{cell.name}: needs access level {cell.level} (current level {self.access_level})")
+            self.hmi.set_hint(_("{name}: needs access level {level} (current level {current})").format(
+                name=cell.name, level=cell.level, current=self.access_level))
             return
         name = cell.name
         if self.view == "workpiece":
-            self.app.push_screen(ValueDialog(f"Change {cell.hint.split(':')[0]}", cell.edit_text, cell.hint,
-                                             typed=typed), lambda text: self.write_setup_field(name, text))
+            title = _("Change {name}").format(name=cell.hint.split(":")[0])
+            self.app.push_screen(ValueDialog(title, cell.edit_text, cell.hint, typed=typed),
+                                 lambda text: self.write_setup_field(name, text))
             return
         definition = self.data_view.machine_data.resolve(name).definition
 
@@ -311,17 +315,19 @@ class SetupScreen(AreaBase):
             if definition.array:
                 parts = value.split(None, 1)
                 if len(parts) != 2 or not (parts[0].isascii() and parts[0].isdigit()):
-                    self.hmi.set_hint(f"{name} is an array: give index and value, e.g. 0 5")
+                    self.hmi.set_hint(_("{name} is an array: give index and value, e.g. 0 5").format(name=name))
                     return
                 index, value = parts
                 axis = f",{name.split('[')[1].rstrip(']')}" if "[" in name else ""
                 target = f"{definition.key}[{index}{axis}]"
             result = self.submit(cmd.WriteData(target, value))
             if isinstance(result, Accepted):
-                self.hmi.set_hint(f"{target} = {value}: takes effect {ACTIVATION_TEXT[definition.activation]}")
+                self.hmi.set_hint(_("{name} = {value}: takes effect {when}").format(
+                    name=target, value=value, when=_(ACTIVATION_TEXT[definition.activation])))
             self.refresh_view()
 
-        self.app.push_screen(ValueDialog(f"Change {name}", cell.edit_text, cell.hint, typed=typed), write)
+        self.app.push_screen(ValueDialog(_("Change {name}").format(name=name), cell.edit_text, cell.hint, typed=typed),
+                             write)
 
     @property
     def machine_setup(self) -> Any:
@@ -339,7 +345,7 @@ class SetupScreen(AreaBase):
             self.hmi.set_hint(str(error))
             return
         if isinstance(self.submit(cmd.WriteMachineSetup(changed)), Accepted):
-            self.hmi.set_hint(f"Machine set-up: {name} = {text.strip()}")
+            self.hmi.set_hint(_("Machine set-up: {name} = {value}").format(name=name, value=text.strip()))
         self.refresh_view()
         self.refresh_softkeys()
 
@@ -354,7 +360,8 @@ class SetupScreen(AreaBase):
         store = self.data_view.machine_data
         pending = list(store.pending()) if store is not None else []
         if isinstance(self.submit(cmd.ActivateMachineData()), Accepted):
-            self.hmi.set_hint("Machine data active" + (f": {', '.join(pending)}" if pending else ""))
+            self.hmi.set_hint(_("Machine data active: {names}").format(names=", ".join(pending)) if pending
+                              else _("Machine data active"))
         self.refresh_view()
 
     def action_power_on(self) -> None:
@@ -364,23 +371,24 @@ class SetupScreen(AreaBase):
                 return
             if self.hmi.power_on_reset():
                 self.power_on_at = wall_clock()
-                self.hmi.set_hint("NCK restarted (power on): every stored machine datum is active")
+                self.hmi.set_hint(_("NCK restarted (power on): every stored machine datum is active"))
             else:
-                self.hmi.set_hint("Reset (po) needs the NC data directory (the kernel runs without one)")
+                self.hmi.set_hint(_("Reset (po) needs the NC data directory (the kernel runs without one)"))
             self.refresh_view()
 
         self.app.push_screen(ConfirmDialog(
-            "Restart the NCK (power off/on)? Programs are aborted; axes must be referenced again."), restart)
+            _("Restart the NCK (power off/on)? Programs are aborted; axes must be referenced again.")), restart)
 
     def action_set_password(self) -> None:
         """Set password: a level 1–3 password raises the access level."""
         def enter(text: str | None) -> None:
             if text:
                 if isinstance(self.submit(cmd.EnterPassword(text)), Accepted):
-                    self.hmi.set_hint(f"Access level {level_text(self.hmi.bridge.status.access_level)}")
+                    self.hmi.set_hint(_("Access level {level}").format(
+                        level=level_text(self.hmi.bridge.status.access_level)))
                 self.refresh_view()
 
-        self.app.push_screen(ValueDialog("Set password", "", "at most 8 characters", password=True), enter)
+        self.app.push_screen(ValueDialog(_("Set password"), "", _("at most 8 characters"), password=True), enter)
 
     def action_change_password(self) -> None:
         """Change password: level, new password, the same again."""
@@ -388,7 +396,7 @@ class SetupScreen(AreaBase):
             if not level_text_:
                 return
             if level_text_.strip() not in ("1", "2", "3"):
-                self.hmi.set_hint("Change password: levels 1, 2 and 3 have passwords")
+                self.hmi.set_hint(_("Change password: levels 1, 2 and 3 have passwords"))
                 return
             level = int(level_text_)
 
@@ -400,24 +408,25 @@ class SetupScreen(AreaBase):
                     if second is None:
                         return
                     if second != first:
-                        self.hmi.set_hint("The two entries differ: password not changed")
+                        self.hmi.set_hint(_("The two entries differ: password not changed"))
                         return
                     if isinstance(self.submit(cmd.ChangePassword(level, first)), Accepted):
-                        self.hmi.set_hint(f"New password for level {level} stored")
+                        self.hmi.set_hint(_("New password for level {level} stored").format(level=level))
                     self.refresh_view()
 
-                self.app.push_screen(ValueDialog("Repeat the new password", "", password=True), confirm)
+                self.app.push_screen(ValueDialog(_("Repeat the new password"), "", password=True), confirm)
 
-            self.app.push_screen(ValueDialog(f"New password for level {level}", "",
-                                             "at most 8 characters", password=True), ask_again)
+            self.app.push_screen(ValueDialog(_("New password for level {level}").format(level=level), "",
+                                             _("at most 8 characters"), password=True), ask_again)
 
         current = self.access_level if self.access_level in (1, 2, 3) else 3
-        self.app.push_screen(ValueDialog("Change password of level (1–3)", str(current)), ask_new)
+        self.app.push_screen(ValueDialog(_("Change password of level (1–3)"), str(current)), ask_new)
 
     def action_delete_password(self) -> None:
         """Delete password: back to the keyswitch level."""
         if isinstance(self.submit(cmd.DeletePassword()), Accepted):
-            self.hmi.set_hint(f"Password deleted: access level {level_text(self.hmi.bridge.status.access_level)}")
+            self.hmi.set_hint(_("Password deleted: access level {level}").format(
+                level=level_text(self.hmi.bridge.status.access_level)))
         self.refresh_view()
 
     # -- display -------------------------------------------------------------------------------------

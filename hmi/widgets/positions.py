@@ -35,7 +35,7 @@ def position_lines(status: NckStatus, mcs: bool, selected_axis: str | None) -> T
         text.append(f"{marker}{axis.name:<4}", style="bold")
         text.append("   ")
         text.append(format_mm(axis.position_mcs if mcs else axis.position_wcs, 17) + "°")
-        text.append(f"{fixed(axis.speed_rpm, 0, 13)} rpm  {status.channel.modal.spindle_state}\n")
+        text.append(f"{fixed(axis.speed_rpm, 0, 13)} {_('rpm')}  {status.channel.modal.spindle_state}\n")
     return text
 
 

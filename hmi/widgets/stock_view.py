@@ -27,7 +27,7 @@ from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
 
-from hmi.i18n import N_, _
+from hmi.i18n import N_, _, reason_text
 from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
 
 BACKGROUND = np.array([16, 20, 28], dtype=np.uint8)
@@ -118,7 +118,7 @@ def material_events(simulation: Any) -> str:
     if not events:
         return _("no collisions")
     more = _(" (+{count} more)").format(count=len(events) - 1) if len(events) > 1 else ""
-    return events[0].text + more
+    return reason_text(events[0].text) + more
 
 
 @dataclass

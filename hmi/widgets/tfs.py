@@ -41,7 +41,7 @@ def tfs_lines(status: NckStatus) -> Text:
     spindle = next((a for a in status.axes if a.kind == "spindle"), None)
     if spindle is not None:
         text.append(f" S{spindle.name[-1] if spindle.name[-1].isdigit() else '1'} ", style="bold")
-        text.append(f"{fixed(spindle.speed_rpm, 0, 10)} / {fixed(modal.spindle_speed_rpm, 0, 10)} rpm   ")
+        text.append(f"{fixed(spindle.speed_rpm, 0, 10)} / {fixed(modal.spindle_speed_rpm, 0, 10)} {_('rpm')}   ")
         text.append(f"{modal.spindle_state:<3}")
         text.append(f"  {format_override(overrides.get('spindle', 100)):>3} %\n")
         # A speed limit acting on the setpoint is said, not hidden (DB31 DBX83.1 "setpoint

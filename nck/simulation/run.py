@@ -51,6 +51,7 @@ from nck.interp.api import ProgramSource
 from nck.machine import MachineConfig, load_machine
 from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
+from nck.phrase import Phrase
 from nck.resources import alarm_text
 from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_from_text
 from nck.simulation.cutter import Cutter
@@ -81,14 +82,15 @@ class SimEvent:
     depth_mm: float
 
     @property
-    def text(self) -> str:
-        """The event in the panel's words."""
-        where = f"N{self.n}" if self.n is not None else f"line {self.line}"
+    def text(self) -> Phrase:
+        """The event in the panel's words (English; a panel translates the phrase)."""
+        where = f"N{self.n}" if self.n is not None else Phrase("line {line}", line=self.line)
+        depth = f"{self.depth_mm:.2f}"
         if self.kind == "rapid_cut":
-            return f"{where}: rapid traverse into material ({self.depth_mm:.2f} mm deep)"
+            return Phrase("{where}: rapid traverse into material ({depth} mm deep)", where=where, depth=depth)
         if self.kind == "holder_in_material":
-            return f"{where}: tool holder below the surface (cut {self.depth_mm:.2f} mm deep)"
-        return f"{where}: cutting with the spindle stopped ({self.depth_mm:.2f} mm deep)"
+            return Phrase("{where}: tool holder below the surface (cut {depth} mm deep)", where=where, depth=depth)
+        return Phrase("{where}: cutting with the spindle stopped ({depth} mm deep)", where=where, depth=depth)
 
 
 @dataclass

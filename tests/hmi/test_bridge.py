@@ -66,4 +66,4 @@ def test_refusal_is_posted_with_reason() -> None:
     result = bridge.submit(c.CycleStart())
     assert isinstance(result, c.Rejected)
     rejected = inbox.of(CommandRejected)
-    assert rejected and rejected[-1].alarm == 10203 and "referenced" in rejected[-1].reason
+    assert rejected and rejected[-1].refusal.alarm == 10203 and "referenced" in rejected[-1].refusal.reason

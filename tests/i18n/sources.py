@@ -3,8 +3,9 @@
 A text is taken from ``hmi/`` and ``screens/`` where it is
 
 * the literal argument of ``_("…")`` (translated where shown) or ``N_("…")`` (a table
-  defined at import, translated where shown), and of ``Reason("…")`` in the kernel modules of
-  :data:`KERNEL_MODULES` (the exercise checks' reasons, which the side window translates);
+  defined at import, translated where shown), and of ``Reason("…")`` / ``Phrase("…")`` in the
+  kernel modules of :data:`KERNEL_MODULES` (the exercise checks' reasons, which the side window
+  translates, and the simulation's events);
 * the title and note of a ``DataTable(…)`` and the title of a ``Column(…)`` (the table
   window draws them translated), the title and hint of a ``JogForm(…)`` and the label of a
   ``FieldSpec(…)`` (the JOG windows draw them translated);
@@ -25,9 +26,10 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("hmi", "screens")
-MARKERS = frozenset({"_", "N_", "Reason"})
-KERNEL_MODULES = ("nck/exercise_checks.py",)
-"""Modules of the kernel whose texts the panel translates: the exercise checks' ``Reason(…)``."""
+MARKERS = frozenset({"_", "N_", "Reason", "Phrase"})
+KERNEL_MODULES = ("nck/exercise_checks.py", "nck/simulation/run.py")
+"""Modules of the kernel whose texts the panel translates: the exercise checks' ``Reason(…)``,
+the simulation events' ``Phrase(…)`` (``nck.phrase``)."""
 LABELLED = frozenset({"Softkey", "view_softkey", "view_key", "_view_key", "_search_mode_key"})
 """Functions whose second argument is a softkey label (the areas' small softkey builders)."""
 

@@ -4,8 +4,8 @@ The English texts are the entries of ``data/alarms`` (text and the help's explan
 remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
 G functions' meanings, and the editor's word help of ``words.toml``), ``data/cycles/cycles.toml``
 (the editor's cycle forms: each form's title, each parameter's help line and each sketch) and the guided exercises
-of ``data/exercises`` (title, level, summary, every step's text and hint) and the kernel's refusals of
-``data/refusals.toml``; the translations are the
+of ``data/exercises`` (title, level, summary, every step's text and hint), the kernel's refusals of
+``data/refusals.toml`` and the protected functions' titles of ``data/access.toml``; the translations are the
 overlays ``data/lang/<code>/*.toml``.
 """
 
@@ -61,6 +61,8 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     entries["exercise_step"] = {f"{e.exercise_id}.{number}": {"text": step.text, **({"hint": step.hint} if step.hint else {})}
                                 for e in exercises for number, step in enumerate(e.steps, 1)}
     entries["refusal"] = {key: {"text": text} for key, text in refusal_texts().items()}
+    actions = read_table(data_path("access.toml"))["action"]
+    entries["action"] = {key: {"title": entry["title"]} for key, entry in actions.items()}
     return entries
 
 

@@ -11,27 +11,80 @@ import pytest
 
 from hmi.i18n import refusal_text, set_language
 from nck import commands as cmd
-from nck.refusals import refusal_texts, refuse
+from nck.access import AccessControl, AccessDenied, AccessState, Action
+from nck.kernel import Nck
+from nck.refusals import refusal_texts, refuse, rejected_by
+from nck.refused import Refused
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def refused_keys() -> set[str]:
-    """The keys of every ``refuse("…")`` call in the kernel and the panel."""
-    keys: set[str] = set()
+def refusal_classes() -> set[str]:
+    """``refuse`` and the names of the exceptions that are raised with a refusal key
+    (:class:`nck.refused.Refused` and its subclasses; AccessDenied's first argument is the key
+    of what it refuses)."""
+    names = {"refuse"}
+    found = [Refused]
+    while found:
+        kind = found.pop()
+        names.add(kind.__name__)
+        found += kind.__subclasses__()
+    return names
+
+
+def code_trees():
     for folder in ("nck", "hmi", "screens"):
         for path in (ROOT / folder).rglob("*.py"):
-            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-                if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "refuse"
-                        and node.args and isinstance(node.args[0], ast.Constant)):
-                    keys.add(node.args[0].value)
+            yield ast.parse(path.read_text(encoding="utf-8"))
+
+
+def refused_keys() -> set[str]:
+    """The keys of every ``refuse("…")`` call and every refusal exception raised with a key in
+    the kernel and the panel."""
+    names = refusal_classes()
+    keys: set[str] = set()
+    for tree in code_trees():
+        for node in ast.walk(tree):
+            if (isinstance(node, ast.Call) and isinstance(node.func, (ast.Name, ast.Attribute))
+                    and (node.func.id if isinstance(node.func, ast.Name) else node.func.attr) in names
+                    and node.args and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
+                keys.add(node.args[0].value)
     return keys
 
 
+def code_strings() -> set[str]:
+    """Every string constant of the kernel and the panel (a key chosen from a table is one)."""
+    return {node.value for tree in code_trees() for node in ast.walk(tree)
+            if isinstance(node, ast.Constant) and isinstance(node.value, str)}
+
+
 def test_every_refusal_key_has_a_text_and_every_text_a_refusal() -> None:
+    import nck.manual_settings, nck.md_catalog, nck.value_text, nck.writes  # noqa: F401 - their refusal classes
     used = refused_keys()
+    assert {"password_empty", "md_write", "gud_missing", "value_missing"} <= used
     assert used - set(refusal_texts()) == set()
-    assert set(refusal_texts()) - used == set()
+    assert set(refusal_texts()) - used - code_strings() == set()
+
+
+def test_a_refusal_from_an_exception_is_keyed_and_said_in_the_panels_language(german: None) -> None:
+    """An access refusal (AccessDenied) and a data write's refusal reach the panel with their key:
+    the English reason stays, the panel says them in German, the action's title too."""
+    control = AccessControl(AccessState(keyswitch_position=0))
+    with pytest.raises(AccessDenied) as denied:
+        control.require(Action.WRITE_TOOL_GEOMETRY, "$TC_DP3[1,1]")
+    rejected = rejected_by(denied.value)
+    assert rejected.reason == ("Writing tool geometry ($TC_DP3[1,1]) needs protection level "
+                               f"{denied.value.needed_level} or lower (current level 7)")
+    assert refusal_text(rejected) == ("Werkzeuggeometrie schreiben ($TC_DP3[1,1]) erfordert Schutzstufe "
+                                      f"{denied.value.needed_level} oder niedriger (aktuelle Stufe 7)")
+    with pytest.raises(AccessDenied) as denied:
+        control.change_password(2, "SECRET")
+    assert refusal_text(rejected_by(denied.value)) == ("Das Ändern des Kennworts der Stufe 2 erfordert "
+                                                       "Schutzstufe 2 oder niedriger (aktuelle Stufe 7)")
+    kernel = Nck()
+    result = kernel.submit(cmd.WriteData("R1", "abc"))
+    assert isinstance(result, cmd.Rejected) and result.reason == "R1: “abc” is not a number"
+    assert refusal_text(result) == "R1: „abc“ ist keine Zahl"
 
 
 def test_a_refusal_keeps_its_english_reason_and_fields() -> None:
