@@ -8,7 +8,7 @@ STAMP := $(VENV)/.installed
 # are compiled; stale bytecode is never used (Python checks the source's time stamp).
 COMPILE := $(BIN)/python -m compileall -q nck hmi screens bench >/dev/null
 
-.PHONY: run test fuzz bench snapshot-update clean browser
+.PHONY: run test fuzz bench snapshot-update clean browser rs274
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -40,7 +40,22 @@ browser:
 	  fi; \
 	fi
 
-fuzz: $(STAMP)
+# LinuxCNC's stand-alone interpreter for the differential fuzzing against rs274 (tests/iso/
+# test_rs274_diff.py, tests/bench): Debian's linuxcnc-uspace, installed when make runs as root.
+# `make test` does not install it (a few minutes of download); without it those comparisons are
+# skipped there and run here.
+rs274:
+	@if ! command -v rs274 >/dev/null; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "make: installing linuxcnc-uspace for the comparison with rs274"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq linuxcnc-uspace >/dev/null) \
+	      || echo "make: linuxcnc-uspace could not be installed: the rs274 comparisons will be skipped"; \
+	  else \
+	    echo "make: no rs274 (apt-get install linuxcnc-uspace as root): the rs274 comparisons will be skipped"; \
+	  fi; \
+	fi
+
+fuzz: $(STAMP) rs274
 	$(BIN)/python -m pytest -q -m fuzz -p no:cacheprovider -o timeout=0 --hypothesis-profile=fuzz
 	ISO_RS274_PROGRAMS=600 $(BIN)/python -m pytest -q -n 2 -p no:cacheprovider -o timeout=0 --hypothesis-profile=fuzz tests/iso/test_rs274_diff.py
 
