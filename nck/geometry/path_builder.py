@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from types import SimpleNamespace
-from typing import Any, Mapping
+from typing import Any, Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -479,17 +479,7 @@ class PathBuilder:
                 kept.append(axis)
         position_wcs = self._display(end, gcodes, units)
         end_wcs = dict(position_wcs)
-        for axis in kept:  # as _report_actual: where a kept axis stands, seen through the frame
-            bcs = float(end_mcs[axis]) - tool.get(axis, 0.0)
-            if axis in geo_axes:
-                i = geo_axes.index(axis)
-                wcs_mm = (bcs - offsets[i]) / scales[i]
-            else:
-                factor, offset = transform.axial.get(axis, (1.0, 0.0))
-                wcs_mm = (bcs - offset) / factor
-            actual = round_position(self.from_mm(axis, wcs_mm, modal, units))
-            if abs(actual - end_wcs.get(axis, actual)) > 1e-6:
-                end_wcs[axis] = actual
+        self._report_actual(end_wcs, end_mcs, kept, (scales, offsets), transform, tool, modal, units)
         rapid = kind == "G0"
         motion = canon.Motion(
             kind=kind, source=words.source, plane=plane_code, end_wcs=end_wcs, end_mcs=end_mcs,
@@ -767,23 +757,24 @@ class PathBuilder:
         return tuple(a for a in self.path_axes
                      if a not in context["programmed"] and (a not in self.geo_axes or not coupled))
 
-    def _report_actual(self, end_wcs: dict[str, float], end_mcs: Mapping[str, float],
-                       context: Mapping[str, Any]) -> None:
+    def _report_actual(self, end_wcs: dict[str, float], end_mcs: Mapping[str, float], kept: Iterable[str],
+                       geo_scales_offsets: tuple[Sequence[float] | np.ndarray, Sequence[float] | np.ndarray],
+                       transform: Transform, tool: Mapping[str, float], modal: Any, units: UnitSystem) -> None:
         """Kept axes report where they stand in the active system, not their old programmed value.
 
         After a zero-offset change an axis the block does not program stays in the machine, so
         its WCS position is the machine position seen through the new frame (what the actual
         value display shows); its programmed position (for incremental moves, SD 42440) is kept.
         Differences below 1e-6 are floating noise of the round trip and leave the value alone.
+        A geometry axis is seen through its scale and offset of ``geo_scales_offsets``, any
+        other axis through the frame's axial part.
         """
-        transform: Transform = context["transform"]
-        tool: Mapping[str, float] = context["tool"]
-        modal, units = SimpleNamespace(gcodes=context["gcodes"]), context["units"]
-        for axis in self._kept_axes(context):
+        scales, offsets = geo_scales_offsets
+        for axis in kept:
             bcs = float(end_mcs.get(axis, 0.0)) - tool.get(axis, 0.0)
             if axis in self.geo_axes:
                 i = self.geo_axes.index(axis)
-                wcs_mm = (bcs - transform.matrix[i, 3]) / transform.matrix[i, i]
+                wcs_mm = (bcs - offsets[i]) / scales[i]
             else:
                 factor, offset = transform.axial.get(axis, (1.0, 0.0))
                 wcs_mm = (bcs - offset) / factor
@@ -825,7 +816,10 @@ class PathBuilder:
                 kind = "G2" if element.clockwise_in(plane(context["plane"], self.geo_axes)) else "G3"
         end_wcs = self._wcs_out(element.end, context)
         if keep and not inserted:
-            self._report_actual(end_wcs, end_mcs, context)
+            transform = context["transform"]
+            self._report_actual(end_wcs, end_mcs, self._kept_axes(context),
+                                (transform.matrix.diagonal(), transform.matrix[:, 3]), transform,
+                                context["tool"], SimpleNamespace(gcodes=context["gcodes"]), context["units"])
         length = element.length() if isinstance(element, Arc) else math.dist(element.start, element.end)
         feed = context["feed"]
         rapid = kind == "G0"
