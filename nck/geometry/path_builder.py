@@ -80,6 +80,10 @@ def round_position(value: float) -> float:
     return round(float(value), ROUND_DIGITS) + 0.0
 
 
+SHARED_GCODE_TABLES = 4
+"""G-code tables the path builder keeps for its motions to share (:meth:`PathBuilder.shared_gcodes`)."""
+
+
 class PathBuilder:
     """Computes the path geometry of blocks for one machine (see module docstring)."""
 
@@ -104,6 +108,7 @@ class PathBuilder:
         self.basic_metric = bool(machine.md_value("MD10240", default=1))
         self._no_tool: Mapping[str, float] = {axis: 0.0 for axis in self.geo_axes}  # read only
         self._display_axes: dict[str | None, tuple[tuple[str, bool, bool], ...]] = {}  # by G group 29 code
+        self._gcodes_copies: list[Mapping[int, str]] = []  # the motions' shared G-code tables (shared_gcodes)
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -208,6 +213,20 @@ class PathBuilder:
     def wcs_view(self, geo: GeometryState, modal: Any) -> dict[str, float]:
         """The programmed WCS position in program units, per path axis."""
         return self._display(geo.wcs_mm, modal.gcodes, self.units(modal))
+
+    def shared_gcodes(self, gcodes: Mapping[int, str]) -> Mapping[int, str]:
+        """The G-code table for a motion: a copy of ``gcodes``, or one of the last
+        :data:`SHARED_GCODE_TABLES` copies equal to it, so motions share tables (a motion's table
+        is read only; a copy per motion cost ~2 KB, 200 MB for 100,000 motions). Several are
+        kept because CAM code alternates G1, G2 and G3, which changes group 1 from block to block."""
+        copies = self._gcodes_copies
+        for table in copies:
+            if table == gcodes:
+                return table
+        table = dict(gcodes)
+        copies.insert(0, table)
+        del copies[SHARED_GCODE_TABLES:]
+        return table
 
     def cartesian_xyz(self) -> bool:
         """True when X, Y and Z are the geometry axes, all of them linear path axes."""
@@ -401,7 +420,7 @@ class PathBuilder:
         context = {
             "kind": kind, "source": words.source, "plane": pl.code, "programmed": programmed,
             "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
-            "feed": feed, "lead": lead, "gcodes": dict(modal.gcodes),
+            "feed": feed, "lead": lead, "gcodes": self.shared_gcodes(modal.gcodes),
             "thread_start": self._thread_start_deg() if kind == "G33" else None,
             "exact": modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9",
             "window": modal.gcodes.get(12, "G601"), "units": units,
@@ -488,7 +507,7 @@ class PathBuilder:
             feed_mm_min=None if rapid else self._feed_value(feed, math.dist(start, stop)),
             feed_mm_rev=None if rapid else feed.get("feed_mm_rev"),
             accel_pct=feed.get("accel_pct"), exact_stop=exact, exact_stop_window=gcodes.get(12, "G601"),
-            gcodes=dict(gcodes),
+            gcodes=self.shared_gcodes(gcodes),
         )
         geo.wcs_mm = end
         geo.tangent = line_tangent(start, stop)
@@ -730,7 +749,7 @@ class PathBuilder:
             feed_mm_rev=feed.get("feed_mm_rev") if kind != "G0" else None,
             accel_pct=feed.get("accel_pct"),
             exact_stop=True, exact_stop_window=modal.gcodes.get(12, "G601"),
-            gcodes=dict(modal.gcodes),
+            gcodes=self.shared_gcodes(modal.gcodes),
         )
 
     # ---------------------------------------------------------------- MCS mapping
