@@ -80,16 +80,24 @@ def reason_text(reason: str) -> str:
     return _(template).format(**fields)
 
 
+FRAME_COMPONENT_WORDS = (N_("offset"), N_("fine offset"), N_("rotation"), N_("scale"), N_("mirror"))
+"""The words of ``nck.writes.FRAME_COMPONENT_TEXT`` (a frame write's refusal names the component
+in them), marked here for the catalogue."""
+
+
 def refusal_fields_in(code: str, fields: dict[str, str]) -> dict[str, str]:
     """A refusal's placeholder values in language ``code``: an access action's title (``action``,
-    with its key ``action_id``) from the ``action`` overlay, and the ``what`` of an access refusal
-    from the refusal its ``what_key`` names (``nck.access.AccessDenied``)."""
+    with its key ``action_id``) from the ``action`` overlay, the ``what`` of an access refusal
+    from the refusal its ``what_key`` names (``nck.access.AccessDenied``), and the ``name`` of a
+    frame component's value (``frame_axis`` and the ``component`` word, ``nck.writes``)."""
     if "action_id" in fields:
         fields["action"] = localized(code, "action", fields["action_id"], "title", fields["action"])
     if "what_key" in fields:
         template = localized(code, "refusal", fields["what_key"], "text", "")
         if template:
             fields["what"] = template.format(**fields)
+    if "component" in fields and "frame_axis" in fields:
+        fields["name"] = f"{fields['frame_axis']} {gettext_catalogue(code).gettext(fields['component'])}"
     return fields
 
 

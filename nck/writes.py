@@ -39,7 +39,9 @@ FRAME_TRANSLATION_LIMIT_MM = 100_000.0
 FRAME_COMPONENTS = ("TR", "FI", "RT", "SC", "MI")
 FRAME_COMPONENT_TEXT = {"TR": "offset", "FI": "fine offset", "RT": "rotation", "SC": "scale",
                         "MI": "mirror"}
-"""How the work offset screens name a frame component (in messages)."""
+"""How the work offset screens name a frame component (in messages); a refusal carries the
+English word as its ``component`` field and the frame and axis as ``frame_axis``, so that a panel
+says the name in its own language (``hmi.i18n.refusal_fields_in``)."""
 _TC_DP = re.compile(r"^\$TC_DP(\d+)\[\s*(\d+)\s*,\s*(\d+)\s*\]$")
 _UIFR = re.compile(r"^\$P_UIFR\[\s*(\d+)\s*,\s*([A-Z][A-Z0-9]*)\s*,\s*([A-Z]{2})\s*\]$")
 _UBFR = re.compile(r"^\$P_UBFR\[\s*([A-Z][A-Z0-9]*)\s*,\s*([A-Z]{2})\s*\]$")
@@ -113,15 +115,16 @@ def settable_frame_index(name: str) -> int:
     return number - 53 if 54 <= number <= 57 else number - 500
 
 
-def finite_number(value: Any, what: str) -> float:
+def finite_number(value: Any, what: str, **parts: str) -> float:
     """``value`` (a number or the operator's text, :mod:`nck.value_text`) as a finite float.
 
-    Raises WriteRefused with the operator message (no value, not a number, out of range).
+    Raises WriteRefused with the operator message (no value, not a number, out of range);
+    ``parts`` are further fields of the refusal (the parts of ``what`` a panel translates).
     """
     try:
         return number_from_text(value, what)
     except InvalidValue as refusal:
-        raise WriteRefused(refusal.key, **dict(refusal.fields)) from None
+        raise WriteRefused(refusal.key, **dict(refusal.fields), **parts) from None
 
 
 @dataclass(frozen=True, slots=True)
@@ -266,7 +269,9 @@ class DataWriter:
             raise WriteRefused("machine_no_axis", axis=axis)
         if comp not in FRAME_COMPONENTS:
             raise WriteRefused("no_frame_component", component=comp)
-        number = finite_number(value, f"{frame} {axis} {FRAME_COMPONENT_TEXT[comp]}")
+        component = FRAME_COMPONENT_TEXT[comp]
+        number = finite_number(value, f"{frame} {axis} {component}", frame_axis=f"{frame} {axis}",
+                               component=component)
         check_frame_component(comp, number)
         if comp == "MI" and number not in (0.0, 1.0):
             raise WriteRefused("mirror_values")

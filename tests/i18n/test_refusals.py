@@ -87,6 +87,13 @@ def test_a_refusal_from_an_exception_is_keyed_and_said_in_the_panels_language(ge
     assert refusal_text(result) == "R1: „abc“ ist keine Zahl"
 
 
+def test_a_frame_value_refusal_names_the_component_in_the_panels_language(german: None) -> None:
+    """The refusal of a work offset's fine offset names it in German, not "G54 X fine offset"."""
+    result = Nck().submit(cmd.WriteData("$P_UIFR[1,X,FI]", "abc"))
+    assert isinstance(result, cmd.Rejected) and result.reason == "G54 X fine offset: “abc” is not a number"
+    assert refusal_text(result) == "G54 X Feinverschiebung: „abc“ ist keine Zahl"
+
+
 def test_a_refusal_keeps_its_english_reason_and_fields() -> None:
     refusal = refuse("program_not_found", program="PART.MPF")
     assert refusal.reason == "Program PART.MPF not found"
