@@ -34,6 +34,7 @@ from nck.geometry.contour_aids import LineElement
 from nck.geometry.frames import Frame
 from nck.geometry.path_state import GeometryState
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane, plane
+from nck.geometry.rounding_distance import rounding_distance_mm
 from nck.geometry.tool_length import active_wear_sign, length_offset, resolve_edge
 from nck.geometry.transform import Transform
 from nck.geometry.units import UnitSystem
@@ -72,6 +73,11 @@ def machine_mm(wcs_mm: Any, scale: float, offset: float, tool_mm: float) -> Any:
     (:meth:`Transform.axis_affine`): ``(wcs · m_ii + t_i) + tool``, before rounding. The one
     formula of the path builder's lines and of the G1 batch (a float or a numpy array)."""
     return (wcs_mm * scale + offset) + tool_mm
+
+
+def ends_in_exact_stop(words: Any, gcodes: Mapping[int, str]) -> bool:
+    """Whether a block ends in exact stop: G60 modal (group 10) or G9 in the block (group 11)."""
+    return gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9"
 
 
 def round_position(value: float) -> float:
@@ -402,7 +408,7 @@ class PathBuilder:
                 return [line]
         pl = self.plane(modal)
         start = dict(geo.wcs_mm)
-        end, programmed = self._targets(words, modal, geo, units, pl)
+        end, programmed = self._targets(words, modal, geo, units)
         if "ANG" in words.words:
             programmed |= self._angle_end(kind, float(words.words["ANG"]), words, pl, start, end)
         if kind in ARC_KINDS:
@@ -422,7 +428,7 @@ class PathBuilder:
             "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
             "feed": feed, "lead": lead, "gcodes": self.shared_gcodes(modal.gcodes),
             "thread_start": self._thread_start_deg() if kind == "G33" else None,
-            "exact": modal.gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9",
+            "exact": ends_in_exact_stop(words, modal.gcodes),
             "window": modal.gcodes.get(12, "G601"), "units": units,
             "end_other": {a: end[a] for a in end if a not in self.geo_axes},
         }
@@ -455,24 +461,18 @@ class PathBuilder:
                 or not LINE_AID_WORDS.isdisjoint(w):
             return None
         gcodes = modal.gcodes
-        exact = gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9"
-        if not exact and gcodes.get(10) == "G641" and (geo.adispos_mm if kind == "G0" else geo.adis_mm) > 0.0:
+        exact = ends_in_exact_stop(words, gcodes)
+        if rounding_distance_mm(kind, exact, gcodes, geo) > 0.0:
             return None  # G641 holds the line back for its corner
         transform = geo.frames.transform()
         affine = transform.axis_affine()
         if affine is None:
             return None
-        absolute = gcodes.get(14, "G90") == "G90"
         geo_axes = self.geo_axes
-        end = dict(geo.wcs_mm)
-        for axis in geo_axes:
-            end.setdefault(axis, 0.0)
-        for axis, (value, mode) in words.axes.items():
+        for axis, (_value, mode) in words.axes.items():
             if axis not in geo_axes or mode in ROTARY_MODES:
                 return None
-            incremental = mode == "IC" or (mode is None and not absolute)
-            v = self.to_mm(axis, value, modal, units, incremental=incremental)
-            end[axis] = end.get(axis, 0.0) + v if incremental else v
+        end, _programmed = self._targets(words, modal, geo, units)
         start, stop = self._vec(geo.wcs_mm), self._vec(end)
         if not math.isfinite(stop[0] + stop[1] + stop[2]):
             return None  # the frame maps it with numpy's matrix product
@@ -519,7 +519,7 @@ class PathBuilder:
     def _vec(self, point: Mapping[str, float]) -> tuple[float, float, float]:
         return (float(point.get("X", 0.0)), float(point.get("Y", 0.0)), float(point.get("Z", 0.0)))
 
-    def _targets(self, words: Any, modal: Any, geo: GeometryState, units: UnitSystem, pl: Plane):
+    def _targets(self, words: Any, modal: Any, geo: GeometryState, units: UnitSystem):
         absolute = modal.gcodes.get(14, "G90") == "G90"
         end = dict(geo.wcs_mm)
         for axis in self.geo_axes:
@@ -548,6 +548,7 @@ class PathBuilder:
                 ap = ap + v if inc else v
             geo.polar = polar.with_values(radius_mm=rp, angle_deg=ap)
             target = geo.polar.target()
+            pl = self.plane(modal)
             end[pl.abscissa], end[pl.ordinate] = target
             programmed |= {pl.abscissa, pl.ordinate}
         return end, programmed
@@ -591,7 +592,7 @@ class PathBuilder:
         pl = self.plane(modal)
         a, o = pl.abscissa, pl.ordinate
         start = dict(geo.wcs_mm)
-        end, _ = self._targets(words, modal, geo, units, pl)
+        end, _ = self._targets(words, modal, geo, units)
         first = (math.cos(math.radians(first_angle_deg)), math.sin(math.radians(first_angle_deg)))
         second_deg = float(words.words["ANG"])
         second = (math.cos(math.radians(second_deg)), math.sin(math.radians(second_deg)))

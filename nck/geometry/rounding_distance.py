@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any
+from typing import Any, Mapping
 
 from nck import canon
 
@@ -73,9 +73,15 @@ def limit_feed(motion: canon.Motion, distance_mm: float, machine: Any) -> canon.
 
 def criterion_mm(context: dict[str, Any], geo: Any) -> float:
     """The rounding distance of a block held back under G641 (0: the block is not rounded)."""
-    if context["exact"] or context["kind"] == "G33" or context["gcodes"].get(10) != "G641":
+    return rounding_distance_mm(context["kind"], context["exact"], context["gcodes"], geo)
+
+
+def rounding_distance_mm(kind: str, exact: bool, gcodes: Mapping[int, str], geo: Any) -> float:
+    """The G641 rounding distance of a block of motion ``kind`` (ADISPOS for G0, else ADIS);
+    0 when it ends in exact stop, is a thread (G33) or G641 is not active."""
+    if exact or kind == "G33" or gcodes.get(10) != "G641":
         return 0.0
-    return geo.adispos_mm if context["kind"] == "G0" else geo.adis_mm
+    return geo.adispos_mm if kind == "G0" else geo.adis_mm
 
 
 def transition_mm(pending: Any, context: dict[str, Any], geo: Any) -> float:
