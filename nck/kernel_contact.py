@@ -238,10 +238,9 @@ class ContactWatch:
         """The path velocity ceiling of a program's motion (mm/s), ``None`` while JOG moves
         (or for a motion without one)."""
         motion = self.plant.motion
-        ceiling = getattr(motion, "path_speed_ceiling_mm_s", None)
-        if ceiling is None or self.channel.jogging or motion.jog_active():
+        if self.channel.jogging or motion.jog_active():
             return None
-        return float(ceiling())
+        return motion.path_speed_ceiling_mm_s()
 
     def _max_path_mm_s(self) -> float:
         speeds = [float(self.plant.machine.md_value("MD32000", axis, 10000.0) or 10000.0)

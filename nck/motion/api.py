@@ -22,6 +22,15 @@ class MotionSystem(Protocol):
     def buffer_fill(self) -> tuple[int, int]:
         """(segments and dwells in the block buffer, its capacity), for the diagnosis."""
 
+    def path_speed_ceiling_mm_s(self) -> float | None:
+        """An upper bound of the path velocity (mm/s) until every segment buffered now has run
+        (JOG not included), for the contact watch's step bound; None when the motion has no
+        planned profile to bound it (the watch then assumes every axis at rapid)."""
+
+    def buffered_speed_ceiling_mm_s(self) -> float:
+        """The highest velocity limit (mm/s) of the segments buffered since the last
+        :meth:`path_speed_ceiling_mm_s` (0 when there is none)."""
+
     def push(self, item: Motion | Dwell) -> None:
         """Append a segment or dwell to the buffer (planned with look-ahead)."""
 

@@ -96,6 +96,14 @@ class InstantMotion:
         """(items buffered, :data:`BUFFER_SEGMENTS`)."""
         return len(self._queue), BUFFER_SEGMENTS
 
+    def path_speed_ceiling_mm_s(self) -> float | None:
+        """None: the stand-in jumps to its targets, it has no path velocity to bound."""
+        return None
+
+    def buffered_speed_ceiling_mm_s(self) -> float:
+        """0: nothing of the stand-in's is planned."""
+        return 0.0
+
     def push(self, item: Motion | Dwell) -> None:
         """Buffer a segment (target = its MCS end point) or a dwell."""
         if isinstance(item, Dwell):
