@@ -88,7 +88,7 @@ def parse_ref(text: str, axes: Iterable[str], cat: Catalog | None = None) -> Dat
         axis = _axis_name(args.pop(), axis_names, definition)
     if args:
         if len(args) > 1 or not args[0].lstrip("-").isdigit():
-            raise UnknownDataError("md_bad_index", name=text, index=repr(match['args']))
+            raise UnknownDataError("md_bad_index", name=text, index=match['args'])
         index = int(args[0])
         if not definition.array:
             raise UnknownDataError("md_not_array", name=definition.key)

@@ -56,7 +56,7 @@ def settings_from_plain(data: Mapping[str, Any]) -> ManualSettings:
             continue
         value = data[name]
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise BadSetting("manual_setting_not_number", name=name, value=repr(value))
+            raise BadSetting("manual_setting_not_number", name=name, value=str(value))
         if name in POSITIVE and value <= 0.0:
             raise BadSetting("manual_setting_not_positive", name=name)
         values[name] = float(value)

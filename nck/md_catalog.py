@@ -155,7 +155,7 @@ def _convert(kind: str, value: Any, key: str) -> Any:
         pass
     if text == "":
         raise DataValueError("value_missing", name=key)
-    shown = f"“{text}”" if text is not None else repr(value)
+    shown = text if text is not None else str(value)
     raise DataValueError(INVALID_VALUE_REFUSALS.get(kind, "md_invalid_string"), name=key, value=shown)
 
 

@@ -94,6 +94,13 @@ def test_a_frame_value_refusal_names_the_component_in_the_panels_language(german
     assert refusal_text(result) == "G54 X Feinverschiebung: „abc“ ist keine Zahl"
 
 
+def test_a_machine_data_value_refusal_quotes_in_the_panels_language(german: None) -> None:
+    """The quotes of a refused machine data value belong to the language's text („…“ in German)."""
+    result = Nck().submit(cmd.WriteData("SD42100", "fast"))
+    assert isinstance(result, cmd.Rejected) and result.reason == "SD42100: “fast” is not valid, enter a number"
+    assert refusal_text(result) == "SD42100: „fast“ ist ungültig, eine Zahl eingeben"
+
+
 def test_a_refusal_keeps_its_english_reason_and_fields() -> None:
     refusal = refuse("program_not_found", program="PART.MPF")
     assert refusal.reason == "Program PART.MPF not found"
