@@ -84,7 +84,7 @@ def _run(options: argparse.Namespace, machine: MachineConfig, session: Session, 
         known = {field.name: field for field in setup_fields(setup)}
         for name in reads:
             if name.strip().lower() not in known:
-                raise SetupFieldError(f"unknown field '{name}' (fields: {', '.join(known)})")
+                raise SetupFieldError("setup_unknown_field", name=name, fields=", ".join(known))
     except SetupFieldError as exc:
         print(f"nck setup: {exc}; nothing was written" if writes else f"nck setup: {exc}", file=err)
         return 2

@@ -34,6 +34,7 @@ from nck.status import AlarmEntry, AlarmEvent, LogbookEntry
 # The machine set-up as named fields (the Setup area edits it as nck setup does).
 from nck.setup_fields import (SetupField as SetupField, SetupFieldError as SetupFieldError,
                               setup_fields as setup_fields, with_field as with_field)
+from nck.refusals import rejected_by as rejected_by  # a data layer's refusal (SetupFieldError …) as the panel says it
 # The data tables (data/*.toml) the HMI shows as they are, e.g. the cycle forms of the editor.
 from nck.resources import load_toml as load_toml
 # The alarm catalogue with its help texts (the alarm help of the Diagnostics area).

@@ -25,6 +25,7 @@ import math
 from dataclasses import dataclass, replace
 
 from nck.number_text import trimmed
+from nck.refused import Refused
 from nck.workpiece import Box, Cylinder, MachineSetup, Solid, default_machine_setup
 
 AXES = ("x", "y", "z")
@@ -33,8 +34,9 @@ YES = {"yes": True, "1": True, "on": True, "true": True, "no": False, "0": False
        "false": False}
 
 
-class SetupFieldError(Exception):
-    """A field name or value the set-up cannot take; ``str()`` says why in the panel's words."""
+class SetupFieldError(Refused):
+    """A field name or value the set-up cannot take: a refusal of ``data/refusals.toml``
+    (``setup_…``); ``str()`` says why in English."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,17 +91,17 @@ def with_field(setup: MachineSetup, name: str, text: str, machine_kind: str = "m
     name, text = name.strip().lower(), text.strip()
     if name == "hidden":
         if text.lower() not in YES:
-            raise SetupFieldError(f"hidden: yes or no, not '{text}'")
+            raise SetupFieldError("setup_hidden_yes_no", text=text)
         return replace(setup, hidden=YES[text.lower()])
     part, _, item = name.partition(".")
     if part not in SHAPES:
-        raise SetupFieldError(f"unknown field '{name}' (fields: {', '.join(field_names(setup))})")
+        raise SetupFieldError("setup_unknown_field", name=name, fields=", ".join(field_names(setup)))
     solid = getattr(setup, part)
     if item == "shape":
         return _with_part(setup, part, _reshaped(solid, text.lower(), part, machine_kind))
     if name not in field_names(setup):
-        raise SetupFieldError(f"unknown field '{name}' for a {shape_of(solid)} "
-                              f"(fields: {', '.join(field_names(setup))})")
+        raise SetupFieldError("setup_unknown_field_for_shape", name=name, shape=shape_of(solid),
+                              fields=", ".join(field_names(setup)))
     value = _number(name, text)
     return _with_part(setup, part, _changed(solid, item, value, name))
 
@@ -115,9 +117,9 @@ def _number(name: str, text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise SetupFieldError(f"{name}: '{text}' is not a number") from None
+        value = math.nan
     if not math.isfinite(value):
-        raise SetupFieldError(f"{name}: '{text}' is not a number")
+        raise SetupFieldError("setup_not_a_number", name=name, text=text)
     return value
 
 
@@ -137,7 +139,7 @@ def _changed(solid: Solid | None, item: str, value: float, name: str) -> Solid:
         base[index] = value
         return replace(solid, base_mcs=_point(base))
     if value <= 0.0:
-        raise SetupFieldError(f"{name}: must be greater than 0")
+        raise SetupFieldError("setup_not_positive", name=name)
     if isinstance(solid, Box):
         index = AXES.index(item.removeprefix("size_"))
         high = list(solid.high_mcs)
@@ -149,7 +151,7 @@ def _changed(solid: Solid | None, item: str, value: float, name: str) -> Solid:
 
 def _reshaped(solid: Solid | None, shape: str, part: str, machine_kind: str) -> Solid | None:
     if shape not in SHAPES[part]:
-        raise SetupFieldError(f"{part}.shape: {' / '.join(SHAPES[part])}, not '{shape}'")
+        raise SetupFieldError("setup_bad_shape", name=f"{part}.shape", shapes=" / ".join(SHAPES[part]), text=shape)
     if shape == shape_of(solid):
         return solid
     if shape == "none":

@@ -31,7 +31,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import LANGUAGES, N_, _, data_text, language
+from hmi.i18n import LANGUAGES, N_, _, data_text, language, refusal_text
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.theme import HMI_THEMES, THEME_LABELS
 from hmi.widgets.data_table import (
@@ -342,7 +342,7 @@ class SetupScreen(AreaBase):
         try:
             changed = queries.with_field(setup, name, text, self.data_view.machine.kind)
         except queries.SetupFieldError as error:
-            self.hmi.set_hint(str(error))
+            self.hmi.set_hint(refusal_text(queries.rejected_by(error)))
             return
         if isinstance(self.submit(cmd.WriteMachineSetup(changed)), Accepted):
             self.hmi.set_hint(_("Machine set-up: {name} = {value}").format(name=name, value=text.strip()))

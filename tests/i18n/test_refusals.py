@@ -101,6 +101,16 @@ def test_a_machine_data_value_refusal_quotes_in_the_panels_language(german: None
     assert refusal_text(result) == "SD42100: „fast“ ist ungültig, eine Zahl eingeben"
 
 
+def test_a_set_up_field_refusal_is_said_in_the_panels_language(german: None) -> None:
+    """The Setup area's refusal of a set-up value (SetupFieldError) is keyed like the kernel's."""
+    from nck.queries import SetupFieldError, with_field
+    from nck.workpiece import default_machine_setup
+    with pytest.raises(SetupFieldError) as refused:
+        with_field(default_machine_setup("mill"), "blank.size_x", "-5")
+    assert str(refused.value) == "blank.size_x: must be greater than 0"
+    assert refusal_text(rejected_by(refused.value)) == "blank.size_x: muss größer als 0 sein"
+
+
 def test_a_refusal_keeps_its_english_reason_and_fields() -> None:
     refusal = refuse("program_not_found", program="PART.MPF")
     assert refusal.reason == "Program PART.MPF not found"
