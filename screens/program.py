@@ -58,6 +58,11 @@ DISCARD_ALL = N_("Discard all unsaved texts")
 RESTORE_ONE = N_("Restore unsaved text")
 DISCARD_ONE = N_("Discard unsaved text")
 """The journal dialogs' choices that the code answers (shown translated, returned as written)."""
+SAVE_CHANGES = N_("Save changes")
+DISCARD_CHANGES = N_("Discard changes")
+KEEP_UNSAVED = N_("Keep unsaved for now")
+BACK_TO_EDITOR = N_("Back to the editor")
+"""The choices of the unsaved-changes dialog on closing a program."""
 
 
 def edit_level() -> int:
@@ -312,13 +317,13 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         def decided(choice: str | None) -> None:
             if choice is None:  # cancelled (Escape, F10, an area key): the text stays in the journal
                 return
-            if choice.startswith("Back") or program != self.program:
+            if choice == BACK_TO_EDITOR or program != self.program:
                 if self.app.current_mode != self.AREA_ID:
                     self.perform("app.switch_area('program')")
                 return
-            if choice.startswith("Save") and not self.action_save():
+            if choice == SAVE_CHANGES and not self.action_save():
                 return
-            if choice.startswith("Keep"):
+            if choice == KEEP_UNSAVED:
                 self.journal_now()
                 return
             self.close_program()
@@ -328,7 +333,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self.app.push_screen(
             ChoiceDialog(
                 _("{program} has unsaved changes").format(program=program),
-                [N_("Save changes"), N_("Discard changes"), N_("Keep unsaved for now"), N_("Back to the editor")],
+                [SAVE_CHANGES, DISCARD_CHANGES, KEEP_UNSAVED, BACK_TO_EDITOR],
             ),
             decided,
         )

@@ -39,6 +39,10 @@ from hmi.journal import EditorJournal
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
 
+CANCEL = N_("Cancel")
+DELETE = N_("Delete")
+"""The choices of the delete dialog (shown translated, returned as written)."""
+
 
 def _level(action: str, fallback: int) -> int:
     """The access level an action needs (``data/access.toml``), or ``fallback``."""
@@ -463,7 +467,7 @@ class ProgramManagerScreen(AreaBase):
             return
 
         def confirmed(choice: str | None) -> None:
-            if choice != "Delete":
+            if choice != DELETE:
                 return
             try:
                 self.files.fs.delete(entry.path)
@@ -477,7 +481,7 @@ class ProgramManagerScreen(AreaBase):
 
         question = (_("Delete the workpiece folder and everything in it {path}?") if entry.kind == "WPD"
                     else _("Delete the program {path}?"))
-        self.app.push_screen(ChoiceDialog(question.format(path=entry.path), [N_("Cancel"), N_("Delete")]), confirmed)
+        self.app.push_screen(ChoiceDialog(question.format(path=entry.path), [CANCEL, DELETE]), confirmed)
 
     def action_search(self) -> None:
         """Search: find a program by (part of) its name in all NC directories."""
