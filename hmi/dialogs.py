@@ -23,26 +23,29 @@ from hmi.focus import focus_now
 class ChoiceDialog(AreaDialog[str | None]):
     """Choose one entry of a list with the arrow keys and Enter (F10 cancels).
 
-    The entries are shown in the panel's language (a text of the catalogue, as the caller
-    wrote it in English, is translated; a name is shown as it is) and the chosen one is
-    returned as given. The title is shown as given (the caller translates it)."""
+    With ``translate`` the entries are texts of the catalogue as the caller wrote them in
+    English and are shown in the panel's language; without it they are shown as given (names,
+    labels the caller has translated). The chosen one is returned as given. The title is shown
+    as given (the caller translates it)."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
 
     def __init__(self, title: str, choices: Sequence[str], selected: str | None = None,
-                 empty_text: str = N_("nothing to choose")) -> None:
+                 empty_text: str = N_("nothing to choose"), *, translate: bool = True) -> None:
         super().__init__(classes="choice-dialog")
         self._title = title
         self._choices = list(choices)
         self._selected = selected
         self._empty_text = empty_text
+        self._translate = translate
 
     def compose(self) -> ComposeResult:
         """Title and list."""
         with Vertical(id="choice-box"):
             yield Static(self._title, id="choice-title")
             if self._choices:
-                options = [Option(_(choice), id=f"choice-{i}") for i, choice in enumerate(self._choices)]
+                options = [Option(_(choice) if self._translate else choice, id=f"choice-{i}")
+                           for i, choice in enumerate(self._choices)]
                 yield OptionList(*options, id="choice-list")
             else:
                 yield Static(_(self._empty_text), id="choice-empty")

@@ -293,7 +293,7 @@ class MachineScreen(AreaBase):
             levels.symmetric_difference_update({level})
             self.submit(cmd.SetProgramControl("skip_levels", frozenset(levels)))
 
-        self.app.push_screen(ChoiceDialog(_("Skip levels (Enter switches on/off)"), choices), toggle)
+        self.app.push_screen(ChoiceDialog(_("Skip levels (Enter switches on/off)"), choices, translate=False), toggle)
 
     def _skip_levels(self) -> frozenset[int]:
         if self.status is None:
@@ -311,7 +311,8 @@ class MachineScreen(AreaBase):
                 self.submit(cmd.SelectProgram(choice))
 
         self.app.push_screen(
-            ChoiceDialog(_("Select program"), names, selected, empty_text=N_("no part programs")), select
+            ChoiceDialog(_("Select program"), names, selected, empty_text=N_("no part programs"), translate=False),
+            select,
         )
 
     def action_choose_search_type(self, search_type: str) -> None:

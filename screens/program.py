@@ -418,7 +418,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             if choice in by_label:
                 entry = by_label[choice]
                 self._restore(entry)
-            elif choice == DISCARD_ALL:
+            elif choice == _(DISCARD_ALL):
                 for entry in entries:
                     self.journal.discard(entry.program)
                 self.say(_("Unsaved texts discarded"))
@@ -426,7 +426,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self.app.push_screen(
             ChoiceDialog(
                 _("Unsaved program text from an earlier session was found"),
-                [*by_label, DISCARD_ALL],
+                [*by_label, _(DISCARD_ALL)],
+                translate=False,
             ),
             chosen,
         )
