@@ -49,7 +49,7 @@ class Softkey:
     enabled: Predicate | None = None
     active: Predicate | None = None
     submenu: str = ""
-    """The area screen's method that builds the softkey level this key opens (``"_more_menu"``),
+    """The area screen's method that builds the softkey level this key opens (``"more_menu"``),
     so that the command palette can list that level's softkeys under this key; "" for none."""
 
     def allowed(self, context: Any, access_level: int) -> bool:

@@ -12,13 +12,12 @@ Pure: reads the data table only.
 from __future__ import annotations
 
 from nck.commands import Rejected
-from nck.refused import Refused, refusal_fields, refusal_texts
+from nck.refused import Refused, refusal_texts
 
 
 def refuse(key: str, *, alarm: int | None = None, **fields: object) -> Rejected:
     """The refusal ``key`` with its placeholders filled from ``fields`` (``KeyError``: no such key)."""
-    values = refusal_fields(fields)
-    return Rejected(refusal_texts()[key].format(**dict(values)), alarm=alarm, key=key, fields=values)
+    return rejected_by(Refused(key, **fields), alarm=alarm)
 
 
 def rejected_by(error: Refused, *, alarm: int | None = None) -> Rejected:

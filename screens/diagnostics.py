@@ -135,11 +135,11 @@ class DiagnosticsScreen(AreaBase):
             _view_key("diag.axis", "Service\naxis", "axis"),
             _view_key("diag.drive", "Service\ndrive", "drive"),
             _view_key("diag.trace", "Trace", "trace"),
-            Softkey("diag.more", "More\n▸", "more", submenu="_more_menu"),
+            Softkey("diag.more", "More\n▸", "more", submenu="more_menu"),
         ]
         return SoftkeyMenu.of(horizontal, self._vertical_keys())
 
-    def _more_menu(self) -> SoftkeyMenu:
+    def more_menu(self) -> SoftkeyMenu:
         return SoftkeyMenu.of([
             _view_key("diag.utilisation", "System\nutilis.", "utilisation"),
             _view_key("diag.version", "Version", "version"),
@@ -210,12 +210,12 @@ class DiagnosticsScreen(AreaBase):
         self.view = view
         self.selected_row = 0
         if self._menu_stack:
-            self._menu_stack[-1] = self._more_menu()
+            self._menu_stack[-1] = self.more_menu()
         self._show_view()
 
     def action_more(self) -> None:
         """The second softkey level (utilisation, version, logbook)."""
-        self.push_softkeys(self._more_menu())
+        self.push_softkeys(self.more_menu())
 
     def action_acknowledge(self) -> None:
         """Acknowledge the alarms with clear criterion CANCEL (as F12)."""

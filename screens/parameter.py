@@ -27,7 +27,7 @@ from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.i18n import _
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
+    EDIT_BINDINGS, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key, level_refusal,
 )
 from screens.parameter_views import (
     active_chain_table, details_table, frame_names, gud_table, overview_table, r_table, setting_table,
@@ -202,8 +202,7 @@ class ParameterScreen(AreaBase):
             self.hmi.set_hint(_("This value cannot be changed here"))
             return
         if self.access_level > cell.level:
-            self.hmi.set_hint(_("{name}: needs access level {level} (current level {current})").format(
-                name=cell.name, level=cell.level, current=self.access_level))
+            self.hmi.set_hint(level_refusal(cell, self.access_level))
             return
         name = cell.name
 

@@ -192,9 +192,9 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
         return SoftkeyMenu.of(
             [
-                Softkey("program.edit", "Edit", "edit_menu", enabled=has_program, submenu="_edit_menu"),
+                Softkey("program.edit", "Edit", "edit_menu", enabled=has_program, submenu="edit_menu"),
                 Softkey("program.search", "Search", "search", enabled=has_program,
-                        active=lambda s: s.search_open, submenu="_search_menu"),
+                        active=lambda s: s.search_open, submenu="search_menu"),
                 Softkey("program.renumber", "Renumber", "renumber", enabled=writable),
                 Softkey("program.save", "Save", "save", enabled=writable),
                 Softkey("program.simulate", "Simulation", "simulate", enabled=has_program),
@@ -218,7 +218,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
 
     def action_edit_menu(self) -> None:
         """Edit softkey: show the edit sub-level."""
-        self.push_softkeys(self._edit_menu())
+        self.push_softkeys(self.edit_menu())
 
     def action_pop_menu(self) -> None:
         """Back one softkey level."""

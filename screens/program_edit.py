@@ -27,7 +27,7 @@ class EditActions:
     search_open: bool
     _mark_anchor: tuple[int, int] | None
 
-    def _edit_menu(self) -> SoftkeyMenu:
+    def edit_menu(self) -> SoftkeyMenu:
         writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
         return SoftkeyMenu.of(
             [
@@ -42,7 +42,7 @@ class EditActions:
             ]
         )
 
-    def _search_menu(self) -> SoftkeyMenu:
+    def search_menu(self) -> SoftkeyMenu:
         writable = lambda s: s.program is not None and not s.editor.read_only  # noqa: E731
         return SoftkeyMenu.of(
             [
@@ -142,7 +142,7 @@ class EditActions:
         """Search softkey: open the search bar."""
         self.search_open = True
         self._show_view()
-        self.push_softkeys(self._search_menu())
+        self.push_softkeys(self.search_menu())
         focus_now(self.query_one("#prog-find", Input))
 
     def action_close_search(self) -> None:

@@ -35,7 +35,7 @@ from hmi.i18n import LANGUAGES, N_, _, data_text, language, refusal_text
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.theme import HMI_THEMES, THEME_LABELS
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key,
+    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key, level_refusal,
 )
 from screens.setup_workpiece import workpiece_table
 
@@ -166,22 +166,22 @@ class SetupScreen(AreaBase):
             view_softkey("setup.axis", "Axis\nMD", "axis"),
             view_softkey("setup.display", "Display\nMD", "display"),
             view_softkey("setup.workpiece", "Machine\nset-up", "workpiece"),
-            view_softkey("setup.password", "Password", "password", submenu="_password_level"),
+            view_softkey("setup.password", "Password", "password", submenu="password_menu"),
             Softkey("setup.new_config", "Set MD\nactive (cf)", "new_config",
                     enabled=lambda s: s.status is not None and s.status.channel.channel_state == "reset"),
             Softkey("setup.power_on", "Reset\n(po)", "power_on"),
         ]
         return SoftkeyMenu.of(horizontal, self._vertical_keys())
 
-    def _password_level(self) -> SoftkeyMenu:
+    def password_menu(self) -> SoftkeyMenu:
         """The vertical keys of the password view (the command palette lists them under Password)."""
         return SoftkeyMenu.of((), self._vertical_keys("password"))
 
-    def _language_level(self) -> SoftkeyMenu:
+    def language_menu(self) -> SoftkeyMenu:
         """The language softkeys (the palette lists them under Change language)."""
         return SoftkeyMenu.of((), self._vertical_keys("language"))
 
-    def _theme_level(self) -> SoftkeyMenu:
+    def theme_menu(self) -> SoftkeyMenu:
         """The colour theme softkeys (the palette lists them under Change theme)."""
         return SoftkeyMenu.of((), self._vertical_keys("theme"))
 
@@ -194,8 +194,8 @@ class SetupScreen(AreaBase):
                 Softkey("setup.pw.change", "Change\npassword", "change_password", level=3),
                 Softkey("setup.pw.delete", "Delete\npassword", "delete_password"),
                 None,
-                Softkey("setup.language", "Change\nlanguage", "show_view('language')", submenu="_language_level"),
-                Softkey("setup.theme", "Change\ntheme", "show_view('theme')", submenu="_theme_level"),
+                Softkey("setup.language", "Change\nlanguage", "show_view('language')", submenu="language_menu"),
+                Softkey("setup.theme", "Change\ntheme", "show_view('theme')", submenu="theme_menu"),
             ]
         if view == "theme":
             return [Softkey(f"setup.theme.{theme.name}", THEME_LABELS[theme.name], f"select_theme('{theme.name}')",
@@ -297,8 +297,7 @@ class SetupScreen(AreaBase):
         if cell is None or not cell.name:
             return
         if self.access_level > cell.level:
-            self.hmi.set_hint(_("{name}: needs access level {level} (current level {current})").format(
-                name=cell.name, level=cell.level, current=self.access_level))
+            self.hmi.set_hint(level_refusal(cell, self.access_level))
             return
         name = cell.name
         if self.view == "workpiece":

@@ -80,6 +80,12 @@ class Cell:
     hint: str = ""
 
 
+def level_refusal(cell: Cell, access_level: int) -> str:
+    """Why ``cell`` cannot be changed at ``access_level`` (above the level it needs), in the panel's language."""
+    return _("{name}: needs access level {level} (current level {current})").format(
+        name=cell.name, level=cell.level, current=access_level)
+
+
 @dataclass(slots=True)
 class DataTable:
     """Rows of cells under column headings, with a title line and a note below."""
