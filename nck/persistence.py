@@ -113,7 +113,12 @@ class ArchiveError(Exception):
 
 
 class ArchiveRefused(ArchiveError):
-    """The archive changes data the importer's protection level may not write (nothing was changed)."""
+    """The archive changes data the importer's protection level may not write (nothing was changed);
+    ``refusal`` is the keyed access refusal (a panel says it with ``nck.refusals.rejected_by``)."""
+
+    def __init__(self, path: object, refusal: AccessDenied) -> None:
+        self.refusal = refusal
+        super().__init__(f"{path}: refused: {refusal}")
 
 
 @dataclass
@@ -849,8 +854,7 @@ class Session:
         except ArchiveError:
             raise
         except AccessDenied as exc:
-            raise ArchiveRefused(f"{path}: refused: {exc.what} needs protection level {exc.needed_level}, "
-                                 f"the current level is {level}") from None
+            raise ArchiveRefused(path, exc) from None
         except (StorageError, KeyError, TypeError, ValueError, DataError, WriteRefused) as exc:
             raise ArchiveError(f"{path}: bad content ({exc})") from exc
         try:

@@ -284,7 +284,7 @@ class DiagnosticsScreen(AreaBase):
             self._refresh_view()
 
         self.app.push_screen(ValueDialog(_("Import class pack"), f"{self.export_dir}{os.sep}",
-                                         "The class pack's file (written by nck class-pack export)"), imported)
+                                         _("The class pack's file (written by nck class-pack export)")), imported)
 
     def action_next_axis(self, step: int) -> None:
         """Axis + / Axis −: the next or previous machine axis (spindles included)."""
