@@ -52,7 +52,6 @@ from nck.machine import MachineConfig, load_machine
 from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
 from nck.phrase import Phrase
-from nck.resources import alarm_text
 from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_from_text
 from nck.simulation.cutter import Cutter
 from nck.simulation.turning import Insert, TurnProfile, bar, bar_around, half_section
@@ -160,13 +159,6 @@ class Simulation:
         change = np.flatnonzero(lines[1:] != lines[:-1]) + 1
         ends = np.concatenate((change, [len(lines)]))
         return [(int(lines[end - 1]), int(end)) for end in ends.tolist()]
-
-    def alarm_text(self) -> str:
-        """The first alarm in the panel's words (number and text), "" without one."""
-        if not self.alarms:
-            return ""
-        alarm = self.alarms[0]
-        return f"{alarm.number} {alarm_text(alarm.number, alarm.params)}"
 
     @property
     def turning(self) -> bool:
