@@ -13,6 +13,8 @@ from dataclasses import dataclass
 
 from nck import trimmed
 
+from hmi.i18n import N_, _
+
 SPINDLE_FUNCTIONS = ("—", "M3", "M4", "M5")
 """Spindle direction of the T,S,M window: unchanged, clockwise, counter-clockwise, stop."""
 
@@ -27,7 +29,19 @@ _TOOL_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 
 
 class EntryError(ValueError):
-    """A field holds something the window cannot turn into a block (message for the dialog line)."""
+    """A field holds something the window cannot turn into a block: ``template`` (English, a
+    text of the catalogue) filled from ``fields``; ``str()`` is the English message, :meth:`text`
+    the message for the dialog line in the panel's language."""
+
+    def __init__(self, template: str, **fields: object) -> None:
+        self.template = template
+        self.fields = fields
+        super().__init__(template.format(**fields))
+
+    def text(self) -> str:
+        """The message in the panel's language (a field's label, a text of the catalogue, too)."""
+        return _(self.template).format(**{name: _(value) if isinstance(value, str) else value
+                                          for name, value in self.fields.items()})
 
 
 @dataclass(frozen=True)
@@ -46,14 +60,14 @@ class TsmEntry:
 def _number(text: str, field: str) -> str:
     value = text.strip()
     if not _NUMBER.match(value):
-        raise EntryError(f"{field}: enter a number")
+        raise EntryError(N_("{field}: enter a number"), field=field)
     return value
 
 
 def _whole(text: str, field: str, low: int, high: int) -> int:
     value = text.strip()
     if not value.isdigit() or not low <= int(value) <= high:
-        raise EntryError(f"{field}: enter a whole number {low} … {high}")
+        raise EntryError(N_("{field}: enter a whole number {low} … {high}"), field=field, low=low, high=high)
     return int(value)
 
 
@@ -64,7 +78,7 @@ def tool_word(text: str) -> str:
         return f"T{int(value)}"
     if _TOOL_NAME.match(value):
         return f'T="{value}"'
-    raise EntryError("T: enter a tool number or a tool name")
+    raise EntryError(N_("T: enter a tool number or a tool name"))
 
 
 def tsm_blocks(entry: TsmEntry) -> str:
@@ -86,18 +100,18 @@ def tsm_blocks(entry: TsmEntry) -> str:
         blocks.append(f"D{_whole(entry.edge, 'D', 1, 12)}")
     spindle = []
     if entry.speed_rpm.strip():
-        speed = _number(entry.speed_rpm, "Spindle speed")
+        speed = _number(entry.speed_rpm, N_("Spindle speed"))
         if float(speed) < 0:
-            raise EntryError("Spindle speed: enter a speed of 0 or more")
+            raise EntryError(N_("Spindle speed: enter a speed of 0 or more"))
         spindle.append(f"S{speed}")
     if entry.spindle in ("M3", "M4", "M5"):
         spindle.append(entry.spindle)
     if spindle:
         blocks.append(" ".join(spindle))
     if entry.m_function.strip():
-        blocks.append(f"M{_whole(entry.m_function, 'Other M function', 0, 99)}")
+        blocks.append(f"M{_whole(entry.m_function, N_('Other M function'), 0, 99)}")
     if not blocks:
-        raise EntryError("T,S,M: fill in at least one field")
+        raise EntryError(N_("T,S,M: fill in at least one field"))
     return "\n".join(blocks) + "\n"
 
 
@@ -106,12 +120,12 @@ def position_blocks(axis: str, position: str, feed_mm_min: str, rapid: bool) -> 
 
     With ``rapid`` the axis moves with G0, else with G1 at ``feed_mm_min`` (G94).
     """
-    target = _number(position, f"{axis} position")
+    target = _number(position, axis)
     if rapid:
         return f"G90 G0 {axis}{target}\n"
-    feed = _number(feed_mm_min, "Feed")
+    feed = _number(feed_mm_min, N_("Feed"))
     if float(feed) <= 0:
-        raise EntryError("Feed: enter a feed greater than 0")
+        raise EntryError(N_("Feed: enter a feed greater than 0"))
     return f"G90 G94 G1 {axis}{target} F{feed}\n"
 
 

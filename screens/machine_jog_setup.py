@@ -229,7 +229,7 @@ class JogWindows:
         try:
             blocks = self._blocks(view)
         except EntryError as error:
-            self.screen.say(str(error))
+            self.screen.say(error.text())
             return False
         result = self.job.prepare(blocks, status)
         if isinstance(result, cmd.Rejected):
@@ -257,7 +257,7 @@ class JogWindows:
     def _probing_blocks(self, form: JogForm) -> str:
         status, manual = self.screen.status, self.screen.ask(ManualSettingsData())
         if status is None or manual is None or not active_tool_is_probe(self.screen.ask, status):
-            raise EntryError(_("CYCLE START measures with a 3D probe (tool type 710); "
+            raise EntryError(N_("CYCLE START measures with a 3D probe (tool type 710); "
                                "with a cutter jog to the surface"))
         return probing_blocks(form.value("axis"), 1 if form.value("approach") == "+" else -1,
                               manual.retraction_plane_mm, manual.safety_distance_mm,
@@ -337,7 +337,7 @@ class JogWindows:
                 ("retraction", "retraction_plane_mm", False), ("safety", "safety_distance_mm", True),
                 ("meas_feed", "measuring_feed_mm_min", True))}
         except EntryError as error:
-            self.screen.say(str(error))
+            self.screen.say(error.text())
             return
         for key, name in (("jog_feed", "SD41110"), ("var_incr", "SD41010")):
             text = form.value(key).strip()
@@ -356,11 +356,12 @@ class JogWindows:
         text = form.value(key).strip()
         if not text:
             return None
-        label = {"retraction": "Retraction plane", "safety": "Safety distance", "meas_feed": "Measuring feed"}[key]
+        label = {"retraction": N_("Retraction plane"), "safety": N_("Safety distance"),
+                 "meas_feed": N_("Measuring feed")}[key]
         try:
             value = float(text)
         except ValueError:
-            raise EntryError(f"{label}: enter a number") from None
+            raise EntryError(N_("{field}: enter a number"), field=label) from None
         if positive and not value > 0.0:
-            raise EntryError(f"{label}: enter a value greater than 0")
+            raise EntryError(N_("{field}: enter a value greater than 0"), field=label)
         return value

@@ -36,3 +36,16 @@ def test_position_block_with_feed_or_rapid() -> None:
     assert position_blocks("X", "-3.5", "", rapid=True) == "G90 G0 X-3.5\n"
     with pytest.raises(EntryError, match="Feed"):
         position_blocks("X", "1", "0", rapid=False)
+
+
+def test_an_entry_error_is_said_in_the_panels_language() -> None:
+    """The dialog line says why a field cannot be used in German, its label too; str() stays English."""
+    from hmi.i18n import set_language
+    with pytest.raises(EntryError) as refused:
+        tsm_blocks(TsmEntry(speed_rpm="fast"))
+    set_language("de")
+    try:
+        assert refused.value.text() == "Spindeldrehzahl: eine Zahl eingeben"
+    finally:
+        set_language("en")
+    assert str(refused.value) == "Spindle speed: enter a number"
