@@ -53,6 +53,16 @@ tables and displays draw every unit through :func:`_`, these are the ones the ca
 translates (U/min …)."""
 
 
+STOP_REASON_WORDS = (N_("single block"), N_("alarm"), N_("search target found"))
+"""The channel's stop reasons that are words (``nck.status.ChannelStatus.stop_reason``); the
+others (NC STOP, M0, M1, an alarm number) read the same in every language."""
+
+
+def stop_reason_text(reason: str) -> str:
+    """Why the channel stands, in the language shown now."""
+    return _(reason) if reason in STOP_REASON_WORDS else reason
+
+
 def data_text(kind: str, key: object, field: str, english: str) -> str:
     """A text of a data table (a kind of ``nck.translations.OVERLAY_TABLES``) in the language shown now."""
     return localized(_active["code"], kind, key, field, english)

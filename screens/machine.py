@@ -25,7 +25,7 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ChoiceDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _
+from hmi.i18n import N_, _, stop_reason_text
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
 from hmi.simulation_softkeys import overlay_key, view_keys
 from hmi.widgets.blocks import BasicBlockWindow, BlockWindow
@@ -438,7 +438,7 @@ class MachineScreen(AreaBase):
                       " " + _("Block search") + f" {SEARCH_MODES[self.search_type]}")
             show_text(self.query_one("#search-info", Static),
                       " " + _("Program: {program}").format(program=channel.selected_program or "—")
-                      + f"   {channel.stop_reason}")
+                      + f"   {stop_reason_text(channel.stop_reason)}")
         self.refresh_softkeys()
 
     def _focus_for(self, view_id: str) -> None:
@@ -542,7 +542,7 @@ class MachineScreen(AreaBase):
         if sbl:
             text.append(f"   SBL ({sbl})", style="bold #f39200")
         if channel.stop_reason:
-            text.append("   " + _("stopped: {reason}").format(reason=channel.stop_reason))
+            text.append("   " + _("stopped: {reason}").format(reason=stop_reason_text(channel.stop_reason)))
         text.append("   " + _("runtime {time}").format(time=format_duration(channel.program_runtime_s))
                     + "   " + _("parts {count}").format(count=channel.part_count))
         return text
