@@ -50,6 +50,7 @@ from nck.interp.api import Interpreter, ProgramSource
 from nck.interp.interpreter import Interpreter as RealInterpreter
 from nck.iso.dialect import dialect_for
 from nck.kernel_access import Protection
+from nck.phrase import Phrase
 from nck.kernel_contact import ContactEvent, ContactWatch
 from nck.kernel_data import DataWrites
 from nck.kernel_manual import ManualControl
@@ -347,22 +348,26 @@ class Nck:
                 self.logbook.append(LogbookEntry(self._time_s, "data", f"{command.name} = {command.value}"))
             return
         if isinstance(command, cmd.ActivateMachineData):
-            self.logbook.append(LogbookEntry(self._time_s, "data", "machine data activated (NEW CONFIG)"))
+            self.logbook.append(LogbookEntry(self._time_s, "data", Phrase("machine data activated (NEW CONFIG)")))
             return
         if isinstance(command, cmd.WriteMachineSetup):
-            self.logbook.append(LogbookEntry(self._time_s, "data", "machine set-up changed"))
+            self.logbook.append(LogbookEntry(self._time_s, "data", Phrase("machine set-up changed")))
             return
         if isinstance(command, cmd.ChangePassword):
             self.logbook.append(LogbookEntry(self._time_s, "access",
-                                             f"password of access level {command.level} changed"))
+                                             Phrase("password of access level {level} changed", level=command.level)))
             return
-        what = {cmd.SetKeyswitch: "keyswitch", cmd.EnterPassword: "password entered",
-                cmd.DeletePassword: "password deleted"}.get(type(command), "access")
         if isinstance(command, cmd.SetKeyswitch):
-            what = f"keyswitch position {command.position}"
+            what = Phrase("keyswitch position {position}", position=command.position)
+        elif isinstance(command, cmd.EnterPassword):
+            what = Phrase("password entered")
+        elif isinstance(command, cmd.DeletePassword):
+            what = Phrase("password deleted")
+        else:
+            what = Phrase("access")
         if level != level_before or not isinstance(command, cmd.SetKeyswitch):
-            self.logbook.append(LogbookEntry(
-                self._time_s, "access", f"{what}: access level {level_before} -> {level}"))
+            self.logbook.append(LogbookEntry(self._time_s, "access", Phrase(
+                "{what}: access level {before} -> {after}", what=what, before=level_before, after=level)))
 
     def buffer_fill(self) -> tuple[int, int]:
         """Read-only: (items in the motion system's block buffer, its capacity) for the diagnosis."""

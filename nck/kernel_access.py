@@ -19,6 +19,7 @@ from nck.access import (ALARM_PASSWORD_REFUSED, LEVEL_FEWEST_RIGHTS, KEYSWITCH_P
                         AccessLocked, AccessState, Action)
 from nck.alarms import AlarmServer
 from nck.commands import Accepted, SubmitResult
+from nck.phrase import Phrase
 from nck.refusals import refuse, rejected_by
 from nck.status import LogbookEntry
 
@@ -96,8 +97,8 @@ class Protection:
             wrong = failed > failed_before  # a wrong password (not a malformed one): logbook and alarm log
             if wrong:
                 delay = f"{self.access.retry_delay_s:g}"
-                self.logbook.append(LogbookEntry(self.clock(), "access",
-                                                 f"password not accepted (failed attempt {failed})"))
+                self.logbook.append(LogbookEntry(self.clock(), "access", Phrase(
+                    "password not accepted (failed attempt {failed})", failed=failed)))
                 self.raise_number(ALARM_PASSWORD_REFUSED, failed, delay)
             return rejected_by(error, alarm=ALARM_PASSWORD_REFUSED if wrong else None)
         # the refusal and its waiting time are over: the alarm goes (the log keeps it)

@@ -31,7 +31,7 @@ from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, alarm_text, exercise_text
+from hmi.i18n import N_, _, alarm_text, exercise_text, reason_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -570,6 +570,9 @@ class DiagnosticsScreen(AreaBase):
             text.append(f" {_(name):<28}{value} {_(unit)}\n")
         show_text(self._body("version"), text)
 
+    LOGBOOK_KINDS = (N_("access"), N_("data"))
+    """The logbook's kinds of change (``nck.status.LogbookEntry.kind``), said in the panel's language."""
+
     def _render_logbook(self, status: NckStatus) -> None:
         entries = list(self.ask(queries.Logbook()))
         text = Text(no_wrap=True, end="")
@@ -582,7 +585,7 @@ class DiagnosticsScreen(AreaBase):
         for index in reversed(range(first, len(entries))):
             entry = entries[index]
             stamp = date_time_text(times.logbook_at(index))
-            text.append(f" {stamp:<20} {entry.kind:<8} {entry.text}\n")
+            text.append(f" {stamp:<20} {_(entry.kind):<8} {reason_text(entry.text)}\n")
         show_text(self._body("logbook"), text)
 
 

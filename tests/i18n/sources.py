@@ -27,9 +27,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("hmi", "screens")
 MARKERS = frozenset({"_", "N_", "Reason", "Phrase"})
-KERNEL_MODULES = ("nck/exercise_checks.py", "nck/simulation/run.py")
+KERNEL_MODULES = ("nck/exercise_checks.py", "nck/simulation/run.py", "nck/kernel.py", "nck/kernel_access.py")
 """Modules of the kernel whose texts the panel translates: the exercise checks' ``Reason(…)``,
-the simulation events' ``Phrase(…)`` (``nck.phrase``)."""
+the simulation events' and the logbook's ``Phrase(…)`` (``nck.phrase``)."""
 LABELLED = frozenset({"Softkey", "view_softkey", "view_key", "_view_key", "_search_mode_key"})
 """Functions whose second argument is a softkey label (the areas' small softkey builders)."""
 

@@ -6,6 +6,9 @@ from __future__ import annotations
 import pytest
 
 from hmi.i18n import reason_text, set_language
+from nck import commands as c
+from nck.access import AccessControl, AccessState
+from nck.kernel import Nck
 from nck.simulation.run import SimEvent
 
 
@@ -29,3 +32,19 @@ def test_simulation_events_in_german(german: None) -> None:
         "N40: Werkzeughalter unter der Oberfläche (Schnitt 12.00 mm tief)"
     assert reason_text(SimEvent("spindle_stopped", line=2, n=None, depth_mm=0.25).text) == \
         "Zeile 2: Schnitt bei stehender Spindel (0.25 mm tief)"
+
+
+
+def test_logbook_entries_in_german(german: None) -> None:
+    """The diagnosis logbook keeps English sentences (the log export, the tests) that the
+    German panel says in German: a wrong password, a keyswitch turn, activated machine data."""
+    nck = Nck(access=AccessControl(AccessState()))
+    nck.submit(c.EnterPassword("WRONG"))
+    nck.submit(c.SetKeyswitch(3))
+    nck.submit(c.ActivateMachineData())
+    texts = [entry.text for entry in nck.logbook]
+    assert texts == ["password not accepted (failed attempt 1)", "keyswitch position 3: access level 7 -> 4",
+                     "machine data activated (NEW CONFIG)"]
+    assert [reason_text(text) for text in texts] == [
+        "Kennwort nicht akzeptiert (Fehlversuch 1)", "Schlüsselschalterstellung 3: Zugriffsstufe 7 -> 4",
+        "Maschinendaten aktiviert (NEW CONFIG)"]
