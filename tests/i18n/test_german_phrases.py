@@ -3,20 +3,11 @@ language: the simulation's events (issue 27), a field that is itself a phrase to
 
 from __future__ import annotations
 
-import pytest
-
-from hmi.i18n import reason_text, set_language
+from hmi.i18n import reason_text
 from nck import commands as c
 from nck.access import AccessControl, AccessState
 from nck.kernel import Nck
 from nck.simulation.run import SimEvent
-
-
-@pytest.fixture
-def german():
-    set_language("de")
-    yield
-    set_language("en")
 
 
 def test_a_simulation_event_keeps_its_english_text() -> None:

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from hmi.i18n import refusal_text, set_language
+from hmi.i18n import refusal_text
 from nck import commands as cmd
 from nck.access import AccessControl, AccessDenied, AccessState, Action
 from nck.kernel import Nck
@@ -117,13 +117,6 @@ def test_a_refusal_keeps_its_english_reason_and_fields() -> None:
     assert (refusal.key, refusal.fields) == ("program_not_found", (("program", "PART.MPF"),))
     with pytest.raises(KeyError):
         refuse("no_such_refusal")
-
-
-@pytest.fixture
-def german():
-    set_language("de")
-    yield
-    set_language("en")
 
 
 def test_the_panel_says_a_refusal_in_its_language(german: None) -> None:

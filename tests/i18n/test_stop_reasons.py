@@ -4,17 +4,8 @@ same in both (issue 27; Einzelsatz is the control's German for single block, SBL
 
 from __future__ import annotations
 
-import pytest
-
-from hmi.i18n import STOP_REASON_WORDS, set_language, stop_reason_text
+from hmi.i18n import STOP_REASON_WORDS, stop_reason_text
 from nck.program_control import SEARCH_TARGET_FOUND
-
-
-@pytest.fixture
-def german():
-    set_language("de")
-    yield
-    set_language("en")
 
 
 def test_the_kernels_worded_reasons_are_the_ones_translated() -> None:
