@@ -58,6 +58,7 @@ class CycleFormDialog(AreaDialog[str | None]):
         self.form = form
         self._texts = texts
         self._recompile = recompile
+        self._fields: list[Input] = []
 
     def compose(self) -> ComposeResult:
         """Title, the parameter rows, help, message, sketch and keys."""
@@ -76,17 +77,18 @@ class CycleFormDialog(AreaDialog[str | None]):
                         yield Static(param.range_text(), classes="cycle-range", markup=False)
             yield Static("", id="cycle-help", markup=False)
             yield Static("", id="cycle-message", markup=False)
-            yield Static("", id="cycle-sketch", markup=False)
+            yield Static(self._sketch_text(), id="cycle-sketch", markup=False)
             yield Static(_("↑/↓ field   Enter next field / OK on the last   F10 / Esc cancel"), id="cycle-keys")
 
     def on_mount(self) -> None:
         """The cursor on the first field."""
-        focus_now(self.fields()[0])
+        self._fields = list(self.query(FieldInput))
+        focus_now(self._fields[0])
         self._show_param(0)
 
     def fields(self) -> list[Input]:
-        """The fields in the order of the parameters."""
-        return list(self.query(FieldInput))
+        """The fields in the order of the parameters (the form's rows never change)."""
+        return self._fields
 
     def on_descendant_focus(self) -> None:
         """The cursor moved: help and sketch follow the parameter under it."""
@@ -98,12 +100,19 @@ class CycleFormDialog(AreaDialog[str | None]):
         """The help line of ``param`` in the language shown now."""
         return data_text("cycle_param", f"{self.form.cycle}.{param.name}", "help", param.help)
 
+    def _sketch_text(self) -> Text:
+        """The form's sketch in the language shown now, nothing marked."""
+        return Text(data_text("cycle_sketch", self.form.sketch_name, "text", self.form.sketch).strip("\n"))
+
     def _show_param(self, index: int) -> None:
+        # The help and message lines are one row high and marking a name keeps the sketch's
+        # shape, so these updates repaint the lines without laying out the whole form again.
         param = self.form.params[index]
-        self.query_one("#cycle-help", Static).update(Text(f"{param.name}: {self.param_help(param)}"))
-        sketch = Text(data_text("cycle_sketch", self.form.sketch_name, "text", self.form.sketch).strip("\n"))
+        self.query_one("#cycle-help", Static).update(Text(f"{param.name}: {self.param_help(param)}"),
+                                                     layout=False)
+        sketch = self._sketch_text()
         sketch.highlight_regex(rf"(?<![A-Z0-9_]){re.escape(param.name)}(?![A-Z0-9_])", "reverse")
-        self.query_one("#cycle-sketch", Static).update(sketch)
+        self.query_one("#cycle-sketch", Static).update(sketch, layout=False)
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         """Enter: check the field; next field, or OK on the last one."""
@@ -124,7 +133,7 @@ class CycleFormDialog(AreaDialog[str | None]):
         """Show why field ``index`` is refused and put the cursor there; False when it is good."""
         field = self.fields()[index]
         reason = self.form.params[index].refusal(field.value)
-        self.query_one("#cycle-message", Static).update(Text(reason or ""))
+        self.query_one("#cycle-message", Static).update(Text(reason or ""), layout=False)
         if reason is not None:
             focus_now(field)
             return True
