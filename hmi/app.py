@@ -60,7 +60,7 @@ from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
 from hmi.exercise_run import EXAM_HELP_LIMITED, ClassroomHost, reports_dir_of, served_dir_of
 from hmi.alarm_help import AlarmHelpScreen
-from hmi.i18n import LANGUAGES, N_, _, language, refusal_text, set_language
+from hmi.i18n import LANGUAGES, N_, _, error_text, language, refusal_text, set_language
 from hmi.help import HelpScreen, area_keys
 from hmi.key_input import own_binding
 from hmi.key_settle import BindingsInPlace, wait_for_workers, wait_until_handled
@@ -417,7 +417,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         try:
             self.nc_session.save()
         except OSError as exc:  # a full or read-only disk: say so, keep running
-            self.set_hint(_("NC data could not be saved: {error}").format(error=exc))
+            self.set_hint(_("NC data could not be saved: {error}").format(error=error_text(exc)))
 
     # -- colour theme ---------------------------------------------------------------------------
     def _apply_kept_theme(self) -> None:
@@ -766,7 +766,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         failures = self._keep_unsaved_text()
         if failures:
             self.set_hint(_("Not quit: unsaved text could not be kept in the journal: {error}").format(
-                error=failures[0]))
+                error=error_text(failures[0])))
             return
         self._leave(0)
 

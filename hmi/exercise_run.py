@@ -21,7 +21,7 @@ from typing import Any
 from nck import queries
 from nck.status import NckStatus
 
-from hmi.i18n import N_, _, exercise_text, reason_text, step_text
+from hmi.i18n import N_, _, error_text, exercise_text, reason_text, step_text
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
@@ -209,7 +209,7 @@ class ClassroomHost:
             said = _("Exercise ended, score {score}/100: report in {path}").format(
                 score=run.report["score"] if run.report else 0, path=text_path)
         except OSError as exc:
-            said = _("The exercise report could not be written: {error}").format(error=exc)
+            said = _("The exercise report could not be written: {error}").format(error=error_text(exc))
         finally:
             self.exercise_run = None
             self.exercise_side = ""
@@ -242,7 +242,7 @@ class ClassroomHost:
         except queries.PackError as exc:
             return _("Class pack not imported: {error}").format(error=exc)
         except OSError as exc:
-            return _("Class pack not imported: {error}").format(error=f"{exc.filename}: {exc.strerror or exc}")
+            return _("Class pack not imported: {error}").format(error=error_text(exc, failed="os_read_failed"))
         return _("Class pack imported: {summary} ({files} files new or changed)").format(
             summary=pack.summary(_), files=len(written))
 

@@ -15,11 +15,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from nck import LANGUAGES, SOURCE_LANGUAGE, alarm_text_in, check_language, gettext_catalogue, localized
+from nck import (LANGUAGES, SOURCE_LANGUAGE, Refused, alarm_text_in, check_language, gettext_catalogue, localized,
+                 os_refusal)
 from nck.commands import Rejected
+from nck.queries import rejected_by
 from nck.status import AlarmEntry
 
-__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "exercise_text", "language", "reason_text", "refusal_text",
+__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "error_text", "exercise_text", "language", "reason_text", "refusal_text",
            "set_language", "step_text"]
 
 _active = {"code": SOURCE_LANGUAGE}
@@ -126,3 +128,16 @@ def refusal_text(refusal: Rejected) -> str:
 def alarm_text(entry: AlarmEntry) -> str:
     """The text of a raised alarm (or of its log entry) in the language shown now."""
     return alarm_text_in(_active["code"], entry.number, entry.params, entry.text)
+
+
+def error_text(error: Exception, *, failed: str = "os_write_failed") -> str:
+    """Why a file operation failed, in the language shown now: a keyed refusal (``StorageError``
+    and every ``nck.refused.Refused``) in its text, an ``OSError`` by its kind (no such file,
+    permission denied, disk full, read-only file system …; ``nck.os_refusals``; any other kind
+    says the file could not be written, or read: ``failed="os_read_failed"``), never the
+    operating system's English sentence; anything else as ``str()``."""
+    if isinstance(error, OSError):
+        error = os_refusal(error, failed=failed)
+    if isinstance(error, Refused):
+        return refusal_text(rejected_by(error))
+    return str(error)

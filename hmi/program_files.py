@@ -168,4 +168,4 @@ class ProgramFiles:
             except StorageError as exc:
                 if exc.code != "exists":
                     raise
-        raise StorageError("exists", f"no free name for a copy of {base}")
+        raise StorageError("storage_no_free_copy_name", name=base)

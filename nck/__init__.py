@@ -41,6 +41,9 @@ from nck.canon import Motion as Motion
 from nck.iso.display import ISO_MAIN_GROUPS_M as ISO_MAIN_GROUPS_M, iso_table as iso_table
 # A refusal by its key in data/refusals.toml (the panel's own refusals of operator commands).
 from nck.refusals import refuse as refuse
+# A refusal a data layer raises (keyed), and an operating system's refusal of a file operation as one.
+from nck.refused import Refused as Refused
+from nck.os_refusals import os_refusal as os_refusal
 # Operator texts in more than one language: gettext catalogues and data-table overlays (data/lang).
 from nck.translations import (LANGUAGES as LANGUAGES, SOURCE_LANGUAGE as SOURCE_LANGUAGE,
                               UnknownLanguage as UnknownLanguage, alarm_text_in as alarm_text_in,

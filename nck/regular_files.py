@@ -43,6 +43,7 @@ class FileTooLarge(OSError):
     """The file (or the files copied together) is larger than the reader accepts."""
 
     def __init__(self, path: Path | str, limit_bytes: int) -> None:
+        self.limit_bytes = limit_bytes
         size = f"{limit_bytes >> 20} MB" if limit_bytes >= 1 << 20 else f"{limit_bytes} bytes"
         super().__init__(errno.EFBIG, f"larger than {size}", str(path))
 

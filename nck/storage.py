@@ -29,6 +29,8 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
+from nck.os_refusals import os_refusal
+from nck.refused import Refused
 from nck.regular_files import (
     copy_regular_tree, is_plain_directory, is_regular_file, plain_directory, read_regular_bytes,
     write_export,
@@ -45,16 +47,43 @@ SAMPLES_MARK = ".samples-installed"
 _NAME = re.compile(r"^(?:[A-Z_][A-Z_][A-Z0-9_]*|L[0-9]{1,7})$")
 
 
-class StorageError(Exception):
-    """A file operation was refused or failed; ``str()`` is a message for the operator.
+STORAGE_KEY_CODES = {
+    "storage_name_needed": "invalid_name", "storage_name_too_long": "invalid_name",
+    "storage_name_two_letters": "invalid_name", "storage_name_letters": "invalid_name",
+    "storage_name_type": "invalid_name",
+    "storage_not_nc_path": "bad_path", "storage_wrong_directory": "bad_path",
+    "storage_wks_workpieces_only": "bad_path", "storage_workpiece_programs_only": "bad_path",
+    "storage_too_many_levels": "bad_path", "storage_not_a_program": "bad_path",
+    "storage_directory_not_deletable": "bad_path",
+    "storage_exists": "exists", "storage_copy_onto_itself": "exists", "storage_no_free_copy_name": "exists",
+    "storage_does_not_exist": "not_found", "storage_not_a_file": "not_found",
+    "storage_in_use_changed": "in_use", "storage_in_use_overwritten": "in_use",
+    "storage_in_use_renamed": "in_use", "storage_in_use_deleted": "in_use",
+    "storage_not_utf8": "not_text", "storage_binary": "not_text",
+    "storage_too_large": "io",
+    "storage_not_nc_folder": "odd",
+}
+"""The kind (``StorageError.code``) of each refusal key of the NC file system; a key not
+listed (an operating system's refusal, :mod:`nck.os_refusals`) is of kind ``io``."""
 
-    ``code`` is one of ``invalid_name``, ``bad_path``, ``exists``, ``not_found``,
+
+class StorageError(Refused):
+    """A file operation was refused or failed: a keyed refusal (``data/refusals.toml``, ``str()``
+    the English text) that a panel says in its own language.
+
+    ``code`` is the kind: one of ``invalid_name``, ``bad_path``, ``exists``, ``not_found``,
     ``in_use``, ``not_text``, ``io``, ``odd`` (a folder that is a link, pipe or file).
     """
 
-    def __init__(self, code: str, message: str) -> None:
-        self.code = code
-        super().__init__(message)
+    def __init__(self, key: str, **fields: object) -> None:
+        self.code = STORAGE_KEY_CODES.get(key, "io")
+        super().__init__(key, **fields)
+
+    @classmethod
+    def from_os_error(cls, error: OSError, path: object, failed: str = "os_write_failed") -> "StorageError":
+        """The operating system's refusal ``error`` of a file operation on ``path`` (:func:`os_refusal`)."""
+        refusal = os_refusal(error, path=str(path), failed=failed)
+        return cls(refusal.key, **dict(refusal.fields))
 
 
 def validate_name(name: str) -> str:
@@ -65,17 +94,13 @@ def validate_name(name: str) -> str:
     """
     upper = name.strip().upper()
     if not upper:
-        raise StorageError("invalid_name", "a name is needed")
+        raise StorageError("storage_name_needed")
     if len(upper) > NAME_MAX_CHARS:
-        raise StorageError("invalid_name", f"{upper}: at most {NAME_MAX_CHARS} characters")
+        raise StorageError("storage_name_too_long", name=upper, max=NAME_MAX_CHARS)
     if len(upper) == 1 and re.fullmatch(r"[A-Z_]", upper):
-        raise StorageError("invalid_name", f"{upper}: the name needs at least two letters")
+        raise StorageError("storage_name_two_letters", name=upper)
     if not _NAME.match(upper):
-        raise StorageError(
-            "invalid_name",
-            f"{upper}: use letters, digits and _ only, starting with two letters "
-            "(or L and a number)",
-        )
+        raise StorageError("storage_name_letters", name=upper)
     return upper
 
 
@@ -83,7 +108,7 @@ def split_file_name(file_name: str) -> tuple[str, str]:
     """Split ``PART1.MPF`` into (``PART1``, ``MPF``), validating both parts."""
     stem, dot, ext = file_name.strip().upper().rpartition(".")
     if not dot or ext not in PROGRAM_TYPES + (WORKPIECE_SUFFIX,):
-        raise StorageError("invalid_name", f"{file_name}: the name needs .MPF or .SPF")
+        raise StorageError("storage_name_type", name=file_name)
     return validate_name(stem), ext
 
 
@@ -117,7 +142,7 @@ def check_program_size(name: str, data: bytes) -> None:
     """Raise StorageError ``io`` for content larger than a program the NC memory takes
     (:data:`MAX_IMPORT_BYTES`: what is read back; a larger program could never be opened)."""
     if len(data) > MAX_IMPORT_BYTES:
-        raise StorageError("io", f"{name} is too large for the NC memory")
+        raise StorageError("storage_too_large", name=name)
 
 
 class NcFileSystem:
@@ -153,22 +178,22 @@ class NcFileSystem:
             else:
                 parts = [ext, parts[0]]
         if not parts or parts[0] not in DIRECTORIES:
-            raise StorageError("bad_path", f"{path}: not a path of the NC file system")
+            raise StorageError("storage_not_nc_path", path=path)
         if len(parts) == 1:
             return parts[0]
         stem, ext = split_file_name(parts[1])
         if parts[0] in PROGRAM_TYPES:
             if len(parts) != 2 or ext != parts[0]:
-                raise StorageError("bad_path", f"{path}: a .{ext} file does not belong in {parts[0]}")
+                raise StorageError("storage_wrong_directory", path=path, ext=ext, directory=parts[0])
         else:
             if ext != WORKPIECE_SUFFIX:
-                raise StorageError("bad_path", f"{path}: the WKS directory holds only workpieces")
+                raise StorageError("storage_wks_workpieces_only", path=path)
             if len(parts) == 3:
                 _, inner = split_file_name(parts[2])
                 if inner not in PROGRAM_TYPES:
-                    raise StorageError("bad_path", f"{path}: a workpiece holds MPF and SPF files")
+                    raise StorageError("storage_workpiece_programs_only", path=path)
             elif len(parts) > 3:
-                raise StorageError("bad_path", f"{path}: too many levels")
+                raise StorageError("storage_too_many_levels", path=path)
         return "/".join(parts)
 
     def _disk(self, canonical: str) -> Path:
@@ -180,8 +205,7 @@ class NcFileSystem:
         current = self.root
         for part in canonical.split("/"):
             if current != self.root and os.path.lexists(current) and not is_plain_directory(current):
-                raise StorageError("odd", f"{current.name}: not a folder of the NC memory "
-                                          "(a link, pipe or file) — not used")
+                raise StorageError("storage_not_nc_folder", path=current.name)
             candidate = current / part
             if not candidate.exists() and current.is_dir():
                 for existing in current.iterdir():
@@ -218,9 +242,9 @@ class NcFileSystem:
                 return True
         return False
 
-    def _refuse_in_use(self, path: str, verb: str) -> None:
+    def _refuse_in_use(self, path: str, key: str) -> None:
         if self.is_in_use(path):
-            raise StorageError("in_use", f"{path} is in use and cannot be {verb}")
+            raise StorageError(key, path=path)
 
     # ---------------------------------------------------------------- listing
     def exists(self, path: str) -> bool:
@@ -244,9 +268,8 @@ class NcFileSystem:
         disk = self._disk(canonical)
         if not is_plain_directory(disk):
             if os.path.lexists(disk):
-                raise StorageError("odd", f"{canonical}: not a folder of the NC memory (a link, pipe "
-                                          "or file) — not used")
-            raise StorageError("not_found", f"{directory} does not exist")
+                raise StorageError("storage_not_nc_folder", path=canonical)
+            raise StorageError("storage_does_not_exist", path=directory)
         entries, odd = [], []
         for item in disk.iterdir():
             try:
@@ -274,11 +297,11 @@ class NcFileSystem:
         """The raw content of a program (a regular file of at most MAX_IMPORT_BYTES)."""
         disk = self._disk(self.canonical(path))
         if not os.path.lexists(disk):
-            raise StorageError("not_found", f"{path} does not exist")
+            raise StorageError("storage_does_not_exist", path=path)
         try:
             return read_regular_bytes(disk, MAX_IMPORT_BYTES)
         except OSError as exc:
-            raise StorageError("io", f"{path}: {exc.strerror}") from exc
+            raise StorageError.from_os_error(exc, path, failed="os_read_failed") from exc
 
     def read(self, path: str) -> str:
         """The text of a program (raise not_text when it is binary or not UTF-8)."""
@@ -286,9 +309,9 @@ class NcFileSystem:
         try:
             text = data.decode("utf-8")
         except UnicodeDecodeError as exc:
-            raise StorageError("not_text", f"{path} is not a UTF-8 text file") from exc
+            raise StorageError("storage_not_utf8", path=path) from exc
         if "\x00" in text:
-            raise StorageError("not_text", f"{path} is a binary file")
+            raise StorageError("storage_binary", path=path)
         return text
 
     def open_program(self, path: str) -> OpenedProgram:
@@ -318,20 +341,20 @@ class NcFileSystem:
         canonical = self.canonical(path)
         check_program_size(canonical, data)
         if "/" not in canonical or canonical.endswith("." + WORKPIECE_SUFFIX):
-            raise StorageError("bad_path", f"{path} is not a program")
-        self._refuse_in_use(canonical, "changed")
+            raise StorageError("storage_not_a_program", path=path)
+        self._refuse_in_use(canonical, "storage_in_use_changed")
         self._require_parent(canonical)
         try:
             atomic_write_bytes(self._disk(canonical), data)
         except OSError as exc:
-            raise StorageError("io", f"{canonical} could not be written: {exc.strerror}") from exc
+            raise StorageError.from_os_error(exc, canonical) from exc
         return self._entry(canonical)
 
     def create(self, path: str, text: str = "") -> ProgramEntry:
         """Create a new program (refused when the name exists)."""
         canonical = self.canonical(path)
         if self.exists(canonical):
-            raise StorageError("exists", f"{canonical} already exists")
+            raise StorageError("storage_exists", path=canonical)
         return self.save(canonical, text)
 
     def create_workpiece(self, name: str, with_program: bool = True) -> ProgramEntry:
@@ -339,7 +362,7 @@ class NcFileSystem:
         stem = validate_name(name.upper().removesuffix("." + WORKPIECE_SUFFIX))
         canonical = f"WKS/{stem}.{WORKPIECE_SUFFIX}"
         if self.exists(canonical):
-            raise StorageError("exists", f"{canonical} already exists")
+            raise StorageError("storage_exists", path=canonical)
         self._disk(canonical).mkdir(parents=True)
         if with_program:
             self.save(f"{canonical}/{stem}.MPF", "")
@@ -348,7 +371,7 @@ class NcFileSystem:
     def _require_parent(self, canonical: str) -> None:
         parent = canonical.rpartition("/")[0]
         if not self._disk(parent).is_dir():
-            raise StorageError("not_found", f"{parent} does not exist")
+            raise StorageError("storage_does_not_exist", path=parent)
 
     # ------------------------------------------------- copy / rename / delete
     def _target(self, source: str, target: str) -> str:
@@ -365,43 +388,43 @@ class NcFileSystem:
         """Copy a program (or workpiece) to a new path or into a directory."""
         src = self.canonical(source)
         if not self.exists(src):
-            raise StorageError("not_found", f"{src} does not exist")
+            raise StorageError("storage_does_not_exist", path=src)
         dst = self._target(src, target)
         if dst == src:
-            raise StorageError("exists", f"{src} cannot be copied onto itself")
+            raise StorageError("storage_copy_onto_itself", path=src)
         if self.exists(dst):
             if not overwrite:
-                raise StorageError("exists", f"{dst} already exists")
-            self._refuse_in_use(dst, "overwritten")
+                raise StorageError("storage_exists", path=dst)
+            self._refuse_in_use(dst, "storage_in_use_overwritten")
         if src.endswith("." + WORKPIECE_SUFFIX):
             if self.exists(dst):
-                raise StorageError("exists", f"{dst} already exists")
+                raise StorageError("storage_exists", path=dst)
             try:
                 copy_regular_tree(self._disk(src), self._disk(dst), MAX_IMPORT_BYTES)
             except OSError as exc:
                 shutil.rmtree(self._disk(dst), ignore_errors=True)
-                raise StorageError("io", f"{dst} could not be written: {exc.strerror}") from exc
+                raise StorageError.from_os_error(exc, dst) from exc
             return self._entry(dst)
         self._require_parent(dst)
         try:
             atomic_write_bytes(self._disk(dst), self.read_bytes(src))
         except OSError as exc:
-            raise StorageError("io", f"{dst} could not be written: {exc.strerror}") from exc
+            raise StorageError.from_os_error(exc, dst) from exc
         return self._entry(dst)
 
     def rename(self, source: str, new_name: str) -> ProgramEntry:
         """Rename a program or workpiece within its directory (refused while in use)."""
         src = self.canonical(source)
         if not self.exists(src):
-            raise StorageError("not_found", f"{src} does not exist")
-        self._refuse_in_use(src, "renamed")
+            raise StorageError("storage_does_not_exist", path=src)
+        self._refuse_in_use(src, "storage_in_use_renamed")
         parent, _, old_name = src.rpartition("/")
         new_file = new_name.strip().upper()
         if "." not in new_file:
             new_file = f"{new_file}.{old_name.rpartition('.')[2]}"
         dst = self.canonical(f"{parent}/{new_file}")
         if dst != src and self.exists(dst):
-            raise StorageError("exists", f"{dst} already exists")
+            raise StorageError("storage_exists", path=dst)
         os.replace(self._disk(src), self._disk(parent) / dst.rpartition("/")[2])
         return self._entry(dst)
 
@@ -409,11 +432,11 @@ class NcFileSystem:
         """Delete a program or a whole workpiece (refused while in use)."""
         canonical = self.canonical(path)
         if canonical in DIRECTORIES:
-            raise StorageError("bad_path", f"the directory {canonical} cannot be deleted")
+            raise StorageError("storage_directory_not_deletable", path=canonical)
         disk = self._disk(canonical)
         if not os.path.lexists(disk):
-            raise StorageError("not_found", f"{canonical} does not exist")
-        self._refuse_in_use(canonical, "deleted")
+            raise StorageError("storage_does_not_exist", path=canonical)
+        self._refuse_in_use(canonical, "storage_in_use_deleted")
         if is_plain_directory(disk):
             shutil.rmtree(disk)
         else:
@@ -429,18 +452,18 @@ class NcFileSystem:
         """
         local = Path(local_path)
         if not local.is_file():
-            raise StorageError("not_found", f"{local} is not a file")
+            raise StorageError("storage_not_a_file", path=local)
         if local.stat().st_size > MAX_IMPORT_BYTES:
-            raise StorageError("io", f"{local} is too large for the NC memory")
+            raise StorageError("storage_too_large", name=local)
         target = self.import_target(local, directory, name)
         if self.exists(target):
             if not overwrite:
-                raise StorageError("exists", f"{target} already exists")
-            self._refuse_in_use(target, "overwritten")
+                raise StorageError("storage_exists", path=target)
+            self._refuse_in_use(target, "storage_in_use_overwritten")
         try:
             atomic_write_bytes(self._disk(target), local.read_bytes())
         except OSError as exc:
-            raise StorageError("io", f"{target} could not be written: {exc.strerror}") from exc
+            raise StorageError.from_os_error(exc, target) from exc
         return self._entry(target)
 
     def import_target(self, local_path: Path | str, directory: str = "MPF", name: str | None = None) -> str:
@@ -484,7 +507,7 @@ class NcFileSystem:
         except FileExistsError:
             raise
         except OSError as exc:
-            raise StorageError("io", f"{local} could not be written: {exc.strerror}") from exc
+            raise StorageError.from_os_error(exc, local) from exc
         return local
 
     # ---------------------------------------------------------- ProgramSource

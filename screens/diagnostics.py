@@ -31,7 +31,7 @@ from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, alarm_text, exercise_text, reason_text
+from hmi.i18n import N_, _, alarm_text, error_text, exercise_text, reason_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from screens.diagnostics_alarms import (
@@ -354,7 +354,7 @@ class DiagnosticsScreen(AreaBase):
                 self.app.push_screen(ConfirmDialog(question), lambda yes: attempt(True) if yes else None)
                 return
             except OSError as exc:
-                self.say(f"{failed}: {exc}")
+                self.say(f"{failed}: {error_text(exc)}")
                 return
             self.say(done.format(path=path))  # kept when the area comes back from the question
 

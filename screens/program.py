@@ -42,7 +42,7 @@ from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ChoiceDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, refusal_text
+from hmi.i18n import N_, _, error_text, refusal_text
 from hmi.journal import AUTOSAVE_PERIOD_S, EditorJournal, text_hash
 from hmi.program_files import ProgramFiles, decode_program
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -251,7 +251,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             canonical = self.files.canonical(program)
             raw = self.files.fs.read_bytes(canonical) if text is None else text.encode("utf-8")
         except Exception as exc:  # a file problem is a notification, never a traceback
-            self.say(_("{program}: cannot be read ({error})").format(program=program, error=exc))
+            self.say(_("{program}: cannot be read ({error})").format(program=program, error=error_text(exc, failed="os_read_failed")))
             return False
         decoded, binary = decode_program(raw)
         self.program = canonical
@@ -373,7 +373,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         try:
             self.write_journal()
         except OSError as exc:
-            self.say(_("Journal could not be written: {error}").format(error=exc))
+            self.say(_("Journal could not be written: {error}").format(error=error_text(exc)))
 
     def write_journal(self) -> None:
         """Write unsaved text into the journal if it changed since the last write (``OSError`` if it cannot)."""
@@ -578,7 +578,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         try:
             self.files.fs.save(self.program, text)
         except Exception as exc:  # storage refusals are notifications
-            self.say(_("{program} not saved: {error}").format(program=self.program, error=exc))
+            self.say(_("{program} not saved: {error}").format(program=self.program, error=error_text(exc)))
             return False
         self.saved_text = text
         self._dirty = False

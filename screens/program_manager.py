@@ -34,7 +34,7 @@ from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ChoiceDialog, ConfirmDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, refusal_text
+from hmi.i18n import N_, _, error_text, refusal_text
 from hmi.journal import EditorJournal
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -295,7 +295,7 @@ class ProgramManagerScreen(AreaBase):
             self.entries, odd = self.files.fs.scan_directory(self.directory)
         except (OSError, ProgramFileError) as exc:
             self.entries, odd = [], []
-            self.say(f"{self.directory}: {exc}")
+            self.say(error_text(exc, failed="os_read_failed"))
         if odd:
             self.say(_("{directory}: skipped {names} (not a regular file or folder)").format(
                 directory=self.directory, names=", ".join(odd)))
@@ -404,7 +404,7 @@ class ProgramManagerScreen(AreaBase):
             try:
                 path = self.files.create(directory, name)
             except (ProgramFileError, OSError) as exc:
-                self.say(_("New: {exc}").format(exc=exc))
+                self.say(_("New: {exc}").format(exc=error_text(exc)))
                 return
             self.rebuild_tree()
             self.refresh_listing(select=path)
@@ -430,7 +430,7 @@ class ProgramManagerScreen(AreaBase):
         try:
             path = self.files.paste_copy(self._clipboard, self.directory)
         except (ProgramFileError, OSError) as exc:
-            self.say(_("Paste: {exc}").format(exc=exc))
+            self.say(_("Paste: {exc}").format(exc=error_text(exc)))
             return
         self.refresh_listing(select=path)
         self.say(_("{path} created as a copy of {clipboard}").format(path=path, clipboard=self._clipboard))
@@ -450,7 +450,7 @@ class ProgramManagerScreen(AreaBase):
             try:
                 path = self.files.fs.rename(entry.path, name).path
             except (ProgramFileError, OSError) as exc:
-                self.say(_("Rename: {exc}").format(exc=exc))
+                self.say(_("Rename: {exc}").format(exc=error_text(exc)))
                 return
             self.refresh_listing(select=path)
             self.say(_("{path} renamed to {new}").format(path=entry.path, new=path))
@@ -472,7 +472,7 @@ class ProgramManagerScreen(AreaBase):
             try:
                 self.files.fs.delete(entry.path)
             except (ProgramFileError, OSError) as exc:
-                self.say(_("Delete: {exc}").format(exc=exc))
+                self.say(_("Delete: {exc}").format(exc=error_text(exc)))
                 return
             if entry.kind == "WPD":
                 self.rebuild_tree()
@@ -525,7 +525,7 @@ class ProgramManagerScreen(AreaBase):
             try:
                 target = self.files.fs.import_file(Path(path).expanduser(), directory).path
             except (ProgramFileError, OSError) as exc:
-                self.say(_("Import: {exc}").format(exc=exc))
+                self.say(_("Import: {exc}").format(exc=error_text(exc, failed="os_read_failed")))
                 return
             self.directory = directory
             self.refresh_listing(select=target)
@@ -551,7 +551,7 @@ class ProgramManagerScreen(AreaBase):
                                      lambda yes: do_export(path, True) if yes else None)
                 return
             except (ProgramFileError, OSError) as exc:
-                self.say(_("Export: {exc}").format(exc=exc))
+                self.say(_("Export: {exc}").format(exc=error_text(exc)))
                 return
             self.say(_("{path} exported to {target}").format(path=entry.path, target=target))
 

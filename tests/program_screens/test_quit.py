@@ -123,7 +123,7 @@ async def test_journal_write_failure_at_quit_is_reported_and_the_hmi_stays(
         line = str(app.screen.query_one("#dialog-line").render())
         # the quit's "Not quit: …" or, when the 3 s autosave ran meanwhile (a loaded machine), its
         # "Journal could not be written: …" — both name the failure; the HMI stayed either way
-        assert "No space left on device" in line and "journal" in line.lower()
+        assert "the disk is full" in line and "journal" in line.lower()
         assert app.screen.editor.text.startswith("N5; pocket")
 
 
