@@ -26,9 +26,11 @@ import re
 import shutil
 from dataclasses import dataclass
 from pathlib import Path
+from stat import S_ISREG
 from typing import Callable, Iterable
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
+from nck.file_texts import FileTexts
 from nck.os_refusals import os_refusal
 from nck.refused import Refused
 from nck.regular_files import (
@@ -164,6 +166,7 @@ class NcFileSystem:
         for directory in DIRECTORIES:
             remove_stale_temp_files(self.root / directory)
         self._in_use: set[str] = set()
+        self._texts = FileTexts()  # program texts for the interpreter's calls, kept while unchanged
         #: Returns the paths or file names of the programs in use (selected/running).
         self.in_use_check: Callable[[], Iterable[str]] = lambda: self._in_use
 
@@ -302,6 +305,20 @@ class NcFileSystem:
             return read_regular_bytes(disk, MAX_IMPORT_BYTES)
         except OSError as exc:
             raise StorageError.from_os_error(exc, path, failed="os_read_failed") from exc
+
+    def program_text(self, canonical: str) -> str | None:
+        """The text of the program at a canonical path for the interpreter (undecodable bytes
+        replaced), None when no regular file is there; read again only when the file changed
+        (:class:`nck.file_texts.FileTexts`). Raises StorageError (odd folder) or OSError."""
+        disk = self._disk(canonical)
+        try:
+            status = os.lstat(disk)
+        except FileNotFoundError:
+            return None
+        if not S_ISREG(status.st_mode):
+            return None  # a link, folder or pipe is never read
+        return self._texts.text(str(disk), status, lambda: read_regular_bytes(disk, MAX_IMPORT_BYTES).decode(
+            "utf-8", errors="replace"))
 
     def read(self, path: str) -> str:
         """The text of a program (raise not_text when it is binary or not UTF-8)."""
@@ -592,9 +609,9 @@ class ScopedProgramSource:
         for candidate in candidates:
             try:
                 canonical = self.fs.canonical(candidate)
-                if self.fs.exists(canonical):
-                    text = self.fs.read_bytes(canonical).decode("utf-8", errors="replace")
-                    return canonical.rpartition("/")[2], text
+                text = self.fs.program_text(canonical)
             except (StorageError, OSError):
                 continue
+            if text is not None:
+                return canonical.rpartition("/")[2], text
         return None

@@ -87,6 +87,7 @@ class Interpreter:
         self.table = gtable(dialect.gcode_table)
         self.builder = MotionBuilder(machine, data)
         self.simple_step = SimpleStep()  # the fast step of simple motion blocks
+        self.cycles = DirectorySource(data_path("cycles"))  # keeps the cycles' texts while unchanged
         self.skip_levels: frozenset[int] = frozenset()  # active /n levels (0 = plain "/")
         self.flags: dict[str, bool] = {"search": False, "test": False, "dry_run": False}
         self.position_source: Callable[[str], float] | None = None
@@ -181,7 +182,7 @@ class Interpreter:
         Programs of the program source with the same name win (a user's own cycle).
         """
 
-        return DirectorySource(data_path("cycles")).read_program(name)
+        return self.cycles.read_program(name)
 
     def needs_preprocessing_stop(self) -> bool:
         """True if the next block reads main-run data (``$A…``, ``$V…``, ``$$…``).

@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from stat import S_ISREG
 
+from nck.file_texts import FileTexts
 from nck.regular_files import read_regular_bytes
 
 EXTENSIONS = (".SPF", ".MPF")
@@ -33,10 +35,15 @@ def read_text_file(path: Path) -> str:
 
 
 class DirectorySource:
-    """Programs in one or more directories (searched in order)."""
+    """Programs in one or more directories (searched in order).
+
+    The directories are listed on every look-up (a program added or removed is seen at once);
+    a found program's text is read again only when its file changed (:class:`FileTexts`).
+    """
 
     def __init__(self, *directories: Path | str) -> None:
         self.directories = [Path(d) for d in directories]
+        self.texts = FileTexts()
 
     def _candidates(self, name: str) -> list[str]:
         upper = name.upper()
@@ -48,22 +55,36 @@ class DirectorySource:
         """Return ``(display_name, text)`` or None."""
         wanted = self._candidates(name)
         for directory in self.directories:
-            if not directory.is_dir():
-                continue
-            try:  # only the wanted names are tested for being a file (one stat, not one per entry)
-                with os.scandir(directory) as scan:
-                    entries = {entry.name.upper(): Path(entry.path) for entry in scan
-                               if entry.name.upper() in wanted and entry.is_file()}
-            except OSError:
+            try:
+                found = self._files(directory, wanted)
+            except OSError:  # not a directory (any more)
                 continue
             for candidate in wanted:
-                path = entries.get(candidate)
-                if path is not None:
+                if candidate in found:
+                    path, status = found[candidate]
                     try:
-                        return path.name, read_text_file(path)
+                        return path.name, self.texts.text(str(path), status, lambda: read_text_file(path))
                     except OSError:
                         return None
         return None
+
+    @staticmethod
+    def _files(directory: Path, wanted: list[str]) -> dict[str, tuple[Path, os.stat_result]]:
+        """The regular files (or links to one) of ``directory`` named as one of ``wanted`` (in
+        capitals), with their ``stat``; only those names are tested (one stat, not one per entry)."""
+        found: dict[str, tuple[Path, os.stat_result]] = {}
+        with os.scandir(directory) as scan:
+            for entry in scan:
+                upper = entry.name.upper()
+                if upper not in wanted:
+                    continue
+                try:
+                    status = entry.stat()  # through a link, as read_text_file reads
+                except OSError:
+                    continue
+                if S_ISREG(status.st_mode):
+                    found[upper] = (Path(entry.path), status)
+        return found
 
 
 class MemorySource:

@@ -101,6 +101,10 @@ def gtable(dialect: str = "siemens") -> GTable:
     return GTable(groups=groups, group_of=group_of)
 
 
+@functools.cache
 def named_gcodes(dialect: str = "siemens") -> frozenset[str]:
-    """G functions written as names (``BRISK``, ``CIP``, ``TRANS``…), not ``G<n>``."""
+    """G functions written as names (``BRISK``, ``CIP``, ``TRANS``…), not ``G<n>``.
+
+    Made once per dialect (from the cached :func:`gtable`): the parser asks it for every name it reads.
+    """
     return frozenset(c for c in gtable(dialect).group_of if not re.fullmatch(r"G\d+", c))

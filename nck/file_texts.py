@@ -1,0 +1,50 @@
+"""Program texts kept by file identity, read from disk again only when the file changed.
+
+A subprogram or cycle called 2,000 times (a hole pattern with a modal ``CYCLE81``) was read,
+decoded and hashed on every call. :class:`FileTexts` keeps each text with the signature of the
+file it was read from — device, inode, size, modification and status-change times, as one
+``stat`` reports them — and returns the kept text while a new ``stat`` of the same path gives the
+same signature. Writing a file in place changes its times (and usually its size); replacing it
+(an atomic save) changes its inode; so the next call reads the new text.
+
+The limit is the file system's time stamp granularity: a rewrite of the same size that lands in
+the same time-stamp tick as the read before it (a few milliseconds at most on Linux) keeps
+the old text until the file changes again — a gap editors and ``nck.storage`` saves do not hit.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Callable
+
+TEXTS_KEPT = 64
+"""Texts kept per cache; the oldest half goes when it is full (a program calls few names)."""
+
+Signature = tuple[int, int, int, int, int]
+
+
+def signature(stat: os.stat_result) -> Signature:
+    """What identifies one version of a file: device, inode, size, mtime and ctime (ns)."""
+    return (stat.st_dev, stat.st_ino, stat.st_size, stat.st_mtime_ns, stat.st_ctime_ns)
+
+
+class FileTexts:
+    """Texts by path, each valid while its file's :func:`signature` stays the same."""
+
+    def __init__(self, limit: int = TEXTS_KEPT) -> None:
+        self.limit = limit
+        self._texts: dict[str, tuple[Signature, str]] = {}
+
+    def text(self, path: str, stat: os.stat_result, read: Callable[[], str]) -> str:
+        """The text of ``path`` whose ``stat`` the caller took just before: the kept one when the
+        file is unchanged, else ``read()`` (which may raise; nothing is kept then)."""
+        key = signature(stat)
+        kept = self._texts.get(path)
+        if kept is not None and kept[0] == key:
+            return kept[1]
+        text = read()
+        if len(self._texts) >= self.limit:
+            for old in list(self._texts)[: self.limit // 2]:
+                del self._texts[old]
+        self._texts[path] = (key, text)
+        return text

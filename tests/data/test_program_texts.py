@@ -1,0 +1,108 @@
+"""A called program's text is kept between calls and read again when its file changed.
+
+The program sources (a directory, the NC file system, the cycle folder) keep each text with its
+file's identity (nck.file_texts); these tests change the file between two look-ups — in place with
+the same size and another time stamp, with another size, replaced by a new file, removed, replaced
+by a link — and expect exactly what a fresh read gives. Time stamps are set with ``os.utime``
+(no sleeps).
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from nck.interp.interpreter import Interpreter
+from nck.interp.sources import ChainSource, DirectorySource
+from nck.machine import load_machine
+from nck.ncdata import NcData
+from nck.storage import NcFileSystem
+
+FIRST = "PROC SUB\nR1=1\nRET\n"
+SAME_SIZE = "PROC SUB\nR1=2\nRET\n"
+LONGER = "PROC SUB\nR1=33\nRET\n"
+
+
+def _rewrite_in_place(path: Path, text: str) -> None:
+    """Write ``text`` into the same file (same inode) and move its time stamps on by one second."""
+    before = path.stat()
+    with open(path, "r+", encoding="utf-8") as stream:
+        stream.write(text)
+        stream.truncate()
+    later = before.st_mtime_ns + 1_000_000_000
+    os.utime(path, ns=(later, later))
+
+
+def _directory_source(tmp_path: Path) -> tuple[DirectorySource, Path]:
+    (tmp_path / "SUB.SPF").write_text(FIRST)
+    return DirectorySource(tmp_path), tmp_path / "SUB.SPF"
+
+
+def _nc_file_system(tmp_path: Path) -> tuple[NcFileSystem, Path]:
+    fs = NcFileSystem(tmp_path / "nc")  # creates its folders MPF, SPF, WKS
+    path = tmp_path / "nc" / "SPF" / "SUB.SPF"  # changed behind the NC memory's back below
+    path.write_text(FIRST)
+    return fs, path
+
+
+@pytest.fixture(params=["directory", "nc file system"])
+def source(request, tmp_path):
+    """(program source, the file of SUB on disk)."""
+    return (_directory_source if request.param == "directory" else _nc_file_system)(tmp_path)
+
+
+def test_the_same_size_rewritten_in_place_is_read_again(source):
+    programs, path = source
+    assert programs.read_program("SUB")[1] == FIRST
+    _rewrite_in_place(path, SAME_SIZE)
+    assert programs.read_program("SUB")[1] == SAME_SIZE
+
+
+def test_a_longer_text_is_read_again(source):
+    programs, path = source
+    assert programs.read_program("SUB")[1] == FIRST
+    with open(path, "a", encoding="utf-8") as stream:
+        stream.write("M17\n")
+    assert programs.read_program("SUB")[1] == FIRST + "M17\n"
+
+
+def test_a_replaced_file_is_read_again(source):
+    programs, path = source
+    assert programs.read_program("SUB")[1] == FIRST
+    replacement = path.with_name("NEW.TMP")
+    replacement.write_text(LONGER)
+    os.replace(replacement, path)
+    assert programs.read_program("SUB")[1] == LONGER
+
+
+def test_a_removed_file_is_not_found(source):
+    programs, path = source
+    assert programs.read_program("SUB") is not None
+    path.unlink()
+    assert programs.read_program("SUB") is None
+
+
+def test_the_nc_memory_does_not_read_through_a_link_that_replaced_a_kept_program(tmp_path):
+    fs, path = _nc_file_system(tmp_path)
+    assert fs.read_program("SUB")[1] == FIRST
+    elsewhere = tmp_path / "ELSEWHERE.SPF"
+    elsewhere.write_text(SAME_SIZE)
+    path.unlink()
+    path.symlink_to(elsewhere)
+    assert fs.read_program("SUB") is None
+
+
+def test_a_subprogram_changed_between_two_calls_of_one_run_runs_its_new_text(tmp_path):
+    """One interpreter, one run: the second call of SUB runs the text saved after the first."""
+    programs, path = _directory_source(tmp_path)
+    interp = Interpreter(load_machine(None), ChainSource(programs), NcData())
+    interp.start_text("MAIN.MPF", "SUB\nR2=R1\nSUB\nM30\n")
+    while (interp.current_source().file, interp.current_source().line) != ("MAIN.MPF", 2):
+        interp.step()  # up to R2=R1, after the first call
+    assert interp.r(1) == 1.0
+    _rewrite_in_place(path, SAME_SIZE)
+    while not interp.finished:
+        interp.step()
+    assert (interp.r(2), interp.r(1)) == (1.0, 2.0)
