@@ -49,10 +49,10 @@ def N_(message: str) -> str:  # noqa: N802 - the gettext convention
     return message
 
 
-WORDED_UNITS = (N_("rev/min"), N_("rpm"), N_("mm/rev"), N_("rev/s²"))
-"""The units with an English word in them (machine data, JOG fields, the speed displays): the
-tables and displays draw every unit through :func:`_`, these are the ones the catalogue
-translates (U/min …)."""
+WORDED_UNITS = (N_("rev/min"), N_("rpm"), N_("mm/rev"), N_("rev/s²"), N_("deg"), N_("deg/min"), N_("bits"))
+"""The units with an English word in them (machine data, JOG fields, the speed displays, the
+service screens): the tables and displays draw every unit through :func:`_`, these are the ones
+the catalogue translates (U/min, Grad, Bit …)."""
 
 
 STOP_REASON_WORDS = (N_("single block"), N_("alarm"), N_("search target found"))
