@@ -32,6 +32,7 @@ from nck.geometry.chain import SUPPRESSION_CODES, frame_from_work_offset
 from nck.geometry.circles import Arc, CircleTolerance
 from nck.geometry.contour_aids import LineElement
 from nck.geometry.frames import Frame
+from nck.geometry.line_frame import LineFrame, line_frame
 from nck.geometry.path_state import GeometryState
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane, plane
 from nck.geometry.rounding_distance import rounding_distance_mm
@@ -80,10 +81,33 @@ def ends_in_exact_stop(words: Any, gcodes: Mapping[int, str]) -> bool:
     return gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9"
 
 
+ROUND_SCALE = 10.0 ** ROUND_DIGITS
+ROUND_FAST_LIMIT = 2.0 ** 43
+"""Below this, ``value · 10^9`` is a double whose rounding error is at most 2^-10 (half an ulp)."""
+ROUND_FAST_MARGIN = 0.49
+"""How far from the nearest integer ``value · 10^9`` may be for the integer to be the
+correctly rounded one: 0.49 plus the product's error stays below 0.5, away from any tie."""
+
+
 def round_position(value: float) -> float:
     """A position as the path builder keeps it: floating noise (sub-nanometre) and negative
-    zero rounded away (every machine and WCS end point goes through this)."""
-    return round(float(value), ROUND_DIGITS) + 0.0
+    zero rounded away (every machine and WCS end point goes through this).
+
+    ``round(value, 9) + 0.0``, in two steps where that is exact: Python rounds ``value`` to
+    the nearest multiple ``k · 10^-9`` (correctly, ties to even, through a decimal string) and
+    reads it back as the double nearest to ``k · 10^-9``. When ``value · 10^9`` is below
+    :data:`ROUND_FAST_LIMIT` and not within 0.01 of a tie, ``k`` is the nearest integer to the
+    computed product, and ``k / 10^9`` — two exact doubles, one correctly rounded division —
+    *is* the double nearest to ``k · 10^-9``. Otherwise (near a tie, huge, not finite)
+    Python's ``round`` does it (property-tested equal: tests/geometry/test_round_position.py).
+    """
+    value = float(value)
+    scaled = value * ROUND_SCALE
+    if -ROUND_FAST_LIMIT < scaled < ROUND_FAST_LIMIT:
+        nearest = round(scaled)
+        if -ROUND_FAST_MARGIN <= scaled - nearest <= ROUND_FAST_MARGIN:
+            return nearest / ROUND_SCALE + 0.0
+    return round(value, ROUND_DIGITS) + 0.0
 
 
 SHARED_GCODE_TABLES = 4
@@ -115,6 +139,7 @@ class PathBuilder:
         self._no_tool: Mapping[str, float] = {axis: 0.0 for axis in self.geo_axes}  # read only
         self._display_axes: dict[str | None, tuple[tuple[str, bool, bool], ...]] = {}  # by G group 29 code
         self._gcodes_copies: list[Mapping[int, str]] = []  # the motions' shared G-code tables (shared_gcodes)
+        self._line_frame_kept: tuple[Any, Any, LineFrame | None] = (None, None, None)
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -254,10 +279,10 @@ class PathBuilder:
         for axis, length, doubled in axes:
             value = values_mm.get(axis, 0.0)
             if not length:
-                out[axis] = round(float(value), ROUND_DIGITS) + 0.0
+                out[axis] = round_position(value)
                 continue
             value = float(value) / position_mm
-            out[axis] = round(value * 2.0 if doubled else value, ROUND_DIGITS) + 0.0
+            out[axis] = round_position(value * 2.0 if doubled else value)
         return out
 
     # ================================================================ tool
@@ -465,11 +490,11 @@ class PathBuilder:
         if rounding_distance_mm(kind, exact, gcodes, geo) > 0.0:
             return None  # G641 holds the line back for its corner
         transform = geo.frames.transform()
-        affine = transform.axis_affine()
-        if affine is None:
+        if transform.axis_affine() is None:
             return None
         geo_axes = self.geo_axes
-        for axis, (_value, mode) in words.axes.items():
+        programmed = words.axes
+        for axis, (_value, mode) in programmed.items():
             if axis not in geo_axes or mode in ROTARY_MODES:
                 return None
         end, _programmed = self._targets(words, modal, geo, units)
@@ -477,28 +502,29 @@ class PathBuilder:
         if not math.isfinite(stop[0] + stop[1] + stop[2]):
             return None  # the frame maps it with numpy's matrix product
         tool = self._tool_lengths(modal)
-        scales, offsets = affine
+        frame = self._line_frame(transform, tool)
+        assert frame is not None  # the frame maps every geometry axis on its own (checked above)
         start_mcs = modal.position_mcs
         end_mcs: dict[str, float] = {}
         kept: list[str] = []
-        for axis in self.path_axes:
-            if axis in geo_axes:
-                i = geo_axes.index(axis)
-                if axis in words.axes or axis not in start_mcs:
-                    end_mcs[axis] = round_position(machine_mm(stop[i], scales[i], offsets[i], tool.get(axis, 0.0)))
+        for axis, i, scale, offset, tool_mm in frame.axes:
+            if i >= 0:
+                if axis in programmed or axis not in start_mcs:
+                    end_mcs[axis] = round_position(machine_mm(stop[i], scale, offset, tool_mm))
                 else:
                     end_mcs[axis] = round_position(start_mcs[axis])
             elif axis in start_mcs:
                 end_mcs[axis] = round_position(start_mcs[axis])
             else:
-                factor, offset = transform.axial.get(axis, (1.0, 0.0))
-                bcs = factor * float(end[axis]) + offset if axis in end else 0.0
-                end_mcs[axis] = round_position(bcs + tool.get(axis, 0.0))
-            if axis not in words.axes:
+                bcs = scale * float(end[axis]) + offset if axis in end else 0.0
+                end_mcs[axis] = round_position(bcs + tool_mm)
+            if axis not in programmed:
                 kept.append(axis)
         position_wcs = self._display(end, gcodes, units)
         end_wcs = dict(position_wcs)
-        self._report_actual(end_wcs, end_mcs, kept, (scales, offsets), transform, tool, modal, units)
+        if kept:
+            self._report_actual(end_wcs, end_mcs, kept, (frame.scales, frame.offsets), transform, tool, modal,
+                                units)
         rapid = kind == "G0"
         motion = canon.Motion(
             kind=kind, source=words.source, plane=plane_code, end_wcs=end_wcs, end_mcs=end_mcs,
@@ -514,6 +540,15 @@ class PathBuilder:
         modal.position_wcs = position_wcs
         modal.position_mcs = dict(end_mcs)
         return motion
+
+    def _line_frame(self, transform: Transform, tool: Mapping[str, float]) -> LineFrame | None:
+        """:func:`line_frame` of ``transform`` and ``tool``, kept for the last pair (both are
+        immutable and stay the same objects while the frames and the tool stay)."""
+        kept_transform, kept_tool, frame = self._line_frame_kept
+        if kept_transform is not transform or kept_tool is not tool:
+            frame = line_frame(transform, tool, self.path_axes, self.geo_axes)
+            self._line_frame_kept = (transform, tool, frame)
+        return frame
 
     # ---------------------------------------------------------------- targets
     def _vec(self, point: Mapping[str, float]) -> tuple[float, float, float]:
