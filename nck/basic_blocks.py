@@ -51,22 +51,38 @@ CENTRE_WORDS = {"G17": {"X": "I", "Y": "J"}, "G18": {"Z": "K", "X": "I"}, "G19":
 STOP_WORDS = frozenset({"M0", "M00", "M1", "M01"})
 
 
-@dataclass
+PositionWord = tuple[str, float, float | None]
+"""An axis' end written when the display block is shown: (axis, end, the last end before it or
+None). Its word is the axis with the end's text, left out when the text equals the last end's
+(an end that differs below the display resolution shows nothing new)."""
+
+
+@dataclass(slots=True)
 class _DisplayBlock:
     """One display block while it is written: its source and its words."""
 
     source: Source
     seq: int
     label: str
-    motion_words: list[str] = field(default_factory=list)
+    motion_words: list[str | PositionWord] = field(default_factory=list)
     other_words: list[str] = field(default_factory=list)
     shown: BlockView | None = None  # the view, made again when a word was added
 
     def view(self) -> BlockView:
         if self.shown is None:
-            words = ([self.label] if self.label else []) + self.motion_words + self.other_words
+            words = ([self.label] if self.label else []) + [
+                word for word in map(_motion_word, self.motion_words) if word] + self.other_words
             self.shown = BlockView(self.source.file, self.source.line, " ".join(words))
         return self.shown
+
+
+def _motion_word(word: str | PositionWord) -> str:
+    """The text of a motion word ('' for a position whose text did not change)."""
+    if isinstance(word, str):
+        return word
+    axis, end, last = word
+    shown = _shown(end)
+    return "" if last is not None and _shown(last) == shown else f"{axis}{shown}"
 
 
 class BasicBlockLog:
@@ -78,16 +94,22 @@ class BasicBlockLog:
         self._seq = 0
         self._motion_code: str | None = None
         self._feed: float | None = None
-        self._positions: dict[str, tuple[float, str]] = {}  # per axis: the last end and its text
+        self._positions: dict[str, float] = {}  # per axis: the last end
 
     def taken(self, block: BlockResult) -> None:
         """A block taken for execution: a display block when it acts on the machine."""
-        words = [word for command in block.commands for word in _words_of(command)]
-        moves = any(isinstance(c, Motion) and c.source is block.source for c in block.commands)
+        source = block.source
+        words: list[str] = []
+        moves = False
+        for command in block.commands:
+            if isinstance(command, Motion):
+                moves = moves or command.source is source
+            else:
+                words += _words_of(command)
         if not words and not moves:
             return
-        label = "" if block.extras.get("display_off") or block.source.n is None else f"N{block.source.n}"
-        entry = _DisplayBlock(block.source, self._seq, label, other_words=words)
+        label = "" if block.extras.get("display_off") or source.n is None else f"N{source.n}"
+        entry = _DisplayBlock(source, self._seq, label, [], words)
         self._seq += 1
         if len(self._blocks) == self._blocks.maxlen:
             dropped = self._blocks.popleft()
@@ -113,12 +135,10 @@ class BasicBlockLog:
         for axis, value in motion.end_wcs.items():
             end = float(value)
             last = positions.get(axis)
-            if last is not None and last[0] == end:
+            if last is not None and last == end:
                 continue  # the same value: the same text
-            shown = _shown(end)
-            if last is None or shown != last[1]:
-                words.append(f"{axis}{shown}")
-            positions[axis] = (end, shown)
+            words.append((axis, end, last))  # its text when the block is shown (most never are)
+            positions[axis] = end
         centre_words = CENTRE_WORDS.get(motion.plane, {})
         for axis, value in (motion.center_wcs or {}).items():
             if axis in centre_words:
