@@ -66,7 +66,7 @@ from hmi.key_input import own_binding
 from hmi.key_settle import BindingsInPlace, wait_for_workers, wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
-from hmi.palette import SOFTKEY_PATH_SEPARATOR, Place, PlaceProvider, area_places
+from hmi.palette import SOFTKEY_PATH_SEPARATOR, PanelCommandPalette, Place, PlaceProvider, area_places
 from hmi.placeholder import PlaceholderScreen
 from hmi.serve import DEFAULT_MAX_SESSIONS, DEFAULT_PORT, serve
 from hmi.program_lines import ProgramLines
@@ -622,11 +622,11 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         if any(isinstance(screen, CommandPalette) for screen in self.screen_stack):
             return  # one is open already, perhaps under the key overview (F11) opened over it
         if self.use_command_palette:
-            self.push_screen(CommandPalette(id="--command-palette", placeholder=_("Search for commands…")))
+            self.push_screen(PanelCommandPalette(id="--command-palette", placeholder=_("Search for commands…")))
 
     def search_themes(self) -> None:
         """The palette's theme list (the Theme command), its search field in the panel's language."""
-        self.push_screen(CommandPalette(providers=[ThemeProvider], placeholder=_("Search for themes…")))
+        self.push_screen(PanelCommandPalette(providers=[ThemeProvider], placeholder=_("Search for themes…")))
 
     def get_system_commands(self, screen: Screen) -> Any:
         """The palette's system commands: theme, keys (the F11 help), screenshot, quit (Ctrl+Q's way)."""

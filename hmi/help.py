@@ -19,6 +19,7 @@ from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
 from hmi.i18n import N_, _, data_text
 from hmi.keymap import Keymap, display_key
+from hmi.palette import one_line
 from hmi.softkeys import SoftkeyMenu
 
 SCOPE_TITLES = {"op": N_("Operator panel"), "mcp": N_("Machine control panel"), "softkey": N_("Softkeys")}
@@ -28,7 +29,9 @@ AreaKey = tuple[str, str]
 
 
 def area_keys(screen: Screen) -> list[AreaKey]:
-    """The keys the screen and its focused widget bind themselves, one line per meaning.
+    """The keys the screen and its focused widget bind themselves, one line per meaning, the
+    meaning in the panel's language (the panel's own bindings and Textual's widgets'
+    descriptions, :mod:`hmi.widget_keys`, are in the catalogue).
 
     The app's bindings (the keymap) are left out: the keymap's section lists them.
     """
@@ -38,7 +41,7 @@ def area_keys(screen: Screen) -> list[AreaKey]:
             continue
         if "super" in key.split("+"):
             continue  # the Command key of a Mac keyboard: a terminal does not send it
-        keys_by_meaning.setdefault(active.binding.description, []).append(key)
+        keys_by_meaning.setdefault(one_line(_(active.binding.description)), []).append(key)
     return [(", ".join(display_key(key) for key in keys), meaning) for meaning, keys in keys_by_meaning.items()]
 
 

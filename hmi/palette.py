@@ -22,8 +22,9 @@ import re
 from dataclasses import dataclass
 from typing import Callable, Iterable, Protocol
 
+from rich.align import Align
 from rich.text import Text
-from textual.command import DiscoveryHit, Hit, Hits, Provider
+from textual.command import CommandList, CommandPalette, DiscoveryHit, Hit, Hits, Provider
 
 from hmi.i18n import _
 from hmi.keymap import Keymap
@@ -55,6 +56,23 @@ class Place:
     area_id: str
     softkey_id: str = ""
     english_path: str = ""
+
+
+class PanelCommandPalette(CommandPalette):
+    """Textual's command palette, its "No matches found" line in the panel's language.
+
+    Textual adds that line itself (an option with the palette's no-matches id) and then shows
+    the list; when the list is shown, this palette says the line again through the catalogue.
+    """
+
+    def watch__list_visible(self, visible: bool) -> None:
+        """The list is shown or hidden (Textual's own watcher has run): translate the no-matches line."""
+        if not visible:
+            return
+        command_list = self.query_one(CommandList)
+        no_matches = self._NO_MATCHES
+        if command_list.option_count == 1 and command_list.get_option_at_index(0).id == no_matches:
+            command_list.replace_option_prompt(no_matches, Align.center(Text(_("No matches found"), style="not bold")))
 
 
 WORD_BREAK = re.compile(r"-\n(?=[a-zäöüß])")

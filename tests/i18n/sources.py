@@ -45,6 +45,7 @@ def _name(node: ast.expr) -> str:
 TABLE_TEXTS: dict[str, tuple[tuple[int, str], ...]] = {
     "Column": ((0, "title"),), "DataTable": ((0, "title"), (3, "note")),
     "JogForm": ((0, "title"), (2, "hint")), "FieldSpec": ((1, "label"),),
+    "Binding": ((2, "description"),),
 }
 """The data tables' and the JOG windows' texts (hmi.widgets.data_table and
 screens.machine_jog_form draw them translated): position and keyword."""
