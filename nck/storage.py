@@ -30,7 +30,7 @@ from stat import S_ISREG
 from typing import Callable, Iterable
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
-from nck.file_texts import FileTexts
+from nck.file_texts import FileTexts, FolderNames
 from nck.os_refusals import os_refusal
 from nck.refused import Refused
 from nck.regular_files import (
@@ -167,6 +167,7 @@ class NcFileSystem:
             remove_stale_temp_files(self.root / directory)
         self._in_use: set[str] = set()
         self._texts = FileTexts()  # program texts for the interpreter's calls, kept while unchanged
+        self._folders = FolderNames()  # and the folders' names for their look-ups
         #: Returns the paths or file names of the programs in use (selected/running).
         self.in_use_check: Callable[[], Iterable[str]] = lambda: self._in_use
 
@@ -199,18 +200,23 @@ class NcFileSystem:
                 raise StorageError("storage_too_many_levels", path=path)
         return "/".join(parts)
 
-    def _disk(self, canonical: str) -> Path:
+    def _disk(self, canonical: str, folders: FolderNames | None = None) -> Path:
         """The file on disk for a canonical path (matching names case-insensitively).
 
         Raises StorageError ``odd`` when a folder on the way is not a folder of its
         own (a link to one, a pipe, a file): nothing is read or written through it.
+        With ``folders`` (look-ups only) a folder's names come from its kept listing.
         """
         current = self.root
         for part in canonical.split("/"):
             if current != self.root and os.path.lexists(current) and not is_plain_directory(current):
                 raise StorageError("storage_not_nc_folder", path=current.name)
             candidate = current / part
-            if not candidate.exists() and current.is_dir():
+            if folders is not None:  # the listing says what exists (OSError: current is no folder)
+                same = folders.named(str(current)).get(part, ())
+                if same and str(candidate) not in same:
+                    candidate = Path(same[0])
+            elif not candidate.exists() and current.is_dir():
                 for existing in current.iterdir():
                     if existing.name.upper() == part:
                         candidate = existing
@@ -310,7 +316,7 @@ class NcFileSystem:
         """The text of the program at a canonical path for the interpreter (undecodable bytes
         replaced), None when no regular file is there; read again only when the file changed
         (:class:`nck.file_texts.FileTexts`). Raises StorageError (odd folder) or OSError."""
-        disk = self._disk(canonical)
+        disk = self._disk(canonical, self._folders)
         try:
             status = os.lstat(disk)
         except FileNotFoundError:

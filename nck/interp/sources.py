@@ -11,7 +11,7 @@ import os
 from pathlib import Path
 from stat import S_ISREG
 
-from nck.file_texts import FileTexts
+from nck.file_texts import FileTexts, FolderNames
 from nck.regular_files import read_regular_bytes
 
 EXTENSIONS = (".SPF", ".MPF")
@@ -37,13 +37,14 @@ def read_text_file(path: Path) -> str:
 class DirectorySource:
     """Programs in one or more directories (searched in order).
 
-    The directories are listed on every look-up (a program added or removed is seen at once);
-    a found program's text is read again only when its file changed (:class:`FileTexts`).
+    A directory is listed again only when it changed (:class:`FolderNames`), a found program's
+    text read again only when its file changed (:class:`FileTexts`).
     """
 
     def __init__(self, *directories: Path | str) -> None:
         self.directories = [Path(d) for d in directories]
         self.texts = FileTexts()
+        self.folders = FolderNames()
 
     def _candidates(self, name: str) -> list[str]:
         upper = name.upper()
@@ -68,22 +69,20 @@ class DirectorySource:
                         return None
         return None
 
-    @staticmethod
-    def _files(directory: Path, wanted: list[str]) -> dict[str, tuple[Path, os.stat_result]]:
+    def _files(self, directory: Path, wanted: list[str]) -> dict[str, tuple[Path, os.stat_result]]:
         """The regular files (or links to one) of ``directory`` named as one of ``wanted`` (in
-        capitals), with their ``stat``; only those names are tested (one stat, not one per entry)."""
+        capitals), with their ``stat``; of several names that differ only in case the last
+        listed. Only the wanted names are tested (one stat each, not one per entry)."""
+        named = self.folders.named(str(directory))
         found: dict[str, tuple[Path, os.stat_result]] = {}
-        with os.scandir(directory) as scan:
-            for entry in scan:
-                upper = entry.name.upper()
-                if upper not in wanted:
-                    continue
+        for upper in wanted:
+            for path in named.get(upper, ()):
                 try:
-                    status = entry.stat()  # through a link, as read_text_file reads
+                    status = os.stat(path)  # through a link, as read_text_file reads
                 except OSError:
                     continue
                 if S_ISREG(status.st_mode):
-                    found[upper] = (Path(entry.path), status)
+                    found[upper] = (Path(path), status)
         return found
 
 

@@ -106,3 +106,35 @@ def test_a_subprogram_changed_between_two_calls_of_one_run_runs_its_new_text(tmp
     while not interp.finished:
         interp.step()
     assert (interp.r(2), interp.r(1)) == (1.0, 2.0)
+
+
+def _a_later_tick(folder: Path) -> None:
+    """Move the folder's time stamps on by one second: what a change in a later time-stamp tick
+    looks like (a change within the tick of the listing before it is the documented limit)."""
+    later = folder.stat().st_mtime_ns + 1_000_000_000
+    os.utime(folder, ns=(later, later))
+
+
+def test_a_program_added_after_a_look_up_that_missed_it_is_found(source):
+    programs, path = source
+    assert programs.read_program("ADDED") is None
+    path.with_name("ADDED.SPF").write_text(LONGER)
+    _a_later_tick(path.parent)
+    assert programs.read_program("ADDED") == ("ADDED.SPF", LONGER)
+
+
+def test_a_renamed_program_is_found_under_its_new_name_only(source):
+    programs, path = source
+    assert programs.read_program("SUB") is not None
+    path.rename(path.with_name("OTHER.SPF"))
+    _a_later_tick(path.parent)
+    assert programs.read_program("SUB") is None
+    assert programs.read_program("OTHER") == ("OTHER.SPF", FIRST)
+
+
+def test_a_file_named_in_lower_case_is_found(source):
+    programs, path = source
+    assert programs.read_program("LOWER") is None
+    path.with_name("lower.spf").write_text(LONGER)
+    _a_later_tick(path.parent)
+    assert programs.read_program("LOWER")[1] == LONGER
