@@ -125,8 +125,17 @@ class ExerciseRun:
         self.report = self.progress.report(self.exercise.title)
         name = f"{self.exercise.exercise_id}-{datetime.now():%Y%m%d-%H%M%S}"
         self.report_paths = queries.save_report(self.report_dir, name, self.report, self.progress.events,
-                                                self.exercise.exercise_id)
+                                                self.exercise.exercise_id, self.report_in_panel_language())
         return self.report_paths
+
+    def report_in_panel_language(self) -> str:
+        """The text of the report (:attr:`report`) in the panel's language: title, steps and
+        every sentence translated (the JSON file keeps the English)."""
+        exercise, report = self.exercise, self.report or {}
+        shown = dict(report, title=exercise_text(exercise, "title"),
+                     steps=[dict(step, text=step_text(exercise, index, "text"))
+                            for index, step in enumerate(report.get("steps", []))])
+        return queries.report_text(shown, reason_text)
 
     def close(self) -> None:
         """Give the private data directory free and remove it."""
@@ -173,7 +182,7 @@ class ClassroomHost:
             return _("Exercise '{title}' is still running: end it first").format(
                 title=exercise_text(self.exercise_run.exercise, "title"))
         if exercise.waits_for:
-            return _("This exercise waits for {what}").format(what=exercise.waits_for)
+            return _("This exercise waits for {what}").format(what=exercise_text(exercise, "waits_for"))
         unsaved = self._unsaved_work()
         if unsaved:
             return _("Not started: {unsaved} (save or close it first)").format(unsaved=unsaved)

@@ -71,7 +71,8 @@ def data_text(kind: str, key: object, field: str, english: str) -> str:
 
 
 def exercise_text(exercise: Any, field: str) -> str:
-    """The ``title``, ``level`` or ``summary`` of a guided exercise (``nck.exercise.Exercise``) in the language shown now."""
+    """The ``title``, ``level``, ``summary`` or ``waits_for`` (what it needs that is not built
+    yet) of a guided exercise (``nck.exercise.Exercise``) in the language shown now."""
     return data_text("exercise", exercise.exercise_id, field, getattr(exercise, field))
 
 

@@ -367,12 +367,12 @@ class ExerciseProgress:
         state = self.state or {}
         finals = []
         for check in self.finals:
-            ok, why = evaluate(check, state, self.events) if state else (False, "nothing happened")
+            ok, why = evaluate(check, state, self.events) if state else (False, Reason("nothing happened"))
             finals.append({"check": check["kind"], "passed": ok, "why_not": "" if ok else why})
         start = self.started_s or 0.0
         steps = [{"step": i + 1, "text": getattr(s, "text", ""), "done": r.done_s is not None,
                   "done_after_s": None if r.done_s is None else round(r.done_s - start, 1),
-                  "why_not": [] if r.done_s is not None else (r.why_not or ["not reached"])}
+                  "why_not": [] if r.done_s is not None else (r.why_not or [Reason("not reached")])}
                  for i, (s, r) in enumerate(zip(self.steps, self.results))]
         points = sum(1 for s in steps if s["done"]) + sum(1 for f in finals if f["passed"])
         total = len(steps) + len(finals)
@@ -381,19 +381,25 @@ class ExerciseProgress:
                 "keys": sum(1 for e in self.events if e["kind"] == "key")}
 
 
-def report_text(report: Mapping[str, Any]) -> str:
-    """The report as the trainee and the instructor read it."""
-    lines = [f"Exercise: {report['title']}", f"Score: {report['score']}/100   time: {report['time_s']:.1f} s"
-             f"   keys: {report['keys']}", ""]
+def report_text(report: Mapping[str, Any], say: Callable[[str], str] = str) -> str:
+    """The report as the trainee and the instructor read it. Each sentence is a :class:`Phrase`
+    that ``say`` words (a panel passes its translation, which says the reasons' phrases in its
+    language too; the default keeps the English); ``report`` may hold a panel's texts of the
+    title and the steps."""
+    lines = [say(Phrase("Exercise: {title}", title=report["title"])),
+             say(Phrase("Score: {score}/100   time: {seconds} s   keys: {keys}", score=report["score"],
+                        seconds=f"{report['time_s']:.1f}", keys=report["keys"])), ""]
     for step in report["steps"]:
         if step["done"]:
-            lines.append(f"[x] {step['step']}. {step['text']}  (done after {step['done_after_s']:.1f} s)")
+            lines.append(f"[x] {step['step']}. {step['text']}  "
+                         + say(Phrase("(done after {seconds} s)", seconds=f"{step['done_after_s']:.1f}")))
         else:
             lines.append(f"[ ] {step['step']}. {step['text']}")
-            lines.extend(f"      not done: {why}" for why in step["why_not"])
+            lines.extend("      " + say(Phrase("not done: {why}", why=why)) for why in step["why_not"])
     for final in report["final_checks"]:
         mark = "[x]" if final["passed"] else "[ ]"
-        lines.append(f"{mark} at the end: {final['check']}" + ("" if final["passed"] else f" — {final['why_not']}"))
+        lines.append(f"{mark} " + say(Phrase("at the end: {check}", check=final["check"]))
+                     + ("" if final["passed"] else f" — {say(final['why_not'])}"))
     return "\n".join(lines) + "\n"
 
 

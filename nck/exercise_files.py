@@ -18,8 +18,9 @@ from nck.exercise_checks import report_text
 
 
 def save_report(folder: Path, name: str, report: Mapping[str, Any], events: list[dict[str, Any]],
-                exercise_id: str) -> tuple[Path, Path]:
-    """Write ``<name>.txt`` (the readable report) and ``<name>.json`` (report and recording).
+                exercise_id: str, text: str | None = None) -> tuple[Path, Path]:
+    """Write ``<name>.txt`` (the readable report: ``text``, a panel's wording of it, else
+    :func:`report_text` in English) and ``<name>.json`` (report and recording, in English).
 
     Several panels may write into one folder (browser sessions of a class): a name already
     taken gets ``-2``, ``-3`` … (the text file is claimed first, so two panels ending the same
@@ -28,7 +29,7 @@ def save_report(folder: Path, name: str, report: Mapping[str, Any], events: list
     folder.mkdir(parents=True, exist_ok=True)
     text_path = _claimed(folder, name)
     json_path = text_path.with_suffix(".json")
-    atomic_write_text(text_path, report_text(report))
+    atomic_write_text(text_path, report_text(report) if text is None else text)
     atomic_write_text(json_path, json.dumps({"exercise": exercise_id, "report": report, "events": events},
                                             indent=1) + "\n")
     return text_path, json_path

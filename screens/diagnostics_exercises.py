@@ -27,7 +27,7 @@ def exercises_text(exercises: list[Any], selected: int, running: str | None, exa
         level = f"[{exercise_text(exercise, 'level')}]" if exercise.level else ""
         line = f" {mark} {index + 1:2d}  {exercise_text(exercise, 'title'):<50} {level}"
         if exercise.waits_for:
-            line += "  (waits)"
+            line += "  " + _("(waits)")
         text.append(line + "\n", style="reverse" if index == selected else "")
     chosen = exercises[selected]
     text.append("\n")
@@ -35,5 +35,5 @@ def exercises_text(exercises: list[Any], selected: int, running: str | None, exa
     if chosen.exam and exam_note:
         text.append(" " + _("Exam: no hints are shown.") + "\n")
     if chosen.waits_for:
-        text.append(f" Waits for {chosen.waits_for}.\n", style="italic")
+        text.append(" " + _("Waits for {what}.").format(what=exercise_text(chosen, "waits_for")) + "\n", style="italic")
     return text

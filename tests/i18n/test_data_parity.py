@@ -56,7 +56,7 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     sketches = read_table(data_path("cycles", "cycles.toml"))["sketches"]
     entries["cycle_sketch"] = {name: {"text": text} for name, text in sketches.items()}
     exercises = load_exercises()
-    entries["exercise"] = {e.exercise_id: {"title": e.title, **{name: getattr(e, name) for name in ("level", "summary") if getattr(e, name)}}
+    entries["exercise"] = {e.exercise_id: {"title": e.title, **{name: getattr(e, name) for name in ("level", "summary", "waits_for") if getattr(e, name)}}
                            for e in exercises}
     entries["exercise_step"] = {f"{e.exercise_id}.{number}": {"text": step.text, **({"hint": step.hint} if step.hint else {})}
                                 for e in exercises for number, step in enumerate(e.steps, 1)}

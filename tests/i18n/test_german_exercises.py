@@ -36,3 +36,38 @@ async def test_exercise_list_and_side_window_in_german(tmp_path: Path) -> None:
         await burst(pilot, END)
         assert app.exercise_run is None
         assert app.hint.startswith("Übung beendet, Bewertung ")
+
+
+async def test_the_report_of_a_german_panel_is_german(tmp_path: Path) -> None:
+    """End exercise on a German panel: the report file says title, steps, score line and the
+    reasons in German; the JSON beside it keeps the English (replays and the command line)."""
+    app = make_app(data_dir=str(tmp_path / "trainee"), realtime=False, lang="de")
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, *OPEN_LIST)
+        await burst(pilot, START)
+        await burst(pilot, END)
+        reports = sorted((tmp_path / "trainee" / "exercise_reports").glob("*.txt"))
+    assert len(reports) == 1
+    lines = reports[0].read_text(encoding="utf-8").splitlines()
+    assert lines[0] == "Übung: Einschalten: Achsen referenzieren"
+    assert lines[1].startswith("Bewertung: 67/100   Zeit: ") and "   Tasten: " in lines[1]
+    assert lines[3].startswith("[x] 1. ") and "(erledigt nach " in lines[3]
+    assert lines[4] == "[ ] 2. Jede Achse mit REF POINT referenzieren."
+    assert lines[5] == "      nicht erledigt: Achsen nicht referenziert: X, Y, Z"
+    assert lines[6] == "[x] am Ende: no_alarm_came"  # steps 1 and the final check of 3: 67 points
+    recorded = reports[0].with_suffix(".json").read_text(encoding="utf-8")
+    assert '"title": "Power on: reference the axes"' in recorded and "axes not referenced: X, Y, Z" in recorded
+
+
+def test_an_exercise_that_waits_says_so_in_german(german: None) -> None:
+    """An exercise that needs a feature not built yet (``waits_for``): the list marks it and
+    says what it waits for in German; the command line keeps the English (nck exercise list)."""
+    from dataclasses import replace
+
+    from nck.exercise import load_exercises
+    from screens.diagnostics_exercises import exercises_text
+
+    waiting = replace(load_exercises()[0], waits_for="the tool magazine")
+    shown = exercises_text([waiting], 0, None).plain
+    assert "(wartet)" in shown and "Wartet auf the tool magazine." in shown
+    assert "waits" not in shown.lower()
