@@ -66,7 +66,7 @@ from hmi.key_input import own_binding
 from hmi.key_settle import BindingsInPlace, wait_for_workers, wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
-from hmi.palette import SOFTKEY_PATH_SEPARATOR, PanelCommandPalette, Place, PlaceProvider, area_places
+from hmi.palette import SOFTKEY_PATH_SEPARATOR, PanelCommandPalette, Place, PlaceProvider, area_places, one_line
 from hmi.placeholder import PlaceholderScreen
 from hmi.serve import DEFAULT_MAX_SESSIONS, DEFAULT_PORT, serve
 from hmi.program_lines import ProgramLines
@@ -708,7 +708,8 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         area = self.area_screen
         menu = area.current_menu() if area is not None else SoftkeyMenu.of()
         own_keys = area_keys(area) if area is not None and area is self.screen else []
-        title = _(area.AREA_TITLE).capitalize() if area is not None else ""
+        label = next((shown.menu_label for shown in AREAS if area is not None and shown.id == area.AREA_ID), "")
+        title = one_line(_(label))  # the area's name as its softkey says it (Programm-Manager)
         self.push_screen(HelpScreen(self.keymap, menu, own_keys, title))
 
     def action_alarm_cancel(self) -> None:

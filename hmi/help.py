@@ -57,8 +57,7 @@ def help_table(keymap: Keymap, menu: SoftkeyMenu, own_keys: list[AreaKey] | None
     for prefix, bar, fkey in (("h", menu.horizontal, "F"), ("v", menu.vertical, "Shift+F")):
         for index, softkey in enumerate(bar, start=1):
             if softkey is not None:
-                table.add_row(f"{fkey}{index}", f"{prefix.upper()}SK{index}",
-                              _(softkey.label).replace("\n", " "))
+                table.add_row(f"{fkey}{index}", f"{prefix.upper()}SK{index}", one_line(_(softkey.label)))
     if own_keys:
         table.add_row("", "", "")
         heading = (_("Keys of {area}").format(area=area_title) if area_title else _("Keys of this area"))

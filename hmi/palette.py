@@ -80,8 +80,9 @@ WORD_BREAK = re.compile(r"-\n(?=[a-zäöüß])")
 
 
 def one_line(label: str) -> str:
-    """A softkey label on one line: ``Block\nsearch`` → ``Block search``, ``Sub-\nprograms`` → ``Subprograms``."""
-    return " ".join(WORD_BREAK.sub("", label).split())
+    """A softkey label on one line: ``Block\nsearch`` → ``Block search``, ``Sub-\nprograms`` →
+    ``Subprograms``, ``Programm-\nManager`` → ``Programm-Manager`` (a compound keeps its hyphen)."""
+    return " ".join(WORD_BREAK.sub("", label).replace("-\n", "-").split())
 
 
 SubLevel = Callable[[Softkey], SoftkeyMenu | None]

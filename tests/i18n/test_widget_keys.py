@@ -75,3 +75,22 @@ async def test_the_palette_says_no_matches_in_german(german: None, tmp_path: Pat
         shown = Console(width=60, record=True, file=io.StringIO())
         shown.print(command_list.get_option_at_index(0).prompt)
         assert shown.export_text().strip() == "Keine Treffer"
+
+
+async def test_the_help_joins_german_softkey_labels_and_names_the_area(tmp_path: Path) -> None:
+    """F11 in German: a label broken inside a word reads whole (Hilfs-/funktionen ->
+    Hilfsfunktionen), and the area's keys are headed with its name (Programm-Manager)."""
+    from hmi.app import make_app
+    from tests.burst import burst
+
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False, lang="de")
+    try:
+        async with app.run_test(size=SIZE) as pilot:
+            await burst(pilot, "alt+m", "f11")
+            machine = help_text(app)
+            await burst(pilot, "f11", "alt+n", "f11")
+            manager = help_text(app)
+    finally:
+        app.nc_session.quit()
+    assert "Hilfsfunktionen" in machine and "Programmbeeinfl." in machine and "Hilfs- " not in machine
+    assert "Tasten von Programm-Manager" in manager
