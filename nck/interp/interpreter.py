@@ -58,7 +58,7 @@ from nck.interp.motion_builder import MotionBuilder
 from nck.interp.plain_run import plan
 from nck.interp.simple_step import SimpleStep
 from nck.interp.program import load_program
-from nck.lang.values import convert, to_number
+from nck.lang.values import Cell, convert, to_number
 from nck.lang import ast
 from nck.lang.dialect import SIEMENS, Dialect
 from nck.lang.gcodes import gtable
@@ -291,9 +291,12 @@ class Interpreter:
         line = frame.program.lines[frame.pc]
         if line.block is None:
             return False
-        if line.touches_modal is None:
-            line.touches_modal = _touches_modal(line.block)
-        return line.touches_modal
+        touches = line.touches_modal
+        if touches is None:
+            touches = line.touches_modal = _touches_modal(line.block)
+        if type(touches) is tuple:  # assignments to names: safe when each is a variable (journaled)
+            return not all(type(self.lookup(name)) is Cell for name in touches)
+        return bool(touches)
 
     def _rollback(self, saved: tuple) -> None:
         frame_list, frames, modal, finished, message, skip_run = saved
@@ -607,16 +610,23 @@ def _frame_copy(frame: Frame) -> Frame:
     return saved
 
 
-def _touches_modal(block: ast.Block) -> bool:
-    """True if a block may change the modal state (machine words, builtins, addresses)."""
+def _touches_modal(block: ast.Block) -> bool | tuple[str, ...]:
+    """True if a block may change the modal state (machine words, builtins, addresses); the
+    names a block assigns to when only those assignments may (``NAME=…`` is an address word or
+    system variable unless NAME is a variable: decided when the block runs); else False."""
+    names: list[str] = []
     for stmt in block.statements:
         if isinstance(stmt, _MODAL_SAFE):
             continue
         if isinstance(stmt, ast.Assign) and isinstance(stmt.target, (ast.RParam, ast.Index)) \
                 and not (isinstance(stmt.target, ast.Index) and stmt.target.name == "AX"):
             continue
+        if isinstance(stmt, ast.Assign) and isinstance(stmt.target, ast.Name) \
+                and not (isinstance(stmt.value, ast.Func) and stmt.value.name in ("SET", "REP")):
+            names.append(stmt.target.name)
+            continue
         return True
-    return False
+    return tuple(names) if names else False
 
 
 def _clone(alarm: NcAlarmError) -> NcAlarmError:

@@ -41,7 +41,7 @@ class Line:
     text: str
     block: ast.Block | None
     error: NcAlarmError | None = None
-    touches_modal: bool | None = None  # cache for the interpreter's block snapshot
+    touches_modal: bool | tuple[str, ...] | None = None  # cache for the interpreter's block snapshot
     main_run_read: bool | None = None  # cache: the block reads $A…/$V… (preprocessing stop)
 
 
