@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Mapping, Sequence
 
 from nck.number_text import fixed
+from nck.refused import Refused
 
 MAX_SIGNALS = 4
 TRIGGERS = ("now", "nc_start")
@@ -41,8 +42,9 @@ AXIS_QUANTITIES: dict[str, str] = {
 CHANNEL_SIGNALS: dict[str, str] = {"feed_override": "%", "spindle_override": "%"}
 
 
-class TraceError(ValueError):
-    """A trace setting that cannot be used (unknown signal, too many, bad duration)."""
+class TraceError(Refused, ValueError):
+    """A trace setting that cannot be used (unknown signal, too many, bad duration): a keyed
+    refusal (``trace_*`` in ``data/refusals.toml``) that a panel says in its language."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -88,17 +90,17 @@ def csv_column(signal: str) -> str:
 def validate(settings: TraceSettings, machine: Any) -> None:
     """Raise :class:`TraceError` when ``settings`` cannot be recorded on ``machine``."""
     if not settings.signals:
-        raise TraceError("choose at least one signal")
+        raise TraceError("trace_no_signal")
     if len(settings.signals) > MAX_SIGNALS:
-        raise TraceError(f"at most {MAX_SIGNALS} signals can be traced at once")
+        raise TraceError("trace_too_many_signals", max=MAX_SIGNALS)
     known = set(available_signals(machine))
     for signal in settings.signals:
         if signal not in known:
-            raise TraceError(f"unknown trace signal {signal}")
+            raise TraceError("trace_unknown_signal", signal=signal)
     if settings.trigger not in TRIGGERS:
-        raise TraceError(f"unknown trigger {settings.trigger} (now or nc_start)")
+        raise TraceError("trace_unknown_trigger", trigger=settings.trigger)
     if not settings.duration_s > 0:
-        raise TraceError("the duration must be more than 0 s")
+        raise TraceError("trace_duration")
 
 
 def _reader(signal: str) -> Callable[[Any, dict[str, Any]], float]:

@@ -400,7 +400,7 @@ class DiagnosticsScreen(AreaBase):
             try:
                 self.trace.start(self.hmi.bridge.attach_trace)
             except TraceError as exc:
-                self.show_hint(f"Trace: {exc}")
+                self.show_hint(_("Trace: {reason}").format(reason=error_text(exc)))
                 return
             self.query_one(TracePlot).cursor = 0
         self._refresh_view()

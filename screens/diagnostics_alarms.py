@@ -176,7 +176,7 @@ def parse_filter(typed: str) -> LogFilter:
     """``10000-19999``, ``10720``, ``-20000``, ``limit``, or ``10000-19999 limit``.
 
     A leading number or range limits the numbers; the rest is a text to find.
-    Raises ValueError for a range whose ends are reversed.
+    Raises ValueError for a range whose ends are reversed (its text in the panel's language).
     """
     words = typed.strip().split(maxsplit=1)
     if not words:
@@ -191,7 +191,7 @@ def parse_filter(typed: str) -> LogFilter:
         high = int(tail) if tail else (None if dash else low)
         rest = words[1] if len(words) > 1 else ""
         if low is not None and high is not None and low > high:
-            raise ValueError(f"number range {first}: the first number must not exceed the second")
+            raise ValueError(_("number range {range}: the first number must not exceed the second").format(range=first))
     return LogFilter(low, high, rest.strip())
 
 

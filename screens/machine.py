@@ -324,7 +324,7 @@ class MachineScreen(AreaBase):
         """Start the block search of the chosen type to the target typed in the search field."""
         target = self.query_one("#search-input", Input).value.strip()
         if not target:
-            self.show_hint("Enter a block number or text to search for")
+            self.show_hint(_("Enter a block number or text to search for"))
             return
         if isinstance(self.submit(cmd.StartBlockSearch(target, self.search_type)), Accepted):
             self.view = None

@@ -1,0 +1,29 @@
+"""Messages of the Diagnostics and Machine areas that were English on a German panel (issue 27,
+found walking the panel): the trace's refusals of its settings, the alarm log filter's reversed
+range, the block search's empty target."""
+
+from __future__ import annotations
+
+import pytest
+
+from hmi.i18n import _, error_text
+from nck import TraceError
+from nck.trace import TraceSettings, validate
+from screens.diagnostics_alarms import parse_filter
+
+
+def test_a_trace_setting_is_refused_in_german(german: None) -> None:
+    with pytest.raises(TraceError) as refused:
+        validate(TraceSettings(signals=(), trigger="now", duration_s=1.0), machine=None)
+    assert str(refused.value) == "choose at least one signal"  # the command line's English
+    assert error_text(refused.value) == "mindestens ein Signal wählen"
+    assert error_text(TraceError("trace_duration")) == "die Dauer muss größer als 0 s sein"
+
+
+def test_a_reversed_number_range_of_the_alarm_log_filter_is_refused_in_german(german: None) -> None:
+    with pytest.raises(ValueError, match="^Nummernbereich 20-10: die erste Nummer darf nicht größer"):
+        parse_filter("20-10")
+
+
+def test_the_block_search_asks_for_its_target_in_german(german: None) -> None:
+    assert _("Enter a block number or text to search for") == "Satznummer oder Suchtext eingeben"
