@@ -5,10 +5,10 @@ A *simple* motion line (:data:`nck.lang.plain.SIMPLE_LINE`: N, G0–G3, G90/G91,
 ``CR=``, F, a comment) is what CAM posts write for almost every block. Its words are read as
 the parser reads them (:func:`nck.lang.plain.simple_words`) and turned once into a
 :class:`MotionPlan` (its G codes by group, axis values and other words, already converted),
-cached per interpreter by line text (:class:`SimpleStep`); each execution hands the plan's words
-to the general motion builder — the same G-code table, feed, path geometry (lines, arcs with
-I/J/K or ``CR=``, the 14040 end-point check, planes, frames, tool offsets) and canonical motions
-as a block of the general path. What the fast step leaves out is only what such a block cannot need: the
+kept per interpreter by line text once the line comes again (:class:`SimpleStep`); each
+execution hands the plan's words to the general motion builder — the same G-code table, feed,
+path geometry (lines, arcs with I/J/K or ``CR=``, the 14040 end-point check, planes, frames,
+tool offsets) and canonical motions as a block of the general path. What the fast step leaves out is only what such a block cannot need: the
 evaluation of expressions, control flow, calls, and the full snapshot of the run state.
 
 Instead of the snapshot the step saves the fields of the modal and the geometry state that
@@ -99,19 +99,28 @@ class SimpleStep:
 
     def __init__(self) -> None:
         self._plans: dict[str, MotionPlan | None] = {}
+        self._seen: dict[str, None] = {}  # lines planned once and not kept (yet)
         self._table: GTable | None = None
         self._path_axes: tuple[str, ...] = ()
 
     def plan(self, interp: InterpreterHost, text: str) -> MotionPlan | None:
-        """The plan of the line ``text`` (None: not one the fast step takes)."""
+        """The plan of the line ``text`` (None: not one the fast step takes).
+
+        A plan is kept from the second time its line comes (a loop's or a subprogram's line):
+        the lines of a CAM program come once each, and keeping their plans (a few containers
+        each, alive for thousands of blocks) only fed the garbage collector. The text alone is
+        remembered after the first time (a string: nothing for the collector to walk)."""
         table, path_axes = interp.table, interp.builder.path.path_axes
         if table is not self._table or path_axes != self._path_axes:
-            self._plans, self._table, self._path_axes = {}, table, path_axes
+            self._plans, self._seen, self._table, self._path_axes = {}, {}, table, path_axes
         plans = self._plans
         if text in plans:
             return plans[text]
         found = motion_plan(text, table, path_axes)
-        remember_bounded(plans, text, found, PLANS_KEPT)
+        if text in self._seen:
+            remember_bounded(plans, text, found, PLANS_KEPT)
+        else:
+            remember_bounded(self._seen, text, None, PLANS_KEPT)
         return found
 
     def step(self, interp: InterpreterHost) -> BlockResult | None:
