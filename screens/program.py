@@ -124,8 +124,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
                 yield ToolpathView(id="prog-toolpath")
                 yield StockView(id="prog-stock")
             with Horizontal(id="prog-search"):
-                yield Input(placeholder="search", id="prog-find")
-                yield Input(placeholder="replace with", id="prog-replace")
+                yield Input(placeholder=_("search"), id="prog-find")
+                yield Input(placeholder=_("replace with"), id="prog-replace")
             yield Static("", id="prog-message", markup=False)
 
     @property

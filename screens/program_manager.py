@@ -84,7 +84,7 @@ class PromptDialog(AreaDialog[str | None]):
         with Vertical(id="prompt-box"):
             yield Static(self._title, id="prompt-title", markup=False)
             yield Input(self._value, id="prompt-input")
-            yield Static(self._hint or "Enter confirm   F10 cancel", id="prompt-keys", markup=False)
+            yield Static(self._hint or _("Enter confirm   F10 cancel"), id="prompt-keys", markup=False)
 
     def on_mount(self) -> None:
         """Focus the field."""

@@ -72,7 +72,10 @@ async def test_export_and_new_say_the_failure_in_german(german: None, tmp_path: 
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("alt+n")
         await pilot.pause()
-        await pilot.press("shift+f2", "ctrl+u", *"stick/DEMO.MPF", "enter")  # Export
+        await pilot.press("shift+f2")  # Export: its prompt's keys in German too
+        await pilot.pause()
+        assert str(app.screen.query_one("#prompt-keys").render()) == "Enter bestätigen   F10 abbrechen"
+        await pilot.press("ctrl+u", *"stick/DEMO.MPF", "enter")
         await pilot.pause()
         line = str(app.screen.query_one("#dialog-line").render())
         assert line.strip() == "Exportieren: stick/DEMO.MPF: schreibgeschütztes Dateisystem"

@@ -47,6 +47,8 @@ async def test_the_editors_keys_are_german_in_the_help(german: None, tmp_path: P
         await pilot.press("alt+n", "enter")  # Program manager, open DEMO.MPF
         await pilot.pause()
         assert app.current_mode == "program"
+        assert app.screen.query_one("#prog-find").placeholder == "suchen"  # the search bar's fields
+        assert app.screen.query_one("#prog-replace").placeholder == "ersetzen durch"
         await pilot.press("f11")
         await pilot.pause()
         text = help_text(app)
