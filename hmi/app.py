@@ -66,13 +66,13 @@ from hmi.key_input import own_binding
 from hmi.key_settle import BindingsInPlace, wait_for_workers, wait_until_handled
 from hmi.keymap import Keymap, default_keymap
 from hmi.mcp import MachineControlPanel
-from hmi.palette import SOFTKEY_PATH_SEPARATOR, PanelCommandPalette, Place, PlaceProvider, area_places, one_line
+from hmi.palette import SOFTKEY_PATH_SEPARATOR, PanelCommandPalette, Place, PlaceProvider, area_places
 from hmi.placeholder import PlaceholderScreen
 from hmi.serve import DEFAULT_MAX_SESSIONS, DEFAULT_PORT, serve
 from hmi.program_lines import ProgramLines
 from hmi.messages import AlarmLineClicked, CommandRejected, NckStatusChanged, TerminalClosed
 from hmi.startup import start_session
-from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.softkeys import Softkey, SoftkeyMenu, one_line
 from hmi.stack_dump import register_stack_dump
 from hmi.terminal_driver import PanelTerminalDriver
 from hmi.theme import HMI_THEMES, SINUMERIK_THEME

@@ -36,7 +36,7 @@ from nck.status import NckStatus
 from hmi.i18n import N_, _
 from hmi.key_settle import BindingsInPlace
 from hmi.panel_keys import PanelKey, PanelKeys
-from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalSoftkeys
+from hmi.softkeys import HorizontalSoftkeys, SoftkeyCell, SoftkeyMenu, VerticalSoftkeys, one_line
 from hmi.widgets.header import AreaHeader
 from hmi.widgets.shown_text import show_text
 
@@ -158,7 +158,7 @@ class AreaBase(BindingsInPlace):
             return False
         if not key.allowed(self, self.access_level):
             # the area's message: an accepted command (the keyswitch turned) clears it
-            label = " ".join(_(key.label).split())
+            label = one_line(_(key.label))
             if self.access_level > key.level:
                 self.say(_("{softkey}: needs access level {level}").format(softkey=label, level=key.level))
             else:

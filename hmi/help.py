@@ -19,8 +19,7 @@ from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
 from hmi.i18n import N_, _, data_text
 from hmi.keymap import Keymap, display_key
-from hmi.palette import one_line
-from hmi.softkeys import SoftkeyMenu
+from hmi.softkeys import SoftkeyMenu, one_line
 
 SCOPE_TITLES = {"op": N_("Operator panel"), "mcp": N_("Machine control panel"), "softkey": N_("Softkeys")}
 

@@ -18,7 +18,6 @@ the access level or the state does not allow it).
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from typing import Callable, Iterable, Protocol
 
@@ -28,7 +27,7 @@ from textual.command import CommandList, CommandPalette, DiscoveryHit, Hit, Hits
 
 from hmi.i18n import _
 from hmi.keymap import Keymap
-from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.softkeys import Softkey, SoftkeyMenu, one_line
 
 PATH_SEPARATOR = " ▸ "
 SOFTKEY_PATH_SEPARATOR = "/"
@@ -73,16 +72,6 @@ class PanelCommandPalette(CommandPalette):
         no_matches = self._NO_MATCHES
         if command_list.option_count == 1 and command_list.get_option_at_index(0).id == no_matches:
             command_list.replace_option_prompt(no_matches, Align.center(Text(_("No matches found"), style="not bold")))
-
-
-WORD_BREAK = re.compile(r"-\n(?=[a-zäöüß])")
-"""A label's line break inside a word (``Satz-\nsuchlauf``): on one line the word is whole again."""
-
-
-def one_line(label: str) -> str:
-    """A softkey label on one line: ``Block\nsearch`` → ``Block search``, ``Sub-\nprograms`` →
-    ``Subprograms``, ``Programm-\nManager`` → ``Programm-Manager`` (a compound keeps its hyphen)."""
-    return " ".join(WORD_BREAK.sub("", label).replace("-\n", "-").split())
 
 
 SubLevel = Callable[[Softkey], SoftkeyMenu | None]

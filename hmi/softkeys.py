@@ -12,6 +12,8 @@ Access levels follow SINUMERIK: 0 is the most privileged, 7 the least
 
 from __future__ import annotations
 
+import re
+
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Sequence
 
@@ -25,6 +27,16 @@ from hmi.i18n import _
 
 Predicate = Callable[[Any], bool]
 """A predicate over the area screen (which offers ``.status``, ``.access_level`` …)."""
+
+
+WORD_BREAK = re.compile(r"-\n(?=[a-zäöüß])")
+"""A label's line break inside a word (``Satz-\nsuchlauf``): on one line the word is whole again."""
+
+
+def one_line(label: str) -> str:
+    """A softkey label on one line: ``Block\nsearch`` → ``Block search``, ``Sub-\nprograms`` →
+    ``Subprograms``, ``Programm-\nManager`` → ``Programm-Manager`` (a compound keeps its hyphen)."""
+    return " ".join(WORD_BREAK.sub("", label).replace("-\n", "-").split())
 
 
 @dataclass(frozen=True)

@@ -27,3 +27,20 @@ def test_a_reversed_number_range_of_the_alarm_log_filter_is_refused_in_german(ge
 
 def test_the_block_search_asks_for_its_target_in_german(german: None) -> None:
     assert _("Enter a block number or text to search for") == "Satznummer oder Suchtext eingeben"
+
+
+async def test_a_greyed_softkey_is_named_whole_in_german(tmp_path) -> None:
+    """Machine area in JOG, F4 (Program control, greyed there): the message names the softkey as
+    one word (Programm-/beeinfl. -> Programmbeeinfl.), not with the label's line break."""
+    from hmi.app import make_app
+    from tests.burst import burst
+    from tests.hmi.conftest import SIZE
+
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False, lang="de")
+    try:
+        async with app.run_test(size=SIZE) as pilot:
+            await burst(pilot, "alt+m", "f4")
+            line = str(app.screen.query_one("#dialog-line").render()).strip()
+    finally:
+        app.nc_session.quit()
+    assert line == "Programmbeeinfl.: in diesem Zustand nicht möglich"
