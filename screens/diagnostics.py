@@ -63,6 +63,10 @@ def _view_key(key_id: str, label: str, view: str) -> Softkey:
     return Softkey(key_id, label, f"show_view('{view}')", active=lambda s, v=view: s.view == v)
 
 
+AXIS_KINDS = {"linear": N_("linear"), "rotary": N_("rotary"), "spindle": N_("spindle")}
+"""The kinds of a machine axis (``nck.machine``) as the version screen names them."""
+
+
 class DiagnosticsScreen(AreaBase):
     """The Diagnostics operating area."""
 
@@ -560,7 +564,7 @@ class DiagnosticsScreen(AreaBase):
             (N_("Machine"), status.machine_name or "—", ""),
         ]
         if machine is not None:
-            axes = ", ".join(f"{a.name} ({a.kind})" for a in machine.axes)
+            axes = ", ".join(f"{a.name} ({_(AXIS_KINDS.get(a.kind, a.kind))})" for a in machine.axes)
             rows.append((N_("Axes"), axes, ""))
             rows.append((N_("IPO cycle"), f"{self.ask(queries.Counters()).ipo_cycle_s * 1000:.1f}", "ms"))
             rows.append((N_("Block buffer (MD28060)"), str(machine.md_value("MD28060", None, "—")), N_("blocks")))

@@ -37,6 +37,7 @@ ALLOWED = frozenset({
     "mm", "po", "re", "cf", "so",  # unit; machine-data activation (power on, reset, config, at once)
     "reset",  # the Kanal RESET state and the RESET key, as Operate writes them in German too
     "hidden",  # the instructor's switch by its `nck setup` field name (Setup ▸ Machine set-up)
+    "mill", "lathe",  # the machines' names (mill3, lathe2: Diagnostics ▸ More ▸ Version)
 })
 
 
@@ -102,7 +103,8 @@ WALKS: dict[str, list[list[str]]] = {
     # keyswitch 0 (editing needs level 4), next error; at level 4 the cycle level, MCALL, back
     "program_editor": [["alt+n", "f3"], ["shift+f7"], ["shift+f1"], ["alt+t", "alt+t", "alt+t"],
                        ["shift+f7"], ["f1"], ["shift+f7"], ["f8"], ["f5"]],
-    "diagnostics": [["alt+a"], *[["alt+a", "f10", f"f{n}"] for n in range(1, 8)]],
+    "diagnostics": [["alt+a"], *[["alt+a", "f10", f"f{n}"] for n in range(1, 8)],
+                    *[["alt+a", "f10", "f8", f"f{n}"] for n in range(1, 5)]],  # More: utilisation … exercises
     "setup": [["alt+s"], *[["alt+s", "f10", f"f{n}"] for n in range(1, 7)], ["alt+s", "f6", "shift+f5"]],
 }
 """Per area: the key bursts that show each screen checked (area key, then its softkeys)."""
