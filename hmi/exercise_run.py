@@ -248,8 +248,10 @@ class ClassroomHost:
         try:
             pack = queries.read_pack(path)
             written = queries.install_pack(pack, data_dir)
-        except queries.PackError as exc:
-            return _("Class pack not imported: {error}").format(error=exc)
+        except queries.PackError as exc:  # a file the system cannot read: said by its kind (error_text)
+            cause = exc.__cause__
+            reason = error_text(cause, failed="os_read_failed") if isinstance(cause, OSError) else str(exc)
+            return _("Class pack not imported: {error}").format(error=reason)
         except OSError as exc:
             return _("Class pack not imported: {error}").format(error=error_text(exc, failed="os_read_failed"))
         return _("Class pack imported: {summary} ({files} files new or changed)").format(

@@ -83,3 +83,16 @@ async def test_export_and_new_say_the_failure_in_german(german: None, tmp_path: 
         await pilot.pause()
         line = str(app.screen.query_one("#dialog-line").render())
         assert line.strip().startswith("Neu: 1BAD: nur Buchstaben, Ziffern und _")
+
+
+def test_a_class_pack_the_system_cannot_read_is_said_in_german(german: None, tmp_path: Path) -> None:
+    """Import class pack on a German panel, a path with no file: the operating system's refusal
+    in German (was "not a readable class pack (No such file or directory)")."""
+    from hmi.app import make_app
+
+    app = make_app(data_dir=str(tmp_path / "data"), realtime=False, lang="de")
+    try:
+        said = app.import_class_pack(str(tmp_path / "missing.json"))
+    finally:
+        app.nc_session.quit()
+    assert said == f"Klassenpaket nicht importiert: {tmp_path / 'missing.json'}: Datei oder Verzeichnis nicht vorhanden"
