@@ -190,7 +190,7 @@ class ClassroomHost:
         try:
             kernel = run.open_session()
         except Exception as exc:  # noqa: BLE001 - a broken exercise file: say so, keep the trainee's panel
-            return _("Exercise could not be started: {error}").format(error=exc)
+            return _("Exercise could not be started: {error}").format(error=error_text(exc))
         self.save_nc_data()  # type: ignore[attr-defined]
         run.trainee_session = self.nc_session
         run.trainee_kernel = self.bridge.replace_kernel(kernel)
