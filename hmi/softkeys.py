@@ -17,6 +17,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Sequence
 
+from rich.cells import cell_len
 from rich.text import Text
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
@@ -134,6 +135,14 @@ class SoftkeyView:
     empty: bool
 
 
+def label_in_width(hint: str, label: str, width: int) -> str:
+    """A softkey's ``label`` as its cell shows it after ``hint``: the lines run on (the cell wraps
+    them at its edge), and a word the label breaks with a hyphen (``Setting-\ndaten``) is whole
+    (``Settingdaten``) when the cell is ``width`` wide enough for the label on one line."""
+    whole = one_line(label)
+    return whole if 0 < width and cell_len(f"{hint} {whole}") <= width else label.replace("\n", " ")
+
+
 class SoftkeyCell(Static):
     """One softkey on the panel (a cell of a bar)."""
 
@@ -158,11 +167,21 @@ class SoftkeyCell(Static):
         self.set_class(view.empty, "-empty")
         self.set_class(not view.allowed and not view.empty, "-disabled")
         self.set_class(view.pressed, "-active")
+        self._draw()
+
+    def _draw(self) -> None:
+        """Write the shown view's hint and label for the cell's width now."""
+        view = self._shown
         text = Text()
-        if not view.empty:
+        if view is not None and not view.empty:
             text.append(f"{view.hint} ", style="dim")
-            text.append(view.label.replace("\n", " "))
+            text.append(label_in_width(view.hint, view.label, self.content_size.width))
         self.update(text, layout=False)
+
+    def on_resize(self) -> None:
+        """The cell's width changed (and is known after the first layout): draw the label for it."""
+        if self._shown is not None:
+            self._draw()
 
     def on_click(self) -> None:
         """Mouse users may click a softkey; it does the same as its function key."""
