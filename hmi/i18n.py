@@ -21,8 +21,8 @@ from nck.commands import Rejected
 from nck.queries import rejected_by
 from nck.status import AlarmEntry
 
-__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "error_text", "exercise_text", "language", "reason_text", "refusal_text",
-           "set_language", "step_text"]
+__all__ = ["LANGUAGES", "N_", "_", "alarm_text", "data_text", "error_text", "exercise_text", "language", "reason_text",
+           "refusal_text", "set_language", "step_text"]
 
 _active = {"code": SOURCE_LANGUAGE}
 

@@ -13,7 +13,6 @@ Access levels follow SINUMERIK: 0 is the most privileged, 7 the least
 from __future__ import annotations
 
 import re
-
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Sequence
 
