@@ -468,13 +468,13 @@ class MachineScreen(AreaBase):
         cut = self.ask(RecordedCut())
         if cut is None:
             if not stock.picture.empty or not stock.status_text:
-                stock.set_picture(StockPicture(), "Simultaneous recording: starts with the next program start (CYCLE START)")
+                stock.set_picture(StockPicture(), _("Simultaneous recording: starts with the next program start (CYCLE START)"))
             return
         chords = len(cut.path.starts)
         lines = cut.path.lines
-        where = f"line {int(lines[-1])}" if len(lines) else "no motion yet"
-        state = {"ended": "ended", "full": "recording stopped (too long)"}.get(cut.status, "recording")
-        note = f"{state} ({where}), {material_events(cut)}"
+        where = _("line {line}").format(line=int(lines[-1])) if len(lines) else _("no motion yet")
+        state = {"ended": N_("ended"), "full": N_("recording stopped (too long)")}.get(cut.status, N_("recording"))
+        note = f"{_(state)} ({where}), {material_events(cut)}"
         if chords != stock.picture.shown_chords or note != stock.status_text or stock.picture.empty:
             stock.set_picture(picture_of(cut, cut.zmap, chords), note)
 

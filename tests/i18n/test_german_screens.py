@@ -96,7 +96,8 @@ WALKS: dict[str, list[list[str]]] = {
     "machine_jog": [["alt+m", "alt+j"], ["alt+h"], *[["alt+m", "alt+j", "f10", f"f{n}"] for n in range(1, 9)]],
     "machine_jog_windows": [["alt+m", "alt+j", "f10", f"shift+f{n}"] for n in range(1, 7)],
     "machine_mda": [["alt+m", "alt+d"], ["alt+m", "alt+d", "f10", "f4"]],
-    "machine_auto": [["alt+m", "alt+u"], ["alt+m", "alt+u", "f10", "f4"]],
+    "machine_auto": [["alt+m", "alt+u"], ["alt+m", "alt+u", "f10", "f4"],
+                     ["alt+m", "alt+u", "f10", "f8"]],  # simultaneous recording, waiting for NC START
     "parameter": [["alt+o"], *[["alt+o", "f10", f"f{n}"] for n in range(1, 8)]],
     "program": [["alt+p"], ["alt+n"]],
     # the editor on ALARM_DEMO (alarm 10860 in line 5): header, check message, a greyed key at
