@@ -46,10 +46,10 @@ PROGRAM_STATE_WORDS = {"aborted": N_("aborted"), "running": N_("running"), "stop
 PROGRAM_SELECTION_LEVEL = 6
 """Program selection needs keyswitch position 1 (access level 6) or better."""
 SEARCH_MODES = {
-    "contour": "with calculation, contour",
-    "end_point": "with calculation, end point",
-    "without_calculation": "without calculation",
-    "serupro": "by program test (SERUPRO)",
+    "contour": N_("with calculation, contour"),
+    "end_point": N_("with calculation, end point"),
+    "without_calculation": N_("without calculation"),
+    "serupro": N_("by program test (SERUPRO)"),
 }
 """The block search types the search view offers (002 L18283-18309; :mod:`nck.block_search`)."""
 
@@ -435,7 +435,7 @@ class MachineScreen(AreaBase):
             self.jog.show(self.view, status)
         elif view_id == "view-search":
             show_text(self.query_one("#search-title", Static),
-                      " " + _("Block search") + f" {SEARCH_MODES[self.search_type]}")
+                      " " + _("Block search") + f" {_(SEARCH_MODES[self.search_type])}")
             show_text(self.query_one("#search-info", Static),
                       " " + _("Program: {program}").format(program=channel.selected_program or "—")
                       + f"   {stop_reason_text(channel.stop_reason)}")

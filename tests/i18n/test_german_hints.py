@@ -44,3 +44,11 @@ async def test_a_greyed_softkey_is_named_whole_in_german(tmp_path) -> None:
     finally:
         app.nc_session.quit()
     assert line == "Programmbeeinfl.: in diesem Zustand nicht möglich"
+
+
+def test_the_block_search_types_title_is_german(german: None) -> None:
+    """The search window's title names the search type (was English after 'Satzsuchlauf')."""
+    from screens.machine import SEARCH_MODES
+
+    assert [_(SEARCH_MODES[mode]) for mode in ("contour", "end_point", "without_calculation", "serupro")] == [
+        "mit Berechnung, Kontur", "mit Berechnung, Endpunkt", "ohne Berechnung", "über Programmtest (SERUPRO)"]
