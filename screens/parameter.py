@@ -328,8 +328,9 @@ class ParameterScreen(AreaBase):
         needed = self.action_level(read)
         if self.access_level <= needed:
             return None
-        what = "tool offsets" if read == "READ_TOOL" else "user variables"
-        return DataTable(f"Reading {what} needs access level {needed} (current level {self.access_level})",
+        title = (_("Reading tool offsets needs access level {needed} (current level {current})") if read == "READ_TOOL"
+                 else _("Reading user variables needs access level {needed} (current level {current})"))
+        return DataTable(title.format(needed=needed, current=self.access_level),
                          [Column("", 1)], [], "Set a password or turn the keyswitch (Setup area)")
 
     def build_table(self) -> DataTable:

@@ -137,11 +137,11 @@ def overview_table(view: DataView, status: NckStatus | None, levels: LevelOf) ->
         for axis in axes:
             value = float(offset.trans.get(axis, 0.0))
             row.append(_datum(frame_var(frame, axis, "TR"), fixed(value), value, levels,
-                              f"{label} {axis} translation in mm (active at the next selection of the frame)"))
+                              _("{frame} {axis} translation in mm (active at the next selection of the frame)").format(frame=label, axis=axis)))
         for axis in geometry:
             value = float(offset.rot.get(axis, 0.0))
             row.append(_datum(frame_var(frame, axis, "RT"), fixed(value), value, levels,
-                              f"{label} rotation about {axis} in degrees (-360 … 360)"))
+                              _("{frame} rotation about {axis} in degrees (-360 … 360)").format(frame=label, axis=axis)))
         rows.append(row)
     return DataTable("Work offsets — overview  (changes take effect when the frame is next selected)",
                      columns, rows, "↑↓←→ select   Enter edit   Details: all components of the frame")
@@ -161,7 +161,7 @@ def details_table(view: DataView, frame: str, levels: LevelOf) -> DataTable:
                 value: Any = bool(offset.mirror.get(axis, False))
                 row.append(Cell(_("yes") if value else _("no"), frame_var(frame, axis, comp),
                                 "1" if value else "0", levels(frame_var(frame, axis, comp)),
-                                f"{label} {axis} mirror: 1 on, 0 off"))
+                                _("{frame} {axis} mirror: 1 on, 0 off").format(frame=label, axis=axis)))
                 continue
             table = {"TR": offset.trans, "FI": offset.fine, "RT": offset.rot, "SC": offset.scale}[comp]
             value = float(table.get(axis, 1.0 if comp == "SC" else 0.0))

@@ -360,8 +360,8 @@ class CheckAndSimulation:
             self._step_pending = False
             chords = picture.shown_chords
             shown_line = self._material_blocks[step][0]
-            self._shown_note = (f"block {step + 1}/{len(self._material_blocks)}, line {shown_line}: "
-                                f"{simulation.modal_at(chords)}")
+            self._shown_note = _("block {number}/{count}, line {line}: {modal}").format(
+                number=step + 1, count=len(self._material_blocks), line=shown_line, modal=simulation.modal_at(chords))
         else:
             picture = self.stock.picture
         if self.stock.highlight_line != line:

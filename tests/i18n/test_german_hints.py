@@ -52,3 +52,14 @@ def test_the_block_search_types_title_is_german(german: None) -> None:
 
     assert [_(SEARCH_MODES[mode]) for mode in ("contour", "end_point", "without_calculation", "serupro")] == [
         "mit Berechnung, Kontur", "mit Berechnung, Endpunkt", "ohne Berechnung", "über Programmtest (SERUPRO)"]
+
+
+def test_the_parameter_areas_sentences_built_with_values_are_german(german: None) -> None:
+    """Sentences with values (a level, a frame, an axis) were built as English f-strings: now
+    templates of the catalogue (the table window, the edit dialog's line, the material view)."""
+    assert _("Reading tool offsets needs access level {needed} (current level {current})").format(
+        needed=4, current=7) == "Lesen der Werkzeugkorrekturen erfordert Zugriffsstufe 4 (aktuelle Stufe 7)"
+    assert _("{frame} rotation about {axis} in degrees (-360 … 360)").format(frame="G54", axis="Z") == (
+        "G54 Drehung um Z in Grad (-360 … 360)")
+    assert _("block {number}/{count}, line {line}: {modal}").format(number=3, count=9, line=12, modal="G1") == (
+        "Satz 3/9, Zeile 12: G1")
