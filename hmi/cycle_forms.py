@@ -208,12 +208,13 @@ def read_call(line: str) -> CallLine | str | None:
         return None
     args = _split_args(match["args"])
     if len(args) > len(form.params):
-        return f"{form.cycle}: more than {len(form.params)} parameters, the form cannot show the call"
+        return _("{cycle}: more than {count} parameters, the form cannot show the call").format(
+            cycle=form.cycle, count=len(form.params))
     texts = [""] * len(form.params) if args else form.defaults()
     for index, arg in enumerate(args):
         text = form.params[index].field_text(arg)
         if text is None:
-            return f"{form.params[index].name} = {arg} cannot be shown in the form"
+            return _("{name} = {value} cannot be shown in the form").format(name=form.params[index].name, value=arg)
         texts[index] = text
     return CallLine(form, match["head"], texts, match["tail"])
 

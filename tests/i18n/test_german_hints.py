@@ -63,3 +63,9 @@ def test_the_parameter_areas_sentences_built_with_values_are_german(german: None
         "G54 Drehung um Z in Grad (-360 … 360)")
     assert _("block {number}/{count}, line {line}: {modal}").format(number=3, count=9, line=12, modal="G1") == (
         "Satz 3/9, Zeile 12: G1")
+
+
+def test_a_cycle_call_the_form_cannot_show_is_said_in_german(german: None) -> None:
+    from hmi.cycle_forms import read_call
+
+    assert read_call("CYCLE81(1,2,3,4,5,6)") == "CYCLE81: mehr als 5 Parameter, die Eingabemaske kann den Aufruf nicht zeigen"
