@@ -21,13 +21,14 @@ reports which programs are in use through :attr:`NcFileSystem.in_use_check`.
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 import shutil
 from dataclasses import dataclass
 from pathlib import Path
 from stat import S_ISREG
-from typing import Callable, Iterable
+from typing import Any, Callable, Iterable, TypeVar, cast
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
 from nck.file_texts import FileTexts, FolderNames
@@ -147,6 +148,24 @@ def check_program_size(name: str, data: bytes) -> None:
         raise StorageError("storage_too_large", name=name)
 
 
+Method = TypeVar("Method", bound=Callable[..., Any])
+
+
+def changes_files(method: Method) -> Method:
+    """Mark a method of :class:`NcFileSystem` that writes, renames or removes files: afterwards
+    (also when it fails half-way) the kept program texts and folder listings are dropped, so the
+    next call sees the change whatever the file system's time-stamp granularity."""
+
+    @functools.wraps(method)
+    def changing(self: "NcFileSystem", *args: Any, **kwargs: Any) -> Any:
+        try:
+            return method(self, *args, **kwargs)
+        finally:
+            self.forget_kept_files()
+
+    return cast(Method, changing)
+
+
 class NcFileSystem:
     """The NC file system below ``root``; creates its directories when missing.
 
@@ -170,6 +189,11 @@ class NcFileSystem:
         self._folders = FolderNames()  # and the folders' names for their look-ups
         #: Returns the paths or file names of the programs in use (selected/running).
         self.in_use_check: Callable[[], Iterable[str]] = lambda: self._in_use
+
+    def forget_kept_files(self) -> None:
+        """Drop the program texts and folder listings kept for the interpreter's look-ups."""
+        self._texts.clear()
+        self._folders.clear()
 
     # ------------------------------------------------------------------ paths
     def canonical(self, path: str) -> str:
@@ -359,6 +383,7 @@ class NcFileSystem:
         """Write a program (new or existing) atomically; refused while it is in use."""
         return self.save_bytes(path, text.encode("utf-8"))
 
+    @changes_files
     def save_bytes(self, path: str, data: bytes) -> ProgramEntry:
         """:meth:`save` of raw content (a program kept as it came, e.g. from an archive)."""
         canonical = self.canonical(path)
@@ -380,13 +405,17 @@ class NcFileSystem:
             raise StorageError("storage_exists", path=canonical)
         return self.save(canonical, text)
 
+    @changes_files
     def create_workpiece(self, name: str, with_program: bool = True) -> ProgramEntry:
         """Create ``WKS/<NAME>.WPD`` (and its main program ``<NAME>.MPF``)."""
         stem = validate_name(name.upper().removesuffix("." + WORKPIECE_SUFFIX))
         canonical = f"WKS/{stem}.{WORKPIECE_SUFFIX}"
         if self.exists(canonical):
             raise StorageError("storage_exists", path=canonical)
-        self._disk(canonical).mkdir(parents=True)
+        try:
+            self._disk(canonical).mkdir(parents=True)
+        except OSError as exc:
+            raise StorageError.from_os_error(exc, canonical) from exc
         if with_program:
             self.save(f"{canonical}/{stem}.MPF", "")
         return self._entry(canonical)
@@ -407,6 +436,7 @@ class NcFileSystem:
             target_canonical = self.canonical(f"{target_canonical}/{name}")
         return target_canonical
 
+    @changes_files
     def copy(self, source: str, target: str, overwrite: bool = False) -> ProgramEntry:
         """Copy a program (or workpiece) to a new path or into a directory."""
         src = self.canonical(source)
@@ -435,6 +465,7 @@ class NcFileSystem:
             raise StorageError.from_os_error(exc, dst) from exc
         return self._entry(dst)
 
+    @changes_files
     def rename(self, source: str, new_name: str) -> ProgramEntry:
         """Rename a program or workpiece within its directory (refused while in use)."""
         src = self.canonical(source)
@@ -448,9 +479,13 @@ class NcFileSystem:
         dst = self.canonical(f"{parent}/{new_file}")
         if dst != src and self.exists(dst):
             raise StorageError("storage_exists", path=dst)
-        os.replace(self._disk(src), self._disk(parent) / dst.rpartition("/")[2])
+        try:
+            os.replace(self._disk(src), self._disk(parent) / dst.rpartition("/")[2])
+        except OSError as exc:
+            raise StorageError.from_os_error(exc, src) from exc
         return self._entry(dst)
 
+    @changes_files
     def delete(self, path: str) -> None:
         """Delete a program or a whole workpiece (refused while in use)."""
         canonical = self.canonical(path)
@@ -460,12 +495,16 @@ class NcFileSystem:
         if not os.path.lexists(disk):
             raise StorageError("storage_does_not_exist", path=canonical)
         self._refuse_in_use(canonical, "storage_in_use_deleted")
-        if is_plain_directory(disk):
-            shutil.rmtree(disk)
-        else:
-            disk.unlink()  # a file, or a link itself (never what it points to)
+        try:
+            if is_plain_directory(disk):
+                shutil.rmtree(disk)
+            else:
+                disk.unlink()  # a file, or a link itself (never what it points to)
+        except OSError as exc:
+            raise StorageError.from_os_error(exc, canonical) from exc
 
     # ------------------------------------------------------- import / export
+    @changes_files
     def import_file(self, local_path: Path | str, directory: str = "MPF",
                     name: str | None = None, overwrite: bool = False) -> ProgramEntry:
         """Copy a file from the local file system into ``directory``.
@@ -547,6 +586,7 @@ class NcFileSystem:
         return ScopedProgramSource(self, context)
 
     # --------------------------------------------------------------- samples
+    @changes_files
     def install_samples(self, source: Path | str, force: bool = False,
                         wanted: Callable[[str], bool] | None = None) -> list[str]:
         """Copy the training programs of ``source`` into an NC file system once.

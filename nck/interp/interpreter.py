@@ -294,7 +294,10 @@ class Interpreter:
         touches = line.touches_modal
         if touches is None:
             touches = line.touches_modal = _touches_modal(line.block)
-        if type(touches) is tuple:  # assignments to names: safe when each is a variable (journaled)
+        # Assignments to names: safe when each is a variable (journaled). This also relies on the
+        # step's work after the statements (releasing held motions) never raising an alarm, as
+        # blocks that only write R parameters always have.
+        if type(touches) is tuple:
             return not all(type(self.lookup(name)) is Cell for name in touches)
         return bool(touches)
 

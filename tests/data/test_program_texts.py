@@ -138,3 +138,39 @@ def test_a_file_named_in_lower_case_is_found(source):
     path.with_name("lower.spf").write_text(LONGER)
     _a_later_tick(path.parent)
     assert programs.read_program("LOWER")[1] == LONGER
+
+
+@pytest.fixture
+def coarse_time_stamps(monkeypatch):
+    """A file system whose time stamps never tick and whose sizes and inodes repeat: every file
+    and folder has the same signature, so only an explicit drop tells a kept entry is stale."""
+    monkeypatch.setattr("nck.file_texts.signature", lambda stat: (0, 0, 0, 0, 0))
+
+
+def test_the_nc_memorys_own_save_is_read_at_the_next_call(tmp_path, coarse_time_stamps):
+    fs, _ = _nc_file_system(tmp_path)
+    assert fs.read_program("SUB")[1] == FIRST
+    fs.save("SPF/SUB.SPF", SAME_SIZE)
+    assert fs.read_program("SUB")[1] == SAME_SIZE
+
+
+def test_a_program_the_nc_memory_saves_after_a_missed_look_up_is_found(tmp_path, coarse_time_stamps):
+    fs, _ = _nc_file_system(tmp_path)
+    assert fs.read_program("ADDED") is None
+    fs.save("SPF/ADDED.SPF", LONGER)
+    assert fs.read_program("ADDED")[1] == LONGER
+    fs.rename("SPF/ADDED.SPF", "OTHER")
+    assert fs.read_program("ADDED") is None
+    assert fs.read_program("OTHER")[1] == LONGER
+    fs.delete("SPF/OTHER.SPF")
+    assert fs.read_program("OTHER") is None
+
+
+def test_a_long_text_is_read_on_every_call(tmp_path, coarse_time_stamps, monkeypatch):
+    """Texts above the kept size are not held: with a frozen signature the rewrite still shows."""
+    monkeypatch.setattr("nck.file_texts.TEXT_KEPT_MAX_CHARS", len(FIRST) - 1)
+    programs, path = _directory_source(tmp_path)
+    assert programs.read_program("SUB")[1] == FIRST
+    path.write_text(SAME_SIZE)
+    assert programs.read_program("SUB")[1] == SAME_SIZE
+

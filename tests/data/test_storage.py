@@ -236,3 +236,20 @@ def test_every_shipped_training_program_is_installed(tmp_path: Path) -> None:
     fs = NcFileSystem(tmp_path / "nc")
     installed = {path.rpartition("/")[2] for path in fs.install_samples(data_path("programs"))}
     assert installed == shipped
+
+
+@pytest.mark.parametrize("operation", ["rename", "delete"])
+def test_a_refused_rename_or_delete_names_the_nc_path_not_the_disk(tmp_path, monkeypatch, operation):
+    """The operating system's refusal is said with the program's NC path (as a refused save is),
+    never with the folder on the host's disk where the NC memory happens to live."""
+    fs = NcFileSystem(tmp_path / "nc")
+    (tmp_path / "nc" / "SPF" / "SUB.SPF").write_text("PROC SUB\nRET\n")
+
+    def refused(*args, **kwargs):
+        raise PermissionError(13, "Permission denied", str(tmp_path / "nc" / "SPF" / "SUB.SPF"))
+
+    monkeypatch.setattr("os.replace", refused)
+    monkeypatch.setattr("pathlib.Path.unlink", refused)
+    with pytest.raises(StorageError) as refusal:
+        fs.rename("SPF/SUB.SPF", "OTHER") if operation == "rename" else fs.delete("SPF/SUB.SPF")
+    assert str(refusal.value) == "SPF/SUB.SPF: permission denied"

@@ -46,6 +46,7 @@ def _state(interp: Interpreter) -> dict:
     "AA=2 X=5 Y=7 F=300 BB=1/0",
     "F=300 BB=1/0",
     "G2 AA=2 OUT=2 BB=1/0",
+    "AA=2 X=20 F=300 CHF=-1",  # the feed is taken before the motion builder refuses CHF: only the copy undoes it
 ])
 def test_a_failing_block_changes_nothing(failing):
     interp, before, alarm = _run_to_alarm(failing)
