@@ -186,8 +186,8 @@ class ClassroomHost:
         unsaved = self._unsaved_work()
         if unsaved:
             return _("Not started: {unsaved} (save or close it first)").format(unsaved=unsaved)
-        run = ExerciseRun(exercise, self._report_dir())
         try:
+            run = ExerciseRun(exercise, self._report_dir())  # makes its private data folder
             kernel = run.open_session()
         except Exception as exc:  # noqa: BLE001 - a broken exercise file: say so, keep the trainee's panel
             return _("Exercise could not be started: {error}").format(error=error_text(exc))
@@ -247,13 +247,16 @@ class ClassroomHost:
             return _("Class pack not imported: the panel runs without a data directory")
         try:
             pack = queries.read_pack(path)
-            written = queries.install_pack(pack, data_dir)
         except queries.PackError as exc:  # a file the system cannot read: said by its kind (error_text)
             cause = exc.__cause__
             reason = error_text(cause, failed="os_read_failed") if isinstance(cause, OSError) else str(exc)
             return _("Class pack not imported: {error}").format(error=reason)
         except OSError as exc:
             return _("Class pack not imported: {error}").format(error=error_text(exc, failed="os_read_failed"))
+        try:
+            written = queries.install_pack(pack, data_dir)
+        except OSError as exc:  # writing into the class folder
+            return _("Class pack not imported: {error}").format(error=error_text(exc))
         return _("Class pack imported: {summary} ({files} files new or changed)").format(
             summary=pack.summary(_), files=len(written))
 

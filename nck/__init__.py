@@ -30,6 +30,7 @@ from nck.access import AccessDenied as AccessDenied, Action as Action, required_
 from nck.storage import (MAX_IMPORT_BYTES as MAX_IMPORT_BYTES, NcFileSystem as NcFileSystem,
                          ProgramEntry as ProgramEntry, StorageError as StorageError)
 from nck.atomic import atomic_write_text as atomic_write_text
+from nck.regular_files import ExportTargetExists as ExportTargetExists
 from nck.regular_files import read_regular_bytes as read_regular_bytes, write_export as write_export
 # The servo trace (Diagnostics > Service): recorder, its settings and signals.
 from nck.trace import (MAX_SIGNALS as MAX_SIGNALS, TraceError as TraceError, TraceRecorder as TraceRecorder,

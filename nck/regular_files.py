@@ -179,18 +179,24 @@ def copy_regular_tree(source: Path, target: Path, limit_bytes: int,
     return skipped
 
 
+class ExportTargetExists(FileExistsError):
+    """The export's file is already there: ask the operator before replacing it. Its own class,
+    because any other ``FileExistsError`` (a file where a folder of the path should be) is a
+    failure to report, not a question."""
+
+
 def check_export_target(path: Path | str, *, replace: bool = False) -> None:
     """Raise unless ``path`` may take an export: free, or a regular file (replaced only with ``replace``).
 
     A link, FIFO or device there is refused (:class:`NotARegularFile`) — the
     write would land elsewhere or block; an existing file without ``replace``
-    raises ``FileExistsError`` (ask the operator first).
+    raises :class:`ExportTargetExists` (ask the operator first).
     """
     if os.path.lexists(path):
         if not is_regular_file(path):
             raise NotARegularFile(path)
         if not replace:
-            raise FileExistsError(errno.EEXIST, "already exists", str(path))
+            raise ExportTargetExists(errno.EEXIST, "already exists", str(path))
 
 
 def write_export(path: Path | str, data: bytes, *, replace: bool = False) -> None:

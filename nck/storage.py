@@ -35,6 +35,7 @@ from nck.file_texts import FileTexts, FolderNames
 from nck.os_refusals import os_refusal
 from nck.refused import Refused
 from nck.regular_files import (
+    ExportTargetExists,
     copy_regular_tree, is_plain_directory, is_regular_file, plain_directory, read_regular_bytes,
     write_export,
 )
@@ -557,7 +558,7 @@ class NcFileSystem:
         """Copy a program to the local file system (atomically); return the file written.
 
         ``local_path`` may be a directory: the program's file name is used there.
-        An existing file is replaced only with ``replace`` (else ``FileExistsError``
+        An existing file is replaced only with ``replace`` (else ``ExportTargetExists``
         is raised: ask first); a link or pipe there is refused, never written through.
         """
         canonical = self.canonical(path)
@@ -566,7 +567,7 @@ class NcFileSystem:
             local = local / canonical.rpartition("/")[2]
         try:
             write_export(local, self.read_bytes(canonical), replace=replace)
-        except FileExistsError:
+        except ExportTargetExists:
             raise
         except OSError as exc:
             raise StorageError.from_os_error(exc, local) from exc

@@ -25,7 +25,7 @@ import nck as nck_package
 from nck import commands as cmd
 from nck import queries
 from nck.status import NckStatus
-from nck import TraceError, signal_unit, write_export
+from nck import ExportTargetExists, TraceError, signal_unit, write_export
 
 from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
@@ -352,7 +352,7 @@ class DiagnosticsScreen(AreaBase):
         def attempt(replace: bool) -> None:
             try:
                 path = write(replace)
-            except FileExistsError as exc:
+            except ExportTargetExists as exc:
                 question = _("{name} already exists in {folder}. Replace it?").format(
                     name=Path(exc.filename).name, folder=Path(exc.filename).parent)
                 self.app.push_screen(ConfirmDialog(question), lambda yes: attempt(True) if yes else None)

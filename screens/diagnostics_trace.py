@@ -87,7 +87,7 @@ class TraceSession:
         """Write the samples as ``trace.csv`` into ``directory``; return the path.
 
         An existing ``trace.csv`` is replaced only with ``replace`` (else
-        ``FileExistsError``); a link or pipe of that name is refused
+        :class:`nck.ExportTargetExists`); a link or pipe of that name is refused
         (:func:`nck.regular_files.write_export`).
         """
         if self.recorder is None or not self.recorder.sample_count:

@@ -25,7 +25,7 @@ from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.widgets import DataTable, Input, Static, Tree
 
-from nck import Action, ProgramEntry, required_level
+from nck import Action, ExportTargetExists, ProgramEntry, required_level
 from nck import commands as cmd
 from nck.commands import Rejected
 from nck.status import NckStatus
@@ -545,7 +545,7 @@ class ProgramManagerScreen(AreaBase):
                 return
             try:
                 target = self.files.fs.export_file(entry.path, Path(path).expanduser(), replace)
-            except FileExistsError as exc:
+            except ExportTargetExists as exc:
                 question = _("{filename} already exists. Replace it?").format(filename=exc.filename)
                 self.app.push_screen(ConfirmDialog(question),
                                      lambda yes: do_export(path, True) if yes else None)

@@ -31,8 +31,8 @@ from nck.status import NckStatus
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import LANGUAGES, N_, _, data_text, language, refusal_text
-from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
+from hmi.i18n import LANGUAGES, N_, _, data_text, error_text, language
+from hmi.softkeys import Softkey, SoftkeyMenu, one_line, view_softkey
 from hmi.theme import HMI_THEMES, THEME_LABELS
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key, level_refusal,
@@ -77,7 +77,7 @@ def theme_text(active: str) -> Text:
     text.append(" " + _("Colour theme") + "\n\n", style="bold underline")
     for theme in HMI_THEMES:
         mark = "●" if theme.name == active else "○"
-        label = " ".join(_(THEME_LABELS[theme.name]).split())
+        label = one_line(_(THEME_LABELS[theme.name]))
         text.append(f"   {mark} {label}  ({theme.name})\n", style="bold" if theme.name == active else "")
     text.append("\n   " + _("Choose with the vertical softkeys; the choice is kept for the next start.") + "\n",
                 style="dim")
@@ -341,7 +341,7 @@ class SetupScreen(AreaBase):
         try:
             changed = queries.with_field(setup, name, text, self.data_view.machine.kind)
         except queries.SetupFieldError as error:
-            self.hmi.set_hint(refusal_text(queries.rejected_by(error)))
+            self.hmi.set_hint(error_text(error))
             return
         if isinstance(self.submit(cmd.WriteMachineSetup(changed)), Accepted):
             self.hmi.set_hint(_("Machine set-up: {name} = {value}").format(name=name, value=text.strip()))

@@ -8,6 +8,7 @@ import pytest
 
 from nck import atomic
 from nck.interp.api import ProgramSource
+from nck.regular_files import ExportTargetExists
 from nck.storage import NcFileSystem, StorageError, split_file_name, validate_name
 
 
@@ -253,3 +254,17 @@ def test_a_refused_rename_or_delete_names_the_nc_path_not_the_disk(tmp_path, mon
     with pytest.raises(StorageError) as refusal:
         fs.rename("SPF/SUB.SPF", "OTHER") if operation == "rename" else fs.delete("SPF/SUB.SPF")
     assert str(refusal.value) == "SPF/SUB.SPF: permission denied"
+
+
+def test_an_export_below_a_file_is_a_failure_not_a_question(tmp_path):
+    """Only an export file that is already there asks to be replaced (ExportTargetExists); a file
+    where the path needs a folder is a refusal with its reason."""
+    fs = NcFileSystem(tmp_path / "nc")
+    fs.save("MPF/PART.MPF", "M30\n")
+    (tmp_path / "plain.txt").write_text("")
+    with pytest.raises(StorageError) as refusal:
+        fs.export_file("MPF/PART.MPF", tmp_path / "plain.txt" / "PART.MPF")
+    assert not isinstance(refusal.value, FileExistsError)
+    (tmp_path / "out.MPF").write_text("")
+    with pytest.raises(ExportTargetExists):
+        fs.export_file("MPF/PART.MPF", tmp_path / "out.MPF")
