@@ -81,9 +81,10 @@ def ends_in_exact_stop(words: Any, gcodes: Mapping[int, str]) -> bool:
     return gcodes.get(10, "G60") == "G60" or words.gcodes.get(11) == "G9"
 
 
+assert ROUND_DIGITS == 9, "ROUND_FAST_LIMIT and ROUND_FAST_MARGIN are worked out for a scale of 10^9"
 ROUND_SCALE = 10.0 ** ROUND_DIGITS
 ROUND_FAST_LIMIT = 2.0 ** 43
-"""Below this, ``value · 10^9`` is a double whose rounding error is at most 2^-10 (half an ulp)."""
+"""Below this, ``value · 10^9`` is a double whose rounding error is at most 2^-11 (half an ulp)."""
 ROUND_FAST_MARGIN = 0.49
 """How far from the nearest integer ``value · 10^9`` may be for the integer to be the
 correctly rounded one: 0.49 plus the product's error stays below 0.5, away from any tie."""

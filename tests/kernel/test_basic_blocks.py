@@ -121,3 +121,15 @@ def test_block_search_writes_no_display_blocks() -> None:
             break
     assert nck.positions_mcs()["Z"] == -1.0 and nck.situation.program == "stopped"
     assert [b.text for b in nck.status().channel.basic_blocks][:1] == ["N40 G1 X10 Y20 Z-1 F100"]
+
+
+def test_a_change_below_the_shown_resolution_writes_no_position_word() -> None:
+    # The display shows positions to 0.001 mm (nck/basic_blocks.py, _shown): an end that reads the
+    # same as the last one (10.0001 and 10.0004 read 10.000 like 10) is no word; 10.0006 reads
+    # 10.001 and is one. This guards the display rule, not a manual figure.
+    program = "N5 G0 X0 Y0 Z0\nN10 X10 Z1\nN20 G1 X10.0001 F100\nN30 X10.0004 Z0.9996\nN40 X10.0006\nN50 M30\n"
+    nck = _selected(program, motion_factory=instant_motion_factory)
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+    texts = [block.text for block in nck.status().channel.basic_blocks]
+    assert texts[1:5] == ["N10 X10 Z1", "N20 G1 F100", "N30", "N40 X10.001"]
