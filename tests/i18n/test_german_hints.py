@@ -9,7 +9,11 @@ import pytest
 from hmi.i18n import _, error_text
 from nck import TraceError
 from nck.trace import TraceSettings, validate
+from hmi.area import DialogLine
 from screens.diagnostics_alarms import parse_filter
+from tests.burst import burst
+from tests.hmi.conftest import SIZE
+from tests.hmi.test_workflows import programs, real_app, select_in_auto, text_of  # noqa: F401 - the programs fixture
 
 
 def test_a_trace_setting_is_refused_in_german(german: None) -> None:
@@ -25,8 +29,15 @@ def test_a_reversed_number_range_of_the_alarm_log_filter_is_refused_in_german(ge
         parse_filter("20-10")
 
 
-def test_the_block_search_asks_for_its_target_in_german(german: None) -> None:
-    assert _("Enter a block number or text to search for") == "Satznummer oder Suchtext eingeben"
+async def test_the_block_search_asks_for_its_target_in_german(german: None, programs) -> None:  # noqa: F811
+    """AUTO, STEP.MPF selected, F5 Block search, Enter on the empty field: the window's title
+    names the search type and the dialog line asks for the target, both in German."""
+    app = real_app(programs)
+    async with app.run_test(size=SIZE) as pilot:
+        await select_in_auto(pilot, "STEP.MPF")
+        await burst(pilot, "f5", "enter")
+        assert text_of(app, "#search-title").strip() == "Satzsuchlauf mit Berechnung, Kontur"
+        assert str(app.screen.query_one(DialogLine).render()).strip() == "Satznummer oder Suchtext eingeben"
 
 
 async def test_a_greyed_softkey_is_named_whole_in_german(tmp_path) -> None:
