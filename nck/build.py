@@ -30,7 +30,6 @@ from nck.kernel import Nck
 from nck.machine import MachineConfig, load_machine
 from nck.ncdata import NcData
 from nck.paths import open_data_dir
-from nck.persistence import Session
 
 PART_COUNTERS = ("TOTAL_PARTS", "REQUIRED_PARTS", "ACTUAL_PARTS", "SPECIAL_PARTS")
 """Workpiece counters ``$AC_…`` that are retained (REQUIRED first: it bounds nothing but is set before ACTUAL)."""
@@ -93,6 +92,8 @@ def open_data_session(machine: str | None = None, data_dir: str | None = None,
     One process per data directory: a directory locked by another HMI or ``nck`` command
     raises ``nck.datalock.DataDirInUse``. A failed start leaves neither a lock nor a copy.
     """
+    from nck.persistence import Session  # here: `nck run` without a data directory never loads one
+
     config = load_machine(machine)
     root, copy = open_data_dir(data_dir, ephemeral)
     lock = None

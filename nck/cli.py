@@ -24,7 +24,6 @@ from typing import Any, TextIO
 from nck import __version__, canon
 from nck.cli_parser import CliError, CliParser
 from nck.errors import NcAlarmError
-from nck.grade import grade, grade_json, grade_text, summarize
 from nck.headless import CHECK_BLOCK_BUDGET, alarm_message, check_outcome, format_alarm, run_program
 from nck.motion.tracefile import start_trace, write_trace_csv
 from nck.interp.sources import DirectorySource, read_text_file
@@ -410,6 +409,8 @@ def _run(options: argparse.Namespace) -> int:
 # ----------------------------------------------------------------------------- grade
 def _grade(options: argparse.Namespace) -> int:
     """``nck grade``: exit 0 same in every respect, 1 differences, 2 input, 3 a program did not end."""
+    from nck.grade import grade, grade_json, grade_text, summarize
+
     if options.timeout <= 0:
         raise CliError("--timeout needs a number of seconds above 0 (a grade needs a budget)")
     if options.tolerance < 0:

@@ -20,8 +20,6 @@ import numpy as np
 
 from nck.alarm_ids import INTERNAL_ERROR, PROGRAM_NOT_FOUND
 from nck import canon
-from nck import commands as cmd
-from nck.build import build_nck
 from nck.errors import NcAlarmError
 from nck.interp.api import BLOCK_COST_S, ProgramSource
 from nck.interp.interpreter import Interpreter
@@ -143,6 +141,9 @@ def run_on_kernel(
 
     M0/M1 stops are continued with NC START at once (nobody is at the machine).
     """
+    from nck import commands as cmd  # here, not at the top: `nck check` builds no kernel and starts faster
+    from nck.build import build_nck
+
     source: ProgramSource = programs if text is None else _TextOverlay(programs, program_name, text)
     interpreters: list[Interpreter] = []
     nck = build_nck(machine, data, source, dialect=dialect, referenced=True, on_interpreter=interpreters.append)

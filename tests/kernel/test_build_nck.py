@@ -51,7 +51,7 @@ def test_headless_runs_build_their_kernel_with_build_nck(monkeypatch) -> None:
         built.append(kwargs)
         return kernel
 
-    monkeypatch.setattr(nck.headless, "build_nck", spy)
+    monkeypatch.setattr(nck.build, "build_nck", spy)  # headless imports it when it runs (start-up)
     result = nck.headless.run_program(load_machine(), MemorySource(), NcData(), "P.MPF",
                                       text="G0 X5\nM30\n", timeout_s=5.0, dialect="siemens")
     assert result.status == "ended" and len(built) == 1 and built[0]["referenced"] is True
