@@ -33,7 +33,7 @@ from textual.timer import Timer
 from textual.widgets import Input, Static, TextArea
 from textual.widgets.text_area import Selection
 
-from nck import Action, required_level
+from nck import Action, StorageError, required_level
 from nck import commands as cmd
 from nck.commands import Rejected
 from nck.status import NckStatus
@@ -250,7 +250,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         try:
             canonical = self.files.canonical(program)
             raw = self.files.fs.read_bytes(canonical) if text is None else text.encode("utf-8")
-        except Exception as exc:  # a file problem is a notification, never a traceback
+        except (StorageError, OSError) as exc:  # a file problem is a notification, never a traceback
             self.say(_("{program}: cannot be read ({error})").format(program=program, error=error_text(exc, failed="os_read_failed")))
             return False
         decoded, binary = decode_program(raw)
