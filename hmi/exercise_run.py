@@ -18,7 +18,7 @@ from datetime import datetime
 from pathlib import Path
 from typing import Any
 
-from nck import queries
+from nck import StorageError, queries
 from nck.status import NckStatus
 
 from hmi.i18n import N_, _, error_text, exercise_text, reason_text, step_text
@@ -189,7 +189,8 @@ class ClassroomHost:
         try:
             run = ExerciseRun(exercise, self._report_dir())  # makes its private data folder
             kernel = run.open_session()
-        except Exception as exc:  # noqa: BLE001 - a broken exercise file: say so, keep the trainee's panel
+        except (queries.ExerciseError, StorageError, OSError) as exc:  # a broken exercise file or a file
+            # that cannot be written: say so, keep the trainee's panel (anything else is a bug)
             return _("Exercise could not be started: {error}").format(error=error_text(exc))
         self.save_nc_data()  # type: ignore[attr-defined]
         run.trainee_session = self.nc_session

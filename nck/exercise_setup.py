@@ -11,12 +11,13 @@ returned as commands for the caller to send after the start (:func:`start_comman
 
 from __future__ import annotations
 
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 from nck import commands as cmd
 from nck.exercise import Exercise, ExerciseError, exercise_program
-from nck.machine import load_machine
+from nck.machine import MachineFileError, load_machine
 from nck.ncdata import ToolEdge
 from nck.persistence import Session
 from nck.workpiece import MachineSetup, solid_from_plain
@@ -29,16 +30,26 @@ TOOL_FIELDS = {"type": 1, "position": 2, "length1": 3, "length2": 4, "length3": 
 
 
 def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
-    """Write the exercise's starting set-up as the retained data of ``directory`` (new)."""
+    """Write the exercise's starting set-up as the retained data of ``directory`` (new).
+
+    Raises :class:`ExerciseError` for an unknown machine or a malformed set-up value (named),
+    ``StorageError``/``OSError`` when a file cannot be read or written.
+    """
     setup = exercise.setup
-    session = Session.open(directory, load_machine(exercise.machine))
+    try:
+        machine = load_machine(exercise.machine)
+    except MachineFileError as exc:
+        raise ExerciseError(f"{exercise.exercise_id}: {exc}") from None
+    session = Session.open(directory, machine)
     data = session.ncdata
-    for entry in setup.get("tools", []):
-        params = {number: float(entry[name]) for name, number in TOOL_FIELDS.items() if name in entry}
-        data.tools[(int(entry["t"]), int(entry.get("d", 1)))] = ToolEdge(params=params)
-    for entry in setup.get("offsets", []):
-        frame = data.settable_frame(entry.get("frame", "G54"))
-        frame.trans.update({a: float(v) for a, v in entry.items() if a in ("X", "Y", "Z")})
+    with _setup_values(exercise, "tools"):
+        for entry in setup.get("tools", []):
+            params = {number: float(entry[name]) for name, number in TOOL_FIELDS.items() if name in entry}
+            data.tools[(int(entry["t"]), int(entry.get("d", 1)))] = ToolEdge(params=params)
+    with _setup_values(exercise, "offsets"):
+        for entry in setup.get("offsets", []):
+            frame = data.settable_frame(entry.get("frame", "G54"))
+            frame.trans.update({a: float(v) for a, v in entry.items() if a in ("X", "Y", "Z")})
     blank = setup.get("blank")
     current = data.machine_setup
     if blank is not None:
@@ -48,8 +59,9 @@ def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
         except (ValueError, KeyError) as exc:
             raise ExerciseError(f"{exercise.exercise_id}: blank: {exc}") from None
         current = MachineSetup(solid, current.reference, current.hidden)
-    true_lengths = tuple((int(entry["t"]), float(entry[TRUE_LENGTH_FIELD]))
-                         for entry in setup.get("tools", []) if TRUE_LENGTH_FIELD in entry)
+    with _setup_values(exercise, "tools"):
+        true_lengths = tuple((int(entry["t"]), float(entry[TRUE_LENGTH_FIELD]))
+                             for entry in setup.get("tools", []) if TRUE_LENGTH_FIELD in entry)
     data.machine_setup = MachineSetup(current.blank, current.reference, bool(setup.get("blank_hidden", False)),
                                       true_lengths)
     session.retained.access.keyswitch_position = int(setup.get("keyswitch", 0))
@@ -58,9 +70,22 @@ def prepare_data_dir(exercise: Exercise, directory: Path) -> None:
         session.files.save(f"MPF/{name}", exercise_program(exercise, name).read_text(encoding="utf-8"))
     for name, text in setup.get("program_texts", {}).items():
         session.files.save(f"MPF/{name}", text)
-    for fault in setup.get("faults", []):
-        _inject(fault, session)
+    with _setup_values(exercise, "faults"):
+        for fault in setup.get("faults", []):
+            _inject(fault, session)
     session.save()
+
+
+@contextmanager
+def _setup_values(exercise: Exercise, section: str) -> Iterator[None]:
+    """Turn a malformed value of the set-up's ``section`` (a text where a number belongs, a
+    missing field, a line beyond the program) into an :class:`ExerciseError` that names it."""
+    try:
+        yield
+    except KeyError as exc:
+        raise ExerciseError(f"{exercise.exercise_id}: setup {section}: {exc} is missing") from None
+    except (ValueError, TypeError, IndexError) as exc:
+        raise ExerciseError(f"{exercise.exercise_id}: setup {section}: {exc}") from None
 
 
 def _inject(fault: dict[str, Any], session: Any) -> None:

@@ -85,6 +85,33 @@ def test_unknown_check_or_fault_is_refused_with_its_name() -> None:
         exercise_from_table("x", {"title": "t"})
 
 
+def broken_setup(**setup: Any) -> Exercise:
+    """An exercise whose file loads but whose set-up cannot be written (as an instructor may type it)."""
+    return exercise_from_table("99_broken", {"title": "t", "setup": setup,
+                                             "step": [{"text": "a", "checks": [{"kind": "mode", "is": "JOG"}]}]})
+
+
+@pytest.mark.parametrize(("setup", "said"), [
+    ({"tools": [{"t": 1, "length1": "long"}]}, "99_broken: setup tools: could not convert string to float: 'long'"),
+    ({"tools": [{"length1": 120.0}]}, "99_broken: setup tools: 't' is missing"),
+    ({"offsets": [{"X": "minus ten"}]}, "99_broken: setup offsets: could not convert string to float: 'minus ten'"),
+    ({"program_texts": {"AB.MPF": "G0 X0\n"},
+      "faults": [{"kind": "broken_line", "program": "AB.MPF", "line": 9, "text": "G0 X=="}]},
+     "99_broken: setup faults: list assignment index out of range"),
+])
+def test_a_malformed_set_up_value_is_an_exercise_error_naming_it(tmp_path: Path, setup: dict[str, Any], said: str) -> None:
+    with pytest.raises(ExerciseError) as raised:
+        prepare_data_dir(broken_setup(**setup), tmp_path / "run")
+    assert str(raised.value) == said
+
+
+def test_an_unknown_machine_is_an_exercise_error(tmp_path: Path) -> None:
+    exercise = exercise_from_table("99_broken", {"title": "t", "machine": "nosuch",
+                                                 "step": [{"text": "a", "checks": [{"kind": "mode", "is": "JOG"}]}]})
+    with pytest.raises(ExerciseError, match="99_broken: machine 'nosuch' not found"):
+        prepare_data_dir(exercise, tmp_path / "run")
+
+
 @pytest.mark.parametrize("exercise_id", sorted(EXERCISES))
 def test_set_up_lands_in_a_private_directory(tmp_path: Path, exercise_id: str) -> None:
     exercise = EXERCISES[exercise_id]

@@ -14,6 +14,7 @@ import os
 import shlex
 from pathlib import Path
 
+import pytest
 from textual.widgets import Static
 
 from hmi.app import HmiApp, make_app
@@ -21,7 +22,7 @@ from hmi.exercise_run import reports_dir_of
 from hmi.serve import panel_command
 from nck import commands as cmd
 from nck.class_pack import export_pack
-from nck.exercise import load_exercises
+from nck.exercise import exercise_from_table, load_exercises
 from nck.exercise_checks import replay
 from nck.paths import default_data_dir
 from tests.burst import burst
@@ -136,6 +137,23 @@ async def test_exam_shows_no_hint_and_the_spindle_exercise_starts(tmp_path: Path
         assert "Step 1 of 3" in side(app) and "Hint" not in side(app)
         await pilot.press(END)
         assert "score 25/100" in app.hint  # 1 of 4: only the final check (no alarm) holds
+
+
+def test_a_broken_exercise_is_said_and_a_bug_is_not_hidden(tmp_path: Path, monkeypatch) -> None:
+    app = trainee_app(tmp_path)
+    broken = exercise_from_table("99_broken", {"title": "Broken", "setup": {"tools": [{"t": 1, "length1": "long"}]},
+                                               "step": [{"text": "a", "checks": [{"kind": "mode", "is": "JOG"}]}]})
+    said = app.start_exercise(broken)
+    assert said == "Exercise could not be started: 99_broken: setup tools: could not convert string to float: 'long'"
+    assert app.exercise_run is None
+    exercise = {e.exercise_id: e for e in load_exercises()}["01_power_on_reference"]
+
+    def failing(*args, **kwargs):
+        raise ZeroDivisionError("a bug, not a broken exercise file")
+    monkeypatch.setattr("hmi.exercise_run.start_session", failing)
+    with pytest.raises(ZeroDivisionError):  # a bug is not a message on the dialog line
+        app.start_exercise(exercise)
+    assert app.exercise_run is None
 
 
 async def test_class_pack_imported_on_the_panel(tmp_path: Path) -> None:
