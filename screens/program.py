@@ -251,7 +251,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             canonical = self.files.canonical(program)
             raw = self.files.fs.read_bytes(canonical) if text is None else text.encode("utf-8")
         except (StorageError, OSError) as exc:  # a file problem is a notification, never a traceback
-            self.say(_("{program}: cannot be read ({error})").format(program=program, error=error_text(exc, failed="os_read_failed")))
+            # the refusal names the program itself ("MPF/X.MPF does not exist", "MPF/X.MPF: permission denied")
+            self.say(_("Not opened: {error}").format(error=error_text(exc, failed="os_read_failed")))
             return False
         decoded, binary = decode_program(raw)
         self.program = canonical

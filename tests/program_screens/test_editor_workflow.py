@@ -174,6 +174,24 @@ async def test_binary_file_opens_read_only(data_dir: Path) -> None:
         assert (data_dir / "MPF" / "BLOB.MPF").read_bytes().startswith(b"\xff\xfe")
 
 
+async def test_a_program_that_cannot_be_read_is_named_once(data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A program too large to read: the editor says so naming the program once, in both languages."""
+    monkeypatch.setattr("nck.storage.MAX_IMPORT_BYTES", 1000)
+    (data_dir / "MPF" / "BIG.MPF").write_text("G1 X1\n" * 200)  # 1200 bytes
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")  # BIG.MPF sorts before DEMO.MPF
+        await pilot.pause()
+        said = str(app.screen.query_one("#dialog-line").render())
+        assert said == "Not opened: MPF/BIG.MPF: larger than 1000 bytes"
+        app.select_language("de")
+        await pilot.pause()
+        app.screen.open_program("MPF/BIG.MPF")
+        await pilot.pause()
+        said = str(app.screen.query_one("#dialog-line").render())
+        assert said == "Nicht geöffnet: MPF/BIG.MPF: größer als 1000 Byte"
+
+
 async def test_running_program_is_read_only(data_dir: Path) -> None:
     """While DEMO.MPF is executed (stopped at M0), the editor refuses edits."""
     (data_dir / "MPF" / "HOLD.MPF").write_text("N10 G0 X5\nN20 M0\nN30 M30\n")
