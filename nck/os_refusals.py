@@ -3,8 +3,8 @@
 An ``OSError``'s own text (``strerror``) is the C library's English sentence; a panel that
 shows it in another language needs a key. :func:`os_refusal` picks one by the error's kind
 (``errno``): no such file or directory, permission denied, disk full, read-only file system,
-not a regular file, too large; any other error says that the file could not be written (or
-read, ``failed="os_read_failed"``). The sentence is ``{path}: {what}``: the path is the error's
+not a regular file, a file where a folder belongs, too large; any other error says that the
+file could not be written (or read, ``failed="os_read_failed"``). The sentence is ``{path}: {what}``: the path is the error's
 own (``filename``) unless given, the kind's text (``what``, with its key ``what_key``) is said
 in the panel's language as an access refusal's is (``hmi.i18n.refusal_fields_in``).
 Pure: no file is touched.
@@ -16,7 +16,7 @@ import errno
 from pathlib import Path
 
 from nck.refused import Refused, refusal_texts
-from nck.regular_files import FileTooLarge, NotARegularFile
+from nck.regular_files import FileTooLarge, NotAFolder, NotARegularFile
 
 ERRNO_KEYS = {
     errno.ENOENT: "os_no_such_file",
@@ -45,6 +45,8 @@ def _kind(error: OSError, failed: str) -> tuple[str, dict[str, object]]:
     """The refusal key of ``error``'s kind and the values of its placeholders."""
     if isinstance(error, NotARegularFile):
         return "os_not_regular", {}
+    if isinstance(error, NotAFolder):
+        return "os_not_a_folder", {}
     if isinstance(error, FileTooLarge):
         if error.limit_bytes >= 1 << 20:
             return "os_too_large_mb", {"size_mb": error.limit_bytes >> 20}

@@ -39,6 +39,16 @@ class NotARegularFile(OSError):
         return f"{self.filename}: {self.strerror}"
 
 
+class NotAFolder(OSError):
+    """A file (or a link, pipe, device) where a path needs a folder: nothing can be written below it."""
+
+    def __init__(self, path: Path | str) -> None:
+        super().__init__(errno.ENOTDIR, "a file, not a folder", str(path))
+
+    def __str__(self) -> str:
+        return f"{self.filename}: {self.strerror}"
+
+
 class FileTooLarge(OSError):
     """The file (or the files copied together) is larger than the reader accepts."""
 
@@ -190,8 +200,14 @@ def check_export_target(path: Path | str, *, replace: bool = False) -> None:
 
     A link, FIFO or device there is refused (:class:`NotARegularFile`) — the
     write would land elsewhere or block; an existing file without ``replace``
-    raises :class:`ExportTargetExists` (ask the operator first).
+    raises :class:`ExportTargetExists` (ask the operator first); a file where a folder of the
+    path belongs raises :class:`NotAFolder` naming it (the missing folders are made when written).
     """
+    for folder in Path(path).parents:  # the nearest one that is there must be a folder
+        if os.path.lexists(folder):
+            if not os.path.isdir(folder):
+                raise NotAFolder(folder)
+            break
     if os.path.lexists(path):
         if not is_regular_file(path):
             raise NotARegularFile(path)

@@ -35,7 +35,7 @@ from nck.file_texts import FileTexts, FolderNames
 from nck.os_refusals import os_refusal
 from nck.refused import Refused
 from nck.regular_files import (
-    ExportTargetExists,
+    ExportTargetExists, NotAFolder,
     copy_regular_tree, is_plain_directory, is_regular_file, plain_directory, read_regular_bytes,
     write_export,
 )
@@ -569,6 +569,8 @@ class NcFileSystem:
             write_export(local, self.read_bytes(canonical), replace=replace)
         except ExportTargetExists:
             raise
+        except NotAFolder as exc:  # the file in the way, not the export, is named
+            raise StorageError.from_os_error(exc, exc.filename) from exc
         except OSError as exc:
             raise StorageError.from_os_error(exc, local) from exc
         return local

@@ -262,9 +262,14 @@ def test_an_export_below_a_file_is_a_failure_not_a_question(tmp_path):
     fs = NcFileSystem(tmp_path / "nc")
     fs.save("MPF/PART.MPF", "M30\n")
     (tmp_path / "plain.txt").write_text("")
-    with pytest.raises(StorageError) as refusal:
-        fs.export_file("MPF/PART.MPF", tmp_path / "plain.txt" / "PART.MPF")
-    assert not isinstance(refusal.value, FileExistsError)
+    for below in (tmp_path / "plain.txt" / "PART.MPF", tmp_path / "plain.txt" / "sub" / "PART.MPF"):
+        with pytest.raises(StorageError) as refusal:
+            fs.export_file("MPF/PART.MPF", below)
+        assert not isinstance(refusal.value, FileExistsError)
+        assert str(refusal.value) == f"{tmp_path / 'plain.txt'}: a file, not a folder"  # the file in the way
+    assert (tmp_path / "plain.txt").read_text() == ""
+    fs.export_file("MPF/PART.MPF", tmp_path / "new" / "sub" / "PART.MPF")  # missing folders are made
+    assert (tmp_path / "new" / "sub" / "PART.MPF").read_text() == "M30\n"
     (tmp_path / "out.MPF").write_text("")
     with pytest.raises(ExportTargetExists):
         fs.export_file("MPF/PART.MPF", tmp_path / "out.MPF")

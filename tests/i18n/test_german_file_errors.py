@@ -11,7 +11,7 @@ import pytest
 
 from hmi.i18n import error_text
 from nck import StorageError, os_refusal
-from nck.regular_files import FileTooLarge, NotARegularFile
+from nck.regular_files import FileTooLarge, NotAFolder, NotARegularFile
 from tests.program_screens.conftest import DEMO_PROGRAM, SIZE, make_program_app, nc_files
 
 GERMAN_KINDS = [
@@ -44,6 +44,7 @@ def test_an_os_error_without_a_path_and_the_files_of_the_wrong_kind(german: None
     assert error_text(NotARegularFile("/d/link")) == (
         "/d/link: keine reguläre Datei (eine Verknüpfung, Pipe oder ein Gerät)")
     assert error_text(FileTooLarge("/d/big", 50 << 20)) == "/d/big: größer als 50 MB"
+    assert error_text(NotAFolder("/d/plain.txt")) == "/d/plain.txt: eine Datei, kein Ordner"
 
 
 def test_the_nc_file_systems_refusals_are_said_in_german(german: None) -> None:
