@@ -135,6 +135,8 @@ class ModalState:
 SHOWN_GROUPS = (1, 6, 7, 8, 14, 15)
 """G groups the step view names (002: 1 motion, 6 plane, 7 tool radius compensation, 8 settable
 work offset, 14 absolute/incremental, 15 feed type) — the groups of the Machine area's G line."""
+SHOWN_TABLES_KEPT = 16
+"""G code tables whose shown groups the recorder remembers (more than the path builder shares)."""
 
 
 @dataclass
@@ -217,6 +219,11 @@ class PathRecorder:
         self.feed: float | None = None  # the last programmed F (modal, shown with G0 too)
         self.states: list[ModalState] = []  # per motion; equal states are one object
         self._state_of: dict[tuple[Any, ...], ModalState] = {}
+        # The shown groups of the G code tables seen lately, by identity (the path builder shares a
+        # few read-only tables among its motions); the table is kept so that its id is not reused.
+        self._shown_of: dict[int, tuple[Any, tuple[str | None, ...]]] = {}
+        self._file: str | None = None  # the file of the last block, and whether it is the main program
+        self._in_main = False
         self.tool_times: dict[int, float] = {}
         self.position: Point | None = None  # the tool tip after the last motion
         self.mcs_minus_wcs: tuple[float, float, float] | None = None  # the work offset, tool length taken out
@@ -234,8 +241,11 @@ class PathRecorder:
         """An interpreted block: its motions belong to its line if it is a block of the main
         program, else (a subprogram or cycle) to the main program's block that called it."""
         source = getattr(block, "source", None)
-        if source is not None and _file_key(source.file) == self.main:
-            self._main_line = source.line
+        if source is not None:
+            if source.file != self._file:
+                self._file, self._in_main = source.file, _file_key(source.file) == self.main
+            if self._in_main:
+                self._main_line = source.line
         for command in getattr(block, "commands", ()):
             if isinstance(command, canon.Motion):
                 self._main_line_of[id(command)] = self._main_line
@@ -261,7 +271,9 @@ class PathRecorder:
         return self._cutter_index[(-1, -1)]
 
     def __call__(self, command: canon.CanonCommand) -> None:
-        if isinstance(command, canon.ToolSelect):
+        if isinstance(command, canon.Motion):  # first: most commands are motions
+            self._motion(command)
+        elif isinstance(command, canon.ToolSelect):
             self.selected = command.tool
             if command.change:
                 self.tool = command.tool
@@ -278,8 +290,6 @@ class PathRecorder:
                 self.spindle_on = False
             elif command.speed_rpm is not None and command.speed_rpm <= 0.0:
                 self.spindle_on = False
-        elif isinstance(command, canon.Motion):
-            self._motion(command)
 
     def _motion(self, motion: canon.Motion) -> None:
         end_wcs = motion.end_wcs
@@ -297,9 +307,10 @@ class PathRecorder:
             self.mcs_minus_wcs = (float(end_mcs["X"]) - float(end_wcs["X"]), float(end_mcs["Y"]) - float(end_wcs["Y"]),
                                   float(end_mcs["Z"]) - float(end_wcs["Z"]) - length)
         in_blank = not self.turning and self.mcs_minus_wcs is not None
+        shift = self._shift() if in_blank else (0.0, 0.0, 0.0)  # the edge is the same all through the motion
         if self.position is None:
             if in_blank:
-                self.position = self._blank_point(motion.start_mcs or end_mcs, None)
+                self.position = self._blank_point(motion.start_mcs or end_mcs, None, shift)
             else:
                 start_mcs = motion.start_mcs
 
@@ -312,12 +323,14 @@ class PathRecorder:
                 self.position = (start_of("X"), start_of("Y"), start_of("Z"))
         start = self.position
         if in_blank:
-            end = self._blank_point(end_mcs, start)
+            end = self._blank_point(end_mcs, start, shift)
         else:
-            x, y, z = (float(end_wcs[a]) if a in end_wcs else start[i] for i, a in enumerate("XYZ"))
-            end = (x, y, z)
-        if motion.kind in ("G2", "G3"):
-            points = self._points_in_blank(motion, start, end) if in_blank else self._points(motion, start, end)
+            end = (float(end_wcs["X"]) if "X" in end_wcs else start[0],
+                   float(end_wcs["Y"]) if "Y" in end_wcs else start[1],
+                   float(end_wcs["Z"]) if "Z" in end_wcs else start[2])
+        kind = motion.kind
+        if kind == "G2" or kind == "G3":
+            points = self._points_in_blank(motion, start, end, shift) if in_blank else self._points(motion, start, end)
         else:
             points = None
         if points is None:
@@ -328,12 +341,17 @@ class PathRecorder:
             self._ends.extend(end)
             self.counts.append(1)
         else:
-            chained = np.vstack([np.array(start)[None, :], points])
-            length = float(np.linalg.norm(np.diff(chained, axis=0), axis=1).sum())
-            self._starts.frombytes(np.ascontiguousarray(chained[:-1], dtype=np.float64).tobytes())
-            self._ends.frombytes(np.ascontiguousarray(points, dtype=np.float64).tobytes())
+            # Each chord starts where the one before ends; its length as numpy's norm sums it
+            # (the squares added along the row, then the roots over the chords).
+            starts = np.empty_like(points)
+            starts[0] = start
+            starts[1:] = points[:-1]
+            steps = points - starts
+            length = float(np.sqrt((steps * steps).sum(axis=1)).sum())
+            self._starts.frombytes(starts.tobytes())
+            self._ends.frombytes(points.tobytes())
             self.counts.append(len(points))
-        feed = DEFAULT_RAPID_MM_MIN if motion.kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
+        feed = DEFAULT_RAPID_MM_MIN if kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
         self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
         # The first motion comes from wherever the machine stands (the reference point, beyond
         # the blank): it is drawn but cuts nothing (our choice; a real set-up starts clear).
@@ -342,8 +360,8 @@ class PathRecorder:
         line = self._main_line_of.pop(id(motion), None) or motion.source.line or 0
         # Tapping and thread cutting (G331 after SPOS, G33, G63) turn the spindle with the axes
         # (002 L19681): not a cut with the spindle stopped, as the machine's contact watch says.
-        turning_spindle = self.spindle_on or motion.kind in THREAD_AND_TAPPING_KINDS
-        self._meta.extend((line, motion.kind == "G0", self.tool, cutter, turning_spindle, n))
+        turning_spindle = self.spindle_on or kind in THREAD_AND_TAPPING_KINDS
+        self._meta.extend((line, kind == "G0", self.tool, cutter, turning_spindle, n))
         if motion.feed is not None:
             self.feed = motion.feed
         self.states.append(self._state(motion.gcodes))
@@ -353,7 +371,14 @@ class PathRecorder:
         """The modal state in force, shared with every motion that has the same (the motions'
         own G code tables are not kept: one per motion was most of a long program's memory)."""
         gcodes = gcodes or {}
-        shown = tuple(gcodes.get(g) for g in SHOWN_GROUPS)
+        seen = self._shown_of.get(id(gcodes))
+        if seen is not None and seen[0] is gcodes:
+            shown = seen[1]
+        else:
+            shown = tuple(gcodes.get(g) for g in SHOWN_GROUPS)
+            if len(self._shown_of) >= SHOWN_TABLES_KEPT:
+                self._shown_of.clear()
+            self._shown_of[id(gcodes)] = (gcodes, shown)
         key = (shown, self.feed, self.tool, self.edge, self.speed_rpm)
         state = self._state_of.get(key)
         if state is None:
@@ -366,15 +391,22 @@ class PathRecorder:
         edge = self.data.edge(self.tool, self.edge) if self.tool and self.edge > 0 else None
         return edge.get(3) + edge.get(12) if edge is not None else 0.0
 
-    def _blank_point(self, mcs: Mapping[str, float], keep: Point | None) -> Point:
-        """A point of the toolholder reference in the MCS as the tool tip in the blank's frame
-        (the work offset of the first motion, :attr:`mcs_minus_wcs`); axes missing: ``keep``'s."""
+    def _shift(self) -> Point:
+        """What a toolholder reference point in the MCS less gives the tool tip in the blank's
+        frame: the work offset of the first motion (:attr:`mcs_minus_wcs`) and the length 1 of
+        the active edge along Z."""
         offset = self.mcs_minus_wcs or (0.0, 0.0, 0.0)
-        shift = (offset[0], offset[1], offset[2] + self._length())
-        return tuple(float(mcs[a]) - shift[i] if a in mcs else (keep[i] if keep is not None else 0.0)
-                     for i, a in enumerate("XYZ"))  # type: ignore[return-value]
+        return (offset[0], offset[1], offset[2] + self._length())
 
-    def _points_in_blank(self, motion: canon.Motion, start: Point, end: Point) -> np.ndarray | None:
+    @staticmethod
+    def _blank_point(mcs: Mapping[str, float], keep: Point | None, shift: Point) -> Point:
+        """A point of the toolholder reference in the MCS as the tool tip in the blank's frame
+        (less ``shift``, :meth:`_shift`); axes missing: ``keep``'s."""
+        return (float(mcs["X"]) - shift[0] if "X" in mcs else (keep[0] if keep is not None else 0.0),
+                float(mcs["Y"]) - shift[1] if "Y" in mcs else (keep[1] if keep is not None else 0.0),
+                float(mcs["Z"]) - shift[2] if "Z" in mcs else (keep[2] if keep is not None else 0.0))
+
+    def _points_in_blank(self, motion: canon.Motion, start: Point, end: Point, shift: Point) -> np.ndarray | None:
         """The chords' end points of a mill's arc in the blank's frame, from its MCS geometry
         (None: one chord): a frame that mirrors or rotates in the plane moves the cut where the
         machine cuts. An arc whose axis is not the plane's normal in the MCS (a frame tilting
@@ -389,7 +421,7 @@ class PathRecorder:
             if abs(component) < 0.999:
                 return None
             clockwise = component < 0.0
-        centre = self._blank_point(motion.center_mcs, start)
+        centre = self._blank_point(motion.center_mcs, start, shift)
         return self._arc_chords(start, end, (float(centre[plane[0]]), float(centre[plane[1]])), plane, clockwise,
                                 motion.turns)
 
@@ -412,7 +444,11 @@ class PathRecorder:
         sweep = abs(segment.arc[7])
         step = 2.0 * math.acos(max(1.0 - self.tol / max(radius, 1e-9), -1.0)) if radius > self.tol else math.pi
         count = max(1, int(math.ceil(sweep / max(step, 1e-6))))
-        points = segment.positions(np.linspace(0.0, segment.length, count + 1)[1:])
+        # The chords' ends at equal path steps, as numpy's linspace(0, length, count + 1)[1:]
+        # (i × step, the last exactly the length): the arc's length exceeds MIN_LENGTH_MM.
+        distances = np.arange(1.0, count + 1.0) * (segment.length / count)
+        distances[-1] = segment.length
+        points = segment.positions(distances)
         points[-1] = end
         return points
 
