@@ -68,6 +68,7 @@ from nck.status import ModalView
 from nck.writes import ValueOutOfLimits, check_tool_value
 from nck.interp.sources import DirectorySource
 from nck.lang.lexer import tokenize
+from nck.lang.lines import TextLines
 from nck.lang.parser import BlockParser
 from nck.resources import data_path
 
@@ -196,7 +197,10 @@ class Interpreter:
         frame = self.run_state.frames[-1]
         if frame.pc >= len(frame.program.lines) or frame.program.plain_run_end(frame.pc) > frame.pc:
             return False  # (a plain block reads no variables: no need to parse it here)
-        line = frame.program.lines[frame.pc]
+        lines = frame.program.lines
+        if isinstance(lines, TextLines) and "$" not in lines.raw(frame.pc):
+            return False  # nor does a line without "$" (the simple-step path never parses it)
+        line = lines[frame.pc]
         if line.block is None:
             return False
         if line.main_run_read is None:
