@@ -198,7 +198,8 @@ class ProgramRun:
                     break
                 if self._must_wait_for_main_run(motion):
                     break  # implicit STOPRE: the block reads main-run data ($AA_IM …)
-                self._after_measuring(motion)
+                if self.last_motion is not None and self.last_motion.measure == "MEAS":
+                    self._after_measuring(motion)
                 try:
                     result = self.interp.step()
                 except NcAlarmError as error:
@@ -264,8 +265,7 @@ class ProgramRun:
 
     def _after_measuring(self, motion: MotionSystem) -> None:
         """Before the block after a ``MEAS`` block: the interpreter continues from the actual position."""
-        if self.last_motion is None or self.last_motion.measure != "MEAS":
-            return
+        assert self.last_motion is not None
         sync = getattr(self.interp, "sync_position", None)
         if sync is not None:
             sync(motion.positions_mcs())
@@ -296,10 +296,11 @@ class ProgramRun:
             command = commands[self._index]
             if isinstance(command, ExactStop):
                 command = Dwell(command.source, seconds=0.0)  # the motion stops, then goes on
-            if isinstance(command, (Motion, Dwell)):
+            moves = isinstance(command, Motion)
+            if moves or isinstance(command, Dwell):
                 if not motion.can_accept():
                     return False
-                if isinstance(command, Motion) and self._end_point is not None:
+                if moves and self._end_point is not None:
                     try:
                         started = self._start_at_end_point(command)
                     except NcAlarmError as error:
@@ -311,7 +312,7 @@ class ProgramRun:
                         self._index += 1
                         continue
                     command = started
-                if isinstance(command, Motion):
+                if moves:
                     command = self._transform(command)
                     self.last_motion = command
                     self.basic_blocks.moved(command)
@@ -347,7 +348,7 @@ class ProgramRun:
             else:
                 self._deferred.append((self._pushed_total, RunEvent("output", command=command)))
             self._index += 1
-            if self._single_segment_stop(options, commands):
+            if options.single_block == "SBL1" and self._single_segment_stop(commands):
                 self._stop_at_idle("single block")
                 return False
         return True
@@ -366,12 +367,13 @@ class ProgramRun:
         self._end_point = None
         return start.apply(motion) if source == target else motion
 
-    def _single_segment_stop(self, options: RunOptions, commands: tuple) -> bool:
+    def _single_segment_stop(self, commands: tuple) -> bool:
         """SBL1 stops after every segment, also one the NC inserted or one an earlier block
         released late (radius compensation, RND), and after the outputs of a block without
         path motion that waited for such a motion (M8, G4 between two rounded blocks), when
-        more motion follows (002 L18071-18094): the stops keep in step with the motion."""
-        if options.single_block != "SBL1" or self._pending is None or self._pending.extras.get("single_block_off"):
+        more motion follows (002 L18071-18094): the stops keep in step with the motion. Asked
+        only under SBL1."""
+        if self._pending is None or self._pending.extras.get("single_block_off"):
             return False
         done, rest = commands[self._index - 1], commands[self._index:]
         if not any(isinstance(c, (Motion, Dwell, ExactStop)) for c in rest):
