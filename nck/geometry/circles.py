@@ -187,7 +187,7 @@ def plane_arc(
     sweep += TWO_PI * turns
     center = plane.from_plane((center_ao[0], center_ao[1], s[2]))
     normal = plane.normal()
-    axis = tuple(-c for c in normal) if clockwise else normal
+    axis = (-normal[0], -normal[1], -normal[2]) if clockwise else normal
     return Arc(start=tuple(map(float, start)), end=tuple(map(float, end)), center=center,  # type: ignore[arg-type]
                axis=axis, radius=radius, sweep_rad=sweep, turns=turns)  # type: ignore[arg-type]
 

@@ -36,6 +36,7 @@ from nck.geometry.line_frame import LineFrame, line_frame
 from nck.geometry.path_state import GeometryState
 from nck.geometry.planes import GEOMETRY_AXES_DEFAULT, Plane, plane
 from nck.geometry.rounding_distance import rounding_distance_mm
+from nck.geometry.tangents import line_tangent
 from nck.geometry.tool_length import active_wear_sign, length_offset, resolve_edge
 from nck.geometry.transform import Transform
 from nck.geometry.units import UnitSystem
@@ -66,6 +67,7 @@ chamfer and rounding."""
 INTERP_LETTERS = "IJK"
 ROUND_DIGITS = 9
 _LENGTH_PARAMS = (1, 3, 4, 5, 12, 13, 14, 21, 22, 23)  # $TC_DP of the tool length vector: type, L1-L3 geometry, wear, base
+_LENGTH_DEFAULTS = (0.0,) * len(_LENGTH_PARAMS)  # a parameter not written counts as 0
 _UNIT_SYSTEMS: dict[tuple[str, bool], UnitSystem] = {}  # (G group 13 code, basic system metric): immutable
 
 
@@ -303,10 +305,11 @@ class PathBuilder:
         if tool == 0 or edge == 0:
             return self._no_tool
         found = self.data.edge(tool, edge)
-        if found is None and not any(t == tool for t, _ in self.data.tools):
-            return self._no_tool
-        found = resolve_edge(self.data, tool, edge)
-        assert found is not None
+        if found is None:
+            if not any(t == tool for t, _ in self.data.tools):
+                return self._no_tool
+            found = resolve_edge(self.data, tool, edge)  # alarm 17180: the tool has no such edge
+            assert found is not None
         sd = self.data.setting_data
         plane_code = modal.gcodes.get(6, "G17")
         length_const = int(sd.get("SD42940", 0) or 0)
@@ -315,7 +318,7 @@ class PathBuilder:
         data_mm = self.units(modal).data_mm
         params = found.params
         key = (plane_code, length_const, length_type, wear_sign, data_mm, self.geo_axes,
-               tuple(params.get(index, 0.0) for index in _LENGTH_PARAMS))
+               tuple(map(params.get, _LENGTH_PARAMS, _LENGTH_DEFAULTS)))
         cache = self.__dict__.setdefault("_tool_vectors", {})
         vector = cache.get(key)
         if vector is None:
@@ -451,7 +454,7 @@ class PathBuilder:
             self._check_thread_frame(words, geo.frames.transform(), start, end)
         context = {
             "kind": kind, "source": words.source, "plane": pl.code, "programmed": programmed,
-            "transform": geo.frames.transform(), "tool": self.tool_vector(modal),
+            "transform": geo.frames.transform(), "tool": self._tool_lengths(modal),
             "feed": feed, "lead": lead, "gcodes": self.shared_gcodes(modal.gcodes),
             "thread_start": self._thread_start_deg() if kind == "G33" else None,
             "exact": ends_in_exact_stop(words, modal.gcodes),
@@ -462,12 +465,12 @@ class PathBuilder:
         geo.wcs_mm = end
         held_before = geo.pending is not None
         out = path_aids.with_contour_aids(self, words, geo, pl, element, context, start_mcs, units)
-        geo.tangent = end_tangent(element)
+        geo.tangent_at_end_of(element)
         modal.position_wcs = self.wcs_view(geo, modal)
         if not held_before and geo.pending is None and len(out) == 1:
             modal.position_mcs = dict(out[0].end_mcs)  # the element itself went out: its end, computed once
         else:
-            modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, keep=True)
+            modal.position_mcs = self._mcs_of(self._vec(end), context, start_mcs, self._kept_axes(context))
         return out
 
     # ---------------------------------------------------------------- lines on a separable frame
@@ -688,11 +691,11 @@ class PathBuilder:
         if "RP" in w or "AP" in w:  # circle about the pole
             pole = geo.polar.effective_pole
             return circles.arc_from_center(pl, s, e, pole, clockwise, turns, self.tolerance)
-        centre_given = any(letter in w for letter in INTERP_LETTERS)
-        centre = self._centre(pl, s, w, modes, units, modal)
         if "CR" in w:
             return circles.arc_from_radius(pl, s, e, float(w["CR"]) * units.position_mm, clockwise,
                                            turns, self.tolerance)
+        centre_given = any(letter in w for letter in INTERP_LETTERS)
+        centre = self._centre(pl, s, w, modes, units, modal)
         if "AR" in w:
             if centre_given:
                 end_app = pl.to_plane(e)[2]
@@ -791,14 +794,13 @@ class PathBuilder:
 
     # ---------------------------------------------------------------- MCS mapping
     def _mcs_of(self, point: tuple[float, float, float], context: Mapping[str, Any],
-                start_mcs: Mapping[str, float], keep: bool) -> dict[str, float]:
-        """MCS of a WCS geometry point; with ``keep`` unprogrammed axes stay where they are."""
+                start_mcs: Mapping[str, float], kept: tuple[str, ...]) -> dict[str, float]:
+        """MCS of a WCS geometry point; the ``kept`` axes (:meth:`_kept_axes`) stay where they are."""
         transform: Transform = context["transform"]
         tool: Mapping[str, float] = context["tool"]
         full = {"X": point[0], "Y": point[1], "Z": point[2]}
         full.update(context["end_other"])
         bcs = transform.apply(full)
-        kept = self._kept_axes(context) if keep else ()
         out: dict[str, float] = {}
         for axis in self.path_axes:
             value = bcs.get(axis, 0.0) + tool.get(axis, 0.0)
@@ -853,13 +855,14 @@ class PathBuilder:
              kind: str | None = None, inserted: bool = False, keep: bool = True) -> canon.Motion:
         """Turn a WCS element into a canonical motion."""
         kind = kind or context["kind"]
-        end_mcs = self._mcs_of(element.end, context, start_mcs, keep and not inserted)
+        kept = self._kept_axes(context) if keep and not inserted else ()
+        end_mcs = self._mcs_of(element.end, context, start_mcs, kept)
         center_wcs = center_mcs = None
         normal = None
         turns = 0
         if isinstance(element, Arc):
             center_wcs = self._wcs_out(element.center, context)
-            centre_point = self._mcs_of(element.center, context, start_mcs, keep=False)
+            centre_point = self._mcs_of(element.center, context, start_mcs, ())
             transform: Transform = context["transform"]
             applicate = plane(context["plane"], self.geo_axes).applicate
             if applicate in self.path_axes and applicate not in context["programmed"] \
@@ -871,10 +874,10 @@ class PathBuilder:
             if kind not in ARC_KINDS:
                 kind = "G2" if element.clockwise_in(plane(context["plane"], self.geo_axes)) else "G3"
         end_wcs = self._wcs_out(element.end, context)
-        if keep and not inserted:
+        if kept:
             transform = context["transform"]
-            self._report_actual(end_wcs, end_mcs, self._kept_axes(context),
-                                (transform.matrix.diagonal(), transform.matrix[:, 3]), transform,
+            scales_offsets = transform.axis_affine() or (transform.matrix.diagonal(), transform.matrix[:, 3])
+            self._report_actual(end_wcs, end_mcs, kept, scales_offsets, transform,
                                 context["tool"], SimpleNamespace(gcodes=context["gcodes"]), context["units"])
         length = element.length() if isinstance(element, Arc) else math.dist(element.start, element.end)
         feed = context["feed"]
@@ -974,20 +977,3 @@ def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[
         names = transform.geometry_axes
         found = normals[key] = {names[i]: round_position(n[i]) for i in range(3)}
     return dict(found)
-
-
-def end_tangent(element: LineElement | Arc) -> tuple[float, float, float] | None:
-    """The unit direction at the end of ``element``; ``None`` for a line of no (or no finite) length."""
-    if isinstance(element, Arc):
-        return element.tangent_at(1.0)
-    return line_tangent(element.start, element.end)
-
-
-def line_tangent(start: tuple[float, float, float], end: tuple[float, float, float]
-                 ) -> tuple[float, float, float] | None:
-    """The unit direction of the line from ``start`` to ``end``; ``None`` for no (or no finite) length."""
-    d0, d1, d2 = float(end[0]) - float(start[0]), float(end[1]) - float(start[1]), float(end[2]) - float(start[2])
-    n = math.hypot(d0, d1, d2)  # no overflow for huge coordinates (numpy's norm warns)
-    if n < 1e-12 or not math.isfinite(n):
-        return None
-    return (d0 / n, d1 / n, d2 / n)

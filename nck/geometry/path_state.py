@@ -13,6 +13,7 @@ from typing import Any
 from nck.geometry.chain import FrameChain
 from nck.geometry.frames import Frame
 from nck.geometry.polar import PolarState
+from nck.geometry.tangents import end_tangent
 
 Vec3 = tuple[float, float, float]
 
@@ -42,7 +43,9 @@ class GeometryState:
         frames: base, settable and programmable frame.
         polar: pole and modal RP/AP.
         wcs_mm: the programmed end point per axis in the WCS, in mm (degrees for rotary axes).
-        tangent: WCS direction of travel at the end of the last path element (for CT).
+        end_tangent_known, end_element: the direction of travel at the end of the last path
+            element (WCS), or that element while its direction is not computed yet: only CT
+            reads it (:attr:`tangent`).
         pending: an element held back for a chamfer/rounding, or None.
         rndm_mm: modal rounding radius (RNDM), 0 = off.
         adis_mm, adispos_mm: G641 rounding distances of feed and G0 blocks (ADIS, ADISPOS).
@@ -74,7 +77,8 @@ class GeometryState:
     frames: FrameChain = field(default_factory=FrameChain)
     polar: PolarState = field(default_factory=PolarState)
     wcs_mm: dict[str, float] = field(default_factory=dict)
-    tangent: Vec3 | None = None
+    end_tangent_known: Vec3 | None = None
+    end_element: Any = None
     pending: PendingCorner | None = None
     rndm_mm: float = 0.0
     adis_mm: float = 0.0
@@ -92,6 +96,22 @@ class GeometryState:
     contour_first: tuple[float, str, Any] | None = None
     waiting: tuple[Any, ...] = ()
     spindle_check_due: bool = False
+
+    @property
+    def tangent(self) -> Vec3 | None:
+        """WCS direction of travel at the end of the last path element (for CT), None when
+        unknown; computed from the element the first time it is asked for."""
+        if self.end_element is not None:
+            self.end_tangent_known, self.end_element = end_tangent(self.end_element), None
+        return self.end_tangent_known
+
+    @tangent.setter
+    def tangent(self, direction: Vec3 | None) -> None:
+        self.end_tangent_known, self.end_element = direction, None
+
+    def tangent_at_end_of(self, element: Any) -> None:
+        """The last path element is ``element`` (a line or an arc): :attr:`tangent` is its end direction."""
+        self.end_tangent_known, self.end_element = None, element
 
     def __deepcopy__(self, memo: dict) -> "GeometryState":
         """Snapshots before each block: frames, pole and elements are immutable and shared

@@ -89,6 +89,14 @@ def plane(code: str, geometry_axes: Sequence[str] = GEOMETRY_AXES_DEFAULT) -> Pl
         KeyError: for a code that is not a plane selection.
     """
     names = tuple(geometry_axes)
-    if len(names) != 3:
-        raise ValueError("a plane needs exactly three geometry axes")
-    return Plane(code=code, indices=PLANE_AXIS_INDICES[code], geometry_axes=names)  # type: ignore[arg-type]
+    found = _PLANES.get((code, names))
+    if found is None:
+        if len(names) != 3:
+            raise ValueError("a plane needs exactly three geometry axes")
+        found = _PLANES[(code, names)] = Plane(code=code, indices=PLANE_AXIS_INDICES[code],
+                                               geometry_axes=names)  # type: ignore[arg-type]
+    return found
+
+
+_PLANES: dict[tuple[str, tuple[str, ...]], Plane] = {}
+"""The planes made so far (immutable; every path block asks for its plane)."""

@@ -20,7 +20,7 @@ The conversion factor is ``MD10250 SCALING_VALUE_INCH`` (default 25.4).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 INCH_MM = 25.4  # MD10250 SCALING_VALUE_INCH / MD31200 SCALING_FACTOR_G70_G71 default
 UNIT_CODES = ("G70", "G71", "G700", "G710")
@@ -39,10 +39,14 @@ class UnitSystem:
     code: str = "G71"
     basic_metric: bool = True
     inch_mm: float = INCH_MM
+    position_mm: float = field(init=False, repr=False, compare=False)
+    """Millimetres per programmed length unit (positions, I J K, CR, RP, lead, frames): set
+    from ``code`` once (every axis value of every block reads it)."""
 
     def __post_init__(self) -> None:
         if self.code not in UNIT_CODES:
             raise ValueError(f"not an inch/metric code: {self.code}")
+        object.__setattr__(self, "position_mm", self.inch_mm if self.programmed_inch else 1.0)
 
     @property
     def programmed_inch(self) -> bool:
@@ -53,11 +57,6 @@ class UnitSystem:
     def converts_feed(self) -> bool:
         """True when F is read in the programmed system (G700/G710)."""
         return self.code in ("G700", "G710")
-
-    @property
-    def position_mm(self) -> float:
-        """Millimetres per programmed length unit (positions, I J K, CR, RP, lead, frames)."""
-        return self.inch_mm if self.programmed_inch else 1.0
 
     @property
     def basic_mm(self) -> float:

@@ -31,7 +31,8 @@ from typing import Any
 
 import numpy as np
 
-from nck.geometry.path_builder import ROUND_DIGITS, line_tangent, machine_mm, round_position
+from nck.geometry.path_builder import ROUND_DIGITS, machine_mm, round_position
+from nck.geometry.tangents import line_tangent
 from nck.interp.host import InterpreterHost
 from nck.interp.plain_setup import GEOMETRY, Setup, plain_frame, simple_setup
 from nck.lang.plain import G_CODES, PLAIN_WORDS
