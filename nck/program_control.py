@@ -296,11 +296,10 @@ class ProgramRun:
             command = commands[self._index]
             if isinstance(command, ExactStop):
                 command = Dwell(command.source, seconds=0.0)  # the motion stops, then goes on
-            moves = isinstance(command, Motion)
-            if moves or isinstance(command, Dwell):
+            if isinstance(command, (Motion, Dwell)):
                 if not motion.can_accept():
                     return False
-                if moves and self._end_point is not None:
+                if isinstance(command, Motion) and self._end_point is not None:
                     try:
                         started = self._start_at_end_point(command)
                     except NcAlarmError as error:
@@ -312,7 +311,7 @@ class ProgramRun:
                         self._index += 1
                         continue
                     command = started
-                if moves:
+                if isinstance(command, Motion):
                     command = self._transform(command)
                     self.last_motion = command
                     self.basic_blocks.moved(command)
