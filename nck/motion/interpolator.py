@@ -22,7 +22,7 @@ from nck.motion.profile import build_profile
 from nck.motion.runs import PathRun
 
 RECHECK_CYCLES = 25
-SCALAR_SAMPLES = 4  # a straight block of up to this many samples is sampled with Python floats
+SCALAR_SAMPLES = 32  # a BRISK block of up to this many samples is sampled with Python floats
 ALARM_CONTROLLER_ENABLE = 21612
 MAX_DWELL_S = 1e9  # longer dwells are cut here (an infinite dwell would overflow the cycle count)
 
@@ -104,26 +104,16 @@ class PathInterpolator:
             run = self.run
             room = n - k
             m = _samples_within(run.tau, T, run.profile.duration_s + 1e-12, room)
-            if m == 1 and len(run.chain) == 1:
-                # One sample (the first cycle of the next block): scalar arithmetic.
-                tau = run.tau + T
-                point = run.chain[0].segment.position_at(run.s_begin + run.profile.distance_at(tau))
-                rows[k] = point
-                run.tau = tau
-                self.cmd = point
-                k += 1
-            elif 1 < m <= SCALAR_SAMPLES and len(run.chain) == 1 and run.chain[0].segment.arc is None \
-                    and run.profile.scalar_exact:
-                # A few samples of a straight block: the same values sample by sample (see
-                # Profile.scalar_exact), cheaper than numpy on a handful of rows.
-                segment, profile, tau0, s_begin = run.chain[0].segment, run.profile, run.tau, run.s_begin
-                point = self.cmd
-                for i in range(1, m + 1):
-                    point = segment.position_at(s_begin + profile.distance_at(tau0 + T * i))
-                    rows[k] = point
-                    k += 1
-                run.tau = tau0 + T * m
-                self.cmd = point
+            if m and len(run.chain) == 1 and (m == 1 or (m <= SCALAR_SAMPLES and run.profile.scalar_exact)):
+                # A few samples of one segment: Python floats, the same values as the numpy form
+                # below (see Profile.scalar_exact and Segment.points), cheaper on a handful of rows.
+                s_begin = run.s_begin
+                distances = run.profile.distances_after(run.tau, T, m)
+                block = np.array(run.chain[0].segment.points([s_begin + d for d in distances])).reshape(m, -1)
+                rows[k:k + m] = block
+                run.tau = run.tau + T * m
+                self.cmd = block[m - 1]  # a row of this fill's own array
+                k += m
             elif m:
                 taus = run.tau + self._sample_steps(m)
                 rows[k:k + m] = run.positions(run.profile.distances(taus))

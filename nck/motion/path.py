@@ -36,6 +36,7 @@ class Segment:
     def __post_init__(self) -> None:
         self.delta = self.end - self.start
         self._tangents: dict[bool, np.ndarray] = {}
+        self._floats: tuple[list[float], list[float], list[float]] | None = None  # start, delta, end
 
     def positions(self, s: np.ndarray) -> np.ndarray:
         """Positions at path distances ``s`` (shape ``(len(s), n_axes)``)."""
@@ -53,18 +54,33 @@ class Segment:
                 out[at_end] = self.end
         return out
 
-    def position_at(self, s: float) -> np.ndarray:
-        """The position at one path distance ``s`` (as :meth:`positions`, one row, fewer steps)."""
-        lam = min(max(s * (1.0 / self.length), 0.0), 1.0) if self.length > 0 else 1.0
-        out = self.start + lam * self.delta
-        if self.arc is not None:
+    def points(self, distances: list[float]) -> list[float]:
+        """Positions at path distances ``distances`` in Python floats, row after row in one flat
+        list: the rows of :meth:`positions` bit for bit (the same operations in the same order,
+        the arc's end pinned), cheaper than numpy for a handful of rows."""
+        floats = self._floats
+        if floats is None:
+            floats = self._floats = (self.start.tolist(), self.delta.tolist(), self.end.tolist())
+        start, delta, end = floats
+        length = self.length
+        inv = 1.0 / length if length > 0 else 0.0
+        arc = self.arc
+        out: list[float] = []
+        for s in distances:
+            lam = min(max(s * inv, 0.0), 1.0) if length > 0 else 1.0
+            if arc is None:
+                out.extend([x0 + lam * d for x0, d in zip(start, delta)])
+                continue
             if lam >= 1.0:
-                return self.end.copy()  # pinned, as in :meth:`positions`
-            i1, i2, c1, c2, r0, r1, th0, sweep = self.arc
+                out.extend(end)
+                continue
+            point = [x0 + lam * d for x0, d in zip(start, delta)]
+            i1, i2, c1, c2, r0, r1, th0, sweep = arc
             theta = th0 + lam * sweep
             radius = r0 + lam * (r1 - r0)
-            out[i1] = c1 + radius * math.cos(theta)
-            out[i2] = c2 + radius * math.sin(theta)
+            point[i1] = c1 + radius * math.cos(theta)
+            point[i2] = c2 + radius * math.sin(theta)
+            out.extend(point)
         return out
 
     def _derivatives(self, lam: float) -> tuple[np.ndarray, np.ndarray]:
@@ -92,7 +108,7 @@ class Segment:
             first = self.delta / self.length
         else:
             first, _ = self._derivatives(1.0 if at_end else 0.0)
-        norm = math.sqrt(float(first @ first))
+        norm = math.sqrt(float(first.dot(first)))  # numpy's dot (BLAS, fused multiply-add)
         result = first / norm if norm > 0 else first
         if self.arc is None:
             self._tangents[True] = self._tangents[False] = result  # a line has one direction

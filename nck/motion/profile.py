@@ -39,7 +39,7 @@ class Profile:
         self.duration_s = duration_s
         self.length = length
         self.v_end = v_end
-        # Without jerk (BRISK) and of sane duration, distance_at gives distances' values bit
+        # Without jerk (BRISK) and of sane duration, distances_after gives distances' values bit
         # for bit at any time: both add s0 + v0·dt, then the acceleration term; the jerk term
         # adds exactly zero (with jerk, numpy's and Python's dt**3 may round differently, and
         # dt**3 of a phase longer than 1e100 s could overflow).
@@ -115,19 +115,24 @@ class Profile:
         s = self.s0[idx] + self.v0[idx] * dt + self.a0[idx] * dt * dt / 2.0 + self.j[idx] * dt**3 / 6.0
         return np.minimum(s, self.length)
 
-    def distance_at(self, t: float) -> float:
-        """Distance at one time ``t`` with Python floats (same formula as :meth:`distances`)."""
-        t = min(max(t, 0.0), self.duration_s)
-        starts = self.starts
-        i = len(starts) - 1
-        while i > 0 and starts[i] > t:
-            i -= 1
-        t0, s0, v0, a, j = self.phases[i]
-        dt = t - t0
-        s = s0 + v0 * dt
-        if a != 0.0 or j != 0.0:
-            s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
-        return min(s, self.length)
+    def distances_after(self, tau: float, period: float, count: int) -> list[float]:
+        """Distances at ``tau + period·1`` … ``tau + period·count`` with Python floats (the same
+        formula as :meth:`distances`, term by term; the interpolator's form for short blocks)."""
+        phases, starts, duration, length = self.phases, self.starts, self.duration_s, self.length
+        last = len(starts) - 1
+        i = 0
+        out = []
+        for n in range(1, count + 1):
+            t = min(max(tau + period * n, 0.0), duration)
+            while i < last and starts[i + 1] <= t:
+                i += 1  # the times increase: the phase only moves forward
+            t0, s0, v0, a, j = phases[i]
+            dt = t - t0
+            s = s0 + v0 * dt
+            if a != 0.0 or j != 0.0:
+                s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
+            out.append(min(s, length))
+        return out
 
     def state_at(self, t: float) -> tuple[float, float, float]:
         """Distance, velocity and acceleration at one instant."""

@@ -16,7 +16,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nck.motion import servo_defer
-from nck.motion.path import line
+from nck.motion.interpolator import SCALAR_SAMPLES
+from nck.motion.path import Segment, line
 from nck.motion.profile import build_profile
 
 FINITE = st.floats(min_value=-1000.0, max_value=1000.0, allow_nan=False, allow_infinity=False)
@@ -68,7 +69,7 @@ def test_profile_columns_and_scalar_distance_match_the_phases(length: float, v0:
         assert getattr(profile, name).tolist() == columns[:, index].tolist()
     assert list(profile.starts) == columns[:, 0].tolist()
     for t in (0.0, fraction * profile.duration_s, profile.duration_s, profile.duration_s + 1.0):
-        assert profile.distance_at(t) == _reference_distance_at(profile, t)
+        assert profile.distances_after(t, 0.0, 1) == [_reference_distance_at(profile, t)]
 
 
 @settings(max_examples=200)
@@ -78,21 +79,21 @@ def test_a_line_has_one_tangent_at_both_ends(start: list[float], end: list[float
     if segment.length <= 1e-9:
         return
     first = segment.delta / segment.length
-    expected = first / math.sqrt(float(first @ first))  # the reference: numpy's dot, as the planner uses it
+    expected = first / math.sqrt(float(first @ first))  # the reference: numpy's dot (BLAS) as matmul
     assert segment.tangent(False).tolist() == expected.tolist()
     assert segment.tangent(True).tolist() == expected.tolist()
 
 
-@settings(max_examples=200)
+@settings(max_examples=300)
 @given(st.floats(0.01, 200.0), st.floats(0.0, 80.0), st.floats(0.0, 80.0), st.floats(1.0, 100.0),
-       st.floats(100.0, 5000.0), st.one_of(st.none(), st.floats(1e3, 1e5)), st.floats(0.0, 1.0),
-       st.integers(1, 4), st.floats(-0.004, 0.0))
+       st.floats(100.0, 5000.0), st.one_of(st.none(), st.floats(1e3, 1e5)), st.floats(-0.1, 1.0),
+       st.integers(1, SCALAR_SAMPLES), st.floats(-0.004, 0.0))
 def test_scalar_samples_of_a_brisk_profile_equal_the_numpy_samples(length: float, v0: float, v1: float,
                                                                     vmax: float, accel: float,
                                                                     jerk: float | None, fraction: float,
                                                                     samples: int, carry: float) -> None:
-    """The interpolator samples a few cycles of a straight BRISK block with distance_at; the
-    numpy form (distances) over the same times must give the same floats."""
+    """The interpolator samples a short BRISK block with distances_after; the numpy form
+    (distances) over the same times must give the same floats, across phases and past the end."""
     profile = build_profile(length, v0, v1, vmax, accel, jerk)
     assert profile.scalar_exact == (jerk is None or all(row[4] == 0.0 for row in profile.phases))
     if not profile.scalar_exact:
@@ -101,4 +102,37 @@ def test_scalar_samples_of_a_brisk_profile_equal_the_numpy_samples(length: float
     tau0 = carry + fraction * profile.duration_s
     times = tau0 + period * np.arange(1, samples + 1)
     expected = profile.distances(times).tolist()
-    assert [profile.distance_at(tau0 + period * i) for i in range(1, samples + 1)] == expected
+    assert profile.distances_after(tau0, period, samples) == expected
+
+
+ANGLE = st.floats(min_value=-4.0 * math.pi, max_value=4.0 * math.pi, allow_nan=False)
+
+
+@settings(max_examples=400)
+@given(st.lists(FINITE, min_size=3, max_size=3), st.floats(0.01, 500.0), st.floats(0.01, 500.0), ANGLE,
+       st.floats(-3.0 * math.pi, 3.0 * math.pi).filter(lambda sweep: abs(sweep) > 1e-6),
+       st.lists(st.floats(-0.5, 1.5), min_size=1, max_size=SCALAR_SAMPLES), st.floats(-20.0, 20.0))
+def test_points_of_an_arc_equal_the_numpy_positions(centre: list[float], r0: float, r1: float, th0: float,
+                                                    sweep: float, fractions: list[float], dz: float) -> None:
+    """Segment.points (math.cos, math.sin) gives Segment.positions' rows (numpy's cos, sin)
+    bit for bit, for arcs, helices and spirals, with the end pinned and the fractions clipped."""
+    c1, c2, z = centre
+    th1 = th0 + sweep
+    start = np.array([c1 + r0 * math.cos(th0), c2 + r0 * math.sin(th0), z])
+    end = np.array([c1 + r1 * math.cos(th1), c2 + r1 * math.sin(th1), z + dz])
+    length = math.hypot(abs(sweep) * (r0 + r1) / 2.0, dz)
+    segment = Segment(start=start, end=end, length=length, arc=(0, 1, c1, c2, r0, r1, th0, sweep))
+    distances = [f * length for f in fractions]
+    assert segment.points(distances) == segment.positions(np.array(distances)).reshape(-1).tolist()
+
+
+@settings(max_examples=300)
+@given(st.lists(FINITE, min_size=3, max_size=3), st.lists(FINITE, min_size=3, max_size=3),
+       st.lists(st.floats(-0.5, 1.5), min_size=1, max_size=SCALAR_SAMPLES))
+def test_points_of_a_line_equal_the_numpy_positions(start: list[float], end: list[float],
+                                                    fractions: list[float]) -> None:
+    segment = line(np.array(start), np.array(end), np.ones(3, dtype=bool))
+    if segment.length <= 1e-9:
+        return  # not a segment: the motion drops such a block
+    distances = [f * segment.length for f in fractions]
+    assert segment.points(distances) == segment.positions(np.array(distances)).reshape(-1).tolist()
