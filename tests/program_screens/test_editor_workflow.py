@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 import screens.program
+from hmi.i18n import set_language
 
 from tests.program_screens.conftest import SIZE, make_program_app, settle
 
@@ -184,11 +185,13 @@ async def test_a_program_that_cannot_be_read_is_named_once(data_dir: Path, monke
         await pilot.pause()
         said = str(app.screen.query_one("#dialog-line").render())
         assert said == "Not opened: MPF/BIG.MPF: larger than 1000 bytes"
-        app.select_language("de")
-        await pilot.pause()
-        app.screen.open_program("MPF/BIG.MPF")
-        await pilot.pause()
-        said = str(app.screen.query_one("#dialog-line").render())
+        set_language("de")
+        try:
+            app.screen.open_program("MPF/BIG.MPF")
+            await pilot.pause()
+            said = str(app.screen.query_one("#dialog-line").render())
+        finally:
+            set_language("en")
         assert said == "Nicht geöffnet: MPF/BIG.MPF: größer als 1000 Byte"
 
 
