@@ -220,6 +220,18 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         """Edit softkey: show the edit sub-level."""
         self.push_softkeys(self.edit_menu())
 
+    def pop_softkeys(self) -> bool:
+        """Leave the current softkey level; leaving the Edit level ends a marking (as Mark again)."""
+        if self._mark_anchor is not None:
+            self.unmark()
+        return super().pop_softkeys()
+
+    def clear_softkey_levels(self) -> None:
+        """Back to the top softkey level (another area chosen, a program closed): no marking stays."""
+        if self._mark_anchor is not None:
+            self.unmark()
+        super().clear_softkey_levels()
+
     def action_pop_menu(self) -> None:
         """Back one softkey level."""
         self.pop_softkeys()
@@ -259,7 +271,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self.binary = binary
         self.saved_text = decoded
         self._dirty = False
-        self._mark_anchor = None
+        self._stop_marking()
         self._journaled_hash = ""
         self.files.last_program = self.program
         editor = self.editor

@@ -15,9 +15,13 @@ from textual.widgets import Input
 from textual.widgets.text_area import Selection
 
 from hmi.focus import focus_now
-from hmi.i18n import _
+from hmi.i18n import N_, _
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.nc_editor import find_text, renumber_blocks
+
+
+MARKING = N_("Marking: move the cursor, then Copy / Cut / Delete")
+"""The dialog line while a block is being marked (Edit → Mark); it goes when the marking ends."""
 
 
 class EditActions:
@@ -25,6 +29,7 @@ class EditActions:
 
     editor: Any
     search_open: bool
+    area_hint: str
     _mark_anchor: tuple[int, int] | None
 
     def edit_menu(self) -> SoftkeyMenu:
@@ -69,12 +74,23 @@ class EditActions:
         """Mark: start (or end) marking a block from the cursor."""
         if self._mark_anchor is None:
             self._mark_anchor = self.editor.cursor_location
-            self.say(_("Marking: move the cursor, then Copy / Cut / Delete"))
+            self.say(_(MARKING))
         else:
-            self._mark_anchor = None
-            self.editor.selection = Selection.cursor(self.editor.cursor_location)
-            self.say("")
+            self.unmark()
         focus_now(self.editor)
+
+    def unmark(self) -> None:
+        """End the marking without using the block (Mark again, the Edit level left): nothing
+        stays marked."""
+        self._stop_marking()
+        self.editor.selection = Selection.cursor(self.editor.cursor_location)
+
+    def _stop_marking(self) -> None:
+        """No marking any more: the dialog line no longer says how to mark (a message said
+        since, such as "2 line(s) copied", stays)."""
+        self._mark_anchor = None
+        if self.area_hint == _(MARKING):
+            self.say("")
 
     def _selected_text(self) -> str:
         return self.editor.selected_text
@@ -110,7 +126,7 @@ class EditActions:
         self._end_mark()
 
     def _end_mark(self) -> None:
-        self._mark_anchor = None
+        self._stop_marking()
         focus_now(self.editor)
         self.refresh_softkeys()
 

@@ -272,6 +272,31 @@ async def test_mark_copy_paste(data_dir: Path) -> None:
         assert screen.editor.text == "A1\nB2\nC3\nA1\n"
 
 
+MARKING = "Marking: move the cursor, then Copy / Cut / Delete"
+
+
+@pytest.mark.parametrize("leave", [("f8",), ("f10",), ("f3",), ("f5",), ("ctrl+end", "f4")],
+                         ids=["back", "menu-recall", "cut", "delete", "paste"])
+async def test_the_marking_line_goes_when_marking_ends(data_dir: Path, leave: tuple[str, ...]) -> None:
+    """Edit → Mark says how to mark; Back, MENU RECALL, Cut, Delete and Paste end the marking, and
+    the dialog line no longer says it."""
+    (data_dir / "MPF" / "NUM.MPF").write_text("A1\nB2\nC3\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "down", "f3")
+        await pilot.pause()
+        screen = app.screen
+        line = screen.query_one("#dialog-line")
+        await pilot.press("f1", "f1", "down")  # Edit, Mark, cursor down
+        await pilot.pause()
+        assert str(line.render()) == MARKING
+        app.copy_to_clipboard("Z9\n")
+        await pilot.press(*leave)
+        await pilot.pause()
+        assert str(line.render()) == ""
+        assert screen._mark_anchor is None
+
+
 async def test_simulation_shows_the_toolpath(data_dir: Path) -> None:
     """Simulation draws the moves of DEMO.MPF; views and zoom by softkeys; F8 back to the editor."""
     app = make_program_app(data_dir)
