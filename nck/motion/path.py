@@ -54,14 +54,18 @@ class Segment:
                 out[at_end] = self.end
         return out
 
+    def _lists(self) -> tuple[list[float], list[float], list[float]]:
+        """``start``, ``delta`` and ``end`` as lists of Python floats (made on first use)."""
+        floats = self._floats
+        if floats is None:
+            floats = self._floats = (self.start.tolist(), self.delta.tolist(), self.end.tolist())
+        return floats
+
     def points(self, distances: list[float]) -> list[float]:
         """Positions at path distances ``distances`` in Python floats, row after row in one flat
         list: the rows of :meth:`positions` bit for bit (the same operations in the same order,
         the arc's end pinned), cheaper than numpy for a handful of rows."""
-        floats = self._floats
-        if floats is None:
-            floats = self._floats = (self.start.tolist(), self.delta.tolist(), self.end.tolist())
-        start, delta, end = floats
+        start, delta, end = self._lists()
         length = self.length
         inv = 1.0 / length if length > 0 else 0.0
         arc = self.arc
@@ -85,19 +89,19 @@ class Segment:
 
     def _derivatives(self, lam: float) -> tuple[np.ndarray, np.ndarray]:
         """d/ds and d²/ds² of the position at ``lam`` (fraction of the length)."""
-        first = (self.end - self.start) / self.length
-        second = np.zeros_like(first)
+        length = self.length
+        first = [d / length for d in self._lists()[1]]
+        second = [0.0] * len(first)
         if self.arc is not None:
             i1, i2, _c1, _c2, r0, r1, th0, sweep = self.arc
             th = th0 + lam * sweep
             r = r0 + lam * (r1 - r0)
             dr = r1 - r0
-            length = self.length
             first[i1] = (dr * math.cos(th) - r * sweep * math.sin(th)) / length
             first[i2] = (dr * math.sin(th) + r * sweep * math.cos(th)) / length
             second[i1] = (-2 * dr * sweep * math.sin(th) - r * sweep * sweep * math.cos(th)) / length**2
             second[i2] = (2 * dr * sweep * math.cos(th) - r * sweep * sweep * math.sin(th)) / length**2
-        return first, second
+        return np.array(first), np.array(second)
 
     def tangent(self, at_end: bool) -> np.ndarray:
         """Unit tangent at the start or the end."""

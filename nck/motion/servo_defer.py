@@ -46,16 +46,7 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
             return None  # a contour deviation: the full model decides
         previous = bank.x_set
         start = np.abs(bank.e).tolist()
-    if rows.shape[0] <= SMALL_ROWS:
-        tops, lows = speed_range_of_rows(rows.tolist(), previous.tolist(), bank.inv_t)
-    else:
-        v = np.empty_like(rows)
-        np.subtract(rows[0], previous, out=v[0])
-        np.subtract(rows[1:], rows[:-1], out=v[1:])
-        v *= bank.inv_t
-        speed = np.abs(v)
-        tops = speed.max(axis=0).tolist()
-        lows = speed.min(axis=0).tolist()
+    tops, lows = speed_range(rows, previous, bank.inv_t)
     out = []
     for (e_per_v, kv, ffw, ctrlout, velo, decay_rate, b_rate, small_e), top, low, e0 in zip(
             bank.bound_tables, tops, lows, start):
@@ -68,21 +59,37 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
     return out
 
 
+def speed_range(rows: np.ndarray, previous: np.ndarray, inv_t: float) -> tuple[list[float], list[float]]:
+    """Largest and smallest setpoint speed |difference × 1/T| of every axis over ``rows``
+    (``previous``: the setpoint before them); up to SMALL_ROWS rows in Python floats."""
+    if rows.shape[0] <= SMALL_ROWS:
+        return speed_range_of_rows(rows.tolist(), previous.tolist(), inv_t)
+    step = np.empty_like(rows)
+    np.subtract(rows[0], previous, out=step[0])
+    np.subtract(rows[1:], rows[:-1], out=step[1:])
+    np.abs(step, out=step)
+    # Scaled after the max and min, as in speed_range_of_rows: the same floats.
+    return [top * inv_t for top in step.max(axis=0).tolist()], [low * inv_t for low in step.min(axis=0).tolist()]
+
+
 def speed_range_of_rows(rows: list[list[float]], previous: list[float], inv_t: float) -> tuple[list[float], list[float]]:
-    """Largest and smallest setpoint speed of every axis over a few rows, in Python floats
-    (the same operations as the numpy form: difference, times 1/T, absolute value)."""
+    """Largest and smallest setpoint speed of every axis over a few rows, in Python floats.
+
+    The same values as the numpy form |difference × 1/T|: the step is scaled after taking the
+    largest and smallest, which gives the same floats because rounding is monotonic (a ≤ b
+    gives fl(a·c) ≤ fl(b·c) for c > 0) and symmetric (|fl(d·c)| = fl(|d|·c))."""
     tops: list[float] = []
     lows: list[float] = []
     before = previous
     for row in rows:
-        speeds = [abs((x - x0) * inv_t) for x, x0 in zip(row, before)]
+        steps = [abs(x - x0) for x, x0 in zip(row, before)]
         if tops:
-            tops = [top if top >= speed else speed for top, speed in zip(tops, speeds)]
-            lows = [low if low <= speed else speed for low, speed in zip(lows, speeds)]
+            tops = [top if top >= step else step for top, step in zip(tops, steps)]
+            lows = [low if low <= step else step for low, step in zip(lows, steps)]
         else:
-            tops, lows = speeds, speeds
+            tops, lows = steps, steps
         before = row
-    return tops, lows
+    return [top * inv_t for top in tops], [low * inv_t for low in lows]
 
 
 def settle(bank: ServoModel) -> None:

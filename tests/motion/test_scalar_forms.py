@@ -34,13 +34,13 @@ def _numpy_speed_range(rows: np.ndarray, previous: np.ndarray, inv_t: float) -> 
 
 
 @settings(max_examples=300)
-@given(st.integers(1, 8).flatmap(lambda m: st.lists(st.lists(FINITE, min_size=3, max_size=3),
-                                                     min_size=m + 1, max_size=m + 1)))
-def test_small_speed_range_equals_the_numpy_form(points: list[list[float]]) -> None:
+@given(st.integers(1, 40).flatmap(lambda m: st.lists(st.lists(FINITE, min_size=3, max_size=3),
+                                                      min_size=m + 1, max_size=m + 1)))
+def test_speed_range_equals_the_numpy_form(points: list[list[float]]) -> None:
+    """Up to SMALL_ROWS rows in Python floats, more in numpy; both scale after the max and min."""
     previous, rows = np.array(points[0]), np.array(points[1:])
     inv_t = 1.0 / 0.004
-    small = servo_defer.speed_range_of_rows(rows.tolist(), previous.tolist(), inv_t)
-    assert small == _numpy_speed_range(rows, previous, inv_t)
+    assert servo_defer.speed_range(rows, previous, inv_t) == _numpy_speed_range(rows, previous, inv_t)
 
 
 def _reference_distance_at(profile, t: float) -> float:
@@ -136,3 +136,33 @@ def test_points_of_a_line_equal_the_numpy_positions(start: list[float], end: lis
         return  # not a segment: the motion drops such a block
     distances = [f * segment.length for f in fractions]
     assert segment.points(distances) == segment.positions(np.array(distances)).reshape(-1).tolist()
+
+
+def _reference_derivatives(segment: Segment, lam: float) -> tuple[np.ndarray, np.ndarray]:
+    """The reference: the numpy form of an arc's first and second derivative (the former form)."""
+    first = (segment.end - segment.start) / segment.length
+    second = np.zeros_like(first)
+    i1, i2, _c1, _c2, r0, r1, th0, sweep = segment.arc
+    th, r, dr, length = th0 + lam * sweep, r0 + lam * (r1 - r0), r1 - r0, segment.length
+    first[i1] = (dr * math.cos(th) - r * sweep * math.sin(th)) / length
+    first[i2] = (dr * math.sin(th) + r * sweep * math.cos(th)) / length
+    second[i1] = (-2 * dr * sweep * math.sin(th) - r * sweep * sweep * math.cos(th)) / length**2
+    second[i2] = (2 * dr * sweep * math.cos(th) - r * sweep * sweep * math.sin(th)) / length**2
+    return first, second
+
+
+@settings(max_examples=300)
+@given(st.lists(FINITE, min_size=3, max_size=3), st.floats(0.01, 500.0), st.floats(0.01, 500.0), ANGLE,
+       st.floats(-3.0 * math.pi, 3.0 * math.pi).filter(lambda sweep: abs(sweep) > 1e-6), st.floats(-20.0, 20.0))
+def test_tangent_and_curvature_of_an_arc_equal_the_numpy_form(centre: list[float], r0: float, r1: float,
+                                                              th0: float, sweep: float, dz: float) -> None:
+    c1, c2, z = centre
+    th1 = th0 + sweep
+    start = np.array([c1 + r0 * math.cos(th0), c2 + r0 * math.sin(th0), z])
+    end = np.array([c1 + r1 * math.cos(th1), c2 + r1 * math.sin(th1), z + dz])
+    length = math.hypot(abs(sweep) * (r0 + r1) / 2.0, dz)
+    segment = Segment(start=start, end=end, length=length, arc=(0, 1, c1, c2, r0, r1, th0, sweep))
+    for at_end in (False, True):
+        first, second = _reference_derivatives(segment, 1.0 if at_end else 0.0)
+        assert segment.curvature(at_end).tolist() == second.tolist()
+        assert segment.tangent(at_end).tolist() == (first / math.sqrt(float(first @ first))).tolist()
