@@ -12,11 +12,14 @@ How a display block is written (002 L23656-23800, "Structure for a DIN block"):
 
 - the block number of the original block, left out when the block runs under ``DISPLOF``;
 - the G code of group 1 when it differs from that of the last motion block;
-- the axes the block moves, with their absolute end positions in the WCS (the transverse axis
-  as a diameter under DIAMON, as the program writes it); an axis that does not move keeps the
-  last value shown (the manual's example shows ``N20 G91 X1`` as ``N20 X11.123``, L23733);
-  circles add their centre as absolute values (``I=AC(…)``); positions with at most three
-  decimals (MD9004's default resolution);
+- the axes the block programs, with their absolute end positions in the WCS ("Programmed axis
+  positions are represented as absolute positions", L23726-23728; the manual's example shows
+  ``N20 G91 X1`` as ``N20 X11.123``, L23733), also when the axis does not move; an axis the
+  block does not program is left out. The block's text names its axes; an axis the text cannot
+  name (``AX[_AX]=`` of a cycle, an ISO block) is shown when the block moves it. The transverse
+  axis as a diameter under DIAMON, as the program writes it; circles add their centre as
+  absolute values (``I=AC(…)``); positions with at most three decimals (MD9004's default
+  resolution);
 - F when a block other than G0 moves at a feed that differs from the last one shown;
 - the other addresses of the block as values: T, D, S and M3/M4/M5, SPOS, M and H functions,
   the dwell ``G4 F…``/``G4 S…``, M0/M1 and the program end.
@@ -25,18 +28,23 @@ Our choices where the manual says more than we model: the other modal G codes ar
 (the manual collects changed ones into the next block), nor labels; a block that only
 computes (a cycle's arithmetic, jumps) has no display block. The block search interprets
 without taking blocks, so it writes none (002 L23610: the display is off during block search);
-the first block after it shows every axis again.
+the first block after it shows its G code and F again.
+
+The words of a block's positions are made when the block is shown (most never are): the run
+only keeps each segment (:meth:`BasicBlockLog.moved`), on the path of every block.
 """
 
 from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from nck.canon import (
     AuxFunction, CanonCommand, Dwell, EdgeSelect, Motion, ProgramEnd, SpindleCommand, StopPoint,
     Source, ToolSelect,
 )
+from nck.block_search import programmed_axes
 from nck.interp.api import BlockResult
 from nck.number_text import trimmed
 from nck.status import BlockView
@@ -51,38 +59,52 @@ CENTRE_WORDS = {"G17": {"X": "I", "Y": "J"}, "G18": {"Z": "K", "X": "I"}, "G19":
 STOP_WORDS = frozenset({"M0", "M00", "M1", "M01"})
 
 
-PositionWord = tuple[str, float, float | None]
-"""An axis' end written when the display block is shown: (axis, end, the last end before it or
-None). Its word is the axis with the end's text, left out when the text equals the last end's
-(an end that differs below the display resolution shows nothing new)."""
-
-
 @dataclass(slots=True)
 class _DisplayBlock:
-    """One display block while it is written: its source and its words."""
+    """One display block while it is written: its source, its text and its words (a segment of
+    the block stands for its position and centre words until the block is shown)."""
 
     source: Source
     seq: int
     label: str
-    motion_words: list[str | PositionWord] = field(default_factory=list)
+    text: str
+    motion_words: list[str | Motion] = field(default_factory=list)
     other_words: list[str] = field(default_factory=list)
     shown: BlockView | None = None  # the view, made again when a word was added
 
     def view(self) -> BlockView:
         if self.shown is None:
-            words = ([self.label] if self.label else []) + [
-                word for word in map(_motion_word, self.motion_words) if word] + self.other_words
+            words = [self.label] if self.label else []
+            for word in self.motion_words:
+                if isinstance(word, str):
+                    words.append(word)
+                else:
+                    words += _segment_words(word, _programmed(self.text, frozenset(word.end_wcs)))
+            words += self.other_words
             self.shown = BlockView(self.source.file, self.source.line, " ".join(words))
         return self.shown
 
 
-def _motion_word(word: str | PositionWord) -> str:
-    """The text of a motion word ('' for a position whose text did not change)."""
-    if isinstance(word, str):
-        return word
-    axis, end, last = word
-    shown = _shown(end)
-    return "" if last is not None and _shown(last) == shown else f"{axis}{shown}"
+@lru_cache(maxsize=1024)
+def _programmed(text: str, axes: frozenset[str]) -> frozenset[str]:
+    """The axes among ``axes`` the block ``text`` names (none when it is not a Siemens block)."""
+    return programmed_axes(text, axes) or frozenset()
+
+
+def _segment_words(motion: Motion, programmed: frozenset[str]) -> list[str]:
+    """The position words of a segment (the axes ``programmed``, and those it moves) and the
+    words of a circle's centre."""
+    words = []
+    start_mcs, end_mcs = motion.start_mcs, motion.end_mcs
+    for axis, value in motion.end_wcs.items():
+        moved = _shown(float(start_mcs.get(axis, value))) != _shown(float(end_mcs.get(axis, value)))
+        if axis in programmed or moved:
+            words.append(f"{axis}{_shown(float(value))}")
+    centre_words = CENTRE_WORDS.get(motion.plane, {})
+    for axis, value in (motion.center_wcs or {}).items():
+        if axis in centre_words:
+            words.append(f"{centre_words[axis]}=AC({_shown(float(value))})")
+    return words
 
 
 class BasicBlockLog:
@@ -94,7 +116,6 @@ class BasicBlockLog:
         self._seq = 0
         self._motion_code: str | None = None
         self._feed: float | None = None
-        self._positions: dict[str, float] = {}  # per axis: the last end
 
     def taken(self, block: BlockResult) -> None:
         """A block taken for execution: a display block when it acts on the machine."""
@@ -109,7 +130,7 @@ class BasicBlockLog:
         if not words and not moves:
             return
         label = "" if block.extras.get("display_off") or source.n is None else f"N{source.n}"
-        entry = _DisplayBlock(source, self._seq, label, [], words)
+        entry = _DisplayBlock(source, self._seq, label, block.text, [], words)
         self._seq += 1
         if len(self._blocks) == self._blocks.maxlen:
             dropped = self._blocks.popleft()
@@ -131,25 +152,13 @@ class BasicBlockLog:
         if motion.kind != self._motion_code:
             words.append(motion.kind)
             self._motion_code = motion.kind
-        positions = self._positions
-        for axis, value in motion.end_wcs.items():
-            end = float(value)
-            last = positions.get(axis)
-            if last is not None and last == end:
-                continue  # the same value: the same text
-            words.append((axis, end, last))  # its text when the block is shown (most never are)
-            positions[axis] = end
-        centre_words = CENTRE_WORDS.get(motion.plane, {})
-        for axis, value in (motion.center_wcs or {}).items():
-            if axis in centre_words:
-                words.append(f"{centre_words[axis]}=AC({_shown(float(value))})")
+        words.append(motion)  # its position and centre words when the block is shown
         if motion.kind != "G0" and motion.feed is not None and motion.feed != self._feed:
             words.append(f"F{trimmed(motion.feed)}")
             self._feed = motion.feed
 
     def forget_positions(self) -> None:
-        """After a block search: the next display block shows every axis and its G code."""
-        self._positions.clear()
+        """After a block search: the next display block shows its G code and F again."""
         self._motion_code = None
         self._feed = None
 

@@ -4,8 +4,8 @@ absolute end positions in the WCS (002 L23515-23530, L23656-23760; nck/basic_blo
 The expected blocks are written by hand: the cycles' motion from their documented sequence
 (data/cycles/README.md: CYCLE81 rapid to RFP+SDIS, at the feed to the depth, rapid to RTP;
 HOLES1's row from SPCA/SPCO, FDIS and DBH), the form of each display block from the manual's
-rules (G group 1 only when changed, L23663; no block number under DISPLOF, L23677; absolute
-positions, L23726-23733; values instead of variables, L23738-23742).
+rules (G group 1 only when changed, L23663; no block number under DISPLOF, L23677; the programmed
+axes with absolute positions, L23726-23733; values instead of variables, L23738-23742).
 """
 
 from __future__ import annotations
@@ -105,8 +105,8 @@ def test_the_block_in_execution_is_marked_and_prepared_blocks_follow_it() -> Non
 
 def test_block_search_writes_no_display_blocks() -> None:
     # 002 L23610: the basic block display is off during block search. After a search with
-    # calculation to N40 the only display block is N40's, with every axis (nothing before it
-    # was shown).
+    # calculation to N40 the only display block is N40's, with the axis it programs (L23726-23728)
+    # and its G code and F (nothing before it was shown).
     program = "N10 G0 X5 Y5 Z5\nN20 X10\nN30 Y20\nN40 G1 Z-1 F100\nN50 M30\n"
     nck = _selected(program, motion_factory=instant_motion_factory)
     assert nck.submit(c.StartBlockSearch("N40", "contour")) == c.Accepted()
@@ -120,16 +120,30 @@ def test_block_search_writes_no_display_blocks() -> None:
         if nck.positions_mcs()["Z"] < 0.0:
             break
     assert nck.positions_mcs()["Z"] == -1.0 and nck.situation.program == "stopped"
-    assert [b.text for b in nck.status().channel.basic_blocks][:1] == ["N40 G1 X10 Y20 Z-1 F100"]
+    assert [b.text for b in nck.status().channel.basic_blocks][:1] == ["N40 G1 Z-1 F100"]
 
 
-def test_a_change_below_the_shown_resolution_writes_no_position_word() -> None:
-    # The display shows positions to 0.001 mm (nck/basic_blocks.py, _shown): an end that reads the
-    # same as the last one (10.0001 and 10.0004 read 10.000 like 10) is no word; 10.0006 reads
-    # 10.001 and is one. This guards the display rule, not a manual figure.
+def test_programmed_positions_are_shown_to_the_display_resolution() -> None:
+    # The display shows positions to 0.001 mm (MD9004's default, nck/basic_blocks.py _shown):
+    # 10.0001 and 10.0004 read X10, 0.9996 reads Z1, 10.0006 reads X10.001; every programmed
+    # axis is shown, also where its text equals the last one (002 L23726-23728).
     program = "N5 G0 X0 Y0 Z0\nN10 X10 Z1\nN20 G1 X10.0001 F100\nN30 X10.0004 Z0.9996\nN40 X10.0006\nN50 M30\n"
     nck = _selected(program, motion_factory=instant_motion_factory)
     assert nck.submit(c.CycleStart()) == c.Accepted()
     assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
     texts = [block.text for block in nck.status().channel.basic_blocks]
-    assert texts[1:5] == ["N10 X10 Z1", "N20 G1 F100", "N30", "N40 X10.001"]
+    assert texts[1:5] == ["N10 X10 Z1", "N20 G1 X10 F100", "N30 X10 Z1", "N40 X10.001"]
+
+
+def test_a_block_shows_the_axes_it_programs_and_no_other() -> None:
+    # 002 L23726-23728: "Programmed axis positions are represented as absolute positions"; the
+    # display block is derived from the programmed block (L23674). The run starts at X0 Y0 Z0:
+    # N10 programs X only (Y and Z are not shown, though nothing was shown before); N30 programs
+    # X10 Y5 where the axes already stand and shows both; N40 G91 X0 shows X absolute, X10
+    # (as N20 G91 X1 is shown N20 X11.123, L23733).
+    program = "N10 G0 X10\nN20 G1 X10 Y5 F100\nN30 X10 Y5\nN40 G0 G91 X0\nN50 M30\n"
+    nck = _selected(program, motion_factory=instant_motion_factory)
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+    texts = [block.text for block in nck.status().channel.basic_blocks]
+    assert texts == ["N10 G0 X10", "N20 G1 X10 Y5 F100", "N30 X10 Y5", "N40 G0 X10", "N50 M30"]
