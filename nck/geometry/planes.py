@@ -30,6 +30,9 @@ PLANE_AXIS_INDICES: dict[str, tuple[int, int, int]] = {
 
 Vec3 = tuple[float, float, float]
 
+_NORMALS: tuple[Vec3, Vec3, Vec3] = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+"""The unit vector of geometry axis 1, 2, 3 (a plane's normal is its applicate's)."""
+
 
 @dataclass(frozen=True, slots=True)
 class Plane:
@@ -79,7 +82,7 @@ class Plane:
 
     def normal(self) -> Vec3:
         """Unit vector of the applicate, in geometry-axis order."""
-        return self.from_plane((0.0, 0.0, 1.0))
+        return _NORMALS[self.indices[2]]
 
 
 def plane(code: str, geometry_axes: Sequence[str] = GEOMETRY_AXES_DEFAULT) -> Plane:
