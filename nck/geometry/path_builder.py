@@ -143,6 +143,7 @@ class PathBuilder:
         self._display_axes: dict[str | None, tuple[tuple[str, bool, bool], ...]] = {}  # by G group 29 code
         self._gcodes_copies: list[Mapping[int, str]] = []  # the motions' shared G-code tables (shared_gcodes)
         self._line_frame_kept: tuple[Any, Any, LineFrame | None] = (None, None, None)
+        self._tool_vectors: dict[tuple, Mapping[str, float]] = {}  # _tool_lengths by its inputs
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -319,7 +320,7 @@ class PathBuilder:
         params = found.params
         key = (plane_code, length_const, length_type, wear_sign, data_mm, self.geo_axes,
                tuple(map(params.get, _LENGTH_PARAMS, _LENGTH_DEFAULTS)))
-        cache = self.__dict__.setdefault("_tool_vectors", {})
+        cache = self._tool_vectors
         vector = cache.get(key)
         if vector is None:
             if len(cache) > 256:

@@ -85,11 +85,14 @@ class Transform:
 
     def apply(self, point: Mapping[str, float]) -> dict[str, float]:
         """Map a point (all geometry axes present, missing ones count as 0) to the parent."""
-        values = [float(point.get(a, 0.0)) for a in self.geometry_axes]
+        first, second, third = self.geometry_axes
+        get = point.get
+        values = [float(get(first, 0.0)), float(get(second, 0.0)), float(get(third, 0.0))]
         affine = self.axis_affine()
         if affine is not None and math.isfinite(values[0] + values[1] + values[2]):
             scales, offsets = affine  # the matrix product below, without numpy's call overhead
-            out = {axis: values[i] * scales[i] + offsets[i] for i, axis in enumerate(self.geometry_axes)}
+            out = {first: values[0] * scales[0] + offsets[0], second: values[1] * scales[1] + offsets[1],
+                   third: values[2] * scales[2] + offsets[2]}
         else:
             mapped = self.matrix @ np.array(values + [1.0])
             out = {axis: float(mapped[i]) for i, axis in enumerate(self.geometry_axes)}
