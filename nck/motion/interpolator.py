@@ -109,10 +109,13 @@ class PathInterpolator:
                 # below (see Profile.scalar_exact and Segment.points), cheaper on a handful of rows.
                 s_begin = run.s_begin
                 distances = run.profile.distances_after(run.tau, T, m)
-                block = np.array(run.chain[0].segment.points([s_begin + d for d in distances])).reshape(m, -1)
-                rows[k:k + m] = block
+                flat = run.chain[0].segment.points([s_begin + d for d in distances])
+                if m == 1:
+                    rows[k] = flat  # (the first cycle of every block: no array made for it)
+                else:
+                    rows[k:k + m] = np.array(flat).reshape(m, -1)
                 run.tau = run.tau + T * m
-                self.cmd = block[m - 1]  # a row of this fill's own array
+                self.cmd = rows[k + m - 1].copy()
                 k += m
             elif m:
                 taus = run.tau + self._sample_steps(m)
