@@ -590,8 +590,9 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         text = self.editor.text
         try:
             self.files.fs.save(self.program, text)
-        except Exception as exc:  # storage refusals are notifications
-            self.say(_("{program} not saved: {error}").format(program=self.program, error=error_text(exc)))
+        except (StorageError, OSError) as exc:  # a file problem is a notification, never a traceback
+            # the refusal names what is in the way ("MPF/X.MPF: larger than …", "WKS/W.WPD does not exist")
+            self.say(_("Not saved: {reason}").format(reason=error_text(exc)))
             return False
         self.saved_text = text
         self._dirty = False

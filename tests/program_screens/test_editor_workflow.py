@@ -362,3 +362,32 @@ async def test_simulation_marks_the_current_block_in_auto(data_dir: Path) -> Non
         assert block is not None and block.line > 1
         assert screen.toolpath.current_line == block.line
         assert any(p.line == block.line for p in screen.toolpath.pieces)
+
+
+async def test_a_refused_save_says_why_and_a_bug_is_not_hidden(data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Save refused by the NC file system: the dialog line says why, naming the program once (German
+    too); any other exception is a bug and propagates instead of becoming a panel message."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "down", "f3")  # DEMO.MPF
+        await pilot.pause()
+        screen = app.screen
+        assert screen.program == "MPF/DEMO.MPF"
+        monkeypatch.setattr("nck.storage.MAX_IMPORT_BYTES", 10)  # the text no longer fits the NC memory
+        assert screen.action_save() is False
+        said = str(screen.query_one("#dialog-line").render())
+        assert said == "Not saved: MPF/DEMO.MPF is too large for the NC memory"
+        set_language("de")
+        try:
+            screen.action_save()
+            said = str(screen.query_one("#dialog-line").render())
+        finally:
+            set_language("en")
+        assert said == "Nicht gespeichert: MPF/DEMO.MPF ist zu groß für den NC-Speicher"
+
+        def broken_save(path: str, text: str) -> None:
+            raise ZeroDivisionError("a bug")
+
+        monkeypatch.setattr(screen.files.fs, "save", broken_save)
+        with pytest.raises(ZeroDivisionError):
+            screen.action_save()
