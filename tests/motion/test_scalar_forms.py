@@ -108,6 +108,16 @@ def test_scalar_samples_of_a_brisk_profile_equal_the_numpy_samples(length: float
 ANGLE = st.floats(min_value=-4.0 * math.pi, max_value=4.0 * math.pi, allow_nan=False)
 
 
+def _arc_segment(centre: list[float], r0: float, r1: float, th0: float, sweep: float, dz: float) -> Segment:
+    """An arc, helix or spiral in the XY plane around ``centre`` (radius r0 → r1, rising dz)."""
+    c1, c2, z = centre
+    th1 = th0 + sweep
+    start = np.array([c1 + r0 * math.cos(th0), c2 + r0 * math.sin(th0), z])
+    end = np.array([c1 + r1 * math.cos(th1), c2 + r1 * math.sin(th1), z + dz])
+    length = math.hypot(abs(sweep) * (r0 + r1) / 2.0, dz)
+    return Segment(start=start, end=end, length=length, arc=(0, 1, c1, c2, r0, r1, th0, sweep))
+
+
 @settings(max_examples=400)
 @given(st.lists(FINITE, min_size=3, max_size=3), st.floats(0.01, 500.0), st.floats(0.01, 500.0), ANGLE,
        st.floats(-3.0 * math.pi, 3.0 * math.pi).filter(lambda sweep: abs(sweep) > 1e-6),
@@ -116,13 +126,8 @@ def test_points_of_an_arc_equal_the_numpy_positions(centre: list[float], r0: flo
                                                     sweep: float, fractions: list[float], dz: float) -> None:
     """Segment.points (math.cos, math.sin) gives Segment.positions' rows (numpy's cos, sin)
     bit for bit, for arcs, helices and spirals, with the end pinned and the fractions clipped."""
-    c1, c2, z = centre
-    th1 = th0 + sweep
-    start = np.array([c1 + r0 * math.cos(th0), c2 + r0 * math.sin(th0), z])
-    end = np.array([c1 + r1 * math.cos(th1), c2 + r1 * math.sin(th1), z + dz])
-    length = math.hypot(abs(sweep) * (r0 + r1) / 2.0, dz)
-    segment = Segment(start=start, end=end, length=length, arc=(0, 1, c1, c2, r0, r1, th0, sweep))
-    distances = [f * length for f in fractions]
+    segment = _arc_segment(centre, r0, r1, th0, sweep, dz)
+    distances = [f * segment.length for f in fractions]
     assert segment.points(distances) == segment.positions(np.array(distances)).reshape(-1).tolist()
 
 
@@ -156,12 +161,7 @@ def _reference_derivatives(segment: Segment, lam: float) -> tuple[np.ndarray, np
        st.floats(-3.0 * math.pi, 3.0 * math.pi).filter(lambda sweep: abs(sweep) > 1e-6), st.floats(-20.0, 20.0))
 def test_tangent_and_curvature_of_an_arc_equal_the_numpy_form(centre: list[float], r0: float, r1: float,
                                                               th0: float, sweep: float, dz: float) -> None:
-    c1, c2, z = centre
-    th1 = th0 + sweep
-    start = np.array([c1 + r0 * math.cos(th0), c2 + r0 * math.sin(th0), z])
-    end = np.array([c1 + r1 * math.cos(th1), c2 + r1 * math.sin(th1), z + dz])
-    length = math.hypot(abs(sweep) * (r0 + r1) / 2.0, dz)
-    segment = Segment(start=start, end=end, length=length, arc=(0, 1, c1, c2, r0, r1, th0, sweep))
+    segment = _arc_segment(centre, r0, r1, th0, sweep, dz)
     for at_end in (False, True):
         first, second = _reference_derivatives(segment, 1.0 if at_end else 0.0)
         assert segment.curvature(at_end).tolist() == second.tolist()
