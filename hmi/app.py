@@ -50,7 +50,7 @@ from nck import commands as cmd
 from nck.commands import Accepted, SubmitResult
 from nck import queries
 from nck.status import NckStatus
-from nck import TERMINATION_SIGNALS, exit_on_termination
+from nck import TERMINATION_SIGNALS, StorageError, exit_on_termination
 
 from hmi.alarm_times import AlarmTimes
 from hmi.area import MIN_TERMINAL_SIZE, AreaBase
@@ -567,7 +567,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         """
         try:
             return list(self.bridge.query(queries.ProgramNames()))
-        except Exception:  # a broken listing shows as an empty list
+        except (StorageError, OSError):  # an unreadable NC folder shows as an empty list
             return []
 
     def program_text(self, name: str) -> ProgramLines | None:
@@ -584,7 +584,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
         if callable(reader):
             try:
                 found = reader(name)
-            except Exception:  # an unreadable program is shown as not available
+            except (StorageError, OSError):  # an unreadable program is shown as not available
                 found = None
         if found is None:
             return None

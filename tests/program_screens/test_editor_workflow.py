@@ -391,3 +391,26 @@ async def test_a_refused_save_says_why_and_a_bug_is_not_hidden(data_dir: Path, m
         monkeypatch.setattr(screen.files.fs, "save", broken_save)
         with pytest.raises(ZeroDivisionError):
             screen.action_save()
+
+
+async def test_an_unreadable_nc_folder_lists_no_programs_and_a_bug_is_not_hidden(
+        data_dir: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The program selection's list: an NC folder the disk refuses reads as no programs; any
+    other exception in the listing is a bug and propagates (it is not shown as an empty list)."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert "MPF/DEMO.MPF" in app.program_names()
+
+        def refused(self: object) -> list[object]:
+            raise PermissionError(13, "Permission denied")
+
+        monkeypatch.setattr("nck.storage.NcFileSystem.all_programs", refused)
+        assert app.program_names() == []
+
+        def broken(self: object) -> list[object]:
+            raise ZeroDivisionError("a bug")
+
+        monkeypatch.setattr("nck.storage.NcFileSystem.all_programs", broken)
+        with pytest.raises(ZeroDivisionError):
+            app.program_names()
