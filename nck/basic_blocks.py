@@ -157,7 +157,7 @@ class BasicBlockLog:
             words.append(f"F{trimmed(motion.feed)}")
             self._feed = motion.feed
 
-    def forget_positions(self) -> None:
+    def forget_shown_modals(self) -> None:
         """After a block search: the next display block shows its G code and F again."""
         self._motion_code = None
         self._feed = None

@@ -512,7 +512,7 @@ class ProgramRun:
         finally:
             if isinstance(flags, dict):
                 flags["search"] = False
-        self.basic_blocks.forget_positions()
+        self.basic_blocks.forget_shown_modals()
         return result
 
     def _search_without_calculation(self, number: int | None, text: str, result: SearchFindings) -> None:
