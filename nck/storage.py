@@ -557,13 +557,14 @@ class NcFileSystem:
     def export_file(self, path: str, local_path: Path | str, replace: bool = False) -> Path:
         """Copy a program to the local file system (atomically); return the file written.
 
-        ``local_path`` may be a directory: the program's file name is used there.
-        An existing file is replaced only with ``replace`` (else ``ExportTargetExists``
-        is raised: ask first); a link or pipe there is refused, never written through.
+        ``local_path`` may be a directory, or a text ending in a slash (a folder, made if
+        missing): the program's file name is used there. An existing file is replaced only with
+        ``replace`` (else ``ExportTargetExists`` is raised: ask first); a link or pipe there is
+        refused, never written through.
         """
         canonical = self.canonical(path)
         local = Path(local_path)
-        if local.is_dir():
+        if local.is_dir() or str(local_path).endswith(("/", os.sep)):
             local = local / canonical.rpartition("/")[2]
         try:
             write_export(local, self.read_bytes(canonical), replace=replace)

@@ -16,6 +16,7 @@ the list), ← / → move between the tree and the list.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import ClassVar
 
@@ -544,7 +545,7 @@ class ProgramManagerScreen(AreaBase):
             if not path:
                 return
             try:
-                target = self.files.fs.export_file(entry.path, Path(path).expanduser(), replace)
+                target = self.files.fs.export_file(entry.path, os.path.expanduser(path), replace)  # (keeps a final /)
             except ExportTargetExists as exc:
                 question = _("{filename} already exists. Replace it?").format(filename=exc.filename)
                 self.app.push_screen(ConfirmDialog(question),

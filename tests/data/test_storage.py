@@ -267,7 +267,12 @@ def test_an_export_below_a_file_is_a_failure_not_a_question(tmp_path):
             fs.export_file("MPF/PART.MPF", below)
         assert not isinstance(refusal.value, FileExistsError)
         assert str(refusal.value) == f"{tmp_path / 'plain.txt'}: a file, not a folder"  # the file in the way
+    with pytest.raises(StorageError) as refusal:  # typed as a folder: the file there is in the way
+        fs.export_file("MPF/PART.MPF", f"{tmp_path / 'plain.txt'}/")
+    assert str(refusal.value) == f"{tmp_path / 'plain.txt'}: a file, not a folder"
     assert (tmp_path / "plain.txt").read_text() == ""
+    fs.export_file("MPF/PART.MPF", f"{tmp_path / 'folder'}/")  # a folder typed with its slash is made
+    assert (tmp_path / "folder" / "PART.MPF").read_text() == "M30\n"
     fs.export_file("MPF/PART.MPF", tmp_path / "new" / "sub" / "PART.MPF")  # missing folders are made
     assert (tmp_path / "new" / "sub" / "PART.MPF").read_text() == "M30\n"
     (tmp_path / "out.MPF").write_text("")
