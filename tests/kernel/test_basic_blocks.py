@@ -29,6 +29,14 @@ def _marked(nck: Nck) -> str:
     return channel.basic_blocks[channel.basic_block_index].text
 
 
+def _basic_blocks_after_run(program: str) -> list[str]:
+    """The basic block display's texts after ``program`` ran to its end in AUTO."""
+    nck = _selected(program, motion_factory=instant_motion_factory)
+    assert nck.submit(c.CycleStart()) == c.Accepted()
+    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
+    return [block.text for block in nck.status().channel.basic_blocks]
+
+
 def _single_block_stops(program: str) -> list[tuple[str, str, float, float, float]]:
     """At every SBL1 stop: (the program display's block number, the marked basic block, X, Y, Z)."""
     nck = _selected(program)
@@ -128,10 +136,7 @@ def test_programmed_positions_are_shown_to_the_display_resolution() -> None:
     # 10.0001 and 10.0004 read X10, 0.9996 reads Z1, 10.0006 reads X10.001; every programmed
     # axis is shown, also where its text equals the last one (002 L23726-23728).
     program = "N5 G0 X0 Y0 Z0\nN10 X10 Z1\nN20 G1 X10.0001 F100\nN30 X10.0004 Z0.9996\nN40 X10.0006\nN50 M30\n"
-    nck = _selected(program, motion_factory=instant_motion_factory)
-    assert nck.submit(c.CycleStart()) == c.Accepted()
-    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
-    texts = [block.text for block in nck.status().channel.basic_blocks]
+    texts = _basic_blocks_after_run(program)
     assert texts[1:5] == ["N10 X10 Z1", "N20 G1 X10 F100", "N30 X10 Z1", "N40 X10.001"]
 
 
@@ -142,8 +147,5 @@ def test_a_block_shows_the_axes_it_programs_and_no_other() -> None:
     # X10 Y5 where the axes already stand and shows both; N40 G91 X0 shows X absolute, X10
     # (as N20 G91 X1 is shown N20 X11.123, L23733).
     program = "N10 G0 X10\nN20 G1 X10 Y5 F100\nN30 X10 Y5\nN40 G0 G91 X0\nN50 M30\n"
-    nck = _selected(program, motion_factory=instant_motion_factory)
-    assert nck.submit(c.CycleStart()) == c.Accepted()
-    assert nck.run_until(lambda k: k.situation.channel == "reset", 10.0)
-    texts = [block.text for block in nck.status().channel.basic_blocks]
+    texts = _basic_blocks_after_run(program)
     assert texts == ["N10 G0 X10", "N20 G1 X10 Y5 F100", "N30 X10 Y5", "N40 G0 X10", "N50 M30"]
