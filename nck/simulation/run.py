@@ -341,16 +341,17 @@ class PathRecorder:
             self._ends.extend(end)
             self.counts.append(1)
         else:
-            # Each chord starts where the one before ends; its length as numpy's norm sums it
-            # (the squares added along the row, then the roots over the chords).
-            starts = np.empty_like(points)
-            starts[0] = start
-            starts[1:] = points[:-1]
-            steps = points - starts
-            length = float(np.sqrt((steps * steps).sum(axis=1)).sum())
-            self._starts.frombytes(starts.tobytes())
-            self._ends.frombytes(points.tobytes())
-            self.counts.append(len(points))
+            # Each chord starts where the one before ends; its length as the straight move's
+            # above, the lengths summed by numpy (its pairwise sum, as the former array form).
+            starts = [*start, *points[:-3]]
+            lengths = []
+            for i in range(0, len(points), 3):
+                dx, dy, dz = points[i] - starts[i], points[i + 1] - starts[i + 1], points[i + 2] - starts[i + 2]
+                lengths.append(math.sqrt(dx * dx + dy * dy + dz * dz))
+            length = float(np.sum(lengths))
+            self._starts.extend(starts)
+            self._ends.extend(points)
+            self.counts.append(len(lengths))
         feed = DEFAULT_RAPID_MM_MIN if kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
         self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
         # The first motion comes from wherever the machine stands (the reference point, beyond
@@ -406,9 +407,9 @@ class PathRecorder:
                 float(mcs["Y"]) - shift[1] if "Y" in mcs else (keep[1] if keep is not None else 0.0),
                 float(mcs["Z"]) - shift[2] if "Z" in mcs else (keep[2] if keep is not None else 0.0))
 
-    def _points_in_blank(self, motion: canon.Motion, start: Point, end: Point, shift: Point) -> np.ndarray | None:
-        """The chords' end points of a mill's arc in the blank's frame, from its MCS geometry
-        (None: one chord): a frame that mirrors or rotates in the plane moves the cut where the
+    def _points_in_blank(self, motion: canon.Motion, start: Point, end: Point, shift: Point) -> list[float] | None:
+        """The chords' end points (x, y, z after x, y, z) of a mill's arc in the blank's frame,
+        from its MCS geometry (None: one chord): a frame that mirrors or rotates in the plane moves the cut where the
         machine cuts. An arc whose axis is not the plane's normal in the MCS (a frame tilting
         the plane) is one chord (our choice)."""
         if not motion.center_mcs:
@@ -425,8 +426,8 @@ class PathRecorder:
         return self._arc_chords(start, end, (float(centre[plane[0]]), float(centre[plane[1]])), plane, clockwise,
                                 motion.turns)
 
-    def _points(self, motion: canon.Motion, start: Point, end: Point) -> np.ndarray | None:
-        """The chords' end points of an arc in the WCS (None: one chord)."""
+    def _points(self, motion: canon.Motion, start: Point, end: Point) -> list[float] | None:
+        """The chords' end points (x, y, z after x, y, z) of an arc in the WCS (None: one chord)."""
         if not motion.center_wcs:
             return None
         plane = _PLANE_INDEX.get(motion.plane, (0, 1))
@@ -436,7 +437,7 @@ class PathRecorder:
         return self._arc_chords(start, end, c, plane, motion.kind == "G2", motion.turns)
 
     def _arc_chords(self, start: Point, end: Point, centre: tuple[float, float], plane: tuple[int, int],
-                    clockwise: bool, turns: int) -> np.ndarray | None:
+                    clockwise: bool, turns: int) -> list[float] | None:
         segment = arc_segment(np.array(start), np.array(end), centre, plane, clockwise, turns, _LINEAR_MASK)
         if segment.arc is None:
             return None
@@ -446,10 +447,11 @@ class PathRecorder:
         count = max(1, int(math.ceil(sweep / max(step, 1e-6))))
         # The chords' ends at equal path steps, as numpy's linspace(0, length, count + 1)[1:]
         # (i × step, the last exactly the length): the arc's length exceeds MIN_LENGTH_MM.
-        distances = np.arange(1.0, count + 1.0) * (segment.length / count)
-        distances[-1] = segment.length
-        points = segment.positions(distances)
-        points[-1] = end
+        # Python floats (Segment.points): an arc is mostly a few chords, where numpy's fixed
+        # cost per call was most of the recorder's time for it.
+        step_mm = segment.length / count
+        points = segment.points([i * step_mm for i in range(1, count)] + [segment.length])
+        points[-3:] = end
         return points
 
     def toolpath(self) -> Toolpath:
