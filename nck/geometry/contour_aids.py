@@ -31,9 +31,10 @@ TANGENT_EPS = 1e-9
 SEARCH_STEPS = 60
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class LineElement:
-    """A straight path element from ``start`` to ``end`` (geometry axes, mm)."""
+    """A straight path element from ``start`` to ``end`` (geometry axes, mm); immutable by
+    contract, not frozen for the cost of construction (as :class:`Arc`)."""
 
     start: Vec3
     end: Vec3

@@ -796,13 +796,35 @@ class PathBuilder:
     # ---------------------------------------------------------------- MCS mapping
     def _mcs_of(self, point: tuple[float, float, float], context: Mapping[str, Any],
                 start_mcs: Mapping[str, float], kept: tuple[str, ...]) -> dict[str, float]:
-        """MCS of a WCS geometry point; the ``kept`` axes (:meth:`_kept_axes`) stay where they are."""
+        """MCS of a WCS geometry point; the ``kept`` axes (:meth:`_kept_axes`) stay where they are.
+
+        On a frame that maps every geometry axis on its own (:meth:`Transform.axis_affine`, the
+        frame of almost every block) through the factors of :meth:`_line_frame`, as a line on
+        such a frame: :func:`machine_mm` is what :meth:`Transform.apply` and the tool's
+        addition compute there, without a point dict per call."""
         transform: Transform = context["transform"]
         tool: Mapping[str, float] = context["tool"]
+        if self.geo_axes == GEOMETRY_AXES_DEFAULT and transform.geometry_axes == GEOMETRY_AXES_DEFAULT \
+                and math.isfinite(point[0] + point[1] + point[2]):
+            frame = self._line_frame(transform, tool)
+            if frame is not None:
+                other = context["end_other"]
+                out: dict[str, float] = {}
+                for axis, i, scale, offset, tool_mm in frame.axes:
+                    if i >= 0:
+                        value = machine_mm(float(point[i]), scale, offset, tool_mm)
+                    elif axis in other:
+                        value = (scale * float(other[axis]) + offset) + tool_mm
+                    else:
+                        value = 0.0 + tool_mm
+                    if axis in kept:
+                        value = start_mcs.get(axis, value)
+                    out[axis] = round_position(value)
+                return out
         full = {"X": point[0], "Y": point[1], "Z": point[2]}
         full.update(context["end_other"])
         bcs = transform.apply(full)
-        out: dict[str, float] = {}
+        out = {}
         for axis in self.path_axes:
             value = bcs.get(axis, 0.0) + tool.get(axis, 0.0)
             if axis in kept:
@@ -968,7 +990,7 @@ def _map_normal(transform: Transform, axis: tuple[float, float, float]) -> dict[
     Cached per transform and axis: an arc program turns about the same few axes.
     """
     normals = transform.__dict__.setdefault("_arc_normals", {})
-    key = tuple(float(v) for v in axis)
+    key = (float(axis[0]), float(axis[1]), float(axis[2]))
     found = normals.get(key)
     if found is None:
         a = transform.matrix[:3, :3]

@@ -195,6 +195,8 @@ class Interpreter:
         if self.run_state.finished or not self.run_state.frames:
             return False
         frame = self.run_state.frames[-1]
+        if frame.program.without_dollar:
+            return False  # no line of the program reads variables
         if frame.pc >= len(frame.program.lines) or frame.program.plain_run_end(frame.pc) > frame.pc:
             return False  # (a plain block reads no variables: no need to parse it here)
         lines = frame.program.lines

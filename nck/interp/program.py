@@ -59,6 +59,9 @@ class Program:
             duplicate labels).
         proc: the PROC statement of the first block, if any.
         plain_starts, plain_stops: the runs of plain lines of a scanned text.
+        without_dollar: a scanned text without any ``$``: none of its lines reads main-run
+            data (one scan of the text at load time instead of a look at every line as it
+            comes, :meth:`Interpreter.needs_preprocessing_stop`).
     """
 
     name: str
@@ -72,6 +75,7 @@ class Program:
     proc: ast.Proc | None = None
     plain_starts: array | None = None  # scanned programs: first line of every run of plain lines
     plain_stops: array | None = None  # … and the line after its last one
+    without_dollar: bool = False
 
     def __deepcopy__(self, memo: dict) -> "Program":
         """Programs are immutable once loaded: snapshots share them."""
@@ -215,7 +219,8 @@ def _load_siemens(name: str, text: str) -> Program:
         text = text.replace("\r\n", "\n").replace("\r", "\n")
     count = text.count("\n") + (0 if not text or text.endswith("\n") else 1)
     lines = TextLines(text, count, line_checkpoints(text), {})
-    program = Program(name=name, lines=lines, plain_starts=array("q"), plain_stops=array("q"))
+    program = Program(name=name, lines=lines, plain_starts=array("q"), plain_stops=array("q"),
+                      without_dollar="$" not in text)
     indexer = _Indexer(program)
     errors = lines.errors
     starts, stops = program.plain_starts, program.plain_stops
