@@ -23,9 +23,12 @@ run: $(STAMP)
 # Three workers on two cores, work stealing: the Pilot, subprocess and browser tests spend part of
 # their time waiting, and a third worker fills it (clean clone, idle: 9 min 10 s with -n 2,
 # 7 min 28 s with -n 3 --dist worksteal).
+# PYTHONDONTWRITEBYTECODE cleared: pytest then keeps its assertion-rewritten test modules in
+# __pycache__ (it reads them even when the variable is set, but writes them only when it is not);
+# without them every worker rewrites all 400 test modules at every run (about 10 s of CPU each).
 test: $(STAMP) browser
 	$(COMPILE)
-	$(BIN)/python -m pytest -q -n 3 --dist worksteal -p no:cacheprovider --durations=15
+	PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n 3 --dist worksteal -p no:cacheprovider --durations=15
 
 # Headless Chromium for the browser test of `hmi --serve` (tests/hmi/test_browser.py):
 # Debian's packages, installed when make runs as root (CI does); elsewhere the test is skipped.
