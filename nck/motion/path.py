@@ -87,21 +87,20 @@ class Segment:
             out.extend(point)
         return out
 
-    def _derivatives(self, lam: float) -> tuple[np.ndarray, np.ndarray]:
-        """d/ds and d²/ds² of the position at ``lam`` (fraction of the length)."""
+    def _arc_at(self, lam: float) -> tuple[int, int, float, float, float, float]:
+        """The arc's plane axes, angle, radius, radius change and sweep at ``lam``."""
+        i1, i2, _c1, _c2, r0, r1, th0, sweep = self.arc  # type: ignore[misc]
+        return i1, i2, th0 + lam * sweep, r0 + lam * (r1 - r0), r1 - r0, sweep
+
+    def _first_derivative(self, lam: float) -> list[float]:
+        """d/ds of the position at ``lam`` (fraction of the length)."""
         length = self.length
         first = [d / length for d in self._lists()[1]]
-        second = [0.0] * len(first)
         if self.arc is not None:
-            i1, i2, _c1, _c2, r0, r1, th0, sweep = self.arc
-            th = th0 + lam * sweep
-            r = r0 + lam * (r1 - r0)
-            dr = r1 - r0
+            i1, i2, th, r, dr, sweep = self._arc_at(lam)
             first[i1] = (dr * math.cos(th) - r * sweep * math.sin(th)) / length
             first[i2] = (dr * math.sin(th) + r * sweep * math.cos(th)) / length
-            second[i1] = (-2 * dr * sweep * math.sin(th) - r * sweep * sweep * math.cos(th)) / length**2
-            second[i2] = (2 * dr * sweep * math.cos(th) - r * sweep * sweep * math.sin(th)) / length**2
-        return np.array(first), np.array(second)
+        return first
 
     def tangent(self, at_end: bool) -> np.ndarray:
         """Unit tangent at the start or the end."""
@@ -111,7 +110,7 @@ class Segment:
         if self.arc is None:
             first = self.delta / self.length
         else:
-            first, _ = self._derivatives(1.0 if at_end else 0.0)
+            first = np.array(self._first_derivative(1.0 if at_end else 0.0))
         norm = math.sqrt(float(first.dot(first)))  # numpy's dot (BLAS, fused multiply-add)
         result = first / norm if norm > 0 else first
         if self.arc is None:
@@ -122,8 +121,13 @@ class Segment:
 
     def curvature(self, at_end: bool) -> np.ndarray:
         """Curvature vector d²p/ds² at the start or the end (zero for lines)."""
-        _, second = self._derivatives(1.0 if at_end else 0.0)
-        return second
+        second = [0.0] * len(self._lists()[1])
+        if self.arc is not None:
+            length = self.length
+            i1, i2, th, r, dr, sweep = self._arc_at(1.0 if at_end else 0.0)
+            second[i1] = (-2 * dr * sweep * math.sin(th) - r * sweep * sweep * math.cos(th)) / length**2
+            second[i2] = (2 * dr * sweep * math.cos(th) - r * sweep * sweep * math.sin(th)) / length**2
+        return np.array(second)
 
     def max_direction_share(self) -> np.ndarray:
         """Upper bound of |dp_k/ds| over the segment, per axis."""
@@ -165,10 +169,12 @@ def arc(
     """An arc (helix when other axes move too) in the plane of axes ``plane_idx``."""
     i1, i2 = plane_idx
     c1, c2 = center
-    r0 = math.hypot(start[i1] - c1, start[i2] - c2)
-    r1 = math.hypot(end[i1] - c1, end[i2] - c2)
-    th0 = math.atan2(start[i2] - c2, start[i1] - c1)
-    th1 = math.atan2(end[i2] - c2, end[i1] - c1)
+    # Python floats (the same float64 arithmetic as numpy's scalars, without their cost).
+    starts, ends = start.tolist(), end.tolist()
+    r0 = math.hypot(starts[i1] - c1, starts[i2] - c2)
+    r1 = math.hypot(ends[i1] - c1, ends[i2] - c2)
+    th0 = math.atan2(starts[i2] - c2, starts[i1] - c1)
+    th1 = math.atan2(ends[i2] - c2, ends[i1] - c1)
     two_pi = 2.0 * math.pi
     if clockwise:
         sweep = -((th0 - th1) % two_pi)
@@ -181,11 +187,9 @@ def arc(
             sweep = two_pi
         sweep += two_pi * max(turns, 0)
     planar = abs(sweep) * (r0 + r1) / 2.0
-    other = end - start
-    other_mask = linear_mask.copy()
-    other_mask[i1] = False
-    other_mask[i2] = False
-    length = math.hypot(planar, *other[other_mask].tolist())
+    others = [e - s for i, (s, e, linear) in enumerate(zip(starts, ends, linear_mask.tolist()))
+              if linear and i != i1 and i != i2]
+    length = math.hypot(planar, *others)
     if r0 <= MIN_LENGTH_MM or length <= MIN_LENGTH_MM:
         return line(start, end, linear_mask)
     return Segment(
