@@ -22,7 +22,6 @@ from pathlib import Path
 
 import pytest
 from textual import events
-from textual.keys import _character_to_key, key_to_character
 
 from textual.widgets import Input, TextArea
 
@@ -31,6 +30,7 @@ from hmi.key_input import PanelKeyParser
 from hmi.keymap import default_keymap
 from tests.hmi.conftest import SIZE
 from tests.hmi.terminal_bytes import terminal_bytes
+from tests.one_key import key_event, send_key
 
 MODES = {"JOG", "MDA", "AUTO"}
 CHANNEL_STATES = {"reset", "active", "interrupted"}
@@ -66,28 +66,6 @@ def assert_consistent(app) -> None:
         assert math.isfinite(axis.position_mcs) and math.isfinite(axis.position_wcs), axis
     for alarm in status.alarms:
         assert isinstance(alarm.number, int) and alarm.number > 0 and alarm.text
-
-
-def key_event(key: str) -> events.Key:
-    """The Key event Pilot's ``press`` would send for ``key`` (a key name or one character)."""
-    name = _character_to_key(key) if len(key) == 1 and not key.isalnum() else key
-    char = key if len(key) == 1 else key_to_character(key)
-    return events.Key(name, char)
-
-
-async def send_key(app, pilot, key: str) -> None:
-    """Send one key and wait until the screen has handled it.
-
-    ``pilot.press`` adds two of Textual's idle detections (20 ms sleeps each, more
-    while the app works) per key; here the key is posted and the app and the
-    screen drain their queues (``pause(0)``), which makes the long monkey about
-    three times faster. Keys still arrive one at a time, after the last one was
-    handled.
-    """
-    event = key_event(key)
-    event.set_sender(app)
-    app.post_message(event)
-    await pilot.pause(0)
 
 
 async def send_terminal_keys(app, pilot, parser: PanelKeyParser, keys: list[str],
