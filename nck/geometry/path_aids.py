@@ -11,7 +11,7 @@ element unchanged when the program stops or ends first.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Mapping
 
 from nck.alarm_ids import CHAMFER_OR_ROUNDING_NEGATIVE, CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION
 from nck import canon
@@ -46,8 +46,12 @@ def aid_of(words: Any, geo: GeometryState, units: UnitSystem) -> tuple[str, floa
 
 def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
                       element: LineElement | Arc, context: dict[str, Any],
-                      start_mcs: dict[str, float], units: UnitSystem) -> list[canon.Motion]:
-    """Emit ``element``, finishing a held-back corner first; hold ``element`` if it has an aid."""
+                      start_mcs: dict[str, float], units: UnitSystem,
+                      shown_end: Mapping[str, float] | None = None) -> list[canon.Motion]:
+    """Emit ``element``, finishing a held-back corner first; hold ``element`` if it has an aid.
+
+    ``shown_end``: the element's end in the WCS display (:meth:`PathBuilder.emit`), used when
+    no corner trims the element."""
     out: list[canon.Motion] = []
     in_plane = moves_in_plane(element, pl)
     pending = geo.pending
@@ -87,7 +91,7 @@ def with_contour_aids(builder: Any, words: Any, geo: GeometryState, pl: Plane,
     if aid is not None and not in_plane and ("CHF" in words.words or "CHR" in words.words
                                              or "RND" in words.words):
         raise NcAlarmError(CHAMFER_OR_ROUNDING_WITHOUT_PATH_MOTION)
-    out.append(builder.emit(element, context, start_mcs))
+    out.append(builder.emit(element, context, start_mcs, shown_end=shown_end if pending is None else None))
     return out
 
 

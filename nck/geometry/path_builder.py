@@ -465,9 +465,10 @@ class PathBuilder:
         start_mcs = dict(modal.position_mcs)
         geo.wcs_mm = end
         held_before = geo.pending is not None
-        out = path_aids.with_contour_aids(self, words, geo, pl, element, context, start_mcs, units)
+        position_wcs = self.wcs_view(geo, modal)  # the element's end as shown: emit's too when it goes out as is
+        out = path_aids.with_contour_aids(self, words, geo, pl, element, context, start_mcs, units, position_wcs)
         geo.tangent_at_end_of(element)
-        modal.position_wcs = self.wcs_view(geo, modal)
+        modal.position_wcs = position_wcs
         if not held_before and geo.pending is None and len(out) == 1:
             modal.position_mcs = dict(out[0].end_mcs)  # the element itself went out: its end, computed once
         else:
@@ -875,8 +876,13 @@ class PathBuilder:
         return feed.get("feed_mm_min")
 
     def emit(self, element: LineElement | Arc, context: Mapping[str, Any], start_mcs: Mapping[str, float],
-             kind: str | None = None, inserted: bool = False, keep: bool = True) -> canon.Motion:
-        """Turn a WCS element into a canonical motion."""
+             kind: str | None = None, inserted: bool = False, keep: bool = True,
+             shown_end: Mapping[str, float] | None = None) -> canon.Motion:
+        """Turn a WCS element into a canonical motion.
+
+        ``shown_end``: the element's end as :meth:`wcs_view` shows it, when the caller has it
+        (the block's own element, not trimmed by a corner): the same values ``_wcs_out`` of the
+        end computes (the end point's geometry axes and ``end_other`` are the block's end)."""
         kind = kind or context["kind"]
         kept = self._kept_axes(context) if keep and not inserted else ()
         end_mcs = self._mcs_of(element.end, context, start_mcs, kept)
@@ -896,7 +902,7 @@ class PathBuilder:
             turns = element.turns
             if kind not in ARC_KINDS:
                 kind = "G2" if element.clockwise_in(plane(context["plane"], self.geo_axes)) else "G3"
-        end_wcs = self._wcs_out(element.end, context)
+        end_wcs = dict(shown_end) if shown_end is not None else self._wcs_out(element.end, context)
         if kept:
             transform = context["transform"]
             scales_offsets = transform.axis_affine() or (transform.matrix.diagonal(), transform.matrix[:, 3])
