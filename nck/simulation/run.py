@@ -54,6 +54,7 @@ from nck.ncdata import NcData
 from nck.phrase import Phrase
 from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_from_text
 from nck.simulation.cutter import Cutter
+from nck.simulation.pairwise import pairwise_sum
 from nck.simulation.turning import Insert, TurnProfile, bar, bar_around, half_section
 from nck.simulation.zmap import ZMap
 from nck.workpiece import Cylinder, MachineSetup
@@ -342,13 +343,13 @@ class PathRecorder:
             self.counts.append(1)
         else:
             # Each chord starts where the one before ends; its length as the straight move's
-            # above, the lengths summed by numpy (its pairwise sum, as the former array form).
+            # above, the lengths summed in numpy's pairwise order (as the former array form).
             starts = [*start, *points[:-3]]
             lengths = []
             for i in range(0, len(points), 3):
                 dx, dy, dz = points[i] - starts[i], points[i + 1] - starts[i + 1], points[i + 2] - starts[i + 2]
                 lengths.append(math.sqrt(dx * dx + dy * dy + dz * dz))
-            length = float(np.sum(lengths))
+            length = pairwise_sum(lengths)
             self._starts.extend(starts)
             self._ends.extend(points)
             self.counts.append(len(lengths))
