@@ -129,9 +129,10 @@ class Segment:
             second[i2] = (2 * dr * sweep * math.cos(th) - r * sweep * sweep * math.sin(th)) / length**2
         return np.array(second)
 
-    def max_direction_share(self) -> np.ndarray:
+    def max_direction_share(self) -> list[float]:
         """Upper bound of |dp_k/ds| over the segment, per axis."""
-        share = np.abs(self.delta) / self.length
+        length = self.length
+        share = [abs(d) / length for d in self._lists()[1]]
         if self.arc is not None:
             i1, i2, _c1, _c2, r0, r1, _th0, sweep = self.arc
             bound = (abs(r1 - r0) + max(r0, r1) * abs(sweep)) / self.length

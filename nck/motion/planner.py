@@ -133,13 +133,13 @@ def plan_segment(
 ) -> PlannedSegment:
     """Compute the limits of one segment (``accel_factors``: ACC per axis, 1 = 100 %)."""
     share = segment.max_direction_share()
-    moved = share > 1e-12
+    moved = np.array([part > 1e-12 for part in share])
     axes = params.axes
     arrays = axis_arrays(params)
     v_cap = a_lin = j_lin = math.inf
     moving = False
     for index, (part, (vmax, amax, jmax, g0_accel, g0_jerk, soft_accel)) in enumerate(
-            zip(share.tolist(), arrays.rows)):
+            zip(share, arrays.rows)):
         if part <= 1e-12:
             continue
         moving = True
