@@ -71,9 +71,9 @@ class Limits:
     def check_segment(self, segment: Segment, referenced: list[bool]) -> tuple[int, str, str] | None:
         """First violation of a segment: (alarm number, axis name, ``+``/``-``), or None."""
         if segment.arc is None:
-            ends = segment.end.tolist()
+            _starts, deltas, ends = segment.floats()
             software = self._software
-            for i, delta in enumerate(segment.delta.tolist()):
+            for i, delta in enumerate(deltas):
                 if delta == 0.0 or not referenced[i]:
                     continue
                 value = ends[i]
@@ -118,7 +118,7 @@ class Limits:
         referenced axis; then the sampled check below cannot find a violation."""
         i1, i2, c1, c2, r0, r1, _, _ = segment.arc  # type: ignore[misc]
         reach = max(abs(r0), abs(r1)) + ARC_BOX_MARGIN_MM
-        starts, ends = segment.start.tolist(), segment.end.tolist()
+        starts, _deltas, ends = segment.floats()
         for i, axis in enumerate(self.axes):
             if not referenced[i]:
                 continue

@@ -9,7 +9,7 @@ planner needs for corner and curvature-jump limits.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -18,25 +18,31 @@ PLANE_AXES = {"G17": ("X", "Y", "Z"), "G18": ("Z", "X", "Y"), "G19": ("Y", "Z", 
 MIN_LENGTH_MM = 1e-9
 
 
-@dataclass
 class Segment:
     """One path element. ``arc`` is None for a straight line.
 
     Attributes:
-        start, end: position vectors (all path axes, MCS).
+        start, end: position vectors (all path axes, MCS); the segment keeps the arrays it is
+            given (:func:`line` and :func:`arc` hand it their own), so nobody may change them.
         length: path length used for the feed (mm).
         arc: (i1, i2, c1, c2, r_start, r_end, theta0, sweep) for arcs and helices.
+        delta: ``end - start``.
     """
 
-    start: np.ndarray
-    end: np.ndarray
-    length: float
-    arc: tuple[int, int, float, float, float, float, float, float] | None = None
+    __slots__ = ("start", "end", "length", "arc", "delta", "_tangents", "_floats")
 
-    def __post_init__(self) -> None:
-        self.delta = self.end - self.start
+    def __init__(self, start: np.ndarray, end: np.ndarray, length: float,
+                 arc: tuple[int, int, float, float, float, float, float, float] | None = None) -> None:
+        self.start = start
+        self.end = end
+        self.length = length
+        self.arc = arc
+        self.delta = end - start
         self._tangents: dict[bool, np.ndarray] = {}
         self._floats: tuple[list[float], list[float], list[float]] | None = None  # start, delta, end
+
+    def __repr__(self) -> str:
+        return f"Segment(start={self.start!r}, end={self.end!r}, length={self.length!r}, arc={self.arc!r})"
 
     def positions(self, s: np.ndarray) -> np.ndarray:
         """Positions at path distances ``s`` (shape ``(len(s), n_axes)``)."""
@@ -54,8 +60,9 @@ class Segment:
                 out[at_end] = self.end
         return out
 
-    def _lists(self) -> tuple[list[float], list[float], list[float]]:
-        """``start``, ``delta`` and ``end`` as lists of Python floats (made on first use)."""
+    def floats(self) -> tuple[list[float], list[float], list[float]]:
+        """``start``, ``delta`` and ``end`` as lists of Python floats (made on first use; the
+        caller must not change them)."""
         floats = self._floats
         if floats is None:
             floats = self._floats = (self.start.tolist(), self.delta.tolist(), self.end.tolist())
@@ -65,7 +72,7 @@ class Segment:
         """Positions at path distances ``distances`` in Python floats, row after row in one flat
         list: the rows of :meth:`positions` bit for bit (the same operations in the same order,
         the arc's end pinned), cheaper than numpy for a handful of rows."""
-        start, delta, end = self._lists()
+        start, delta, end = self.floats()
         length = self.length
         inv = 1.0 / length if length > 0 else 0.0
         arc = self.arc
@@ -95,7 +102,7 @@ class Segment:
     def _first_derivative(self, lam: float) -> list[float]:
         """d/ds of the position at ``lam`` (fraction of the length)."""
         length = self.length
-        first = [d / length for d in self._lists()[1]]
+        first = [d / length for d in self.floats()[1]]
         if self.arc is not None:
             i1, i2, th, r, dr, sweep = self._arc_at(lam)
             first[i1] = (dr * math.cos(th) - r * sweep * math.sin(th)) / length
@@ -121,7 +128,7 @@ class Segment:
 
     def curvature(self, at_end: bool) -> np.ndarray:
         """Curvature vector d²p/ds² at the start or the end (zero for lines)."""
-        second = [0.0] * len(self._lists()[1])
+        second = [0.0] * len(self.floats()[1])
         if self.arc is not None:
             length = self.length
             i1, i2, th, r, dr, sweep = self._arc_at(1.0 if at_end else 0.0)
@@ -132,7 +139,7 @@ class Segment:
     def max_direction_share(self) -> list[float]:
         """Upper bound of |dp_k/ds| over the segment, per axis."""
         length = self.length
-        share = [abs(d) / length for d in self._lists()[1]]
+        share = [abs(d) / length for d in self.floats()[1]]
         if self.arc is not None:
             i1, i2, _c1, _c2, r0, r1, _th0, sweep = self.arc
             bound = (abs(r1 - r0) + max(r0, r1) * abs(sweep)) / self.length
@@ -148,14 +155,17 @@ class Segment:
         return max(min(self.arc[4], self.arc[5]), 1e-6)
 
 
-def line(start: np.ndarray, end: np.ndarray, linear_mask: np.ndarray) -> Segment:
-    """A straight segment; its length counts the linear axes (rotary-only moves in degrees)."""
-    delta = end - start
+def line(start: np.ndarray, end: np.ndarray, linear_mask: Sequence[bool] | np.ndarray) -> Segment:
+    """A straight segment; its length counts the linear axes (rotary-only moves in degrees).
+    The segment keeps ``start`` and ``end`` (see :class:`Segment`)."""
+    segment = Segment(start, end, 0.0)
+    deltas = segment.floats()[1]
     # math.hypot scales internally: no overflow for huge coordinates (1EX300).
-    length = math.hypot(*delta[linear_mask].tolist())
+    length = math.hypot(*[d for d, linear in zip(deltas, linear_mask) if linear])
     if length <= MIN_LENGTH_MM:
-        length = math.hypot(*delta.tolist())
-    return Segment(start=start.copy(), end=end.copy(), length=length)
+        length = math.hypot(*deltas)
+    segment.length = length
+    return segment
 
 
 def arc(
@@ -165,9 +175,10 @@ def arc(
     plane_idx: tuple[int, int],
     clockwise: bool,
     turns: int,
-    linear_mask: np.ndarray,
+    linear_mask: Sequence[bool] | np.ndarray,
 ) -> Segment:
-    """An arc (helix when other axes move too) in the plane of axes ``plane_idx``."""
+    """An arc (helix when other axes move too) in the plane of axes ``plane_idx``. The segment
+    keeps ``start`` and ``end`` (see :class:`Segment`)."""
     i1, i2 = plane_idx
     c1, c2 = center
     # Python floats (the same float64 arithmetic as numpy's scalars, without their cost).
@@ -188,12 +199,9 @@ def arc(
             sweep = two_pi
         sweep += two_pi * max(turns, 0)
     planar = abs(sweep) * (r0 + r1) / 2.0
-    others = [e - s for i, (s, e, linear) in enumerate(zip(starts, ends, linear_mask.tolist()))
+    others = [e - s for i, (s, e, linear) in enumerate(zip(starts, ends, linear_mask))
               if linear and i != i1 and i != i2]
     length = math.hypot(planar, *others)
     if r0 <= MIN_LENGTH_MM or length <= MIN_LENGTH_MM:
         return line(start, end, linear_mask)
-    return Segment(
-        start=start.copy(), end=end.copy(), length=length,
-        arc=(i1, i2, c1, c2, r0, r1, th0, sweep),
-    )
+    return Segment(start, end, length, (i1, i2, c1, c2, r0, r1, th0, sweep))

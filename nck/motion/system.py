@@ -56,7 +56,7 @@ class PlannedMotion(PathInterpolator):
         for name, value in (positions_mcs or {}).items():
             if name in self.index:
                 start[self.index[name]] = float(value)
-        self.linear_mask = np.array([not a.rotary for a in self.params.axes], dtype=bool)
+        self.linear_mask = tuple(not a.rotary for a in self.params.axes)
         self.cmd = start.copy()
         self.servo = ServoBank(self.params.axes, self.T, start)
         self.referenced = [bool(referenced)] * len(self.names)
@@ -183,10 +183,11 @@ class PlannedMotion(PathInterpolator):
         if rows.size:
             return int(rows[0])
         if len(ends_mcs):
-            if self.plan_pos is None:
-                self.plan_pos = self.cmd.copy()
+            # A new array: the last buffered segment keeps the one it ended at as its end.
+            plan_pos = self.cmd.copy() if self.plan_pos is None else self.plan_pos.copy()
             for c, i in columns:
-                self.plan_pos[i] = float(ends_mcs[-1, c])
+                plan_pos[i] = float(ends_mcs[-1, c])
+            self.plan_pos = plan_pos
         return None
 
     def _checked_segment(self, item: Motion, start: np.ndarray) -> tuple[Segment | None, NcAlarmError | None]:
@@ -362,7 +363,7 @@ class PlannedMotion(PathInterpolator):
             self.repos_pending = False
             start = self.cmd.copy()
             if float(np.max(np.abs(self.hold_point - start))) > 1e-9:
-                segment = line(start, self.hold_point, self.linear_mask)
+                segment = line(start, self.hold_point.copy(), self.linear_mask)
                 rapid = self.repos_feed is None
                 feed = None if self.repos_feed is None else self.repos_feed / 60.0
                 planned = plan_segment(self.params, segment, rapid=rapid, feed_mm_s=feed, soft=False,
