@@ -46,7 +46,7 @@ class PathInterpolator:
     disabled: set[int]
     names: list[str]
     _alarms: list[NcAlarmError]
-    unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None  # (moved axes as a mask, window, end point)
+    unsettled: tuple[list[bool], np.ndarray, np.ndarray] | None  # (moved axes as a mask, window, end point)
     settle_point: np.ndarray | None
     _fine: np.ndarray
     _coarse: np.ndarray

@@ -76,7 +76,7 @@ class PlannedSegment:
     jerk: float | None  # None = BRISK
     exact_stop: bool
     window: str  # G601 / G602 / G603
-    moved: np.ndarray  # axes that move
+    moved: list[bool]  # axes that move
     junction_out: float = 0.0  # velocity limit at the end (0 until a successor is known)
     exit_limit: float = 0.0  # result of the backward pass
     done_s: float = 0.0  # distance already travelled (after an interruption)
@@ -133,7 +133,7 @@ def plan_segment(
 ) -> PlannedSegment:
     """Compute the limits of one segment (``accel_factors``: ACC per axis, 1 = 100 %)."""
     share = segment.max_direction_share()
-    moved = np.array([part > 1e-12 for part in share])
+    moved = [part > 1e-12 for part in share]
     axes = params.axes
     arrays = axis_arrays(params)
     v_cap = a_lin = j_lin = math.inf

@@ -73,7 +73,7 @@ class PlannedMotion(PathInterpolator):
         self.exact_wait: tuple[np.ndarray, np.ndarray] | None = None
         # The window of the last segment that ended without its exact-stop wait (continuous path):
         # a dwell or a block without path motion waits for it first (002 L4797-4809).
-        self.unsettled: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        self.unsettled: tuple[list[bool], np.ndarray, np.ndarray] | None = None
         self.disabled: set[int] = set()  # axes without controller enable
         self.settle_point: np.ndarray | None = None
         self.held = False
@@ -194,10 +194,13 @@ class PlannedMotion(PathInterpolator):
         """The segment of ``item`` from ``start``, or the alarm that refuses it."""
         end = start.copy()
         index = self.index
+        outside = None  # the first axis beyond POSITION_RANGE_MM
         for name, value in item.end_mcs.items():
+            position = float(value)
+            if outside is None and abs(position) > POSITION_RANGE_MM:
+                outside = name
             i = index.get(name)
             if i is not None:
-                position = float(value)
                 end[i] = position
                 if not math.isfinite(position):
                     return None, _value_range_alarm(item, name)  # an infinite or undefined position
@@ -212,7 +215,8 @@ class PlannedMotion(PathInterpolator):
             number, axis, sign = violation
             return None, NcAlarmError(number, axis, sign, file=item.source.file, line=item.source.line,
                                       n=item.source.n)
-        outside = _outside_position_range(segment, item)
+        if outside is None and segment.arc is not None:
+            outside = _centre_outside_range(item)
         if outside is not None:
             # Not caught by a limit switch (axis not referenced): beyond any position the
             # control can represent, where the path arithmetic loses its precision.
@@ -798,15 +802,11 @@ class PlannedMotion(PathInterpolator):
         self.run = PathRun(chain, s_begin, profile, tau=0.0, kind=kind)
 
 
-def _outside_position_range(segment: Segment, item: Motion) -> str | None:
-    """The first axis (or centre) of ``item`` beyond :data:`POSITION_RANGE_MM`, else None."""
-    for name, value in item.end_mcs.items():
+def _centre_outside_range(item: Motion) -> str | None:
+    """The first centre coordinate of ``item`` beyond :data:`POSITION_RANGE_MM`, else None."""
+    for name, value in (item.center_mcs or {}).items():
         if abs(float(value)) > POSITION_RANGE_MM:
             return name
-    if segment.arc is not None:
-        for name, value in (item.center_mcs or {}).items():
-            if abs(float(value)) > POSITION_RANGE_MM:
-                return name
     return None
 
 
