@@ -254,7 +254,7 @@ class PathInterpolator:
             self.wait_source = head.source
             self.v_path = 0.0
             return True
-        without_enable = [i for i in self.disabled if head.moved[i]]
+        without_enable = [i for i in self.disabled if head.moved[i]] if self.disabled else None
         if without_enable:
             # An axis without controller enable cannot follow: 21612, the path stops here.
             self.la.pop_front()

@@ -35,7 +35,13 @@ class Profile:
     def __init__(self, phases: tuple[tuple[float, float, float, float, float], ...], duration_s: float,
                  length: float, v_end: float) -> None:
         self.phases = phases
-        self.starts = tuple(row[0] for row in phases)  # t0 of every phase
+        starts = []  # t0 of every phase
+        jerk_free = True
+        for row in phases:
+            starts.append(row[0])
+            if row[4]:
+                jerk_free = False
+        self.starts = tuple(starts)
         self.duration_s = duration_s
         self.length = length
         self.v_end = v_end
@@ -43,7 +49,7 @@ class Profile:
         # for bit at any time: both add s0 + v0·dt, then the acceleration term; the jerk term
         # adds exactly zero (with jerk, numpy's and Python's dt**3 may round differently, and
         # dt**3 of a phase longer than 1e100 s could overflow).
-        self.scalar_exact = duration_s < 1e100 and not any(row[4] for row in phases)
+        self.scalar_exact = duration_s < 1e100 and jerk_free
         self._columns: np.ndarray | None = None
 
     def _column(self, index: int) -> np.ndarray:
@@ -310,7 +316,7 @@ def build_profile(
         lo, hi = peak, v0
         for _ in range(50):
             mid = (lo + hi) / 2.0
-            if ramp_distance(v0, mid, accel, jerk) + ramp_distance(mid, v_end, accel, jerk) <= rest:
+            if _ramps_distance(v0, mid, v_end, accel, jerk) <= rest:
                 hi = mid
             else:
                 lo = mid
@@ -328,11 +334,7 @@ def _peak(v0: float, v1: float, v_max: float, length: float, accel: float, jerk:
     low = max(v0, v1)
     if v_max <= low:
         return max(v_max, v1) if v_max >= v1 else v1
-
-    def need(vp: float) -> float:
-        return ramp_distance(v0, vp, accel, jerk) + ramp_distance(vp, v1, accel, jerk)
-
-    if need(v_max) <= length:
+    if _ramps_distance(v0, v_max, v1, accel, jerk) <= length:
         return v_max
     if jerk is None:
         vp = math.sqrt((2.0 * accel * length + v0 * v0 + v1 * v1) / 2.0)
@@ -340,11 +342,16 @@ def _peak(v0: float, v1: float, v_max: float, length: float, accel: float, jerk:
     lo, hi = low, v_max
     for _ in range(40):
         mid = (lo + hi) / 2.0
-        if need(mid) <= length:
+        if _ramps_distance(v0, mid, v1, accel, jerk) <= length:
             lo = mid
         else:
             hi = mid
     return lo
+
+
+def _ramps_distance(v0: float, peak: float, v1: float, accel: float, jerk: float | None) -> float:
+    """Distance of the two ramps ``v0`` → ``peak`` → ``v1``."""
+    return ramp_distance(v0, peak, accel, jerk) + ramp_distance(peak, v1, accel, jerk)
 
 
 def braking_profile(v_start: float, a_start: float, accel: float, jerk: float | None) -> Profile:
