@@ -15,6 +15,8 @@ from nck.atomic import atomic_write_text, backup_path, remove_stale_temp_files
 
 ROOT = Path(__file__).resolve().parents[2]
 
+pytestmark = pytest.mark.durability  # the writes here flush to the disk for real
+
 
 def test_write_creates_file_and_directory(tmp_path: Path) -> None:
     target = tmp_path / "sub" / "data.json"
