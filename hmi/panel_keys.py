@@ -51,6 +51,10 @@ class PanelKeys(Vertical):
         self.keymap = keymap
 
     def compose(self) -> ComposeResult:
+        """The two rows of keys, in a browser only: in a terminal the hidden rows would be 36
+        widgets more to build and style in every area screen (a third of the Machine area's)."""
+        if not self.app.is_web:
+            return
         for scope in ROWS:
             with Horizontal(classes="panel-keys-row"):
                 for binding in self.keymap.bindings:

@@ -66,6 +66,7 @@ async def test_panel_keys_are_hidden_in_a_terminal(fake_app: HmiApp) -> None:
     async with fake_app.run_test(size=SIZE) as pilot:
         await pilot.pause()
         assert not fake_app.screen.query_one(PanelKeys).display
+        assert not fake_app.screen.query(PanelKey)  # not even built
 
 
 async def test_panel_keys_are_shown_and_clickable_in_a_browser(in_browser: None, fake: FakeNck,
