@@ -19,6 +19,7 @@ from textual.widget import Widget
 from textual.widgets import Input, Static
 
 from hmi.i18n import _
+from hmi.widgets.fixed_size_input import FixedSizeInput
 
 
 @dataclass(frozen=True)
@@ -43,8 +44,8 @@ FIELD_KEYS = [
 """↑/↓ go from field to field (an Input would scroll with them)."""
 
 
-class FieldInput(Input):
-    """A text field of a window."""
+class FieldInput(FixedSizeInput):
+    """A text field of a window (24 × 1 cells)."""
 
     BINDINGS = FIELD_KEYS
 
