@@ -123,6 +123,27 @@ def test_cycle_level_positions_sub_level(snap_compare, pinned: Path) -> None:
     assert snap_compare(app, terminal_size=SIZE, run_before=run_before)
 
 
+def test_program_manager_beside_the_exercise_window_at_120x36(snap_compare, pinned: Path) -> None:
+    """An exercise runs: its side window (34 columns) beside the Program manager at the smallest
+    terminal; the tree gives way, the list keeps Name, Type, Length and Date."""
+    app = make_program_app(pinned)
+    exercise = {e.exercise_id: e for e in load_exercises()}["03_single_block_flange"]
+    app.exercise_report_dir = pinned / "reports"  # the report at the end: beside the test's data
+
+    async def run_before(pilot) -> None:
+        assert app.start_exercise(exercise).startswith("Exercise started")
+        private = app.nc_session.session.data_dir
+        for path in private.rglob("*.MPF"):
+            os.utime(path, ns=(PINNED_NS, PINNED_NS))
+        await pilot.press("alt+n")
+        await pilot.pause()
+
+    try:
+        assert snap_compare(app, terminal_size=(120, 36), run_before=run_before)
+    finally:
+        app.end_exercise()
+
+
 FORM_CURSOR_LINES = {"CYCLE83": 7, "POCKET3": 21, "CYCLE95": 1}
 """Fields the cursor goes down in a form before the picture: CYCLE83 on DAM (the sketch marks the
 degression), POCKET3 on _RAD1 (a form longer than its window scrolls with the cursor), CYCLE95
