@@ -55,6 +55,7 @@ from nck import TERMINATION_SIGNALS, StorageError, exit_on_termination
 from hmi.alarm_times import AlarmTimes
 from hmi.area import MIN_TERMINAL_SIZE, AreaBase
 from hmi.bridge import NckBridge
+from hmi.css_parse import share_parsed_css
 from hmi.browser_driver import PanelBrowserDriver
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ConfirmDialog
@@ -202,6 +203,7 @@ class HmiApp(ClassroomHost, MachineControlPanel, App):
     def __init__(self, nck: Any, *, realtime: bool = True, keymap: Keymap | None = None,
                  on_quit: Callable[[], None] | None = None, alarm_times: AlarmTimes | None = None) -> None:
         self.keymap = keymap or default_keymap()
+        share_parsed_css()
         super().__init__()
         for theme in HMI_THEMES:
             self.register_theme(theme)

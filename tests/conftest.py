@@ -87,39 +87,6 @@ def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None):
         faulthandler.cancel_dump_traceback_later()
 
 
-# ------------------------------------------------------------------ shared CSS parse
-def _share_parsed_css_between_apps() -> None:
-    """Parse each widget's CSS once per test process instead of once per App.
-
-    Textual keeps its parsed rules in a small cache of each ``Stylesheet``: every App a
-    test starts (and every re-parse, which builds a fresh ``Stylesheet``) parses the same
-    CSS again, ~0.12 s CPU of an app's ~0.45 s start. The suite starts hundreds of Apps
-    in one process, all with the same CSS and theme variables, so the parsed rules are
-    kept here keyed by the variables as well as by Textual's own key. Textual already
-    reuses a parse result for every parse of one stylesheet, so sharing it between
-    stylesheets hands the rules to code that expects them reused. Errors are not kept:
-    invalid CSS raises as before. The panel itself starts one App and keeps Textual's
-    behaviour (this is the test process only).
-    """
-    from textual.css.stylesheet import Stylesheet
-
-    parse_rules = Stylesheet._parse_rules
-    parsed: dict[tuple, list] = {}
-
-    def shared_parse_rules(self, css, read_from, is_default_rules=False, tie_breaker=0, scope=""):
-        key = (tuple(self._variables.items()), css, read_from, is_default_rules, tie_breaker, scope)
-        rules = parsed.get(key)
-        if rules is None:
-            rules = parse_rules(self, css, read_from, is_default_rules, tie_breaker, scope)
-            parsed[key] = rules
-        return rules
-
-    Stylesheet._parse_rules = shared_parse_rules
-
-
-_share_parsed_css_between_apps()
-
-
 # ------------------------------------------------------------------ garbage collection
 # Measured on two Pilot test files (24 tests, 2026-11-28): Python's cyclic garbage
 # collector took 6.6 s of their 17.7 s CPU. Every App a test starts leaves some hundred
@@ -127,8 +94,8 @@ _share_parsed_css_between_apps()
 # again at its default thresholds (700, 10, 10): 4,361 collections. With the
 # collection made once per 10,000 allocations and everything imported and collected by
 # then kept out of the walks (``gc.freeze``), the same files took 2.7 s of GC and 14.3 s
-# in all. Garbage is still collected; only less often. The panel keeps Python's defaults
-# (it freezes its own start-up objects, ``hmi.app.freeze_startup_objects``).
+# in all. Garbage is still collected; only less often. The panel makes its own setting
+# when it starts (``hmi.app.freeze_startup_objects``).
 gc.set_threshold(10_000, 10, 10)
 
 
