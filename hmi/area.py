@@ -33,6 +33,7 @@ from textual.widgets import Static
 from nck.commands import SubmitResult
 from nck.status import NckStatus
 
+from hmi.focus import FocusRepaintsItsWidgets
 from hmi.i18n import N_, _
 from hmi.key_settle import BindingsInPlace
 from hmi.panel_keys import PanelKey, PanelKeys
@@ -56,7 +57,7 @@ class DialogLine(Static):
     """The line above the horizontal softkeys: operator hints and refused commands."""
 
 
-class AreaBase(BindingsInPlace):
+class AreaBase(FocusRepaintsItsWidgets, BindingsInPlace):
     """A SINUMERIK operating area: header, content, vertical and horizontal softkeys."""
 
     AREA_ID: ClassVar[str] = "area"

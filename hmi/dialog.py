@@ -20,23 +20,16 @@ from typing import Any, Callable
 
 from textual.await_complete import AwaitComplete
 from textual.binding import Binding
-from textual.reactive import Reactive
 from textual.screen import ModalScreen, ScreenResultType
-from textual.widget import Widget
 
+from hmi.focus import FocusRepaintsItsWidgets
 from hmi.key_settle import BindingsInPlace
 
 
-class AreaDialog(BindingsInPlace, ModalScreen[ScreenResultType]):
+class AreaDialog(FocusRepaintsItsWidgets, BindingsInPlace, ModalScreen[ScreenResultType]):
     """A modal dialog that closes only while it is on top of the current area; Escape cancels it."""
 
     BINDINGS = [Binding("escape", "cancel_dialog", "Cancel", show=False)]
-
-    focused: Reactive[Widget | None] = Reactive(None, repaint=False)
-    """Textual's ``Screen.focused`` without its repaint of the whole screen: a focus change
-    restyles and repaints the widgets it concerns (the blurred and the focused one), while a
-    whole-screen repaint renders the panel under the dialog again through the translucent
-    background on every field change."""
 
     result_handler: Callable[[Any], object] | None = None
     """Called with the result when the dialog closes (set by the app's ``push_screen``)."""

@@ -11,6 +11,8 @@ The HMI moves the focus only with it.
 
 from __future__ import annotations
 
+from textual.reactive import Reactive
+from textual.screen import Screen
 from textual.widget import NoScreen, Widget
 
 
@@ -22,3 +24,17 @@ def focus_now(widget: Widget) -> None:
         widget.focus()
         return
     screen.set_focus(widget)
+
+
+class FocusRepaintsItsWidgets(Screen):
+    """A screen whose focus change repaints the widgets it concerns, not the whole screen.
+
+    Textual's ``Screen.focused`` is a reactive that repaints the whole screen when it changes.
+    The focus change itself already restyles and repaints the blurred and the focused widget
+    (``Widget._on_blur`` / ``_on_focus``, their ``:focus`` styles through ``has_focus``); the
+    whole-screen repaint rendered every other widget again on every ↑/↓ between fields (and,
+    under a translucent dialog, the panel beneath it too).
+    """
+
+    focused: Reactive[Widget | None] = Reactive(None, repaint=False)
+    """Textual's ``Screen.focused`` without its repaint of the whole screen."""
