@@ -82,7 +82,9 @@ class ChoiceField(Static, can_focus=True):
             self._show()
 
     def _show(self) -> None:
-        self.update(Text(f"◂ {_(self.value)} ▸"))
+        # JogForm's CSS fixes the field at 24 × 1 cells: a new value cannot move anything, so
+        # the field repaints without a layout of the whole screen (Static.update's default).
+        self.update(Text(f"◂ {_(self.value)} ▸"), layout=False)
 
 
 class JogForm(Vertical):
