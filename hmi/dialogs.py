@@ -18,6 +18,7 @@ from textual.widgets.option_list import Option
 from hmi.dialog import AreaDialog
 from hmi.i18n import N_, _
 from hmi.focus import focus_now
+from hmi.widgets.fixed_size_input import FixedSizeInput
 
 
 class ChoiceDialog(AreaDialog[str | None]):
@@ -99,7 +100,7 @@ class ValueDialog(AreaDialog[str | None]):
             yield Static(self._title, id="value-title", markup=False)
             if self._hint:
                 yield Static(self._hint, id="value-hint", markup=False)
-            yield Input(self._value, password=self._password, id="value-input",
+            yield FixedSizeInput(self._value, password=self._password, id="value-input",
                         select_on_focus=not self._typed)
             yield Static(_("Enter confirm   F10 / Esc cancel"), id="value-keys")
 

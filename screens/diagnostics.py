@@ -34,6 +34,7 @@ from hmi.focus import focus_now
 from hmi.i18n import N_, _, alarm_text, error_text, exercise_text, reason_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
+from hmi.widgets.fixed_size_input import FixedSizeInput
 from screens.diagnostics_alarms import (
     LogFilter, alarm_list_rows, alarm_list_text, log_as_csv, log_as_text, log_rows, log_text, message_lines,
     messages_text, parse_filter,
@@ -111,7 +112,7 @@ class DiagnosticsScreen(AreaBase):
             for view in VIEWS:
                 with Vertical(id=f"view-{view}", classes="diag-view"):
                     if view == "log":
-                        yield Input(placeholder=_("number range and/or text, e.g. 10000-19999 limit"),
+                        yield FixedSizeInput(placeholder=_("number range and/or text, e.g. 10000-19999 limit"),
                                     id="log-filter")
                     if view == "trace":
                         yield Static("", id="trace-settings", markup=False)

@@ -35,6 +35,7 @@ from hmi.widgets.positions import PositionWindow
 from hmi.widgets.stock_view import StockPicture, StockView, material_events, picture_of
 
 from hmi.widgets.tfs import TfsWindow
+from hmi.widgets.fixed_size_input import FixedSizeInput
 from screens.machine_jog_form import FieldEdited
 from screens.machine_jog_setup import JOG_WINDOWS, JogWindows
 from screens.machine_jog_touch import contact_line
@@ -119,7 +120,7 @@ class MachineScreen(AreaBase):
                 yield Static(" " + _("Search target: a block number (N70) or text in the block; "
                                      "Enter or ⇧F1 starts the search, ⇧F2-⇧F5 choose the search mode."),
                              markup=False)
-                yield Input(placeholder="N…", id="search-input")
+                yield FixedSizeInput(placeholder="N…", id="search-input")
                 yield Static("", id="search-info", markup=False)
             with Vertical(id="view-simrec", classes="view"):
                 yield StockView(id="simrec-stock")

@@ -50,6 +50,7 @@ from hmi.widgets.nc_editor import NcEditor
 from hmi.widgets.stock_view import StockView
 from hmi.widgets.toolpath import ToolpathView
 from hmi.word_help import word_at, word_help
+from hmi.widgets.fixed_size_input import FixedSizeInput
 from screens.program_cycles import CycleActions
 from screens.program_edit import EditActions
 from screens.program_runs import CheckAndSimulation
@@ -124,8 +125,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
                 yield ToolpathView(id="prog-toolpath")
                 yield StockView(id="prog-stock")
             with Horizontal(id="prog-search"):
-                yield Input(placeholder=_("search"), id="prog-find")
-                yield Input(placeholder=_("replace with"), id="prog-replace")
+                yield FixedSizeInput(placeholder=_("search"), id="prog-find")
+                yield FixedSizeInput(placeholder=_("replace with"), id="prog-replace")
             yield Static("", id="prog-message", markup=False)
 
     @property

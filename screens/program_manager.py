@@ -39,6 +39,7 @@ from hmi.i18n import N_, _, error_text, refusal_text
 from hmi.journal import EditorJournal
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
+from hmi.widgets.fixed_size_input import FixedSizeInput
 
 CANCEL = N_("Cancel")
 DELETE = N_("Delete")
@@ -84,7 +85,7 @@ class PromptDialog(AreaDialog[str | None]):
         """Title, input field, key hint."""
         with Vertical(id="prompt-box"):
             yield Static(self._title, id="prompt-title", markup=False)
-            yield Input(self._value, id="prompt-input")
+            yield FixedSizeInput(self._value, id="prompt-input")
             yield Static(self._hint or _("Enter confirm   F10 cancel"), id="prompt-keys", markup=False)
 
     def on_mount(self) -> None:

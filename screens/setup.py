@@ -37,6 +37,7 @@ from hmi.theme import HMI_THEMES, THEME_LABELS
 from hmi.widgets.data_table import (
     EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key, level_refusal,
 )
+from hmi.widgets.fixed_size_input import FixedSizeInput
 from screens.setup_workpiece import workpiece_table
 
 MD_VIEWS = {"general": N_("General machine data"), "channel": N_("Channel machine data"),
@@ -147,7 +148,7 @@ class SetupScreen(AreaBase):
     # -- layout -------------------------------------------------------------------------------
     def compose_content(self) -> ComposeResult:
         """Search field and MD table, or the access window."""
-        yield Input(placeholder=_("search by number or name, Enter applies (empty: all)"), id="md-search")
+        yield FixedSizeInput(placeholder=_("search by number or name, Enter applies (empty: all)"), id="md-search")
         yield TableWindow(id="setup-table")
         yield Static("", id="setup-access", markup=False)
 
