@@ -22,16 +22,7 @@ from hmi.cycle_forms import CycleForm, CycleParam
 from hmi.dialog import AreaDialog
 from hmi.focus import focus_now
 from hmi.i18n import _, data_text
-from hmi.widgets.fixed_size_input import FixedSizeInput
-
-
-class FieldInput(FixedSizeInput):
-    """A field of the form (16 × 1 cells): ↑/↓ go to the previous / next field (an Input would ignore them)."""
-
-    BINDINGS = [
-        Binding("down", "app.focus_next", "Next field", show=False),
-        Binding("up", "app.focus_previous", "Previous field", show=False),
-    ]
+from hmi.widgets.field_input import FieldInput
 
 
 class CycleFormDialog(AreaDialog[str | None]):

@@ -19,7 +19,7 @@ from textual.widget import Widget
 from textual.widgets import Input, Static
 
 from hmi.i18n import _
-from hmi.widgets.fixed_size_input import FixedSizeInput
+from hmi.widgets.field_input import FIELD_KEYS, FieldInput
 
 
 @dataclass(frozen=True)
@@ -35,19 +35,6 @@ class FieldSpec:
 
 class FieldEdited(Message):
     """A field of a window changed (typed or chosen): the window may redraw what it derives."""
-
-
-FIELD_KEYS = [
-    Binding("down", "app.focus_next", "Next field", show=False),
-    Binding("up", "app.focus_previous", "Previous field", show=False),
-]
-"""↑/↓ go from field to field (an Input would scroll with them)."""
-
-
-class FieldInput(FixedSizeInput):
-    """A text field of a window (24 × 1 cells)."""
-
-    BINDINGS = FIELD_KEYS
 
 
 class ChoiceField(Static, can_focus=True):

@@ -14,7 +14,8 @@ from nck.kernel import Nck
 from nck.ncdata import ToolEdge
 
 from hmi.app import HmiApp
-from screens.machine_jog_form import ChoiceField, FieldInput
+from hmi.widgets.field_input import FieldInput
+from screens.machine_jog_form import ChoiceField
 from tests.burst import burst
 
 SIZE = (160, 48)
