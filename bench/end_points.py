@@ -14,7 +14,8 @@ import tempfile
 from pathlib import Path
 
 from bench.corpus import RS274_TOOL_TABLE, CorpusProgram
-from nck.check import run_text
+from nck import canon
+from nck.headless import interpret_only
 from nck.machine import load_machine
 from nck.cli_tools import read_tool_table
 from nck.interp.sources import DirectorySource
@@ -45,13 +46,20 @@ def nck_end_points(program: CorpusProgram, max_blocks: int = 1_000_000) -> list[
         data = NcData()
         for key, params in read_tool_table(tools_file).items():
             data.tools[key] = ToolEdge(dict(params))
-        result = run_text(f"{program.name}.MPF", program.siemens, machine=load_machine(program.machine),
-                          programs=DirectorySource(folder), data=data, max_blocks=max_blocks)
-    if result.alarms or not result.finished:
-        raise AssertionError(f"nck: {program.name} alarms {result.alarms}, finished {result.finished}")
+        motions: list[canon.Motion] = []
+
+        def keep_motion(command: canon.CanonCommand) -> None:
+            if isinstance(command, canon.Motion):
+                motions.append(command)
+
+        result = interpret_only(load_machine(program.machine), DirectorySource(folder), data,
+                                f"{program.name}.MPF", text=program.siemens, max_blocks=max_blocks,
+                                on_command=keep_motion, keep_commands=False)
+    if result.alarms or result.status != "ended":
+        raise AssertionError(f"nck: {program.name} alarms {result.alarms}, status {result.status}")
     lathe = program.machine == "lathe2"
     points = []
-    for motion in result.motions:
+    for motion in motions:
         end = motion.end_wcs
         x = end.get("X", 0.0)
         points.append((x / 2.0 if lathe else x, end.get("Y", 0.0), end.get("Z", 0.0)))

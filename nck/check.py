@@ -8,13 +8,12 @@ in a worker thread and shows the results as they come):
    Then the **control structure** of the whole text (IF/ENDIF, loops) with the
    interpreter's program loader.
 2. **Interpretation**: the interpreter runs the whole program headless (no axis
-   moves; the canonical commands are only collected). This finds what one line
-   cannot show (undefined labels, nesting, unknown subprograms, values out of
+   moves; ``nck check``'s run, :func:`nck.headless.interpret_only`). This finds what one
+   line cannot show (undefined labels, nesting, unknown subprograms, values out of
    range …). The run stops at the first alarm, as the control would; that alarm
    is reported unless its line already has a syntax alarm.
 
-:func:`run_text` is the second pass on its own and also returns the canonical
-motions, for the toolpath simulation.
+The editor's simulation runs the program as AUTO runs it (:func:`nck.simulation.run.simulate`).
 
 Both run on a machine and NC data they are given (the default mill and fresh data
 when none). The HMI's editor takes the session's through :class:`CheckContext`, the
@@ -29,14 +28,12 @@ from __future__ import annotations
 import copy
 import functools
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable, Iterator
 
 from nck.alarm_ids import BLOCK_TOO_COMPLEX
-from nck.canon import Motion, UserAlarm
 from nck.errors import NcAlarmError
 from nck.headless import interpret_only
-from nck.interp.interpreter import Interpreter
 from nck.interp.program import load_program
 from nck.iso.dialect import dialect_for
 from nck.lang.parser import parse_block
@@ -51,10 +48,6 @@ _BLOCK_NUMBER = re.compile(r"\s*(?:/\d?\s*)?[Nn](\d+)\b")
 
 MAX_RUN_BLOCKS = 200_000
 """A headless run stops after this many interpreted blocks (endless loops end)."""
-
-MAX_RUN_MOTIONS = 100_000
-"""At most this many motions are collected for the simulation."""
-
 
 @dataclass(frozen=True, slots=True)
 class CheckAlarm:
@@ -76,18 +69,6 @@ class CheckAlarm:
     text: str
     params: tuple[str, ...] = ()
     text_params: tuple[str, ...] = ()
-
-
-@dataclass(slots=True)
-class TextRun:
-    """A program text interpreted without a channel (:func:`run_text`): its motions, the alarm
-    that stopped it, the blocks interpreted, and whether it reached its end or was cut short."""
-
-    motions: list[Motion] = field(default_factory=list)
-    alarms: list[CheckAlarm] = field(default_factory=list)
-    blocks: int = 0
-    finished: bool = False
-    truncated: bool = False
 
 
 def _alarm(error: NcAlarmError, fallback_line: int | None = None) -> CheckAlarm:
@@ -198,69 +179,6 @@ class _OverlaySource:
         return self._fallback.read_program(name)
 
 
-def _make_interpreter(name: str, text: str, machine: Any, programs: Any, data: Any) -> Interpreter:
-    source = _OverlaySource(name, text, programs)
-    machine = machine or load_machine()
-    return Interpreter(machine, source, data if data is not None else NcData(),
-                       dialect=dialect_for("siemens", machine))
-
-
-def run_text(
-    name: str,
-    text: str,
-    *,
-    machine: Any = None,
-    programs: Any = None,
-    data: Any = None,
-    max_blocks: int = MAX_RUN_BLOCKS,
-    should_stop: Callable[[], bool] | None = None,
-) -> TextRun:
-    """Interpret ``text`` headless as main program ``name`` and collect its motions.
-
-    Args:
-        name: the program name (``PART1.MPF``); subprograms are looked up in ``programs``.
-        text: the program text.
-        machine: the MachineConfig (default machine when None).
-        programs: a ProgramSource for subprograms (none when None).
-        data: NcData (fresh defaults when None); the run may change it, pass a copy.
-        max_blocks: stop after this many blocks (``truncated`` is then set).
-        should_stop: polled between blocks; True ends the run early (``truncated``).
-
-    Returns:
-        the motions, the alarm that stopped the run (if any), and counters.
-    """
-    result = TextRun()
-    interpreter = _make_interpreter(name, text, machine, programs, data)
-    try:
-        interpreter.start_text(name, text)
-        while not interpreter.finished:
-            if result.blocks >= max_blocks or (should_stop is not None and should_stop()):
-                result.truncated = True
-                break
-            block = interpreter.step()
-            result.blocks += 1
-            user_alarm = None
-            for command in block.commands:
-                if isinstance(command, Motion) and len(result.motions) < MAX_RUN_MOTIONS:
-                    result.motions.append(command)
-                elif isinstance(command, UserAlarm):  # SETAL stops the run there, as in nck run
-                    user_alarm = command
-                    break
-            if user_alarm is not None:
-                result.alarms.append(_alarm(NcAlarmError(
-                    user_alarm.number, *user_alarm.params, line=user_alarm.source.line,
-                    n=user_alarm.source.n)))
-                break
-            if block.finished:
-                break
-        result.finished = not result.truncated
-    except NcAlarmError as error:
-        result.alarms.append(_alarm(error))
-    except RecursionError:
-        result.alarms.append(_alarm(NcAlarmError(BLOCK_TOO_COMPLEX)))
-    return result
-
-
 def iter_check(
     name: str,
     text: str,
@@ -345,9 +263,3 @@ class CheckContext:
         (see :func:`nck.simulation.run.simulate`)."""
         return simulate(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
                         resolution_mm=resolution_mm)
-
-    def run_text(self, name: str, text: str, *, programs: Any = None,
-                 should_stop: Callable[[], bool] | None = None) -> TextRun:
-        """Interpret ``text`` headless on this machine and data (see :func:`run_text`)."""
-        return run_text(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
-                        should_stop=should_stop)

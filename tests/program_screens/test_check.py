@@ -45,13 +45,3 @@ def test_run_time_alarm_found_by_interpretation() -> None:
     """A jump to a missing label is only found by interpreting: alarm 14080 on its line."""
     alarms = check_text("A.MPF", "N10 G1 X10 F100\nGOTOF NIX\nM30")
     assert [(a.number, a.line) for a in alarms] == [(14080, 2)]
-
-
-def test_run_text_collects_the_motions() -> None:
-    """The headless run behind the simulation returns every motion with its source line."""
-    from nck.check import run_text
-
-    result = run_text("A.MPF", "N10 G0 X0 Y0\nN20 G1 X10 F100\nN30 Y5\nN40 M30\n")
-    assert result.finished and not result.alarms
-    assert [(m.kind, m.source.line, dict(m.end_wcs)["X"]) for m in result.motions][-2:] == [
-        ("G1", 2, 10.0), ("G1", 3, 10.0)]

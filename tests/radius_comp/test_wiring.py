@@ -4,9 +4,28 @@ from __future__ import annotations
 
 import pytest
 
-from nck.check import run_text
-from nck.machine import load_machine
+from dataclasses import dataclass
+
+from nck import canon
+from nck.errors import NcAlarmError
+from nck.headless import interpret_only
+from nck.interp.interpreter import Interpreter
+from nck.interp.sources import MemorySource
+from nck.machine import MachineConfig, load_machine
 from nck.ncdata import NcData, ToolEdge
+
+
+@dataclass
+class Interpreted:
+    """The motions a program's interpretation released and the alarm that stopped it."""
+
+    motions: list[canon.Motion]
+    alarms: list[NcAlarmError]
+
+
+def run_text(name: str, text: str, machine: MachineConfig, data: NcData) -> Interpreted:
+    run = interpret_only(machine, MemorySource({}), data, name, text=text)
+    return Interpreted([c for c in run.commands if isinstance(c, canon.Motion)], run.alarms)
 
 
 def mill(text: str, radius: float = 5.0, length: float = 0.0):
@@ -218,9 +237,6 @@ def test_dwell_inside_the_contour_does_not_break_the_compensation():
 def test_alarm_in_a_block_leaves_the_compensation_state_untouched():
     # The compensation state lives in the geometry state; an alarm rolls the block
     # back, so the stage must not be changed in place (copy on write).
-    from nck.check import _make_interpreter
-    from nck.errors import NcAlarmError
-
     data = NcData()
     data.tools[(1, 1)] = ToolEdge({1: 120, 6: 5.0})
     text = """N5 G17 G90 G0 X-20 Y-20 T1 D1 M6
@@ -229,7 +245,7 @@ N20 Y30
 N30 G2 G40 X40 Y30 CR=20
 N40 M30
 """
-    interp = _make_interpreter("ROLL.MPF", text, load_machine("mill3"), None, data)
+    interp = Interpreter(load_machine("mill3"), MemorySource({}), data)
     interp.start_text("ROLL.MPF", text)
     interp.step()
     interp.step()
