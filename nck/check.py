@@ -257,9 +257,9 @@ class CheckContext:
         return iter_check(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
                           should_stop=should_stop)
 
-    def simulate(self, name: str, text: str, *, programs: Any = None,
-                 resolution_mm: float | None = None) -> Simulation:
+    def simulate(self, name: str, text: str, *, programs: Any = None, resolution_mm: float | None = None,
+                 give_up: Callable[[int], bool] | None = None) -> Simulation:
         """Run ``text`` as AUTO runs it on this machine and data and cut the blank with it
         (see :func:`nck.simulation.run.simulate`)."""
         return simulate(name, text, machine=self.machine, programs=programs, data=self._fresh_data(),
-                        resolution_mm=resolution_mm)
+                        resolution_mm=resolution_mm, give_up=give_up)

@@ -81,6 +81,7 @@ def run_program(
     on_motion: Callable[[Any], None] | None = None,
     keep_commands: bool = True,
     on_block: Callable[[Any], None] | None = None,
+    give_up: Callable[[int], bool] | None = None,
 ) -> HeadlessRun:
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
@@ -92,13 +93,14 @@ def run_program(
     With ``max_blocks`` (``nck check``) the interpreter is driven directly and
     no time is simulated; otherwise the run goes through the kernel
     (:func:`run_on_kernel`): AUTOMATIC, axes referenced, select, NC START,
-    ticks until program end, an alarm or ``timeout_s`` of simulated time.
+    ticks until program end, an alarm or ``timeout_s`` of simulated time, or until
+    ``give_up`` says so (see :func:`run_on_kernel`).
     """
     if max_blocks is None:
         return run_on_kernel(machine, programs, data, program_name, timeout_s=timeout_s,
                              on_command=on_command, dialect=dialect, text=text,
                              skip_levels=skip_levels, on_motion=on_motion,
-                             keep_commands=keep_commands, on_block=on_block)
+                             keep_commands=keep_commands, on_block=on_block, give_up=give_up)
     return interpret_only(machine, programs, data, program_name, timeout_s=timeout_s,
                           max_blocks=max_blocks, on_command=on_command, dialect=dialect,
                           text=text, skip_levels=skip_levels, keep_commands=keep_commands)
@@ -133,11 +135,15 @@ def run_on_kernel(
     on_motion: Callable[[Any], None] | None = None,
     keep_commands: bool = True,
     on_block: Callable[[Any], None] | None = None,
+    give_up: Callable[[int], bool] | None = None,
 ) -> HeadlessRun:
     """The headless run through :class:`nck.kernel.Nck` (see :func:`run_program`).
 
     ``on_motion`` receives the kernel's motion system before the start (e.g. to trace it);
     ``on_block`` every block the interpreter hands over, before its commands.
+    ``give_up`` is asked with the number of blocks run so far before every
+    ``KERNEL_CHUNK_S`` of simulated time; True ends the run there (status ``timeout``):
+    how a caller in another thread shows progress and drops a run nobody waits for.
 
     M0/M1 stops are continued with NC START at once (nobody is at the machine).
     """
@@ -174,6 +180,9 @@ def run_on_kernel(
             result.alarms.append(NcAlarmError(INTERNAL_ERROR, started.reason))
         return result
     while True:
+        if give_up is not None and give_up(result.blocks):
+            result.status = "timeout"
+            break
         elapsed = nck.time_s
         budget = KERNEL_CHUNK_S if timeout_s is None else min(KERNEL_CHUNK_S, timeout_s - elapsed)
         if budget <= 0.0 or not nck.run_until(lambda k: k.situation.channel != "active", budget,
@@ -240,10 +249,13 @@ class ExecutedCommands:
 
     def finish(self, stop: canon.Source | None, position_mcs: dict[str, float],
                position_wcs: dict[str, float]) -> None:
-        """End of run: release what ran; the ``stop`` block (None: all ran) ends at the position."""
-        index = self._index_of(stop) if stop is not None else None
+        """End of run: release what ran; the ``stop`` block (None: all ran) ends at the position
+        (a dwell it stopped in had begun: released; nothing after it ran)."""
+        index = self._index_of(stop, (canon.Motion, canon.Dwell))
         if index is None:
             self._release(self.pending)
+        elif isinstance(self.pending[index], canon.Dwell):
+            self._release(self.pending[:index + 1])
         else:
             self._release(self.pending[:index])
             stopped = self.pending[index]

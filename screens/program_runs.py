@@ -48,6 +48,8 @@ SPEEDS_BLOCKS_S = (1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0,
 DEFAULT_SPEED = 3
 PLAY_TICK_S = 0.1
 """Playing shows the blocks due every this many seconds."""
+PROGRESS_EVERY_S = 0.5
+"""A simulation still calculating says how many blocks it has run, this often."""
 
 
 def speed_text(blocks_s: float) -> str:
@@ -269,6 +271,7 @@ class CheckAndSimulation:
             focus_now(self.stock if self.sim_material else self.toolpath)
         else:
             self._stop_playing()
+            self.workers.cancel_group(self, "program-material")  # back to editing: a run still going is dropped
             focus_now(self.editor)
 
     def action_simulate_run(self) -> None:
@@ -287,13 +290,33 @@ class CheckAndSimulation:
 
     @work(thread=True, exclusive=True, group="program-material", exit_on_error=False)
     def _material_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
-        """The AUTO run and the material removal, off the key path (a worker thread)."""
+        """The AUTO run and the material removal, off the key path (a worker thread). A newer
+        run (Recalculate, another program) cancels this one: its run stops at its next chunk."""
         worker = get_current_worker()
+        shown_at = time.monotonic()
+
+        def give_up(blocks: int) -> bool:
+            nonlocal shown_at
+            if worker.is_cancelled:
+                return True
+            if time.monotonic() - shown_at >= PROGRESS_EVERY_S:
+                shown_at = time.monotonic()
+                self.app.call_from_thread(self._show_progress, worker, blocks)
+            return False
+
         # What the program does wrong comes as alarms and events of the simulation; an exception
         # here is a bug (on_worker_state_changed reports it).
-        simulation = setting.simulate(Path(program).name, text, programs=programs)
+        simulation = setting.simulate(Path(program).name, text, programs=programs, give_up=give_up)
         if not worker.is_cancelled:
             self.app.call_from_thread(self._show_material, simulation)
+
+    def _show_progress(self, worker: Worker[Any], blocks: int) -> None:
+        """How far a long simulation has come (its worker is still the current one)."""
+        if worker.is_cancelled or self._material is not None:
+            return
+        note = _("calculating … {blocks} blocks").format(blocks=blocks)
+        self.toolpath.set_pieces([], note)
+        self.stock.set_picture(StockPicture(), note)
 
     def _show_material(self, simulation: Any) -> None:
         """A finished simulation: show the whole program cut, the note says how it ended; the

@@ -40,7 +40,7 @@ from __future__ import annotations
 import math
 from array import array
 from dataclasses import dataclass, field
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 import numpy as np
 
 from nck import canon
@@ -491,16 +491,18 @@ def record(
     data: NcData | None = None,
     resolution_mm: float = DEFAULT_RESOLUTION_MM,
     timeout_s: float | None = None,
+    give_up: Callable[[int], bool] | None = None,
 ) -> Recording:
     """Run ``text`` as AUTO runs it; return the run, its executed toolpath (arcs as chords of at
     most an eighth of ``resolution_mm`` sagitta), the machining time per tool and the work
-    offset (MCS − WCS of the tool tip without the tool length, from the first motion)."""
+    offset (MCS − WCS of the tool tip without the tool length, from the first motion).
+    ``give_up``: see :func:`nck.headless.run_on_kernel`."""
     machine = machine or load_machine()
     data = data if data is not None else NcData()
     source = programs if programs is not None else _NoPrograms()
     recorder = PathRecorder(data, chord_tol_mm=resolution_mm / 8.0, turning=machine.kind == "lathe", main=name)
     run = run_program(machine, source, data, name, text=text, timeout_s=timeout_s,
-                      on_command=recorder, keep_commands=False, on_block=recorder.block)
+                      on_command=recorder, keep_commands=False, on_block=recorder.block, give_up=give_up)
     nominal = sum(recorder.tool_times.values())
     share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
     tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
@@ -517,6 +519,7 @@ def simulate(
     resolution_mm: float | None = DEFAULT_RESOLUTION_MM,
     blank: Blank | None = None,
     timeout_s: float | None = None,
+    give_up: Callable[[int], bool] | None = None,
 ) -> Simulation:
     """Run ``text`` as main program ``name`` as AUTO runs it and cut the blank with it.
 
@@ -526,12 +529,15 @@ def simulate(
     (:mod:`nck.simulation.turning`). ``data`` (tools, offsets) is used as the run's NC data:
     pass a copy.
     ``resolution_mm`` None: chosen from the blank's size (:func:`auto_resolution`).
+    ``give_up`` is asked with the blocks run so far, every few simulated seconds; True ends the
+    run there, as a timeout (see :func:`nck.headless.run_on_kernel`).
     """
     data = data if data is not None else NcData()
     machine = machine or load_machine()
     turning = machine.kind == "lathe"
     recording = record(name, text, machine=machine, programs=programs, data=data,
-                       resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s)
+                       resolution_mm=resolution_mm or AUTO_CHORD_RESOLUTION_MM, timeout_s=timeout_s,
+                       give_up=give_up)
     run, path, tool_times = recording.run, recording.path, recording.tool_times_s
     if blank is None:
         blank = choose_blank(text, data.machine_setup, recording.mcs_minus_wcs_mm, path, turning)

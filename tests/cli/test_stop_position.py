@@ -56,6 +56,15 @@ def test_timeout_reports_the_point_reached_inside_the_block(tmp_path: Path, caps
     assert segments[-1]["end_mcs"]["X"] == x
 
 
+def test_timeout_inside_a_dwell_reports_nothing_after_it(tmp_path: Path, capsys) -> None:
+    # N20 dwells 35 s (G4 F in seconds, 001 L6410-6415); stopped 20 s into the run, N30 never started.
+    code, state, segments = _run(tmp_path, capsys, "N10 G90 G0 X10\nN20 G4 F35\nN30 G1 F600 X20\nM30\n",
+                                 "--timeout", "20")
+    assert code == 3
+    assert [s["n"] for s in segments] == [10]
+    assert state["position"]["mcs"]["X"] == 10.0
+
+
 def test_ended_run_reports_every_segment_and_the_programmed_end(tmp_path: Path, capsys) -> None:
     code, state, segments = _run(tmp_path, capsys, "N10 G90 G0 X10\nN20 TRANS Y2\nN30 G1 F2000 Y5\nM30\n")
     assert code == 0

@@ -143,9 +143,8 @@ async def test_the_editor_runs_the_program_once_for_both_views(slots_dir: Path, 
     from nck.check import CheckContext
 
     calls: list[str] = []
-    simulate, run_text = CheckContext.simulate, CheckContext.run_text
+    simulate = CheckContext.simulate
     monkeypatch.setattr(CheckContext, "simulate", lambda self, *a, **k: calls.append("simulate") or simulate(self, *a, **k))
-    monkeypatch.setattr(CheckContext, "run_text", lambda self, *a, **k: calls.append("run_text") or run_text(self, *a, **k))
     app = make_program_app(slots_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_simulation(pilot)
@@ -154,6 +153,47 @@ async def test_the_editor_runs_the_program_once_for_both_views(slots_dir: Path, 
         simulation = screen._material
         assert len(screen.toolpath.pieces) == len(simulation.path.starts) > 0
         assert screen.toolpath.pieces[-1].end == tuple(simulation.path.ends[-1].tolist())
+
+
+LONG_DWELL = "".join(f"N{10 * k} G4 F99999\n" for k in range(1, 5)) + "N50 M30\n"
+"""Four dwells of the longest time G4 F takes (99,999.999 s, 001 L6410-6415): over a day of machine
+time each, many seconds of computing for a run that is not given up."""
+
+
+async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_dir: Path, monkeypatch) -> None:
+    """A long simulation says how far it has come; Recalculate twice in a burst and going back to
+    the editor drop the runs still calculating (each ends at its next chunk, as a time-out)
+    instead of leaving them to run on beside the editor."""
+    from nck.check import CheckContext
+    from screens import program_runs
+
+    (data_dir / "MPF" / "DEMO.MPF").write_text(LONG_DWELL)
+    finished: list[str] = []
+    simulate = CheckContext.simulate
+
+    def recorded(self, *args, **options):
+        simulation = simulate(self, *args, **options)
+        finished.append(simulation.status)
+        return simulation
+
+    monkeypatch.setattr(CheckContext, "simulate", recorded)
+    monkeypatch.setattr(program_runs, "PROGRESS_EVERY_S", 0.0)
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        await pilot.press("f5")
+        screen = pilot.app.screen
+        for _ in range(1000):
+            if "blocks" in screen.stock.status_text:
+                break
+            await pilot.pause()
+        assert "calculating … " in screen.stock.status_text and "blocks" in screen.stock.status_text
+        await pilot.press("f7", "f7")  # Recalculate, twice in a burst
+        await pilot.press("f8")  # back to the editor
+        await settle(pilot)
+        assert not screen.simulating and screen._material is None
+    assert finished == ["timeout"] * 3
 
 
 async def test_view_keys_singly_and_in_a_burst(slots_dir: Path) -> None:
