@@ -107,22 +107,20 @@ class PathInterpolator:
             if m and len(run.chain) == 1 and (m == 1 or (m <= SCALAR_SAMPLES and run.profile.scalar_exact)):
                 # A few samples of one segment: Python floats, the same values as the numpy form
                 # below (see Profile.scalar_exact and Segment.points), cheaper on a handful of rows.
-                s_begin = run.s_begin
-                distances = run.profile.distances_after(run.tau, T, m)
-                flat = run.chain[0].segment.points([s_begin + d for d in distances])
+                flat = run.chain[0].segment.points(run.profile.distances_after(run.tau, T, m, run.s_begin))
                 if m == 1:
                     rows[k] = flat  # (the first cycle of every block: no array made for it)
                 else:
                     rows[k:k + m] = np.array(flat).reshape(m, -1)
                 run.tau = run.tau + T * m
-                self.cmd = rows[k + m - 1].copy()
                 k += m
             elif m:
                 taus = run.tau + self._sample_steps(m)
                 rows[k:k + m] = run.positions(run.profile.distances(taus))
                 run.tau = float(taus[m - 1])
-                self.cmd = rows[k + m - 1].copy()
                 k += m
+            # (self.cmd is not set from the last row: _finish_run sets it below, and after a
+            # break the caller sets it from the rows the servo took before anyone reads it.)
             if m == room:
                 break
             if stop_at_event:

@@ -29,7 +29,7 @@ class Segment:
         delta: ``end - start``.
     """
 
-    __slots__ = ("start", "end", "length", "arc", "delta", "_tangents", "_floats")
+    __slots__ = ("start", "end", "length", "arc", "delta", "_tangents", "_tangent_floats", "_floats")
 
     def __init__(self, start: np.ndarray, end: np.ndarray, length: float,
                  arc: tuple[int, int, float, float, float, float, float, float] | None = None) -> None:
@@ -39,6 +39,7 @@ class Segment:
         self.arc = arc
         self.delta = end - start
         self._tangents: dict[bool, np.ndarray] = {}
+        self._tangent_floats: dict[bool, list[float]] = {}
         self._floats: tuple[list[float], list[float], list[float]] | None = None  # start, delta, end
 
     def __repr__(self) -> str:
@@ -125,6 +126,13 @@ class Segment:
         else:
             self._tangents[at_end] = result
         return result
+
+    def tangent_floats(self, at_end: bool) -> list[float]:
+        """:meth:`tangent` as a list of Python floats (cached; the caller must not change it)."""
+        cached = self._tangent_floats.get(at_end)
+        if cached is None:
+            cached = self._tangent_floats[at_end] = self.tangent(at_end).tolist()
+        return cached
 
     def curvature(self, at_end: bool) -> np.ndarray:
         """Curvature vector d²p/ds² at the start or the end (zero for lines)."""

@@ -184,12 +184,10 @@ def junction_limit(params: MotionParams, prev: PlannedSegment, nxt: PlannedSegme
     if prev.exact_stop or (prev.jerk is None) != (nxt.jerk is None):
         return 0.0
     arrays = axis_arrays(params)
-    t1 = prev.segment.tangent(True)
-    t2 = nxt.segment.tangent(False)
     soft = nxt.jerk is not None
     limit = math.inf
     allowed = arrays.corner_soft_floats if soft else arrays.corner_brisk_floats
-    for before, after, corner in zip(t1.tolist(), t2.tolist(), allowed):
+    for before, after, corner in zip(prev.segment.tangent_floats(True), nxt.segment.tangent_floats(False), allowed):
         jump = abs(after - before)
         if jump > 1e-12:
             limit = min(limit, corner / jump)
@@ -239,13 +237,17 @@ class LookAhead:
 
     def _propagate(self, index: int) -> None:
         """Backward pass from ``index`` down while limits keep changing."""
+        items, feed_pct, rapid_pct = self.items, self.feed_pct, self.rapid_pct
         while index >= 0:
-            seg = self.items[index]
-            nxt = self.items[index + 1]
+            seg = items[index]
+            nxt = items[index + 1]
             if not isinstance(seg, PlannedSegment):
                 return
             if isinstance(nxt, PlannedSegment):
-                new = min(seg.junction_out, self.entry_max(nxt), self.v_max(seg))
+                # min(junction, entry_max(nxt), v_max(seg)) with the two methods written out
+                entry = min(nxt.v_max(feed_pct, rapid_pct),
+                            reach_up(nxt.exit_limit, nxt.remaining, nxt.accel, nxt.jerk))
+                new = min(seg.junction_out, entry, seg.v_max(feed_pct, rapid_pct))
             else:
                 new = 0.0
             if abs(new - seg.exit_limit) <= 1e-12:

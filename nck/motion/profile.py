@@ -121,9 +121,10 @@ class Profile:
         s = self.s0[idx] + self.v0[idx] * dt + self.a0[idx] * dt * dt / 2.0 + self.j[idx] * dt**3 / 6.0
         return np.minimum(s, self.length)
 
-    def distances_after(self, tau: float, period: float, count: int) -> list[float]:
+    def distances_after(self, tau: float, period: float, count: int, offset: float | None = None) -> list[float]:
         """Distances at ``tau + period·1`` … ``tau + period·count`` with Python floats (the same
-        formula as :meth:`distances`, term by term; the interpolator's form for short blocks)."""
+        formula as :meth:`distances`, term by term; the interpolator's form for short blocks),
+        each added to ``offset`` when given (``offset + distance``)."""
         phases, starts, duration, length = self.phases, self.starts, self.duration_s, self.length
         last = len(starts) - 1
         i = 0
@@ -137,7 +138,7 @@ class Profile:
             s = s0 + v0 * dt
             if a != 0.0 or j != 0.0:
                 s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
-            out.append(min(s, length))
+            out.append(min(s, length) if offset is None else offset + min(s, length))
         return out
 
     def state_at(self, t: float) -> tuple[float, float, float]:
@@ -287,6 +288,24 @@ def build_profile(
     If ``v_end`` cannot be reached within ``length`` the profile ends at the
     nearest reachable velocity (see ``Profile.v_end``).
     """
+    if jerk is None:
+        brisk = _brisk_profile(length, v_start, v_end, v_max, accel)
+        if brisk is not None:
+            return brisk
+    return build_profile_stepwise(length, v_start, v_end, v_max, accel, jerk, a_start)
+
+
+def build_profile_stepwise(
+    length: float,
+    v_start: float,
+    v_end: float,
+    v_max: float,
+    accel: float,
+    jerk: float | None,
+    a_start: float = 0.0,
+) -> Profile:
+    """:func:`build_profile` phase by phase with the builder (every case; without jerk,
+    :func:`build_profile` mostly takes a written-out form with the same floats)."""
     builder = _Builder(max(v_start, 0.0), a_start)
     settle_acceleration(builder, jerk)
     rest = length - builder.s
@@ -327,6 +346,60 @@ def build_profile(
     builder.cruise(rest - d1 - d3)
     builder.ramp(v_end, accel, jerk)
     return builder.build(length)
+
+
+def _brisk_profile(length: float, v_start: float, v_end: float, v_max: float, accel: float) -> Profile | None:
+    """:func:`build_profile` without jerk, the same floats in the same order (the builder's
+    steps written out: ramp, cruise, ramp; BRISK starts at zero acceleration whatever
+    ``a_start``), for the usual case; None for the rare ones (nothing left to go, no
+    movement, braking that needs the bisections), which the builder then takes."""
+    v = max(v_start, 0.0)
+    rest = length - 0.0
+    v_max = max(v_max, 0.0)
+    if rest <= TINY:
+        return None
+    v_end = min(max(v_end, 0.0), v_max)
+    if v_end > v:
+        v_end = min(v_end, reach_up(v, rest, accel, None))
+    elif v_end < v:
+        if not ramp_distance(v, 0.0, accel, None) <= rest:
+            return None  # reach_down's bisection
+        v_end = max(v_end, 0.0)
+    if v > v_max:
+        peak = max(v_max, v_end)
+    else:
+        peak = _peak(v, v_end, v_max, rest, accel, None)
+    if peak <= TINY and v <= TINY:
+        return None
+    d1 = ramp_distance(v, peak, accel, None)
+    d3 = ramp_distance(peak, v_end, accel, None)
+    if v > v_max and d1 + d3 > rest * (1.0 + 1e-9) + 1e-12:
+        return None
+    # _Builder(v).ramp(peak), .cruise(rest - d1 - d3), .ramp(v_end), .build(length), with the
+    # builder's tests as written (the same outcome for NaN) and without its dead updates (the
+    # velocity after a ramp is its target, the acceleration is set before it is read again).
+    t = s = 0.0
+    rows: list[tuple[float, float, float, float, float]] = []
+    for target, cruise in ((peak, rest - d1 - d3), (v_end, None)):
+        dv = target - v
+        if not abs(dv) <= TINY:  # _Builder.ramp, accel_phase, phase
+            d = abs(dv) / accel
+            a = (1.0 if dv > 0 else -1.0) * accel
+            if not d <= TINY:
+                rows.append((t, s, v, a, 0.0))
+                s += v * d + a * d * d / 2.0 + 0.0 * d**3 / 6.0
+                t += d
+        v = target
+        if cruise is not None and cruise > TINY and v > TINY:  # _Builder.cruise and phase
+            d = cruise / v
+            if not d <= TINY:
+                rows.append((t, s, v, 0.0, 0.0))
+                s += v * d
+                v += 0.0 * d + 0.0 * d * d / 2.0
+                t += d
+    if not rows:
+        rows.append((0.0, 0.0, v, 0.0, 0.0))
+    return Profile(tuple(rows), duration_s=t, length=min(length, s + 1e-9), v_end=max(v, 0.0))
 
 
 def _peak(v0: float, v1: float, v_max: float, length: float, accel: float, jerk: float | None) -> float:

@@ -8,7 +8,7 @@ negative), so continuous-path transitions lose no time.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -16,7 +16,7 @@ from nck.motion.planner import PlannedSegment
 from nck.motion.profile import Profile
 
 
-@dataclass
+@dataclass(slots=True)
 class PathRun:
     """A profile over ``chain`` starting ``s_begin`` into the first segment.
 
@@ -30,9 +30,7 @@ class PathRun:
     tau: float = 0.0
     kind: str = "segment"
     exit_target: float = 0.0
-
-    def __post_init__(self) -> None:
-        self._offsets: np.ndarray | None = None
+    _offsets: np.ndarray | None = field(default=None, init=False, repr=False, compare=False)
 
     @property
     def offsets(self) -> np.ndarray:

@@ -685,7 +685,9 @@ class PlannedMotion(PathInterpolator):
         if self.plan_pos is None or (self.run is None and not self.la.items and not self.wait_cycles
                                      and not self.spindle_wait):
             self.plan_pos = self.cmd.copy()
-        return self.plan_pos.copy()
+        # No copy: the planned position is only ever replaced, never written into (a buffered
+        # segment keeps it as its end, the next one as its start; see Segment).
+        return self.plan_pos
 
     def _segment(self, item: Motion, start: np.ndarray, end: np.ndarray) -> Segment | None:
         if item.kind in ("G2", "G3") and item.center_mcs:

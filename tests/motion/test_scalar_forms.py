@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from nck.motion import servo_defer
 from nck.motion.interpolator import SCALAR_SAMPLES
 from nck.motion.path import Segment, line
-from nck.motion.profile import build_profile
+from nck.motion.profile import build_profile, build_profile_stepwise
 
 FINITE = st.floats(min_value=-1000.0, max_value=1000.0, allow_nan=False, allow_infinity=False)
 
@@ -103,6 +103,34 @@ def test_scalar_samples_of_a_brisk_profile_equal_the_numpy_samples(length: float
     times = tau0 + period * np.arange(1, samples + 1)
     expected = profile.distances(times).tolist()
     assert profile.distances_after(tau0, period, samples) == expected
+
+
+EDGE_SPEEDS = st.sampled_from([0.0, -0.0, 1e-13, 1e-12, 2e-12, 1e-9, -1.0, 1e6, 1e110, math.inf])
+
+
+@settings(max_examples=500)
+@given(st.one_of(st.floats(0.0, 200.0), EDGE_SPEEDS), st.one_of(st.floats(-1.0, 80.0), EDGE_SPEEDS),
+       st.one_of(st.floats(-1.0, 80.0), EDGE_SPEEDS), st.one_of(st.floats(0.0, 100.0), EDGE_SPEEDS),
+       st.one_of(st.floats(1e-3, 5000.0), st.sampled_from([1e-3, 1e6, math.inf])), st.floats(-50.0, 50.0))
+def test_a_brisk_profile_equals_the_builders(length: float, v0: float, v1: float, vmax: float, accel: float,
+                                            a_start: float) -> None:
+    """build_profile writes the BRISK builder's steps out for the usual case: the same phases,
+    duration, length and end velocity as the stepwise builder (which the rare cases keep), also
+    when a velocity is at the edge (zero, TINY, above the limit, infinite) or an exception."""
+    try:
+        expected = build_profile_stepwise(length, v0, v1, vmax, accel, None, a_start)
+    except (ArithmeticError, ValueError) as error:
+        expected_error = type(error)
+        try:
+            build_profile(length, v0, v1, vmax, accel, None, a_start)
+        except (ArithmeticError, ValueError) as raised:
+            assert type(raised) is expected_error
+        else:
+            raise AssertionError("the written-out form did not raise")
+        return
+    got = build_profile(length, v0, v1, vmax, accel, None, a_start)
+    assert repr((got.phases, got.duration_s, got.length, got.v_end, got.scalar_exact)) == repr(
+        (expected.phases, expected.duration_s, expected.length, expected.v_end, expected.scalar_exact))
 
 
 ANGLE = st.floats(min_value=-4.0 * math.pi, max_value=4.0 * math.pi, allow_nan=False)
