@@ -128,6 +128,28 @@ class MotionBuilder:
             return _wait_for_spindle_speed(self.release_held(modal) + self._build(words, modal, geo), geo)
         return _wait_for_spindle_speed(self._build(words, modal, geo), geo)
 
+    def simple_path_block(self, words: BlockWords, modal: ModalState) -> list[canon.CanonCommand]:
+        """:meth:`build` of a simple motion line (:mod:`nck.interp.simple_step`) in a simple modal
+        state (:func:`nck.interp.plain_setup.simple_state`): G codes of groups 1 and 14 only,
+        path axes written, no word but I/J/K/CR=/F, nothing held back, waiting or compensated.
+
+        The same stages as :meth:`build` without those that cannot act on such a block (G641
+        distances, settable frame, dwell, auxiliary limits, tool, spindle, outputs, contour
+        definition, radius compensation's pass-through, measuring); under G96, or without a
+        path axis, :meth:`build` itself."""
+        geo = modal.geometry
+        if not words.axes or modal.gcodes.get(15) == "G96":
+            return self.build(words, modal)
+        _refuse_words_without_effect(words, modal)
+        self.spindle_wait = False
+        self._feed_and_type(words, modal, geo)
+        own: list[canon.CanonCommand] = list(self.path.motion(words, modal, geo, self._feed_info(modal, geo)))
+        if not own and (geo.waiting or self._holding(modal, geo)):
+            geo.waiting = geo.waiting + (waiting_outputs.WaitingBlock(words.source, (), True),)
+        if geo.spindle_check_due:
+            return _wait_for_spindle_speed(own, geo)
+        return own
+
     def _build(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> list[canon.CanonCommand]:
         """The commands of the block once a held-back G641 corner is settled."""
         if 8 in words.gcodes:
@@ -368,6 +390,11 @@ class MotionBuilder:
 
     # ------------------------------------------------------------------ feed
     def _feed(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> None:
+        self._feed_and_type(words, modal, geo)
+        self._feed_words(words, geo)
+
+    def _feed_and_type(self, words: BlockWords, modal: ModalState, geo: GeometryState) -> None:
+        """The feed type (G93/G94/G95 …) in force and a programmed F."""
         feed_type = modal.gcodes.get(15, "G94")
         if feed_type != geo.feed_type:
             # Changing between G93, G94 and G95 deletes the programmed F (V1, 5.1).
@@ -380,6 +407,9 @@ class MotionBuilder:
                 raise NcAlarmError(ALARM_PATH_VELOCITY)
             modal.feed = feed
             geo.feed_unit_mm = self.path.units(modal).feed_mm
+
+    def _feed_words(self, words: BlockWords, geo: GeometryState) -> None:
+        """FA[…], ACC[…] and OVR: the feeds of spindles, acceleration factors, the override."""
         for key, value in words.words.items():
             if key.startswith("FA[S") and key.endswith("]"):
                 # 002 L51375-51385: the positioning speed of a spindle in degrees/min; 0 gives

@@ -153,7 +153,7 @@ class SimpleStep:
         for group, code in plan.gcodes:
             gcodes[group] = code
         try:
-            commands = interp.builder.build(words, modal)
+            commands = interp.builder.simple_path_block(words, modal)
         except NcAlarmError:
             _restore(modal, saved_modal, saved_groups)
             geo.__dict__.clear()
