@@ -56,6 +56,7 @@ ALARM_FRAME_INSTRUCTION = 18311  # G58/G59 without MD24000 FRAME_ADD_COMPONENTS
 ALARM_FINE_NOT_CONFIGURED = 18312  # G58/G59 without a fine offset (MD18600 MM_FRAME_FINE_TRANS)
 ROTARY_MODES = ("DC", "ACP", "ACN")
 ARC_KINDS = ("G2", "G3", "CIP", "CT")
+CIRCLE_KINDS = ("G2", "G3")  # circles with an end point and a centre, radius or angle
 LEAD_KINDS = ("G33", "G331", "G332")
 """Path motions programmed with a lead (the thread pitch, I/J/K): thread cutting G33 and
 rigid tapping G331/G332 (the spindle in position control); the path builder reads the lead."""
@@ -121,8 +122,8 @@ class PathBuilder:
     """Computes the path geometry of blocks for one machine (see module docstring)."""
 
     separable_lines = True
-    """Lines on a separable frame take :meth:`_separable_line` (the tests switch it off to
-    compare with the general element path)."""
+    """Lines and G2/G3 circles on a separable frame take :meth:`_separable_line` and
+    :meth:`_separable_arc` (the tests switch it off to compare with the general element path)."""
 
     def __init__(self, machine: MachineConfig, data: NcData) -> None:
         self.machine = machine
@@ -436,6 +437,10 @@ class PathBuilder:
             line = self._separable_line(kind, words, modal, geo, feed, units, modal.gcodes.get(6, "G17"))
             if line is not None:
                 return [line]
+        elif kind in CIRCLE_KINDS and self.separable_lines:
+            arc = self._separable_arc(kind, words, modal, geo, feed, units)
+            if arc is not None:
+                return [arc]
         pl = self.plane(modal)
         start = dict(geo.wcs_mm)
         end, programmed = self._targets(words, modal, geo, units)
@@ -543,6 +548,72 @@ class PathBuilder:
         )
         geo.wcs_mm = end
         geo.tangent = line_tangent(start, stop)
+        modal.position_wcs = position_wcs
+        modal.position_mcs = dict(end_mcs)
+        return motion
+
+    def _separable_arc(self, kind: str, words: Any, modal: Any, geo: GeometryState, feed: dict[str, Any],
+                       units: UnitSystem) -> canon.Motion | None:
+        """The motion of a G2/G3 circle when nothing but the circle itself can happen (the
+        conditions of :meth:`_separable_line`, and both the end and the centre finite). Then
+        :meth:`motion` would emit the arc unchanged through :func:`path_aids.with_contour_aids`
+        and :meth:`emit`; here the same operations in the same order without the block's
+        context: the end and the centre mapped by :func:`_mcs_on_frame`, the axes neither
+        programmed nor in the plane kept (the frame couples no axes). The modal state is
+        updated as :meth:`motion` updates it. None when the block is not such a circle (nothing
+        changed: :meth:`motion` builds it); an alarm of the circle as :meth:`motion` raises it.
+        """
+        w = words.words
+        if geo.pending is not None or geo.rndm_mm or self.geo_axes != GEOMETRY_AXES_DEFAULT \
+                or not LINE_AID_WORDS.isdisjoint(w):
+            return None
+        gcodes = modal.gcodes
+        exact = ends_in_exact_stop(words, gcodes)
+        if rounding_distance_mm(kind, exact, gcodes, geo) > 0.0:
+            return None  # G641 holds the circle back for its corner
+        transform = geo.frames.transform()
+        if transform.axis_affine() is None or transform.geometry_axes != GEOMETRY_AXES_DEFAULT:
+            return None
+        pl = self.plane(modal)
+        end, programmed = self._targets(words, modal, geo, units)
+        element = self._arc(kind, words, modal, geo, units, pl, dict(geo.wcs_mm), end)
+        assert isinstance(element, Arc)  # G2/G3 without a pole
+        point, centre = element.end, element.center
+        if not (math.isfinite(point[0] + point[1] + point[2]) and math.isfinite(centre[0] + centre[1] + centre[2])):
+            return None  # numpy's matrix product maps it (:meth:`_mcs_of`)
+        programmed |= {pl.abscissa, pl.ordinate}
+        for i, axis in enumerate(self.geo_axes):
+            end[axis] = point[i]
+        tool = self._tool_lengths(modal)
+        shared = self.shared_gcodes(gcodes)
+        other = {a: end[a] for a in end if a not in self.geo_axes}
+        start_mcs = modal.position_mcs
+        position_wcs = self._display(end, gcodes, units)
+        kept = tuple(a for a in self.path_axes if a not in programmed)
+        frame = self._line_frame(transform, tool)
+        assert frame is not None  # the frame maps every geometry axis on its own (checked above)
+        end_mcs = _mcs_on_frame(point, frame, other, start_mcs, kept)
+        centre_full = {"X": centre[0], "Y": centre[1], "Z": centre[2]}
+        centre_full.update(other)
+        center_wcs = self._display(centre_full, gcodes, units)
+        center_mcs = _mcs_on_frame(centre, frame, other, start_mcs, ())
+        applicate = pl.applicate
+        if applicate in self.path_axes and applicate not in programmed:
+            center_mcs[applicate] = start_mcs.get(applicate, center_mcs[applicate])
+        normal = _map_normal(transform, element.axis)
+        end_wcs = dict(position_wcs)
+        if kept:
+            self._report_actual(end_wcs, end_mcs, kept, (frame.scales, frame.offsets), transform, tool, modal,
+                                units)
+        motion = canon.Motion(
+            kind=kind, source=words.source, plane=pl.code, end_wcs=end_wcs, end_mcs=end_mcs,
+            start_mcs=dict(start_mcs), center_wcs=center_wcs, center_mcs=center_mcs, turns=element.turns,
+            feed=feed.get("feed"), feed_mm_min=self._feed_value(feed, element.length()),
+            feed_mm_rev=feed.get("feed_mm_rev"), accel_pct=feed.get("accel_pct"), exact_stop=exact,
+            exact_stop_window=gcodes.get(12, "G601"), gcodes=shared, arc_normal_mcs=normal,
+        )
+        geo.wcs_mm = end
+        geo.tangent_at_end_of(element)
         modal.position_wcs = position_wcs
         modal.position_mcs = dict(end_mcs)
         return motion
@@ -809,19 +880,7 @@ class PathBuilder:
                 and math.isfinite(point[0] + point[1] + point[2]):
             frame = self._line_frame(transform, tool)
             if frame is not None:
-                other = context["end_other"]
-                out: dict[str, float] = {}
-                for axis, i, scale, offset, tool_mm in frame.axes:
-                    if i >= 0:
-                        value = machine_mm(float(point[i]), scale, offset, tool_mm)
-                    elif axis in other:
-                        value = (scale * float(other[axis]) + offset) + tool_mm
-                    else:
-                        value = 0.0 + tool_mm
-                    if axis in kept:
-                        value = start_mcs.get(axis, value)
-                    out[axis] = round_position(value)
-                return out
+                return _mcs_on_frame(point, frame, context["end_other"], start_mcs, kept)
         full = {"X": point[0], "Y": point[1], "Z": point[2]}
         full.update(context["end_other"])
         bcs = transform.apply(full)
@@ -976,6 +1035,25 @@ class PathBuilder:
                 modal.position_mcs[axis] = float(position_mcs[axis])
                 geo.wcs_mm[axis] = wcs.get(axis, 0.0)
         modal.position_wcs = self.wcs_view(geo, modal)
+
+
+def _mcs_on_frame(point: tuple[float, float, float], frame: LineFrame, other: Mapping[str, float],
+                  start_mcs: Mapping[str, float], kept: Iterable[str]) -> dict[str, float]:
+    """:meth:`PathBuilder._mcs_of` on a frame that maps every geometry axis on its own: the
+    geometry axes from ``point``, the other path axes from ``other`` (their WCS values), the
+    ``kept`` axes where they stand."""
+    out: dict[str, float] = {}
+    for axis, i, scale, offset, tool_mm in frame.axes:
+        if i >= 0:
+            value = machine_mm(float(point[i]), scale, offset, tool_mm)
+        elif axis in other:
+            value = (scale * float(other[axis]) + offset) + tool_mm
+        else:
+            value = 0.0 + tool_mm
+        if axis in kept:
+            value = start_mcs.get(axis, value)
+        out[axis] = round_position(value)
+    return out
 
 
 def couples_axes(transform: Transform) -> bool:

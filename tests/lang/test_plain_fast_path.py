@@ -42,8 +42,8 @@ fixed Hypothesis seed drew such a program)."""
 
 @contextmanager
 def _paths(fast: bool) -> Iterator[None]:
-    """The fast paths on (``fast``) or the reference: the general block path, with lines built
-    as elements (:attr:`PathBuilder.separable_lines` off)."""
+    """The fast paths on (``fast``) or the reference: the general block path, with lines and
+    circles built as elements (:attr:`PathBuilder.separable_lines` off)."""
     Interpreter.fast_path = fast
     PathBuilder.separable_lines = fast
     try:
@@ -452,3 +452,84 @@ def test_a_line_plan_is_not_taken_to_another_machine() -> None:
         outcomes.append(per_path[1])
     assert outcomes[0] == outcomes[2] and not outcomes[0][2]
     assert outcomes[1][2] == [(12550, 2)]
+
+
+@st.composite
+def circle_lines(draw: Any, axes: str) -> str:
+    """A circle block (G2/G3 with ``CR=``, ``AR=``, I/J/K or ``=AC()`` centres, sometimes
+    ``TURN=``) or a line, frame, plane, unit or mode change as in :func:`frame_lines`. End points
+    stay within a few mm so that most circles are valid; some are not (14040, 14095)."""
+    choice = draw(st.integers(0, 5))
+    if choice == 0:
+        return draw(st.sampled_from(FRAMES + ["G17", "G18", "G19"]))
+    if choice == 1:
+        return draw(frame_lines(axes))
+    words = [draw(st.sampled_from(["G2", "G3", "N7 G2", "G02"]))]
+    centre = draw(st.integers(0, 3))
+    full_circle = centre >= 2 and draw(st.booleans())  # no end point: valid for any centre but the start
+    for axis in axes:
+        if not full_circle and (centre < 2 or draw(st.integers(0, 2))):
+            words.append(f"{axis}{draw(st.integers(-80, 80)) / 8}")
+    if centre == 0:
+        words.append("CR=" + draw(st.sampled_from(["40", "-40", "25.5", "-30", "0.5"])))
+    elif centre == 1:
+        words.append("AR=" + draw(st.sampled_from(["90", "270", "45.5", "180"])))
+    else:
+        for letter in "IJK":
+            if draw(st.integers(0, 3)):
+                value = draw(st.integers(-40, 40)) / 8
+                words.append(f"{letter}=AC({value})" if centre == 3 else f"{letter}{value}")
+    if draw(st.integers(0, 5)) == 0:
+        words.append("TURN=" + draw(st.sampled_from(["1", "2"])))
+    return " ".join(words)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(["mill", "lathe2"]).flatmap(
+    lambda name: st.tuples(st.just(name), st.lists(circle_lines("XYZ" if name == "mill" else "XZ"),
+                                                   min_size=1, max_size=40))),
+    st.sampled_from([(0.0, 1.0, False), (-12.5, 1.0, False), (30.25, 2.0, True), (7.0, -1.0, False)]))
+def test_circles_on_a_separable_frame_give_the_element_path(program: tuple[str, list[str]],
+                                                             offset: tuple[float, float, bool]) -> None:
+    """:meth:`PathBuilder._separable_arc` against the general path's arc element, contour aids
+    and emit (:attr:`PathBuilder.separable_lines` off): every block result (end points and
+    centres in WCS and MCS, the turning axis, kept axes reported through the frame, feeds),
+    alarm and the state after, block by block, in every plane under work offsets with
+    translation, scale and mirroring, with and without the fast step."""
+    machine_name, lines = program
+    machine = MACHINE if machine_name == "mill" else load_machine(machine_name)
+    text = "G1 F1000\n" + "\n".join(lines) + "\nM30\n"
+    shift, scale, mirror = offset
+
+    def data() -> NcData:
+        found = NcData()
+        g54 = found.settable_frames["G54"]
+        g54.trans.update({"X": shift, "Z": -shift / 2})
+        if scale != 1.0:
+            g54.scale.update({"X": scale, "Z": scale})
+        if mirror:
+            g54.mirror.update({"Z": True})
+        return found
+
+    reference = _steps(text, False, lines=False, machine=machine, data=data())
+    assert _steps(text, True, machine=machine, data=data()) == reference, text
+    assert _steps(text, False, lines=True, machine=machine, data=data()) == reference, text
+
+
+@pytest.mark.parametrize("text", [
+    "G0 X1 Y2 Z3 F1000\nG54\nG2 X5 Y2 CR=10\nG3 X1 Y2 I-2 J0\nTRANS Z0.25\nG2 X1 Y2 I2 J0 TURN=1\nM30\n",
+    "G0 X1 Y2 Z3 F1000\nG18\nATRANS Y3\nG2 X5 Z3 CR=-10\nAMIRROR X0\nG3 X1 Z3 AR=90\nG19 G2 Y4 Z1 CR=8\nM30\n",
+    "G0 X1 Y2 Z3 F1000\n$TC_DP1[1,1]=120\n$TC_DP3[1,1]=50.5\nT1 D1 M6\nG2 X3 Y2 I=AC(2) J=AC(2)\nG91 G3 X-2 Y0 Z1 CR=1\nM30\n",
+])
+def test_circles_after_a_frame_or_tool_change_give_the_element_path(text: str) -> None:
+    """Circles whose applicate (or another axis) is not programmed after a frame or tool
+    change: the kept axes stay where they stand in the MCS, the centre's applicate too."""
+    def data() -> NcData:
+        found = NcData()
+        found.settable_frames["G54"].trans.update({"X": -12.5, "Y": 4.0, "Z": 6.25})
+        return found
+
+    reference = _steps(text, False, lines=False, data=data())
+    assert not reference[1], reference[1]
+    assert _steps(text, True, data=data()) == reference
+    assert _steps(text, False, lines=True, data=data()) == reference
