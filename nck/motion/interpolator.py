@@ -111,7 +111,7 @@ class PathInterpolator:
                 if m == 1:
                     rows[k] = flat  # (the first cycle of every block: no array made for it)
                 else:
-                    rows[k:k + m] = np.array(flat).reshape(m, -1)
+                    rows.flat[k * rows.shape[1]:(k + m) * rows.shape[1]] = flat  # (no array made for it)
                 run.tau = run.tau + T * m
                 k += m
             elif m:

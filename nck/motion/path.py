@@ -29,7 +29,7 @@ class Segment:
         delta: ``end - start``.
     """
 
-    __slots__ = ("start", "end", "length", "arc", "delta", "_tangents", "_tangent_floats", "_floats")
+    __slots__ = ("start", "end", "length", "arc", "delta", "_tangents", "_floats")
 
     def __init__(self, start: np.ndarray, end: np.ndarray, length: float,
                  arc: tuple[int, int, float, float, float, float, float, float] | None = None) -> None:
@@ -38,8 +38,7 @@ class Segment:
         self.length = length
         self.arc = arc
         self.delta = end - start
-        self._tangents: dict[bool, np.ndarray] = {}
-        self._tangent_floats: dict[bool, list[float]] = {}
+        self._tangents: dict[bool, list[float]] = {}
         self._floats: tuple[list[float], list[float], list[float]] | None = None  # start, delta, end
 
     def __repr__(self) -> str:
@@ -78,21 +77,25 @@ class Segment:
         inv = 1.0 / length if length > 0 else 0.0
         arc = self.arc
         out: list[float] = []
+        append = out.append  # (a loop of appends: cheaper than a list comprehension per row)
+        axes = list(zip(start, delta))
         for s in distances:
             lam = min(max(s * inv, 0.0), 1.0) if length > 0 else 1.0
             if arc is None:
-                out.extend([x0 + lam * d for x0, d in zip(start, delta)])
+                for x0, d in axes:
+                    append(x0 + lam * d)
                 continue
             if lam >= 1.0:
                 out.extend(end)
                 continue
-            point = [x0 + lam * d for x0, d in zip(start, delta)]
+            row = len(out)
+            for x0, d in axes:
+                append(x0 + lam * d)
             i1, i2, c1, c2, r0, r1, th0, sweep = arc
             theta = th0 + lam * sweep
             radius = r0 + lam * (r1 - r0)
-            point[i1] = c1 + radius * math.cos(theta)
-            point[i2] = c2 + radius * math.sin(theta)
-            out.extend(point)
+            out[row + i1] = c1 + radius * math.cos(theta)
+            out[row + i2] = c2 + radius * math.sin(theta)
         return out
 
     def _arc_at(self, lam: float) -> tuple[int, int, float, float, float, float]:
@@ -112,27 +115,28 @@ class Segment:
 
     def tangent(self, at_end: bool) -> np.ndarray:
         """Unit tangent at the start or the end."""
+        return np.array(self.tangent_floats(at_end))
+
+    def tangent_floats(self, at_end: bool) -> list[float]:
+        """The unit tangent at the start or the end as Python floats (cached; the caller must
+        not change the list)."""
         cached = self._tangents.get(at_end)
         if cached is not None:
             return cached
         if self.arc is None:
             first = self.delta / self.length
+            values = first.tolist()
         else:
-            first = np.array(self._first_derivative(1.0 if at_end else 0.0))
+            values = self._first_derivative(1.0 if at_end else 0.0)
+            first = np.array(values)
         norm = math.sqrt(float(first.dot(first)))  # numpy's dot (BLAS, fused multiply-add)
-        result = first / norm if norm > 0 else first
+        # (an element-wise division: the same correctly rounded quotients as numpy's)
+        result = [value / norm for value in values] if norm > 0 else values
         if self.arc is None:
             self._tangents[True] = self._tangents[False] = result  # a line has one direction
         else:
             self._tangents[at_end] = result
         return result
-
-    def tangent_floats(self, at_end: bool) -> list[float]:
-        """:meth:`tangent` as a list of Python floats (cached; the caller must not change it)."""
-        cached = self._tangent_floats.get(at_end)
-        if cached is None:
-            cached = self._tangent_floats[at_end] = self.tangent(at_end).tolist()
-        return cached
 
     def curvature(self, at_end: bool) -> np.ndarray:
         """Curvature vector d²p/ds² at the start or the end (zero for lines)."""

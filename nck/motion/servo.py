@@ -237,7 +237,10 @@ class ServoBank(ServoModel):
         """True when the one-cycle fast path applies (no faults, no delayed speed limit)."""
         if self.has_ctrlout_time:
             return False
-        return not any(f.active or f.push_mm for f in self.faults)
+        for fault in self.faults:  # (a loop: no generator per block)
+            if fault.active or fault.push_mm:
+                return False
+        return True
 
     def _process_one(self, x: np.ndarray) -> tuple[np.ndarray, Trip | None]:
         """One IPO cycle without faults: the same model and monitors as :meth:`process`."""

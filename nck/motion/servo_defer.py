@@ -27,7 +27,7 @@ import numpy as np
 from nck.motion.servo_model import MOVING_MM_S, ServoModel
 from nck.motion.servo_paths import process_fast
 
-SMALL_ROWS = 8  # up to this many rows the speed range is taken in Python floats (cheaper than numpy)
+SMALL_ROWS = 16  # up to this many rows the speed range is taken in Python floats (cheaper than numpy)
 
 
 def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
@@ -62,8 +62,19 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
 def speed_range(rows: np.ndarray, previous: np.ndarray, inv_t: float) -> tuple[list[float], list[float]]:
     """Largest and smallest setpoint speed |difference × 1/T| of every axis over ``rows``
     (``previous``: the setpoint before them); up to SMALL_ROWS rows in Python floats."""
-    if rows.shape[0] <= SMALL_ROWS:
+    m = rows.shape[0]
+    if m == 1:
         return speed_range_of_rows(rows.tolist(), previous.tolist(), inv_t)
+    if m <= SMALL_ROWS:
+        # Axis by axis: the largest and smallest step of each column (max and min of finite
+        # floats: the same values as the row-by-row comparisons and numpy's reductions).
+        tops: list[float] = []
+        lows: list[float] = []
+        for x0, column in zip(previous.tolist(), rows.T.tolist()):
+            steps = [abs(x - before) for before, x in zip([x0] + column, column)]
+            tops.append(max(steps) * inv_t)
+            lows.append(min(steps) * inv_t)
+        return tops, lows
     step = np.empty_like(rows)
     np.subtract(rows[0], previous, out=step[0])
     np.subtract(rows[1:], rows[:-1], out=step[1:])
