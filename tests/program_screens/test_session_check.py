@@ -98,8 +98,8 @@ def test_the_setting_is_a_copy_taken_when_asked() -> None:
     setting = queries.answer(nck, queries.CheckSetting())
     assert setting.machine is nck.machine
     nck.data.r[7] = 1.0  # a later change of the session does not reach a check already asked for
-    result = setting.run_text("A.MPF", "N10 G0 X=R7\nN20 R7=3\nN30 M30\n")
-    assert [m.end_wcs["X"] for m in result.motions] == [12.5]
-    again = setting.run_text("A.MPF", "N10 G0 X=R7\nN20 M30\n")  # each run starts from the copy
-    assert [m.end_wcs["X"] for m in again.motions] == [12.5]
+    result = setting.simulate("A.MPF", "N10 G0 X=R7\nN20 R7=3\nN30 M30\n")
+    assert result.path.ends[:, 0].tolist() == [12.5]
+    again = setting.simulate("A.MPF", "N10 G0 X=R7\nN20 M30\n")  # each run starts from the copy
+    assert again.path.ends[:, 0].tolist() == [12.5]
     assert nck.data.r[7] == 1.0
