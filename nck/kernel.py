@@ -115,6 +115,7 @@ class Nck:
         self.batch_cycles = max(1, int(batch_cycles))  # see step()
         self._cycles_in_step = 1
         self._prefed: tuple[ProgramRun, list[RunEvent]] | None = None  # see _feed_between_cycles
+        self._options = RunOptions()  # see _run_options
         # The machine and its motion system (both replaced when stored machine data come into effect).
         self.plant = MachinePlant(config, (motion_factory or planned_motion_factory)(config))
         getattr(self.motion, "attach_setting_data", lambda _data: None)(self.data.setting_data)
@@ -985,7 +986,14 @@ class Nck:
         return self.plant.test_motion if self.plant.test_motion is not None else self.motion
 
     def _run_options(self) -> RunOptions:
-        return RunOptions(single_block=self.switches.program_control["single_block"], m01=bool(self.switches.program_control["m01"]))  # type: ignore[arg-type]
+        """The program-control switches the run reads; the same object while they stay (asked
+        before every block)."""
+        control = self.switches.program_control
+        single_block, m01 = control["single_block"], bool(control["m01"])
+        options = self._options
+        if options.single_block != single_block or options.m01 != m01:
+            options = self._options = RunOptions(single_block=single_block, m01=m01)  # type: ignore[arg-type]
+        return options
 
     def _unreferenced_axes(self) -> list[str]:
         if int(self.machine.md_value("MD20700", None, 1) or 0) == 0:

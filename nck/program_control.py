@@ -100,7 +100,8 @@ class SearchFindings:
 
 def block_view(result: BlockResult) -> BlockView:
     """The display form of an interpreted block."""
-    return BlockView(file=result.source.file, line=result.source.line, text=result.text)
+    source = result.source
+    return BlockView(source.file, source.line, result.text)
 
 
 def parse_search_target(target: str) -> tuple[int | None, str]:
@@ -223,7 +224,8 @@ class ProgramRun:
 
     def _push(self, motion: MotionSystem, item: Motion | Dwell) -> None:
         self.pushed.append(item)
-        self._inflight.append((item.source.file, item.source.line))
+        source = item.source
+        self._inflight.append((source.file, source.line))
         self._pushed_total += 1
         motion.push(item)
 
@@ -277,15 +279,17 @@ class ProgramRun:
         self._pending = result
         self._index = 0
         self.basic_blocks.taken(result)
+        history = self.history
         if not result.extras.get("display_off"):
             self.current = result
-            self.history.append(block_view(result))
+            history.append(block_view(result))
         # What the block display shows while the main run executes this block: the block itself,
         # or for a block of a DISPLOF subprogram the block that called it. By identity of the
         # source: the main run may be far behind the interpreter (more than the history holds).
-        self._shown_as[id(result.source)] = (result.source, self.history[-1] if self.history else None)
-        if len(self._shown_as) > BLOCKS_REMEMBERED:
-            self._shown_as.popitem(last=False)
+        source, shown_as = result.source, self._shown_as
+        shown_as[id(source)] = (source, history[-1] if history else None)
+        if len(shown_as) > BLOCKS_REMEMBERED:
+            shown_as.popitem(last=False)
         self.blocks_executed += 1
 
     def _emit(self, motion: MotionSystem, options: RunOptions, events: list[RunEvent]) -> bool:
@@ -311,15 +315,16 @@ class ProgramRun:
                         self._index += 1
                         continue
                     command = started
+                segments = self.segments
                 if isinstance(command, Motion):
                     command = self._transform(command)
                     self.last_motion = command
                     self.basic_blocks.moved(command)
-                    self.segments[id(command.source)] = command
+                    segments[id(command.source)] = command
                 else:
-                    self.segments.setdefault(id(command.source), command)
-                if len(self.segments) > PUSHED_HISTORY:
-                    self.segments.popitem(last=False)
+                    segments.setdefault(id(command.source), command)
+                if len(segments) > PUSHED_HISTORY:
+                    segments.popitem(last=False)
                 self._push(motion, command)
                 if getattr(motion, "refused_source", None) is command.source:
                     # Block preparation checks the end point (10720, 10730 …) and goes no further;

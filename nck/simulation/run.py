@@ -334,19 +334,24 @@ class PathRecorder:
             points = self._points_in_blank(motion, start, end, shift) if in_blank else self._points(motion, start, end)
         else:
             points = None
-        if points is None:
-            points = list(end)  # a straight move is one chord
         # Each chord starts where the one before ends; its length as numpy's norm of one row
         # ((dx² + dy²) + dz²), the lengths summed in numpy's pairwise order (one chord: itself).
-        starts = [*start, *points[:-3]]
-        lengths = []
-        for i in range(0, len(points), 3):
-            dx, dy, dz = points[i] - starts[i], points[i + 1] - starts[i + 1], points[i + 2] - starts[i + 2]
-            lengths.append(math.sqrt(dx * dx + dy * dy + dz * dz))
-        length = pairwise_sum(lengths)
-        self._starts.extend(starts)
-        self._ends.extend(points)
-        self.counts.append(len(lengths))
+        if points is None:  # a straight move is one chord
+            dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+            length = math.sqrt(dx * dx + dy * dy + dz * dz)
+            self._starts.extend(start)
+            self._ends.extend(end)
+            self.counts.append(1)
+        else:
+            starts = [*start, *points[:-3]]
+            lengths = []
+            for i in range(0, len(points), 3):
+                dx, dy, dz = points[i] - starts[i], points[i + 1] - starts[i + 1], points[i + 2] - starts[i + 2]
+                lengths.append(math.sqrt(dx * dx + dy * dy + dz * dz))
+            length = pairwise_sum(lengths)
+            self._starts.extend(starts)
+            self._ends.extend(points)
+            self.counts.append(len(lengths))
         feed = DEFAULT_RAPID_MM_MIN if kind == "G0" or not motion.feed_mm_min else motion.feed_mm_min
         self.tool_times[self.tool] = self.tool_times.get(self.tool, 0.0) + length / feed
         # The first motion comes from wherever the machine stands (the reference point, beyond
