@@ -67,7 +67,7 @@ CUT_EPSILON_MM = 0.01
 """A move cuts when it lowers some cell by more than this (below: rounding, a touch)."""
 
 _PLANE_INDEX = {"G17": (0, 1), "G18": (2, 0), "G19": (1, 2)}
-_LINEAR_MASK = np.array([True, True, True])
+_LINEAR_MASK = (True, True, True)  # a tuple: arc() iterates it per arc (numpy booleans cost more)
 Point = tuple[float, float, float]
 
 
