@@ -134,8 +134,25 @@ class Arc:
         return _rotate((radial[0] - along * k[0], radial[1] - along * k[1], radial[2] - along * k[2]), k, angle)
 
     def length(self) -> float:
-        """Path length of the arc or helix."""
+        """Path length of the arc or helix.
+
+        About a coordinate axis (every circle of G17/G18/G19) the lead is the end's difference
+        along it: ``dot3`` of the difference and a unit axis adds only exact zero products, so
+        it is that difference up to the sign of a zero, which ``hypot`` ignores."""
+        s, e, k = self.start, self.end, self.axis
+        along = _UNIT_AXES.get(k) if type(k) is tuple else None
+        if along is not None:
+            d = (e[0] - s[0], e[1] - s[1], e[2] - s[2])
+            if math.isfinite(d[0] + d[1] + d[2]):
+                return math.hypot(self.radius * self.sweep_rad, d[along[0]] * along[1])
         return math.hypot(self.radius * self.sweep_rad, self.lead)
+
+
+_UNIT_AXES: dict[tuple[float, float, float], tuple[int, float]] = {
+    (1.0, 0.0, 0.0): (0, 1.0), (-1.0, 0.0, 0.0): (0, -1.0), (0.0, 1.0, 0.0): (1, 1.0),
+    (0.0, -1.0, 0.0): (1, -1.0), (0.0, 0.0, 1.0): (2, 1.0), (0.0, 0.0, -1.0): (2, -1.0),
+}
+"""The coordinate axes as (index, sign): a zero of either sign matches a key (-0.0 == 0.0)."""
 
 
 def _rotate(v: Vec3, k: Vec3, angle: float) -> Vec3:

@@ -919,7 +919,7 @@ class PathBuilder:
             else:
                 factor, offset = transform.axial.get(axis, (1.0, 0.0))
                 wcs_mm = (bcs - offset) / factor
-            actual = round_position(self.from_mm(axis, wcs_mm, modal, units))
+            actual = self.from_mm(axis, wcs_mm, modal, units)  # rounded (round_position is idempotent)
             if abs(actual - end_wcs.get(axis, actual)) > 1e-6:
                 end_wcs[axis] = actual
 

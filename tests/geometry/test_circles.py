@@ -8,10 +8,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nck.errors import NcAlarmError
 from nck.geometry.circles import (
+    Arc,
     CircleTolerance,
     arc_from_center,
     arc_from_center_and_angle,
@@ -200,3 +204,25 @@ def test_tangents() -> None:
     arc = arc_from_center(G17, (10, 0, 0), (0, 10, 0), (0.0, 0.0), clockwise=False)
     assert close(arc.tangent_at(0.0), (0, 1, 0))
     assert close(arc.tangent_at(1.0), (-1, 0, 0))
+
+
+_UNIT_AXIS_VECTORS = [(1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, -0.0),
+                      (0.0, 0.0, 1.0), (-0.0, 0.0, -1.0)]
+_COORDINATES = st.one_of(st.floats(-1e6, 1e6), st.sampled_from([0.0, -0.0, 1e-300, -5e-324, 1e200]))
+
+
+@settings(max_examples=3000, deadline=None)
+@given(st.tuples(_COORDINATES, _COORDINATES, _COORDINATES), st.tuples(_COORDINATES, _COORDINATES, _COORDINATES),
+       st.sampled_from(_UNIT_AXIS_VECTORS), st.floats(1e-6, 1e4), st.floats(1e-9, 100.0))
+def test_length_about_a_coordinate_axis_is_the_dot_product_form(start: tuple[float, float, float],
+                                                                end: tuple[float, float, float],
+                                                                axis: tuple[float, float, float],
+                                                                radius: float, sweep: float) -> None:
+    """``Arc.length`` about a coordinate axis takes the end's difference along it as the lead:
+    bit for bit ``hypot(radius · sweep, dot(end - start, axis))`` with numpy's ``dot``."""
+    arc = Arc(start=start, end=end, center=start, axis=axis, radius=radius, sweep_rad=sweep)
+    delta = np.asarray(end) - np.asarray(start)
+    expected = math.hypot(radius * sweep, float(np.dot(delta, np.asarray(axis))))
+    got = arc.length()
+    assert (math.isnan(got) and math.isnan(expected)) or got.hex() == expected.hex(), (start, end, axis)
+    assert got.hex() == math.hypot(radius * sweep, arc.lead).hex() or math.isnan(got)

@@ -60,3 +60,21 @@ def test_ties_and_edges() -> None:
         _same(value)
         _same(math.nextafter(value, math.inf))
         _same(math.nextafter(value, -math.inf))
+
+
+@settings(max_examples=3000, deadline=None)
+@given(st.floats(allow_nan=False, allow_infinity=True))
+def test_rounding_twice_changes_nothing(value: float) -> None:
+    """Idempotent, so a position already rounded (``from_mm``'s result) is not rounded again:
+    the double nearest to ``k · 10^-9`` is within half an ulp of it, and below 2^23 half an ulp
+    is below 0.5 · 10^-9 (so ``k`` is found again); above, the double itself is the nearest to
+    whatever multiple of 10^-9 lies within 0.5 · 10^-9 of it."""
+    once = round_position(value)
+    assert _bits(round_position(once)) == _bits(once), value
+
+
+@settings(max_examples=2000, deadline=None)
+@given(st.integers(-10**13, 10**13), st.integers(0, 12))
+def test_rounding_decimal_positions_twice_changes_nothing(digits: int, places: int) -> None:
+    once = round_position(digits / 10**places)
+    assert _bits(round_position(once)) == _bits(once)
