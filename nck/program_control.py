@@ -34,6 +34,7 @@ from nck.canon import (
 )
 from nck.errors import NcAlarmError
 from nck.geometry.circles import CircleTolerance
+from nck.inflight import InFlight
 from nck.interp.api import BlockResult, Interpreter
 from nck.motion.api import MotionSystem
 from nck.status import BlockView
@@ -146,7 +147,7 @@ class ProgramRun:
         self._requeued: deque[Motion | Dwell] = deque()
         # Main-run bookkeeping: outputs (aux functions, MSG) of a block go out when
         # the motion pushed before them has been executed, not at interpretation.
-        self._inflight: deque[tuple[str, int]] = deque()  # pushed, not known to be done
+        self._inflight = InFlight()  # the blocks of the items pushed, not known to be done
         self._pushed_total = 0
         self._deferred: deque[tuple[int, RunEvent]] = deque()
         self._approach: Motion | None = None
@@ -224,8 +225,7 @@ class ProgramRun:
 
     def _push(self, motion: MotionSystem, item: Motion | Dwell) -> None:
         self.pushed.append(item)
-        source = item.source
-        self._inflight.append((source.file, source.line))
+        self._inflight.append(item.source)
         self._pushed_total += 1
         motion.push(item)
 
@@ -237,10 +237,9 @@ class ProgramRun:
         if everything or (current is None and motion.is_idle()):
             self._inflight.clear()
         elif current is not None:
-            key = (current.file, current.line)
-            if key in self._inflight:
-                while self._inflight and self._inflight[0] != key:
-                    self._inflight.popleft()
+            executing = self._inflight.find(current)
+            if executing is not None:
+                self._inflight.drop(executing)
         done = self._pushed_total - len(self._inflight)
         while self._deferred and self._deferred[0][0] <= done:
             events.append(self._deferred.popleft()[1])
@@ -440,9 +439,8 @@ class ProgramRun:
         if current is None:
             self._inflight.clear()
         else:
-            key = (current.file, current.line)
-            while self._inflight and self._inflight[0] != key:
-                self._inflight.popleft()
+            executing = self._inflight.find(current)
+            self._inflight.drop(len(self._inflight) if executing is None else executing)
         self._pushed_total -= len(self._inflight)
         self._inflight.clear()
         self._approach = None
