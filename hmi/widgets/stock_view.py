@@ -22,12 +22,13 @@ from typing import Any
 
 import numpy as np
 from rich.style import Style
-from rich.text import Text
+from rich.text import Span, Text
 from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
 
 from hmi.i18n import N_, _, reason_text
+from hmi.widgets.path_layers import PathLayerCache, Viewport, path_layers, segment_pixels, to_pixels
 from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
 
 BACKGROUND = np.array([16, 20, 28], dtype=np.uint8)
@@ -121,15 +122,6 @@ def material_events(simulation: Any) -> str:
     return reason_text(events[0].text) + more
 
 
-@dataclass
-class Viewport:
-    """Pixel ↔ mm: the view's centre and the size of a pixel."""
-
-    centre_h: float
-    centre_v: float
-    mm_per_pixel: float
-
-
 def fit_viewport(picture: StockPicture, view: str, width_px: int, height_px: int) -> Viewport:
     """The viewport that shows the blank and the path with a small margin."""
     h0, h1, v0, v1 = picture.extents(view)
@@ -144,8 +136,10 @@ def _shade(depth_fraction: np.ndarray) -> np.ndarray:
 
 
 def render_pixels(picture: StockPicture, view: str, port: Viewport, width_px: int, height_px: int,
-                  overlay: bool = True, highlight_line: int | None = None) -> np.ndarray:
-    """The RGB image (height_px, width_px, 3) of ``view``."""
+                  overlay: bool = True, highlight_line: int | None = None,
+                  path_cache: PathLayerCache | None = None) -> np.ndarray:
+    """The RGB image (height_px, width_px, 3) of ``view``; ``path_cache`` keeps the path
+    overlay's layers from one call to the next (the same pixels as without it)."""
     image = np.empty((height_px, width_px, 3), dtype=np.uint8)
     image[:] = BACKGROUND
     if picture.empty:
@@ -194,15 +188,9 @@ def render_pixels(picture: StockPicture, view: str, port: Viewport, width_px: in
             image[removed] = BLOCK_CUT.astype(np.uint8)
     _outline(image, picture, view, port)
     if overlay:
-        _draw_path(image, picture, view, port, highlight_line)
+        _draw_path(image, picture, view, port, highlight_line, path_cache)
     _draw_tool(image, picture, view, port)
     return image
-
-
-def _to_pixels(port: Viewport, width_px: int, height_px: int, h: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    px = np.floor((h - port.centre_h) / port.mm_per_pixel + width_px / 2.0).astype(np.int64)
-    py = np.floor((port.centre_v - v) / port.mm_per_pixel + height_px / 2.0).astype(np.int64)
-    return px, py
 
 
 def _plot(image: np.ndarray, px: np.ndarray, py: np.ndarray, colour: np.ndarray) -> None:
@@ -216,14 +204,7 @@ def _segments(image: np.ndarray, port: Viewport, a: np.ndarray, b: np.ndarray, c
     if len(a) == 0:
         return
     height_px, width_px = image.shape[:2]
-    length = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]) / port.mm_per_pixel
-    steps = np.minimum(np.ceil(length * 2.0).astype(np.int64) + 1, 4 * (width_px + height_px))
-    owner = np.repeat(np.arange(len(a)), steps)
-    first = np.concatenate(([0], np.cumsum(steps)[:-1]))
-    f = (np.arange(len(owner)) - first[owner]) / np.maximum(steps[owner] - 1, 1)
-    h = a[owner, 0] + (b[owner, 0] - a[owner, 0]) * f
-    v = a[owner, 1] + (b[owner, 1] - a[owner, 1]) * f
-    px, py = _to_pixels(port, width_px, height_px, h, v)
+    px, py, _owner = segment_pixels(port, width_px, height_px, a, b)
     _plot(image, px, py, colour)
 
 
@@ -238,16 +219,18 @@ def _outline(image: np.ndarray, picture: StockPicture, view: str, port: Viewport
     _segments(image, port, corners, np.roll(corners, -1, axis=0), OUTLINE)
 
 
-def _draw_path(image: np.ndarray, picture: StockPicture, view: str, port: Viewport, highlight_line: int | None) -> None:
+def _draw_path(image: np.ndarray, picture: StockPicture, view: str, port: Viewport, highlight_line: int | None,
+               path_cache: PathLayerCache | None) -> None:
     count = picture.shown_chords
     if count == 0:
         return
     h, v = VIEW_AXES[view]
-    a = picture.starts[:count][:, [h, v]]
-    b = picture.ends[:count][:, [h, v]]
-    rapid = picture.rapid[:count]
-    _segments(image, port, a[rapid], b[rapid], RAPID)
-    _segments(image, port, a[~rapid], b[~rapid], FEED)
+    height_px, width_px = image.shape[:2]
+    if path_cache is not None:
+        layers = path_cache.layers(picture.starts, picture.ends, picture.rapid, (h, v), port, width_px, height_px)
+    else:
+        layers = path_layers(picture.starts, picture.ends, picture.rapid, (h, v), port, width_px, height_px)
+    layers.paint(image, count, FEED, RAPID)
     if highlight_line is not None:
         mine = picture.lines[: len(picture.starts)] == highlight_line
         _segments(image, port, picture.starts[mine][:, [h, v]], picture.ends[mine][:, [h, v]], HIGHLIGHT)
@@ -262,7 +245,7 @@ def _draw_tool(image: np.ndarray, picture: StockPicture, view: str, port: Viewpo
     if view == "XY" or picture.turning:  # a lathe's tool is its nose circle in the half section
         v = z if picture.turning else y
         angles = np.linspace(0.0, 2.0 * math.pi, 180)
-        px, py = _to_pixels(port, width_px, height_px, x + radius * np.cos(angles), v + radius * np.sin(angles))
+        px, py = to_pixels(port, width_px, height_px, x + radius * np.cos(angles), v + radius * np.sin(angles))
         _plot(image, px, py, TOOL)
         return
     centre = x if view == "XZ" else y
@@ -271,27 +254,41 @@ def _draw_tool(image: np.ndarray, picture: StockPicture, view: str, port: Viewpo
     _segments(image, port, corners, np.roll(corners, -1, axis=0), TOOL)
 
 
+_CELL_STYLES: dict[bytes, Style] = {}
+"""The style of every pair of pixel colours met so far (upper RGB, lower RGB), shared by all
+views: a picture has a few thousand cells but far fewer colour pairs, and most of them come
+back in the next picture."""
+MAX_CELL_STYLES = 65_536
+
+
+def _cell_style(pair: np.ndarray) -> Style:
+    key = pair.tobytes()
+    style = _CELL_STYLES.get(key)
+    if style is None:
+        if len(_CELL_STYLES) >= MAX_CELL_STYLES:
+            _CELL_STYLES.clear()
+        r, g, b, r2, g2, b2 = pair.tolist()
+        style = _CELL_STYLES[key] = Style(color=f"rgb({r},{g},{b})", bgcolor=f"rgb({r2},{g2},{b2})")
+    return style
+
+
 def pixels_to_text(image: np.ndarray) -> Text:
-    """Half-block cells: the upper pixel as the foreground of ``▀``, the lower as its background."""
-    height_px = image.shape[0] - image.shape[0] % 2
-    text = Text()
-    styles: dict[tuple[int, ...], Style] = {}
-    for row in range(0, height_px, 2):
-        upper, lower = image[row], image[row + 1]
-        pairs = np.concatenate([upper, lower], axis=1)
-        # runs of equal cells become one span
-        change = np.any(pairs[1:] != pairs[:-1], axis=1)
-        bounds = np.concatenate(([0], np.flatnonzero(change) + 1, [len(pairs)]))
-        for begin, end in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
-            key = tuple(pairs[begin].tolist())
-            style = styles.get(key)
-            if style is None:
-                style = Style(color=f"rgb({key[0]},{key[1]},{key[2]})", bgcolor=f"rgb({key[3]},{key[4]},{key[5]})")
-                styles[key] = style
-            text.append("▀" * (end - begin), style)
-        if row + 2 < height_px:
-            text.append("\n")
-    return text
+    """Half-block cells: the upper pixel as the foreground of ``▀``, the lower as its background;
+    a run of equal cells in a row is one span."""
+    height_px, width_px = image.shape[0] - image.shape[0] % 2, image.shape[1]
+    rows = height_px // 2
+    if rows == 0 or width_px == 0:
+        return Text()
+    pairs = np.concatenate([image[0:height_px:2], image[1:height_px:2]], axis=2)  # rows × width × 6
+    change = np.any(pairs[:, 1:] != pairs[:, :-1], axis=2)
+    spans: list[Span] = []
+    for row in range(rows):
+        bounds = np.concatenate(([0], np.flatnonzero(change[row]) + 1, [width_px])).tolist()
+        offset = row * (width_px + 1)  # each row and its line break
+        cells = pairs[row]
+        for begin, end in zip(bounds[:-1], bounds[1:]):
+            spans.append(Span(offset + begin, offset + end, _cell_style(cells[begin])))
+    return Text("\n".join(["▀" * width_px] * rows), spans=spans)
 
 
 class StockView(Widget, can_focus=True):
@@ -307,6 +304,7 @@ class StockView(Widget, can_focus=True):
     def __init__(self, **kwargs: object) -> None:
         super().__init__(**kwargs)  # type: ignore[arg-type]
         self.picture = StockPicture()
+        self._path_layers = PathLayerCache()
         self._zoom_steps = 0
         self._pan_px = (0, 0)
 
@@ -369,7 +367,7 @@ class StockView(Widget, can_focus=True):
             return caption
         width_px, height_px = width, rows * 2
         image = render_pixels(self.picture, self.shown_view, self.viewport(width_px, height_px), width_px, height_px,
-                              self.overlay, self.highlight_line)
+                              self.overlay, self.highlight_line, self._path_layers)
         caption.append("\n")
         caption.append_text(pixels_to_text(image))
         return caption

@@ -1,0 +1,45 @@
+"""The material view's path overlay painted from its per-pixel layers is the overlay drawn chord by
+chord — rapid moves first, feed moves over them — for every number of chords drawn."""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hmi.widgets.path_layers import PathLayerCache, Viewport, path_layers, segment_pixels
+
+FEED = np.array([1, 2, 3], dtype=np.uint8)
+RAPID = np.array([4, 5, 6], dtype=np.uint8)
+
+
+def drawn_one_by_one(starts: np.ndarray, ends: np.ndarray, rapid: np.ndarray, count: int, port: Viewport,
+                     width_px: int, height_px: int) -> np.ndarray:
+    image = np.zeros((height_px, width_px, 3), dtype=np.uint8)
+    for colour, chosen in ((RAPID, rapid), (FEED, ~rapid)):
+        for chord in np.flatnonzero(chosen[:count]).tolist():
+            px, py, _ = segment_pixels(port, width_px, height_px, starts[chord:chord + 1, :2], ends[chord:chord + 1, :2])
+            inside = (px >= 0) & (px < width_px) & (py >= 0) & (py < height_px)
+            image[py[inside], px[inside]] = colour
+    return image
+
+
+@settings(max_examples=40, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), chords=st.integers(0, 40), width_px=st.integers(1, 30),
+       height_px=st.integers(1, 30), mm_per_pixel=st.floats(0.05, 5.0))
+def test_layers_paint_what_drawing_the_chords_in_turn_draws(seed: int, chords: int, width_px: int, height_px: int,
+                                                            mm_per_pixel: float) -> None:
+    rng = np.random.default_rng(seed)
+    starts = rng.uniform(-20.0, 20.0, (chords, 3))
+    ends = starts + rng.normal(0.0, 3.0, (chords, 3))
+    rapid = rng.random(chords) < 0.3
+    port = Viewport(float(rng.uniform(-5, 5)), float(rng.uniform(-5, 5)), mm_per_pixel)
+    layers = path_layers(starts, ends, rapid, (0, 1), port, width_px, height_px)
+    cache = PathLayerCache()
+    for count in range(chords + 1):
+        image = np.zeros((height_px, width_px, 3), dtype=np.uint8)
+        layers.paint(image, count, FEED, RAPID)
+        assert np.array_equal(image, drawn_one_by_one(starts, ends, rapid, count, port, width_px, height_px)), count
+        # the cache answers the same layers for the same path and view
+        assert cache.layers(starts, ends, rapid, (0, 1), port, width_px, height_px).first_feed.tobytes() == \
+            layers.first_feed.tobytes()
