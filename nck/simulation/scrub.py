@@ -4,7 +4,10 @@ block.
 Stepping forward sweeps only the chords between the shown state and the new one; stepping back
 starts again from the nearest checkpoint (a copy of the heights kept every
 :data:`CHECKPOINT_CHORDS` chords while sweeping forward, at most :data:`MAX_CHECKPOINTS` of them)
-instead of from the uncut blank. Our choice: the events found while scrubbing are the
+instead of from the uncut blank. Going back also keeps a copy every :data:`NEAR_CHORDS` chords on
+its way from the checkpoint (the last :data:`MAX_NEAR` of them), so that the next steps back —
+the operator pressing Block ◀ again — start from a copy a few chords away. Lowering is a
+minimum: a state swept from any copy is the state swept from the blank, bit for bit. Our choice: the events found while scrubbing are the
 simulation's own (found once, when it ran), so the scrubber sweeps without collecting them.
 
 Not thread-safe: one caller at a time.
@@ -24,6 +27,11 @@ CHECKPOINT_CHORDS = 2_000
 """A copy of the heights is kept every this many chords swept forward."""
 MAX_CHECKPOINTS = 64
 """At most this many copies (beyond: every other one is dropped and the spacing doubles)."""
+NEAR_CHORDS = 100
+"""On the way back from a checkpoint, a copy is kept every this many chords …"""
+MAX_NEAR = 24
+"""… the last this many of them (our choice: a few hundred chords behind the shown block, some
+megabytes at the editor's resolution)."""
 MAX_BLOCK_RUNS = 50
 """The cut of a block that runs more often (a loop, a subprogram called many times) is the
 cut of its first this many runs (our choice: the picture would not change visibly)."""
@@ -59,6 +67,7 @@ class Scrubber:
         self.chords = 0
         self._every = CHECKPOINT_CHORDS
         self._checkpoints: dict[int, np.ndarray] = {0: self.model.heights.copy()}
+        self._near: dict[int, np.ndarray] = {}
 
     @property
     def total(self) -> int:
@@ -68,18 +77,29 @@ class Scrubber:
     def goto(self, chords: int) -> ZMap | TurnProfile:
         """The model cut by the first ``chords`` chords (it is the scrubber's own: copy it to keep it)."""
         chords = min(max(int(chords), 0), self.total)
-        if chords < self.chords:
-            start = max(c for c in self._checkpoints if c <= chords)
-            self.model.heights[...] = self._checkpoints[start]
+        back = chords < self.chords
+        if back:
+            start = max(c for c in (*self._checkpoints, *self._near) if c <= chords)
+            self.model.heights[...] = self._checkpoints[start] if start in self._checkpoints else self._near[start]
             self.chords = start
         while self.chords < chords:
             mark = (self.chords // self._every + 1) * self._every
-            upto = min(mark, chords)
+            near = (self.chords // NEAR_CHORDS + 1) * NEAR_CHORDS if back else mark
+            upto = min(mark, near, chords)
             sweep_path(self.model, self.simulation.path, upto=upto, first=self.chords)
             self.chords = upto
             if upto == mark:
                 self._keep(upto)
+            elif upto == near:
+                self._keep_near(upto)
         return self.model
+
+    def _keep_near(self, chords: int) -> None:
+        if chords in self._near:
+            return
+        self._near[chords] = self.model.heights.copy()
+        if len(self._near) > MAX_NEAR:
+            del self._near[max(self._near, key=lambda kept: abs(kept - chords))]  # the farthest away
 
     def _keep(self, chords: int) -> None:
         if chords in self._checkpoints:

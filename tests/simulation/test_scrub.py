@@ -26,6 +26,30 @@ def test_back_and_forth_gives_the_states_swept_from_the_blank(monkeypatch) -> No
         assert np.array_equal(scrubber.goto(chords).heights, expected), chords
 
 
+def test_steps_back_from_the_copies_kept_on_the_way_give_the_states_swept_from_the_blank(monkeypatch) -> None:
+    """Block ◀ pressed again and again: the first step back into a checkpoint's stretch sweeps from
+    the checkpoint and keeps a copy at every chord (here) on its way; the next steps start from
+    those copies and sweep nothing. Every state equals the sweep from the blank."""
+    monkeypatch.setattr(scrub, "CHECKPOINT_CHORDS", 4)
+    monkeypatch.setattr(scrub, "NEAR_CHORDS", 1)
+    monkeypatch.setattr(scrub, "MAX_NEAR", 100)
+    simulation = run(SLOT + "N70 G0 X50 Y20\nN80 G1 Z-3\nN90 G2 X50 Y20 I0 J10 F500\nN100 G0 Z10\n", 0.5)
+    scrubber = Scrubber(simulation)
+    total = scrubber.total
+    assert total > 8
+    swept: list[int] = []
+    sweep = scrub.sweep_path
+    monkeypatch.setattr(scrub, "sweep_path", lambda model, path, upto=None, first=0:
+                        swept.append(upto - first) or sweep(model, path, upto=upto, first=first))
+    scrubber.goto(total)
+    for chords in range(total - 1, -1, -1):
+        swept.clear()
+        expected = simulation.cut_until(chords).heights
+        assert np.array_equal(scrubber.goto(chords).heights, expected), chords
+        first_into_stretch = chords == total - 1 or (chords + 1) % 4 == 0
+        assert sum(swept) == (chords % 4 if first_into_stretch else 0), chords
+
+
 def test_the_cut_of_one_block() -> None:
     # Line 7 is N50 (two header lines): X20 -> X80 at Z-5 with a D10 end mill, after N40 plunged
     # at X20. N50 removes the slot without the plunge's hole: 60 * 10 * 5 = 3000 mm³
