@@ -10,7 +10,9 @@ RSS. With ``--program FILE`` that program is
 imported into an NC file system, selected in AUTO and opened in the Program
 area's editor before the measurements (memory with a large program). With
 ``--editor FILE`` only the editor is measured: the time its check of the whole
-file takes from opening, and the area keys' latency while that check runs.
+file takes from opening, and the area keys' latency while that check runs. With
+``--simulation FILE`` the editor's simulation of that file: its time, and the redraw after a
+scrub step or a zoom.
 """
 
 from __future__ import annotations
@@ -289,6 +291,93 @@ async def measure_editor(program: Path, presses: int = 400) -> dict[str, float |
     return out
 
 
+async def _key_to_redraw(app: Any, key: str, widget: Any, ready: Callable[[], bool],
+                         frames: list[tuple[float, object]], limit_s: float = 120.0) -> float:
+    """Send ``key`` as the terminal driver does; seconds until the first frame written after
+    ``widget`` rendered with ``ready()`` true (the new picture: a scrub step's blank, a zoom)."""
+    from textual import events
+
+    rendered: list[float] = []
+    render = widget.render
+
+    def recording_render() -> Any:
+        text = render()
+        if ready():
+            rendered.append(time.perf_counter())
+        return text
+
+    widget.render = recording_render
+    try:
+        frames.clear()
+        event = events.Key(key, None)
+        event.set_sender(app)
+        sent = time.perf_counter()
+        app._driver.send_message(event)
+        while time.perf_counter() - sent < limit_s:
+            await asyncio.sleep(0.001)
+            if rendered:
+                painted = next((t for t, _ in frames if t >= rendered[0]), None)
+                if painted is not None:
+                    return painted - sent
+        return float("inf")
+    finally:
+        del widget.render
+
+
+async def measure_simulation(program: Path, presses: int = 20) -> dict[str, float | str]:
+    """Open ``program`` in the editor, simulate it (Simulation softkey) and measure what the
+    operator waits for: the whole simulation (key to the cut blank shown), then the redraw after
+    a scrub step (Block ◀ / Block ▶, the blank re-cut to that block in a worker thread) and
+    after a zoom (Zoom + / Zoom -), key to frame, ``presses`` of each kind.
+
+    The tool is the material benchmark's (T1 D1: ball end mill, 8 mm).
+    """
+    from nck import build_nck
+    from nck.machine import load_machine
+    from nck.ncdata import NcData, ToolEdge
+    from nck.storage import NcFileSystem
+
+    from hmi.app import HmiApp
+    from hmi.program_files import ProgramFiles
+
+    programs = NcFileSystem(Path(tempfile.mkdtemp()) / "nc")
+    name = programs.import_file(program).path.rpartition("/")[2]
+    data = NcData()
+    data.tools[(1, 1)] = ToolEdge({1: 110.0, 3: 80.0, 6: 4.0})
+    app = HmiApp(build_nck(load_machine(), data, programs, referenced=True), realtime=False)
+    app.freeze_gc_at_start = True
+    out: dict[str, float | str] = {}
+    async with app.run_test(size=(160, 48)) as pilot:
+        await pilot.pause()
+        ProgramFiles.of_app(app).request_open(f"MPF/{name}")
+        await pilot.press("alt+p")
+        screen = app.screen
+        out["editor_check_wait_s"] = await _wait_for_check(screen, pilot)
+        with recorded_frames(app) as frames:
+            stock = screen.stock
+            out["simulation_s"] = await _key_to_redraw(app, "f5", stock, lambda: screen._material is not None,
+                                                       frames, limit_s=1800.0)
+            simulation = screen._material
+            out["simulation_blocks"] = float(simulation.blocks if simulation is not None else 0)
+            steps: list[float] = []
+            zooms: list[float] = []
+            for k in range(presses):
+                shown = stock.picture
+                steps.append(await _key_to_redraw(app, ("shift+f6", "shift+f7")[k % 2 if k else 0], stock,
+                                                  lambda: stock.picture is not shown, frames))
+                await pilot.pause()
+            for k in range(presses):
+                zoom = stock.zoom
+                zooms.append(await _key_to_redraw(app, ("f4", "f5")[k % 2], stock,
+                                                  lambda: stock.zoom != zoom, frames))
+                await pilot.pause()
+    for label, figures in (("scrub_step", steps), ("zoom", zooms)):
+        out[f"{label}_ms_median"] = statistics.median(figures) * 1000.0
+        out[f"{label}_ms_p95"] = _percentile(figures, 0.95) * 1000.0
+    out["peak_rss_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    return out
+
+
 async def first_frame_only(spawn_epoch: float) -> dict[str, float | str]:
     """Start the HMI (as :func:`measure` does) and return the time from spawn to its first frame."""
     from nck import build_nck
@@ -336,12 +425,16 @@ def first_frames(starts: int = 3) -> float:
 
 def main(argv: list[str]) -> int:
     """Entry point: ``SPAWN_EPOCH [--program FILE]`` (``--first-frame SPAWN_EPOCH``: that figure only;
-    ``--editor FILE``: the editor's whole-file check of FILE and the keys during it)."""
+    ``--editor FILE``: the editor's whole-file check of FILE and the keys during it;
+    ``--simulation FILE``: the editor's simulation of FILE, scrub steps and zooms)."""
     if argv and argv[0] == "--first-frame":
         print(json.dumps(asyncio.run(first_frame_only(float(argv[1])))))
         return 0
     if argv and argv[0] == "--editor":
         print(json.dumps(asyncio.run(measure_editor(Path(argv[1])))))
+        return 0
+    if argv and argv[0] == "--simulation":
+        print(json.dumps(asyncio.run(measure_simulation(Path(argv[1])))))
         return 0
     spawn = float(argv[0]) if argv else time.time()
     program = Path(argv[argv.index("--program") + 1]) if "--program" in argv else None

@@ -199,6 +199,26 @@ def material_rows(folder: Path, notes: list[str]) -> list[Row]:
     ]
 
 
+def simulation_view_rows(folder: Path, notes: list[str]) -> list[Row]:
+    """Issue 24: the editor's simulation of the material benchmark's plate in the HMI, then the
+    redraw after a scrub step (Block ◀ / ▶) and after a zoom, key to frame."""
+    program = write_material_program(folder)
+    done = run_child([sys.executable, "-m", "bench.hmi_probe", "--simulation", str(program)], timeout_s=3600.0)
+    try:
+        figures = json.loads(done.stdout.strip().splitlines()[-1])
+    except (ValueError, IndexError):
+        notes.append(f"HMI simulation probe failed (exit {done.returncode}): {done.stderr.strip()[-300:]}")
+        return []
+    rows = [Row(f"HMI editor: Simulation of {program.stem} ({int(figures['simulation_blocks']):,} blocks), "
+                "key to the cut blank", f"{figures['simulation_s']:,.1f} s", "", "", "", "")]
+    for label, key in (("scrub step (Block ◀ / ▶)", "scrub_step"), ("zoom (Zoom + / -)", "zoom")):
+        p95 = float(figures[f"{key}_ms_p95"])
+        rows.append(Row(f"  redraw after a {label}, key to frame",
+                        f"median {figures[f'{key}_ms_median']:.0f} ms, p95 {p95:.0f} ms", "< 30 ms", "", "",
+                        "yes" if p95 < 30.0 else "NO"))
+    return rows
+
+
 def hmi_rows(program: Path | None, notes: list[str], editor_program: Path | None = None) -> list[Row]:
     """HMI start-to-first-frame, refresh CPU, area-switch key latency, RSS with the long program,
     and the editor's whole-file check of ``editor_program`` with the key latency during it."""
@@ -282,6 +302,7 @@ def run_suite() -> str:
         rows += hmi_rows(None if quick else program, notes, folder / "corpus" / "CAM_MILL.MPF")
         if not quick:
             rows += material_rows(folder, notes)
+            rows += simulation_view_rows(folder, notes)
     stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     text = (f"# Benchmark results\n\n{stamp} on {environment_note()}, load average "
             f"{' '.join(f'{v:.2f}' for v in os.getloadavg())} at the end; "
