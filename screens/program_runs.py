@@ -141,6 +141,8 @@ class CheckAndSimulation:
     _scrub_lock: threading.Lock = threading.Lock()
     _shown_note: str = ""
     _step_pending: bool = False
+    _step_line: int | None = None  # the line the step on its way marks (None: the cursor moved since)
+    _step_moves_cursor: bool = True
     _play_timer: Timer | None = None
     _play_until: int | None = None
     _play_due: float = 0.0
@@ -344,6 +346,7 @@ class CheckAndSimulation:
             return
         line = self.editor.cursor_location[0] + 1
         self.stock.highlight_line = line
+        self._step_line = None  # a step on its way no longer moves the cursor: the operator did
         self._mark_current_block(self.status)
         if self._material is not None:
             self._scrub_worker(self._material, None, self._material_step, line)
@@ -355,17 +358,17 @@ class CheckAndSimulation:
         self._show_block(self._material_step + direction)
 
     def _show_block(self, step: int, move_cursor: bool = True) -> None:
-        """Show the blank as cut up to block ``step`` (index into the executed blocks); the
-        editor cursor goes to its line (which marks its path and cut)."""
+        """Show the blank as cut up to block ``step`` (index into the executed blocks); its line
+        is marked and the editor cursor goes there together with the new picture
+        (:meth:`_show_step`: the key repaints the screen once, not once for the cursor and once
+        more for the picture)."""
         if self._material is None or not self._material_blocks:
             return
         step = min(max(step, 0), len(self._material_blocks) - 1)
         self._material_step = step
         line, chords = self._material_blocks[step]
-        self.stock.highlight_line = line
         self._step_pending = True
-        if move_cursor:
-            self.editor.move_cursor((max(line - 1, 0), 0), center=True)
+        self._step_line, self._step_moves_cursor = line, move_cursor
         self._scrub_worker(self._material, chords, step, line)
 
     @work(thread=True, exclusive=True, group="program-material-step", exit_on_error=False,
@@ -391,6 +394,10 @@ class CheckAndSimulation:
             shown_line = self._material_blocks[step][0]
             self._shown_note = _("block {number}/{count}, line {line}: {modal}").format(
                 number=step + 1, count=len(self._material_blocks), line=shown_line, modal=simulation.modal_at(chords))
+            if self._step_line == line:
+                self.stock.highlight_line = line
+                if self._step_moves_cursor:
+                    self.editor.move_cursor((max(line - 1, 0), 0), center=True)
         else:
             picture = self.stock.picture
         if self.stock.highlight_line != line:
