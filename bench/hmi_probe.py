@@ -371,6 +371,7 @@ async def measure_simulation(program: Path, presses: int = 20) -> dict[str, floa
                 zooms.append(await _key_to_redraw(app, ("f4", "f5")[k % 2], stock,
                                                   lambda: stock.zoom != zoom, frames))
                 await pilot.pause()
+    out["scrub_first_ms"] = steps[0] * 1000.0  # the first step back from the end of the simulation
     for label, figures in (("scrub_step", steps), ("zoom", zooms)):
         out[f"{label}_ms_median"] = statistics.median(figures) * 1000.0
         out[f"{label}_ms_p95"] = _percentile(figures, 0.95) * 1000.0

@@ -53,6 +53,7 @@ from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
 from nck.phrase import Phrase
 from nck.simulation.blank import Blank, blank_around, blank_from_setup, blank_from_text
+from nck.simulation.checkpoints import Checkpoints
 from nck.simulation.cutter import Cutter
 from nck.simulation.pairwise import pairwise_sum
 from nck.simulation.turning import Insert, TurnProfile, bar, bar_around, half_section
@@ -153,6 +154,7 @@ class Simulation:
     machine_time_s: float
     tool_times_s: dict[int, float]
     blocks: int
+    checkpoints: Checkpoints | None = None  # heights along the way, kept by the sweep (for scrubbing)
 
     def blocks_in_order(self) -> list[tuple[int, int]]:
         """The executed blocks as (source line, number of chords up to and including it), in order."""
@@ -547,9 +549,10 @@ def simulate(
     if blank is None:
         blank = choose_blank(text, data.machine_setup, recording.mcs_minus_wcs_mm, path, turning)
     model = material_model(blank, resolution_mm, turning)
-    events = sweep_path(model, path)
+    kept = Checkpoints(model.heights)
+    events = sweep_path(model, path, done=lambda chords: kept.keep(chords, model.heights))
     return Simulation(blank, model, path, events, list(run.alarms), run.status, run.machine_time_s,
-                      tool_times, run.blocks)
+                      tool_times, run.blocks, kept)
 
 
 def choose_blank(text: str, setup: MachineSetup, offset: tuple[float, float, float] | None, path: Toolpath,
@@ -583,12 +586,15 @@ def auto_resolution(blank: Blank, turning: bool = False) -> float:
     return min(max(longest / AUTO_CELLS, 0.1), 2.0)
 
 
-def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None, first: int = 0) -> list[SimEvent]:
+def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None, first: int = 0,
+               done: Callable[[int], None] | None = None) -> list[SimEvent]:
     """Sweep the chords ``first`` … ``upto`` of ``path`` (to the end: None) through ``zmap``;
     return the events.
 
     Rapid moves and moves with the spindle stopped are swept on their own (so that their cut
     is theirs alone); runs of cutting chords with the same cutter go in one batch.
+    ``done(k)`` is called whenever the model holds the state after the first ``k`` chords (after
+    every batch; a Z-map also within one).
     """
     total = len(path.starts) if upto is None else min(upto, len(path.starts))
     events: list[SimEvent] = []
@@ -603,7 +609,13 @@ def sweep_path(zmap: ZMap | TurnProfile, path: Toolpath, upto: int | None = None
         cutter = path.cutters[int(path.cutter_of[begin])] if len(path.cutters) else None
         if cutter is None:
             continue
-        depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)  # type: ignore[arg-type]
+        if isinstance(zmap, ZMap):
+            within = None if done is None else (lambda moves, begin=begin: done(begin + moves))
+            depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter, done=within)  # type: ignore[arg-type]
+        else:
+            depth = zmap.sweep(path.starts[begin:end], path.ends[begin:end], cutter)  # type: ignore[arg-type]
+        if done is not None:
+            done(end)
         if alone[begin - first] and depth.size and float(depth.max()) > CUT_EPSILON_MM:
             kind = "rapid_cut" if path.rapid[begin] else "spindle_stopped"
             _add_event(events, path, kind, begin, float(depth.max()))

@@ -2,13 +2,14 @@
 block.
 
 Stepping forward sweeps only the chords between the shown state and the new one; stepping back
-starts again from the nearest checkpoint (a copy of the heights kept every
-:data:`CHECKPOINT_CHORDS` chords while sweeping forward, at most :data:`MAX_CHECKPOINTS` of them)
-instead of from the uncut blank. Going back also keeps a copy every :data:`NEAR_CHORDS` chords on
-its way from the checkpoint (the last :data:`MAX_NEAR` of them), so that the next steps back —
-the operator pressing Block ◀ again — start from a copy a few chords away. Lowering is a
-minimum: a state swept from any copy is the state swept from the blank, bit for bit. Our choice: the events found while scrubbing are the
-simulation's own (found once, when it ran), so the scrubber sweeps without collecting them.
+starts again from the nearest checkpoint (:mod:`nck.simulation.checkpoints`: the copies the
+simulation's own sweep kept, and those the scrubber keeps sweeping forward) instead of from the
+uncut blank. Going back also keeps a copy every :data:`NEAR_CHORDS` chords on its way from the
+checkpoint (the last :data:`MAX_NEAR` of them), so that the next steps back — the operator
+pressing Block ◀ again — start from a copy a few chords away. Lowering is a minimum: a state swept
+from any copy is the state swept from the blank, bit for bit. Our choice: the events found while
+scrubbing are the simulation's own (found once, when it ran), so the scrubber sweeps without
+collecting them.
 
 Not thread-safe: one caller at a time.
 """
@@ -19,14 +20,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from nck.simulation.checkpoints import Checkpoints
 from nck.simulation.run import Simulation, sweep_path
 from nck.simulation.turning import TurnProfile
 from nck.simulation.zmap import ZMap
 
-CHECKPOINT_CHORDS = 2_000
-"""A copy of the heights is kept every this many chords swept forward."""
-MAX_CHECKPOINTS = 64
-"""At most this many copies (beyond: every other one is dropped and the spacing doubles)."""
 NEAR_CHORDS = 100
 """On the way back from a checkpoint, a copy is kept every this many chords …"""
 MAX_NEAR = 24
@@ -65,8 +63,9 @@ class Scrubber:
         self.simulation = simulation
         self.model: ZMap | TurnProfile = simulation.zmap.fresh()
         self.chords = 0
-        self._every = CHECKPOINT_CHORDS
-        self._checkpoints: dict[int, np.ndarray] = {0: self.model.heights.copy()}
+        kept = simulation.checkpoints
+        # The simulation's own copies (its sweep kept them), else from the blank on.
+        self._checkpoints = kept.copy() if kept is not None else Checkpoints(self.model.heights)
         self._near: dict[int, np.ndarray] = {}
 
     @property
@@ -78,18 +77,19 @@ class Scrubber:
         """The model cut by the first ``chords`` chords (it is the scrubber's own: copy it to keep it)."""
         chords = min(max(int(chords), 0), self.total)
         back = chords < self.chords
-        if back:
-            start = max(c for c in (*self._checkpoints, *self._near) if c <= chords)
-            self.model.heights[...] = self._checkpoints[start] if start in self._checkpoints else self._near[start]
+        kept = self._checkpoints.kept
+        start = max(c for c in (*kept, *self._near) if c <= chords)
+        if back or start > self.chords:  # going back, or a copy ahead saves sweeping up to it
+            self.model.heights[...] = kept[start] if start in kept else self._near[start]
             self.chords = start
         while self.chords < chords:
-            mark = (self.chords // self._every + 1) * self._every
+            mark = self._checkpoints.next_mark(self.chords)
             near = (self.chords // NEAR_CHORDS + 1) * NEAR_CHORDS if back else mark
             upto = min(mark, near, chords)
             sweep_path(self.model, self.simulation.path, upto=upto, first=self.chords)
             self.chords = upto
             if upto == mark:
-                self._keep(upto)
+                self._checkpoints.keep(upto, self.model.heights)
             elif upto == near:
                 self._keep_near(upto)
         return self.model
@@ -100,14 +100,6 @@ class Scrubber:
         self._near[chords] = self.model.heights.copy()
         if len(self._near) > MAX_NEAR:
             del self._near[max(self._near, key=lambda kept: abs(kept - chords))]  # the farthest away
-
-    def _keep(self, chords: int) -> None:
-        if chords in self._checkpoints:
-            return
-        self._checkpoints[chords] = self.model.heights.copy()
-        if len(self._checkpoints) > MAX_CHECKPOINTS:
-            self._every *= 2
-            self._checkpoints = {c: h for c, h in self._checkpoints.items() if c % self._every == 0}
 
     def runs_of_line(self, line: int) -> list[tuple[int, int]]:
         """The chord ranges [first, end) the source ``line`` ran for, in order."""

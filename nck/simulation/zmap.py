@@ -21,6 +21,7 @@ start (the heights are single precision anyway).
 from __future__ import annotations
 
 import math
+from typing import Callable
 
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
@@ -73,11 +74,14 @@ class ZMap:
         return (self.x0_mm + (np.arange(self.nx) + 0.5) * res, self.y0_mm + (np.arange(self.ny) + 0.5) * res)
 
     # ------------------------------------------------------------------ sweeping
-    def sweep(self, starts: np.ndarray, ends: np.ndarray, cutter: Cutter, dz_step_mm: float | None = None) -> np.ndarray:
+    def sweep(self, starts: np.ndarray, ends: np.ndarray, cutter: Cutter, dz_step_mm: float | None = None,
+              done: Callable[[int], None] | None = None) -> np.ndarray:
         """Sweep ``cutter`` along the straight moves ``starts[i] → ends[i]`` (tip, rows X Y Z).
 
         Returns, per move, the deepest cut it made into material that was there before
         its batch (mm, 0: none) — how the caller finds rapid moves into material.
+        ``done(k)`` is called after a batch that ends with a whole move: the heights are
+        then those after the first ``k`` moves.
         """
         starts = np.asarray(starts, dtype=np.float64).reshape(-1, 3)
         ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
@@ -103,6 +107,10 @@ class ZMap:
             moves = index[chosen]
             self._sweep_batch(starts[moves], ends[moves], owner[moves], ix0[moves], iy0[moves],
                               int(width[moves].max()), int(height[moves].max()), cutter, depth)
+            if done is not None:
+                last = int(moves[-1])
+                if last + 1 == len(owner) or owner[last + 1] != owner[last]:
+                    done(int(owner[last]) + 1)  # pieces skipped after it cut nothing
         return depth
 
     def _sweep_batch(self, starts: np.ndarray, ends: np.ndarray, owner: np.ndarray, ix0: np.ndarray,

@@ -4,11 +4,12 @@ the state swept from the uncut blank, and the cut of one block against a hand-co
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from nck.simulation import scrub
+from nck.simulation import checkpoints, scrub, zmap
 from nck.simulation.scrub import Scrubber
 from tests.simulation.test_removal import run
 
@@ -16,7 +17,7 @@ SLOT = "N10 T1 M6\nN20 D1 S2000 M3\nN30 G0 X20 Y50 Z2\nN40 G1 Z-5 F200\nN50 X80 
 
 
 def test_back_and_forth_gives_the_states_swept_from_the_blank(monkeypatch) -> None:
-    monkeypatch.setattr(scrub, "CHECKPOINT_CHORDS", 2)  # checkpoints inside this short program
+    monkeypatch.setattr(checkpoints, "CHECKPOINT_CHORDS", 2)  # checkpoints inside this short program
     simulation = run(SLOT + "N70 G0 X50 Y20\nN80 G1 Z-3\nN90 G2 X50 Y20 I0 J10 F500\nN100 G0 Z10\n", 0.5)
     scrubber = Scrubber(simulation)
     total = scrubber.total
@@ -30,11 +31,11 @@ def test_steps_back_from_the_copies_kept_on_the_way_give_the_states_swept_from_t
     """Block ◀ pressed again and again: the first step back into a checkpoint's stretch sweeps from
     the checkpoint and keeps a copy at every chord (here) on its way; the next steps start from
     those copies and sweep nothing. Every state equals the sweep from the blank."""
-    monkeypatch.setattr(scrub, "CHECKPOINT_CHORDS", 4)
+    monkeypatch.setattr(checkpoints, "CHECKPOINT_CHORDS", 4)
     monkeypatch.setattr(scrub, "NEAR_CHORDS", 1)
     monkeypatch.setattr(scrub, "MAX_NEAR", 100)
     simulation = run(SLOT + "N70 G0 X50 Y20\nN80 G1 Z-3\nN90 G2 X50 Y20 I0 J10 F500\nN100 G0 Z10\n", 0.5)
-    scrubber = Scrubber(simulation)
+    scrubber = Scrubber(replace(simulation, checkpoints=None))  # the scrubber's own copies only
     total = scrubber.total
     assert total > 8
     swept: list[int] = []
@@ -48,6 +49,26 @@ def test_steps_back_from_the_copies_kept_on_the_way_give_the_states_swept_from_t
         assert np.array_equal(scrubber.goto(chords).heights, expected), chords
         first_into_stretch = chords == total - 1 or (chords + 1) % 4 == 0
         assert sum(swept) == (chords % 4 if first_into_stretch else 0), chords
+
+
+def test_the_first_step_back_starts_from_a_copy_the_simulation_kept(monkeypatch) -> None:
+    """After a long simulation the first Block ◀ does not sweep the whole path again: the
+    simulation's sweep kept copies along the way (one in every stretch of 4 chords here, where
+    every numpy pass of the sweep takes one move)."""
+    monkeypatch.setattr(checkpoints, "CHECKPOINT_CHORDS", 4)
+    monkeypatch.setattr(zmap, "CELL_BUDGET", 1)
+    simulation = run(SLOT + "N70 G0 X50 Y20\nN80 G1 Z-3\nN90 G2 X50 Y20 I0 J10 F500\nN100 G0 Z10\n", 0.5)
+    total = len(simulation.path.starts)
+    assert simulation.checkpoints is not None and len(simulation.checkpoints.kept) > 2
+    swept: list[int] = []
+    sweep = scrub.sweep_path
+    monkeypatch.setattr(scrub, "sweep_path", lambda model, path, upto=None, first=0:
+                        swept.append(upto - first) or sweep(model, path, upto=upto, first=first))
+    for chords in (total - 1, total // 2, 1):
+        swept.clear()
+        scrubber = Scrubber(simulation)
+        assert np.array_equal(scrubber.goto(chords).heights, simulation.cut_until(chords).heights), chords
+        assert sum(swept) < 2 * 4, chords  # from the copy in its stretch or the one before
 
 
 def test_the_cut_of_one_block() -> None:
