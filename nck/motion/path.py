@@ -80,7 +80,15 @@ class Segment:
         append = out.append  # (a loop of appends: cheaper than a list comprehension per row)
         axes = list(zip(start, delta))
         for s in distances:
-            lam = min(max(s * inv, 0.0), 1.0) if length > 0 else 1.0
+            if length > 0:
+                # min(max(s·inv, 0.0), 1.0) as the builtins decide, without their calls
+                lam = s * inv
+                if 0.0 > lam:
+                    lam = 0.0
+                if 1.0 < lam:
+                    lam = 1.0
+            else:
+                lam = 1.0
             if arc is None:
                 for x0, d in axes:
                     append(x0 + lam * d)

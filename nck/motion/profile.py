@@ -129,8 +129,15 @@ class Profile:
         last = len(starts) - 1
         i = 0
         out = []
+        append = out.append
         for n in range(1, count + 1):
-            t = min(max(tau + period * n, 0.0), duration)
+            # min(max(t, 0.0), duration) and min(s, length) as the builtins decide (the first
+            # argument unless the second compares greater, resp. less), without their calls
+            t = tau + period * n
+            if 0.0 > t:
+                t = 0.0
+            if duration < t:
+                t = duration
             while i < last and starts[i + 1] <= t:
                 i += 1  # the times increase: the phase only moves forward
             t0, s0, v0, a, j = phases[i]
@@ -138,7 +145,9 @@ class Profile:
             s = s0 + v0 * dt
             if a != 0.0 or j != 0.0:
                 s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
-            out.append(min(s, length) if offset is None else offset + min(s, length))
+            if length < s:
+                s = length
+            append(s if offset is None else offset + s)
         return out
 
     def state_at(self, t: float) -> tuple[float, float, float]:
