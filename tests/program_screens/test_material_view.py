@@ -196,6 +196,25 @@ async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_d
     assert finished == ["timeout"] * 3
 
 
+async def test_workers_do_not_describe_themselves_by_their_arguments(slots_dir: Path, monkeypatch) -> None:
+    """The editor's workers carry a fixed description: Textual would otherwise repr() the whole
+    simulation (every chord, every modal state) and the program text in the UI thread at each
+    start — for each Block key."""
+    from nck.check import CheckContext
+    from nck.simulation.run import Simulation
+
+    described: list[str] = []
+    monkeypatch.setattr(Simulation, "__repr__", lambda self: described.append("simulation") or "Simulation")
+    monkeypatch.setattr(CheckContext, "__repr__", lambda self: described.append("setting") or "CheckContext")
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        await pilot.press("shift+f6", "shift+f6", "shift+f7")
+        await settle(pilot)
+        assert pilot.app.screen.stock.highlight_line is not None
+    assert described == []
+
+
 async def test_view_keys_singly_and_in_a_burst(slots_dir: Path) -> None:
     app = make_program_app(slots_dir)
     async with app.run_test(size=SIZE) as pilot:
