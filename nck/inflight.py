@@ -2,11 +2,9 @@
 
 :class:`nck.program_control.ProgramRun` holds an output (M function, message) back until the
 motion pushed before it has been executed; it keeps the block, ``(file, line)``, of every item
-it pushes, oldest first, and drops the executed ones when an output waits (up to the first
-item of the block now executing). While no output waits nothing is dropped, so a long run
-without outputs keeps an entry per pushed item: here 8 bytes each (one integer per block in
-an array), not a tuple and a deque slot (~70 bytes; 14 MB on a 200,000-block program).
-"""
+it pushes, oldest first, and drops the executed ones as the main run goes on (up to the first
+item of the block now executing), so the queue stays about as long as the motion's look-ahead.
+One integer per entry in an array, not a tuple and a deque slot."""
 
 from __future__ import annotations
 

@@ -230,9 +230,14 @@ class ProgramRun:
         motion.push(item)
 
     def _release(self, motion: MotionSystem, events: list[RunEvent], everything: bool = False) -> None:
-        """Hand out deferred outputs whose preceding motion the main run has executed."""
-        if not self._deferred:
-            return
+        """Forget the pushed items the main run has executed; hand out deferred outputs whose
+        preceding motion is among them.
+
+        Executed items are dropped also while no output waits: a block that runs again (a loop,
+        a subprogram's next pass) must be found at its current run, not at an earlier run's entry
+        left behind — an output is tied to its own block's motion (002 L14590-14598), and an
+        output of a subprogram's third pass would otherwise wait for the end of the program.
+        This also keeps the queue as short as the motion's look-ahead."""
         current = motion.current_source()
         if everything or (current is None and motion.is_idle()):
             self._inflight.clear()
@@ -240,6 +245,8 @@ class ProgramRun:
             executing = self._inflight.find(current)
             if executing is not None:
                 self._inflight.drop(executing)
+        if not self._deferred:
+            return
         done = self._pushed_total - len(self._inflight)
         while self._deferred and self._deferred[0][0] <= done:
             events.append(self._deferred.popleft()[1])
