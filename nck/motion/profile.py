@@ -128,7 +128,7 @@ class Profile:
         phases, starts, duration, length = self.phases, self.starts, self.duration_s, self.length
         last = len(starts) - 1
         i = 0
-        out = []
+        out: list[float] = []
         append = out.append
         for n in range(1, count + 1):
             # min(max(t, 0.0), duration) and min(s, length) as the builtins decide (the first
