@@ -208,6 +208,17 @@ def recorded_frames(app: Any, clock: Callable[[], float] = time.perf_counter) ->
         app._display = display
 
 
+def _send_key(app: Any, key: str) -> float:
+    """Hand ``key`` to the app as its terminal driver does; the time it was sent (perf_counter)."""
+    from textual import events
+
+    event = events.Key(key, None)
+    event.set_sender(app)
+    sent = time.perf_counter()
+    app._driver.send_message(event)
+    return sent
+
+
 async def _key_to_frame(app: Any, key: str, frames: list[tuple[float, object]], limit_s: float = 30.0) -> float:
     """Send an area key as the terminal driver does and wait for the first frame of the screen it
     opens; seconds from the key to that frame.
@@ -215,14 +226,9 @@ async def _key_to_frame(app: Any, key: str, frames: list[tuple[float, object]], 
     Pilot's ``press`` cannot be used while a worker thread is busy: it waits until the whole
     process is idle, so it would wait for the editor's check to end.
     """
-    from textual import events
-
     before = app.screen
     frames.clear()
-    event = events.Key(key, None)
-    event.set_sender(app)
-    sent = time.perf_counter()
-    app._driver.send_message(event)
+    sent = _send_key(app, key)
     while time.perf_counter() - sent < limit_s:
         await asyncio.sleep(0.002)
         target = app.screen
@@ -295,8 +301,6 @@ async def _key_to_redraw(app: Any, key: str, widget: Any, ready: Callable[[], bo
                          frames: list[tuple[float, object]], limit_s: float = 120.0) -> float:
     """Send ``key`` as the terminal driver does; seconds until the first frame written after
     ``widget`` rendered with ``ready()`` true (the new picture: a scrub step's blank, a zoom)."""
-    from textual import events
-
     rendered: list[float] = []
     render = widget.render
 
@@ -309,10 +313,7 @@ async def _key_to_redraw(app: Any, key: str, widget: Any, ready: Callable[[], bo
     widget.render = recording_render
     try:
         frames.clear()
-        event = events.Key(key, None)
-        event.set_sender(app)
-        sent = time.perf_counter()
-        app._driver.send_message(event)
+        sent = _send_key(app, key)
         while time.perf_counter() - sent < limit_s:
             await asyncio.sleep(0.001)
             if rendered:

@@ -199,15 +199,23 @@ def material_rows(folder: Path, notes: list[str]) -> list[Row]:
     ]
 
 
+def _probe(name: str, arguments: list[str], notes: list[str], timeout_s: float) -> dict | None:
+    """The figures ``bench.hmi_probe ARGUMENTS`` prints (its last line, JSON); None, with a note,
+    when it printed none."""
+    done = run_child([sys.executable, "-m", "bench.hmi_probe", *arguments], timeout_s=timeout_s)
+    try:
+        return json.loads(done.stdout.strip().splitlines()[-1])
+    except (ValueError, IndexError):
+        notes.append(f"HMI {name} probe failed (exit {done.returncode}): {done.stderr.strip()[-300:]}")
+        return None
+
+
 def simulation_view_rows(folder: Path, notes: list[str]) -> list[Row]:
     """Issue 24: the editor's simulation of the material benchmark's plate in the HMI, then the
     redraw after a scrub step (Block ◀ / ▶) and after a zoom, key to frame."""
     program = write_material_program(folder)
-    done = run_child([sys.executable, "-m", "bench.hmi_probe", "--simulation", str(program)], timeout_s=3600.0)
-    try:
-        figures = json.loads(done.stdout.strip().splitlines()[-1])
-    except (ValueError, IndexError):
-        notes.append(f"HMI simulation probe failed (exit {done.returncode}): {done.stderr.strip()[-300:]}")
+    figures = _probe("simulation", ["--simulation", str(program)], notes, timeout_s=3600.0)
+    if figures is None:
         return []
     rows = [Row(f"HMI editor: Simulation of {program.stem} ({int(figures['simulation_blocks']):,} blocks), "
                 "key to the cut blank", f"{figures['simulation_s']:,.1f} s", "", "", "", "")]
@@ -255,11 +263,8 @@ def hmi_rows(program: Path | None, notes: list[str], editor_program: Path | None
 def _editor_rows(program: Path, notes: list[str]) -> list[Row]:
     """The Program area's editor opening ``program``: its whole-file check, keys during it."""
     lines = program.read_text().count("\n")
-    done = run_child([sys.executable, "-m", "bench.hmi_probe", "--editor", str(program)], timeout_s=900.0)
-    try:
-        editor = json.loads(done.stdout.strip().splitlines()[-1])
-    except (ValueError, IndexError):
-        notes.append(f"HMI editor probe failed (exit {done.returncode}): {done.stderr.strip()[-300:]}")
+    editor = _probe("editor", ["--editor", str(program)], notes, timeout_s=900.0)
+    if editor is None:
         return []
     check_s = float(editor["editor_check_s"])
     finished = editor["editor_check_done"] == "True"

@@ -481,6 +481,21 @@ class PathBuilder:
         return out
 
     # ---------------------------------------------------------------- lines on a separable frame
+    def _separable_start(self, kind: str, words: Any, modal: Any, geo: GeometryState) -> tuple[bool, Transform] | None:
+        """What a separable line or circle starts from: whether it ends in an exact stop, and the
+        frame's transform; None when the block needs the general path (a pending element,
+        rounding, contour aids, a changed geometry axis set, a G641 corner, a frame coupling axes)."""
+        if geo.pending is not None or geo.rndm_mm or self.geo_axes != GEOMETRY_AXES_DEFAULT \
+                or not LINE_AID_WORDS.isdisjoint(words.words):
+            return None
+        exact = ends_in_exact_stop(words, modal.gcodes)
+        if rounding_distance_mm(kind, exact, modal.gcodes, geo) > 0.0:
+            return None  # G641 holds the block back for its corner
+        transform = geo.frames.transform()
+        if transform.axis_affine() is None:
+            return None
+        return exact, transform
+
     def _separable_line(self, kind: str, words: Any, modal: Any, geo: GeometryState, feed: dict[str, Any],
                         units: UnitSystem, plane_code: str) -> canon.Motion | None:
         """The motion of a G0/G1 line when nothing but the line itself can happen: no contour
@@ -492,17 +507,11 @@ class PathBuilder:
         the modal state is updated as :meth:`motion` updates it. None when the block is not
         such a line (nothing changed: :meth:`motion` builds it).
         """
-        w = words.words
-        if geo.pending is not None or geo.rndm_mm or self.geo_axes != GEOMETRY_AXES_DEFAULT \
-                or not LINE_AID_WORDS.isdisjoint(w):
+        separable = self._separable_start(kind, words, modal, geo)
+        if separable is None:
             return None
         gcodes = modal.gcodes
-        exact = ends_in_exact_stop(words, gcodes)
-        if rounding_distance_mm(kind, exact, gcodes, geo) > 0.0:
-            return None  # G641 holds the line back for its corner
-        transform = geo.frames.transform()
-        if transform.axis_affine() is None:
-            return None
+        exact, transform = separable
         geo_axes = self.geo_axes
         programmed = words.axes
         for axis, (_value, mode) in programmed.items():
@@ -563,17 +572,11 @@ class PathBuilder:
         updated as :meth:`motion` updates it. None when the block is not such a circle (nothing
         changed: :meth:`motion` builds it); an alarm of the circle as :meth:`motion` raises it.
         """
-        w = words.words
-        if geo.pending is not None or geo.rndm_mm or self.geo_axes != GEOMETRY_AXES_DEFAULT \
-                or not LINE_AID_WORDS.isdisjoint(w):
+        separable = self._separable_start(kind, words, modal, geo)
+        if separable is None or separable[1].geometry_axes != GEOMETRY_AXES_DEFAULT:
             return None
         gcodes = modal.gcodes
-        exact = ends_in_exact_stop(words, gcodes)
-        if rounding_distance_mm(kind, exact, gcodes, geo) > 0.0:
-            return None  # G641 holds the circle back for its corner
-        transform = geo.frames.transform()
-        if transform.axis_affine() is None or transform.geometry_axes != GEOMETRY_AXES_DEFAULT:
-            return None
+        exact, transform = separable
         pl = self.plane(modal)
         end, programmed = self._targets(words, modal, geo, units)
         element = self._arc(kind, words, modal, geo, units, pl, dict(geo.wcs_mm), end)

@@ -268,6 +268,18 @@ def frame_lines(draw: Any, axes: str) -> str:
     return " ".join(word for word in words if word)
 
 
+def _g54_data(shift: float, scale: float, mirror: bool) -> NcData:
+    """NC data whose G54 translates X by ``shift`` and Z by -shift/2, scales X and Z, mirrors Z."""
+    found = NcData()
+    g54 = found.settable_frames["G54"]
+    g54.trans.update({"X": shift, "Z": -shift / 2})
+    if scale != 1.0:
+        g54.scale.update({"X": scale, "Z": scale})
+    if mirror:
+        g54.mirror.update({"Z": True})
+    return found
+
+
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.sampled_from(["mill", "lathe2"]).flatmap(
     lambda name: st.tuples(st.just(name), st.lists(frame_lines("XYZ" if name == "mill" else "XZ"),
@@ -282,20 +294,9 @@ def test_lines_on_a_separable_frame_give_the_element_path(program: tuple[str, li
     machine_name, lines = program
     machine = MACHINE if machine_name == "mill" else load_machine(machine_name)
     text = "G1 F1000\n" + "\n".join(lines) + "\nM30\n"
-    shift, scale, mirror = offset
 
-    def data() -> NcData:
-        found = NcData()
-        g54 = found.settable_frames["G54"]
-        g54.trans.update({"X": shift, "Z": -shift / 2})
-        if scale != 1.0:
-            g54.scale.update({"X": scale, "Z": scale})
-        if mirror:
-            g54.mirror.update({"Z": True})
-        return found
-
-    assert _steps(text, True, machine=machine, data=data()) == \
-        _steps(text, False, lines=False, machine=machine, data=data()), text
+    assert _steps(text, True, machine=machine, data=_g54_data(*offset)) == \
+        _steps(text, False, lines=False, machine=machine, data=_g54_data(*offset)), text
 
 
 def test_arcs_and_lines_take_the_fast_step(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -499,21 +500,10 @@ def test_circles_on_a_separable_frame_give_the_element_path(program: tuple[str, 
     machine_name, lines = program
     machine = MACHINE if machine_name == "mill" else load_machine(machine_name)
     text = "G1 F1000\n" + "\n".join(lines) + "\nM30\n"
-    shift, scale, mirror = offset
 
-    def data() -> NcData:
-        found = NcData()
-        g54 = found.settable_frames["G54"]
-        g54.trans.update({"X": shift, "Z": -shift / 2})
-        if scale != 1.0:
-            g54.scale.update({"X": scale, "Z": scale})
-        if mirror:
-            g54.mirror.update({"Z": True})
-        return found
-
-    reference = _steps(text, False, lines=False, machine=machine, data=data())
-    assert _steps(text, True, machine=machine, data=data()) == reference, text
-    assert _steps(text, False, lines=True, machine=machine, data=data()) == reference, text
+    reference = _steps(text, False, lines=False, machine=machine, data=_g54_data(*offset))
+    assert _steps(text, True, machine=machine, data=_g54_data(*offset)) == reference, text
+    assert _steps(text, False, lines=True, machine=machine, data=_g54_data(*offset)) == reference, text
 
 
 @pytest.mark.parametrize("text", [
