@@ -325,11 +325,29 @@ async def _key_to_redraw(app: Any, key: str, widget: Any, ready: Callable[[], bo
         del widget.render
 
 
+async def _keys_while_recalculating(app: Any, screen: Any, frames: list[tuple[float, object]],
+                                    limit_s: float = 1800.0) -> list[float]:
+    """Recalculate (F7) the editor's simulation and, while it computes, press Machine and Program
+    in turn (as :func:`measure_editor` does during its check); each key's seconds to its frame."""
+    latency: list[float] = []
+    _send_key(app, "f7")
+    started = time.perf_counter()
+    while screen._material is not None and time.perf_counter() - started < limit_s:
+        await asyncio.sleep(0.002)  # the key is taken: the shown simulation is dropped
+    k = 0
+    while (screen._material is None or k % 2) and time.perf_counter() - started < limit_s:
+        await asyncio.sleep(0.06)
+        latency.append(await _key_to_frame(app, ("alt+m", "alt+p")[k % 2], frames))
+        k += 1
+    return latency
+
+
 async def measure_simulation(program: Path, presses: int = 20) -> dict[str, float | str]:
     """Open ``program`` in the editor, simulate it (Simulation softkey) and measure what the
     operator waits for: the whole simulation (key to the cut blank shown), then the redraw after
     a scrub step (Block ◀ / Block ▶, the blank re-cut to that block in a worker thread) and
-    after a zoom (Zoom + / Zoom -), key to frame, ``presses`` of each kind.
+    after a zoom (Zoom + / Zoom -), key to frame, ``presses`` of each kind; then the area keys'
+    latency while the simulation is calculated again (Recalculate).
 
     The tool is the material benchmark's (T1 D1: ball end mill, 8 mm).
     """
@@ -372,6 +390,11 @@ async def measure_simulation(program: Path, presses: int = 20) -> dict[str, floa
                 zooms.append(await _key_to_redraw(app, ("f4", "f5")[k % 2], stock,
                                                   lambda: stock.zoom != zoom, frames))
                 await pilot.pause()
+            keys = await _keys_while_recalculating(app, screen, frames)
+    out["keys_during_simulation"] = float(len(keys))
+    if keys:
+        out["simulation_key_ms_median"] = statistics.median(keys) * 1000.0
+        out["simulation_key_ms_p95"] = _percentile(keys, 0.95) * 1000.0
     out["scrub_first_ms"] = steps[0] * 1000.0  # the first step back from the end of the simulation
     for label, figures in (("scrub_step", steps), ("zoom", zooms)):
         out[f"{label}_ms_median"] = statistics.median(figures) * 1000.0

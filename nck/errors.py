@@ -6,6 +6,8 @@ alarm number. Anything else that escapes is a genuine bug.
 
 from __future__ import annotations
 
+from typing import Any
+
 
 class NcAlarmError(Exception):
     """A condition that the control reports as a numbered NC alarm.
@@ -36,6 +38,11 @@ class NcAlarmError(Exception):
         self.line = line
         self.n = n
         super().__init__(f"alarm {self.number} {' '.join(self.params)}".rstrip())
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickled with its number, parameters and location (a simulation computed in another
+        process hands its alarms back this way)."""
+        return (type(self), (self.number, *self.params), self.__dict__)
 
     def located(self, file: str | None, line: int | None, n: int | None) -> "NcAlarmError":
         """Fill in the source location where it is still unknown; returns self."""

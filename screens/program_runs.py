@@ -1,11 +1,12 @@
 """Live checks and the toolpath simulation of the program editor.
 
-A mixin of :class:`screens.program.ProgramScreen`. Both run in worker threads
-on a copy of the text: the check streams its alarms back in batches (each
-faulty line gets its mark as soon as it is known; a newer check makes an older
-one stop), the simulation runs the program once as AUTO runs it
-(``CheckContext.simulate``) and both views draw that one run: the material
-view the blank it cut, the toolpath view its executed path.
+A mixin of :class:`screens.program.ProgramScreen`. Both work on a copy of the
+text off the key path: the check in a worker thread streams its alarms back in
+batches (each faulty line gets its mark as soon as it is known; a newer check
+makes an older one stop); the simulation runs the program once as AUTO runs it
+(``CheckContext.simulate``) in a child process (:mod:`hmi.child_job`: the screen
+does not share the interpreter lock with it) and both views draw that one run:
+the material view the blank it cut, the toolpath view its executed path.
 
 Both run on the session's machine and a copy of its NC data (tools, work offsets,
 R parameters, setting data): :meth:`CheckAndSimulation.check_setting` asks the
@@ -29,6 +30,7 @@ from textual.worker import Worker, WorkerState, get_current_worker
 from nck import alarm_text_in
 from nck.queries import CheckSetting, Scrubber
 
+from hmi.child_job import ChildJob
 from hmi.focus import focus_now
 from hmi.i18n import _, language
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -297,25 +299,32 @@ class CheckAndSimulation:
     @work(thread=True, exclusive=True, group="program-material", exit_on_error=False,
           description=WORKER_DESCRIPTION)
     def _material_worker(self, program: str, text: str, programs: Any, setting: Any) -> None:
-        """The AUTO run and the material removal, off the key path (a worker thread). A newer
-        run (Recalculate, another program) cancels this one: its run stops at its next chunk."""
+        """The AUTO run and the material removal, off the key path: in a child process
+        (:class:`hmi.child_job.ChildJob`; this thread only waits for it and shows its progress).
+        A newer run (Recalculate, another program, back to the editor) cancels this one: the
+        child is stopped at once."""
         worker = get_current_worker()
-        shown_at = time.monotonic()
+        name = Path(program).name
 
-        def give_up(blocks: int) -> bool:
-            nonlocal shown_at
-            if worker.is_cancelled:
-                return True
-            if time.monotonic() - shown_at >= PROGRESS_EVERY_S:
-                shown_at = time.monotonic()
-                self.app.call_from_thread(self._show_progress, worker, blocks)
-            return False
+        def simulate(send: Any) -> Any:
+            shown_at = time.monotonic()
 
-        # What the program does wrong comes as alarms and events of the simulation; an exception
-        # here is a bug (on_worker_state_changed reports it).
-        simulation = setting.simulate(Path(program).name, text, programs=programs, give_up=give_up)
+            def give_up(blocks: int) -> bool:
+                nonlocal shown_at
+                if time.monotonic() - shown_at >= PROGRESS_EVERY_S:
+                    shown_at = time.monotonic()
+                    send(blocks)
+                return False
+
+            # What the program does wrong comes as alarms and events of the simulation; an
+            # exception here is a bug (ChildJobFailed: on_worker_state_changed reports it).
+            return setting.simulate(name, text, programs=programs, give_up=give_up)
+
+        job = ChildJob(simulate)
+        for blocks in job.messages(lambda: worker.is_cancelled):
+            self.app.call_from_thread(self._show_progress, worker, blocks)
         if not worker.is_cancelled:
-            self.app.call_from_thread(self._show_material, simulation)
+            self.app.call_from_thread(self._show_material, job.result)
 
     def _show_progress(self, worker: Worker[Any], blocks: int) -> None:
         """How far a long simulation has come (its worker is still the current one)."""

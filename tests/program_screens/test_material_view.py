@@ -8,12 +8,14 @@ L62525-62558) so that it runs on a kernel without tool data.
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from hmi.child_job import ChildJob
 from hmi.widgets.stock_view import (
     BLOCK_CUT,
     FEED,
@@ -29,6 +31,7 @@ from nck.kernel import Nck
 from nck.machine import load_machine
 
 from hmi.app import HmiApp
+from screens import program_runs
 from tests.program_screens.conftest import SIZE, make_program_app, nc_files, settle
 
 SLOTS = (
@@ -137,19 +140,28 @@ async def test_simulation_cuts_the_blank_and_steps_block_by_block(slots_dir: Pat
         assert float(screen.stock.picture.heights.min()) == pytest.approx(0.0)
 
 
+def _record_jobs(monkeypatch) -> list:
+    """Every child process the editor starts for a simulation (hmi.child_job.ChildJob), in order."""
+    jobs: list[ChildJob] = []
+
+    class RecordedJob(ChildJob):
+        def __init__(self, job) -> None:
+            super().__init__(job)
+            jobs.append(self)
+
+    monkeypatch.setattr(program_runs, "ChildJob", RecordedJob)
+    return jobs
+
+
 async def test_the_editor_runs_the_program_once_for_both_views(slots_dir: Path, monkeypatch) -> None:
     """The toolpath view (Material off) draws the material simulation's own run: the program is
     run once per Recalculate, not once more for the toolpath."""
-    from nck.check import CheckContext
-
-    calls: list[str] = []
-    simulate = CheckContext.simulate
-    monkeypatch.setattr(CheckContext, "simulate", lambda self, *a, **k: calls.append("simulate") or simulate(self, *a, **k))
+    jobs = _record_jobs(monkeypatch)
     app = make_program_app(slots_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_simulation(pilot)
         screen = pilot.app.screen
-        assert calls == ["simulate"]
+        assert len(jobs) == 1 and jobs[0].result is screen._material
         simulation = screen._material
         assert len(screen.toolpath.pieces) == len(simulation.path.starts) > 0
         assert screen.toolpath.pieces[-1].end == tuple(simulation.path.ends[-1].tolist())
@@ -162,21 +174,10 @@ time each, many seconds of computing for a run that is not given up."""
 
 async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_dir: Path, monkeypatch) -> None:
     """A long simulation says how far it has come; Recalculate twice in a burst and going back to
-    the editor drop the runs still calculating (each ends at its next chunk, as a time-out)
+    the editor drop the runs still calculating (each child process is stopped and waited for)
     instead of leaving them to run on beside the editor."""
-    from nck.check import CheckContext
-    from screens import program_runs
-
     (data_dir / "MPF" / "DEMO.MPF").write_text(LONG_DWELL)
-    finished: list[str] = []
-    simulate = CheckContext.simulate
-
-    def recorded(self, *args, **options):
-        simulation = simulate(self, *args, **options)
-        finished.append(simulation.status)
-        return simulation
-
-    monkeypatch.setattr(CheckContext, "simulate", recorded)
+    jobs = _record_jobs(monkeypatch)
     monkeypatch.setattr(program_runs, "PROGRESS_EVERY_S", 0.0)
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
@@ -193,7 +194,11 @@ async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_d
         await pilot.press("f8")  # back to the editor
         await settle(pilot)
         assert not screen.simulating and screen._material is None
-    assert finished == ["timeout"] * 3
+        assert len(jobs) == 3
+        assert all(job.ended and job.result is None for job in jobs)
+    for job in jobs:  # no process left behind: each was waited for
+        with pytest.raises(ChildProcessError):
+            os.waitpid(job.pid, os.WNOHANG)
 
 
 async def test_workers_do_not_describe_themselves_by_their_arguments(slots_dir: Path, monkeypatch) -> None:
@@ -435,7 +440,6 @@ async def test_program_beside_the_simulation_and_the_cursor_block_marks_its_cut(
 async def test_run_to_cursor_and_playing_at_a_speed(slots_dir: Path, monkeypatch) -> None:
     """Run to cursor goes to the cursor's block; Start / Stop plays the blocks at the chosen speed
     (the test plays the time: the tick timer is set out of reach)."""
-    from screens import program_runs
 
     monkeypatch.setattr(program_runs, "PLAY_TICK_S", 3600.0)
     app = make_program_app(slots_dir)
