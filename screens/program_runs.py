@@ -1,12 +1,13 @@
 """Live checks and the toolpath simulation of the program editor.
 
 A mixin of :class:`screens.program.ProgramScreen`. Both work on a copy of the
-text off the key path: the check in a worker thread streams its alarms back in
-batches (each faulty line gets its mark as soon as it is known; a newer check
-makes an older one stop); the simulation runs the program once as AUTO runs it
-(``CheckContext.simulate``) in a child process (:mod:`hmi.child_job`: the screen
-does not share the interpreter lock with it) and both views draw that one run:
-the material view the blank it cut, the toolpath view its executed path.
+text off the key path, each in a child process (:mod:`hmi.child_job`: the
+screen does not share the interpreter lock with them) waited for by a worker
+thread: the check streams its alarms back in batches (each faulty line gets its
+mark as soon as it is known; a newer check stops an older one); the simulation
+runs the program once as AUTO runs it (``CheckContext.simulate``) and both views
+draw that one run: the material view the blank it cut, the toolpath view its
+executed path.
 
 Both run on the session's machine and a copy of its NC data (tools, work offsets,
 R parameters, setting data): :meth:`CheckAndSimulation.check_setting` asks the
@@ -61,27 +62,6 @@ in the UI thread at every start (measured: ~100 ms per scrub step of a 20,000-bl
 def speed_text(blocks_s: float) -> str:
     """A playing speed in the panel's words."""
     return _("at once") if blocks_s == math.inf else _("{rate} blocks/s").format(rate=f"{blocks_s:g}")
-
-
-class _Breather:
-    """Called often from a worker thread: every few milliseconds of work it sleeps briefly.
-
-    Python threads share one interpreter lock; a busy checker would otherwise
-    keep the screen waiting for it on every message. Sleeping hands the lock
-    over, so keys stay responsive while a large program is checked.
-    """
-
-    WORK_S = 0.004
-    REST_S = 0.002
-
-    def __init__(self) -> None:
-        self._since = time.perf_counter()
-
-    def __call__(self) -> None:
-        now = time.perf_counter()
-        if now - self._since >= self.WORK_S:
-            time.sleep(self.REST_S)
-            self._since = time.perf_counter()
 
 
 def pieces_of(simulation: Any) -> list[PathPiece]:
@@ -204,28 +184,32 @@ class CheckAndSimulation:
 
     @work(thread=True, exclusive=True, group="program-check", exit_on_error=False, description=WORKER_DESCRIPTION)
     def _check_worker(self, generation: int, program: str, text: str, programs: Any, setting: Any) -> None:
+        """The check of ``text``, off the key path: in a child process (:class:`hmi.child_job.ChildJob`)
+        that sends the faulty lines' marks in batches; a newer check stops it at once."""
         worker = get_current_worker()
+        name = Path(program).name
+        panel_language = language()
 
-        pause = _Breather()
+        def check(send: Any) -> list[ErrorMark]:
+            batch: list[ErrorMark] = []
+            # What the program does wrong comes as alarms; an exception here is a bug of the check
+            # (on_worker_state_changed reports it).
+            for alarm in setting.iter_check(name, text, programs=programs):
+                batch.append(ErrorMark((alarm.line or 1) - 1, alarm.number,
+                                       alarm_text_in(panel_language, alarm.number, alarm.text_params, alarm.text)))
+                if len(batch) >= STREAM_BATCH:
+                    send(batch)
+                    batch = []
+            return batch
 
         def stale() -> bool:
-            pause()
             return worker.is_cancelled or generation != self._generation
 
-        batch: list[ErrorMark] = []
-        name = Path(program).name
-        # What the program does wrong comes as alarms; an exception here is a bug of the check
-        # (on_worker_state_changed reports it).
-        for alarm in setting.iter_check(name, text, programs=programs, should_stop=stale):
-            if stale():
-                return
-            line = (alarm.line or 1) - 1
-            batch.append(ErrorMark(line, alarm.number, alarm_text_in(language(), alarm.number, alarm.text_params, alarm.text)))
-            if len(batch) >= STREAM_BATCH:
-                self.app.call_from_thread(self._apply_marks, generation, batch, False)
-                batch = []
+        job = ChildJob(check)
+        for batch in job.messages(stale):
+            self.app.call_from_thread(self._apply_marks, generation, batch, False)
         if not stale():
-            self.app.call_from_thread(self._apply_marks, generation, batch, True)
+            self.app.call_from_thread(self._apply_marks, generation, job.result, True)
 
     def on_worker_state_changed(self, event: Worker.StateChanged) -> None:
         """A check or simulation that raised is a bug, not a problem of the program (those are
