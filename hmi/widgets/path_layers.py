@@ -9,11 +9,15 @@ below ``count``, else in rapid when its first rapid chord is — the same pixels
 chords one after the other.
 
 Chords are sampled at half a pixel along their length (:func:`segment_pixels`), as every
-straight line of the view is.
+straight line of the view is. Working the layers out only samples the chords whose extents
+reach into the picture (a zoomed-in view of a long program sees few of them), and a widget's
+:class:`PathLayerCache` keeps the layers of the last few viewports, so zooming back to a level
+seen before costs nothing.
 """
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
@@ -35,6 +39,13 @@ def to_pixels(port: Viewport, width_px: int, height_px: int, h: np.ndarray, v: n
     return px, py
 
 
+def sample_steps(length_mm: np.ndarray, port: Viewport, width_px: int, height_px: int) -> np.ndarray:
+    """How many samples a line of ``length_mm`` gets: one every half pixel and both ends, at most
+    four per pixel of the picture's width and height together."""
+    length = length_mm / port.mm_per_pixel
+    return np.minimum(np.ceil(length * 2.0).astype(np.int64) + 1, 4 * (width_px + height_px))
+
+
 def segment_pixels(port: Viewport, width_px: int, height_px: int, a: np.ndarray,
                    b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The pixels of the straight lines a[i] → b[i] (rows h, v in mm), sampled at half a pixel:
@@ -42,8 +53,7 @@ def segment_pixels(port: Viewport, width_px: int, height_px: int, a: np.ndarray,
     image included)."""
     ah, av = np.ascontiguousarray(a[:, 0]), np.ascontiguousarray(a[:, 1])  # 1-D gathers below are cheaper
     dh, dv = b[:, 0] - ah, b[:, 1] - av
-    length = np.hypot(dh, dv) / port.mm_per_pixel
-    steps = np.minimum(np.ceil(length * 2.0).astype(np.int64) + 1, 4 * (width_px + height_px))
+    steps = sample_steps(np.hypot(dh, dv), port, width_px, height_px)
     owner = np.repeat(np.arange(len(a)), steps)
     first = np.concatenate(([0], np.cumsum(steps)[:-1]))
     f = (np.arange(len(owner)) - np.repeat(first, steps)) / np.repeat(np.maximum(steps - 1, 1), steps)
@@ -53,17 +63,98 @@ def segment_pixels(port: Viewport, width_px: int, height_px: int, a: np.ndarray,
     return px, py, owner
 
 
-def first_chords(port: Viewport, width_px: int, height_px: int, a: np.ndarray, b: np.ndarray,
-                 chords: np.ndarray, never: int) -> np.ndarray:
-    """Per pixel (height_px × width_px) the smallest of ``chords`` whose line a → b draws it
-    (``never`` where none does)."""
+@dataclass(frozen=True)
+class Chords:
+    """Straight lines seen along two axes, kept for rasterising them in any viewport: start
+    (h, v), direction (end − start), length and extents in mm, and each line's chord number."""
+
+    start_h: np.ndarray
+    start_v: np.ndarray
+    delta_h: np.ndarray
+    delta_v: np.ndarray
+    length_mm: np.ndarray
+    low_h: np.ndarray
+    high_h: np.ndarray
+    low_v: np.ndarray
+    high_v: np.ndarray
+    numbers: np.ndarray
+
+    @classmethod
+    def of(cls, a: np.ndarray, b: np.ndarray, numbers: np.ndarray) -> Chords:
+        """The lines a[i] → b[i] (rows h, v in mm) numbered ``numbers``."""
+        ah, av = np.ascontiguousarray(a[:, 0]), np.ascontiguousarray(a[:, 1])
+        bh, bv = np.ascontiguousarray(b[:, 0]), np.ascontiguousarray(b[:, 1])
+        dh, dv = bh - ah, bv - av
+        return cls(ah, av, dh, dv, np.hypot(dh, dv), np.minimum(ah, bh), np.maximum(ah, bh),
+                   np.minimum(av, bv), np.maximum(av, bv), numbers)
+
+    def __len__(self) -> int:
+        return len(self.numbers)
+
+
+SHORT_LINE_STEPS = 6
+"""Lines of up to this many samples are sampled all at once per number of samples (most of a
+long program's chords, seen whole, are shorter than a pixel: two samples)."""
+
+
+def first_chords(port: Viewport, width_px: int, height_px: int, chords: Chords, never: int) -> np.ndarray:
+    """Per pixel (height_px × width_px) the smallest number of the ``chords`` that draw it
+    (``never`` where none does): the pixels of :func:`segment_pixels`, sampling only the lines
+    whose extents reach into the picture."""
     layer = np.full(height_px * width_px, never, dtype=np.int64)
-    if len(a):
-        px, py, owner = segment_pixels(port, width_px, height_px, a, b)
-        inside = (px >= 0) & (px < width_px) & (py >= 0) & (py < height_px)
-        # A pixel's first chord is the smallest chord index among its samples.
-        np.minimum.at(layer, py[inside] * width_px + px[inside], chords[owner[inside]])
+    scale = port.mm_per_pixel
+    # The picture in mm with a pixel to spare: a line whose extents stay outside has no sample in it.
+    h_low, h_high = port.centre_h - (width_px / 2.0 + 1.0) * scale, port.centre_h + (width_px / 2.0 + 1.0) * scale
+    v_low, v_high = port.centre_v - (height_px / 2.0 + 1.0) * scale, port.centre_v + (height_px / 2.0 + 1.0) * scale
+    seen = np.flatnonzero((chords.high_h >= h_low) & (chords.low_h <= h_high)
+                          & (chords.high_v >= v_low) & (chords.low_v <= v_high))
+    steps = sample_steps(chords.length_mm[seen], port, width_px, height_px)
+    groups = np.minimum(steps, SHORT_LINE_STEPS + 1)
+    for group in np.flatnonzero(np.bincount(groups, minlength=SHORT_LINE_STEPS + 2)).tolist():
+        in_group = groups == group
+        mine: slice | np.ndarray = slice(None) if len(seen) == len(chords) and in_group.all() else seen[in_group]
+        start_h, start_v = chords.start_h[mine], chords.start_v[mine]
+        delta_h, delta_v = chords.delta_h[mine], chords.delta_v[mine]
+        if group <= SHORT_LINE_STEPS:  # every line here has ``group`` samples: the k-th of them all at once
+            numbers = chords.numbers[mine]
+            for k in range(group):
+                fraction = k / max(group - 1, 1)
+                _mark(layer, port, width_px, height_px, start_h + delta_h * fraction, start_v + delta_v * fraction,
+                      numbers)
+        else:
+            mine_steps = steps[in_group]
+            first = np.cumsum(mine_steps) - mine_steps
+            fraction = ((np.arange(int(first[-1] + mine_steps[-1])) - np.repeat(first, mine_steps))
+                        / np.repeat(mine_steps - 1, mine_steps))
+            _mark(layer, port, width_px, height_px,
+                  np.repeat(start_h, mine_steps) + np.repeat(delta_h, mine_steps) * fraction,
+                  np.repeat(start_v, mine_steps) + np.repeat(delta_v, mine_steps) * fraction,
+                  np.repeat(chords.numbers[mine], mine_steps))
     return layer.reshape(height_px, width_px)
+
+
+def _mark(layer: np.ndarray, port: Viewport, width_px: int, height_px: int, h: np.ndarray, v: np.ndarray,
+          numbers: np.ndarray) -> None:
+    """Lower ``layer``'s pixels at the samples (h, v) (in chord order) to the samples' chord numbers.
+
+    ``h`` and ``v`` are worked on in place: the same operations as :func:`to_pixels`."""
+    np.subtract(h, port.centre_h, out=h)
+    np.subtract(port.centre_v, v, out=v)
+    for values, half in ((h, width_px / 2.0), (v, height_px / 2.0)):
+        np.divide(values, port.mm_per_pixel, out=values)
+        np.add(values, half, out=values)
+        np.floor(values, out=values)
+    px, py = h.astype(np.int64), v.astype(np.int64)
+    pixel = py * width_px + px
+    inside = (px >= 0) & (px < width_px) & (py >= 0) & (py < height_px)
+    if not inside.all():
+        pixel, numbers = pixel[inside], numbers[inside]
+    if len(pixel):
+        # Samples come in chord order: of a run of samples in one pixel the first has the smallest number.
+        runs = np.empty(len(pixel), dtype=bool)
+        runs[0] = True
+        np.not_equal(pixel[1:], pixel[:-1], out=runs[1:])
+        np.minimum.at(layer, pixel[runs], numbers[runs])
 
 
 @dataclass(frozen=True)
@@ -79,35 +170,65 @@ class PathLayers:
         image[self.first_feed < count] = feed
 
 
+@dataclass(frozen=True)
+class PathChords:
+    """A path's feed chords and rapid chords seen along two axes."""
+
+    feed: Chords
+    rapid: Chords
+    count: int
+
+    @classmethod
+    def of(cls, starts: np.ndarray, ends: np.ndarray, rapid: np.ndarray, axes: tuple[int, int]) -> PathChords:
+        """The path ``starts`` → ``ends`` (``rapid`` per chord) seen along ``axes`` (h, v)."""
+        h, v = axes
+        a = starts[:, [h, v]]
+        b = ends[:, [h, v]]
+        numbers = np.arange(len(starts))
+        return cls(Chords.of(a[~rapid], b[~rapid], numbers[~rapid]), Chords.of(a[rapid], b[rapid], numbers[rapid]),
+                   len(starts))
+
+    def layers(self, port: Viewport, width_px: int, height_px: int) -> PathLayers:
+        """:class:`PathLayers` of this path in ``port``."""
+        return PathLayers(first_feed=first_chords(port, width_px, height_px, self.feed, self.count),
+                          first_rapid=first_chords(port, width_px, height_px, self.rapid, self.count))
+
+
+MAX_CACHED_VIEWPORTS = 12
+"""Viewports whose layers a :class:`PathLayerCache` keeps (zoom levels and pans gone back to)."""
+
+
 class PathLayerCache:
-    """The layers of the last view asked for (a widget keeps one: its path, view and viewport
-    change far less often than what it draws up to)."""
+    """The layers of the last viewports asked for, of the last path and view (a widget keeps one:
+    its path, view and viewport change far less often than what it draws up to)."""
 
     def __init__(self) -> None:
-        self._key: tuple[object, ...] | None = None
-        self._layers: PathLayers | None = None
+        self._path_key: tuple[object, ...] | None = None
+        self._chords: PathChords | None = None
+        self._layers: OrderedDict[tuple[Viewport, int, int], PathLayers] = OrderedDict()
 
     def layers(self, starts: np.ndarray, ends: np.ndarray, rapid: np.ndarray, axes: tuple[int, int],
                port: Viewport, width_px: int, height_px: int) -> PathLayers:
         """The layers of the path ``starts`` → ``ends`` (``rapid`` per chord) seen along ``axes``."""
-        key = (starts, ends, rapid, axes, port, width_px, height_px)
-        if self._key is not None and self._layers is not None and len(key) == len(self._key) and all(
+        path_key = (starts, ends, rapid, axes)
+        if self._chords is None or self._path_key is None or not all(
                 mine is theirs if isinstance(mine, np.ndarray) else mine == theirs
-                for mine, theirs in zip(key, self._key)):
-            return self._layers
-        self._layers = path_layers(starts, ends, rapid, axes, port, width_px, height_px)
-        self._key = key
-        return self._layers
+                for mine, theirs in zip(path_key, self._path_key)):
+            self._chords = PathChords.of(starts, ends, rapid, axes)
+            self._path_key = path_key
+            self._layers.clear()
+        key = (port, width_px, height_px)
+        layers = self._layers.get(key)
+        if layers is None:
+            layers = self._layers[key] = self._chords.layers(port, width_px, height_px)
+            if len(self._layers) > MAX_CACHED_VIEWPORTS:
+                self._layers.popitem(last=False)
+        else:
+            self._layers.move_to_end(key)
+        return layers
 
 
 def path_layers(starts: np.ndarray, ends: np.ndarray, rapid: np.ndarray, axes: tuple[int, int],
                 port: Viewport, width_px: int, height_px: int) -> PathLayers:
     """:class:`PathLayers` of the path ``starts`` → ``ends`` seen along ``axes`` (h, v)."""
-    h, v = axes
-    a = starts[:, [h, v]]
-    b = ends[:, [h, v]]
-    index = np.arange(len(starts))
-    never = len(starts)
-    return PathLayers(
-        first_feed=first_chords(port, width_px, height_px, a[~rapid], b[~rapid], index[~rapid], never),
-        first_rapid=first_chords(port, width_px, height_px, a[rapid], b[rapid], index[rapid], never))
+    return PathChords.of(starts, ends, rapid, axes).layers(port, width_px, height_px)

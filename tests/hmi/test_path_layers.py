@@ -43,3 +43,39 @@ def test_layers_paint_what_drawing_the_chords_in_turn_draws(seed: int, chords: i
         # the cache answers the same layers for the same path and view
         assert cache.layers(starts, ends, rapid, (0, 1), port, width_px, height_px).first_feed.tobytes() == \
             layers.first_feed.tobytes()
+
+
+@settings(max_examples=30, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), chords=st.integers(1, 300), width_px=st.integers(1, 40),
+       height_px=st.integers(1, 40), zoom=st.floats(0.02, 50.0), pan=st.floats(-1.0, 1.0))
+def test_a_long_polyline_in_any_viewport_paints_what_drawing_it_chord_by_chord_draws(
+        seed: int, chords: int, width_px: int, height_px: int, zoom: float, pan: float) -> None:
+    # A CAM program's path: many short chords one after the other (most shorter than a pixel
+    # seen whole, several pixels long zoomed in), partly outside the picture when panned.
+    rng = np.random.default_rng(seed)
+    points = np.cumsum(rng.normal(0.0, 0.4, (chords + 1, 3)), axis=0)
+    starts, ends = points[:-1], points[1:]
+    rapid = rng.random(chords) < 0.05
+    span = float(np.ptp(points[:, :2], axis=0).max()) + 1e-3
+    port = Viewport(float(points[:, 0].mean() + pan * span), float(points[:, 1].mean() - pan * span / 2),
+                    span / max(width_px, height_px) / zoom)
+    layers = path_layers(starts, ends, rapid, (0, 1), port, width_px, height_px)
+    for count in sorted({0, 1, chords // 3, chords // 2, chords}):
+        image = np.zeros((height_px, width_px, 3), dtype=np.uint8)
+        layers.paint(image, count, FEED, RAPID)
+        assert np.array_equal(image, drawn_one_by_one(starts, ends, rapid, count, port, width_px, height_px)), count
+
+
+def test_the_cache_gives_back_a_viewport_seen_before_and_works_out_a_new_path() -> None:
+    rng = np.random.default_rng(7)
+    starts = rng.uniform(-20.0, 20.0, (50, 3))
+    ends = starts + rng.normal(0.0, 3.0, (50, 3))
+    rapid = rng.random(50) < 0.3
+    cache = PathLayerCache()
+    ports = [Viewport(0.0, 0.0, 0.5 / 1.5 ** zoom) for zoom in range(4)]
+    first = [cache.layers(starts, ends, rapid, (0, 1), port, 20, 16) for port in ports]
+    again = [cache.layers(starts, ends, rapid, (0, 1), port, 20, 16) for port in reversed(ports)]
+    assert all(kept is seen for kept, seen in zip(reversed(again), first))  # kept, not worked out again
+    moved = ends + 1.0
+    other = cache.layers(starts, moved, rapid, (0, 1), ports[0], 20, 16)
+    assert np.array_equal(other.first_feed, path_layers(starts, moved, rapid, (0, 1), ports[0], 20, 16).first_feed)
