@@ -1,9 +1,10 @@
 """A long computation of the panel run in a child process, its messages streamed back.
 
 The editor's simulation runs a whole program through the kernel and sweeps the blank: seconds
-to a minute of pure Python. In a worker thread it shares the interpreter lock with the screen,
-and every key waits for it (measured: 75–210 ms a key while a 200,000-block plate was
-simulated). :class:`ChildJob` runs such a job in a child process forked from the panel instead:
+to a minute of pure Python. In a worker thread it shares the interpreter lock with the screen:
+every key waits for it, and it waits for every frame (figures in bench/analysis.md, "Editor
+computations in a child process"). :class:`ChildJob` runs such a job in a child process forked
+from the panel instead:
 the child starts at once with everything the job needs already in memory (the program text,
 the copy of the NC data, the subprogram source), the job runs on the other core at full speed,
 and the screen thread only waits on a pipe.
@@ -24,7 +25,9 @@ Choice (the manuals are silent on how a trainer computes): ``fork`` rather than 
 because a spawned child would have to import the kernel and numpy first (about half a second
 for even a three-line program) and be handed the subprogram source, which holds the panel's
 file system. Nothing in ``nck/`` takes a lock or starts a thread, so the forked child cannot
-wait for a lock another thread of the panel held at the fork.
+wait for a lock another thread of the panel held at the fork. (Python 3.12 warns about any fork
+of a process with threads; the project runs on 3.11, and the reasoning above is why that warning
+may be silenced here when it moves.)
 """
 
 from __future__ import annotations
