@@ -548,14 +548,14 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         message = self.query_one("#prog-message", Static)
         count = len(self.editor.error_marks)
         if mark is not None:
-            message.update(f"⚠ {mark.label}")
+            message.update(f"⚠ {mark.label}", layout=False)  # one line of fixed size: no layout pass
             message.set_class(True, "-error")
         else:
             state = _("checking …") if self._check_running else (
                 _("{count} faulty line(s) — Shift+F1: next error").format(count=count) if count
                 else _("no errors found"))
             meaning = self._word_meaning()
-            message.update((f"{state}   │ {meaning}" if meaning else state) if self.program else "")
+            message.update((f"{state}   │ {meaning}" if meaning else state) if self.program else "", layout=False)
             message.set_class(False, "-error")
 
     def _word_meaning(self) -> str:
@@ -568,7 +568,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             return
         title = self.query_one("#prog-title", Static)
         if self.program is None:
-            title.update(_("No program open — Program manager (Alt+N): select a program and press Open"))
+            title.update(_("No program open — Program manager (Alt+N): select a program and press Open"), layout=False)
             return
         flags = []
         if self._dirty:  # cheap on every cursor move; is_modified() compares the text
@@ -579,7 +579,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         row, column = self.editor.cursor_location
         suffix = f"  [{', '.join(flags)}]" if flags else ""
         place = _("line {line}/{lines}  col {column}").format(line=row + 1, lines=lines, column=column + 1)
-        title.update(f" {self.program}{suffix}   {place}")
+        title.update(f" {self.program}{suffix}   {place}", layout=False)  # one line of fixed size: no layout pass
 
     # -- save, execute -------------------------------------------------------------------------
     def action_save(self) -> bool:
