@@ -11,7 +11,8 @@ foreground and the lower as background), so the pixels are about square. Three l
   the path overlay (feed, rapid dimmed, the highlighted block bright); the tool at its place;
   a lathe's picture (``turning``) is the half section of the bar: Z across, the radius up,
   the profile's heights being radii and the tool its nose circle;
-* :class:`StockView` — the widget: zoom, pan, fit, the view, the overlay switch.
+* :class:`StockView` — the widget: zoom, pan, fit, the view, the overlay switch; its cells are
+  made by :class:`~hmi.widgets.half_blocks.HalfBlockPicture`.
 """
 
 from __future__ import annotations
@@ -21,13 +22,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from rich.style import Style
-from rich.text import Span, Text
+from rich.text import Text
 from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
 
 from hmi.i18n import N_, _, reason_text
+from hmi.widgets.half_blocks import HalfBlockPicture
 from hmi.widgets.path_layers import PathLayerCache, Viewport, path_layers, segment_pixels, to_pixels
 from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
 
@@ -254,47 +255,11 @@ def _draw_tool(image: np.ndarray, picture: StockPicture, view: str, port: Viewpo
     _segments(image, port, corners, np.roll(corners, -1, axis=0), TOOL)
 
 
-_CELL_STYLES: dict[bytes, Style] = {}
-"""The style of every pair of pixel colours met so far (upper RGB, lower RGB), shared by all
-views: a picture has a few thousand cells but far fewer colour pairs, and most of them come
-back in the next picture."""
-MAX_CELL_STYLES = 65_536
-
-
-def _cell_style(pair: np.ndarray) -> Style:
-    key = pair.tobytes()
-    style = _CELL_STYLES.get(key)
-    if style is None:
-        if len(_CELL_STYLES) >= MAX_CELL_STYLES:
-            _CELL_STYLES.clear()
-        r, g, b, r2, g2, b2 = pair.tolist()
-        style = _CELL_STYLES[key] = Style(color=f"rgb({r},{g},{b})", bgcolor=f"rgb({r2},{g2},{b2})")
-    return style
-
-
-def pixels_to_text(image: np.ndarray) -> Text:
-    """Half-block cells: the upper pixel as the foreground of ``▀``, the lower as its background;
-    a run of equal cells in a row is one span."""
-    height_px, width_px = image.shape[0] - image.shape[0] % 2, image.shape[1]
-    rows = height_px // 2
-    if rows == 0 or width_px == 0:
-        return Text()
-    pairs = np.concatenate([image[0:height_px:2], image[1:height_px:2]], axis=2)  # rows × width × 6
-    change = np.any(pairs[:, 1:] != pairs[:, :-1], axis=2)
-    spans: list[Span] = []
-    for row in range(rows):
-        bounds = np.concatenate(([0], np.flatnonzero(change[row]) + 1, [width_px])).tolist()
-        offset = row * (width_px + 1)  # each row and its line break
-        cells = pairs[row]
-        for begin, end in zip(bounds[:-1], bounds[1:]):
-            spans.append(Span(offset + begin, offset + end, _cell_style(cells[begin])))
-    return Text("\n".join(["▀" * width_px] * rows), spans=spans)
-
-
 class StockView(Widget, can_focus=True):
     """The blank being cut: top view or sections, with zoom, pan, fit and the path overlay."""
 
     BINDINGS = [*VIEW_BINDINGS, Binding("o", "overlay", "Path", show=False)]
+    ALLOW_SELECT = False  # a picture: no text to select (its cells carry no offsets for it)
 
     view: reactive[str] = reactive("XY")
     overlay: reactive[bool] = reactive(True)
@@ -304,6 +269,7 @@ class StockView(Widget, can_focus=True):
     def __init__(self, **kwargs: object) -> None:
         super().__init__(**kwargs)  # type: ignore[arg-type]
         self.picture = StockPicture()
+        self.auto_links = False  # a picture has no links: Textual need not look through its thousands of segments
         self._path_layers = PathLayerCache()
         self._zoom_steps = 0
         self._pan_px = (0, 0)
@@ -356,7 +322,7 @@ class StockView(Widget, can_focus=True):
         return Viewport(port.centre_h + self._pan_px[0] * width_px / 4.0 * scale,
                         port.centre_v + self._pan_px[1] * height_px / 4.0 * scale, scale)
 
-    def render(self) -> Text:
+    def render(self) -> Text | HalfBlockPicture:
         """Caption line, then the picture."""
         width = max(self.size.width, 1)
         rows = max(self.size.height - 1, 1)
@@ -368,9 +334,7 @@ class StockView(Widget, can_focus=True):
         width_px, height_px = width, rows * 2
         image = render_pixels(self.picture, self.shown_view, self.viewport(width_px, height_px), width_px, height_px,
                               self.overlay, self.highlight_line, self._path_layers)
-        caption.append("\n")
-        caption.append_text(pixels_to_text(image))
-        return caption
+        return HalfBlockPicture(caption, image)
 
     def watch_view(self) -> None:
         self.refresh()
