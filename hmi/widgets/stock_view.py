@@ -28,6 +28,7 @@ from textual.reactive import reactive
 from textual.widget import Widget
 
 from hmi.i18n import N_, _, reason_text
+from hmi.widgets.chord_extents import ChordExtents, chord_extents
 from hmi.widgets.half_blocks import HalfBlockPicture
 from hmi.widgets.path_layers import PathLayerCache, Viewport, path_layers, segment_pixels, to_pixels
 from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
@@ -77,6 +78,7 @@ class StockPicture:
     outline_xy: np.ndarray | None = None  # the blank seen from above (corners X, Y); None: its extents
     cut_top: np.ndarray | None = None  # the cursor block's cut: heights before it, NaN: not cut
     cut_bottom: np.ndarray | None = None  # … and after it
+    extents_table: ChordExtents | None = None  # the extents of the first n of ``ends`` (None: go through them)
 
     @property
     def empty(self) -> bool:
@@ -88,7 +90,11 @@ class StockPicture:
         h, v = VIEW_AXES[view]
         box = [(self.blank_x_mm[0], self.blank_y_mm[0], self.z_mm[0]),
                (self.blank_x_mm[1], self.blank_y_mm[1], self.z_mm[1])]
-        points = np.vstack([np.array(box), self.ends[: self.shown_chords]]) if len(self.ends) else np.array(box)
+        if self.extents_table is not None and self.extents_table.ends is self.ends:
+            drawn = self.extents_table.of_first(self.shown_chords)
+            points = np.vstack([np.array(box), *drawn]) if drawn is not None else np.array(box)
+        else:
+            points = np.vstack([np.array(box), self.ends[: self.shown_chords]]) if len(self.ends) else np.array(box)
         return (float(points[:, h].min()), float(points[:, h].max()),
                 float(points[:, v].min()), float(points[:, v].max()))
 
@@ -111,7 +117,7 @@ def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
         resolution_mm=zmap.resolution_mm, z_mm=extent_z, blank_x_mm=extent_x, blank_y_mm=extent_y,
         starts=starts, ends=ends, rapid=path.rapid, lines=path.lines, shown_chords=chords, tool_mm=tool,
         tool_radius_mm=tool_radius, turning=simulation.turning,
-        outline_xy=None if simulation.turning else blank.outline_xy())
+        outline_xy=None if simulation.turning else blank.outline_xy(), extents_table=chord_extents(ends))
 
 
 def material_events(simulation: Any) -> str:
@@ -233,7 +239,7 @@ def _draw_path(image: np.ndarray, picture: StockPicture, view: str, port: Viewpo
         layers = path_layers(picture.starts, picture.ends, picture.rapid, (h, v), port, width_px, height_px)
     layers.paint(image, count, FEED, RAPID)
     if highlight_line is not None:
-        mine = picture.lines[: len(picture.starts)] == highlight_line
+        mine = np.flatnonzero(picture.lines[: len(picture.starts)] == highlight_line)
         _segments(image, port, picture.starts[mine][:, [h, v]], picture.ends[mine][:, [h, v]], HIGHLIGHT)
 
 

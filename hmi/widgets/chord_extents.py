@@ -1,0 +1,64 @@
+"""The extents of a path's first n chords for any n, worked out once per path.
+
+A scrub step shows the same path up to another chord, and the material view fits the blank and
+the path drawn so far: going through the chord ends again costs milliseconds per picture on a
+long program. :class:`ChordExtents` keeps per axis the least and greatest end of every whole
+block of chords from the start, so only the one block cut is gone through again.
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass
+
+import numpy as np
+
+BLOCK_CHORDS = 1024
+"""Chords per block of the table."""
+
+
+@dataclass(frozen=True)
+class ChordExtents:
+    """A path's chord ends (rows x, y, z in mm) and the table of their extents."""
+
+    ends: np.ndarray
+    block_low: np.ndarray  # row k: per axis the least end of chords 0 … (k + 1)·BLOCK_CHORDS − 1
+    block_high: np.ndarray  # … and the greatest
+
+    @classmethod
+    def of(cls, ends: np.ndarray) -> ChordExtents:
+        """The table of the chords ending at ``ends``."""
+        whole = len(ends) // BLOCK_CHORDS * BLOCK_CHORDS
+        blocks = ends[:whole].reshape(-1, BLOCK_CHORDS, ends.shape[1])
+        return cls(ends, np.minimum.accumulate(blocks.min(axis=1), axis=0),
+                   np.maximum.accumulate(blocks.max(axis=1), axis=0))
+
+    def of_first(self, count: int) -> tuple[np.ndarray, np.ndarray] | None:
+        """Per axis the least and the greatest end of the first ``count`` chords (None for none)."""
+        count = min(max(count, 0), len(self.ends))
+        if count == 0:
+            return None
+        whole = count // BLOCK_CHORDS
+        rest = self.ends[whole * BLOCK_CHORDS:count]
+        lows = [rest.min(axis=0)] if len(rest) else []
+        highs = [rest.max(axis=0)] if len(rest) else []
+        if whole:
+            lows.append(self.block_low[whole - 1])
+            highs.append(self.block_high[whole - 1])
+        return np.min(lows, axis=0), np.max(highs, axis=0)
+
+
+_last: list[ChordExtents] = []
+_last_lock = threading.Lock()  # pictures are made in worker threads and in the screen's
+
+
+def chord_extents(ends: np.ndarray) -> ChordExtents:
+    """The table of the chords ending at ``ends``: the one made last when it is the same array,
+    else a new one (a screen shows one path at a time, step after step)."""
+    with _last_lock:
+        if _last and _last[0].ends is ends:
+            return _last[0]
+    extents = ChordExtents.of(ends)
+    with _last_lock:
+        _last[:] = [extents]
+    return extents
