@@ -115,9 +115,9 @@ class ChildJob:
         self._reap()
 
     def _reap(self) -> int:
-        self.ended = True
         self._receiver.close()
         _, status = os.waitpid(self.pid, 0)
+        self.ended = True
         return status
 
 

@@ -7,6 +7,7 @@ L62525-62558) so that it runs on a kernel without tool data.
 
 from __future__ import annotations
 
+import asyncio
 import math
 import os
 from dataclasses import replace
@@ -201,6 +202,31 @@ async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_d
     for job in jobs:  # no process left behind: each was waited for
         with pytest.raises(ChildProcessError):
             os.waitpid(job.pid, os.WNOHANG)
+
+
+async def test_leaving_the_panel_stops_a_simulation_still_calculating(data_dir: Path, monkeypatch) -> None:
+    """The panel ends (Ctrl+Q, the terminal closed) while a long simulation calculates: its child
+    process is stopped and waited for with it, not left running on its own."""
+    (data_dir / "MPF" / "DEMO.MPF").write_text(LONG_DWELL)
+    jobs = _record_jobs(monkeypatch)
+    monkeypatch.setattr(program_runs, "PROGRESS_EVERY_S", 0.0)
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f3")
+        await settle(pilot)
+        await pilot.press("f5")
+        screen = pilot.app.screen
+        for _ in range(1000):
+            if "blocks" in screen.stock.status_text:
+                break
+            await pilot.pause()
+        assert "calculating … " in screen.stock.status_text and len(jobs) == 1
+    # the editor's worker threads run in the loop's default executor; at the interpreter's exit
+    # Python joins them, here the test does (each worker ends within one poll of its child)
+    await asyncio.get_running_loop().shutdown_default_executor()
+    assert jobs[0].ended and jobs[0].result is None
+    with pytest.raises(ChildProcessError):
+        os.waitpid(jobs[0].pid, os.WNOHANG)
 
 
 async def test_workers_do_not_describe_themselves_by_their_arguments(slots_dir: Path, monkeypatch) -> None:
