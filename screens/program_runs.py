@@ -324,7 +324,7 @@ class CheckAndSimulation:
         self._material = simulation
         self._scrubber = Scrubber(simulation)
         self._scrub_lock = threading.Lock()
-        self.toolpath.set_pieces(pieces_of(simulation), path_note(simulation))
+        self.toolpath.set_pieces_later(lambda: pieces_of(simulation), path_note(simulation))
         self._material_blocks = simulation.blocks_in_order()
         self._material_step = len(self._material_blocks) - 1
         self._shown_note = material_note(simulation)

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterable, Sequence
+from typing import Callable, Iterable, Sequence
 
 from rich.style import Style
 from rich.text import Text
@@ -329,6 +329,7 @@ class ToolpathView(Widget, can_focus=True):
     def __init__(self, pieces: Sequence[PathPiece] = (), **kwargs: object) -> None:
         super().__init__(**kwargs)  # type: ignore[arg-type]
         self._pieces: list[PathPiece] = list(pieces)
+        self._make_pieces: Callable[[], Iterable[PathPiece]] | None = None
         self._by_line: dict[int, list[PathPiece]] = {}
         self._base: tuple[tuple, BrailleCanvas, Viewport] | None = None
         self._index_lines()
@@ -339,12 +340,27 @@ class ToolpathView(Widget, can_focus=True):
 
     @property
     def pieces(self) -> list[PathPiece]:
-        """The toolpath shown."""
+        """The toolpath shown (one given to :meth:`set_pieces_later` is built now if it was not yet)."""
+        if self._make_pieces is not None:
+            self._pieces = list(self._make_pieces())
+            self._make_pieces = None
+            self._index_lines()
         return self._pieces
 
     def set_pieces(self, pieces: Sequence[PathPiece], status_text: str = "") -> None:
         """Show a new toolpath (fitted to the window)."""
         self._pieces = list(pieces)
+        self._make_pieces = None
+        self._index_lines()
+        self.status_text = status_text
+        self.action_fit()
+
+    def set_pieces_later(self, make: Callable[[], Iterable[PathPiece]], status_text: str = "") -> None:
+        """Show the toolpath ``make()`` returns, built when it is first drawn or asked for: the
+        hundreds of thousands of pieces of a long simulation cost the screen a second or more, and
+        the editor shows the material view unless the operator switches Material off."""
+        self._pieces = []
+        self._make_pieces = make
         self._index_lines()
         self.status_text = status_text
         self.action_fit()
@@ -389,10 +405,11 @@ class ToolpathView(Widget, can_focus=True):
         The path without the current block is drawn once per size, view, zoom and
         pan and kept; a new current block only redraws its own pieces on a copy.
         """
-        key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(self._pieces))
+        pieces = self.pieces
+        key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(pieces))
         if self._base is None or self._base[0] != key:
             canvas = BrailleCanvas(width, height)
-            fitted = fit_viewport(self._pieces, self.view, canvas)
+            fitted = fit_viewport(pieces, self.view, canvas)
             span_h = fitted.mm_per_dot * canvas.dot_width
             span_v = fitted.mm_per_dot * canvas.dot_height
             viewport = Viewport(
@@ -400,7 +417,7 @@ class ToolpathView(Widget, can_focus=True):
                 fitted.center_v + self._pan_v * span_v,
                 fitted.mm_per_dot / self._zoom,
             )
-            draw_path(self._pieces, self.view, viewport, canvas)
+            draw_path(pieces, self.view, viewport, canvas)
             self._base = (key, canvas, viewport)
         _, base, viewport = self._base
         line = self.current_line

@@ -163,7 +163,7 @@ class Simulation:
             return []
         change = np.flatnonzero(lines[1:] != lines[:-1]) + 1
         ends = np.concatenate((change, [len(lines)]))
-        return [(int(lines[end - 1]), int(end)) for end in ends.tolist()]
+        return list(zip(lines[ends - 1].tolist(), ends.tolist()))
 
     @property
     def turning(self) -> bool:
