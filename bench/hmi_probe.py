@@ -342,12 +342,17 @@ async def _keys_while_recalculating(app: Any, screen: Any, frames: list[tuple[fl
     return latency
 
 
+NEW_ZOOM_LEVELS = 8
+"""Zoom + presses to levels the material view has not shown yet (``zoom_new_level``)."""
+
+
 async def measure_simulation(program: Path, presses: int = 20) -> dict[str, float | str]:
     """Open ``program`` in the editor, simulate it (Simulation softkey) and measure what the
     operator waits for: the whole simulation (key to the cut blank shown), then the redraw after
     a scrub step (Block ◀ / Block ▶, the blank re-cut to that block in a worker thread) and
-    after a zoom (Zoom + / Zoom -), key to frame, ``presses`` of each kind; then the area keys'
-    latency while the simulation is calculated again (Recalculate).
+    after a zoom (Zoom + / Zoom -), key to frame, ``presses`` of each kind, a zoom to a level not
+    shown before (``NEW_ZOOM_LEVELS`` of them) and a pan (arrow keys on the view, ``presses``);
+    then the area keys' latency while the simulation is calculated again (Recalculate).
 
     The tool is the material benchmark's (T1 D1: ball end mill, 8 mm).
     """
@@ -390,13 +395,31 @@ async def measure_simulation(program: Path, presses: int = 20) -> dict[str, floa
                 zooms.append(await _key_to_redraw(app, ("f4", "f5")[k % 2], stock,
                                                   lambda: stock.zoom != zoom, frames))
                 await pilot.pause()
+            # The zooms above go back and forth between two levels, whose overlay the view keeps;
+            # levels not seen before and pans (a new viewport each) work the overlay out anew.
+            new_levels: list[float] = []
+            for k in range(NEW_ZOOM_LEVELS + 1):
+                zoom = stock.zoom
+                moment = await _key_to_redraw(app, "f4", stock, lambda: stock.zoom != zoom, frames)
+                if k:  # the first goes to the level seen above
+                    new_levels.append(moment)
+                await pilot.pause()
+            stock.action_fit()
+            await pilot.pause()
+            pans: list[float] = []
+            for k in range(presses):
+                port = stock.viewport(stock.size.width, 2 * (stock.size.height - 1))
+                pans.append(await _key_to_redraw(app, ("right", "down")[k % 2], stock,
+                                                 lambda: stock.viewport(stock.size.width,
+                                                                        2 * (stock.size.height - 1)) != port, frames))
+                await pilot.pause()
             keys = await _keys_while_recalculating(app, screen, frames)
     out["keys_during_simulation"] = float(len(keys))
     if keys:
         out["simulation_key_ms_median"] = statistics.median(keys) * 1000.0
         out["simulation_key_ms_p95"] = _percentile(keys, 0.95) * 1000.0
     out["scrub_first_ms"] = steps[0] * 1000.0  # the first step back from the end of the simulation
-    for label, figures in (("scrub_step", steps), ("zoom", zooms)):
+    for label, figures in (("scrub_step", steps), ("zoom", zooms), ("zoom_new_level", new_levels), ("pan", pans)):
         out[f"{label}_ms_median"] = statistics.median(figures) * 1000.0
         out[f"{label}_ms_p95"] = _percentile(figures, 0.95) * 1000.0
     out["peak_rss_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0

@@ -219,7 +219,10 @@ def simulation_view_rows(folder: Path, notes: list[str]) -> list[Row]:
         return []
     rows = [Row(f"HMI editor: Simulation of {program.stem} ({int(figures['simulation_blocks']):,} blocks), "
                 "key to the cut blank", f"{figures['simulation_s']:,.1f} s", "", "", "", "")]
-    for label, key in (("scrub step (Block ◀ / ▶)", "scrub_step"), ("zoom (Zoom + / -)", "zoom")):
+    for label, key in (("scrub step (Block ◀ / ▶)", "scrub_step"), ("zoom (Zoom + / -)", "zoom"),
+                       ("zoom to a level not shown before", "zoom_new_level"), ("pan (arrow keys)", "pan")):
+        if f"{key}_ms_p95" not in figures:
+            continue
         p95 = float(figures[f"{key}_ms_p95"])
         first = f"first step {figures['scrub_first_ms']:.0f} ms" if key == "scrub_step" else ""
         rows.append(Row(f"  redraw after a {label}, key to frame",
