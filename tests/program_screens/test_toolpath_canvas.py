@@ -4,8 +4,12 @@ from __future__ import annotations
 
 import math
 
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from nck.canon import Motion, Source
-from hmi.widgets.toolpath import BrailleCanvas, draw_path, fit_viewport, path_from_motions
+from hmi.widgets import toolpath
+from hmi.widgets.toolpath import VIEWS, BrailleCanvas, PathPiece, Viewport, draw_path, fit_viewport, path_from_motions
 
 
 def motion(kind: str, line: int, x: float, y: float, z: float = 0.0, start=None, center=None) -> Motion:
@@ -106,3 +110,66 @@ def test_view_marks_the_current_block_over_the_kept_drawing() -> None:
     assert "current" in kinds(marked)
     view.current_line = None
     assert "current" not in kinds(view.render_canvas(40, 12)[0])
+
+
+def _drawn_piece_by_piece(pieces, view, viewport, canvas, current_line=None) -> None:
+    """The reference: every piece through BrailleCanvas.line in turn (the drawing before arrays)."""
+    h_index, v_index, _ = VIEWS[view]
+
+    def to_dots(point):
+        return ((point[h_index] - viewport.center_h) / viewport.mm_per_dot + canvas.dot_width / 2,
+                canvas.dot_height / 2 - (point[v_index] - viewport.center_v) / viewport.mm_per_dot)
+
+    ox, oy = to_dots((0.0, 0.0, 0.0))
+    canvas.line(ox - 3, oy, ox + 3, oy, "origin")
+    canvas.line(ox, oy - 3, ox, oy + 3, "origin")
+    for piece in pieces:
+        kind = "current" if current_line is not None and piece.line == current_line else (
+            "rapid" if piece.rapid else "feed")
+        canvas.line(*to_dots(piece.start), *to_dots(piece.end), kind, dashed=piece.rapid)
+
+
+coordinate = st.one_of(st.floats(-60.0, 60.0), st.sampled_from([0.0, 0.5, -0.5, 1e9, -1e9]))
+point = st.tuples(coordinate, coordinate, coordinate)
+piece_strategy = st.builds(PathPiece, point, point, st.booleans(), st.integers(1, 4))
+
+
+@settings(max_examples=300, deadline=None)
+@given(pieces=st.lists(piece_strategy, max_size=40), view=st.sampled_from(["XY", "XZ", "YZ"]),
+       center=st.tuples(st.floats(-30.0, 30.0), st.floats(-30.0, 30.0)),
+       mm_per_dot=st.sampled_from([0.25, 0.5, 1.0, 3.7]), size=st.tuples(st.integers(1, 30), st.integers(1, 9)),
+       current_line=st.one_of(st.none(), st.integers(1, 4)), batch=st.sampled_from([1, 7, 1 << 20]))
+def test_the_path_is_drawn_as_piece_by_piece(pieces, view, center, mm_per_dot, size, current_line, batch) -> None:
+    """draw_path sets the same dots and cell kinds as drawing each piece with BrailleCanvas.line
+    (rapid dashed, the current block's kind, pieces far outside clipped, any batch size)."""
+    viewport = Viewport(center[0], center[1], mm_per_dot)
+    expected, drawn = BrailleCanvas(*size), BrailleCanvas(*size)
+    _drawn_piece_by_piece(pieces, view, viewport, expected, current_line)
+    saved = toolpath.DOTS_PER_BATCH
+    toolpath.DOTS_PER_BATCH = batch
+    try:
+        draw_path(pieces, view, viewport, drawn, current_line)
+    finally:
+        toolpath.DOTS_PER_BATCH = saved
+    assert drawn.rows() == expected.rows()
+
+
+def test_pieces_along_the_canvas_edges_are_drawn_as_piece_by_piece() -> None:
+    """Pieces just inside and just outside each edge of the canvas: a dot rounds onto the canvas
+    from up to half a dot outside, so such pieces are drawn, and farther ones are not."""
+    canvas_size = (12, 4)  # 24 × 16 dots; with 1 mm per dot and the centre at 0 the dots span ±12, ±8 mm
+    viewport = Viewport(0.0, 0.0, 1.0)
+    offsets = (-1.6, -1.4, -0.6, -0.5, -0.4, 0.0, 0.4)
+    pieces = []
+    for offset in offsets:
+        left, right = -12.0 + offset, 12.0 - 1.0 - offset  # dot x = mm + 12
+        top, bottom = 8.0 - offset, -8.0 + 1.0 + offset  # dot y = 8 - mm
+        pieces += [PathPiece((left, -7.0, 0.0), (left, 7.0, 0.0), False, 1),
+                   PathPiece((right, -7.0, 0.0), (right, 7.0, 0.0), True, 2),
+                   PathPiece((-11.0, top, 0.0), (11.0, top, 0.0), False, 3),
+                   PathPiece((-11.0, bottom, 0.0), (11.0, bottom, 0.0), False, 4)]
+    for piece in pieces:
+        expected, drawn = BrailleCanvas(*canvas_size), BrailleCanvas(*canvas_size)
+        _drawn_piece_by_piece([piece], "XY", viewport, expected)
+        draw_path([piece], "XY", viewport, drawn)
+        assert drawn.rows() == expected.rows(), piece
