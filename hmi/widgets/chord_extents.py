@@ -9,6 +9,7 @@ block of chords from the start, so only the one block cut is gone through again.
 from __future__ import annotations
 
 import threading
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,17 +49,19 @@ class ChordExtents:
         return np.min(lows, axis=0), np.max(highs, axis=0)
 
 
-_last: list[ChordExtents] = []
+_last: list[weakref.ref[ChordExtents]] = []  # the table made last, while a picture holds it
 _last_lock = threading.Lock()  # pictures are made in worker threads and in the screen's
 
 
 def chord_extents(ends: np.ndarray) -> ChordExtents:
-    """The table of the chords ending at ``ends``: the one made last when it is the same array,
-    else a new one (a screen shows one path at a time, step after step)."""
+    """The table of the chords ending at ``ends``: the one made last when it is the same array
+    (and a picture still holds it), else a new one (a screen shows one path at a time, step
+    after step)."""
     with _last_lock:
-        if _last and _last[0].ends is ends:
-            return _last[0]
+        last = _last[0]() if _last else None
+    if last is not None and last.ends is ends:
+        return last
     extents = ChordExtents.of(ends)
     with _last_lock:
-        _last[:] = [extents]
+        _last[:] = [weakref.ref(extents)]
     return extents

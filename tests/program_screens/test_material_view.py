@@ -376,6 +376,11 @@ async def test_lathe_simulation_turns_the_bar_without_false_rapid_cuts(shaft_dir
         await pilot.press("f2", "f1")  # the view softkeys leave a lathe's half section alone
         await pilot.pause()
         assert screen.stock.shown_view == "XZ"
+        # A step back draws the same path: the same half-section arrays, whose overlay the view keeps.
+        await pilot.press("shift+f6")
+        await settle(pilot)
+        assert screen.stock.picture is not picture and screen.stock.picture.shown_chords < picture.shown_chords
+        assert screen.stock.picture.starts is picture.starts and screen.stock.picture.ends is picture.ends
 
 
 def test_half_section_draws_material_up_to_the_radius() -> None:
