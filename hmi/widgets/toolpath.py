@@ -280,27 +280,51 @@ class Viewport:
     mm_per_dot: float
 
 
-def fit_viewport(pieces: Sequence[PathPiece], view: str, canvas: BrailleCanvas) -> Viewport:
+@dataclass(frozen=True)
+class PieceArrays:
+    """The pieces of a path as arrays (what :func:`draw_path` works on): starts and ends
+    (n × 3, WCS), rapid flags and source lines."""
+
+    starts: np.ndarray
+    ends: np.ndarray
+    rapid: np.ndarray
+    lines: np.ndarray
+
+    @classmethod
+    def of(cls, pieces: Sequence[PathPiece]) -> PieceArrays:
+        """The arrays of ``pieces`` (made once per path: for 100,000s of pieces it takes a while)."""
+        return cls(np.array([piece.start for piece in pieces], dtype=np.float64).reshape(-1, 3),
+                   np.array([piece.end for piece in pieces], dtype=np.float64).reshape(-1, 3),
+                   np.array([piece.rapid for piece in pieces], dtype=bool),
+                   np.array([piece.line for piece in pieces], dtype=np.int64))
+
+
+def fit_viewport(pieces: Sequence[PathPiece] | PieceArrays, view: str, canvas: BrailleCanvas) -> Viewport:
     """The viewport that shows every piece of the path with a small margin."""
     h_index, v_index, _ = VIEWS[view]
-    hs = [p[h_index] for piece in pieces for p in (piece.start, piece.end)] or [0.0]
-    vs = [p[v_index] for piece in pieces for p in (piece.start, piece.end)] or [0.0]
-    span_h = max(hs) - min(hs)
-    span_v = max(vs) - min(vs)
+    arrays = pieces if isinstance(pieces, PieceArrays) else PieceArrays.of(pieces)
+    if len(arrays.rapid):
+        ends = np.concatenate((arrays.starts, arrays.ends))
+        low_h, high_h = float(ends[:, h_index].min()), float(ends[:, h_index].max())
+        low_v, high_v = float(ends[:, v_index].min()), float(ends[:, v_index].max())
+    else:
+        low_h = high_h = low_v = high_v = 0.0
+    span_h = high_h - low_h
+    span_v = high_v - low_v
     # a terminal cell is about twice as high as wide: 2 dots across ≈ 4 dots down, so dots are square
     mm_per_dot = max(span_h / max(canvas.dot_width - 4, 1), span_v / max(canvas.dot_height - 4, 1), 1e-3)
-    return Viewport((max(hs) + min(hs)) / 2, (max(vs) + min(vs)) / 2, mm_per_dot * 1.05)
+    return Viewport((high_h + low_h) / 2, (high_v + low_v) / 2, mm_per_dot * 1.05)
 
 
 def draw_path(
-    pieces: Sequence[PathPiece], view: str, viewport: Viewport, canvas: BrailleCanvas,
+    pieces: Sequence[PathPiece] | PieceArrays, view: str, viewport: Viewport, canvas: BrailleCanvas,
     current_line: int | None = None, origin: bool = True,
 ) -> None:
     """Project ``pieces`` into ``canvas`` (rapid dashed, current block marked, origin cross).
 
     The same dots as :meth:`BrailleCanvas.line` for each piece in turn (every step of each piece
     worked out with the same arithmetic, as arrays): a long program's hundreds of thousands of
-    pieces take a fraction of a second, not seconds."""
+    pieces take a fraction of a second, not seconds (less with their :class:`PieceArrays` kept)."""
     h_index, v_index, _ = VIEWS[view]
     half_w, half_h = canvas.dot_width / 2, canvas.dot_height / 2
     if origin:
@@ -308,15 +332,11 @@ def draw_path(
         oy = half_h - (0.0 - viewport.center_v) / viewport.mm_per_dot
         canvas.line(ox - 3, oy, ox + 3, oy, "origin")
         canvas.line(ox, oy - 3, ox, oy + 3, "origin")
-    if not pieces:
+    arrays = pieces if isinstance(pieces, PieceArrays) else PieceArrays.of(pieces)
+    if not len(arrays.rapid):
         return
-    starts = np.array([piece.start for piece in pieces], dtype=np.float64)
-    ends = np.array([piece.end for piece in pieces], dtype=np.float64)
-    rapid = np.array([piece.rapid for piece in pieces], dtype=bool)
-    if current_line is not None:
-        current = np.array([piece.line == current_line for piece in pieces], dtype=bool)
-    else:
-        current = np.zeros(len(pieces), dtype=bool)
+    starts, ends, rapid = arrays.starts, arrays.ends, arrays.rapid
+    current = arrays.lines == current_line if current_line is not None else np.zeros(len(rapid), dtype=bool)
     x0 = (starts[:, h_index] - viewport.center_h) / viewport.mm_per_dot + half_w
     y0 = half_h - (starts[:, v_index] - viewport.center_v) / viewport.mm_per_dot
     x1 = (ends[:, h_index] - viewport.center_h) / viewport.mm_per_dot + half_w
@@ -408,6 +428,7 @@ class ToolpathView(Widget, can_focus=True):
         self._by_line: dict[int, list[PathPiece]] = {}
         self._base: tuple[tuple, BrailleCanvas, Viewport] | None = None
         self._fitted: tuple[tuple, Viewport] | None = None
+        self._arrays: tuple[list[PathPiece], PieceArrays] | None = None  # of the pieces drawn
         self._index_lines()
         self._zoom = 1.0
         self._pan_h = 0.0
@@ -486,9 +507,11 @@ class ToolpathView(Widget, can_focus=True):
         key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(pieces))
         if self._base is None or self._base[0] != key:
             canvas = BrailleCanvas(width, height)
+            if self._arrays is None or self._arrays[0] is not pieces:
+                self._arrays = (pieces, PieceArrays.of(pieces))
             fit_key = (width, height, self.view, id(pieces))
             if self._fitted is None or self._fitted[0] != fit_key:  # zoom and pan keep the fit
-                self._fitted = (fit_key, fit_viewport(pieces, self.view, canvas))
+                self._fitted = (fit_key, fit_viewport(self._arrays[1], self.view, canvas))
             fitted = self._fitted[1]
             span_h = fitted.mm_per_dot * canvas.dot_width
             span_v = fitted.mm_per_dot * canvas.dot_height
@@ -497,7 +520,7 @@ class ToolpathView(Widget, can_focus=True):
                 fitted.center_v + self._pan_v * span_v,
                 fitted.mm_per_dot / self._zoom,
             )
-            draw_path(pieces, self.view, viewport, canvas)
+            draw_path(self._arrays[1], self.view, viewport, canvas)
             self._base = (key, canvas, viewport)
         _, base, viewport = self._base
         line = self.current_line

@@ -173,3 +173,14 @@ def test_pieces_along_the_canvas_edges_are_drawn_as_piece_by_piece() -> None:
         _drawn_piece_by_piece([piece], "XY", viewport, expected)
         draw_path([piece], "XY", viewport, drawn)
         assert drawn.rows() == expected.rows(), piece
+
+
+def test_fit_viewport_by_hand() -> None:
+    """Pieces spanning X 0…10 and Y −4…20 on 40 × 12 cells (80 × 48 dots, two left free on each
+    side): the larger of 10/76 and 24/44 mm per dot, 5 % margin, centred on the extents."""
+    pieces = [PathPiece((0.0, -4.0, 1.0), (10.0, 3.0, 1.0), False, 1),
+              PathPiece((10.0, 3.0, 1.0), (2.0, 20.0, -5.0), True, 2)]
+    viewport = fit_viewport(pieces, "XY", BrailleCanvas(40, 12))
+    assert viewport.center_h == 5.0 and viewport.center_v == 8.0
+    assert math.isclose(viewport.mm_per_dot, 24.0 / 44.0 * 1.05)
+    assert fit_viewport([], "XY", BrailleCanvas(40, 12)) == Viewport(0.0, 0.0, 1e-3 * 1.05)
