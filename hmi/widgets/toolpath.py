@@ -355,7 +355,7 @@ def draw_path(
         canvas.line(float(x0[index]), float(y0[index]), float(x1[index]), float(y1[index]), kind,
                     dashed=bool(rapid[index]))
     near = np.flatnonzero(finite & ~far & ~outside)
-    steps = (np.maximum(np.abs(x1 - x0), np.abs(y1 - y0))[near]).astype(np.int64) + 1
+    steps = np.maximum(np.abs(x1[near] - x0[near]), np.abs(y1[near] - y0[near])).astype(np.int64) + 1
     dots = steps + 1  # step 0 … steps
     batch_ends = np.searchsorted(np.cumsum(dots), np.arange(DOTS_PER_BATCH, int(dots.sum()) + DOTS_PER_BATCH,
                                                              DOTS_PER_BATCH), side="right")

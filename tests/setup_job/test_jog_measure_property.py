@@ -7,16 +7,25 @@ the face without switching (its trigger is on the face's plane, it stops inside 
 Hand values: probe T1 (type 710, length 150 to the ball centre, ball radius 2); the blank a
 60 × 40 × 30 box whose low corner is drawn; the probe starts ``gap`` outside the face at the
 face's middle (Z: above the top), ball centre at Z −230 for the side faces.
+
+Two conditions the property needs, found by ``make fuzz`` (each a correct crash, not a fault of the
+measuring): the probe, loaded at the machine zero (X0 Y0), goes up and down that column before
+it moves over the blank, so a blank over X0 Y0 is in its way; and the approach must be slow enough
+to brake inside the stylus's overtravel (``PROBE_OVERTRAVEL_MM``, 2 mm): braking from v at the
+axis's MD32300 acceleration a takes v²/2a (mill3: Z 2.0 m/s², X and Y 2.5 m/s²), and the stop
+starts a cycle or two after the switch, so the drawn cases keep v²/2a within three quarters of
+the overtravel. What happens beyond it is its own test below.
 """
 
 from __future__ import annotations
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from nck.commands import (Accepted, CycleStart, Jog, SelectIncrement, SelectMachineFunction, SelectMode,
                           SetActualValue, SetMdaProgram, SetOverride)
 from nck.kernel import Nck
+from nck.kernel_contact import PROBE_OVERTRAVEL_MM
 from nck.machine import load_machine
 from nck.ncdata import NcData, ToolEdge
 from nck.queries import ContactEvents, answer, edge_position, z_surface
@@ -99,9 +108,26 @@ CASES = dict(
 )
 
 
+ACCEL_MM_S2 = {"X": 2500.0, "Y": 2500.0, "Z": 2000.0}  # mill3 MD32300 (m/s² × 1000)
+
+
+def brakes_inside_the_overtravel(axis: str, speed_mm_min: float) -> bool:
+    """v²/2a within three quarters of the probe's overtravel (see the module's docstring)."""
+    speed_mm_s = speed_mm_min / 60.0
+    return speed_mm_s ** 2 / (2.0 * ACCEL_MM_S2[axis]) <= 0.75 * PROBE_OVERTRAVEL_MM
+
+
+def clear_of_the_machine_zero(x: float, y: float) -> bool:
+    """The blank's footprint, widened by the ball, leaves the column over X0 Y0 free."""
+    return not (x - BALL_MM - 1.0 < 0.0 < x + SIZE[0] + BALL_MM + 1.0
+                and y - BALL_MM - 1.0 < 0.0 < y + SIZE[1] + BALL_MM + 1.0)
+
+
 def jog_and_measure(x, y, z, face, gap, jog_mm_min, override, increment, setpoint) -> None:
     if jog_mm_min * override / 100.0 < 150.0:
         override = 100.0  # budget: every motion of the draw ends within SIM_BUDGET_S
+    assume(clear_of_the_machine_zero(x, y))
+    assume(brakes_inside_the_overtravel(FACES[face][0], jog_mm_min * override / 100.0))
     nck, blank = kernel((x, y, z), jog_mm_min)
     start_outside(nck, blank, face, gap)
     assert nck.submit(SetOverride("feed", override)) == Accepted()
@@ -124,3 +150,16 @@ def test_jog_to_contact_and_measure_edge_reads_the_true_face(**case) -> None:
 @given(**CASES)
 def test_jog_to_contact_and_measure_edge_fuzz(**case) -> None:
     jog_and_measure(**case)
+
+
+def test_jogging_onto_the_top_too_fast_crashes_the_probe() -> None:
+    """JOG at 6 m/min down onto the top face: braking from 100 mm/s at Z's 2.0 m/s² takes
+    100² / (2 · 2000) = 2.5 mm, more than the stylus's 2 mm overtravel — the probe switches, then
+    the crash alarm 90003 stops the channel (the trainer's crash of a probe driven past it)."""
+    assert not brakes_inside_the_overtravel("Z", 6000.0)
+    nck, blank = kernel((3.0, -100.0, -250.0), 6000.0)
+    start_outside(nck, blank, "top", 9.6)
+    assert nck.submit(SetOverride("feed", 100.0)) == Accepted()
+    jog_to_contact(nck, "Z", -1, None)
+    assert [e.kind for e in answer(nck, ContactEvents())][:2] == ["probe", "crash"]
+    assert [alarm.number for alarm in nck.alarms.active] == [90003]
