@@ -96,7 +96,7 @@ def measure_edge(nck: Nck, blank: Box, face: str, setpoint: float) -> float:
     true_face = {"left": blank.low_mcs[0], "right": blank.high_mcs[0], "front": blank.low_mcs[1],
                  "back": blank.high_mcs[1], "top": blank.high_mcs[2]}[face]
     # with only a translation in force: WCS = MCS - translation (the PRESET frame, G500)
-    return true_face - nck.data.setframe.trans[axis]
+    return true_face - nck.data.setframe.trans.get(axis, 0.0)  # no entry: no translation
 
 
 CASES = dict(
