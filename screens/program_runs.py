@@ -330,11 +330,12 @@ class CheckAndSimulation:
         self._shown_note = material_note(simulation)
         self.stock.set_picture(picture_of(simulation, simulation.zmap, len(simulation.path.starts)),
                                self._shown_note)
-        self.mark_cursor_block()
+        self.mark_cursor_block(ready_step_back=True)
 
-    def mark_cursor_block(self) -> None:
+    def mark_cursor_block(self, *, ready_step_back: bool = False) -> None:
         """The editor's cursor line in the simulation: its path highlighted in both views and, in
-        the material view, the material its block removed."""
+        the material view, the material its block removed (``ready_step_back``: then the blank is
+        cut up to where Block ◀ will need it, see :meth:`_scrub_worker`)."""
         if not self.simulating:
             return
         line = self.editor.cursor_location[0] + 1
@@ -342,15 +343,21 @@ class CheckAndSimulation:
         self._step_line = None  # a step on its way no longer moves the cursor: the operator did
         self._mark_current_block(self.status)
         if self._material is not None:
-            self._scrub_worker(self._material, None, self._material_step, line)
+            self._scrub_worker(self._material, None, self._material_step, line,
+                               self._step_back_start() if ready_step_back else None)
 
     def action_sim_step(self, direction: int) -> None:
         """Block ◀ / Block ▶: show the blank as cut up to the block before / after; the editor
         cursor follows the block shown."""
         self._stop_playing()
-        self._show_block(self._material_step + direction)
+        self._show_block(self._material_step + direction, ready_step_back=direction < 0)
 
-    def _show_block(self, step: int, move_cursor: bool = True) -> None:
+    def _step_back_start(self) -> int:
+        """Where the block before the one shown starts (chords): Block ◀ cuts the blank there first."""
+        step = self._material_step
+        return self._material_blocks[step - 2][1] if step >= 2 else 0
+
+    def _show_block(self, step: int, move_cursor: bool = True, ready_step_back: bool = False) -> None:
         """Show the blank as cut up to block ``step`` (index into the executed blocks); its line
         is marked and the editor cursor goes there together with the new picture
         (:meth:`_show_step`: the key repaints the screen once, not once for the cursor and once
@@ -362,21 +369,35 @@ class CheckAndSimulation:
         line, chords = self._material_blocks[step]
         self._step_pending = True
         self._step_line, self._step_moves_cursor = line, move_cursor
-        self._scrub_worker(self._material, chords, step, line)
+        self._scrub_worker(self._material, chords, step, line, self._step_back_start() if ready_step_back else None)
 
     @work(thread=True, exclusive=True, group="program-material-step", exit_on_error=False,
           description=WORKER_DESCRIPTION)
-    def _scrub_worker(self, simulation: Any, chords: int | None, step: int, line: int) -> None:
+    def _scrub_worker(self, simulation: Any, chords: int | None, step: int, line: int,
+                      ready_at: int | None = None) -> None:
         """The blank after ``chords`` chords (None: the picture shown stays) and the cut of the
-        block of source ``line``, off the key path."""
+        block of source ``line``, off the key path. Then, with ``ready_at``, the blank is cut up
+        to that many chords while the operator looks at the picture: the next Block ◀ starts
+        there instead of re-cutting from the simulation's last copy below it (at the end of a
+        200,000-block plate, up to a few thousand chords)."""
+        worker = get_current_worker()
+
+        def current() -> bool:
+            return not worker.is_cancelled and self._scrubber is not None and self._scrubber.simulation is simulation
+
         with self._scrub_lock:
-            if get_current_worker().is_cancelled or self._scrubber is None or self._scrubber.simulation is not simulation:
+            if not current():
                 return
             cut = self._scrubber.block_cut(line)
             model = self._scrubber.goto(chords) if chords is not None else None
             picture = picture_of(simulation, model, chords) if model is not None and chords is not None else None
-        if not get_current_worker().is_cancelled:
-            self.app.call_from_thread(self._show_step, simulation, picture, cut, step, line)
+        if worker.is_cancelled:
+            return
+        self.app.call_from_thread(self._show_step, simulation, picture, cut, step, line)
+        if ready_at is not None:
+            with self._scrub_lock:
+                if current():
+                    self._scrubber.goto(ready_at)
 
     def _show_step(self, simulation: Any, picture: StockPicture | None, cut: Any, step: int, line: int) -> None:
         if simulation is not self._material or step != self._material_step:

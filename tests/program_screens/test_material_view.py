@@ -267,6 +267,25 @@ async def test_view_keys_singly_and_in_a_burst(slots_dir: Path) -> None:
         assert pilot.app.screen.toolpath.display and not stock.display
 
 
+async def test_the_blank_is_made_ready_for_the_next_step_back(slots_dir: Path) -> None:
+    """While the operator looks at a picture, the blank is cut up to where the next Block ◀
+    starts (the start of the block before the one shown), not left where the last look-up put
+    it; what Block ◀ then shows is the same as without (the test above)."""
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        blocks = screen._material.blocks_in_order()
+        assert screen._scrubber.chords == blocks[-3][1]  # the last block shown: ready for its predecessor
+        await pilot.press("shift+f6")
+        await settle(pilot)
+        assert screen.stock.picture.shown_chords == blocks[-2][1]
+        assert screen._scrubber.chords == blocks[-4][1]
+        await pilot.press("shift+f7")  # forward: nothing made ready
+        await settle(pilot)
+        assert screen.stock.picture.shown_chords == blocks[-1][1] == screen._scrubber.chords
+
+
 async def test_the_toolpath_pieces_are_built_only_when_the_toolpath_view_is_shown(slots_dir: Path,
                                                                                    monkeypatch) -> None:
     """The material view is what the editor shows; the toolpath view's pieces (one Python object
