@@ -18,7 +18,6 @@ foreground and the lower as background), so the pixels are about square. Three l
 from __future__ import annotations
 
 import math
-import weakref
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -100,25 +99,6 @@ class StockPicture:
                 float(points[:, v].min()), float(points[:, v].max()))
 
 
-_last_drawn: list[tuple[bool, list[weakref.ref[np.ndarray]]]] = []
-"""The last path drawn: lathe or not, and its starts, ends, drawn starts and drawn ends (while alive)."""
-
-
-def drawn_path(simulation: Any) -> tuple[np.ndarray, np.ndarray]:
-    """``simulation.drawn_path()``, the arrays of the last call again when it is the same path
-    (the same chord arrays, still alive): a lathe's half section is made anew by every call, and
-    the view keeps its overlay and extents per path arrays, so a scrub step would work them out
-    again."""
-    path = simulation.path
-    if _last_drawn and _last_drawn[0][0] == simulation.turning:
-        starts_of, ends_of, starts, ends = (ref() for ref in _last_drawn[0][1])
-        if starts_of is path.starts and ends_of is path.ends and starts is not None and ends is not None:
-            return starts, ends
-    starts, ends = simulation.drawn_path()
-    _last_drawn[:] = [(simulation.turning, [weakref.ref(array) for array in (path.starts, path.ends, starts, ends)])]
-    return starts, ends
-
-
 def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
     """What the material view shows of ``simulation`` with the blank as ``zmap`` holds it (a
     copy of its heights) and the path drawn up to chord ``chords`` (the tool stands at that
@@ -126,7 +106,7 @@ def picture_of(simulation: Any, zmap: Any, chords: int) -> StockPicture:
     (``simulation.turning``)."""
     path = simulation.path
     tool, tool_radius = simulation.tool_at(chords)
-    starts, ends = drawn_path(simulation)
+    starts, ends = simulation.drawn_path()
     blank = simulation.blank
     if simulation.turning:
         extent_x, extent_y, extent_z = blank.z_mm, (0.0, 0.0), (0.0, blank.diameter_mm / 2.0)

@@ -155,6 +155,8 @@ class Simulation:
     tool_times_s: dict[int, float]
     blocks: int
     checkpoints: Checkpoints | None = None  # heights along the way, kept by the sweep (for scrubbing)
+    _half_section: tuple[np.ndarray, np.ndarray] | None = field(default=None, init=False, repr=False,
+                                                                 compare=False)  # drawn_path() of a lathe, made once
 
     def blocks_in_order(self) -> list[tuple[int, int]]:
         """The executed blocks as (source line, number of chords up to and including it), in order."""
@@ -179,10 +181,13 @@ class Simulation:
 
     def drawn_path(self) -> tuple[np.ndarray, np.ndarray]:
         """The chords' starts and ends as a view draws them: the workpiece coordinates, on a
-        lathe the half section (Z, 0, radius)."""
-        if self.turning:
-            return half_section(self.path.starts), half_section(self.path.ends)
-        return self.path.starts, self.path.ends
+        lathe the half section (Z, 0, radius), made once: the same arrays at every call, so that
+        a view keeping its overlay per path arrays finds them again at each scrub step."""
+        if not self.turning:
+            return self.path.starts, self.path.ends
+        if self._half_section is None:
+            self._half_section = (half_section(self.path.starts), half_section(self.path.ends))
+        return self._half_section
 
     def tool_at(self, chords: int) -> tuple[tuple[float, float, float] | None, float]:
         """Where a view draws the tool after ``chords`` chords, and its radius: the tip (a

@@ -176,24 +176,37 @@ LONG_DWELL = "".join(f"N{10 * k} G4 F99999\n" for k in range(1, 5)) + "N50 M30\n
 time each, many seconds of computing for a run that is not given up."""
 
 
-async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_dir: Path, monkeypatch) -> None:
+@pytest.fixture
+def long_run(data_dir: Path, monkeypatch) -> list:
+    """DEMO.MPF is :data:`LONG_DWELL`, its progress shown at every chance; the simulations' child
+    processes are recorded (returned)."""
+    (data_dir / "MPF" / "DEMO.MPF").write_text(LONG_DWELL)
+    monkeypatch.setattr(program_runs, "PROGRESS_EVERY_S", 0.0)
+    return _record_jobs(monkeypatch)
+
+
+async def start_long_simulation(pilot):
+    """Open DEMO.MPF, Simulation, wait until the progress shows; the program screen."""
+    await pilot.press("alt+n", "f3")
+    await settle(pilot)
+    await pilot.press("f5")
+    screen = pilot.app.screen
+    for _ in range(1000):
+        if "blocks" in screen.stock.status_text:
+            break
+        await pilot.pause()
+    assert "calculating … " in screen.stock.status_text and "blocks" in screen.stock.status_text
+    return screen
+
+
+async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_dir: Path, long_run) -> None:
     """A long simulation says how far it has come; Recalculate twice in a burst and going back to
     the editor drop the runs still calculating (each child process is stopped and waited for)
     instead of leaving them to run on beside the editor."""
-    (data_dir / "MPF" / "DEMO.MPF").write_text(LONG_DWELL)
-    jobs = _record_jobs(monkeypatch)
-    monkeypatch.setattr(program_runs, "PROGRESS_EVERY_S", 0.0)
+    jobs = long_run
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("alt+n", "f3")
-        await settle(pilot)
-        await pilot.press("f5")
-        screen = pilot.app.screen
-        for _ in range(1000):
-            if "blocks" in screen.stock.status_text:
-                break
-            await pilot.pause()
-        assert "calculating … " in screen.stock.status_text and "blocks" in screen.stock.status_text
+        screen = await start_long_simulation(pilot)
         await pilot.press("f7", "f7")  # Recalculate, twice in a burst
         await pilot.press("f8")  # back to the editor
         await settle(pilot)
@@ -205,23 +218,14 @@ async def test_recalculate_and_leaving_give_up_the_runs_still_calculating(data_d
             os.waitpid(job.pid, os.WNOHANG)
 
 
-async def test_leaving_the_panel_stops_a_simulation_still_calculating(data_dir: Path, monkeypatch) -> None:
+async def test_leaving_the_panel_stops_a_simulation_still_calculating(data_dir: Path, long_run) -> None:
     """The panel ends (Ctrl+Q, the terminal closed) while a long simulation calculates: its child
     process is stopped and waited for with it, not left running on its own."""
-    (data_dir / "MPF" / "DEMO.MPF").write_text(LONG_DWELL)
-    jobs = _record_jobs(monkeypatch)
-    monkeypatch.setattr(program_runs, "PROGRESS_EVERY_S", 0.0)
+    jobs = long_run
     app = make_program_app(data_dir)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("alt+n", "f3")
-        await settle(pilot)
-        await pilot.press("f5")
-        screen = pilot.app.screen
-        for _ in range(1000):
-            if "blocks" in screen.stock.status_text:
-                break
-            await pilot.pause()
-        assert "calculating … " in screen.stock.status_text and len(jobs) == 1
+        await start_long_simulation(pilot)
+        assert len(jobs) == 1
     # the editor's worker threads run in the loop's default executor; at the interpreter's exit
     # Python joins them, here the test does (each worker ends within one poll of its child)
     await asyncio.get_running_loop().shutdown_default_executor()

@@ -55,6 +55,16 @@ def test_turned_diameter() -> None:
     assert result.events == []
 
 
+def test_the_half_section_is_made_once() -> None:
+    """A lathe's path as the views draw it (Z across, the radius up: N20 ends at Z −30, radius 18) is
+    the same arrays at every call: the material view keeps its overlay per path arrays and finds
+    them again at each scrub step."""
+    result = turn("N10 G0 X36 Z2\nN20 G1 Z-30 F0.2\n", 0.8)
+    starts, ends = result.drawn_path()
+    assert result.drawn_path()[0] is starts and result.drawn_path()[1] is ends
+    assert ends[-1].tolist() == pytest.approx([-30.0, 0.0, 18.0])  # N20's end Ø36 Z-30 (G40: the programmed point)
+
+
 def test_shoulder() -> None:
     """Ø36 to Z-30, then Ø30 to Z-15 with a face up to Ø36 (nose 0.4, position 3).
 
