@@ -413,11 +413,18 @@ async def measure_simulation(program: Path, presses: int = 20) -> dict[str, floa
                                                  lambda: stock.viewport(stock.size.width,
                                                                         2 * (stock.size.height - 1)) != port, frames))
                 await pilot.pause()
+            # Material off: the toolpath alone, drawn for the first time from the whole path.
+            material_off = await _key_to_redraw(app, "shift+f3", screen.toolpath,
+                                                lambda: not screen.sim_material, frames)
+            await pilot.pause()
+            await pilot.press("shift+f3")
+            await pilot.pause()
             keys = await _keys_while_recalculating(app, screen, frames)
     out["keys_during_simulation"] = float(len(keys))
     if keys:
         out["simulation_key_ms_median"] = statistics.median(keys) * 1000.0
         out["simulation_key_ms_p95"] = _percentile(keys, 0.95) * 1000.0
+    out["material_off_ms"] = material_off * 1000.0
     out["scrub_first_ms"] = steps[0] * 1000.0  # the first step back from the end of the simulation
     for label, figures in (("scrub_step", steps), ("zoom", zooms), ("zoom_new_level", new_levels), ("pan", pans)):
         out[f"{label}_ms_median"] = statistics.median(figures) * 1000.0

@@ -228,6 +228,9 @@ def simulation_view_rows(folder: Path, notes: list[str]) -> list[Row]:
         rows.append(Row(f"  redraw after a {label}, key to frame",
                         f"median {figures[f'{key}_ms_median']:.0f} ms, p95 {p95:.0f} ms", "< 30 ms", "", first,
                         "yes" if p95 < 30.0 else "NO"))
+    if "material_off_ms" in figures:
+        rows.append(Row("  Material off (⇧F3): the whole toolpath drawn, key to frame",
+                        f"{figures['material_off_ms']:,.0f} ms", "", "", "", ""))
     if "simulation_key_ms_p95" in figures:
         rows.append(Row("  area keys (Machine / Program) while it is calculated again, key to frame",
                         f"median {figures['simulation_key_ms_median']:.0f} ms, "

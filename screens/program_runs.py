@@ -38,7 +38,7 @@ from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.simulation_softkeys import overlay_key, view_keys
 from hmi.widgets.nc_editor import ErrorMark
 from hmi.widgets.stock_view import StockPicture, material_events, picture_of
-from hmi.widgets.toolpath import PathPiece
+from hmi.widgets.toolpath import PieceArrays
 
 CHECK_DEBOUNCE_S = 0.4
 """Quiet time after the last keystroke before the check starts."""
@@ -64,12 +64,11 @@ def speed_text(blocks_s: float) -> str:
     return _("at once") if blocks_s == math.inf else _("{rate} blocks/s").format(rate=f"{blocks_s:g}")
 
 
-def pieces_of(simulation: Any) -> list[PathPiece]:
-    """The simulation's executed path as the toolpath view's straight pieces (WCS)."""
+def path_of(simulation: Any) -> PieceArrays:
+    """The simulation's executed path as the toolpath view's straight pieces (WCS), its own
+    arrays (no copy)."""
     path = simulation.path
-    return [PathPiece(tuple(start), tuple(end), rapid, line)  # type: ignore[arg-type]
-            for start, end, rapid, line in zip(path.starts.tolist(), path.ends.tolist(),
-                                               path.rapid.tolist(), path.lines.tolist())]
+    return PieceArrays(path.starts, path.ends, path.rapid, path.lines)
 
 
 def _first_alarm(simulation: Any) -> str:
@@ -324,7 +323,7 @@ class CheckAndSimulation:
         self._material = simulation
         self._scrubber = Scrubber(simulation)
         self._scrub_lock = threading.Lock()
-        self.toolpath.set_pieces_later(lambda: pieces_of(simulation), path_note(simulation))
+        self.toolpath.set_path(path_of(simulation), path_note(simulation))
         self._material_blocks = simulation.blocks_in_order()
         self._material_step = len(self._material_blocks) - 1
         self._shown_note = material_note(simulation)

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable, Iterable, Sequence
+from typing import Iterable, Sequence
 
 import numpy as np
 from rich.style import Style
@@ -423,51 +423,56 @@ class ToolpathView(Widget, can_focus=True):
 
     def __init__(self, pieces: Sequence[PathPiece] = (), **kwargs: object) -> None:
         super().__init__(**kwargs)  # type: ignore[arg-type]
-        self._pieces: list[PathPiece] = list(pieces)
-        self._make_pieces: Callable[[], Iterable[PathPiece]] | None = None
-        self._by_line: dict[int, list[PathPiece]] = {}
+        self._path = PieceArrays.of(pieces)
+        self._line_order: tuple[np.ndarray, np.ndarray] | None = None  # piece indices by line, their lines
         self._base: tuple[tuple, BrailleCanvas, Viewport] | None = None
         self._fitted: tuple[tuple, Viewport] | None = None
-        self._arrays: tuple[list[PathPiece], PieceArrays] | None = None  # of the pieces drawn
-        self._index_lines()
         self._zoom = 1.0
         self._pan_h = 0.0
         self._pan_v = 0.0
         self.status_text = ""
 
     @property
+    def path(self) -> PieceArrays:
+        """The toolpath shown, as arrays."""
+        return self._path
+
+    @property
     def pieces(self) -> list[PathPiece]:
-        """The toolpath shown (one given to :meth:`set_pieces_later` is built now if it was not yet)."""
-        if self._make_pieces is not None:
-            self._pieces = list(self._make_pieces())
-            self._make_pieces = None
-            self._index_lines()
-        return self._pieces
+        """The toolpath shown, piece by piece (made on each call: a long path's pieces take a
+        while; the view itself draws from :attr:`path`)."""
+        path = self._path
+        return [PathPiece(tuple(start), tuple(end), rapid, line)  # type: ignore[arg-type]
+                for start, end, rapid, line in zip(path.starts.tolist(), path.ends.tolist(),
+                                                   path.rapid.tolist(), path.lines.tolist())]
 
     def set_pieces(self, pieces: Sequence[PathPiece], status_text: str = "") -> None:
         """Show a new toolpath (fitted to the window)."""
-        self._pieces = list(pieces)
-        self._make_pieces = None
-        self._index_lines()
-        self.status_text = status_text
-        self.action_fit()
+        self.set_path(PieceArrays.of(pieces), status_text)
 
-    def set_pieces_later(self, make: Callable[[], Iterable[PathPiece]], status_text: str = "") -> None:
-        """Show the toolpath ``make()`` returns, built when it is first drawn or asked for: the
-        hundreds of thousands of pieces of a long simulation cost the screen a second or more, and
-        the editor shows the material view unless the operator switches Material off."""
-        self._pieces = []
-        self._make_pieces = make
-        self._index_lines()
-        self.status_text = status_text
-        self.action_fit()
-
-    def _index_lines(self) -> None:
+    def set_path(self, path: PieceArrays, status_text: str = "") -> None:
+        """Show a new toolpath given as arrays (fitted to the window): a long simulation's
+        hundreds of thousands of pieces are drawn from its arrays, never made into objects."""
+        self._path = path
+        self._line_order = None
         self._base = None
         self._fitted = None
-        self._by_line = {}
-        for piece in self._pieces:
-            self._by_line.setdefault(piece.line, []).append(piece)
+        self.status_text = status_text
+        self.action_fit()
+
+    def _pieces_of_line(self, line: int) -> PieceArrays | None:
+        """The pieces of source line ``line`` (None: it has none): a binary search in the
+        pieces sorted by line (sorted once per path, at the first block marked)."""
+        path = self._path
+        if self._line_order is None:
+            order = np.argsort(path.lines, kind="stable")
+            self._line_order = (order, path.lines[order])
+        order, sorted_lines = self._line_order
+        first, last = np.searchsorted(sorted_lines, [line, line + 1])
+        if first == last:
+            return None
+        which = order[first:last]
+        return PieceArrays(path.starts[which], path.ends[which], path.rapid[which], path.lines[which])
 
     @property
     def zoom(self) -> float:
@@ -503,15 +508,13 @@ class ToolpathView(Widget, can_focus=True):
         The path without the current block is drawn once per size, view, zoom and
         pan and kept; a new current block only redraws its own pieces on a copy.
         """
-        pieces = self.pieces
-        key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(pieces))
+        path = self._path
+        key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(path))
         if self._base is None or self._base[0] != key:
             canvas = BrailleCanvas(width, height)
-            if self._arrays is None or self._arrays[0] is not pieces:
-                self._arrays = (pieces, PieceArrays.of(pieces))
-            fit_key = (width, height, self.view, id(pieces))
+            fit_key = (width, height, self.view, id(path))
             if self._fitted is None or self._fitted[0] != fit_key:  # zoom and pan keep the fit
-                self._fitted = (fit_key, fit_viewport(self._arrays[1], self.view, canvas))
+                self._fitted = (fit_key, fit_viewport(path, self.view, canvas))
             fitted = self._fitted[1]
             span_h = fitted.mm_per_dot * canvas.dot_width
             span_v = fitted.mm_per_dot * canvas.dot_height
@@ -520,12 +523,12 @@ class ToolpathView(Widget, can_focus=True):
                 fitted.center_v + self._pan_v * span_v,
                 fitted.mm_per_dot / self._zoom,
             )
-            draw_path(self._arrays[1], self.view, viewport, canvas)
+            draw_path(path, self.view, viewport, canvas)
             self._base = (key, canvas, viewport)
         _, base, viewport = self._base
         line = self.current_line
-        current = [p for p in self._by_line.get(line, ())] if line is not None else []
-        if not current:
+        current = self._pieces_of_line(line) if line is not None else None
+        if current is None:
             return base, viewport
         canvas = base.copy()
         draw_path(current, self.view, viewport, canvas, line, origin=False)

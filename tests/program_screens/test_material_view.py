@@ -33,7 +33,6 @@ from nck.machine import load_machine
 
 from hmi.app import HmiApp
 from screens import program_runs
-from screens.program_runs import pieces_of
 from tests.program_screens.conftest import SIZE, make_program_app, nc_files, settle
 
 SLOTS = (
@@ -290,27 +289,19 @@ async def test_the_blank_is_made_ready_for_the_next_step_back(slots_dir: Path) -
         assert screen.stock.picture.shown_chords == blocks[-1][1] == screen._scrubber.chords
 
 
-async def test_the_toolpath_pieces_are_built_only_when_the_toolpath_view_is_shown(slots_dir: Path,
-                                                                                   monkeypatch) -> None:
-    """The material view is what the editor shows; the toolpath view's pieces (one Python object
-    per chord: seconds of the screen's time for a long program) are built when Material is
-    switched off, from the same run."""
-    built: list[int] = []
-
-    def counted(simulation):
-        built.append(len(simulation.path.starts))
-        return pieces_of(simulation)
-
-    monkeypatch.setattr(program_runs, "pieces_of", counted)
+async def test_the_toolpath_view_draws_the_simulations_own_arrays(slots_dir: Path) -> None:
+    """Material off shows the same run's path from the simulation's arrays (not one Python
+    object per chord: for a long program that cost the screen most of a second per switch)."""
     app = make_program_app(slots_dir)
     async with app.run_test(size=SIZE) as pilot:
         await open_simulation(pilot)
         screen = pilot.app.screen
-        assert screen._material is not None and built == []
         await pilot.press("shift+f3")  # Material off: the toolpath view is drawn
         await settle(pilot)
-        assert screen.toolpath.display and built == [len(screen._material.path.starts)]
-        assert screen.toolpath.pieces[-1].end == tuple(screen._material.path.ends[-1].tolist())
+        path = screen._material.path
+        assert screen.toolpath.display
+        assert screen.toolpath.path.starts is path.starts and screen.toolpath.path.ends is path.ends
+        assert screen.toolpath.pieces[-1].end == tuple(path.ends[-1].tolist())
 
 
 async def test_simulation_reports_the_alarm_auto_stops_with(data_dir: Path) -> None:

@@ -184,3 +184,21 @@ def test_fit_viewport_by_hand() -> None:
     assert viewport.center_h == 5.0 and viewport.center_v == 8.0
     assert math.isclose(viewport.mm_per_dot, 24.0 / 44.0 * 1.05)
     assert fit_viewport([], "XY", BrailleCanvas(40, 12)) == Viewport(0.0, 0.0, 1e-3 * 1.05)
+
+
+def test_the_view_marks_every_piece_of_the_current_block_and_no_other() -> None:
+    """The toolpath view draws the block being executed (``current_line``) in the current
+    block's kind over the rest: the same dots as each piece drawn in turn, those of the
+    marked line as current (lines 2 and 1 interleaved, line 3 alone, line 9 has no piece)."""
+    pieces = [PathPiece((0.0, 0.0, 0.0), (10.0, 0.0, 0.0), False, 2),
+              PathPiece((10.0, 0.0, 0.0), (10.0, 8.0, 0.0), True, 1),
+              PathPiece((10.0, 8.0, 0.0), (0.0, 8.0, 0.0), False, 2),
+              PathPiece((0.0, 8.0, 0.0), (0.0, 0.0, 0.0), False, 3)]
+    view = toolpath.ToolpathView(pieces)
+    for line in (1, 2, 3, 9, None):
+        view.current_line = line
+        drawn, viewport = view.render_canvas(30, 10)
+        expected = BrailleCanvas(30, 10)
+        _drawn_piece_by_piece(pieces, "XY", fit_viewport(pieces, "XY", expected), expected, line)
+        assert viewport == fit_viewport(pieces, "XY", expected)
+        assert drawn.rows() == expected.rows(), line
