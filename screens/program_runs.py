@@ -65,10 +65,10 @@ def speed_text(blocks_s: float) -> str:
 
 
 def path_of(simulation: Any) -> PieceArrays:
-    """The simulation's executed path as the toolpath view's straight pieces (WCS), its own
-    arrays (no copy)."""
-    path = simulation.path
-    return PieceArrays(path.starts, path.ends, path.rapid, path.lines)
+    """The simulation's executed path as the toolpath view's straight pieces, its own arrays (no
+    copy): the WCS, on a lathe the half section the material view draws (Z, 0, radius)."""
+    starts, ends = simulation.drawn_path()
+    return PieceArrays(starts, ends, simulation.path.rapid, simulation.path.lines)
 
 
 def _first_alarm(simulation: Any) -> str:
@@ -323,7 +323,7 @@ class CheckAndSimulation:
         self._material = simulation
         self._scrubber = Scrubber(simulation)
         self._scrub_lock = threading.Lock()
-        self.toolpath.set_path(path_of(simulation), path_note(simulation))
+        self.toolpath.set_path(path_of(simulation), path_note(simulation), turning=simulation.turning)
         self._material_blocks = simulation.blocks_in_order()
         self._material_step = len(self._material_blocks) - 1
         self._shown_note = material_note(simulation)

@@ -31,7 +31,7 @@ from hmi.i18n import N_, _, reason_text
 from hmi.widgets.chord_extents import ChordExtents, chord_extents
 from hmi.widgets.half_blocks import HalfBlockPicture
 from hmi.widgets.path_layers import PathLayerCache, Viewport, path_layers, segment_pixels, to_pixels
-from hmi.widgets.toolpath import VIEW_BINDINGS, ZOOM_STEP
+from hmi.widgets.toolpath import TURNING_TITLE, TURNING_VIEW, VIEW_BINDINGS, ZOOM_STEP
 
 BACKGROUND = np.array([16, 20, 28], dtype=np.uint8)
 MATERIAL_TOP = np.array([214, 218, 226], dtype=np.float64)
@@ -50,8 +50,6 @@ TOOL_HEIGHT_MM = 30.0
 """How much of the tool the sections draw above its tip."""
 
 VIEW_TITLES = {"XY": N_("Top view XY"), "XZ": N_("Front section XZ"), "YZ": N_("Side section YZ")}
-TURNING_TITLE = N_("Half section Z-X")
-TURNING_VIEW = "XZ"
 """A lathe's picture is always drawn as this section (its "X" is Z, its "Z" the radius)."""
 VIEW_AXES = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
 

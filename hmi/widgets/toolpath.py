@@ -38,6 +38,9 @@ VIEWS: dict[str, tuple[int, int, str]] = {
     "YZ": (1, 2, i18n.N_("Side view YZ  (→Y ↑Z)")),
 }
 """Projection of each view: index of the horizontal and the vertical coordinate, and its title."""
+TURNING_VIEW = "XZ"
+"""A lathe's view: its path and blank as the half section (Z, 0, radius), Z across, the radius up."""
+TURNING_TITLE = i18n.N_("Half section Z-X")
 
 KIND_PRIORITY = {"rapid": 1, "feed": 2, "origin": 3, "current": 4}
 KIND_STYLES = {
@@ -425,6 +428,7 @@ class ToolpathView(Widget, can_focus=True):
         super().__init__(**kwargs)  # type: ignore[arg-type]
         self._path = PieceArrays.of(pieces)
         self._line_order: tuple[np.ndarray, np.ndarray] | None = None  # piece indices by line, their lines
+        self._turning = False  # a lathe's path, drawn as its half section whatever the view chosen
         self._base: tuple[tuple, BrailleCanvas, Viewport] | None = None
         self._fitted: tuple[tuple, Viewport] | None = None
         self._zoom = 1.0
@@ -446,14 +450,22 @@ class ToolpathView(Widget, can_focus=True):
                 for start, end, rapid, line in zip(path.starts.tolist(), path.ends.tolist(),
                                                    path.rapid.tolist(), path.lines.tolist())]
 
+    @property
+    def shown_view(self) -> str:
+        """The view drawn: the chosen one, or a lathe's half section."""
+        return TURNING_VIEW if self._turning else self.view
+
     def set_pieces(self, pieces: Sequence[PathPiece], status_text: str = "") -> None:
         """Show a new toolpath (fitted to the window)."""
         self.set_path(PieceArrays.of(pieces), status_text)
 
-    def set_path(self, path: PieceArrays, status_text: str = "") -> None:
+    def set_path(self, path: PieceArrays, status_text: str = "", *, turning: bool = False) -> None:
         """Show a new toolpath given as arrays (fitted to the window): a long simulation's
-        hundreds of thousands of pieces are drawn from its arrays, never made into objects."""
+        hundreds of thousands of pieces are drawn from its arrays, never made into objects.
+        ``turning``: a lathe's path given as its half section (Z, 0, radius), shown as the
+        material view shows the bar, Z across and the radius up."""
         self._path = path
+        self._turning = turning
         self._line_order = None
         self._base = None
         self._fitted = None
@@ -509,12 +521,13 @@ class ToolpathView(Widget, can_focus=True):
         pan and kept; a new current block only redraws its own pieces on a copy.
         """
         path = self._path
-        key = (width, height, self.view, self._zoom, self._pan_h, self._pan_v, id(path))
+        view = self.shown_view
+        key = (width, height, view, self._zoom, self._pan_h, self._pan_v, id(path))
         if self._base is None or self._base[0] != key:
             canvas = BrailleCanvas(width, height)
-            fit_key = (width, height, self.view, id(path))
+            fit_key = (width, height, view, id(path))
             if self._fitted is None or self._fitted[0] != fit_key:  # zoom and pan keep the fit
-                self._fitted = (fit_key, fit_viewport(path, self.view, canvas))
+                self._fitted = (fit_key, fit_viewport(path, view, canvas))
             fitted = self._fitted[1]
             span_h = fitted.mm_per_dot * canvas.dot_width
             span_v = fitted.mm_per_dot * canvas.dot_height
@@ -523,7 +536,7 @@ class ToolpathView(Widget, can_focus=True):
                 fitted.center_v + self._pan_v * span_v,
                 fitted.mm_per_dot / self._zoom,
             )
-            draw_path(path, self.view, viewport, canvas)
+            draw_path(path, view, viewport, canvas)
             self._base = (key, canvas, viewport)
         _, base, viewport = self._base
         line = self.current_line
@@ -531,14 +544,14 @@ class ToolpathView(Widget, can_focus=True):
         if current is None:
             return base, viewport
         canvas = base.copy()
-        draw_path(current, self.view, viewport, canvas, line, origin=False)
+        draw_path(current, view, viewport, canvas, line, origin=False)
         return canvas, viewport
 
     def render(self) -> Text:
         """Title line plus the canvas."""
         width, height = self.size.width, max(self.size.height - 1, 1)
         canvas, viewport = self.render_canvas(width, height)
-        title = VIEWS[self.view][2]
+        title = TURNING_TITLE if self._turning else VIEWS[self.view][2]
         scale_mm = viewport.mm_per_dot * 2 * 10  # ten characters
         head = Text(no_wrap=True, end="")
         head.append(f" {i18n._(title)} ", Style(bold=True, reverse=True))

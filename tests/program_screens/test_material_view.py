@@ -397,6 +397,30 @@ async def test_lathe_simulation_turns_the_bar_without_false_rapid_cuts(shaft_dir
         assert screen.stock.picture.starts is picture.starts and screen.stock.picture.ends is picture.ends
 
 
+async def test_lathe_toolpath_view_is_the_half_section(shaft_dir: Path) -> None:
+    """Material off on the lathe shows the path in the plane the bar is drawn in: Z across, the
+    radius up (the mill's XY view showed a lathe's path as one horizontal line); the view
+    softkeys leave it so, as they leave the material view's half section."""
+    app = make_lathe_app(shaft_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        await pilot.press("shift+f3", "f1")
+        await settle(pilot)
+        toolpath = screen.toolpath
+        assert toolpath.display and toolpath.shown_view == "XZ"
+        assert "Half section Z-X" in str(toolpath.render())
+        # N40 (line 6) G1 Z-30 at X36 under DIAMON: ends at Z -30, radius 18 (tool tip, no TRC)
+        n40 = [piece for piece in toolpath.pieces if piece.line == 6]
+        assert n40 and n40[-1].end == pytest.approx((-30.0, 0.0, 18.0))
+
+
+def test_snapshot_lathe_toolpath_view(snap_compare, shaft_dir: Path) -> None:
+    """Material off on the lathe: the path as the half section, the block N80 marked."""
+    assert snap_compare(make_lathe_app(shaft_dir), terminal_size=SIZE,
+                        run_before=simulation_then(*["shift+f6"] * 3, "shift+f3"))
+
+
 def test_half_section_draws_material_up_to_the_radius() -> None:
     """A profile of radius 10 over Z -20…-10 and 5 over Z -10…0: section pixels below it only."""
     heights = np.array([[10.0] * 10 + [5.0] * 10], dtype=np.float32)
