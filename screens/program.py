@@ -475,8 +475,9 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
 
     # -- read-only rules -----------------------------------------------------------------------
     def refusal_of(self, label: str) -> str:
-        """A greyed softkey of the editor: the reason the text is read-only, when it is."""
-        if self.read_only_reason:
+        """A greyed softkey of the editor: the reason the text is read-only, when it is (the
+        simulation's keys are never greyed for that: a lathe's projection keys say the state)."""
+        if self.read_only_reason and not self.simulating:
             return _("{softkey}: {reason}").format(softkey=label, reason=self.read_only_reason)
         return super().refusal_of(label)
 

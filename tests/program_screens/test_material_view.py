@@ -387,9 +387,13 @@ async def test_lathe_simulation_turns_the_bar_without_false_rapid_cuts(shaft_dir
         assert picture.turning
         assert simulation.zmap.radius_at(-7.5) == pytest.approx(15.0)
         assert simulation.zmap.radius_at(-20.0) == pytest.approx(18.0)
+        menu = screen.current_menu()
+        for key in ("sim.xy", "sim.xz", "sim.yz"):  # greyed: the half section is a lathe's one view
+            assert not menu.slot(menu.find(key)).allowed(screen, screen.access_level)
         await pilot.press("f2", "f1")  # the view softkeys leave a lathe's half section alone
         await pilot.pause()
         assert screen.stock.shown_view == "XZ"
+        assert screen.area_hint == "Top view XY: not possible in this state"  # not the editor's read-only
         # A step back draws the same path: the same half-section arrays, whose overlay the view keeps.
         await pilot.press("shift+f6")
         await settle(pilot)
