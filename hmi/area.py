@@ -105,6 +105,14 @@ class AreaBase(FocusRepaintsItsWidgets, BindingsInPlace):
         """The current access level (0 most, 7 least privileged)."""
         return self.status.access_level if self.status is not None else 7
 
+    @property
+    def on_lathe(self) -> bool:
+        """True on a lathe: the machine has no geometry axis Y (our choice; the status names no kind)."""
+        if self.status is None:
+            return False
+        linear = {axis.name for axis in self.status.axes if axis.kind == "linear"}
+        return "X" in linear and "Z" in linear and "Y" not in linear
+
     def submit(self, command: Any) -> SubmitResult:
         """Send an operator command to the kernel through the bridge."""
         return self.hmi.submit(command)

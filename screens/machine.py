@@ -469,7 +469,8 @@ class MachineScreen(AreaBase):
         cut = self.ask(RecordedCut())
         if cut is None:
             if not stock.picture.empty or not stock.status_text:
-                stock.set_picture(StockPicture(), _("Simultaneous recording: starts with the next program start (CYCLE START)"))
+                stock.set_picture(StockPicture(turning=self.on_lathe),
+                                  _("Simultaneous recording: starts with the next program start (CYCLE START)"))
             return
         chords = len(cut.path.starts)
         lines = cut.path.lines

@@ -27,15 +27,6 @@ BACK_ID = "cycles.back"
 """The id of the ``<< Back`` softkey that every cycle level carries."""
 
 
-def on_lathe(screen: Any) -> bool:
-    """True on a lathe: the machine has no geometry axis Y (our choice; the status names no kind)."""
-    status = screen.status
-    if status is None:
-        return False
-    linear = {axis.name for axis in status.axes if axis.kind == "linear"}
-    return "X" in linear and "Z" in linear and "Y" not in linear
-
-
 def _writable(screen: Any) -> bool:
     return screen.program is not None and not screen.editor.read_only
 
@@ -117,7 +108,7 @@ class CycleActions:
         keys: list[Softkey | None] = [
             Softkey(f"cycles.{menu.menu_id}", data_text("cycle_menu", menu.menu_id, "label", menu.label),
                     f"cycle_menu('{menu.menu_id}')",
-                    enabled=on_lathe if menu.machine == "lathe" else None,
+                    enabled=(lambda s: s.on_lathe) if menu.machine == "lathe" else None,
                     active=lambda s, menu_id=menu.menu_id: s.cycle_menu_id == menu_id)
             for menu in cycle_menus()
         ]

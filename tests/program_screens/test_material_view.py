@@ -443,6 +443,23 @@ def test_snapshot_lathe_half_section_partly_cut(snap_compare, shaft_dir: Path) -
                         run_before=simulation_then(*["shift+f6"] * 5))
 
 
+async def test_lathe_recording_shows_the_half_section_before_the_start(shaft_dir: Path) -> None:
+    """Simultaneous recording on the lathe, before CYCLE START: the empty view is already the
+    bar's half section (not the mill's top view) and the projection keys are greyed."""
+    app = make_lathe_app(shaft_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+u")
+        await pilot.pause()
+        await pilot.press("f8")
+        await settle(pilot)
+        screen = pilot.app.screen
+        stock = screen.query_one("#simrec-stock")
+        assert "next program start" in stock.status_text
+        assert stock.shown_view == "XZ" and "Half section Z-X" in str(stock.render())
+        menu = screen.current_menu()
+        assert not menu.slot(menu.find("simrec.xy")).allowed(screen, screen.access_level)
+
+
 async def start_recording(pilot) -> None:
     """AUTO, select DEMO.MPF (Select program, F7), Simult. recording (F8), NC START."""
     await pilot.press("alt+u")
