@@ -50,7 +50,6 @@ TOOL_HEIGHT_MM = 30.0
 """How much of the tool the sections draw above its tip."""
 
 VIEW_TITLES = {"XY": N_("Top view XY"), "XZ": N_("Front section XZ"), "YZ": N_("Side section YZ")}
-"""A lathe's picture is always drawn as this section (its "X" is Z, its "Z" the radius)."""
 VIEW_AXES = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
 
 
