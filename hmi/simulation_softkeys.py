@@ -16,8 +16,8 @@ def view_keys(prefix: str, shown_view: Callable[[Any], str] | None = None,
               turning: Callable[[Any], bool] | None = None) -> list[Softkey]:
     """The projection keys (top view, the two sections), Zoom +/- and Fit; with
     ``shown_view`` (the screen → the view drawn) the drawn projection's key is shown pressed.
-    ``turning`` (the screen → a lathe's half section is drawn): the projection keys are greyed
-    then, because the half section is the one view of a lathe (choice: the manuals do not
+    ``turning`` (the screen → it is a lathe's, whose views draw the half section): the projection
+    keys are greyed there, because the half section is the one view of a lathe (choice: the manuals do not
     describe the simulation's views; a mill's top view of a lathe's path is a line)."""
     def milling(screen: Any) -> bool:
         return turning is None or not turning(screen)

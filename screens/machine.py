@@ -196,7 +196,7 @@ class MachineScreen(AreaBase):
                 self._search_mode_key("search.serupro", "SERUPRO", "serupro"),
             ]
         if view == "simrec":
-            return [*view_keys("simrec", turning=lambda s: s.query_one("#simrec-stock", StockView).picture.turning),
+            return [*view_keys("simrec", turning=lambda s: s.on_lathe),
                     overlay_key("simrec", lambda s: s.query_one("#simrec-stock", StockView).overlay)]
         if view == "times":
             return [

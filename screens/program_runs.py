@@ -136,7 +136,7 @@ class CheckAndSimulation:
     def _simulation_menu(self) -> SoftkeyMenu:
         return SoftkeyMenu.of(
             [
-                *view_keys("sim", lambda s: s.toolpath.view, lambda s: s.stock.picture.turning),
+                *view_keys("sim", lambda s: s.toolpath.view, lambda s: s.on_lathe),
                 Softkey("sim.rerun", "Recalculate", "simulate_run"),
                 Softkey("sim.back", "Editor", "simulate"),
             ],
