@@ -145,6 +145,7 @@ class PathBuilder:
         self._gcodes_copies: list[Mapping[int, str]] = []  # the motions' shared G-code tables (shared_gcodes)
         self._line_frame_kept: tuple[Any, Any, LineFrame | None] = (None, None, None)
         self._tool_vectors: dict[tuple, Mapping[str, float]] = {}  # _tool_lengths by its inputs
+        self._tool_vector_last: tuple[tuple | None, Mapping[str, float]] = (None, {})  # the last of them
 
     # ================================================================ state
     def state(self, modal: Any) -> GeometryState:
@@ -321,6 +322,9 @@ class PathBuilder:
         params = found.params
         key = (plane_code, length_const, length_type, wear_sign, data_mm, self.geo_axes,
                tuple(map(params.get, _LENGTH_PARAMS, _LENGTH_DEFAULTS)))
+        last_key, last_vector = self._tool_vector_last
+        if key == last_key:  # every motion block asks: an equal tuple, compared without hashing
+            return last_vector
         cache = self._tool_vectors
         vector = cache.get(key)
         if vector is None:
@@ -328,6 +332,7 @@ class PathBuilder:
                 cache.clear()
             vector = cache[key] = length_offset(found, plane_code, self.geo_axes, length_const=length_const,
                                                 length_type=length_type, wear_sign=wear_sign, data_mm=data_mm)
+        self._tool_vector_last = (key, vector)
         return vector
 
     def wear_sign(self) -> int:
@@ -579,7 +584,7 @@ class PathBuilder:
         exact, transform = separable
         pl = self.plane(modal)
         end, programmed = self._targets(words, modal, geo, units)
-        element = self._arc(kind, words, modal, geo, units, pl, dict(geo.wcs_mm), end)
+        element = self._arc(kind, words, modal, geo, units, pl, geo.wcs_mm, end)  # _arc reads the start
         assert isinstance(element, Arc)  # G2/G3 without a pole
         point, centre = element.end, element.center
         if not (math.isfinite(point[0] + point[1] + point[2]) and math.isfinite(centre[0] + centre[1] + centre[2])):
