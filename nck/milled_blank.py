@@ -356,7 +356,8 @@ def _slab(position: float, delta: float, low: np.ndarray | float, high: np.ndarr
     if delta == 0.0:
         inside = (low <= position) & (position <= high)
         return np.where(inside, -np.inf, np.inf), np.where(inside, np.inf, -np.inf)
-    t0, t1 = (low - position) / delta, (high - position) / delta
+    with np.errstate(over="ignore"):  # a tiny delta gives ±inf: the limit, as delta == 0 above
+        t0, t1 = (low - position) / delta, (high - position) / delta
     return np.minimum(t0, t1), np.maximum(t0, t1)
 
 

@@ -245,3 +245,19 @@ def test_broad_phase_changes_no_contact_and_no_clearance(cut_x, cut_y, depth, st
         every_column = (milled.first_contact(body, start, end, overtravel), milled.clearance(body, start),
                         milled.clearance(body, end))
     assert with_broad_phase == every_column
+
+
+def test_a_step_with_a_tiny_component_finds_the_contact_of_none(recwarn) -> None:
+    """Found by fuzzing: a step of 1e-310 mm along Y overflowed the slab test's division (a
+    warning). The parameter is then ±infinity, the limit the test takes for no movement along Y:
+    the same first contact as the step without that component, and no warning."""
+    block = Box((-10.0, -10.0, -10.0), (10.0, 10.0, 0.0))
+    milled = MilledBlank.of(block)
+    milled.cut(ToolBody(CUTTER, 3.0, 50.0), (0.0, 0.0, 5.0), (0.0, 0.0, -5.0))  # a hole: milled columns
+    cutter = ToolBody(CUTTER, 2.5, 50.0)
+    start = (-20.0, 0.0, -2.0)  # level with the side of the block, 2 mm below its top
+    plain = milled.first_contact(cutter, start, (0.0, 0.0, -2.0))
+    tiny = milled.first_contact(cutter, start, (0.0, 1e-310, -2.0))
+    # touches X -10 with its radius 2.5: at X -12.5 of the 20 mm step, t = 7.5 / 20
+    assert plain == pytest.approx(0.375, abs=1e-6) and tiny == plain
+    assert not [w for w in recwarn if issubclass(w.category, RuntimeWarning)]
