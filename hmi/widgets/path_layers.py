@@ -46,6 +46,16 @@ def sample_steps(length_mm: np.ndarray, port: Viewport, width_px: int, height_px
     return np.minimum(np.ceil(length * 2.0).astype(np.int64) + 1, 4 * (width_px + height_px))
 
 
+def sample_points(start_h: np.ndarray, start_v: np.ndarray, delta_h: np.ndarray, delta_v: np.ndarray,
+                  steps: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The samples (h, v in mm) of the lines start → start + delta, ``steps`` of them along each
+    from end to end, and the line each belongs to, in the lines' order."""
+    owner = np.repeat(np.arange(len(steps)), steps)
+    first = np.cumsum(steps) - steps
+    fraction = (np.arange(len(owner)) - np.repeat(first, steps)) / np.repeat(np.maximum(steps - 1, 1), steps)
+    return start_h[owner] + delta_h[owner] * fraction, start_v[owner] + delta_v[owner] * fraction, owner
+
+
 def segment_pixels(port: Viewport, width_px: int, height_px: int, a: np.ndarray,
                    b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The pixels of the straight lines a[i] → b[i] (rows h, v in mm), sampled at half a pixel:
@@ -53,12 +63,7 @@ def segment_pixels(port: Viewport, width_px: int, height_px: int, a: np.ndarray,
     image included)."""
     ah, av = np.ascontiguousarray(a[:, 0]), np.ascontiguousarray(a[:, 1])  # 1-D gathers below are cheaper
     dh, dv = b[:, 0] - ah, b[:, 1] - av
-    steps = sample_steps(np.hypot(dh, dv), port, width_px, height_px)
-    owner = np.repeat(np.arange(len(a)), steps)
-    first = np.concatenate(([0], np.cumsum(steps)[:-1]))
-    f = (np.arange(len(owner)) - np.repeat(first, steps)) / np.repeat(np.maximum(steps - 1, 1), steps)
-    h = ah[owner] + dh[owner] * f
-    v = av[owner] + dv[owner] * f
+    h, v, owner = sample_points(ah, av, dh, dv, sample_steps(np.hypot(dh, dv), port, width_px, height_px))
     px, py = to_pixels(port, width_px, height_px, h, v)
     return px, py, owner
 
@@ -122,14 +127,8 @@ def first_chords(port: Viewport, width_px: int, height_px: int, chords: Chords, 
                 _mark(layer, port, width_px, height_px, start_h + delta_h * fraction, start_v + delta_v * fraction,
                       numbers)
         else:
-            mine_steps = steps[in_group]
-            first = np.cumsum(mine_steps) - mine_steps
-            fraction = ((np.arange(int(first[-1] + mine_steps[-1])) - np.repeat(first, mine_steps))
-                        / np.repeat(mine_steps - 1, mine_steps))
-            _mark(layer, port, width_px, height_px,
-                  np.repeat(start_h, mine_steps) + np.repeat(delta_h, mine_steps) * fraction,
-                  np.repeat(start_v, mine_steps) + np.repeat(delta_v, mine_steps) * fraction,
-                  np.repeat(chords.numbers[mine], mine_steps))
+            h, v, owner = sample_points(start_h, start_v, delta_h, delta_v, steps[in_group])
+            _mark(layer, port, width_px, height_px, h, v, chords.numbers[mine][owner])
     return layer.reshape(height_px, width_px)
 
 
