@@ -12,7 +12,9 @@ Chords are sampled at half a pixel along their length (:func:`segment_pixels`), 
 straight line of the view is. Working the layers out only samples the chords whose extents
 reach into the picture (a zoomed-in view of a long program sees few of them), and a widget's
 :class:`PathLayerCache` keeps the layers of the last few viewports, so zooming back to a level
-seen before costs nothing.
+seen before costs nothing. A pan keeps the scale: the cache samples the whole path once at the
+scale of the view shown (:class:`ScaleSamples`, while that is a few samples a chord) and each
+viewport panned to only finds its samples' pixels.
 """
 
 from __future__ import annotations
@@ -136,9 +138,9 @@ def _mark(layer: np.ndarray, port: Viewport, width_px: int, height_px: int, h: n
           numbers: np.ndarray) -> None:
     """Lower ``layer``'s pixels at the samples (h, v) (in chord order) to the samples' chord numbers.
 
-    ``h`` and ``v`` are worked on in place: the same operations as :func:`to_pixels`."""
-    np.subtract(h, port.centre_h, out=h)
-    np.subtract(port.centre_v, v, out=v)
+    The same operations as :func:`to_pixels`, on arrays of its own (``h`` and ``v`` are left as they are)."""
+    h = np.subtract(h, port.centre_h)
+    v = np.subtract(port.centre_v, v)
     for values, half in ((h, width_px / 2.0), (v, height_px / 2.0)):
         np.divide(values, port.mm_per_pixel, out=values)
         np.add(values, half, out=values)
@@ -154,6 +156,33 @@ def _mark(layer: np.ndarray, port: Viewport, width_px: int, height_px: int, h: n
         runs[0] = True
         np.not_equal(pixel[1:], pixel[:-1], out=runs[1:])
         np.minimum.at(layer, pixel[runs], numbers[runs])
+
+
+@dataclass(frozen=True)
+class ScaleSamples:
+    """Every sample of some chords at one scale (mm per pixel and picture size fix how many a
+    chord has), in chord order; a sample at exactly the place of the one before it is left out:
+    it falls in the same pixel in any viewport, and its chord's number is not the smaller. A pan
+    keeps the scale: the layers of the viewport panned to are these samples' pixels, without
+    sampling the chords again."""
+
+    h: np.ndarray
+    v: np.ndarray
+    numbers: np.ndarray
+
+    @classmethod
+    def of(cls, chords: Chords, steps: np.ndarray) -> ScaleSamples:
+        """The samples of ``chords``, ``steps`` of each (:func:`sample_steps`)."""
+        h, v, owner = sample_points(chords.start_h, chords.start_v, chords.delta_h, chords.delta_v, steps)
+        moved = np.ones(len(h), dtype=bool)
+        moved[1:] = (h[1:] != h[:-1]) | (v[1:] != v[:-1])
+        return cls(h[moved], v[moved], chords.numbers[owner[moved]])
+
+    def first_chords(self, port: Viewport, width_px: int, height_px: int, never: int) -> np.ndarray:
+        """What :func:`first_chords` gives for these samples' chords in ``port`` (of this scale)."""
+        layer = np.full(height_px * width_px, never, dtype=np.int64)
+        _mark(layer, port, width_px, height_px, self.h, self.v, self.numbers)
+        return layer.reshape(height_px, width_px)
 
 
 @dataclass(frozen=True)
@@ -192,6 +221,29 @@ class PathChords:
         return PathLayers(first_feed=first_chords(port, width_px, height_px, self.feed, self.count),
                           first_rapid=first_chords(port, width_px, height_px, self.rapid, self.count))
 
+    def scale_samples(self, port: Viewport, width_px: int, height_px: int) -> tuple[ScaleSamples, ScaleSamples] | None:
+        """The :class:`ScaleSamples` of the feed and the rapid chords at ``port``'s scale, or None
+        where they would be more than ``SCALE_SAMPLES_PER_CHORD`` a chord (zoomed in: a
+        viewport sees few of the chords, sampling them all would cost more than it saves)."""
+        feed_steps = sample_steps(self.feed.length_mm, port, width_px, height_px)
+        rapid_steps = sample_steps(self.rapid.length_mm, port, width_px, height_px)
+        if int(feed_steps.sum()) + int(rapid_steps.sum()) > SCALE_SAMPLES_PER_CHORD * max(self.count, 1):
+            return None
+        return ScaleSamples.of(self.feed, feed_steps), ScaleSamples.of(self.rapid, rapid_steps)
+
+    def layers_of(self, samples: tuple[ScaleSamples, ScaleSamples], port: Viewport, width_px: int,
+                  height_px: int) -> PathLayers:
+        """:class:`PathLayers` of this path in ``port``, from its samples at ``port``'s scale
+        (the same layers as :meth:`layers`)."""
+        feed, rapid = samples
+        return PathLayers(first_feed=feed.first_chords(port, width_px, height_px, self.count),
+                          first_rapid=rapid.first_chords(port, width_px, height_px, self.count))
+
+
+SCALE_SAMPLES_PER_CHORD = 4
+"""A path's samples at one scale are kept (for pans) while they are at most this many a chord
+on average (a path seen whole is mostly chords shorter than a pixel: two samples each)."""
+
 
 MAX_CACHED_VIEWPORTS = 12
 """Viewports whose layers a :class:`PathLayerCache` keeps (zoom levels and pans gone back to)."""
@@ -205,6 +257,9 @@ class PathLayerCache:
         self._path_key: tuple[object, ...] | None = None
         self._chords: PathChords | None = None
         self._layers: OrderedDict[tuple[Viewport, int, int], PathLayers] = OrderedDict()
+        self._scale_key: tuple[float, int, int] | None = None  # the scale of the last viewport worked out
+        self._scale_sampled = False  # whether the path was sampled whole at that scale …
+        self._scale_samples: tuple[ScaleSamples, ScaleSamples] | None = None  # … and its samples (None: too many)
 
     def layers(self, starts: np.ndarray, ends: np.ndarray, rapid: np.ndarray, axes: tuple[int, int],
                port: Viewport, width_px: int, height_px: int) -> PathLayers:
@@ -216,15 +271,34 @@ class PathLayerCache:
             self._chords = PathChords.of(starts, ends, rapid, axes)
             self._path_key = path_key
             self._layers.clear()
+            self._scale_key = None
         key = (port, width_px, height_px)
         layers = self._layers.get(key)
+        scale_key = (port.mm_per_pixel, width_px, height_px)
+        new_scale = scale_key != self._scale_key
+        if new_scale:
+            self._scale_key, self._scale_sampled, self._scale_samples = scale_key, False, None
         if layers is None:
-            layers = self._layers[key] = self._chords.layers(port, width_px, height_px)
+            layers = self._layers[key] = self._new_layers(self._chords, port, width_px, height_px, new_scale)
             if len(self._layers) > MAX_CACHED_VIEWPORTS:
                 self._layers.popitem(last=False)
         else:
             self._layers.move_to_end(key)
         return layers
+
+    def _new_layers(self, chords: PathChords, port: Viewport, width_px: int, height_px: int,
+                    new_scale: bool) -> PathLayers:
+        """The layers of a viewport not in the cache. The first viewport at a scale samples the
+        chords it sees; another one at the scale of the one shown before (a pan) samples the
+        whole path once, for it and the next ones (a zoom level passed through does not pay)."""
+        if new_scale:
+            return chords.layers(port, width_px, height_px)
+        if not self._scale_sampled:
+            self._scale_sampled = True
+            self._scale_samples = chords.scale_samples(port, width_px, height_px)
+        if self._scale_samples is None:
+            return chords.layers(port, width_px, height_px)
+        return chords.layers_of(self._scale_samples, port, width_px, height_px)
 
 
 def path_layers(starts: np.ndarray, ends: np.ndarray, rapid: np.ndarray, axes: tuple[int, int],

@@ -79,3 +79,31 @@ def test_the_cache_gives_back_a_viewport_seen_before_and_works_out_a_new_path() 
     moved = ends + 1.0
     other = cache.layers(starts, moved, rapid, (0, 1), ports[0], 20, 16)
     assert np.array_equal(other.first_feed, path_layers(starts, moved, rapid, (0, 1), ports[0], 20, 16).first_feed)
+
+
+@settings(max_examples=40, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), chords=st.integers(1, 300), width_px=st.integers(1, 40),
+       height_px=st.integers(1, 40), zoom_steps=st.integers(-3, 4),
+       pans=st.lists(st.tuples(st.integers(-1, 1), st.integers(-1, 1)), min_size=1, max_size=8))
+def test_a_panned_view_has_the_layers_worked_out_from_scratch_at_its_viewport(
+        seed: int, chords: int, width_px: int, height_px: int, zoom_steps: int, pans: list[tuple[int, int]]) -> None:
+    # A polyline (each chord starts where the one before it ends; some stand still, some repeat
+    # a point) panned by a quarter of the view as the material view pans: the cache samples the
+    # whole path once at the scale and marks the samples' pixels in each viewport panned to.
+    rng = np.random.default_rng(seed)
+    moves = rng.normal(0.0, 0.4, (chords + 1, 3)) * (rng.random((chords + 1, 1)) < 0.9)
+    points = np.cumsum(moves, axis=0)
+    starts, ends = points[:-1], points[1:]
+    rapid = rng.random(chords) < 0.1
+    span = float(np.ptp(points[:, :2], axis=0).max()) + 1e-3
+    scale = span / max(width_px - 2, 1) / 1.5 ** zoom_steps
+    centre_h, centre_v = float(points[:, 0].mean()), float(points[:, 1].mean())
+    cache = PathLayerCache()
+    pan_h = pan_v = 0
+    for step_h, step_v in [(0, 0), *pans, (0, 0)]:
+        pan_h, pan_v = pan_h + step_h, pan_v + step_v
+        port = Viewport(centre_h + pan_h * width_px / 4.0 * scale, centre_v + pan_v * height_px / 4.0 * scale, scale)
+        panned = cache.layers(starts, ends, rapid, (0, 1), port, width_px, height_px)
+        scratch = path_layers(starts, ends, rapid, (0, 1), port, width_px, height_px)
+        assert np.array_equal(panned.first_feed, scratch.first_feed), (pan_h, pan_v)
+        assert np.array_equal(panned.first_rapid, scratch.first_rapid), (pan_h, pan_v)
