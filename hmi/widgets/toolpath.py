@@ -522,10 +522,10 @@ class ToolpathView(Widget, can_focus=True):
         """
         path = self._path
         view = self.shown_view
-        key = (width, height, view, self._zoom, self._pan_h, self._pan_v, id(path))
+        key = (width, height, view, self._zoom, self._pan_h, self._pan_v)  # set_path drops both caches
         if self._base is None or self._base[0] != key:
             canvas = BrailleCanvas(width, height)
-            fit_key = (width, height, view, id(path))
+            fit_key = (width, height, view)
             if self._fitted is None or self._fitted[0] != fit_key:  # zoom and pan keep the fit
                 self._fitted = (fit_key, fit_viewport(path, view, canvas))
             fitted = self._fitted[1]
