@@ -36,6 +36,16 @@ SERVICE_FIELDS = (
     "motor_temperature_c", "controller_mode", "exact_stop_coarse", "exact_stop_fine", "clamped",
     "servo_parameter_set",
 )
+TEMPERATURE_DECIMALS = 1
+"""The snapshot carries a motor temperature (r0035) as the service screen shows it, to a tenth of a
+degree: the thermal model warms a drive that holds an axis against gravity a little in every
+IPO cycle, and a snapshot that changed with it would make the panel redraw at every refresh of
+an idle machine."""
+
+
+def shown_temperature_c(temperature_c: float) -> float:
+    """``temperature_c`` rounded to :data:`TEMPERATURE_DECIMALS`."""
+    return round(temperature_c, TEMPERATURE_DECIMALS)
 
 
 def _service_values(state: Any) -> dict[str, float]:
@@ -45,6 +55,8 @@ def _service_values(state: Any) -> dict[str, float]:
         value = getattr(state, name, None)
         if isinstance(value, (bool, int, float)):
             values[name] = float(value)
+    if "motor_temperature_c" in values:
+        values["motor_temperature_c"] = shown_temperature_c(values["motor_temperature_c"])
     for name, value in dict(getattr(state, "extra", {}) or {}).items():
         if isinstance(value, (int, float)):
             values[name] = float(value)
@@ -253,7 +265,7 @@ def _spindle_status(src: StatusSources, name: str, positions: Any) -> AxisStatus
                    "setpoint_increased": float(bool(getattr(state, "setpoint_increased", False))),
                    "override_pct": float(getattr(state, "override_pct", 100.0)),
                    "torque_nm": float(getattr(state, "torque_nm", 0.0)),
-                   "motor_temperature_c": float(getattr(state, "temperature_c", 0.0))},
+                   "motor_temperature_c": shown_temperature_c(float(getattr(state, "temperature_c", 0.0)))},
         )
     outputs = src.outputs
     rpm = outputs.spindle_rpm if outputs.spindle_state in ("M3", "M4") else 0.0

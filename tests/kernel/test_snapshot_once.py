@@ -148,3 +148,20 @@ def test_the_keyswitch_turned_by_the_session_under_a_password_shows_at_once() ->
 
 def test_a_kernel_without_access_control_reports_no_keyswitch() -> None:
     assert kernel().status().keyswitch_position is None
+
+
+def test_an_idle_machine_shows_the_same_snapshot() -> None:
+    # The default mill's Z drive holds the axis against gravity: its thermal model warms it a
+    # little in every IPO cycle (test_dynamics). The service screen shows r0035 to a tenth of a
+    # degree, so the snapshot carries it so: an idle machine's snapshot changes only when a
+    # shown tenth changes, and the panel does not redraw 20 times a second for nothing.
+    nck_ = build_nck(load_machine("mill3"), NcData(), MemorySource({}), referenced=True)
+    seqs = []
+    for _ in range(200):                      # 10 s at the panel's 20 refreshes a second
+        nck_.tick(0.05)
+        seqs.append(nck_.status().seq)
+    assert seqs[-1] - seqs[0] <= 1
+    for axis in nck_.status().axes:
+        temperature = axis.extra.get("motor_temperature_c")
+        if temperature is not None:
+            assert temperature == round(temperature, 1)
