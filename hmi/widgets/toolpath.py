@@ -1,10 +1,8 @@
 """Toolpath simulation drawn in the terminal with braille dots.
 
-Three layers, each testable on its own:
+Two layers, each testable on its own (the pieces, straight 3-D chords in the workpiece
+coordinate system, come from the simulation's recorded path):
 
-* :func:`path_from_motions` turns the interpreter's ``canon.Motion`` records into
-  straight 3-D pieces in the workpiece coordinate system (arcs and helices are
-  split into short chords);
 * :class:`BrailleCanvas` rasterises 2-D lines into a grid of braille cells
   (2 × 4 dots per character) and remembers, per cell, the most important kind
   of line drawn there (current block > feed move > rapid move);
@@ -17,7 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterable, Sequence
+from typing import Sequence
 
 import numpy as np
 from rich.style import Style
@@ -25,8 +23,6 @@ from rich.text import Text
 from textual.binding import Binding
 from textual.reactive import reactive
 from textual.widget import Widget
-
-from nck import Motion
 
 from hmi import i18n
 
@@ -66,78 +62,6 @@ class PathPiece:
     end: Point3
     rapid: bool
     line: int
-
-
-def _point(values: dict[str, float] | object, default: Point3) -> Point3:
-    mapping = dict(values) if values else {}  # type: ignore[call-overload]
-    return (
-        float(mapping.get("X", default[0])),
-        float(mapping.get("Y", default[1])),
-        float(mapping.get("Z", default[2])),
-    )
-
-
-_PLANE_AXES = {"G17": (0, 1, 2), "G18": (2, 0, 1), "G19": (1, 2, 0)}
-
-
-def _arc_points(
-    start: Point3, end: Point3, center: Point3, clockwise: bool, plane: str, turns: int
-) -> list[Point3]:
-    """Chord points of an arc/helix from ``start`` to ``end`` (start excluded)."""
-    a, b, c = _PLANE_AXES.get(plane, (0, 1, 2))
-    start_angle = math.atan2(start[b] - center[b], start[a] - center[a])
-    end_angle = math.atan2(end[b] - center[b], end[a] - center[a])
-    radius = math.hypot(start[a] - center[a], start[b] - center[b])
-    sweep = end_angle - start_angle
-    if clockwise:
-        while sweep >= -1e-9:
-            sweep -= 2 * math.pi
-    else:
-        while sweep <= 1e-9:
-            sweep += 2 * math.pi
-    sweep += (-1 if clockwise else 1) * 2 * math.pi * max(turns, 0)
-    steps = max(4, min(720, int(abs(sweep) / (math.pi / 36)) + 1))
-    points: list[Point3] = []
-    for step in range(1, steps + 1):
-        fraction = step / steps
-        angle = start_angle + sweep * fraction
-        point = [0.0, 0.0, 0.0]
-        point[a] = center[a] + radius * math.cos(angle)
-        point[b] = center[b] + radius * math.sin(angle)
-        point[c] = start[c] + (end[c] - start[c]) * fraction
-        points.append((point[0], point[1], point[2]))
-    points[-1] = end
-    return points
-
-
-def path_from_motions(motions: Iterable[Motion]) -> list[PathPiece]:
-    """Turn canonical motions into straight WCS pieces (arcs split into chords).
-
-    The first motion starts at its MCS start point shifted into the WCS; every
-    later one starts where the previous one ended.
-    """
-    pieces: list[PathPiece] = []
-    current: Point3 | None = None
-    for motion in motions:
-        end_fallback = current or (0.0, 0.0, 0.0)
-        end = _point(motion.end_wcs, end_fallback)
-        if current is None:
-            end_mcs = _point(motion.end_mcs, end)
-            start_mcs = _point(motion.start_mcs, end_mcs)
-            current = tuple(s + (e - m) for s, e, m in zip(start_mcs, end, end_mcs))  # type: ignore[assignment]
-        assert current is not None
-        rapid = motion.kind == "G0"
-        line = motion.source.line
-        if motion.kind in ("G2", "G3") and motion.center_wcs:
-            center = _point(motion.center_wcs, current)
-            previous = current
-            for point in _arc_points(current, end, center, motion.kind == "G2", motion.plane, motion.turns):
-                pieces.append(PathPiece(previous, point, False, line))
-                previous = point
-        elif end != current:
-            pieces.append(PathPiece(current, end, rapid, line))
-        current = end
-    return pieces
 
 
 # ---------------------------------------------------------------------------------------------

@@ -7,41 +7,8 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from nck.canon import Motion, Source
 from hmi.widgets import toolpath
-from hmi.widgets.toolpath import VIEWS, BrailleCanvas, PathPiece, Viewport, draw_path, fit_viewport, path_from_motions
-
-
-def motion(kind: str, line: int, x: float, y: float, z: float = 0.0, start=None, center=None) -> Motion:
-    end = {"X": x, "Y": y, "Z": z}
-    return Motion(kind=kind, source=Source("T.MPF", line), plane="G17", end_wcs=end, end_mcs=end,
-                  start_mcs=start or {}, center_wcs=center)
-
-
-def test_path_pieces_follow_the_motions() -> None:
-    """Each motion becomes a piece from the previous end point; G0 pieces are rapid."""
-    pieces = path_from_motions([
-        motion("G0", 1, 10, 0, start={"X": 0.0, "Y": 0.0, "Z": 0.0}),
-        motion("G1", 2, 10, 10),
-    ])
-    assert [(p.start, p.end, p.rapid, p.line) for p in pieces] == [
-        ((0.0, 0.0, 0.0), (10.0, 0.0, 0.0), True, 1),
-        ((10.0, 0.0, 0.0), (10.0, 10.0, 0.0), False, 2),
-    ]
-
-
-def test_arc_is_split_into_chords_on_its_circle() -> None:
-    """A G3 half circle becomes chords whose points all lie on the circle."""
-    pieces = path_from_motions([
-        motion("G1", 1, 10, 0, start={"X": 10.0, "Y": 0.0, "Z": 0.0}),
-        motion("G3", 2, -10, 0, center={"X": 0.0, "Y": 0.0}),
-    ])
-    arc = [p for p in pieces if p.line == 2]
-    assert len(arc) >= 4
-    for piece in arc:
-        assert math.isclose(math.hypot(piece.end[0], piece.end[1]), 10.0, abs_tol=1e-9)
-        assert piece.end[1] >= -1e-9  # counter-clockwise from +X to -X passes through +Y
-    assert arc[-1].end == (-10.0, 0.0, 0.0)
+from hmi.widgets.toolpath import VIEWS, BrailleCanvas, PathPiece, Viewport, draw_path, fit_viewport
 
 
 def test_canvas_draws_braille_dots_and_keeps_priority() -> None:
@@ -66,10 +33,8 @@ def test_rapid_moves_are_dashed() -> None:
 
 def test_fit_viewport_shows_the_whole_path_in_each_view() -> None:
     """After fitting, every end point projects inside the canvas, in XY, XZ and YZ."""
-    pieces = path_from_motions([
-        motion("G0", 1, 50, -20, 5, start={"X": 0.0, "Y": 0.0, "Z": 100.0}),
-        motion("G1", 2, -30, 40, -8),
-    ])
+    pieces = [PathPiece((0.0, 0.0, 100.0), (50.0, -20.0, 5.0), True, 1),
+              PathPiece((50.0, -20.0, 5.0), (-30.0, 40.0, -8.0), False, 2)]
     for view in ("XY", "XZ", "YZ"):
         canvas = BrailleCanvas(40, 12)
         viewport = fit_viewport(pieces, view, canvas)
@@ -96,11 +61,9 @@ def test_view_marks_the_current_block_over_the_kept_drawing() -> None:
     """The current block is drawn in its own colour; the kept base drawing stays unmarked."""
     from hmi.widgets.toolpath import ToolpathView
 
-    pieces = path_from_motions([
-        motion("G0", 1, 10, 0, start={"X": 0.0, "Y": 0.0, "Z": 0.0}),
-        motion("G1", 2, 10, 10),
-        motion("G1", 3, 0, 10),
-    ])
+    pieces = [PathPiece((0.0, 0.0, 0.0), (10.0, 0.0, 0.0), True, 1),
+              PathPiece((10.0, 0.0, 0.0), (10.0, 10.0, 0.0), False, 2),
+              PathPiece((10.0, 10.0, 0.0), (0.0, 10.0, 0.0), False, 3)]
     view = ToolpathView(pieces)
     kinds = lambda c: {k for row in c.rows() for _, k in row}
     plain, _ = view.render_canvas(40, 12)
