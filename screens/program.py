@@ -268,6 +268,10 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
             self.say(_("Not opened: {error}").format(error=error_text(exc, failed="os_read_failed")))
             return False
         decoded, binary = decode_program(raw)
+        if self.simulating:  # a program opens in the editor, never beside another one's simulation
+            self.leave_simulation()
+            self._menu_stack.clear()
+            self._show_view()
         self.program = canonical
         self.binary = binary
         self.saved_text = decoded
@@ -308,8 +312,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self.saved_text = ""
         self._dirty = False
         self.binary = False
-        self.simulating = False
-        self._stop_playing()
+        self.leave_simulation()
         self.editor.load_text("")
         self.editor.set_error_marks([])
         self._update_read_only()

@@ -261,9 +261,17 @@ class CheckAndSimulation:
             self.action_simulate_run()
             focus_now(self.stock if self.sim_material else self.toolpath)
         else:
-            self._stop_playing()
-            self.workers.cancel_group(self, "program-material")  # back to editing: a run still going is dropped
+            self.leave_simulation()
             focus_now(self.editor)
+
+    def leave_simulation(self) -> None:
+        """Back to the editor's text: playing stops, a run still going is dropped (its child is
+        stopped) and the result shown is forgotten — the next Simulation runs the text again."""
+        self.simulating = False
+        self._stop_playing()
+        self.workers.cancel_group(self, "program-material")
+        self._material = None
+        self._scrubber = None
 
     def action_simulate_run(self) -> None:
         """Interpret the text headless and draw its toolpath."""

@@ -141,6 +141,30 @@ async def test_simulation_cuts_the_blank_and_steps_block_by_block(slots_dir: Pat
         assert float(screen.stock.picture.heights.min()) == pytest.approx(0.0)
 
 
+async def test_opening_another_program_leaves_the_simulation(slots_dir: Path) -> None:
+    """A program opened from the Program manager while the Program area shows a simulation opens
+    in the editor: not beside the other program's cut, whose time and alarms the title would
+    show, and F5 is the Simulation softkey again (in the simulation it zooms out)."""
+    (slots_dir / "MPF" / "OTHER.MPF").write_text("N10 G0 X0 Y0 Z10\nN20 G1 X5 F100\nN30 M30\n")
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        assert screen.program.endswith("DEMO.MPF") and screen.simulating
+        assert screen._material is not None
+        await pilot.press("alt+n", "down", "f3")  # OTHER.MPF, in one burst
+        await settle(pilot)
+        screen = pilot.app.screen
+        assert screen.program.endswith("OTHER.MPF")
+        assert not screen.simulating and screen._material is None
+        assert screen.editor.has_focus and not screen.stock.display
+        await pilot.press("f5")
+        await settle(pilot)
+        assert screen.simulating
+        lines = {int(line) for line in screen._material.path.lines}
+        assert lines and lines <= {1, 2}  # OTHER's own blocks N10 and N20, none of DEMO's
+
+
 def _record_jobs(monkeypatch) -> list:
     """Every child process the editor starts for a simulation (hmi.child_job.ChildJob), in order
     (the checks' child processes are left out: their job is the worker's ``check``)."""
