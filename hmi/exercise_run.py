@@ -120,8 +120,10 @@ class ExerciseRun:
         return "\n".join(lines)
 
     # -- the end ----------------------------------------------------------------------------
-    def finish(self) -> tuple[Path, Path]:
-        """Score the session, write the report files; return their paths (text, JSON)."""
+    def finish(self, time_s: float) -> tuple[Path, Path]:
+        """End the session at control time ``time_s``, score it, write the report files; return
+        their paths (text, JSON)."""
+        self.progress.observe_end(time_s)
         self.report = self.progress.report(self.exercise.title)
         name = f"{self.exercise.exercise_id}-{datetime.now():%Y%m%d-%H%M%S}"
         self.report_paths = queries.save_report(self.report_dir, name, self.report, self.progress.events,
@@ -215,7 +217,7 @@ class ClassroomHost:
         if unsaved and not self.ending:  # type: ignore[attr-defined]
             return _("Not ended: {unsaved} (save or close it first)").format(unsaved=unsaved)
         try:
-            text_path = run.finish()[0]
+            text_path = run.finish(self.bridge.poll().time_s)[0]
             said = _("Exercise ended, score {score}/100: report in {path}").format(
                 score=run.report["score"] if run.report else 0, path=text_path)
         except OSError as exc:

@@ -16,7 +16,8 @@ Events (dicts, ``t_s`` = simulated control time):
 ``alarm_came`` / ``alarm_went`` (number; ``went`` also ``by``: the last command before
 it), ``program_started``, ``program_ended`` (a correct end M2/M30: the kernel's
 ``$AC_OLD_PROG_NET_TIME_COUNT`` went up; with the alarms that came and the single-block
-stops made during the run), ``stop`` (reason), ``key``.
+stops made during the run), ``stop`` (reason), ``key``, ``ended`` (the session ended: the
+report's time runs to it, also when nothing changed in its last minutes).
 
 Step by step: a step's event checks look only at events after the previous step was
 done, so "the program ran to its end" means a run after the preceding step.
@@ -323,6 +324,15 @@ class ExerciseProgress:
     def observe_key(self, key: str) -> None:
         """A key the operator pressed (recorded for the instructor's replay)."""
         self._add("key", key=key)
+
+    def observe_end(self, time_s: float) -> None:
+        """The session ends at control time ``time_s`` (the time of the last snapshot that
+        changed may lie minutes before it)."""
+        self.now_s = float(time_s)
+        if self.started_s is None:
+            self.started_s = self.now_s
+        self._add("ended")
+        self._check()
 
     # -- replay ---------------------------------------------------------------------------
     def replay_event(self, event: Mapping[str, Any]) -> None:

@@ -248,6 +248,22 @@ def test_recording_replays_to_the_same_report(tmp_path: Path) -> None:
     assert again.report()["keys"] == 1 and again.finished
 
 
+def test_the_report_time_runs_to_the_end_of_the_session(tmp_path: Path) -> None:
+    # Referenced, then 40 s of control time with nothing to do: an idle machine's snapshot does
+    # not change (tests/kernel/test_snapshot_once.py), yet the session lasted until it ended.
+    # The end is recorded, so the replay says the same time.
+    exercise = EXERCISES["01_power_on_reference"]
+    s = Scripted(exercise, tmp_path / "run")
+    started_s = s.nck.status().time_s
+    s.reference()
+    s.run(40)
+    end_s = s.nck.status().time_s
+    s.progress.observe_end(end_s)
+    report = s.progress.report(exercise.title)
+    assert report["time_s"] == round(end_s - started_s, 1)
+    assert replay(exercise.steps, exercise.final_checks, s.progress.events).report(exercise.title) == report
+
+
 def finish_run(s: Scripted, starts: int = 5) -> None:
     """NC START until the channel is in reset (action blocks, REPOS, stops)."""
     for _ in range(starts):

@@ -105,6 +105,32 @@ async def test_ended_early_the_report_says_what_is_missing(tmp_path: Path) -> No
     assert "[ ] 2. Reference every axis with REF POINT.\n      not done: axes not referenced: Y, Z" in text
 
 
+async def test_the_report_time_runs_to_the_end_even_after_idle_minutes(tmp_path: Path) -> None:
+    # The panel follows the exercise on the snapshots that changed; an idle machine's does not
+    # (tests/kernel/test_snapshot_once.py). The terminal is lost after two idle minutes, no key
+    # pressed: the report still times the session to its end, and the saved recording replays
+    # to the same report.
+    app = trainee_app(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, *OPEN_LIST, START)
+        started_s = app.bridge.status.time_s
+        await burst(pilot, *REFERENCE_KEYS)
+        app.bridge.run_until(referenced, max_s=60)
+        await pilot.pause()
+        referenced_s = app.bridge.status.time_s
+        for _ in range(120):  # two minutes with nothing to do, at the panel's refresh period
+            app.bridge.advance(1.0)
+        await pilot.pause()
+        end_s = app.bridge.status.time_s
+        assert end_s - referenced_s >= 119.0
+        app.quit_unattended(129)
+        await pilot.pause()
+    saved = json.loads(next((tmp_path / "trainee" / "exercise_reports").glob("*.json")).read_text())
+    assert saved["report"]["time_s"] == round(end_s - started_s, 1)
+    exercise = {e.exercise_id: e for e in load_exercises()}["01_power_on_reference"]
+    assert replay(exercise.steps, exercise.final_checks, saved["events"]).report(exercise.title) == saved["report"]
+
+
 async def test_emergency_stop_cleared_with_the_wrong_key_then_the_right_one(tmp_path: Path) -> None:
     app = trainee_app(tmp_path)
     async with app.run_test(size=SIZE) as pilot:
