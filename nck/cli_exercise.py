@@ -53,6 +53,7 @@ def event_line(event: dict[str, Any], with_states: bool) -> str | None:
         "program_ended": lambda: f"{event['program']} ended" + (f", alarms {event['alarms']}" if event["alarms"] else ""),
         "stop": lambda: f"stop: {event['reason']}",
         "step_done": lambda: f"=== step {event['step']} done",
+        "ended": lambda: "=== session ended",
         "state": lambda: f"state: {event['state']['mode']} {event['state']['channel']}" if with_states else None,
     }.get(kind)
     text = what() if what is not None else None

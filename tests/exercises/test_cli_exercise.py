@@ -29,6 +29,7 @@ def test_replay_of_a_saved_session(tmp_path: Path, capsys: pytest.CaptureFixture
     s.do(cmd.CancelAlarms())
     s.progress.observe_key("alt+q")
     s.do(cmd.Reset())
+    s.progress.observe_end(s.nck.status().time_s)
     _, recording = save_report(tmp_path / "reports", "session", s.progress.report(exercise.title),
                                s.progress.events, exercise.exercise_id)
     assert main(["exercise", "replay", str(recording)]) == 0
@@ -36,7 +37,7 @@ def test_replay_of_a_saved_session(tmp_path: Path, capsys: pytest.CaptureFixture
     timeline = [line.split(" s  ", 1)[1] for line in out.split("\n\n")[0].splitlines()]
     assert timeline == ["alarm 3000 came", "key alt+l", "EmergencyStop pressed=False", "=== step 1 done",
                         "key f12", "CancelAlarms", "key alt+q", "Reset", "alarm 3000 went (Reset)",
-                        "=== step 2 done"]
+                        "=== step 2 done", "=== session ended"]
     assert "Score: 67/100" in out and "[ ] 3. Reference the axes in JOG." in out
 
 
