@@ -28,7 +28,8 @@ from __future__ import annotations
 import copy
 import functools
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from pathlib import Path
 from typing import Any, Callable, Iterator
 
 from nck.alarm_ids import BLOCK_TOO_COMPLEX
@@ -55,12 +56,15 @@ class CheckAlarm:
 
     Attributes:
         number: SINUMERIK alarm number.
-        line: 1-based source line (None when the alarm has no line).
+        line: 1-based source line of the checked text (None when the alarm has no line); for
+            an alarm in a program it called (a cycle, a subprogram), the line of the call.
         n: block number of the block, if known.
         text: the formatted alarm text.
         params: the alarm parameters.
         text_params: every value of the text's placeholders (the channel and block first, then
             ``params``): what a panel needs to format the text in another language.
+        called_file, called_line: where in the called program the alarm came (None for an
+            alarm of the checked text itself).
     """
 
     number: int
@@ -69,6 +73,8 @@ class CheckAlarm:
     text: str
     params: tuple[str, ...] = ()
     text_params: tuple[str, ...] = ()
+    called_file: str | None = None
+    called_line: int | None = None
 
 
 def _alarm(error: NcAlarmError, fallback_line: int | None = None) -> CheckAlarm:
@@ -226,7 +232,18 @@ def _run_alarm(name: str, text: str, machine: Any, programs: Any, data: NcData,
                                  should_stop=should_stop)
     except RecursionError:
         return _alarm(NcAlarmError(BLOCK_TOO_COMPLEX))
-    return _alarm(outcome.alarms[0]) if outcome.alarms else None
+    if not outcome.alarms:
+        return None
+    first = outcome.alarms[0]
+    frames = outcome.interpreter.call_stack if outcome.interpreter is not None else []
+    if len(frames) > 1 and frames[0].is_main and first.file is not None and not _same_program(first.file, name):
+        # the main program's level waits behind its call: its next line follows the call's
+        return replace(_alarm(first), line=frames[0].pc, called_file=first.file, called_line=first.line)
+    return _alarm(first)
+
+
+def _same_program(file: str, name: str) -> bool:
+    return Path(file).name.upper() == Path(name).name.upper()
 
 
 def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:

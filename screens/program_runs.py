@@ -194,8 +194,11 @@ class CheckAndSimulation:
             # What the program does wrong comes as alarms; an exception here is a bug of the check
             # (on_worker_state_changed reports it).
             for alarm in setting.iter_check(name, text, programs=programs):
-                batch.append(ErrorMark((alarm.line or 1) - 1, alarm.number,
-                                       alarm_text_in(panel_language, alarm.number, alarm.text_params, alarm.text)))
+                said = alarm_text_in(panel_language, alarm.number, alarm.text_params, alarm.text)
+                if alarm.called_file is not None:  # marked on the call: say where it came
+                    said += "  " + _("(in {program}, line {line})").format(program=alarm.called_file,
+                                                                           line=alarm.called_line)
+                batch.append(ErrorMark((alarm.line or 1) - 1, alarm.number, said))
                 if len(batch) >= STREAM_BATCH:
                     send(batch)
                     batch = []

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from nck.check import check_text, iter_check
+from nck.interp.sources import MemorySource
 
 
 def test_every_faulty_line_is_reported_with_its_line() -> None:
@@ -45,3 +46,24 @@ def test_run_time_alarm_found_by_interpretation() -> None:
     """A jump to a missing label is only found by interpreting: alarm 14080 on its line."""
     alarms = check_text("A.MPF", "N10 G1 X10 F100\nGOTOF NIX\nM30")
     assert [(a.number, a.line) for a in alarms] == [(14080, 2)]
+
+
+def test_an_alarm_in_a_called_program_is_marked_on_the_call() -> None:
+    """The editor marks lines of the text it shows: an alarm that comes in a cycle or a
+    subprogram belongs on the line that called it (DISPLOF keeps the block display at the call
+    block, 000 L802, 002 L23164), with the called program and its line kept for the message.
+    CYCLE82 feeds to depth with its line 8 ``G1 AX[_AX]=_ZFIN`` at the feed programmed before
+    the call: none here, so alarm 10860 there (data/cycles/CYCLE82.SPF)."""
+    call = "CYCLE82(5,0,2,-15,0,1)"
+    direct = check_text("A.MPF", f"; drilled\nN10 G0 X0 Y0 Z10\nN20 {call}\nN30 G0 X10\nN40 M30\n")
+    assert [(a.number, a.line, a.called_file, a.called_line) for a in direct] == [(10860, 3, "CYCLE82.SPF", 8)]
+    # a modal call runs after the motion block that ends at the position: that block is the call
+    modal = check_text("A.MPF", f"N10 G0 X0 Y0 Z10\nN20 MCALL {call}\nN30 G0 X10\nN40 X20\nN50 MCALL\nN60 M30\n")
+    assert [(a.line, a.called_file) for a in modal] == [(3, "CYCLE82.SPF")]
+    # two levels down: the line of the main program's call of the subprogram
+    programs = MemorySource({"HOLE.SPF": f"PROC HOLE\n{call}\nRET\n"})
+    nested = check_text("A.MPF", "N10 G0 X0 Y0 Z10\nN20 G0 X5\nN30 HOLE\nN40 M30\n", programs=programs)
+    assert [(a.line, a.called_file, a.called_line) for a in nested] == [(3, "CYCLE82.SPF", 8)]
+    # an alarm of the text itself keeps its own line and names no other program
+    own = check_text("A.MPF", "N10 G0 X0\nN20 G1 X10\nN30 M30\n")
+    assert [(a.number, a.line, a.called_file) for a in own] == [(10860, 2, None)]

@@ -414,3 +414,24 @@ async def test_an_unreadable_nc_folder_lists_no_programs_and_a_bug_is_not_hidden
         monkeypatch.setattr("nck.storage.NcFileSystem.all_programs", broken)
         with pytest.raises(ZeroDivisionError):
             app.program_names()
+
+
+async def test_a_cycle_alarm_is_marked_on_the_call_and_says_where(data_dir: Path) -> None:
+    """A cycle called without a feed stops in the cycle (10860 at CYCLE82.SPF line 8): the mark
+    is on the call line, Shift+F1 goes there and the message names the cycle's line (before,
+    the mark went to line 8 of the program shown, which had 2 lines: nothing to go to)."""
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "f2", *"holes", "enter")
+        await pilot.pause()
+        screen = app.screen
+        await pilot.press("ctrl+end", *"N10 G0 X0 Y0 Z10", "enter", *"N20 CYCLE82(5,0,2,-15,0,1)", "enter",
+                          *"N30 M30", "ctrl+home")
+        screen.check_now()
+        await settle(pilot)
+        assert [(m.line, m.number) for m in screen.editor.error_marks.values()] == [(2, 10860)]
+        await pilot.press("shift+f1")  # next error
+        await pilot.pause()
+        assert screen.editor.cursor_location[0] == 2
+        message = str(screen.query_one("#prog-message").render())
+        assert "10860" in message and "(in CYCLE82.SPF, line 8)" in message
