@@ -77,10 +77,25 @@ def _first_alarm(simulation: Any) -> str:
     return f"{alarm.number} {alarm_text_in(language(), alarm.number, alarm.params)}"
 
 
+def called_place(program: str, line: int | None) -> str:
+    """Where in a called cycle or subprogram an alarm came (said after the call's line)."""
+    return _("(in {program}, line {line})").format(program=program, line=line)
+
+
+def alarm_line(simulation: Any) -> str:
+    """The program's line the run's first alarm belongs to; for an alarm in a cycle or
+    subprogram the line of the call and where in the called program it came."""
+    alarm = simulation.alarms[0]
+    place = simulation.alarm_places[0] if simulation.alarm_places else None
+    if place is None or place.called_file is None:
+        return str(alarm.line)
+    return f"{place.line} {called_place(place.called_file, place.called_line)}"
+
+
 def path_note(simulation: Any) -> str:
     """The toolpath view's note: where the run stopped, else its blocks and pieces."""
     if simulation.alarms:
-        return _("stopped at line {line}: {alarm}").format(line=simulation.alarms[0].line,
+        return _("stopped at line {line}: {alarm}").format(line=alarm_line(simulation),
                                                            alarm=_first_alarm(simulation))
     if simulation.status == "timeout":
         return _("stopped after {blocks} blocks").format(blocks=simulation.blocks)
@@ -93,7 +108,7 @@ def material_note(simulation: Any) -> str:
     parts = [_("time {time}").format(time=f"{int(minutes)}:{seconds:04.1f}")]
     if simulation.alarms:
         alarm = simulation.alarms[0]
-        parts.append(_("alarm {number} at line {line}").format(number=alarm.number, line=alarm.line))
+        parts.append(_("alarm {number} at line {line}").format(number=alarm.number, line=alarm_line(simulation)))
     if simulation.events:
         parts.append(material_events(simulation))
     if not simulation.alarms and not simulation.events:
@@ -196,8 +211,7 @@ class CheckAndSimulation:
             for alarm in setting.iter_check(name, text, programs=programs):
                 said = alarm_text_in(panel_language, alarm.number, alarm.text_params, alarm.text)
                 if alarm.called_file is not None:  # marked on the call: say where it came
-                    said += "  " + _("(in {program}, line {line})").format(program=alarm.called_file,
-                                                                           line=alarm.called_line)
+                    said += "  " + called_place(alarm.called_file, alarm.called_line)
                 batch.append(ErrorMark((alarm.line or 1) - 1, alarm.number, said))
                 if len(batch) >= STREAM_BATCH:
                     send(batch)

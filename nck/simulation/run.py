@@ -141,6 +141,16 @@ SHOWN_TABLES_KEPT = 16
 """G code tables whose shown groups the recorder remembers (more than the path builder shares)."""
 
 
+@dataclass(frozen=True)
+class AlarmPlace:
+    """The main program's line an alarm belongs to: its own line, or for an alarm that came in a
+    cycle or subprogram the line that called it, with the called program and its line."""
+
+    line: int | None
+    called_file: str | None = None
+    called_line: int | None = None
+
+
 @dataclass
 class Simulation:
     """The outcome of :func:`simulate`."""
@@ -155,6 +165,8 @@ class Simulation:
     tool_times_s: dict[int, float]
     blocks: int
     checkpoints: Checkpoints | None = None  # heights along the way, kept by the sweep (for scrubbing)
+    alarm_places: list[AlarmPlace] = field(default_factory=list)
+    """Per alarm, the main program's line it belongs to (as the path's lines)."""
     _half_section: tuple[np.ndarray, np.ndarray] | None = field(default=None, init=False, repr=False,
                                                                  compare=False)  # drawn_path() of a lathe, made once
 
@@ -257,6 +269,14 @@ class PathRecorder:
         for command in getattr(block, "commands", ()):
             if isinstance(command, canon.Motion):
                 self._main_line_of[id(command)] = self._main_line
+
+    def place_of(self, alarm: NcAlarmError) -> AlarmPlace:
+        """The main program's line ``alarm`` belongs to: its own line in the main program, else
+        the line of the main program's block interpreted last (the call of the cycle or
+        subprogram it came in: the run stops there)."""
+        if alarm.file is None or _file_key(alarm.file) == self.main or not self._main_line:
+            return AlarmPlace(alarm.line)
+        return AlarmPlace(self._main_line, alarm.file, alarm.line)
 
     def _cutter(self) -> int:
         key = (self.tool, self.edge)
@@ -492,6 +512,7 @@ class Recording:
     path: Toolpath
     tool_times_s: dict[int, float]
     mcs_minus_wcs_mm: tuple[float, float, float] | None  # the work offset seen (no rotation)
+    alarm_places: list[AlarmPlace]  # per alarm of the run, its main program's line
 
 
 def record(
@@ -518,7 +539,8 @@ def record(
     nominal = sum(recorder.tool_times.values())
     share = run.machine_time_s / nominal if nominal > 0.0 else 0.0
     tool_times = {t: s * share for t, s in recorder.tool_times.items() if s > 0.0}
-    return Recording(run, recorder.toolpath(), tool_times, recorder.mcs_minus_wcs)
+    return Recording(run, recorder.toolpath(), tool_times, recorder.mcs_minus_wcs,
+                     [recorder.place_of(alarm) for alarm in run.alarms])
 
 
 def simulate(
@@ -557,7 +579,7 @@ def simulate(
     kept = Checkpoints(model.heights)
     events = sweep_path(model, path, done=lambda chords: kept.keep(chords, model.heights))
     return Simulation(blank, model, path, events, list(run.alarms), run.status, run.machine_time_s,
-                      tool_times, run.blocks, kept)
+                      tool_times, run.blocks, kept, recording.alarm_places)
 
 
 def choose_blank(text: str, setup: MachineSetup, offset: tuple[float, float, float] | None, path: Toolpath,

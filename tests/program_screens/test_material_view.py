@@ -336,6 +336,19 @@ async def test_simulation_reports_the_alarm_auto_stops_with(data_dir: Path) -> N
         assert "alarm 10860 at line 2" in pilot.app.screen.stock.status_text
 
 
+async def test_a_cycle_alarm_is_told_at_the_call_line(data_dir: Path) -> None:
+    # CYCLE82 feeds to depth at its line 8 with the feed programmed before the call: none here
+    (data_dir / "MPF" / "DEMO.MPF").write_text("N10 G0 X0 Y0 Z10\nN20 CYCLE82(5,0,2,-15,0,1)\nN30 M30\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await open_simulation(pilot)
+        screen = pilot.app.screen
+        assert "alarm 10860 at line 2 (in CYCLE82.SPF, line 8)" in screen.stock.status_text
+        await pilot.press("shift+f3")  # Material off: the toolpath view says the same place
+        await settle(pilot)
+        assert "stopped at line 2 (in CYCLE82.SPF, line 8): 10860" in screen.toolpath.status_text
+
+
 def simulation_then(*keys: str):
     """A snapshot's ``run_before``: open the simulation, press ``keys``, wait for the picture."""
     async def run_before(pilot) -> None:
