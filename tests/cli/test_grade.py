@@ -99,6 +99,16 @@ def test_alarms_tools_and_time_are_compared(tmp_path: Path, capsys: pytest.Captu
     assert report["checks"]["tools"]["details"] == ["- reference: T1", "+ student:   T2"]
 
 
+def test_an_alarm_in_a_cycle_names_the_cycle(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # The student drills without a feed: CYCLE82 stops at its line 8, the feed move to depth
+    # (10860, data/cycles/CYCLE82.SPF); the block is the cycle's, so the cycle is named.
+    reference = SQUARE.replace("N80 G0 Z5", "N80 G0 Z5\nN85 CYCLE82(5,0,2,-3,0,0)")
+    student = reference.replace("N30 G1 Z-1 F500", "N30 G0 Z-1").replace("N40 G1 X50 F1000", "N40 G0 X50") \
+        .replace("N50 Y50", "N50 G0 Y50")
+    _, report, _ = grade(tmp_path, capsys, student, reference)
+    assert report["checks"]["alarms"]["student"] == [{"number": 10860, "block": "CYCLE82.SPF line 8"}]
+
+
 def test_a_dwell_shows_in_the_machining_time(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     # G4 F2: a dwell of 2 s (002 L1253 programs it so; F under G4 is the dwell in seconds); path unchanged
     student = SQUARE.replace("N80", "N75 G4 F2\nN80")
