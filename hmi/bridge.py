@@ -31,6 +31,11 @@ from hmi.utilisation import UtilisationMeter
 REFRESH_PERIOD_S = 0.05
 """Timer period: the kernel is advanced and the screen refreshed at most 20 times a second."""
 
+SHOWN_AT_LEAST_EVERY_S = 1.0
+"""An unchanged snapshot is still handed to the screens once a second of control time: an idle
+machine's snapshot does not change, but some views show figures it does not carry (System
+utilisation's IPO cycles since power on)."""
+
 MAX_CATCH_UP_S = 0.25
 """After a stall (debugger, suspended terminal) the kernel catches up at most this much time."""
 
@@ -80,6 +85,7 @@ class NckBridge:
         self._target: MessagePump | None = None
         self._last_wall: float | None = None
         self._last_seq: int | None = None
+        self._posted_at_s = 0.0  # control time of the last snapshot posted
         self._last_log_seq = 0
         self._status: NckStatus = nck.status()
         self.refresh_count = 0
@@ -126,6 +132,7 @@ class NckBridge:
         _record_cuts(nck)
         self.ipo_cycle_s = float(getattr(nck, "ipo_cycle_s", self.ipo_cycle_s) or self.ipo_cycle_s)
         self._last_seq = None
+        self._posted_at_s = 0.0
         self._last_log_seq = 0
         self._status = nck.status()
         return previous
@@ -182,12 +189,13 @@ class NckBridge:
         recorder.attach(self.nck)
 
     def poll(self, force: bool = False) -> NckStatus:
-        """Read the snapshot; post it when ``seq`` changed, and stamp new log entries with the
-        wall clock (:attr:`alarm_times`)."""
+        """Read the snapshot; post it when ``seq`` changed (or :data:`SHOWN_AT_LEAST_EVERY_S`
+        passed), and stamp new log entries with the wall clock (:attr:`alarm_times`)."""
         status = self.nck.status()
         self._status = status
-        if force or status.seq != self._last_seq:
+        if force or status.seq != self._last_seq or status.time_s - self._posted_at_s >= SHOWN_AT_LEAST_EVERY_S:
             self._last_seq = status.seq
+            self._posted_at_s = status.time_s
             self.refresh_count += 1
             self._post(NckStatusChanged(status))
         self._stamp_new_log_entries()

@@ -1,4 +1,5 @@
-"""The bridge: advances the kernel by elapsed time, posts snapshots only on a new seq, reports refusals."""
+"""The bridge: advances the kernel by elapsed time, posts snapshots on a new seq (and once a
+second of control time), reports refusals."""
 
 from __future__ import annotations
 
@@ -54,6 +55,17 @@ def test_status_posted_only_when_seq_changes() -> None:
     bridge.submit(c.SetOverride("feed", 50))
     assert len(inbox.of(NckStatusChanged)) == first + 1
     assert inbox.of(NckStatusChanged)[-1].status.channel.overrides["feed"] == 50
+
+
+def test_an_unchanged_snapshot_is_shown_once_a_second() -> None:
+    """An idle machine's snapshot does not change; it is still posted once a second of control
+    time, for the views whose figures it does not carry (System utilisation)."""
+    clock = [0.0]
+    fake, bridge, inbox = make(clock)
+    first = len(inbox.of(NckStatusChanged))
+    for _ in range(int(2.0 / 0.05) + 1):  # two seconds of idle ticks, and one more
+        bridge.advance(0.05)
+    assert len(inbox.of(NckStatusChanged)) == first + 2
 
 
 def test_refusal_is_posted_with_reason() -> None:

@@ -1,9 +1,10 @@
 """Nothing is sent to the terminal while nothing on screen changed (issue 18).
 
-The kernel's snapshot changes at idle (a motor that holds an axis against
-gravity warms up, so ``seq`` grows every tick), but no digit on the screen
-does: no window may repaint then. A repaint is counted where the app hands
-an update to the terminal driver (``App._display``).
+The kernel's snapshot may change while no digit on the screen does: a motor that holds an
+axis against gravity warms up in every IPO cycle. The snapshot carries its temperature as the
+service screen shows it (a tenth of a degree); these tests carry it to 1e-9 degrees, so that
+``seq`` grows every idle tick again, and no window may repaint then. A repaint is counted where
+the app hands an update to the terminal driver (``App._display``).
 """
 
 from __future__ import annotations
@@ -13,12 +14,19 @@ from pathlib import Path
 
 import pytest
 
+import nck.snapshot
 import screens.setup
 
 from hmi.app import AREAS, HmiApp, make_app
 from hmi.area import AreaBase
 
 SIZE = (160, 48)
+
+
+@pytest.fixture(autouse=True)
+def snapshots_change_at_idle(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The warming Z drive's temperature in the snapshot to 1e-9 degrees (see the docstring)."""
+    monkeypatch.setattr(nck.snapshot, "TEMPERATURE_DECIMALS", 9)
 AREA_KEYS = {"machine": "alt+m", "parameter": "alt+o", "program": "alt+p",
              "program_manager": "alt+n", "diagnostics": "alt+a", "setup": "alt+s"}
 IDLE_TICKS = 10
