@@ -45,6 +45,12 @@ PROGRAM_STATE_WORDS = {"aborted": N_("aborted"), "running": N_("running"), "stop
                        "interrupted": N_("interrupted"), "waiting": N_("waiting")}
 """The program state as the MDA window's title line names it (the header has the long form)."""
 PROGRAM_SELECTION_LEVEL = 6
+RECORDING_SHOWN_EVERY_S = 0.25
+"""Simultaneous recording draws the growing cut at most this often (control time) while the
+channel runs, and at once when it stops or the view is opened. Our choice: the manuals give no
+refresh rate, and every drawing copies the blank and works out the path overlay of all chords
+so far (5 ms at 30,000 chords, linear), which the 20 snapshots a second of a running program
+would otherwise pay each."""
 """Program selection needs keyswitch position 1 (access level 6) or better."""
 SEARCH_MODES = {
     "contour": N_("with calculation, contour"),
@@ -84,6 +90,7 @@ class MachineScreen(AreaBase):
         self.show_basic_blocks = False
         """The basic block display (vertical softkey Basic blocks in AUTO and MDA) is on."""
         self._shown_mode: str | None = None
+        self._recording_shown_at_s: float | None = None  # control time of the last recording drawn
         self._mda_loaded = False
         self.jog = JogWindows(self)
         """The setting-up windows of JOG (T,S,M, Set WO, Position, Settings)."""
@@ -406,6 +413,7 @@ class MachineScreen(AreaBase):
         switcher = self.query_one(ContentSwitcher)
         if switcher.current != view_id:
             switcher.current = view_id
+            self._recording_shown_at_s = None  # a view just opened is drawn at once
         self._focus_for(view_id)
         if view_id == "view-jog":
             show_text(self.query_one("#jog-info", Static), self._jog_text(status))
@@ -431,7 +439,7 @@ class MachineScreen(AreaBase):
         elif view_id == "view-times":
             show_text(self.query_one("#times-table", Static), self._times_text(status))
         elif view_id == "view-simrec":
-            self._show_recording()
+            self._show_recording(status)
         elif self.view in JOG_WINDOWS:
             self.jog.show(self.view, status)
         elif view_id == "view-search":
@@ -462,9 +470,15 @@ class MachineScreen(AreaBase):
             self.set_focus(None)
 
     # -- simultaneous recording ---------------------------------------------------------------
-    def _show_recording(self) -> None:
-        """The cut of the running program as far as it executed (asked of the kernel anew on
-        each redraw; only a grown cut is drawn again)."""
+    def _show_recording(self, status: NckStatus) -> None:
+        """The cut of the running program as far as it executed (asked of the kernel anew, at most
+        every :data:`RECORDING_SHOWN_EVERY_S` while the channel runs; only a grown cut is drawn
+        again)."""
+        shown_at = self._recording_shown_at_s
+        if (shown_at is not None and status.channel.channel_state == "active"
+                and status.time_s - shown_at < RECORDING_SHOWN_EVERY_S):
+            return
+        self._recording_shown_at_s = status.time_s
         stock = self.query_one("#simrec-stock", StockView)
         cut = self.ask(RecordedCut())
         if cut is None:

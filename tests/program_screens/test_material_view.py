@@ -28,6 +28,7 @@ from hmi.widgets.stock_view import (
     render_pixels,
 )
 from nck.commands import SetKeyswitch
+from nck.queries import RecordedCut
 from nck.kernel import Nck
 from nck.machine import load_machine
 
@@ -535,6 +536,40 @@ async def test_simultaneous_recording_grows_while_the_program_runs(slots_dir: Pa
         await pilot.press("shift+f2", "minus", "f", "shift+f7")  # view keys and softkeys in a burst
         await pilot.pause()
         assert stock.view == "XZ" and stock.zoom == 1 and not stock.overlay
+
+
+async def test_the_recording_is_drawn_four_times_a_second_while_running(slots_dir: Path) -> None:
+    """While the program runs the panel gets 20 snapshots a second; the recording asks for the
+    cut and draws it at most every 0.25 s of control time (screens.machine), and at once when
+    the run ends."""
+    app = make_program_app(slots_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await start_recording(pilot)
+        screen = pilot.app.screen
+        asked: list[float] = []
+        ask = screen.ask
+
+        def counting(question):
+            if isinstance(question, RecordedCut):
+                asked.append(app.bridge.status.time_s)
+            return ask(question)
+
+        screen.ask = counting
+        for _ in range(40):  # two seconds of the run at the panel's refresh period
+            app.bridge.advance(0.05)
+            await pilot.pause()
+        assert app.bridge.status.channel.channel_state == "active"
+        assert 6 <= len(asked) <= 9
+        assert all(later - earlier >= 0.25 - 1e-9 for earlier, later in zip(asked, asked[1:]))
+        for _ in range(60):
+            app.bridge.advance(1.0)
+            await pilot.pause()
+            if app.bridge.status.channel.channel_state == "reset":
+                break
+        await pilot.pause()
+        stock = screen.query_one("#simrec-stock")
+        assert stock.status_text.startswith("ended")
+        assert float(stock.picture.heights.min()) == pytest.approx(-8.0)  # the circle's pocket
 
 
 def test_snapshot_simultaneous_recording_partly_cut(snap_compare, slots_dir: Path) -> None:
