@@ -208,6 +208,7 @@ class LookAhead:
     feed_pct: float = 100.0
     rapid_pct: float = 100.0
     ceiling_mm_s: float = 0.0  # the highest velocity limit of the segments buffered since the last recount
+    left_since_recount: bool = False  # an item left the buffer since: the ceiling may be lower now
 
     def __len__(self) -> int:
         return len(self.items)
@@ -259,6 +260,16 @@ class LookAhead:
         """:attr:`ceiling_mm_s` of the segments buffered now (with the current overrides)."""
         self.ceiling_mm_s = max((self.v_max(item) for item in self.items if isinstance(item, PlannedSegment)),
                                 default=0.0)
+        self.left_since_recount = False
+
+    def current_ceiling(self) -> float:
+        """:attr:`ceiling_mm_s` of the segments buffered now, counted again only when an item left
+        the buffer since the last count: otherwise the buffer is the one counted plus the items
+        appended since, each of which raised the ceiling to its limit as it came (and whatever
+        changes a limit replans the buffer, which counts again)."""
+        if self.left_since_recount:
+            self.recount_ceiling()
+        return self.ceiling_mm_s
 
     def replan_all(self) -> None:
         """Full backward pass (after an override change, a dry run or a revolutional feed's new
@@ -276,6 +287,7 @@ class LookAhead:
 
     def pop_front(self) -> BufferItem:
         """Remove and return the head item."""
+        self.left_since_recount = True
         return self.items.pop(0)
 
     def clear(self) -> None:

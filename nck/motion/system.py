@@ -470,8 +470,7 @@ class PlannedMotion(PathInterpolator):
         limit — an override, a dry run, a new spindle speed for a revolutional feed — replans
         the buffer, which counts the limits again. A profile replanned in a SOFT acceleration
         phase may overshoot its limit a little (the caller's margin)."""
-        self.la.recount_ceiling()
-        speed = max(self.v_path, self.la.ceiling_mm_s)
+        speed = max(self.v_path, self.la.current_ceiling())
         run = self.run
         if run is not None:
             speed = max(speed, abs(run.state()[1]))
