@@ -37,6 +37,7 @@ from nck.errors import NcAlarmError
 from nck.headless import interpret_only
 from nck.interp.program import load_program
 from nck.iso.dialect import dialect_for
+from nck.iso.loader import wants_iso
 from nck.lang.parser import parse_block
 from nck.lang.plain import NOT_SIMPLE_LINE
 from nck.machine import load_machine
@@ -156,7 +157,8 @@ def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:
     """Yield the control-structure problems of the whole text (IF without ENDIF, …).
 
     Uses the interpreter's program loader, which knows the nesting rules; run it
-    only on a text without syntax errors (it would report those again).
+    only on a text without syntax errors (it would report those again) — or on one that
+    switches to ISO mode (G291), whose syntax errors only the loader can find.
     """
     try:
         problems = load_program(name, text, dialect_for("siemens", None)).problems()
@@ -197,17 +199,22 @@ def iter_check(
     """Yield every problem of a program text, syntax errors first (streamed).
 
     The interpretation pass runs only when no syntax error was found (the run
-    would stop at the first one anyway).
+    would stop at the first one anyway). A text that switches to ISO dialect mode with G291 is
+    read as the interpreter reads it, its ISO lines translated (not line by line in Siemens
+    mode: ``G81 … R2`` is an ISO drilling cycle there, not a syntax error).
     """
-    syntax_lines: set[int | None] = set()
-    for alarm in iter_syntax_alarms(text, should_stop):
-        syntax_lines.add(alarm.line)
-        yield alarm
-    if syntax_lines or (should_stop is not None and should_stop()):
-        return
-    structure = list(iter_structure_alarms(name, text))
-    yield from structure
-    if structure:
+    if wants_iso(text, "siemens"):
+        static = list(iter_structure_alarms(name, text))
+    else:
+        syntax_lines: set[int | None] = set()
+        for alarm in iter_syntax_alarms(text, should_stop):
+            syntax_lines.add(alarm.line)
+            yield alarm
+        if syntax_lines or (should_stop is not None and should_stop()):
+            return
+        static = list(iter_structure_alarms(name, text))
+    yield from static
+    if static:
         return
     machine = machine or load_machine()
     data = data if data is not None else NcData()

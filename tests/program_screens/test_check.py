@@ -67,3 +67,14 @@ def test_an_alarm_in_a_called_program_is_marked_on_the_call() -> None:
     # an alarm of the text itself keeps its own line and names no other program
     own = check_text("A.MPF", "N10 G0 X0\nN20 G1 X10\nN30 M30\n")
     assert [(a.number, a.line, a.called_file) for a in own] == [(10860, 2, None)]
+
+
+def test_a_program_switching_to_iso_mode_is_read_in_iso_mode() -> None:
+    """G291 switches to ISO dialect mode (000 L740, L776): ``G81 X.. Y.. Z.. R.. F..`` is its
+    drilling cycle (000 L3431), not a Siemens syntax error in ``R2`` (the editor marked it 12080
+    while ``nck check`` found the program correct). An error in the Siemens part after G290
+    is still found on its line."""
+    iso = "G291\nG90 G54 G17\nS1000 M3\nG00 X0 Y0 Z10\nG81 X10 Y10 Z-5 R2 F100\nX20\nG80\nG290\nM30\n"
+    assert check_text("ISO.MPF", iso) == []
+    broken = iso.replace("G290\n", "G290\nG1 X==5\n")
+    assert [(a.number, a.line) for a in check_text("ISO.MPF", broken)] == [(12080, 9)]
