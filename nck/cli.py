@@ -183,6 +183,8 @@ def _machine(options: argparse.Namespace) -> MachineConfig:
 
 def _read_program(path_text: str) -> tuple[Path, str]:
     path = Path(path_text)
+    if path.is_dir():
+        raise CliError(f"'{path_text}' is a folder, not a program file")
     if not path.is_file():
         raise CliError(f"program file '{path_text}' not found")
     try:

@@ -107,6 +107,8 @@ def test_check_ok_and_problems(tmp_path: Path, capsys: pytest.CaptureFixture[str
 def test_command_line_problems_exit_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["run", str(tmp_path / "missing.mpf")]) == 2
     assert "not found" in capsys.readouterr().err
+    assert main(["check", str(tmp_path)]) == 2
+    assert f"'{tmp_path}' is a folder, not a program file" in capsys.readouterr().err
     assert main(["run"]) == 2
     assert main(["frobnicate"]) == 2
     prog = write(tmp_path, "P.MPF", "M30\n")
