@@ -281,14 +281,17 @@ class Interpreter:
     def _snapshot(self) -> tuple:
         """What a failing block must restore.
 
-        Frames are saved shallowly (program counter, loop ends, the variable
-        table); writes into existing variables and NC data are journaled; the
-        modal state is copied only when the next block can change it.
+        The current level's frame is saved shallowly (program counter, loop ends, the
+        variable table): a block changes only that frame until it leaves its level, and
+        :meth:`return_from` journals the caller's frame before the block can touch it (RET
+        to a target). Writes into existing variables and NC data are journaled; the modal
+        state is copied only when the next block can change it.
         """
         state = self.run_state
-        frames = [(f, _frame_copy(f)) for f in state.frames]
+        frames = state.frames
+        top = (frames[-1], _frame_copy(frames[-1])) if frames else None
         modal = copy.deepcopy(state.modal) if self._next_block_touches_modal() else None
-        return (list(state.frames), frames, modal, state.finished, state.message, self.skip_run)
+        return (list(frames), top, modal, state.finished, state.message, self.skip_run)
 
     def _next_block_touches_modal(self) -> bool:
         frame = self.run_state.frames[-1] if self.run_state.frames else None
@@ -308,7 +311,7 @@ class Interpreter:
         return bool(touches)
 
     def _rollback(self, saved: tuple) -> None:
-        frame_list, frames, modal, finished, message, skip_run = saved
+        frame_list, top, modal, finished, message, skip_run = saved
         for kind, key, old in reversed(self.undo_journal):
             if kind == "cell":
                 cell, offset = key
@@ -337,8 +340,8 @@ class Interpreter:
                 key()
         self.undo_journal = []
         state = self.run_state
-        for frame, saved_frame in frames:
-            frame.__dict__.update(saved_frame.__dict__)
+        if top is not None:
+            top[0].__dict__.update(top[1].__dict__)
         state.frames = frame_list
         if modal is not None:
             state.modal = modal
@@ -455,13 +458,21 @@ class Interpreter:
             frame.for_ends = {}
             frame.repeats = []
             return
-        self.run_state.frames.pop()
+        frames = self.run_state.frames
+        frames.pop()
+        if frames:  # the caller becomes the current level: saved for a rollback of this block
+            self._journal_frame(frames[-1])
         if frame.saved_gcodes is not None:
             self.run_state.modal.gcodes = dict(frame.saved_gcodes)
         if frame.saved_pframe is not None:  # SAVE also restores the programmable frame
             geo = self.builder.path.state(self.run_state.modal)
             geo.frames = geo.frames.with_programmable(frame.saved_pframe)
         self.dialect.after_return(self.run_state.modal, frame)  # ISO: G291 again after a PROC program
+
+    def _journal_frame(self, frame: Frame) -> None:
+        """Restore ``frame``'s own state as it is now if the current block is taken back."""
+        saved = _frame_copy(frame)
+        self.journal_undo(lambda: frame.__dict__.update(saved.__dict__))
 
     # ---------------------------------------------------------------- data writes
     def write_r(self, index: Any, value: Any) -> None:
