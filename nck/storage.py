@@ -27,7 +27,7 @@ import re
 import shutil
 from dataclasses import dataclass
 from pathlib import Path
-from stat import S_ISREG
+from stat import S_ISDIR, S_ISREG
 from typing import Any, Callable, Iterable, TypeVar, cast
 
 from nck.atomic import atomic_write_bytes, remove_stale_temp_files
@@ -178,6 +178,7 @@ class NcFileSystem:
 
     def __init__(self, root: Path | str) -> None:
         self.root = Path(root)
+        self._root_text = str(self.root)  # the root for look-ups on plain strings (_disk_listed)
         self.folders_set_aside: list[tuple[Path, Path]] = []
         for folder in (self.root, *(self.root / d for d in DIRECTORIES)):
             kept = plain_directory(folder)
@@ -225,27 +226,43 @@ class NcFileSystem:
                 raise StorageError("storage_too_many_levels", path=path)
         return "/".join(parts)
 
-    def _disk(self, canonical: str, folders: FolderNames | None = None) -> Path:
+    def _disk(self, canonical: str) -> Path:
         """The file on disk for a canonical path (matching names case-insensitively).
 
         Raises StorageError ``odd`` when a folder on the way is not a folder of its
         own (a link to one, a pipe, a file): nothing is read or written through it.
-        With ``folders`` (look-ups only) a folder's names come from its kept listing.
         """
         current = self.root
         for part in canonical.split("/"):
             if current != self.root and os.path.lexists(current) and not is_plain_directory(current):
                 raise StorageError("storage_not_nc_folder", path=current.name)
             candidate = current / part
-            if folders is not None:  # the listing says what exists (OSError: current is no folder)
-                same = folders.named(str(current)).get(part, ())
-                if same and str(candidate) not in same:
-                    candidate = Path(same[0])
-            elif not candidate.exists() and current.is_dir():
+            if not candidate.exists() and current.is_dir():
                 for existing in current.iterdir():
                     if existing.name.upper() == part:
                         candidate = existing
                         break
+            current = candidate
+        return current
+
+    def _disk_listed(self, canonical: str) -> str:
+        """:meth:`_disk` for look-ups, on plain strings: a folder's names come from its kept
+        listing (:class:`nck.file_texts.FolderNames`; OSError when a folder on the way is none)."""
+        root = self._root_text
+        current = root
+        for part in canonical.split("/"):
+            if current != root:
+                try:
+                    status = os.lstat(current)
+                except (OSError, ValueError):
+                    pass  # not there: the listing below raises
+                else:
+                    if not S_ISDIR(status.st_mode):
+                        raise StorageError("storage_not_nc_folder", path=os.path.basename(current))
+            candidate = os.path.join(current, part)
+            same = self._folders.named(current).get(part, ())
+            if same and candidate not in same:
+                candidate = same[0]
             current = candidate
         return current
 
@@ -341,14 +358,14 @@ class NcFileSystem:
         """The text of the program at a canonical path for the interpreter (undecodable bytes
         replaced), None when no regular file is there; read again only when the file changed
         (:class:`nck.file_texts.FileTexts`). Raises StorageError (odd folder) or OSError."""
-        disk = self._disk(canonical, self._folders)
+        disk = self._disk_listed(canonical)
         try:
             status = os.lstat(disk)
         except FileNotFoundError:
             return None
         if not S_ISREG(status.st_mode):
             return None  # a link, folder or pipe is never read
-        return self._texts.text(str(disk), status, lambda: read_regular_bytes(disk, MAX_IMPORT_BYTES).decode(
+        return self._texts.text(disk, status, lambda: read_regular_bytes(disk, MAX_IMPORT_BYTES).decode(
             "utf-8", errors="replace"))
 
     def read(self, path: str) -> str:

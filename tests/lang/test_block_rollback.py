@@ -47,6 +47,7 @@ def _state(interp: Interpreter) -> dict:
     "F=300 BB=1/0",
     "G2 AA=2 OUT=2 BB=1/0",
     "AA=2 X=20 F=300 CHF=-1",  # the feed is taken before the motion builder refuses CHF: only the copy undoes it
+    'AA=2 OUT=2 RET("NOWHERE")',  # leaves the level, then the caller has no such block (14080): back in SUB
 ])
 def test_a_failing_block_changes_nothing(failing):
     interp, before, alarm = _run_to_alarm(failing)
