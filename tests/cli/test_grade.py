@@ -147,7 +147,7 @@ def test_bad_input_gives_a_message_and_exit_2(tmp_path: Path, capsys: pytest.Cap
     assert main(["grade", str(tmp_path / "NONE.MPF"), "--reference", str(tmp_path / "R.MPF")]) == 2
     assert "program file" in capsys.readouterr().err
     assert main(["grade", str(tmp_path), "--reference", str(tmp_path / "R.MPF")]) == 2
-    assert "not found" in capsys.readouterr().err
+    assert "is a folder, not a program file" in capsys.readouterr().err
     assert main(["grade", str(tmp_path / "R.MPF")]) == 2  # --reference missing
     assert "--reference" in capsys.readouterr().err
     assert main(["grade", str(tmp_path / "R.MPF"), "--reference", str(tmp_path / "R.MPF"), "--timeout", "0"]) == 2
