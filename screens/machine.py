@@ -45,13 +45,13 @@ PROGRAM_STATE_WORDS = {"aborted": N_("aborted"), "running": N_("running"), "stop
                        "interrupted": N_("interrupted"), "waiting": N_("waiting")}
 """The program state as the MDA window's title line names it (the header has the long form)."""
 PROGRAM_SELECTION_LEVEL = 6
+"""Program selection needs keyswitch position 1 (access level 6) or better."""
 RECORDING_SHOWN_EVERY_S = 0.25
 """Simultaneous recording draws the growing cut at most this often (control time) while the
 channel runs, and at once when it stops or the view is opened. Our choice: the manuals give no
 refresh rate, and every drawing copies the blank and works out the path overlay of all chords
 so far (5 ms at 30,000 chords, linear), which the 20 snapshots a second of a running program
 would otherwise pay each."""
-"""Program selection needs keyswitch position 1 (access level 6) or better."""
 SEARCH_MODES = {
     "contour": N_("with calculation, contour"),
     "end_point": N_("with calculation, end point"),
