@@ -29,13 +29,13 @@ import copy
 import functools
 import re
 from dataclasses import dataclass, replace
-from pathlib import Path
 from typing import Any, Callable, Iterator
 
 from nck.alarm_ids import BLOCK_TOO_COMPLEX
 from nck.errors import NcAlarmError
 from nck.headless import interpret_only
 from nck.interp.program import load_program
+from nck.interp.sources import program_file_key
 from nck.iso.dialect import dialect_for
 from nck.iso.loader import wants_iso
 from nck.lang.parser import parse_block
@@ -243,14 +243,11 @@ def _run_alarm(name: str, text: str, machine: Any, programs: Any, data: NcData,
         return None
     first = outcome.alarms[0]
     frames = outcome.interpreter.call_stack if outcome.interpreter is not None else []
-    if len(frames) > 1 and frames[0].is_main and first.file is not None and not _same_program(first.file, name):
+    if (len(frames) > 1 and frames[0].is_main and first.file is not None
+            and program_file_key(first.file) != program_file_key(name)):
         # the main program's level waits behind its call: its next line follows the call's
         return replace(_alarm(first), line=frames[0].pc, called_file=first.file, called_line=first.line)
     return _alarm(first)
-
-
-def _same_program(file: str, name: str) -> bool:
-    return Path(file).name.upper() == Path(name).name.upper()
 
 
 def check_text(name: str, text: str, **options: Any) -> list[CheckAlarm]:

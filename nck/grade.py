@@ -135,9 +135,8 @@ def summarize(result: Any, main_file: str) -> RunSummary:
             tools.append(command.tool)
         elif isinstance(command, canon.Motion):
             motions.append(command)
-    alarms = tuple((a.number, label(canon.Source(a.file, a.line, a.n)) if a.file and a.line else
-                    f"N{a.n}" if a.n is not None else f"line {a.line}" if a.line else "-")
-                   for a in result.alarms)
+    alarms = tuple((a.number, label(canon.Source(a.file or main_file, a.line or 0, a.n))
+                    if a.n is not None or a.line else "-") for a in result.alarms)
     return RunSummary(status=result.status, alarms=alarms,
                       position_wcs=dict(result.position_wcs or {}), tools=tuple(tools),
                       machining_time_s=float(result.machine_time_s), path=toolpath(motions, label))

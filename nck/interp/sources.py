@@ -21,6 +21,11 @@ PROGRAM_FILE_LIMIT_BYTES = 50 * 1024 * 1024
 """Largest program file read (as large as the NC memory takes one, ``nck.storage.MAX_IMPORT_BYTES``)."""
 
 
+def program_file_key(name: str) -> str:
+    """A program file's name as compared: without folders, upper case."""
+    return name.replace("\\", "/").rsplit("/", 1)[-1].upper()
+
+
 def read_text_file(path: Path) -> str:
     """Read a program file as text; undecodable bytes never fail (latin-1 fallback).
 

@@ -48,6 +48,7 @@ from nck.canon import THREAD_AND_TAPPING_KINDS
 from nck.errors import NcAlarmError
 from nck.headless import DEFAULT_RAPID_MM_MIN, HeadlessRun, run_program
 from nck.interp.api import ProgramSource
+from nck.interp.sources import program_file_key
 from nck.machine import MachineConfig, load_machine
 from nck.motion.path import arc as arc_segment
 from nck.ncdata import NcData
@@ -226,7 +227,7 @@ class PathRecorder:
 
     def __init__(self, data: NcData, chord_tol_mm: float, turning: bool = False, main: str = "") -> None:
         self.data = data
-        self.main = _file_key(main)
+        self.main = program_file_key(main)
         self._main_line = 0
         self._main_line_of: dict[int, int] = {}  # id(motion) → the main program's line it runs for
         self.turning = turning
@@ -263,7 +264,7 @@ class PathRecorder:
         source = getattr(block, "source", None)
         if source is not None:
             if source.file != self._file:
-                self._file, self._in_main = source.file, _file_key(source.file) == self.main
+                self._file, self._in_main = source.file, program_file_key(source.file) == self.main
             if self._in_main:
                 self._main_line = source.line
         for command in getattr(block, "commands", ()):
@@ -274,7 +275,7 @@ class PathRecorder:
         """The main program's line ``alarm`` belongs to: its own line in the main program, else
         the line of the main program's block interpreted last (the call of the cycle or
         subprogram it came in: the run stops there)."""
-        if alarm.file is None or _file_key(alarm.file) == self.main or not self._main_line:
+        if alarm.file is None or program_file_key(alarm.file) == self.main or not self._main_line:
             return AlarmPlace(alarm.line)
         return AlarmPlace(self._main_line, alarm.file, alarm.line)
 
@@ -670,11 +671,6 @@ def blank_for(path: Toolpath, turning: bool = False) -> Blank:
     points = path.ends[cutting] if np.any(cutting) else path.ends
     reach = max((c.reach_mm for c in path.cutters if c is not None), default=0.0)
     return bar_around(points, reach) if turning else blank_around(points, reach)
-
-
-def _file_key(name: str) -> str:
-    """A program file's name as compared: without folders, upper case."""
-    return name.replace("\\", "/").rsplit("/", 1)[-1].upper()
 
 
 class _NoPrograms:
