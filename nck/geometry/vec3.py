@@ -1,17 +1,19 @@
 """Dot product and length of 3-vectors in plain floats, bit for bit numpy's.
 
 The path geometry was first written with numpy (``np.dot``, ``np.linalg.norm``) and every
-recorded result depends on its rounding. For three elements numpy's ``dot`` on the machines
-this project runs on is a chain of fused multiply-adds, ``fma(a2, b2, fma(a1, b1, a0 * b0))``:
-one rounding per step, not two, so a plain Python sum differs in the last bit in about a
-quarter of the cases. Python 3.11 has no ``math.fma``; :func:`fused_multiply_add` computes it
+recorded result depends on its rounding. For three elements numpy's ``dot`` takes one of two
+forms, depending on the BLAS kernel the machine's processor gets: a chain of fused
+multiply-adds, ``fma(a2, b2, fma(a1, b1, a0 * b0))`` (one rounding per step, not two: a plain
+Python sum differs in the last bit in about a quarter of the cases), or the plain sum
+``((0 + a0 * b0) + a1 * b1) + a2 * b2``. A probe at import finds which (on probe vectors where
+the two differ). Python 3.11 has no ``math.fma``; :func:`fused_multiply_add` computes it
 exactly: the product's rounding error comes from Dekker's split (``a * b == p + e`` exactly)
 and ``math.fsum`` rounds ``p + e + c`` once, correctly.
 
 A numpy call costs microseconds of dispatch for three elements; these functions cost about a
 third of that. Values the split cannot take exactly (very large, very small, not finite) go
-to numpy, and so does everything when numpy's ``dot`` turns out not to be that chain (the
-probe at import), so the results are numpy's on every machine.
+to numpy, and so does everything when numpy's ``dot`` is neither form, so the results are
+numpy's on every machine.
 """
 
 from __future__ import annotations
@@ -51,27 +53,38 @@ def _chain_dot(a: Sequence[float], b: Sequence[float]) -> float | None:
     return fused_multiply_add(a[2], b[2], inner)
 
 
-def _numpy_uses_the_chain() -> bool:
-    """True when numpy's 3-element ``dot`` gives the fused chain on probe vectors where the
-    chain differs from the plain sum in either order."""
-    probes = (((-0.619, -5.069, 0.875), (1.479, -9.738, -5.665)),
-              ((2.349, -7.466, -9.965), (7.428, -5.811, -5.69)),
-              ((-5.904, 8.82, 3.813), (9.331, 7.875, -4.024)))
-    for a, b in probes:
-        if _chain_dot(a, b) != float(np.dot(np.asarray(a), np.asarray(b))):
-            return False
-    return True
+def _plain_dot(a: Sequence[float], b: Sequence[float]) -> float:
+    return ((0.0 + a[0] * b[0]) + a[1] * b[1]) + a[2] * b[2]  # numpy's accumulator starts at +0.0
 
 
-_CHAIN = _numpy_uses_the_chain()
+PROBES = (((-0.619, -5.069, 0.875), (1.479, -9.738, -5.665)),
+          ((2.349, -7.466, -9.965), (7.428, -5.811, -5.69)),
+          ((-5.904, 8.82, 3.813), (9.331, 7.875, -4.024)))
+"""Vector pairs on which the fused chain and the plain sum (in either order) differ."""
+
+
+def _numpy_dot_form() -> str | None:
+    """``"chain"`` or ``"plain"``: the form numpy's 3-element ``dot`` gives on :data:`PROBES`;
+    None when it is neither."""
+    numpy_dots = [float(np.dot(np.asarray(a), np.asarray(b))) for a, b in PROBES]
+    if all(_chain_dot(a, b) == d for (a, b), d in zip(PROBES, numpy_dots)):
+        return "chain"
+    if all(_plain_dot(a, b) == d for (a, b), d in zip(PROBES, numpy_dots)):
+        return "plain"
+    return None
+
+
+_FORM = _numpy_dot_form()
 
 
 def dot3(a: Sequence[float], b: Sequence[float]) -> float:
     """``float(np.dot(a, b))`` of two 3-vectors, the same bits."""
-    if _CHAIN:
+    if _FORM == "chain":
         found = _chain_dot(a, b)
         if found is not None:
             return found
+    elif _FORM == "plain":
+        return _plain_dot(a, b)
     return float(np.dot(np.asarray(a, dtype=float), np.asarray(b, dtype=float)))
 
 

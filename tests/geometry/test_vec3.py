@@ -38,13 +38,17 @@ def test_dot_and_norm_are_numpys(a: tuple[float, float, float], b: tuple[float, 
         assert _bits(vec3.norm3(a)) == _bits(np.linalg.norm(np.asarray(a)))
 
 
-def test_the_chain_differs_from_a_plain_sum_on_the_probes() -> None:
-    """The probe vectors tell the fused chain from a sum of rounded products (either order)."""
-    a, b = (-0.619, -5.069, 0.875), (1.479, -9.738, -5.665)
-    chain = vec3.dot3(a, b)
-    assert chain != a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-    assert chain != a[2] * b[2] + (a[1] * b[1] + a[0] * b[0])
-    assert chain == float(np.dot(np.asarray(a), np.asarray(b)))
+def test_the_probes_tell_the_fused_chain_from_a_plain_sum() -> None:
+    """On every probe pair the fused chain differs from the plain sum in either order, so the
+    probe at import cannot mistake one form of numpy's ``dot`` for the other (numpy takes one
+    or the other depending on the processor)."""
+    for a, b in vec3.PROBES:
+        inner = vec3.fused_multiply_add(a[1], b[1], a[0] * b[0] + 0.0)
+        assert inner is not None
+        chain = vec3.fused_multiply_add(a[2], b[2], inner)
+        assert chain != ((0.0 + a[0] * b[0]) + a[1] * b[1]) + a[2] * b[2]
+        assert chain != a[2] * b[2] + (a[1] * b[1] + a[0] * b[0])
+        assert vec3.dot3(a, b) == float(np.dot(np.asarray(a), np.asarray(b)))
 
 
 def _np_cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
