@@ -228,9 +228,13 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         return super().pop_softkeys()
 
     def clear_softkey_levels(self) -> None:
-        """Back to the top softkey level (another area chosen, a program closed): no marking stays."""
+        """Back to the top softkey level (another area chosen, a program closed): no marking
+        stays, and the search bar closes with its softkey level."""
         if self._mark_anchor is not None:
             self.unmark()
+        if self.search_open:
+            self.search_open = False
+            self._show_view()
         super().clear_softkey_levels()
 
     def action_pop_menu(self) -> None:

@@ -257,6 +257,32 @@ async def test_search_replace_renumber_undo(data_dir: Path) -> None:
         assert screen.editor.text == "G0 X0\nG2 X5 F100\nG2 X7\nM30\n"
 
 
+@pytest.mark.parametrize(("away", "program"),
+                         [(("alt+m", "alt+p"), "MPF/NUM.MPF"), (("alt+n", "up", "enter"), "MPF/DEMO.MPF")],
+                         ids=["other-area-and-back", "another-program"])
+async def test_the_search_bar_closes_with_its_softkeys(data_dir: Path, away: tuple[str, ...], program: str) -> None:
+    """Leaving the editor's area resets its softkeys to the top level; the search bar goes with
+    its level, so the editor never shows a search bar under the top-level softkeys (F1 there is
+    Edit, not Find next)."""
+    (data_dir / "MPF" / "NUM.MPF").write_text("G0 X0\nG1 X5 F100 Z-1\nM30\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "down", "enter", "f2", "Z")  # NUM.MPF, Search bar, type
+        await pilot.pause()
+        screen = app.screen
+        bar = screen.query_one("#prog-search")
+        assert bar.display and screen.current_menu().find("program.find_next") is not None
+        await pilot.press(*away)
+        await pilot.pause()
+        assert app.screen is screen and screen.program == program
+        assert not bar.display and not screen.search_open
+        assert screen.current_menu().find("program.search") is not None
+        await pilot.press("f2", "enter")  # the search opens again (with its text) and finds
+        await pilot.pause()
+        assert bar.display
+        assert screen.editor.selection.start[0] == 1  # Z on the second line of either program
+
+
 async def test_mark_copy_paste(data_dir: Path) -> None:
     """Edit → Mark, move, Copy, move, Paste duplicates the marked block."""
     (data_dir / "MPF" / "NUM.MPF").write_text("A1\nB2\nC3\n")
