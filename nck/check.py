@@ -6,7 +6,7 @@ in a worker thread and shows the results as they come):
 1. **Block syntax**, line by line with the language's block parser: every
    faulty line is reported, so a trainee sees all syntax errors at once.
    Then the **control structure** of the whole text (IF/ENDIF, loops) with the
-   interpreter's program loader.
+   interpreter's program loader, on the lines without a syntax error.
 2. **Interpretation**: the interpreter runs the whole program headless (no axis
    moves; ``nck check``'s run, :func:`nck.headless.interpret_only`). This finds what one
    line cannot show (undefined labels, nesting, unknown subprograms, values out of
@@ -156,9 +156,9 @@ def iter_syntax_alarms(
 def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:
     """Yield the control-structure problems of the whole text (IF without ENDIF, …).
 
-    Uses the interpreter's program loader, which knows the nesting rules; run it
-    only on a text without syntax errors (it would report those again) — or on one that
-    switches to ISO mode (G291), whose syntax errors only the loader can find.
+    Uses the interpreter's program loader, which knows the nesting rules; it reports the
+    lines with syntax errors again (the only report of them in a text that switches to ISO
+    mode with G291, whose syntax errors only the loader can find).
     """
     try:
         problems = load_program(name, text, dialect_for("siemens", None)).problems()
@@ -198,8 +198,10 @@ def iter_check(
 ) -> Iterator[CheckAlarm]:
     """Yield every problem of a program text, syntax errors first (streamed).
 
-    The interpretation pass runs only when no syntax error was found (the run
-    would stop at the first one anyway). A text that switches to ISO dialect mode with G291 is
+    The control-structure problems follow, on lines without a syntax error (the loader
+    reports those lines again), so the editor lists what ``nck check`` lists. The
+    interpretation pass runs only when neither found anything (the run would stop at the
+    first one anyway). A text that switches to ISO dialect mode with G291 is
     read as the interpreter reads it, its ISO lines translated (not line by line in Siemens
     mode: ``G81 … R2`` is an ISO drilling cycle there, not a syntax error).
     """
@@ -210,9 +212,12 @@ def iter_check(
         for alarm in iter_syntax_alarms(text, should_stop):
             syntax_lines.add(alarm.line)
             yield alarm
-        if syntax_lines or (should_stop is not None and should_stop()):
+        if should_stop is not None and should_stop():
             return
-        static = list(iter_structure_alarms(name, text))
+        static = [alarm for alarm in iter_structure_alarms(name, text) if alarm.line not in syntax_lines]
+        if syntax_lines:
+            yield from static
+            return
     yield from static
     if static:
         return

@@ -42,6 +42,20 @@ def test_structure_errors_are_found_without_running() -> None:
     assert [(a.number, a.line, a.n) for a in alarms] == [(12640, 2, 20)]
 
 
+def test_syntax_and_structure_errors_are_listed_together_as_nck_check_lists_them() -> None:
+    """A text with a syntax error (N20: an address without value) and an IF without ENDIF
+    (N30): the editor lists both, as ``nck check`` does, so a trainee who fixes the syntax
+    error is not surprised by a second one; no run follows (it would stop at the first)."""
+    from nck.headless import check_program
+    from nck.machine import load_machine
+
+    text = "N10 G0 X0 Y0\nN20 G1 X10 Y F100\nN30 IF R1>0\nN40 G1 X20\nN50 M30\n"
+    alarms = check_text("A.MPF", text)
+    assert [(a.number, a.line, a.n) for a in alarms] == [(12080, 2, 20), (12640, 3, 30)]
+    headless = check_program(load_machine(), MemorySource({}), "A.MPF", text)
+    assert [(a.number, a.line) for a in alarms] == [(a.number, a.line) for a in headless]
+
+
 def test_run_time_alarm_found_by_interpretation() -> None:
     """A jump to a missing label is only found by interpreting: alarm 14080 on its line."""
     alarms = check_text("A.MPF", "N10 G1 X10 F100\nGOTOF NIX\nM30")
