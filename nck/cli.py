@@ -41,6 +41,16 @@ STDOUT_CLOSED_EXIT = 141
 """Exit code when the reader of stdout went away: 128 + SIGPIPE, what a shell reports for such tools."""
 
 
+DISPATCHED_COMMANDS = {
+    "exercise": "guided exercises: list them, replay a recorded session (nck exercise --help)",
+    "class-pack": "exercises with their programs and set-ups as one archive (nck class-pack --help)",
+    "md": "read and write machine and setting data (nck md --help)",
+    "setup": "read and change the machine set-up: blank, reference block (nck setup --help)",
+    "archive": "export or import all NC data as one file (nck archive --help)",
+}
+"""The commands with their own modules and parsers, as ``nck --help`` lists them."""
+
+
 def _build_parser() -> CliParser:
     parser = CliParser(prog="nck", description="Headless SINUMERIK NCK simulator")
     sub = parser.add_subparsers(dest="command")
@@ -71,6 +81,8 @@ def _build_parser() -> CliParser:
                        help=f"budget of simulated time per program (default {DEFAULT_RUN_TIMEOUT_S:g}); "
                             "a program not ended by then is reported (exit 3), e.g. an endless loop")
     sub.add_parser("version", help="print the version")
+    for name, summary in DISPATCHED_COMMANDS.items():
+        sub.add_parser(name, help=summary, add_help=False)  # listed only: _main hands them on first
     return parser
 
 
@@ -157,7 +169,7 @@ def _main(args: list[str]) -> int:
             return _run(options)
         if options.command == "grade":
             return _grade(options)
-        print("usage: nck {check,run,grade,exercise,class-pack,md,setup,archive,version} ...", file=sys.stderr)
+        _build_parser().print_usage(sys.stderr)
         return 2
     except CliError as exc:
         print(f"nck: {exc}", file=sys.stderr)
