@@ -21,7 +21,7 @@ from typing import Any
 from nck import StorageError, queries
 from nck.status import NckStatus
 
-from hmi.i18n import N_, _, error_text, exercise_text, reason_text, step_text
+from hmi.i18n import N_, _, counted, error_text, exercise_text, reason_text, step_text
 from hmi.program_files import ProgramFiles
 from hmi.startup import start_session
 
@@ -260,8 +260,8 @@ class ClassroomHost:
             written = queries.install_pack(pack, data_dir)
         except OSError as exc:  # writing into the class folder
             return _("Class pack not imported: {error}").format(error=error_text(exc))
-        return _("Class pack imported: {summary} ({files} files new or changed)").format(
-            summary=pack.summary(_), files=len(written))
+        return (_("Class pack imported: {summary}").format(summary=pack.summary(_)) + " "
+                + counted(len(written), N_("({count} file new or changed)"), N_("({count} files new or changed)")))
 
     def _class_dir(self) -> Path | None:
         """Where class packs are listed from and imported into (see :attr:`class_pack_dir`)."""

@@ -15,8 +15,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from nck import (LANGUAGES, SOURCE_LANGUAGE, Refused, alarm_text_in, check_language, gettext_catalogue, localized,
-                 os_refusal)
+from nck import (LANGUAGES, SOURCE_LANGUAGE, Refused, alarm_text_in, check_language, counted_text, gettext_catalogue,
+                 localized, os_refusal)
 from nck.commands import Rejected
 from nck.queries import rejected_by
 from nck.status import AlarmEntry
@@ -47,6 +47,13 @@ def _(message: str) -> str:
 def N_(message: str) -> str:  # noqa: N802 - the gettext convention
     """Mark ``message`` for the catalogue without translating it (tables defined at import)."""
     return message
+
+
+def counted(count: int, one: str, many: str) -> str:
+    """``one`` for a count of 1, else ``many`` (English texts marked with :func:`N_`, holding
+    ``{count}``), in the language shown now, with the count filled in: "(1 entry)", "(3 entries)"
+    (:func:`nck.translations.counted_text`)."""
+    return counted_text(count, one, many, _)
 
 
 WORDED_UNITS = (N_("rev/min"), N_("rpm"), N_("mm/rev"), N_("rev/s²"), N_("deg"), N_("deg/min"), N_("bits"))

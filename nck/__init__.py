@@ -44,7 +44,7 @@ from nck.refused import Refused as Refused
 from nck.translations import (LANGUAGES as LANGUAGES, SOURCE_LANGUAGE as SOURCE_LANGUAGE,
                               UnknownLanguage as UnknownLanguage, alarm_text_in as alarm_text_in,
                               check_language as check_language, localized as localized,
-                              gettext_catalogue as gettext_catalogue)
+                              gettext_catalogue as gettext_catalogue, counted_text as counted_text)
 
 if TYPE_CHECKING:
     # Building a kernel: the kernel itself, the one composition root (build_nck) and the kernel on a data directory.

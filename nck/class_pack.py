@@ -44,6 +44,7 @@ from nck.persistence import (
 )
 from nck.regular_files import check_export_target
 from nck.storage import StorageError, check_program_size
+from nck.translations import counted_text
 
 EXERCISE_FILE = re.compile(r"[A-Za-z0-9][A-Za-z0-9_-]{0,63}\.toml")
 PROGRAM_FILE = re.compile(r"[A-Za-z0-9][A-Za-z0-9_]{0,23}\.(MPF|SPF|mpf|spf)")
@@ -63,10 +64,8 @@ class ClassPack:
     def summary(self, translate: Callable[[str], str] = str) -> str:
         """What the pack holds, in words ("2 exercises, 1 program"); ``translate`` gives each
         count's text in the language shown (the panel's gettext; the command line's English)."""
-        def counted(count: int, one: str, more: str) -> str:
-            return translate(one if count == 1 else more).format(count=count)
-        return ", ".join((counted(len(self.exercises), "{count} exercise", "{count} exercises"),
-                          counted(len(self.programs), "{count} program", "{count} programs")))
+        return ", ".join((counted_text(len(self.exercises), "{count} exercise", "{count} exercises", translate),
+                          counted_text(len(self.programs), "{count} program", "{count} programs", translate)))
 
 
 def _program_names(exercise: Exercise) -> list[str]:

@@ -30,6 +30,7 @@ from nck.cli_parser import CliParser
 from nck.cli_password import level_of_password
 from nck.exercise import ExerciseError, exercise_dir
 from nck.persistence import Session
+from nck.translations import counted_text
 
 PROG = "nck class-pack"
 
@@ -110,7 +111,8 @@ def _import(options: argparse.Namespace, pack: ClassPack, data_dir: Path, out: T
               f"the current level is {how}", file=err)
         return 1
     written = install_pack(pack, data_dir)
-    print(f"Class pack {options.pack} imported: {pack.summary()} ({len(written)} files new or changed)", file=out)
+    files = counted_text(len(written), "({count} file new or changed)", "({count} files new or changed)")
+    print(f"Class pack {options.pack} imported: {pack.summary()} {files}", file=out)
     return 0
 
 

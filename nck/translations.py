@@ -31,7 +31,7 @@ import functools
 import gettext
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from nck.resources import AlarmDefinition, alarm_catalog, alarm_text, data_path, read_table
 
@@ -81,6 +81,13 @@ class PoTranslations(gettext.NullTranslations):
     def ngettext(self, msgid1: str, msgid2: str, n: int) -> str:
         """Plural forms are not used: the singular or plural English id, translated."""
         return self.gettext(msgid1 if n == 1 else msgid2)
+
+
+def counted_text(count: int, one: str, many: str, translate: Callable[[str], str] = str) -> str:
+    """``one`` for a count of 1, else ``many`` (English texts holding ``{count}``), through
+    ``translate``, with the count filled in: "1 program", "2 programs". The languages shown have
+    this one rule (English and German: the singular only for 1)."""
+    return translate(one if count == 1 else many).replace("{count}", str(count))
 
 
 def _po_string(line: str) -> str:

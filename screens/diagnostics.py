@@ -31,7 +31,7 @@ from hmi.alarm_times import date_time_text
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, alarm_text, error_text, exercise_text, reason_text
+from hmi.i18n import N_, _, alarm_text, counted, error_text, exercise_text, reason_text
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.widgets.plot import TracePlot
 from hmi.widgets.fixed_size_input import FixedSizeInput
@@ -345,7 +345,7 @@ class DiagnosticsScreen(AreaBase):
             write_export(path, data, replace=replace)
             return path
 
-        self._export(write, _("Alarm log written to {path} ({count} entries)").replace("{count}", str(len(rows))),
+        self._export(write, _("Alarm log written to {path}") + " " + counted(len(rows), N_("({count} entry)"), N_("({count} entries)")),
                      _("Export failed"))
 
     def _export(self, write: Callable[[bool], Path], done: str, failed: str) -> None:

@@ -35,7 +35,7 @@ from hmi.area import AreaBase
 from hmi.dialog import AreaDialog
 from hmi.dialogs import ChoiceDialog, ConfirmDialog
 from hmi.focus import focus_now
-from hmi.i18n import N_, _, error_text, refusal_text
+from hmi.i18n import N_, _, counted, error_text, refusal_text
 from hmi.journal import EditorJournal
 from hmi.program_files import DIRECTORIES, ProgramFileError, ProgramFiles, format_modified
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -318,7 +318,7 @@ class ProgramManagerScreen(AreaBase):
                     table.move_cursor(row=index)
                     break
         title = _(dict(DIRECTORIES).get(self.directory, N_("Workpiece")))
-        count = _("({count} entries)").format(count=len(self.entries))
+        count = counted(len(self.entries), N_("({count} entry)"), N_("({count} entries)"))
         self.query_one("#pm-path", Static).update(f" {title}   {self.directory}   {count}")
         self._update_info()
         self.refresh_softkeys()

@@ -33,7 +33,7 @@ from nck.queries import CheckSetting, Scrubber
 
 from hmi.child_job import ChildJob
 from hmi.focus import focus_now
-from hmi.i18n import _, language
+from hmi.i18n import N_, _, counted, language
 from hmi.softkeys import Softkey, SoftkeyMenu
 from hmi.simulation_softkeys import overlay_key, view_keys
 from hmi.widgets.nc_editor import ErrorMark
@@ -99,7 +99,8 @@ def path_note(simulation: Any) -> str:
                                                            alarm=_first_alarm(simulation))
     if simulation.status == "timeout":
         return _("stopped after {blocks} blocks").format(blocks=simulation.blocks)
-    return _("{blocks} blocks, {moves} moves").format(blocks=simulation.blocks, moves=len(simulation.path.starts))
+    return (counted(simulation.blocks, N_("{count} block"), N_("{count} blocks")) + ", "
+            + counted(len(simulation.path.starts), N_("{count} move"), N_("{count} moves")))
 
 
 def material_note(simulation: Any) -> str:
