@@ -37,8 +37,6 @@ def field_label(english: str) -> str:
 def workpiece_table(setup: Any, level: int, needed_level: int) -> DataTable:
     """The set-up ``setup`` as an editable table for access ``level``; edits need ``needed_level``."""
     concealed = setup.hidden and level > needed_level
-    columns = [Column("Field", 46, "<"), Column("Value", 14), Column("Unit", 5, "<"),
-               Column("Name (nck setup)", 20, "<")]
     rows = []
     for field in setup_fields(setup):
         secret = concealed and field.position
@@ -49,6 +47,9 @@ def workpiece_table(setup: Any, level: int, needed_level: int) -> DataTable:
                                 _("yes or no") if field.name == "hidden" else f"{field.unit}, MCS"))
         rows.append([Cell(label), Cell(text, field.name, "" if secret else field.text, needed_level, hint),
                      Cell("" if secret else field.unit), Cell(field.name)])
+    widest_label = max((len(row[0].text) for row in rows), default=0)  # German labels are longer
+    columns = [Column("Field", max(46, widest_label), "<"), Column("Value", 14), Column("Unit", 5, "<"),
+               Column("Name (nck setup)", 20, "<")]
     note = (_("Enter edit (level {level})   the blank's position is hidden from the trainee") if concealed
             else _("Enter edit (level {level})   ⇧F1 hides / shows the blank's position")).format(level=needed_level)
     return DataTable(TITLE, columns, rows, note)
