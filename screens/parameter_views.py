@@ -16,7 +16,7 @@ from nck.queries import DataView
 from nck.status import NckStatus
 
 from hmi.i18n import N_, _, data_text
-from hmi.widgets.data_table import Cell, Column, DataTable
+from hmi.widgets.data_table import Cell, Column, DataTable, widest_text
 
 LevelOf = Callable[[str], int]
 
@@ -177,7 +177,6 @@ def active_chain_table(view: DataView, status: NckStatus | None) -> DataTable:
     """The active frame chain: system frame for PRESET/scratching, base frame, active settable
     frame, and the total offset."""
     axes = path_axes(view)
-    columns = [Column("Frame", 30, "<")] + [Column(f"{a} [mm]", 11) for a in axes]
     active = status.channel.modal.gcodes.get(8, "G500") if status is not None else "G500"
     rows = []
     setframe = view.data.setframe  # the system frame for PRESET and scratching (Set WO under G500)
@@ -196,6 +195,7 @@ def active_chain_table(view: DataView, status: NckStatus | None) -> DataTable:
         rows.append([Cell(_("Total (MCS − WCS, with tool)"))] + [
             Cell(fixed(by_name[a].position_mcs - by_name[a].position_wcs) if a in by_name else "")
             for a in axes])
+    columns = [Column("Frame", widest_text(rows, 0, 30), "<")] + [Column(f"{a} [mm]", 11) for a in axes]
     return DataTable(_("Active work offset chain  (active settable frame: {frame})").format(frame=active), columns, rows,
                      "Rotations, scale and mirror: see Overview / Details")
 

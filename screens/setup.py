@@ -35,7 +35,7 @@ from hmi.i18n import LANGUAGES, N_, _, data_text, error_text, language
 from hmi.softkeys import Softkey, SoftkeyMenu, one_line, view_softkey
 from hmi.theme import HMI_THEMES, THEME_LABELS
 from hmi.widgets.data_table import (
-    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key, level_refusal,
+    EDIT_BINDINGS, Cell, Column, DataTable, TableCursor, TableWindow, edit_on_typed_key, level_refusal, widest_text,
 )
 from hmi.widgets.fixed_size_input import FixedSizeInput
 from screens.setup_workpiece import workpiece_table
@@ -87,8 +87,6 @@ def theme_text(active: str) -> Text:
 
 def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) -> DataTable:
     """One machine-data list as an editable table."""
-    columns = [Column("Number", 7, "<"), Column("Name", 30, "<"), Column("Value", 30),
-               Column("Unit", 8, "<"), Column("Act", 3, "<"), Column("Lvl", 3), Column("", 1, "<")]
     rows = []
     for row in store.rows("md", scope, axis=axis, search=search or None, level=level):
         d = row.ref.definition
@@ -108,6 +106,8 @@ def md_table(store: Any, scope: str, axis: str | None, search: str, level: int) 
                      Cell(row.value_text, row.ref.text, edit, row.write_level, hint),
                      Cell(_(row.unit)), Cell(row.activation), Cell(str(row.write_level)),
                      Cell("*" if row.pending else "")])
+    columns = [Column("Number", 7, "<"), Column("Name", 30, "<"), Column("Value", 30),
+               Column("Unit", widest_text(rows, 3, 8), "<"), Column("Act", 3, "<"), Column("Lvl", 3), Column("", 1, "<")]
     title = _(MD_VIEWS[scope]) + (" — " + _("axis {axis}").format(axis=axis) if axis else "")
     if search:
         title += "  " + _("(search: {text})").format(text=search)

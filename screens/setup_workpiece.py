@@ -13,7 +13,7 @@ from typing import Any
 from nck.queries import setup_fields
 
 from hmi.i18n import N_, _
-from hmi.widgets.data_table import Cell, Column, DataTable
+from hmi.widgets.data_table import Cell, Column, DataTable, widest_text
 
 HIDDEN_TEXT = N_("hidden")
 TITLE = N_("Machine set-up: what is clamped (positions in the MCS)")
@@ -47,8 +47,7 @@ def workpiece_table(setup: Any, level: int, needed_level: int) -> DataTable:
                                 _("yes or no") if field.name == "hidden" else f"{field.unit}, MCS"))
         rows.append([Cell(label), Cell(text, field.name, "" if secret else field.text, needed_level, hint),
                      Cell("" if secret else field.unit), Cell(field.name)])
-    widest_label = max((len(row[0].text) for row in rows), default=0)  # German labels are longer
-    columns = [Column("Field", max(46, widest_label), "<"), Column("Value", 14), Column("Unit", 5, "<"),
+    columns = [Column("Field", widest_text(rows, 0, 46), "<"), Column("Value", 14), Column("Unit", 5, "<"),
                Column("Name (nck setup)", 20, "<")]
     note = (_("Enter edit (level {level})   the blank's position is hidden from the trainee") if concealed
             else _("Enter edit (level {level})   ⇧F1 hides / shows the blank's position")).format(level=needed_level)

@@ -80,6 +80,12 @@ class Cell:
     hint: str = ""
 
 
+def widest_text(rows: list[list[Cell]], column: int, at_least: int) -> int:
+    """A width for ``column`` that holds the text of each of its cells in ``rows`` (at least
+    ``at_least``): for columns of labels or units, whose texts are longer in some languages."""
+    return max([at_least] + [len(row[column].text) for row in rows if column < len(row)])
+
+
 def level_refusal(cell: Cell, access_level: int) -> str:
     """Why ``cell`` cannot be changed at ``access_level`` (above the level it needs), in the panel's language."""
     return _("{name}: needs access level {level} (current level {current})").format(
