@@ -21,6 +21,7 @@ from rich.text import Text
 from nck.status import AlarmEntry, AlarmEvent
 
 from hmi.alarm_times import AlarmTimes, date_time_text
+from hmi.durations import clock
 from hmi.i18n import N_, _, alarm_text
 
 CLEAR_SYMBOLS: dict[str, str] = {
@@ -42,9 +43,7 @@ def clock_text(seconds: float | None) -> str:
     """``hh:mm:ss.cc`` of a simulated-control time; empty for None."""
     if seconds is None:
         return ""
-    hundredths = int(round(max(seconds, 0.0) * 100))
-    whole, cc = divmod(hundredths, 100)
-    return f"{whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d}.{cc:02d}"
+    return clock(seconds, 2)
 
 
 def source_text(entry: AlarmEntry) -> str:

@@ -24,6 +24,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ChoiceDialog, ValueDialog
+from hmi.durations import clock
 from hmi.focus import focus_now
 from hmi.i18n import N_, _, stop_reason_text
 from hmi.softkeys import Softkey, SoftkeyMenu, view_softkey
@@ -59,12 +60,6 @@ SEARCH_MODES = {
     "serupro": N_("by program test (SERUPRO)"),
 }
 """The block search types the search view offers (002 L18283-18309; :mod:`nck.block_search`)."""
-
-
-def format_duration(seconds: float) -> str:
-    """``hh:mm:ss`` of a simulated duration."""
-    whole = int(round(seconds))
-    return f"{whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d}"
 
 
 def _check(flag: object) -> str:
@@ -559,7 +554,7 @@ class MachineScreen(AreaBase):
             text.append(f"   SBL ({sbl})", style="bold #f39200")
         if channel.stop_reason:
             text.append("   " + _("stopped: {reason}").format(reason=stop_reason_text(channel.stop_reason)))
-        text.append("   " + _("runtime {time}").format(time=format_duration(channel.program_runtime_s))
+        text.append("   " + _("runtime {time}").format(time=clock(channel.program_runtime_s))
                     + "   " + _("parts {count}").format(count=channel.part_count))
         return text
 
@@ -593,8 +588,8 @@ class MachineScreen(AreaBase):
     def _times_text(self, status: NckStatus) -> Text:
         channel = status.channel
         text = Text()
-        rows = ((N_("Program runtime"), format_duration(channel.program_runtime_s)),
-                (N_("Last program runtime"), format_duration(channel.program_runtime_last_s)),
+        rows = ((N_("Program runtime"), clock(channel.program_runtime_s)),
+                (N_("Last program runtime"), clock(channel.program_runtime_last_s)),
                 (N_("Part count"), channel.part_count), (N_("Required parts"), channel.parts_required),
                 (N_("Total parts"), channel.parts_total))
         for label, value in rows:

@@ -32,6 +32,7 @@ from nck import alarm_text_in
 from nck.queries import CheckSetting, Scrubber
 
 from hmi.child_job import ChildJob
+from hmi.durations import short_clock
 from hmi.focus import focus_now
 from hmi.i18n import N_, _, counted, language
 from hmi.softkeys import Softkey, SoftkeyMenu
@@ -105,8 +106,7 @@ def path_note(simulation: Any) -> str:
 
 def material_note(simulation: Any) -> str:
     """One line: how the run ended (its alarm), the events, the machining time."""
-    minutes, seconds = divmod(simulation.machine_time_s, 60.0)
-    parts = [_("time {time}").format(time=f"{int(minutes)}:{seconds:04.1f}")]
+    parts = [_("time {time}").format(time=short_clock(simulation.machine_time_s))]
     if simulation.alarms:
         alarm = simulation.alarms[0]
         parts.append(_("alarm {number} at line {line}").format(number=alarm.number, line=alarm_line(simulation)))

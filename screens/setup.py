@@ -15,6 +15,7 @@ instructor moves the blank by typing its position and hides it from the trainee.
 
 from __future__ import annotations
 
+import math
 from datetime import datetime, timedelta
 from typing import Any, Callable, ClassVar
 
@@ -30,6 +31,7 @@ from nck.status import NckStatus
 
 from hmi.area import AreaBase, show_text
 from hmi.dialogs import ConfirmDialog, ValueDialog
+from hmi.durations import clock
 from hmi.focus import focus_now
 from hmi.i18n import LANGUAGES, N_, _, data_text, error_text, language
 from hmi.softkeys import Softkey, SoftkeyMenu, one_line, view_softkey
@@ -506,8 +508,7 @@ class SetupScreen(AreaBase):
             self.power_on_at = wall_clock() - timedelta(seconds=seconds)
         moment = self.power_on_at + timedelta(seconds=seconds)
         text.append(f"   {_('Date / time'):<23}{moment:%Y-%m-%d %H:%M:%S}\n")
-        whole = int(seconds)
-        text.append(f"   {_('Since power on'):<23}{whole // 3600:02d}:{whole % 3600 // 60:02d}:{whole % 60:02d} "
+        text.append(f"   {_('Since power on'):<23}{clock(math.floor(seconds))} "
                     + _("(simulated control time)") + "\n")
         return text
 
