@@ -80,10 +80,11 @@ class DiagnosticsScreen(AreaBase):
         Binding("right", "arrow(1)", "Trace cursor right", show=False),
         Binding("pagedown", "page(1)", "Older log entries", show=False),
         Binding("pageup", "page(-1)", "Newer log entries", show=False),
-        Binding("up", "select_row(-1)", "Select the alarm above", show=False),
-        Binding("down", "select_row(1)", "Select the alarm below", show=False),
+        Binding("up", "select_row(-1)", "Select the alarm or exercise above", show=False),
+        Binding("down", "select_row(1)", "Select the alarm or exercise below", show=False),
     ]
-    """Cursor keys move the trace cursor or select an alarm, page keys scroll the alarm log."""
+    """Cursor keys move the trace cursor or select an alarm or an exercise, page keys scroll the
+    alarm log."""
 
     def __init__(self) -> None:
         super().__init__(id="area-diagnostics")
@@ -240,7 +241,11 @@ class DiagnosticsScreen(AreaBase):
         return rows[min(self.selected_row, len(rows) - 1)] if rows else None
 
     def action_select_row(self, step: int) -> None:
-        """▲▼ in the alarm list and alarm log: select the alarm above or below."""
+        """▲▼ in the alarm list and alarm log: select the alarm above or below; in the exercise
+        list the exercise (as Next ▼ / Previous ▲)."""
+        if self.view == "exercises":
+            self.action_exercise_select(step)
+            return
         rows = self._selectable_rows()
         if not rows:
             return

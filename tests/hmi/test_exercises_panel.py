@@ -131,6 +131,21 @@ async def test_the_report_time_runs_to_the_end_even_after_idle_minutes(tmp_path:
     assert replay(exercise.steps, exercise.final_checks, saved["events"]).report(exercise.title) == saved["report"]
 
 
+@pytest.mark.parametrize("in_a_burst", [False, True], ids=["one-at-a-time", "burst"])
+async def test_the_arrow_keys_select_in_the_exercise_list(tmp_path: Path, in_a_burst: bool) -> None:
+    """▼ and ▲ move the selection as Next ▼ and Previous ▲ do (a trainee who pressed Down seven
+    times started the first exercise: the arrows did nothing in this list)."""
+    app = trainee_app(tmp_path)
+    keys = (*OPEN_LIST, *["down"] * 8, "up", START)  # the eighth exercise
+    async with app.run_test(size=SIZE) as pilot:
+        if in_a_burst:
+            await burst(pilot, *keys)
+        else:
+            await pilot.press(*keys)
+        assert app.hint == "Exercise started: Set up a job: find the blank by measuring"
+        await pilot.press("alt+a", END)
+
+
 async def test_emergency_stop_cleared_with_the_wrong_key_then_the_right_one(tmp_path: Path) -> None:
     app = trainee_app(tmp_path)
     async with app.run_test(size=SIZE) as pilot:

@@ -216,7 +216,7 @@ async def test_help_lists_the_keys_of_the_area(fake_app: HmiApp) -> None:
         assert fake_app.screen.id == "help"
         rows = help_lines(fake_app)
         assert ["Keys of Diagnostics"] in rows
-        for row in (["Up", "Select the alarm above"], ["Down", "Select the alarm below"],
+        for row in (["Up", "Select the alarm or exercise above"], ["Down", "Select the alarm or exercise below"],
                     ["PgDn", "Older log entries"], ["Shift+F2", "VSK2", "Alarm help"]):
             assert row in rows, row
         assert ["Ctrl+End", "End of program"] not in rows
@@ -224,4 +224,4 @@ async def test_help_lists_the_keys_of_the_area(fake_app: HmiApp) -> None:
         rows = help_lines(fake_app)
         assert ["Keys of Program"] in rows
         assert ["Ctrl+End", "End of program"] in rows
-        assert ["Up", "Select the alarm above"] not in rows
+        assert ["Up", "Select the alarm or exercise above"] not in rows
