@@ -60,14 +60,14 @@ def build_nck(
     programs: ProgramSource,
     *,
     access: AccessControl | None = None,
-    dialect: str = "siemens",
+    dialect: str | None = None,
     referenced: bool = False,
     motion_factory: Callable[[MachineConfig], Any] | None = None,
     on_interpreter: Callable[[Interpreter], None] | None = None,
 ) -> Nck:
     """The kernel on ``machine`` with the NC data ``data``, the programs of ``programs`` and
     the protection of ``access`` (None: unprotected), interpreting the language ``dialect``
-    (``siemens``, ``iso-m``, ``iso-t``).
+    (``siemens``, ``iso-m``, ``iso-t``; None: the machine data's mode after power on and RESET).
 
     ``referenced``: every axis is referenced at power on (headless runs); otherwise only
     those with an adjusted absolute encoder (MD34210). ``motion_factory``: the motion system

@@ -36,7 +36,7 @@ from nck.errors import NcAlarmError
 from nck.headless import interpret_only
 from nck.interp.program import load_program
 from nck.interp.sources import program_file_key
-from nck.iso.dialect import dialect_for
+from nck.iso.dialect import dialect_for, language_mode
 from nck.iso.loader import wants_iso
 from nck.lang.parser import parse_block
 from nck.lang.plain import NOT_SIMPLE_LINE
@@ -153,15 +153,16 @@ def iter_syntax_alarms(
         position = end
 
 
-def iter_structure_alarms(name: str, text: str) -> Iterator[CheckAlarm]:
-    """Yield the control-structure problems of the whole text (IF without ENDIF, …).
+def iter_structure_alarms(name: str, text: str, machine: Any = None) -> Iterator[CheckAlarm]:
+    """Yield the control-structure problems of the whole text (IF without ENDIF, …) in the
+    language mode of ``machine`` after RESET (the default mill's: Siemens mode).
 
     Uses the interpreter's program loader, which knows the nesting rules; it reports the
     lines with syntax errors again (the only report of them in a text that switches to ISO
     mode with G291, whose syntax errors only the loader can find).
     """
     try:
-        problems = load_program(name, text, dialect_for("siemens", None)).problems()
+        problems = load_program(name, text, dialect_for(None, machine)).problems()
     except RecursionError:
         return
     for error in problems:
@@ -201,12 +202,14 @@ def iter_check(
     The control-structure problems follow, on lines without a syntax error (the loader
     reports those lines again), so the editor lists what ``nck check`` lists. The
     interpretation pass runs only when neither found anything (the run would stop at the
-    first one anyway). A text that switches to ISO dialect mode with G291 is
-    read as the interpreter reads it, its ISO lines translated (not line by line in Siemens
-    mode: ``G81 … R2`` is an ISO drilling cycle there, not a syntax error).
+    first one anyway). A text in ISO dialect — the machine starts in ISO mode (MD20150[46]),
+    or the text switches with G291 — is read as the interpreter reads it, its ISO lines
+    translated (not line by line in Siemens mode: ``G81 … R2`` is an ISO drilling cycle
+    there, not a syntax error).
     """
-    if wants_iso(text, "siemens"):
-        static = list(iter_structure_alarms(name, text))
+    machine = machine or load_machine()
+    if wants_iso(text, language_mode(machine)):
+        static = list(iter_structure_alarms(name, text, machine))
     else:
         syntax_lines: set[int | None] = set()
         for alarm in iter_syntax_alarms(text, should_stop):
@@ -214,14 +217,13 @@ def iter_check(
             yield alarm
         if should_stop is not None and should_stop():
             return
-        static = [alarm for alarm in iter_structure_alarms(name, text) if alarm.line not in syntax_lines]
+        static = [alarm for alarm in iter_structure_alarms(name, text, machine) if alarm.line not in syntax_lines]
         if syntax_lines:
             yield from static
             return
     yield from static
     if static:
         return
-    machine = machine or load_machine()
     data = data if data is not None else NcData()
     stopped_by = _run_alarm(name, text, machine, programs, data, should_stop)
     if stopped_by is not None:

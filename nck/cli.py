@@ -88,7 +88,9 @@ def _build_parser() -> CliParser:
 
 def _common_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--machine", help="machine name or TOML file")
-    parser.add_argument("--dialect", default="siemens", choices=["siemens", "iso-m", "iso-t"])
+    parser.add_argument("--dialect", choices=["siemens", "iso-m", "iso-t"],
+                        help="language mode at program start (default: the machine data's, MD20150[46] "
+                             "with MD10880; Siemens mode on the shipped machines)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="before start: write an R parameter (R1=5), a tool edge ($TC_DP6[1,1]=4), "
                              "a work offset ($P_UIFR[1,X,TR]=100), machine or setting data "
@@ -188,7 +190,7 @@ def _main(args: list[str]) -> int:
 def _machine(options: argparse.Namespace) -> MachineConfig:
     from nck.resources import data_path
 
-    if not data_path("gcode", f"{options.dialect.replace('-', '_')}.toml").is_file():
+    if options.dialect and not data_path("gcode", f"{options.dialect.replace('-', '_')}.toml").is_file():
         raise CliError(f"language mode '{options.dialect}' is not available yet")
     return load_machine(options.machine)
 

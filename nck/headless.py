@@ -75,7 +75,7 @@ def run_program(
     timeout_s: float | None = None,
     max_blocks: int | None = None,
     on_command: Callable[[canon.CanonCommand], None] | None = None,
-    dialect: str = "siemens",
+    dialect: str | None = None,
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
     on_motion: Callable[[Any], None] | None = None,
@@ -86,6 +86,8 @@ def run_program(
     """Run ``program_name`` from channel reset to its end, an alarm or the timeout.
 
     ``text`` runs the given text under ``program_name`` instead of reading it.
+    ``dialect``: the language mode (``siemens``, ``iso-m``, ``iso-t``); None: the machine
+    data's mode after power on and RESET (:func:`nck.iso.dialect.language_mode`).
     ``on_command`` sees every canonical command as it is produced;
     ``keep_commands=False`` does not collect them in ``HeadlessRun.commands``
     (long programs: memory stays flat).
@@ -129,7 +131,7 @@ def run_on_kernel(
     *,
     timeout_s: float | None = None,
     on_command: Callable[[canon.CanonCommand], None] | None = None,
-    dialect: str = "siemens",
+    dialect: str | None = None,
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
     on_motion: Callable[[Any], None] | None = None,
@@ -295,7 +297,7 @@ def interpret_only(
     timeout_s: float | None = None,
     max_blocks: int | None = None,
     on_command: Callable[[canon.CanonCommand], None] | None = None,
-    dialect: str = "siemens",
+    dialect: str | None = None,
     text: str | None = None,
     skip_levels: frozenset[int] = frozenset(),
     keep_commands: bool = True,
@@ -428,7 +430,7 @@ CHECK_BLOCK_BUDGET = 200_000  # blocks a check may interpret before it stops qui
 
 def check_program(machine: MachineConfig, programs: ProgramSource, name: str, text: str,
                   data: NcData | None = None, max_blocks: int = CHECK_BLOCK_BUDGET,
-                  dialect: str = "siemens") -> list[NcAlarmError]:
+                  dialect: str | None = None) -> list[NcAlarmError]:
     """Every problem of a program: static ones (all lines), else the first run-time alarm.
 
     Static problems are syntax errors and control-structure errors of every
@@ -449,7 +451,7 @@ class CheckOutcome:
 
 def check_outcome(machine: MachineConfig, programs: ProgramSource, name: str, text: str,
                   data: NcData | None = None, max_blocks: int = CHECK_BLOCK_BUDGET,
-                  dialect: str = "siemens") -> CheckOutcome:
+                  dialect: str | None = None) -> CheckOutcome:
     """As :func:`check_program`, and say whether the program ended within ``max_blocks``."""
     found = load_program(name, text, dialect_for(dialect, machine)).problems()
     if found:

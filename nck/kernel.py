@@ -92,7 +92,7 @@ class _NoPrograms:
 def _default_interpreter_factory(
     machine: MachineConfig, programs: ProgramSource, data: NcData
 ) -> Interpreter:
-    return RealInterpreter(machine, programs, data, dialect=dialect_for("siemens", machine))
+    return RealInterpreter(machine, programs, data, dialect=dialect_for(None, machine))
 
 
 class Nck:

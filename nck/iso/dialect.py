@@ -6,8 +6,10 @@ the H numbers, ``$P_EXTGG`` and the ``$P_ISOFR_…`` frames, the ISO G groups of
 display, the ``$C_…`` hand-over of G65/G66 calls and the ISO ``M30`` rule.
 
 It also serves Siemens mode (``name == "siemens"``) on a control with the ISO option:
-a Siemens text that switches with G291 is translated, everything else is Siemens.
-:func:`dialect_for` builds the dialect of a language mode for a machine.
+a Siemens text that switches with G291 is translated (into the machine's external language,
+:func:`external_dialect`), everything else is Siemens. :func:`dialect_for` builds the dialect
+of a language mode for a machine; :func:`language_mode` is the mode the machine data give
+after power on and RESET.
 """
 
 from __future__ import annotations
@@ -36,10 +38,16 @@ class IsoDialect:
     name: str
     settings: IsoSettings | None = None
     gcode_table: str = "siemens"
+    switch_dialect: str = "iso-m"  # Siemens mode: what G291 switches to (the external language)
+
+    @property
+    def iso_name(self) -> str:
+        """The ISO dialect of this mode: its own, or in Siemens mode the one G291 switches to."""
+        return self.name if is_iso(self.name) else self.switch_dialect
 
     def program_key(self) -> object:
         """Programs are cached per mode (the settings belong to the machine)."""
-        return ("iso", self.name)
+        return ("iso", self.name, self.switch_dialect)
 
     def translated_lines(self, name: str, text: str, located: Located, guess_n: GuessN,
                          main: bool) -> list[Line] | None:
@@ -48,14 +56,15 @@ class IsoDialect:
             return None
         if not wants_iso(text, self.name):
             return None
-        return iso_lines(name, text, self.name, self.settings, located, guess_n, main)
+        return iso_lines(name, text, self.name, self.settings, located, guess_n, main,
+                         switch_dialect=self.switch_dialect)
 
     def gcode_display(self, modal: Any, levels: Sequence[CallLevel]) -> dict[int, str]:
         """ISO codes for the G-group display while ISO mode (G291) is active, else empty."""
         gcodes = modal.gcodes
         if gcodes.get(subprograms.ISO_MODE_GROUP) != "G291":
             return {}
-        turning = self.name == "iso-t"
+        turning = self.iso_name == "iso-t"
         view = display.iso_gcodes(gcodes, "iso-t" if turning else "iso-m")
         if not turning:  # ISO M frame groups 11/16/17/22 from the geometry state
             view.update(frames.display_codes(modal.geometry))
@@ -72,7 +81,7 @@ class IsoDialect:
             return macros.read(ctx, name, indices)
         if name.startswith(_H_NUMBERS):
             return tool_offsets.read(ctx, name, indices)
-        return display.read_extgg(ctx, self.name, indices)  # active ISO G code per ISO group
+        return display.read_extgg(ctx, self.iso_name, indices)  # active ISO G code per ISO group
 
     def writes_variable(self, name: str) -> bool:
         """``$C_…``, the H numbers and the ``$P_ISOFR_…`` frame operations."""
@@ -107,14 +116,43 @@ def is_iso(dialect: str) -> bool:
     return dialect in ISO_DIALECTS
 
 
-def dialect_for(name: str, machine: Any) -> IsoDialect:
-    """The dialect of language mode ``name`` with the machine's ISO machine data.
+EXTERN_CNC_SYSTEM = {1: "iso-m", 2: "iso-t"}
+"""MD10880 $MN_EXTERN_CNC_SYSTEM: the ISO dialect of the external language (000 L433, L470-475)."""
+ISO_MODE_AT_RESET = 2
+"""MD20150 $MC_GCODE_RESET_VALUES[46] (group 47): 1 G290 Siemens mode, 2 G291 ISO Dialect mode
+after power on and RESET (000 L466-475)."""
 
-    ``siemens`` gives Siemens mode with the G291 switch to ISO (no ISO settings, as
-    before: a switching program is translated with the defaults).
+
+def external_dialect(machine: Any) -> str:
+    """The ISO dialect G291 switches to on ``machine``: MD10880 (1 ISO M, 2 ISO T); when it is
+    not set (0) the one of the machine's kind (our choice: a lathe ISO T, a mill ISO M)."""
+    md_value = getattr(machine, "md_value", None)
+    system = md_value("MD10880", None, 0) if md_value else 0
+    if system in EXTERN_CNC_SYSTEM:
+        return EXTERN_CNC_SYSTEM[system]
+    return "iso-t" if getattr(machine, "kind", "mill") == "lathe" else "iso-m"
+
+
+def language_mode(machine: Any) -> str:
+    """The language mode after power on and RESET (000 L466-475): the external language
+    (:func:`external_dialect`) when MD20150[46] selects G291, else ``siemens``."""
+    md_value = getattr(machine, "md_value", None)
+    values = md_value("MD20150", None, None) if md_value else None
+    group_47 = values[46] if isinstance(values, (list, tuple)) and len(values) > 46 else None
+    return external_dialect(machine) if group_47 == ISO_MODE_AT_RESET else "siemens"
+
+
+def dialect_for(name: str | None, machine: Any) -> IsoDialect:
+    """The dialect of language mode ``name`` with the machine's ISO machine data; ``None``:
+    the machine's mode after power on and RESET (:func:`language_mode`).
+
+    ``siemens`` gives Siemens mode with the G291 switch to the machine's external language
+    (no ISO settings, as before: a switching program is translated with the defaults).
     """
+    if name is None:
+        name = language_mode(machine)
     if not is_iso(name):
-        return IsoDialect(name)
+        return IsoDialect(name, switch_dialect=external_dialect(machine))
     md_value = getattr(machine, "md_value", None)
     pocket = md_value("MD10884", None, True) if md_value else True
     is_c = md_value("MD10886", None, 0) if md_value else 0

@@ -33,15 +33,17 @@ def wants_iso(text: str, dialect: str) -> bool:
 
 def iso_lines(name: str, text: str, dialect: str, settings: IsoSettings | None,
               located: Callable[[NcAlarmError, str, int, int | None], NcAlarmError],
-              guess_n: Callable[[str], int | None], main: bool = False) -> list[Line]:
+              guess_n: Callable[[str], int | None], main: bool = False,
+              switch_dialect: str = "iso-m") -> list[Line]:
     """The program's :class:`~nck.lang.lines.Line` list, one or more per ISO line.
 
-    ``dialect`` is the language mode (``siemens``: a text switching with G291)."""
+    ``dialect`` is the language mode (``siemens``: a text switching with G291 into
+    ``switch_dialect``)."""
     lines: list[Line] = []
     iso = dialect in ISO_DIALECTS
     if iso and _numbered_proc_lines(text, name, located, guess_n, lines):
         return lines
-    for iso_line in translate(text, dialect if iso else "iso-m", settings,
+    for iso_line in translate(text, dialect if iso else switch_dialect, settings,
                               start_in_iso=iso, main=main and iso):
         number, raw = iso_line.number, iso_line.text
         if iso_line.error is not None:
