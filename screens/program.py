@@ -108,6 +108,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self._generation = 0
         self._marks_generation = -1
         self._check_running = False
+        self._checked_setting = b""  # the machine and NC data the last check ran on, pickled
         self._check_timer: Timer | None = None
         self._journaled_hash = ""
         self._mark_anchor: tuple[int, int] | None = None
@@ -167,7 +168,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         """Back in the area: open what the Program manager asked for, else the last program."""
         super().on_screen_resume()
         if self._ready:
-            self._open_requested()
+            if not self._open_requested():
+                self.check_again_if_the_setting_changed()
             self._update_read_only()
 
     def _open_requested(self) -> bool:

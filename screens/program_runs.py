@@ -18,6 +18,7 @@ starts; the answer's ``iter_check`` and ``simulate`` are what the workers call.
 from __future__ import annotations
 
 import math
+import pickle
 import threading
 import time
 from dataclasses import replace
@@ -126,6 +127,7 @@ class CheckAndSimulation:
     _generation: int
     _marks_generation: int
     _check_running: bool
+    _checked_setting: bytes
     _check_timer: Timer | None
     editor: Any
     toolpath: Any
@@ -194,8 +196,19 @@ class CheckAndSimulation:
         self._generation += 1
         self._check_running = True
         self._show_cursor_message()
+        setting = self.check_setting()
+        self._checked_setting = pickle.dumps(setting)
         self._check_worker(self._generation, self.program, self.editor.text,
-                           self.files.program_source(self.program), self.check_setting())
+                           self.files.program_source(self.program), setting)
+
+    def check_again_if_the_setting_changed(self) -> None:
+        """Check the open program again when the machine or NC data it was checked on changed
+        meanwhile (a tool edge added in the Parameter area, machine data made active by
+        Reset (po)): its marks would say what the old data said."""
+        if self.program is None or self.binary or not self._checked_setting:
+            return
+        if pickle.dumps(self.check_setting()) != self._checked_setting:
+            self.check_now()
 
     @work(thread=True, exclusive=True, group="program-check", exit_on_error=False, description=WORKER_DESCRIPTION)
     def _check_worker(self, generation: int, program: str, text: str, programs: Any, setting: Any) -> None:

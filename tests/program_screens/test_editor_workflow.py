@@ -283,6 +283,33 @@ async def test_the_search_bar_closes_with_its_softkeys(data_dir: Path, away: tup
         assert screen.editor.selection.start[0] == 1  # Z on the second line of either program
 
 
+async def test_the_check_runs_again_when_the_nc_data_changed_meanwhile(data_dir: Path) -> None:
+    """A program calling a tool the table lacks is marked (17191, 002 L58219); the trainee
+    creates the tool in the Parameter area and comes back: the program is checked again on the
+    new data and the mark goes. Coming back with nothing changed starts no check."""
+    from nck import commands as cmd
+
+    (data_dir / "MPF" / "TOOL.MPF").write_text("N10 T7 D1 M6\nN20 G0 X10\nN30 M30\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("alt+n", "down", "enter")
+        await settle(pilot)
+        screen = app.screen
+        assert screen.program == "MPF/TOOL.MPF"
+        assert [(m.line, m.number) for m in screen.editor.error_marks.values()] == [(0, 17191)]
+        checks = screen._generation
+        await pilot.press("alt+o", "alt+p")  # away and back, nothing changed: no new check
+        await settle(pilot)
+        assert screen._generation == checks
+        await pilot.press("alt+o")
+        app.submit(cmd.WriteData("$TC_DP1[7,1]", 120))  # the tool: an end mill T7 D1
+        app.submit(cmd.WriteData("$TC_DP3[7,1]", 80.0))
+        await pilot.press("alt+p")
+        await settle(pilot)
+        assert screen._generation == checks + 1
+        assert screen.editor.error_marks == {}
+
+
 async def test_mark_copy_paste(data_dir: Path) -> None:
     """Edit → Mark, move, Copy, move, Paste duplicates the marked block."""
     (data_dir / "MPF" / "NUM.MPF").write_text("A1\nB2\nC3\n")
