@@ -1,7 +1,9 @@
 """Word help: what the word under the editor's cursor means, from the data tables.
 
 A G function shows its meaning, its group and whether it is modal (``data/gcode/siemens.toml``,
-the table the G functions screen shows too); an M function or a system variable its meaning
+the table the G functions screen shows too; on a line read in ISO dialect its ISO group and
+whether it is modal, from ``data/gcode/iso_m.toml`` / ``iso_t.toml``, which name no meaning per
+code); an M function or a system variable its meaning
 (``data/gcode/words.toml``); a standard cycle its title and parameter list (its input form in
 ``data/cycles/cycles.toml``). Other words have no help.
 
@@ -17,6 +19,7 @@ import functools
 import re
 from dataclasses import dataclass
 
+from nck import iso_table
 from nck.queries import load_toml
 
 from hmi.i18n import _, data_text
@@ -50,6 +53,21 @@ def g_functions() -> dict[str, GFunction]:
 
 
 @functools.cache
+def iso_g_functions(dialect: str) -> dict[str, GFunction]:
+    """Every member of every G group of ISO dialect ``dialect`` (``iso-m``, ``iso-t``), by its
+    normalized name (``G00`` as ``G0``)."""
+    table: dict[str, GFunction] = {}
+    meanings = iso_table(dialect)[1]
+    for group in load_toml("gcode", f"{dialect.replace('-', '_')}.toml").get("group", []):
+        number = int(group["number"])
+        for name in group.get("members", []):
+            if name:
+                table[normalized(name)] = GFunction(name, number, meanings.get(number, ""),
+                                                    bool(group.get("modal", True)), "")
+    return table
+
+
+@functools.cache
 def _words() -> dict:
     return load_toml("gcode", "words.toml")
 
@@ -74,12 +92,17 @@ def normalized(word: str) -> str:
     return f"{numbered.group(1)}{int(numbered.group(2))}" if numbered else upper
 
 
-def word_help(word: str) -> str:
-    """One line saying what ``word`` means in the panel's language (``""`` when no table knows it)."""
+def word_help(word: str, dialect: str = "siemens") -> str:
+    """One line saying what ``word`` means in the panel's language (``""`` when no table knows
+    it), on a line read in language mode ``dialect`` (``siemens``, ``iso-m``, ``iso-t``)."""
     name = normalized(word)
     if not name:
         return ""
-    g_function = g_functions().get(name)
+    if dialect != "siemens":
+        iso = iso_g_functions(dialect).get(name)
+        if iso is not None:
+            return _iso_help(iso, dialect)
+    g_function = g_functions().get(name) if dialect == "siemens" else None
     if g_function is not None:
         modality = _("modal") if g_function.modal else _("non-modal (this block only)")
         group = _("group {number} ({meaning})").format(
@@ -101,6 +124,14 @@ def word_help(word: str) -> str:
         title = _("cycle {title}").format(title=data_text("cycle_form", name, "title", form.get("title", "")))
         return f"{name}: {title} — {name}({params})"
     return ""
+
+
+def _iso_help(g_function: GFunction, dialect: str) -> str:
+    modality = _("modal") if g_function.modal else _("non-modal (this block only)")
+    meaning = data_text(f"{dialect.replace('-', '_')}_group", g_function.group, "meaning", g_function.group_meaning)
+    dialect_name = _("ISO Dialect T") if dialect == "iso-t" else _("ISO Dialect M")
+    return f"{g_function.name}: {dialect_name} " + _("group {number} ({meaning})").format(
+        number=g_function.group, meaning=meaning) + f", {modality}"
 
 
 def code_meaning(name: str) -> str:

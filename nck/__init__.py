@@ -38,6 +38,7 @@ from nck.regular_files import read_regular_bytes as read_regular_bytes, write_ex
 from nck.canon import Motion as Motion
 # The ISO dialect's G groups as the G-functions window shows them.
 from nck.iso.display import ISO_MAIN_GROUPS_M as ISO_MAIN_GROUPS_M, iso_table as iso_table
+from nck.iso.dialect import ProgramLanguage as ProgramLanguage, program_language as program_language
 # A refusal a data layer raises (keyed).
 from nck.refused import Refused as Refused
 # Operator texts in more than one language: gettext catalogues and data-table overlays (data/lang).

@@ -33,7 +33,7 @@ from textual.timer import Timer
 from textual.widgets import Input, Static, TextArea
 from textual.widgets.text_area import Selection
 
-from nck import Action, StorageError, required_level
+from nck import Action, ProgramLanguage, StorageError, required_level
 from nck import commands as cmd
 from nck.commands import Rejected
 from nck.status import NckStatus
@@ -109,6 +109,7 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
         self._marks_generation = -1
         self._check_running = False
         self._checked_setting = b""  # the machine and NC data the last check ran on, pickled
+        self._language: ProgramLanguage | None = None  # how its lines are read (word help)
         self._check_timer: Timer | None = None
         self._journaled_hash = ""
         self._mark_anchor: tuple[int, int] | None = None
@@ -571,7 +572,8 @@ class ProgramScreen(EditActions, CycleActions, CheckAndSimulation, AreaBase):
     def _word_meaning(self) -> str:
         """What the word under the cursor means (G/M function, system variable, cycle), or ""."""
         row, column = self.editor.cursor_location
-        return word_help(word_at(self.editor.document.get_line(row), column))
+        dialect = self._language.dialect_at(row) if self._language is not None else "siemens"
+        return word_help(word_at(self.editor.document.get_line(row), column), dialect)
 
     def _update_title(self) -> None:
         if not self._ready:

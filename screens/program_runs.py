@@ -29,7 +29,7 @@ from textual import work
 from textual.timer import Timer
 from textual.worker import Worker, WorkerState, get_current_worker
 
-from nck import alarm_text_in
+from nck import ProgramLanguage, alarm_text_in, program_language
 from nck.queries import CheckSetting, Scrubber
 
 from hmi.child_job import ChildJob
@@ -128,6 +128,7 @@ class CheckAndSimulation:
     _marks_generation: int
     _check_running: bool
     _checked_setting: bytes
+    _language: ProgramLanguage | None
     _check_timer: Timer | None
     editor: Any
     toolpath: Any
@@ -198,6 +199,7 @@ class CheckAndSimulation:
         self._show_cursor_message()
         setting = self.check_setting()
         self._checked_setting = pickle.dumps(setting)
+        self._language = program_language(self.editor.text, setting.machine)
         self._check_worker(self._generation, self.program, self.editor.text,
                            self.files.program_source(self.program), setting)
 

@@ -14,6 +14,8 @@ after power on and RESET.
 
 from __future__ import annotations
 
+import bisect
+import re
 from dataclasses import dataclass
 from typing import Any, Sequence
 
@@ -171,3 +173,44 @@ def dialect_for(name: str | None, machine: Any) -> IsoDialect:
 def _start_unit(md_value: Any) -> str:
     """MD 20154[5]: the inch/metric code an ISO main program starts with."""
     return start_unit(md_value("MD20154", None, None)) if callable(md_value) else ""
+
+
+_SWITCH = re.compile(r"(?<![A-Z0-9_.])G29([01])(?![0-9.])", re.IGNORECASE)
+_COMMENT = re.compile(r";.*|\([^)]*\)")  # a Siemens comment, an ISO comment
+
+
+@dataclass(frozen=True)
+class ProgramLanguage:
+    """The language each line of a program text is read in (for the editor's word help): the
+    machine's mode at the start (:func:`language_mode`; a ``PROC`` program is Siemens), then
+    every G290 / G291 line switches. A reading of the text, not the interpreter's: a switch in a
+    skipped branch counts too."""
+
+    start: str
+    iso_dialect: str
+    switch_lines: tuple[int, ...] = ()  # 0-based lines with G290 or G291, in order
+    switch_to_iso: tuple[bool, ...] = ()
+
+    def dialect_at(self, line: int) -> str:
+        """``siemens``, ``iso-m`` or ``iso-t`` for the 0-based ``line`` (its own switch counts)."""
+        index = bisect.bisect_right(self.switch_lines, line) - 1
+        if index < 0:
+            return self.start
+        return self.iso_dialect if self.switch_to_iso[index] else "siemens"
+
+
+def program_language(text: str, machine: Any) -> ProgramLanguage:
+    """How the lines of ``text`` are read on ``machine`` (see :class:`ProgramLanguage`)."""
+    mode = language_mode(machine)
+    iso = external_dialect(machine) if not is_iso(mode) else mode
+    start = mode if is_iso(mode) and wants_iso(text, mode) else "siemens"
+    lines, to_iso = [], []
+    for index, line in enumerate(text.splitlines()):
+        if "29" not in line:
+            continue
+        found = _SWITCH.findall(_COMMENT.sub("", line))
+        if found:
+            lines.append(index)
+            to_iso.append(found[-1] == "1")
+    return ProgramLanguage(start, iso, tuple(lines), tuple(to_iso))
+

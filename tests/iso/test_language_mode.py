@@ -86,3 +86,16 @@ def test_g291_switches_to_the_machines_external_language(name: str, alarms: list
     assert [a.number for a in result.alarms] == alarms
     if not alarms:
         assert [m.end_mcs["X"] for m in result.segments if isinstance(m, canon.Motion)][-1] == 30.0
+
+
+def test_which_language_each_line_is_read_in() -> None:
+    """The editor's reading (word help): the machine's mode at the start, G291 / G290 lines
+    switch (their own line too); a comment's G291 does not; a PROC program is Siemens."""
+    from nck.iso.dialect import program_language
+
+    text = "N10 G0 X1\nN20 G291 ; to ISO\nN30 G00 X2.\nN40 (G290 in a comment)\nN50 G290\nN60 G1 X3\n"
+    on_mill = program_language(text, load_machine("mill3"))
+    assert [on_mill.dialect_at(i) for i in range(6)] == ["siemens", "iso-m", "iso-m", "iso-m", "siemens", "siemens"]
+    iso_lathe = machine_with("lathe2", 2, 2)
+    assert program_language("G00 X20.\n", iso_lathe).dialect_at(0) == "iso-t"
+    assert program_language("PROC CYC\nG0 X1\nRET\n", iso_lathe).dialect_at(1) == "siemens"

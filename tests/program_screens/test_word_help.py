@@ -90,3 +90,37 @@ async def test_editor_message_line_shows_the_meaning(language: str, name: str, g
         assert g1_text in message()
         await burst(pilot, "down", "end")
         assert m30_text in message()
+
+
+@pytest.mark.parametrize(("word", "dialect", "text"), [
+    # ISO Dialect T: G71 is the stock removal cycle of the non-modal group 18 (000 L701-712),
+    # not the Siemens G71 (metric, group 13); ISO M's G00 group 1 modal (the tables of data/gcode)
+    ("G71", "iso-t", "G71: ISO Dialect T group 18 (non-modal functions (turning cycles G70-G76, "
+                     "G92 preset and spindle limit)), non-modal (this block only)"),
+    ("G0", "iso-m", "G00: ISO Dialect M group 1 (motion), modal"),
+    ("G500", "iso-m", ""),  # a Siemens code, no ISO one
+    ("M3", "iso-t", "M3: spindle on, clockwise"),
+])
+def test_word_help_on_a_line_read_in_iso_dialect(word: str, dialect: str, text: str) -> None:
+    assert word_help(word, dialect) == text
+
+
+async def test_the_editor_reads_a_g291_line_and_the_lines_after_it_in_iso(data_dir: Path) -> None:
+    """A Siemens program that switches with G291 on the mill (ISO Dialect M): G00 before the
+    switch is the Siemens G0, after it ISO M's; G290 switches back."""
+    (data_dir / "MPF" / "MIXED.MPF").write_text("N10 G00 X0\nN20 G291\nN30 G00 X1.\nN40 G290\nN50 G00 X2\nM30\n")
+    app = make_program_app(data_dir)
+    async with app.run_test(size=SIZE) as pilot:
+        await burst(pilot, "alt+n", "down", "enter")
+        screen = app.screen
+        assert screen.program == "MPF/MIXED.MPF"
+        await settle(pilot)
+        message = lambda: str(screen.query_one("#prog-message").render())  # noqa: E731
+        seen = []
+        for _row in range(3):
+            await burst(pilot, "home", "right", "right", "right", "right", "right")
+            seen.append(message().split("│ ")[-1])
+            await burst(pilot, "down", "down")
+        assert seen[0].startswith("G0: ") and "ISO" not in seen[0]
+        assert seen[1] == "G00: ISO Dialect M group 1 (motion), modal"
+        assert seen[2].startswith("G0: ") and "ISO" not in seen[2]
