@@ -151,9 +151,22 @@ class Profile:
         return out
 
     def state_at(self, t: float) -> tuple[float, float, float]:
-        """Distance, velocity and acceleration at one instant."""
-        s, v, a = self.sample(np.array([t]))
-        return float(s[0]), float(v[0]), float(a[0])
+        """Distance, velocity and acceleration at one instant (:meth:`sample`'s values).
+
+        In a phase without jerk, with Python floats: the terms of :meth:`sample` with their
+        jerk term exactly zero (the kernel asks this every IPO cycle while it steps single
+        cycles, e.g. while a tool is in the material); with jerk through :meth:`sample`, whose
+        ``dt**3`` numpy may round differently from Python."""
+        t = min(max(t, 0.0), self.duration_s)
+        index = max(bisect_right(self.starts, t) - 1, 0)
+        t0, s0, v0, a0, j = self.phases[index]
+        dt = t - t0
+        if j != 0.0 or not dt < 1e100:
+            s, v, a = self.sample(np.array([t]))
+            return float(s[0]), float(v[0]), float(a[0])
+        # sample's expressions, term by term; j·dt³ is a zero of j's sign however dt³ rounds
+        distance = s0 + v0 * dt + a0 * dt * dt / 2.0 + j * (dt * dt * dt) / 6.0
+        return min(distance, self.length), v0 + a0 * dt + j * dt * dt / 2.0, a0 + j * dt
 
 
 class _Builder:

@@ -194,3 +194,18 @@ def test_tangent_and_curvature_of_an_arc_equal_the_numpy_form(centre: list[float
         first, second = _reference_derivatives(segment, 1.0 if at_end else 0.0)
         assert segment.curvature(at_end).tolist() == second.tolist()
         assert segment.tangent(at_end).tolist() == (first / math.sqrt(float(first @ first))).tolist()
+
+
+@settings(max_examples=300)
+@given(st.floats(0.01, 200.0), st.floats(0.0, 80.0), st.floats(0.0, 80.0), st.floats(1.0, 100.0),
+       st.floats(100.0, 5000.0), st.one_of(st.none(), st.floats(1e3, 1e5)),
+       st.lists(st.floats(-0.1, 1.1), min_size=1, max_size=8))
+def test_state_at_equals_the_numpy_sample(length: float, v0: float, v1: float, vmax: float, accel: float,
+                                          jerk: float | None, fractions: list[float]) -> None:
+    """The kernel's velocity bound asks ``state_at`` every IPO cycle while it steps single
+    cycles; in a phase without jerk it works in Python floats, and gives ``sample``'s values
+    (before, during and after the profile, and at each phase start)."""
+    profile = build_profile(length, v0, v1, vmax, accel, jerk)
+    for t in [f * profile.duration_s for f in fractions] + list(profile.starts):
+        s, v, a = profile.sample(np.array([t]))
+        assert repr(profile.state_at(t)) == repr((float(s[0]), float(v[0]), float(a[0])))
