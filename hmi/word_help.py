@@ -1,9 +1,8 @@
 """Word help: what the word under the editor's cursor means, from the data tables.
 
 A G function shows its meaning, its group and whether it is modal (``data/gcode/siemens.toml``,
-the table the G functions screen shows too; on a line read in ISO dialect its ISO group and
-whether it is modal, from ``data/gcode/iso_m.toml`` / ``iso_t.toml``, which name no meaning per
-code); an M function or a system variable its meaning
+the table the G functions screen shows too; on a line read in ISO dialect the same from
+``data/gcode/iso_m.toml`` / ``iso_t.toml``); an M function or a system variable its meaning
 (``data/gcode/words.toml``); a standard cycle its title and parameter list (its input form in
 ``data/cycles/cycles.toml``). Other words have no help.
 
@@ -60,10 +59,11 @@ def iso_g_functions(dialect: str) -> dict[str, GFunction]:
     meanings = iso_table(dialect)[1]
     for group in load_toml("gcode", f"{dialect.replace('-', '_')}.toml").get("group", []):
         number = int(group["number"])
+        codes = group.get("codes", {})
         for name in group.get("members", []):
             if name:
                 table[normalized(name)] = GFunction(name, number, meanings.get(number, ""),
-                                                    bool(group.get("modal", True)), "")
+                                                    bool(group.get("modal", True)), str(codes.get(name, "")))
     return table
 
 
@@ -127,11 +127,14 @@ def word_help(word: str, dialect: str = "siemens") -> str:
 
 
 def _iso_help(g_function: GFunction, dialect: str) -> str:
+    """``G71: stock removal … — ISO Dialect T group 18 (…), non-modal (this block only)``."""
+    table = dialect.replace("-", "_")
     modality = _("modal") if g_function.modal else _("non-modal (this block only)")
-    meaning = data_text(f"{dialect.replace('-', '_')}_group", g_function.group, "meaning", g_function.group_meaning)
+    group_meaning = data_text(f"{table}_group", g_function.group, "meaning", g_function.group_meaning)
+    meaning = data_text(f"{table}_code", g_function.name, "meaning", g_function.meaning)
     dialect_name = _("ISO Dialect T") if dialect == "iso-t" else _("ISO Dialect M")
-    return f"{g_function.name}: {dialect_name} " + _("group {number} ({meaning})").format(
-        number=g_function.group, meaning=meaning) + f", {modality}"
+    group = _("group {number} ({meaning})").format(number=g_function.group, meaning=group_meaning)
+    return f"{g_function.name}: {meaning} — {dialect_name} {group}, {modality}"
 
 
 def code_meaning(name: str) -> str:

@@ -11,7 +11,7 @@ folder ``data/lang/<code>/``:
 * ``<table>.toml`` — overlays of the data tables, keyed by the entry's identity with the
   same field names as the English entry: ``[alarm.10860] text = "…"`` in ``alarms.toml``,
   ``[md.32000] title = "…"`` in ``md.toml``, ``[group.1] meaning = "…"`` (also ``[code.G1]``,
-  ``[iso_m_group.1]``, ``[iso_t_group.1]``) in ``gcode.toml``, ``[key."nc.reset"] label = "…"``
+  ``[iso_m_group.1]``, ``[iso_t_group.1]``, ``[iso_t_code.G71]``) in ``gcode.toml``, ``[key."nc.reset"] label = "…"``
   in ``keymap.toml``, ``[m_function.M3] meaning = "…"`` (also ``[system_variable."$P_F"]``,
   ``[system_variable_prefix."$MN_"]``) in ``words.toml``, ``[cycle_form.CYCLE81] title = "…"``
   and ``[cycle_param."CYCLE81.RTP"] help = "…"``, ``[cycle_sketch.drill] text = "…"``, ``[cycle_menu.drilling] label = "…"``,
@@ -41,7 +41,8 @@ LANGUAGES: dict[str, str] = {"en": "English", "de": "Deutsch"}
 
 OVERLAY_TABLES: dict[str, str] = {"alarm": "alarms.toml", "md": "md.toml", "group": "gcode.toml",
                                   "code": "gcode.toml", "iso_m_group": "gcode.toml",
-                                  "iso_t_group": "gcode.toml", "key": "keymap.toml",
+                                  "iso_t_group": "gcode.toml", "iso_m_code": "gcode.toml",
+                                  "iso_t_code": "gcode.toml", "key": "keymap.toml",
                                   "m_function": "words.toml", "system_variable": "words.toml",
                                   "system_variable_prefix": "words.toml",
                                   "cycle_form": "cycles.toml", "cycle_param": "cycles.toml",

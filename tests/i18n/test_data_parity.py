@@ -2,7 +2,7 @@
 
 The English texts are the entries of ``data/alarms`` (text and the help's explanation and
 remedy), ``data/md``, ``data/keymap.toml`` and ``data/gcode`` (the Siemens and ISO G groups, the
-G functions' meanings, and the editor's word help of ``words.toml``), ``data/cycles/cycles.toml``
+G functions' meanings (Siemens and ISO), and the editor's word help of ``words.toml``), ``data/cycles/cycles.toml``
 (the editor's cycle forms: each form's title, each parameter's help line and each sketch) and the guided exercises
 of ``data/exercises`` (title, level, summary, every step's text and hint), the kernel's refusals of
 ``data/refusals.toml`` and the protected functions' titles of ``data/access.toml``; the translations are the
@@ -41,6 +41,9 @@ def base_entries() -> dict[str, dict[str, dict[str, str]]]:
     for dialect in ("iso_m", "iso_t"):
         entries[f"{dialect}_group"] = {str(group["number"]): {"meaning": group["meaning"]}
                                        for group in read_table(data_path("gcode", f"{dialect}.toml"))["group"]}
+        entries[f"{dialect}_code"] = {name: {"meaning": meaning}
+                                      for group in read_table(data_path("gcode", f"{dialect}.toml"))["group"]
+                                      for name, meaning in group.get("codes", {}).items()}
     words = read_table(data_path("gcode", "words.toml"))
     for kind, section in (("m_function", "m_functions"), ("system_variable", "system_variables"),
                           ("system_variable_prefix", "system_variable_prefixes")):

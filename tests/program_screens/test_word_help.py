@@ -93,11 +93,12 @@ async def test_editor_message_line_shows_the_meaning(language: str, name: str, g
 
 
 @pytest.mark.parametrize(("word", "dialect", "text"), [
-    # ISO Dialect T: G71 is the stock removal cycle of the non-modal group 18 (000 L701-712),
-    # not the Siemens G71 (metric, group 13); ISO M's G00 group 1 modal (the tables of data/gcode)
-    ("G71", "iso-t", "G71: ISO Dialect T group 18 (non-modal functions (turning cycles G70-G76, "
-                     "G92 preset and spindle limit)), non-modal (this block only)"),
-    ("G0", "iso-m", "G00: ISO Dialect M group 1 (motion), modal"),
+    # ISO Dialect T: G71 is the stock removal cycle along the longitudinal axis of the non-modal
+    # group 18 (000 L701-712), not the Siemens G71 (metric, group 13); ISO M's G00 rapid traverse,
+    # group 1 (000 L578)
+    ("G71", "iso-t", "G71: stock removal along the longitudinal axis — ISO Dialect T group 18 (non-modal "
+                     "functions (turning cycles G70-G76, G92 preset and spindle limit)), non-modal (this block only)"),
+    ("G0", "iso-m", "G00: rapid traverse — ISO Dialect M group 1 (motion), modal"),
     ("G500", "iso-m", ""),  # a Siemens code, no ISO one
     ("M3", "iso-t", "M3: spindle on, clockwise"),
 ])
@@ -122,5 +123,15 @@ async def test_the_editor_reads_a_g291_line_and_the_lines_after_it_in_iso(data_d
             seen.append(message().split("│ ")[-1])
             await burst(pilot, "down", "down")
         assert seen[0].startswith("G0: ") and "ISO" not in seen[0]
-        assert seen[1] == "G00: ISO Dialect M group 1 (motion), modal"
+        assert seen[1] == "G00: rapid traverse — ISO Dialect M group 1 (motion), modal"
         assert seen[2].startswith("G0: ") and "ISO" not in seen[2]
+
+
+@pytest.mark.parametrize("dialect", ["iso-m", "iso-t"])
+def test_every_iso_code_has_a_meaning(dialect: str) -> None:
+    """Every member of every G group of both ISO dialects says what it does (000 table 2-2)."""
+    from hmi.word_help import iso_g_functions
+
+    functions = iso_g_functions(dialect)
+    assert len(functions) > 60
+    assert all(f.meaning for f in functions.values())
