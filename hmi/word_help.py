@@ -128,13 +128,22 @@ def word_help(word: str, dialect: str = "siemens") -> str:
 
 def _iso_help(g_function: GFunction, dialect: str) -> str:
     """``G71: stock removal … — ISO Dialect T group 18 (…), non-modal (this block only)``."""
-    table = dialect.replace("-", "_")
     modality = _("modal") if g_function.modal else _("non-modal (this block only)")
-    group_meaning = data_text(f"{table}_group", g_function.group, "meaning", g_function.group_meaning)
-    meaning = data_text(f"{table}_code", g_function.name, "meaning", g_function.meaning)
+    group_meaning = data_text(f"{dialect.replace('-', '_')}_group", g_function.group, "meaning",
+                              g_function.group_meaning)
+    meaning = iso_code_meaning(g_function.name, dialect)
     dialect_name = _("ISO Dialect T") if dialect == "iso-t" else _("ISO Dialect M")
     group = _("group {number} ({meaning})").format(number=g_function.group, meaning=group_meaning)
     return f"{g_function.name}: {meaning} — {dialect_name} {group}, {modality}"
+
+
+def iso_code_meaning(name: str, dialect: str) -> str:
+    """The meaning of ISO code ``name`` (``G00`` or ``G0``) of ``dialect`` (``iso-m``, ``iso-t``)
+    in the panel's language (``""`` when the table has none)."""
+    g_function = iso_g_functions(dialect).get(normalized(name))
+    if g_function is None or not g_function.meaning:
+        return ""
+    return data_text(f"{dialect.replace('-', '_')}_code", g_function.name, "meaning", g_function.meaning)
 
 
 def code_meaning(name: str) -> str:

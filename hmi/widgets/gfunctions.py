@@ -13,7 +13,7 @@ from nck import ISO_MAIN_GROUPS_M, iso_table, localized
 from nck.queries import load_toml
 
 from hmi.i18n import _, data_text, language
-from hmi.word_help import code_meaning
+from hmi.word_help import code_meaning, iso_code_meaning
 
 MAIN_GROUPS = (1, 6, 7, 8, 10, 13, 14, 15)
 """Groups of the G-functions window: motion, plane, TRC, WO, exact stop, unit, dimension, feed."""
@@ -49,13 +49,15 @@ def main_groups_line(gcodes: Mapping[int, str], groups: tuple[int, ...] = MAIN_G
     return text
 
 
-def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | None = None) -> Table:
+def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | None = None,
+                     iso_dialect: str | None = None) -> Table:
     """Every group with its number, active code and meaning, in two columns.
 
     Siemens groups (``meanings`` None) say what the active code does where the table knows it
     (the group's meaning otherwise): the same table as the editor's word help
     (:func:`hmi.word_help.code_meaning`), in the panel's language. ``meanings`` are the groups'
-    meanings of an ISO dialect (:func:`iso_group_meanings`).
+    meanings of an ISO dialect (:func:`iso_group_meanings`); with ``iso_dialect`` the active
+    ISO codes say what they do (:func:`hmi.word_help.iso_code_meaning`).
     """
     siemens = meanings is None
     meanings = group_meanings() if meanings is None else meanings
@@ -76,6 +78,8 @@ def all_groups_table(gcodes: Mapping[int, str], meanings: Mapping[int, str] | No
                 meaning = meanings.get(number, "")
                 if siemens and code_meaning(active):
                     meaning = code_meaning(active)
+                elif iso_dialect is not None and iso_code_meaning(active, iso_dialect):
+                    meaning = iso_code_meaning(active, iso_dialect)
                 cells += [str(number), active, meaning]
         table.add_row(*cells)
     return table
@@ -112,8 +116,7 @@ class GFunctionsTable(Static):
         if key != self._key:
             self._key = key
             if iso_gcodes:
-                meanings = iso_group_meanings("iso-t" if 16 in iso_gcodes and 8 not in iso_gcodes
-                                              else "iso-m")
-                self.update(all_groups_table(iso_gcodes, meanings), layout=False)
+                dialect = "iso-t" if 16 in iso_gcodes and 8 not in iso_gcodes else "iso-m"
+                self.update(all_groups_table(iso_gcodes, iso_group_meanings(dialect), dialect), layout=False)
             else:
                 self.update(all_groups_table(gcodes), layout=False)

@@ -40,7 +40,8 @@ def test_word_help_in_german() -> None:
 
 
 def test_g_functions_screen_in_german() -> None:
-    """Siemens: the active code's meaning (or the group's); ISO M and T: the ISO groups' meanings."""
+    """Siemens: the active code's meaning (or the group's); ISO M and T: the ISO groups' meanings,
+    or with the dialect named the active ISO codes' meanings."""
     set_language("de")
     siemens = shown(all_groups_table({1: "G1", 8: "G505", 14: "G91"}))
     assert "Gerade mit dem Vorschub F" in siemens and "Kettenmaßangabe (inkrementell)" in siemens
@@ -51,4 +52,6 @@ def test_g_functions_screen_in_german() -> None:
     assert "Bewegung" in milling and "Fräserradiuskorrektur" in milling and "Sprachmodus" in milling
     turning = shown(all_groups_table({1: "G01"}, iso_group_meanings("iso-t")))
     assert "Bewegung und Drehzyklen" in turning and "Schneidenradiuskorrektur" in turning
+    turning = shown(all_groups_table({1: "G01", 7: "G40"}, iso_group_meanings("iso-t"), "iso-t"))
+    assert "Gerade mit Vorschub" in turning and "Schneidenradiuskorrektur aus" in turning
 
