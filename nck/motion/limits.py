@@ -119,17 +119,31 @@ class Limits:
         i1, i2, c1, c2, r0, r1, _, _ = segment.arc  # type: ignore[misc]
         reach = max(abs(r0), abs(r1)) + ARC_BOX_MARGIN_MM
         starts, _deltas, ends = segment.floats()
-        for i, axis in enumerate(self.axes):
-            if not referenced[i]:
+        software = self._software
+        # (min and max written out as the builtins decide: the first argument unless the
+        # second compares less, resp. greater; every arc block comes here)
+        for i, on in enumerate(referenced):
+            if not on:
                 continue
-            low, high = min(starts[i], ends[i]), max(starts[i], ends[i])
-            if i == i1:
-                low, high = min(low, c1 - reach), max(high, c1 + reach)
-            elif i == i2:
-                low, high = min(low, c2 - reach), max(high, c2 + reach)
-            minus, plus = self.software(i)
-            w_minus, w_plus = self.workarea(i)
-            if high > min(plus, w_plus) + EDGE_MM or low < max(minus, w_minus) - EDGE_MM:
+            low = high = starts[i]
+            end = ends[i]
+            if end < low:
+                low = end
+            if end > high:
+                high = end
+            if i == i1 or i == i2:
+                centre = c1 if i == i1 else c2
+                edge = centre - reach
+                if edge < low:
+                    low = edge
+                edge = centre + reach
+                if edge > high:
+                    high = edge
+            minus, plus = software[i]
+            w_minus, w_plus = self.workarea(i) if self.setting_data else (-math.inf, math.inf)
+            upper = w_plus if w_plus < plus else plus
+            lower = w_minus if w_minus > minus else minus
+            if high > upper + EDGE_MM or low < lower - EDGE_MM:
                 return False
         return True
 

@@ -26,10 +26,10 @@ class Segment:
             given (:func:`line` and :func:`arc` hand it their own), so nobody may change them.
         length: path length used for the feed (mm).
         arc: (i1, i2, c1, c2, r_start, r_end, theta0, sweep) for arcs and helices.
-        delta: ``end - start``.
+        delta: ``end - start`` (made on first use; :meth:`floats` has it as Python floats).
     """
 
-    __slots__ = ("start", "end", "length", "arc", "delta", "_tangents", "_floats")
+    __slots__ = ("start", "end", "length", "arc", "_delta", "_tangents", "_floats", "_pairs")
 
     def __init__(self, start: np.ndarray, end: np.ndarray, length: float,
                  arc: tuple[int, int, float, float, float, float, float, float] | None = None) -> None:
@@ -37,9 +37,20 @@ class Segment:
         self.end = end
         self.length = length
         self.arc = arc
-        self.delta = end - start
+        self._delta: np.ndarray | None = None
         self._tangents: dict[bool, list[float]] = {}
-        self._floats: tuple[list[float], list[float], list[float]] | None = None  # start, delta, end
+        # start, delta, end as Python floats (the same differences as numpy's end - start)
+        starts, ends = start.tolist(), end.tolist()
+        self._floats = (starts, [e - s for s, e in zip(starts, ends)], ends)
+        self._pairs: list[tuple[float, float]] | None = None  # (start, delta) of every axis, for points
+
+    @property
+    def delta(self) -> np.ndarray:
+        """``end - start`` (made on first use)."""
+        delta = self._delta
+        if delta is None:
+            delta = self._delta = self.end - self.start
+        return delta
 
     def __repr__(self) -> str:
         return f"Segment(start={self.start!r}, end={self.end!r}, length={self.length!r}, arc={self.arc!r})"
@@ -61,24 +72,23 @@ class Segment:
         return out
 
     def floats(self) -> tuple[list[float], list[float], list[float]]:
-        """``start``, ``delta`` and ``end`` as lists of Python floats (made on first use; the
-        caller must not change them)."""
-        floats = self._floats
-        if floats is None:
-            floats = self._floats = (self.start.tolist(), self.delta.tolist(), self.end.tolist())
-        return floats
+        """``start``, ``delta`` and ``end`` as lists of Python floats (the caller must not change
+        them)."""
+        return self._floats
 
     def points(self, distances: list[float]) -> list[float]:
         """Positions at path distances ``distances`` in Python floats, row after row in one flat
         list: the rows of :meth:`positions` bit for bit (the same operations in the same order,
         the arc's end pinned), cheaper than numpy for a handful of rows."""
-        start, delta, end = self.floats()
         length = self.length
         inv = 1.0 / length if length > 0 else 0.0
         arc = self.arc
         out: list[float] = []
         append = out.append  # (a loop of appends: cheaper than a list comprehension per row)
-        axes = list(zip(start, delta))
+        axes = self._pairs
+        if axes is None:
+            start, delta, _end = self._floats
+            axes = self._pairs = list(zip(start, delta))
         for s in distances:
             if length > 0:
                 # min(max(s·inv, 0.0), 1.0) as the builtins decide, without their calls
@@ -94,7 +104,7 @@ class Segment:
                     append(x0 + lam * d)
                 continue
             if lam >= 1.0:
-                out.extend(end)
+                out.extend(self._floats[2])
                 continue
             row = len(out)
             for x0, d in axes:
@@ -114,7 +124,7 @@ class Segment:
     def _first_derivative(self, lam: float) -> list[float]:
         """d/ds of the position at ``lam`` (fraction of the length)."""
         length = self.length
-        first = [d / length for d in self.floats()[1]]
+        first = [d / length for d in self._floats[1]]
         if self.arc is not None:
             i1, i2, th, r, dr, sweep = self._arc_at(lam)
             first[i1] = (dr * math.cos(th) - r * sweep * math.sin(th)) / length
@@ -132,12 +142,12 @@ class Segment:
         if cached is not None:
             return cached
         if self.arc is None:
-            first = self.delta / self.length
-            values = first.tolist()
+            length = self.length  # (Python's division: numpy's correctly rounded quotients)
+            values = [d / length for d in self._floats[1]]
         else:
             values = self._first_derivative(1.0 if at_end else 0.0)
-            first = np.array(values)
-        norm = math.sqrt(float(first.dot(first)))  # numpy's dot (BLAS, fused multiply-add)
+        first = np.array(values)
+        norm = math.sqrt(first.dot(first))  # numpy's dot (BLAS, fused multiply-add)
         # (an element-wise division: the same correctly rounded quotients as numpy's)
         result = [value / norm for value in values] if norm > 0 else values
         if self.arc is None:
@@ -148,7 +158,7 @@ class Segment:
 
     def curvature(self, at_end: bool) -> np.ndarray:
         """Curvature vector d²p/ds² at the start or the end (zero for lines)."""
-        second = [0.0] * len(self.floats()[1])
+        second = [0.0] * len(self._floats[1])
         if self.arc is not None:
             length = self.length
             i1, i2, th, r, dr, sweep = self._arc_at(1.0 if at_end else 0.0)
@@ -159,7 +169,7 @@ class Segment:
     def max_direction_share(self) -> list[float]:
         """Upper bound of |dp_k/ds| over the segment, per axis."""
         length = self.length
-        share = [abs(d) / length for d in self.floats()[1]]
+        share = [abs(d) / length for d in self._floats[1]]
         if self.arc is not None:
             i1, i2, _c1, _c2, r0, r1, _th0, sweep = self.arc
             bound = (abs(r1 - r0) + max(r0, r1) * abs(sweep)) / self.length

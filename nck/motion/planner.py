@@ -88,13 +88,25 @@ class PlannedSegment:
     @property
     def remaining(self) -> float:
         """Path distance still to go."""
-        return max(self.segment.length - self.done_s, 0.0)
+        # max(…, 0.0) as the builtin decides (the first argument unless the second is greater)
+        remaining = self.segment.length - self.done_s
+        return 0.0 if 0.0 > remaining else remaining
 
     def v_max(self, feed_pct: float, rapid_pct: float) -> float:
         """Velocity limit with the overrides applied."""
+        # min(…) and max(…) as the builtins decide (the first argument unless the second
+        # compares less, resp. greater), without their calls: asked several times per block
         if self.feed_mm_s is None:
-            return self.v_cap_mm_s * min(max(rapid_pct, 0.0), 100.0) / 100.0
-        return min(self.v_cap_mm_s, self.feed_mm_s * max(feed_pct, 0.0) / 100.0)
+            if 0.0 > rapid_pct:
+                rapid_pct = 0.0
+            if 100.0 < rapid_pct:
+                rapid_pct = 100.0
+            return self.v_cap_mm_s * rapid_pct / 100.0
+        if 0.0 > feed_pct:
+            feed_pct = 0.0
+        cap = self.v_cap_mm_s
+        feed = self.feed_mm_s * feed_pct / 100.0
+        return feed if feed < cap else cap
 
 
 @dataclass
@@ -133,13 +145,14 @@ def plan_segment(
 ) -> PlannedSegment:
     """Compute the limits of one segment (``accel_factors``: ACC per axis, 1 = 100 %)."""
     share = segment.max_direction_share()
-    moved = [part > 1e-12 for part in share]
+    moved: list[bool] = []
     axes = params.axes
     arrays = axis_arrays(params)
     v_cap = a_lin = j_lin = math.inf
     moving = False
     for index, (part, (vmax, amax, jmax, g0_accel, g0_jerk, soft_accel)) in enumerate(
             zip(share, arrays.rows)):
+        moved.append(part > 1e-12)
         if part <= 1e-12:
             continue
         moving = True
@@ -151,9 +164,16 @@ def plan_segment(
             accel_ax, jerk_ax = accel_ax * g0_accel, jerk_ax * g0_jerk
         if soft:
             accel_ax = accel_ax * soft_accel
-        v_cap = min(v_cap, vmax * inv)
-        a_lin = min(a_lin, accel_ax * inv)
-        j_lin = min(j_lin, jerk_ax * inv)
+        # min(limit, value) as the builtin decides (the limit unless the value is less)
+        value = vmax * inv
+        if value < v_cap:
+            v_cap = value
+        value = accel_ax * inv
+        if value < a_lin:
+            a_lin = value
+        value = jerk_ax * inv
+        if value < j_lin:
+            j_lin = value
     if not moving:
         v_cap, a_lin, j_lin = 0.0, 1.0, 1.0
     accel = a_lin
@@ -190,7 +210,9 @@ def junction_limit(params: MotionParams, prev: PlannedSegment, nxt: PlannedSegme
     for before, after, corner in zip(prev.segment.tangent_floats(True), nxt.segment.tangent_floats(False), allowed):
         jump = abs(after - before)
         if jump > 1e-12:
-            limit = min(limit, corner / jump)
+            value = corner / jump
+            if value < limit:  # min(limit, value) as the builtin decides
+                limit = value
     if soft and (prev.segment.arc is not None or nxt.segment.arc is not None):
         dk = np.abs(nxt.segment.curvature(False) - prev.segment.curvature(True))
         curved = dk > 1e-12
@@ -225,7 +247,7 @@ class LookAhead:
         """Buffer an item; update the transition limits backwards."""
         if isinstance(item, PlannedSegment):
             item.exit_limit = 0.0
-            ceiling = self.v_max(item)
+            ceiling = item.v_max(self.feed_pct, self.rapid_pct)
             if ceiling > self.ceiling_mm_s:
                 self.ceiling_mm_s = ceiling
             prev = self.items[-1] if self.items else None
@@ -245,10 +267,18 @@ class LookAhead:
             if not isinstance(seg, PlannedSegment):
                 return
             if isinstance(nxt, PlannedSegment):
-                # min(junction, entry_max(nxt), v_max(seg)) with the two methods written out
-                entry = min(nxt.v_max(feed_pct, rapid_pct),
-                            reach_up(nxt.exit_limit, nxt.remaining, nxt.accel, nxt.jerk))
-                new = min(seg.junction_out, entry, seg.v_max(feed_pct, rapid_pct))
+                # min(junction, entry_max(nxt), v_max(seg)) with the two methods written out, and
+                # the builtin min's choices too (the first value unless a later one is less)
+                entry = nxt.v_max(feed_pct, rapid_pct)
+                reach = reach_up(nxt.exit_limit, nxt.remaining, nxt.accel, nxt.jerk)
+                if reach < entry:
+                    entry = reach
+                new = seg.junction_out
+                if entry < new:
+                    new = entry
+                limit = seg.v_max(feed_pct, rapid_pct)
+                if limit < new:
+                    new = limit
             else:
                 new = 0.0
             if abs(new - seg.exit_limit) <= 1e-12:

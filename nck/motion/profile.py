@@ -128,6 +128,8 @@ class Profile:
         phases, starts, duration, length = self.phases, self.starts, self.duration_s, self.length
         last = len(starts) - 1
         i = 0
+        t0, s0, v0, a, j = phases[0]
+        curved = a != 0.0 or j != 0.0
         out: list[float] = []
         append = out.append
         for n in range(1, count + 1):
@@ -138,12 +140,14 @@ class Profile:
                 t = 0.0
             if duration < t:
                 t = duration
-            while i < last and starts[i + 1] <= t:
-                i += 1  # the times increase: the phase only moves forward
-            t0, s0, v0, a, j = phases[i]
+            if i < last and starts[i + 1] <= t:
+                while i < last and starts[i + 1] <= t:
+                    i += 1  # the times increase: the phase only moves forward
+                t0, s0, v0, a, j = phases[i]
+                curved = a != 0.0 or j != 0.0
             dt = t - t0
             s = s0 + v0 * dt
-            if a != 0.0 or j != 0.0:
+            if curved:
                 s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
             if length < s:
                 s = length
@@ -375,20 +379,29 @@ def _brisk_profile(length: float, v_start: float, v_end: float, v_max: float, ac
     steps written out: ramp, cruise, ramp; BRISK starts at zero acceleration whatever
     ``a_start``), for the usual case; None for the rare ones (nothing left to go, no
     movement, braking that needs the bisections), which the builder then takes."""
-    v = max(v_start, 0.0)
+    # (min and max written out as the builtins decide: the first argument unless the second
+    # compares less, resp. greater; once per block, where their calls were a good part)
+    v = 0.0 if 0.0 > v_start else v_start
     rest = length - 0.0
-    v_max = max(v_max, 0.0)
+    if 0.0 > v_max:
+        v_max = 0.0
     if rest <= TINY:
         return None
-    v_end = min(max(v_end, 0.0), v_max)
+    if 0.0 > v_end:
+        v_end = 0.0
+    if v_max < v_end:
+        v_end = v_max
     if v_end > v:
-        v_end = min(v_end, reach_up(v, rest, accel, None))
+        reach = reach_up(v, rest, accel, None)
+        if reach < v_end:
+            v_end = reach
     elif v_end < v:
         if not ramp_distance(v, 0.0, accel, None) <= rest:
             return None  # reach_down's bisection
-        v_end = max(v_end, 0.0)
+        if 0.0 > v_end:
+            v_end = 0.0
     if v > v_max:
-        peak = max(v_max, v_end)
+        peak = v_end if v_end > v_max else v_max
     else:
         peak = _peak(v, v_end, v_max, rest, accel, None)
     if peak <= TINY and v <= TINY:

@@ -22,6 +22,8 @@ fails them is processed at once, after the queue, exactly as before.
 
 from __future__ import annotations
 
+from operator import sub
+
 import numpy as np
 
 from nck.motion.servo_model import MOVING_MM_S, ServoModel
@@ -66,14 +68,19 @@ def speed_range(rows: np.ndarray, previous: np.ndarray, inv_t: float) -> tuple[l
     if m == 1:
         return speed_range_of_rows(rows.tolist(), previous.tolist(), inv_t)
     if m <= SMALL_ROWS:
-        # Axis by axis: the largest and smallest step of each column (max and min of finite
-        # floats: the same values as the row-by-row comparisons and numpy's reductions).
+        # Every step at once, row after row (each value minus the one an axis count before it),
+        # then axis by axis the largest and smallest step of each column (max and min of
+        # finite floats: the same values as the row-by-row comparisons and numpy's reductions).
+        width = rows.shape[1]
+        values = previous.tolist()
+        values += rows.ravel().tolist()
+        steps = list(map(abs, map(sub, values[width:], values)))
         tops: list[float] = []
         lows: list[float] = []
-        for x0, column in zip(previous.tolist(), rows.T.tolist()):
-            steps = [abs(x - before) for before, x in zip([x0] + column, column)]
-            tops.append(max(steps) * inv_t)
-            lows.append(min(steps) * inv_t)
+        for axis in range(width):
+            column = steps[axis::width]
+            tops.append(max(column) * inv_t)
+            lows.append(min(column) * inv_t)
         return tops, lows
     step = np.empty_like(rows)
     np.subtract(rows[0], previous, out=step[0])

@@ -197,8 +197,8 @@ class PlannedMotion(PathInterpolator):
         outside = None  # the first axis beyond POSITION_RANGE_MM
         for name, value in item.end_mcs.items():
             position = float(value)
-            if outside is None and abs(position) > POSITION_RANGE_MM:
-                outside = name
+            if outside is None and (position > POSITION_RANGE_MM or position < -POSITION_RANGE_MM):
+                outside = name  # (|position| beyond the range, without the call of abs)
             i = index.get(name)
             if i is not None:
                 end[i] = position
@@ -296,7 +296,8 @@ class PlannedMotion(PathInterpolator):
                 rows[k:k_end, i] = col[k:k_end]
             actual, trip = self.servo.process(rows[k:k_end], defer=True)
             taken = actual.shape[0]
-            self._record(rows[k:k + taken])
+            if self._trace is not None:
+                self._record(rows[k:k + taken])
             if taken:
                 self.cmd = rows[k + taken - 1].copy()
             self._tick(taken)
