@@ -199,7 +199,7 @@ class PathInterpolator:
                 # Output the end point once, then check the window.
                 self.wait_cycles = 1
             elif seg.window != "G603":
-                self.unsettled = (seg.moved, window, self.cmd.copy())
+                self.unsettled = (seg.moved, window, seg.segment.end)  # (never changed: see Segment)
             return False
         self.v_path = 0.0
         end_s = min(run.profile.length, float(run.offsets[-1]))
@@ -235,7 +235,7 @@ class PathInterpolator:
                 # The block before ends with its exact-stop criterion first (002 L4797-4809).
                 moved, window, end = unsettled
                 self.exact_wait = (np.flatnonzero(moved), window)
-                self.settle_point = end  # held while waiting (a batch step may end on a profile sample)
+                self.settle_point = end.copy()  # held while waiting (a batch step may end on a profile sample)
             seconds = head.seconds if head.revolutions is None else self._dwell_s(head.revolutions)
             if head.wait_spindle:
                 # One cycle: the spindle output before it goes out at its start; then
@@ -265,7 +265,9 @@ class PathInterpolator:
             self.v_path = 0.0
             return False
         self.unsettled = None
-        exit_v = min(head.exit_limit, vmax)
+        exit_v = head.exit_limit
+        if vmax < exit_v:  # min(exit limit, vmax) as the builtin decides
+            exit_v = vmax
         profile = build_profile(head.remaining, self.v_path, exit_v, vmax, head.accel, head.jerk)
         self.run = PathRun([head], head.done_s, profile, tau=carry, kind="segment", exit_target=exit_v)
         return True

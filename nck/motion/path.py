@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from itertools import compress
 
 import numpy as np
 
@@ -191,7 +192,7 @@ def line(start: np.ndarray, end: np.ndarray, linear_mask: Sequence[bool] | np.nd
     segment = Segment(start, end, 0.0)
     deltas = segment.floats()[1]
     # math.hypot scales internally: no overflow for huge coordinates (1EX300).
-    length = math.hypot(*[d for d, linear in zip(deltas, linear_mask) if linear])
+    length = math.hypot(*compress(deltas, linear_mask))
     if length <= MIN_LENGTH_MM:
         length = math.hypot(*deltas)
     segment.length = length
@@ -211,8 +212,9 @@ def arc(
     keeps ``start`` and ``end`` (see :class:`Segment`)."""
     i1, i2 = plane_idx
     c1, c2 = center
+    segment = Segment(start, end, 0.0)  # its length and arc are set below
     # Python floats (the same float64 arithmetic as numpy's scalars, without their cost).
-    starts, ends = start.tolist(), end.tolist()
+    starts, deltas, ends = segment.floats()
     r0 = math.hypot(starts[i1] - c1, starts[i2] - c2)
     r1 = math.hypot(ends[i1] - c1, ends[i2] - c2)
     th0 = math.atan2(starts[i2] - c2, starts[i1] - c1)
@@ -229,9 +231,10 @@ def arc(
             sweep = two_pi
         sweep += two_pi * max(turns, 0)
     planar = abs(sweep) * (r0 + r1) / 2.0
-    others = [e - s for i, (s, e, linear) in enumerate(zip(starts, ends, linear_mask))
-              if linear and i != i1 and i != i2]
+    others = [d for i, (d, linear) in enumerate(zip(deltas, linear_mask)) if linear and i != i1 and i != i2]
     length = math.hypot(planar, *others)
     if r0 <= MIN_LENGTH_MM or length <= MIN_LENGTH_MM:
         return line(start, end, linear_mask)
-    return Segment(start, end, length, (i1, i2, c1, c2, r0, r1, th0, sweep))
+    segment.length = length
+    segment.arc = (i1, i2, c1, c2, r0, r1, th0, sweep)
+    return segment

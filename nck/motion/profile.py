@@ -127,9 +127,14 @@ class Profile:
         each added to ``offset`` when given (``offset + distance``)."""
         phases, starts, duration, length = self.phases, self.starts, self.duration_s, self.length
         last = len(starts) - 1
+        # Within a phase without jerk the cubic term adds exactly nothing when dt**3 is finite
+        # (dt ≤ duration): +0.0 (j is never -0.0, dt never negative) to a distance that is never
+        # -0.0 (s0 ≥ +0.0 plus terms); so it is left out there, as :meth:`distances` does.
+        finite = duration < 1e100
         i = 0
         t0, s0, v0, a, j = phases[0]
         curved = a != 0.0 or j != 0.0
+        cubic = j != 0.0 or not finite
         out: list[float] = []
         append = out.append
         for n in range(1, count + 1):
@@ -145,10 +150,13 @@ class Profile:
                     i += 1  # the times increase: the phase only moves forward
                 t0, s0, v0, a, j = phases[i]
                 curved = a != 0.0 or j != 0.0
+                cubic = j != 0.0 or not finite
             dt = t - t0
             s = s0 + v0 * dt
             if curved:
-                s = s + a * dt * dt / 2.0 + j * dt**3 / 6.0
+                s = s + a * dt * dt / 2.0
+                if cubic:
+                    s = s + j * dt**3 / 6.0
             if length < s:
                 s = length
             append(s if offset is None else offset + s)

@@ -52,7 +52,9 @@ def quiet_bound(bank: ServoModel, rows: np.ndarray) -> list[float] | None:
     out = []
     for (e_per_v, kv, ffw, ctrlout, velo, decay_rate, b_rate, small_e), top, low, e0 in zip(
             bank.bound_tables, tops, lows, start):
-        bound = max(e0, e_per_v * top)
+        bound = e_per_v * top
+        if not bound > e0:  # max(e0, bound) as the builtin decides
+            bound = e0
         if kv * bound + ffw * top > ctrlout or top + decay_rate * bound + b_rate * top > velo:
             return None
         if low <= MOVING_MM_S and bound > small_e:

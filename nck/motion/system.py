@@ -106,7 +106,7 @@ class PlannedMotion(PathInterpolator):
 
     def can_accept(self) -> bool:
         """True while the look-ahead buffer (MD28060) has room."""
-        return len(self.la) < self.params.buffer_segments
+        return len(self.la.items) < self.params.buffer_segments  # (asked several times a block)
 
     def buffer_fill(self) -> tuple[int, int]:
         """(items in the look-ahead buffer, its capacity MD28060)."""
@@ -690,12 +690,15 @@ class PlannedMotion(PathInterpolator):
         return self.plan_pos
 
     def _segment(self, item: Motion, start: np.ndarray, end: np.ndarray) -> Segment | None:
-        if item.kind in ("G2", "G3") and item.center_mcs:
-            plane = PLANE_AXES.get(item.plane, PLANE_AXES["G17"])
-            if plane[0] in self.index and plane[1] in self.index:
-                i1, i2 = self.index[plane[0]], self.index[plane[1]]
-                c1 = float(item.center_mcs.get(plane[0], start[i1]))
-                c2 = float(item.center_mcs.get(plane[1], start[i2]))
+        centre = item.center_mcs
+        if item.kind in ("G2", "G3") and centre:
+            name1, name2, _applicate = PLANE_AXES.get(item.plane) or PLANE_AXES["G17"]
+            index = self.index
+            if name1 in index and name2 in index:
+                i1, i2 = index[name1], index[name2]
+                # (the start's coordinate only where the centre has none: no numpy item read else)
+                c1 = float(centre[name1] if name1 in centre else start[i1])
+                c2 = float(centre[name2] if name2 in centre else start[i2])
                 seg = arc(start, end, (c1, c2), (i1, i2), item.kind == "G2", item.turns, self.linear_mask)
                 return seg if seg.length > 1e-9 else None
         seg = line(start, end, self.linear_mask)
