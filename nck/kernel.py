@@ -587,9 +587,10 @@ class Nck:
 
     def _adjust_motion(self, motion: Motion) -> Motion:
         """The WCS offset bookkeeping of every segment handed to the motion."""
+        end_wcs, offsets = motion.end_wcs, self.outputs.wcs_offset  # (every motion block)
         for axis, mcs in motion.end_mcs.items():
-            if axis in motion.end_wcs:
-                self.outputs.wcs_offset[axis] = float(mcs) - float(motion.end_wcs[axis])
+            if axis in end_wcs:
+                offsets[axis] = float(mcs) - float(end_wcs[axis])
         return motion
 
     def _begin_run(self, run: ProgramRun) -> None:

@@ -103,16 +103,17 @@ class PathInterpolator:
                 continue
             run = self.run
             room = n - k
-            m = _samples_within(run.tau, T, run.profile.duration_s + 1e-12, room)
-            if m and len(run.chain) == 1 and (m == 1 or (m <= SCALAR_SAMPLES and run.profile.scalar_exact)):
+            tau, profile = run.tau, run.profile
+            m = _samples_within(tau, T, profile.duration_s + 1e-12, room)
+            if m and len(run.chain) == 1 and (m == 1 or (m <= SCALAR_SAMPLES and profile.scalar_exact)):
                 # A few samples of one segment: Python floats, the same values as the numpy form
                 # below (see Profile.scalar_exact and Segment.points), cheaper on a handful of rows.
-                flat = run.chain[0].segment.points(run.profile.distances_after(run.tau, T, m, run.s_begin))
+                flat = run.chain[0].segment.points(profile.distances_after(tau, T, m, run.s_begin))
                 if m == 1:
                     rows[k] = flat  # (the first cycle of every block: no array made for it)
                 else:
                     rows.flat[k * rows.shape[1]:(k + m) * rows.shape[1]] = flat  # (no array made for it)
-                run.tau = run.tau + T * m
+                run.tau = tau + T * m
                 k += m
             elif m:
                 taus = run.tau + self._sample_steps(m)

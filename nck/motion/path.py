@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from itertools import compress
+from operator import sub
 
 import numpy as np
 
@@ -42,7 +43,7 @@ class Segment:
         self._tangents: dict[bool, list[float]] = {}
         # start, delta, end as Python floats (the same differences as numpy's end - start)
         starts, ends = start.tolist(), end.tolist()
-        self._floats = (starts, [e - s for s, e in zip(starts, ends)], ends)
+        self._floats = (starts, list(map(sub, ends, starts)), ends)
         self._pairs: list[tuple[float, float]] | None = None  # (start, delta) of every axis, for points
 
     @property
