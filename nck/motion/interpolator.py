@@ -57,8 +57,12 @@ class PathInterpolator:
     is_idle: Callable[[], bool]
     current_source: Callable[[], Source | None]
 
-    def _path_fill(self, rows: np.ndarray, k: int, n: int, stop_at_event: bool = False) -> tuple[int, bool, int]:
+    def _path_fill(self, rows: np.ndarray, flat_rows: np.ndarray, k: int, n: int,
+                   stop_at_event: bool = False) -> tuple[int, bool, int]:
         """Fill path setpoints from row ``k``; stop early (sync=True) at an exact stop.
+
+        ``flat_rows`` is ``rows`` as one flat view (``rows.reshape(-1)`` of the caller's fresh
+        array), through which runs of Python floats are written.
 
         Returns the next row, whether an exact-stop check is due, and the row
         limit: with ``stop_at_event`` it shrinks to end with the cycle of the
@@ -112,7 +116,8 @@ class PathInterpolator:
                 if m == 1:
                     rows[k] = flat  # (the first cycle of every block: no array made for it)
                 else:
-                    rows.flat[k * rows.shape[1]:(k + m) * rows.shape[1]] = flat  # (no array made for it)
+                    width = rows.shape[1]
+                    flat_rows[k * width:(k + m) * width] = flat  # (no array made for it)
                 run.tau = tau + T * m
                 k += m
             elif m:
@@ -307,7 +312,12 @@ def _samples_within(tau: float, T: float, end: float, room: int) -> int:
     if room <= 0 or tau + T > end:
         return 0
     estimate = (end - tau) / T
-    m = room if not estimate < room else max(1, int(estimate))  # also for inf (huge moves)
+    if not estimate < room:
+        m = room  # also for inf (huge moves)
+    else:
+        m = int(estimate)
+        if not m > 1:  # max(1, m) as the builtin decides
+            m = 1
     while m < room and tau + T * (m + 1) <= end:
         m += 1
     while m > 1 and tau + T * m > end:

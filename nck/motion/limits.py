@@ -117,7 +117,8 @@ class Limits:
         and end in the other axes) lies inside the software limits and the working area of every
         referenced axis; then the sampled check below cannot find a violation."""
         i1, i2, c1, c2, r0, r1, _, _ = segment.arc  # type: ignore[misc]
-        reach = max(abs(r0), abs(r1)) + ARC_BOX_MARGIN_MM
+        size0, size1 = abs(r0), abs(r1)  # max(size0, size1) as the builtin decides:
+        reach = (size1 if size1 > size0 else size0) + ARC_BOX_MARGIN_MM
         starts, _deltas, ends = segment.floats()
         software = self._software
         # (min and max written out as the builtins decide: the first argument unless the

@@ -91,6 +91,10 @@ class Segment:
         if axes is None:
             start, delta, _end = self._floats
             axes = self._pairs = list(zip(start, delta))
+        if arc is not None:  # (unpacked once, not per row; r1 - r0 is the same float every row)
+            i1, i2, c1, c2, r0, r1, th0, sweep = arc
+            dr = r1 - r0
+            end = self._floats[2]
         for s in distances:
             if length > 0:
                 # min(max(s·inv, 0.0), 1.0) as the builtins decide, without their calls
@@ -106,14 +110,13 @@ class Segment:
                     append(x0 + lam * d)
                 continue
             if lam >= 1.0:
-                out.extend(self._floats[2])
+                out.extend(end)
                 continue
             row = len(out)
             for x0, d in axes:
                 append(x0 + lam * d)
-            i1, i2, c1, c2, r0, r1, th0, sweep = arc
             theta = th0 + lam * sweep
-            radius = r0 + lam * (r1 - r0)
+            radius = r0 + lam * dr
             out[row + i1] = c1 + radius * math.cos(theta)
             out[row + i2] = c2 + radius * math.sin(theta)
         return out
@@ -174,9 +177,9 @@ class Segment:
         share = [abs(d) / length for d in self._floats[1]]
         if self.arc is not None:
             i1, i2, _c1, _c2, r0, r1, _th0, sweep = self.arc
-            bound = (abs(r1 - r0) + max(r0, r1) * abs(sweep)) / self.length
-            share[i1] = min(bound, 1.0)
-            share[i2] = min(bound, 1.0)
+            # (max and min written out as the builtins decide: once per arc block)
+            bound = (abs(r1 - r0) + (r1 if r1 > r0 else r0) * abs(sweep)) / self.length
+            share[i1] = share[i2] = 1.0 if 1.0 < bound else bound
         return share
 
     @property
@@ -184,7 +187,9 @@ class Segment:
         """Smallest radius of an arc (infinite for a line)."""
         if self.arc is None:
             return math.inf
-        return max(min(self.arc[4], self.arc[5]), 1e-6)
+        r0, r1 = self.arc[4], self.arc[5]
+        radius = r1 if r1 < r0 else r0  # max(min(r0, r1), 1e-6) as the builtins decide
+        return 1e-6 if 1e-6 > radius else radius
 
 
 def line(start: np.ndarray, end: np.ndarray, linear_mask: Sequence[bool] | np.ndarray) -> Segment:

@@ -192,7 +192,9 @@ def plan_segment(
             jerk = j_lin / 3.0
             if v_cap > 0.0:
                 accel = min(accel, max(j_plane * radius / (9.0 * v_cap), 1e-3))
-    v_cap = min(v_cap, SHORT_BLOCK_FACTOR * segment.length / params.ipo_cycle_s)
+    short_block = SHORT_BLOCK_FACTOR * segment.length / params.ipo_cycle_s
+    if short_block < v_cap:  # min(v_cap, short_block) as the builtin decides
+        v_cap = short_block
     return PlannedSegment(
         segment=segment, source=source, rapid=rapid, feed_mm_s=feed_mm_s, v_cap_mm_s=v_cap,
         accel=accel, jerk=jerk, exact_stop=exact_stop, window=window, moved=moved,
@@ -218,7 +220,7 @@ def junction_limit(params: MotionParams, prev: PlannedSegment, nxt: PlannedSegme
         curved = dk > 1e-12
         if curved.any():
             limit = min(limit, float(np.min(np.sqrt(arrays.curvature_soft[curved] / dk[curved]))))
-    return max(limit, 0.0)
+    return 0.0 if 0.0 > limit else limit  # max(limit, 0.0) as the builtin decides
 
 
 @dataclass

@@ -249,9 +249,9 @@ class _Builder:
 
 def ramp_distance(v_a: float, v_b: float, accel: float, jerk: float | None) -> float:
     """Distance needed to change velocity from ``v_a`` to ``v_b`` (zero acceleration at both ends)."""
-    dv = abs(v_b - v_a)
     if jerk is None:
         return abs(v_b * v_b - v_a * v_a) / (2.0 * accel)
+    dv = abs(v_b - v_a)
     if dv >= accel * accel / jerk:
         duration = dv / accel + accel / jerk
     else:
@@ -447,14 +447,17 @@ def _brisk_profile(length: float, v_start: float, v_end: float, v_max: float, ac
 
 def _peak(v0: float, v1: float, v_max: float, length: float, accel: float, jerk: float | None) -> float:
     """Highest cruise velocity so that both ramps fit into ``length``."""
-    low = max(v0, v1)
+    # (min and max written out as the builtins decide: the first argument unless the second
+    # compares less, resp. greater; once per block)
+    low = v1 if v1 > v0 else v0
     if v_max <= low:
-        return max(v_max, v1) if v_max >= v1 else v1
+        return v_max if v_max >= v1 else v1
     if _ramps_distance(v0, v_max, v1, accel, jerk) <= length:
         return v_max
     if jerk is None:
         vp = math.sqrt((2.0 * accel * length + v0 * v0 + v1 * v1) / 2.0)
-        return min(max(vp, low), v_max)
+        peak = low if low > vp else vp
+        return v_max if v_max < peak else peak
     lo, hi = low, v_max
     for _ in range(40):
         mid = (lo + hi) / 2.0

@@ -49,6 +49,8 @@ class Spindle:
         self.params = params
         self.state = SpindleState()
         self._accel_rpm_s = params.accel_rev_s2 * 60.0
+        self._load_torque_nm = max(params.rated_torque_nm, 1e-9)  # the motor load's divisor
+        self._thermal_time_s = max(params.thermal_time_s, 1e-6)
         self.setting_data: Mapping[str, Any] | None = None  # SD43210/43220/43235, read live
         self._positioning: _Positioning | None = None
         # An injected drive fault (exercises): the actual speed stays within ± this (None: none).
@@ -195,9 +197,9 @@ class Spindle:
         st.actual_rpm = end
         st.angle_deg = (st.angle_deg + revolutions * 360.0) % 360.0
         st.torque_nm = p.inertia_kgm2 * accel * 2.0 * math.pi / 60.0 + (0.02 * p.rated_torque_nm if end else 0.0)
-        load = (st.torque_nm / max(p.rated_torque_nm, 1e-9)) ** 2
+        load = (st.torque_nm / self._load_torque_nm) ** 2
         target = AMBIENT_C + p.rated_temp_rise_k * load
-        st.temperature_c = target + (st.temperature_c - target) * math.exp(-dt_s / max(p.thermal_time_s, 1e-6))
+        st.temperature_c = target + (st.temperature_c - target) * math.exp(-dt_s / self._thermal_time_s)
 
     def seconds_for_revolutions(self, revolutions: float) -> float:
         """Time to turn ``revolutions`` from now: along the ramp to the setpoint, then at it.

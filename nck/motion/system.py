@@ -287,11 +287,12 @@ class PlannedMotion(PathInterpolator):
         """The cycles of :meth:`_run_cycles` once something moves (``offset`` cycles already run)."""
         columns = self.jog.fill(n, self.cmd.copy())
         rows = np.empty((n, len(self.names)))
+        flat_rows = rows.reshape(-1)  # a view: the array is fresh, hence contiguous
         k = 0
         self._spun = 0  # cycles of this step the spindles have been advanced by
         limit = n
         while k < limit:
-            k_end, sync, limit = self._path_fill(rows, k, limit, stop_at_event)
+            k_end, sync, limit = self._path_fill(rows, flat_rows, k, limit, stop_at_event)
             for i, col in columns.items():
                 rows[k:k_end, i] = col[k:k_end]
             actual, trip = self.servo.process(rows[k:k_end], defer=True)
@@ -318,7 +319,9 @@ class PlannedMotion(PathInterpolator):
                 self._spindles_to(k)  # the caller may read the spindle speeds
                 allowed = on_block_event(offset + k)
                 if allowed > 0:
-                    limit = min(n, k + allowed)
+                    limit = k + allowed
+                    if not limit < n:  # min(n, limit) as the builtin decides (every block event)
+                        limit = n
         self.servo.settle()  # the step ends: queued blocks through the position control now
         if k == 0:  # a trip in the very first cycle still took that cycle
             k = 1
@@ -763,7 +766,11 @@ class PlannedMotion(PathInterpolator):
         if run is None or run.kind != "segment":
             return
         head = run.chain[0]
-        if abs(min(head.exit_limit, self.la.v_max(head)) - run.exit_target) > 1e-9:
+        exit_v = head.exit_limit
+        vmax = self.la.v_max(head)
+        if vmax < exit_v:  # min(exit limit, vmax) as the builtin decides (every push comes here)
+            exit_v = vmax
+        if abs(exit_v - run.exit_target) > 1e-9:
             self._replan_run()
 
     def _replan_run(self) -> None:
