@@ -180,6 +180,8 @@ class Spindle:
             return
         if self.setting_data:
             self._update_setpoint()  # the limits in the setting data act at once
+        if dt_s <= 0.0:
+            return  # no time passed (a step ending at a block event): speed, torque, heat stay
         start = st.actual_rpm
         reachable = st.setpoint_rpm
         if self.drive_limit_rpm is not None:

@@ -404,3 +404,24 @@ def test_small_block_servo_path_equals_cycle_by_cycle() -> None:
             np.testing.assert_allclose(getattr(small, name), getattr(single, name), rtol=0, atol=1e-12)
         np.testing.assert_allclose(small.temperature, single.temperature, rtol=1e-12)
         base = small
+
+
+def test_a_spindle_advanced_by_no_time_changes_nothing() -> None:
+    """A step that ends at a block event advances the spindles by 0 s; no time passing changes
+    neither its speed nor its angle, torque or temperature. (It did: at speed, a zero advance
+    took the ramp branch and set the full ramp acceleration, so between steps the service
+    screens read the accelerating torque, 16.9 Nm on the mill at S8000, not the 2 % friction.)"""
+    from nck.machine import load_machine
+    from nck.motion.params import motion_params
+    from nck.motion.spindle import Spindle
+
+    spindle = Spindle(motion_params(load_machine()).spindles[0])
+    spindle.command("M3", 8000.0)
+    for _cycle in range(1000):  # 4 s: the mill's spindle ramps at 3000 rpm/s, up in 2.7 s
+        spindle.advance(0.004)
+    state = spindle.state
+    assert state.actual_rpm == 8000.0
+    at_speed = (state.actual_rpm, state.angle_deg, state.torque_nm, state.temperature_c)
+    assert state.torque_nm == pytest.approx(0.02 * spindle.params.rated_torque_nm)  # friction only
+    spindle.advance(0.0)
+    assert (state.actual_rpm, state.angle_deg, state.torque_nm, state.temperature_c) == at_speed
