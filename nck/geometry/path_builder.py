@@ -91,6 +91,9 @@ ROUND_FAST_LIMIT = 2.0 ** 43
 ROUND_FAST_MARGIN = 0.49
 """How far from the nearest integer ``value · 10^9`` may be for the integer to be the
 correctly rounded one: 0.49 plus the product's error stays below 0.5, away from any tie."""
+ROUND_TO_INTEGER = 1.5 * 2.0 ** 52
+"""Added to and taken from a double below 2^51 in magnitude, it leaves the nearest integer
+(ties to even) as a double: the sum's units place is 1, so the addition rounds there."""
 
 
 def round_position(value: float) -> float:
@@ -102,13 +105,15 @@ def round_position(value: float) -> float:
     reads it back as the double nearest to ``k · 10^-9``. When ``value · 10^9`` is below
     :data:`ROUND_FAST_LIMIT` and not within 0.01 of a tie, ``k`` is the nearest integer to the
     computed product, and ``k / 10^9`` — two exact doubles, one correctly rounded division —
-    *is* the double nearest to ``k · 10^-9``. Otherwise (near a tie, huge, not finite)
-    Python's ``round`` does it (property-tested equal: tests/geometry/test_round_position.py).
+    *is* the double nearest to ``k · 10^-9``. ``k`` is found in doubles
+    (:data:`ROUND_TO_INTEGER`; exact below 2^51, no int object made). Otherwise (near a tie,
+    huge, not finite) Python's ``round`` does it (property-tested equal:
+    tests/geometry/test_round_position.py).
     """
     value = float(value)
     scaled = value * ROUND_SCALE
     if -ROUND_FAST_LIMIT < scaled < ROUND_FAST_LIMIT:
-        nearest = round(scaled)
+        nearest = (scaled + ROUND_TO_INTEGER) - ROUND_TO_INTEGER
         if -ROUND_FAST_MARGIN <= scaled - nearest <= ROUND_FAST_MARGIN:
             return nearest / ROUND_SCALE + 0.0
     return round(value, ROUND_DIGITS) + 0.0
