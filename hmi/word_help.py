@@ -17,8 +17,8 @@ from __future__ import annotations
 import functools
 import re
 from dataclasses import dataclass
+from typing import Callable
 
-from nck import iso_table
 from nck.queries import load_toml
 
 from hmi.i18n import _, data_text
@@ -38,33 +38,29 @@ class GFunction:
     meaning: str
 
 
-@functools.cache
-def g_functions() -> dict[str, GFunction]:
-    """Every member of every Siemens G group by name."""
+def _functions_of(table_file: str, key: Callable[[str], str]) -> dict[str, GFunction]:
+    """Every member of every G group of ``data/gcode/<table_file>`` by ``key(name)``."""
     table: dict[str, GFunction] = {}
-    for group in load_toml("gcode", "siemens.toml").get("group", []):
+    for group in load_toml("gcode", table_file).get("group", []):
         codes = group.get("codes", {})
         for name in group.get("members", []):
             if name:
-                table[name] = GFunction(name, int(group["number"]), str(group.get("meaning", "")),
-                                        bool(group.get("modal", True)), str(codes.get(name, "")))
+                table[key(name)] = GFunction(name, int(group["number"]), str(group.get("meaning", "")),
+                                             bool(group.get("modal", True)), str(codes.get(name, "")))
     return table
+
+
+@functools.cache
+def g_functions() -> dict[str, GFunction]:
+    """Every member of every Siemens G group by name."""
+    return _functions_of("siemens.toml", str)
 
 
 @functools.cache
 def iso_g_functions(dialect: str) -> dict[str, GFunction]:
     """Every member of every G group of ISO dialect ``dialect`` (``iso-m``, ``iso-t``), by its
     normalized name (``G00`` as ``G0``)."""
-    table: dict[str, GFunction] = {}
-    meanings = iso_table(dialect)[1]
-    for group in load_toml("gcode", f"{dialect.replace('-', '_')}.toml").get("group", []):
-        number = int(group["number"])
-        codes = group.get("codes", {})
-        for name in group.get("members", []):
-            if name:
-                table[normalized(name)] = GFunction(name, number, meanings.get(number, ""),
-                                                    bool(group.get("modal", True)), str(codes.get(name, "")))
-    return table
+    return _functions_of(f"{dialect.replace('-', '_')}.toml", normalized)
 
 
 @functools.cache

@@ -208,21 +208,18 @@ def iter_check(
     there, not a syntax error).
     """
     machine = machine or load_machine()
+    syntax_lines: set[int | None] = set()
     if wants_iso(text, language_mode(machine)):
         static = list(iter_structure_alarms(name, text, machine))
     else:
-        syntax_lines: set[int | None] = set()
         for alarm in iter_syntax_alarms(text, should_stop):
             syntax_lines.add(alarm.line)
             yield alarm
         if should_stop is not None and should_stop():
             return
         static = [alarm for alarm in iter_structure_alarms(name, text, machine) if alarm.line not in syntax_lines]
-        if syntax_lines:
-            yield from static
-            return
     yield from static
-    if static:
+    if static or syntax_lines:
         return
     data = data if data is not None else NcData()
     stopped_by = _run_alarm(name, text, machine, programs, data, should_stop)

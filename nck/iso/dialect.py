@@ -204,13 +204,31 @@ def program_language(text: str, machine: Any) -> ProgramLanguage:
     mode = language_mode(machine)
     iso = external_dialect(machine) if not is_iso(mode) else mode
     start = mode if is_iso(mode) and wants_iso(text, mode) else "siemens"
-    lines, to_iso = [], []
-    for index, line in enumerate(text.splitlines()):
-        if "29" not in line:
-            continue
-        found = _SWITCH.findall(_COMMENT.sub("", line))
-        if found:
+    lines: list[int] = []
+    to_iso: list[bool] = []
+    index, counted_to = 0, 0  # the line index of text position counted_to
+    for position in _candidates(text):  # (a 200,000-line program: a few ms)
+        index += text.count("\n", counted_to, position)
+        counted_to = position
+        if lines and lines[-1] == index:
+            continue  # a second switch in the line: the line was read whole
+        begin = text.rfind("\n", 0, position) + 1
+        end = text.find("\n", position)
+        found = _SWITCH.findall(_COMMENT.sub("", text[begin:end if end >= 0 else len(text)]))
+        if found:  # (not inside a comment)
             lines.append(index)
             to_iso.append(found[-1] == "1")
     return ProgramLanguage(start, iso, tuple(lines), tuple(to_iso))
+
+
+def _candidates(text: str) -> list[int]:
+    """The positions of every ``G29`` / ``g29`` in ``text``, in order (str.find: faster than a
+    regular expression over the whole text)."""
+    found = []
+    for word in ("G29", "g29"):
+        position = text.find(word)
+        while position >= 0:
+            found.append(position)
+            position = text.find(word, position + 3)
+    return sorted(found)
 
